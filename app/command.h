@@ -1,0 +1,71 @@
+// The `gearstiff` command line: one Command per sub-command, registered by a static
+// CommandRegistration in its own app/*_command.cc file, so adding a command touches no other file.
+//
+// Every command:
+//  - declares its parameters (one subsection per parameter struct, units in each documentation
+//    string) so `--print-parameters` lists them with defaults and allowed values;
+//  - has a built-in default case: it runs with no parameter file;
+//  - fills a Report; the driver prints it (text or --json) and, with -o DIR, writes it together
+//    with the parameters actually used. Files are written into a staging folder and moved into
+//    DIR only when the command succeeded, so a failed run leaves nothing that looks like a result.
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include "app/report.h"
+
+#include <functional>
+#include <map>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace gearstiff::app
+{
+  // What a running command may use besides its parameters.
+  class CommandContext
+  {
+  public:
+    CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
+                   const std::string& staging_directory, bool quiet);
+
+    MPI_Comm mpi_communicator;
+    dealii::ConditionalOStream& pcout; // progress and diagnostics (stderr when --json)
+    Report report;
+
+    // True when the user gave -o DIR; only then should files be written.
+    bool writes_files() const { return !staging_directory.empty(); }
+    // Path of a result file to write (inside the staging folder); registers it for the listing.
+    std::string output_file(const std::string& name, const std::string& description);
+    // Runs tools/<script> with python3 (matplotlib) if available. A missing python3 or
+    // matplotlib is reported on pcout and skipped: charts are a convenience, never a result.
+    bool plot(const std::string& script, const std::vector<std::string>& arguments,
+              const std::string& png_name, const std::string& description);
+    bool is_root() const;
+
+  private:
+    std::string staging_directory;
+    bool quiet;
+  };
+
+  struct Command
+  {
+    std::string name;
+    std::string summary;     // one line for `gearstiff --help`
+    std::string description; // several lines for `gearstiff NAME --help`
+    std::function<void(dealii::ParameterHandler&)> declare_parameters;
+    std::function<void(dealii::ParameterHandler&, CommandContext&)> run;
+  };
+
+  std::map<std::string, Command>& command_registry();
+
+  struct CommandRegistration
+  {
+    explicit CommandRegistration(Command command);
+  };
+
+  // Directory holding tools/ (plot scripts), set at configure time; overridable by
+  // GEARSTIFF_TOOLS_DIR in the environment.
+  std::string tools_directory();
+} // namespace gearstiff::app
