@@ -1,0 +1,108 @@
+// Meshing machinery shared by every scene: planar bodies bounded by labelled curves are meshed
+// with the gmsh C++ API into all-quadrilateral cells (2D) or extruded into hexahedra (3D), with a
+// mesh size graded from a fine size at a few focus points (the predicted contact points) to a
+// coarse body size, and written as ASCII .msh 4.1 that deal.II's GridIn::read_msh reads.
+//
+// Ids: deal.II takes the gmsh physical tag of an entity as its material id (cells) or boundary id
+// (faces) and accepts only one physical tag per entity. So every body surface carries exactly one
+// physical group (its material id) and every boundary curve at most one (its boundary id);
+// curves with boundary id 0 get no physical group, are not written, and deal.II gives them its
+// default boundary id 0 ("free surface").
+//
+// Failure is never silent: a mesh with any non-quadrilateral (non-hexahedral) cell or with a cell
+// whose scaled Jacobian is not positive raises SolverFailure; bad geometry raises InputError.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gearstiff::geometry
+{
+// How a boundary piece passes through its points.
+enum class CurveKind
+{
+  spline,   // interpolating spline through all points (tooth flanks, fillets)
+  straight, // straight segments between consecutive points (cuts)
+  arc       // circular arc from the first to the last point about `arc_centre` (< 180°)
+};
+
+// One labelled piece of a closed boundary loop.
+struct BoundaryPiece
+{
+  std::vector<Eigen::Vector2d> points; // m, scene frame, at least 2, in loop order
+  CurveKind kind = CurveKind::spline;
+  Eigen::Vector2d arc_centre = Eigen::Vector2d::Zero(); // m, only for CurveKind::arc
+  int boundary_id = 0; // physical tag of the curve (deal.II boundary id); 0: free, unlabelled
+};
+
+// A closed loop: the last point of each piece is the first point of the next one, and the last
+// piece ends where the first begins. Orientation does not matter (it is normalised).
+struct BoundaryLoop
+{
+  std::vector<BoundaryPiece> pieces;
+  double signed_area() const; // m², positive when counter-clockwise
+};
+
+struct PlanarBody
+{
+  std::string name;                // physical group name, e.g. "pinion body"
+  int material_id = 1;             // physical tag of the surface (deal.II material id), > 0
+  BoundaryLoop outer;              // the body's outline
+  std::vector<BoundaryLoop> holes; // bores, pin holes
+};
+
+struct PlanarModel
+{
+  std::vector<PlanarBody> bodies;            // disjoint bodies (they may touch at points)
+  std::map<int, std::string> boundary_names; // boundary id -> physical group name
+};
+
+// Target cell size: `fine_size` within `fine_radius` of any focus point, then growing linearly
+// with distance at `growth_rate` (size increase per unit distance) up to `body_size`.
+struct SizeGrading
+{
+  std::vector<Eigen::Vector2d> focus_points; // m, scene frame (predicted contact points)
+  double fine_size = 1e-5;                   // m, h_c
+  double fine_radius = 2e-4;                 // m
+  double growth_rate = 0.25;                 // m/m; 0.25 keeps neighbour size ratios near 1.3
+  double body_size = 5e-4;                   // m
+
+  double size_at(const Eigen::Vector2d& point) const; // m
+};
+
+struct MeshOptions
+{
+  unsigned int dimension = 2;    // 2: quadrilaterals in the xy-plane; 3: hexahedra
+  double face_width = 0.;        // m, extrusion length along +z (3D only)
+  unsigned int layers = 8;       // hexahedron layers across the face width (3D only)
+  int side_face_boundary_id = 0; // boundary id of the z = 0 and z = face width faces (3D)
+  std::string file;              // output path of the ASCII .msh 4.1 file
+};
+
+struct MeshStatistics
+{
+  unsigned long n_cells = 0; // quadrilaterals (2D) or hexahedra (3D)
+  unsigned long n_vertices = 0;
+  std::map<int, unsigned long> cells_per_body; // material id -> cell count
+  double min_scaled_jacobian = 0.;             // -, 1 for a perfect square/cube
+  double mean_scaled_jacobian = 0.;            // -
+  double time_geometry = 0.;                   // s, building the gmsh model
+  double time_meshing = 0.;                    // s, generating the mesh
+  double time_checking = 0.;                   // s, element types and quality
+  double time_writing = 0.;                    // s, writing the .msh file
+};
+
+// Scaled Jacobian of a cell given its corner coordinates in gmsh/deal.II-lexicographic order
+// (gmsh order: quad 0-1-2-3 counter-clockwise; hex bottom 0-3, top 4-7): the minimum over the
+// corners of the corner's Jacobian determinant divided by the product of its edge lengths.
+double scaled_jacobian_quad(const std::vector<Eigen::Vector3d>& corners);
+double scaled_jacobian_hex(const std::vector<Eigen::Vector3d>& corners);
+
+// Meshes `model` with the sizes of `grading`, checks that every cell is a quadrilateral
+// (hexahedron) with positive scaled Jacobian and writes options.file. Throws InputError for
+// inconsistent geometry and SolverFailure when gmsh fails or the checks do not pass.
+MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& grading,
+                                 const MeshOptions& options);
+} // namespace gearstiff::geometry
