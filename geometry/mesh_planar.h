@@ -48,7 +48,7 @@ struct BoundaryLoop
 struct PlanarBody
 {
   std::string name;                // physical group name, e.g. "pinion body"
-  int material_id = 1;             // physical tag of the surface (deal.II material id), > 0
+  int material_id = 1;             // physical tag (deal.II material id), > 0; may be shared
   BoundaryLoop outer;              // the body's outline
   std::vector<BoundaryLoop> holes; // bores, pin holes
 };

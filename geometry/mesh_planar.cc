@@ -1,0 +1,439 @@
+#include "geometry/mesh_planar.h"
+
+#include "kinematics/errors.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <gmsh.h>
+#include <set>
+#include <unordered_map>
+
+namespace gearstiff::geometry
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(const Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// gmsh is a process-wide singleton; this keeps its lifetime to one meshing call so that a
+// thrown error never leaves a half-built model behind for the next call (or for deal.II's
+// GridIn::read_msh, which initialises and finalises gmsh itself).
+class GmshSession
+{
+public:
+  GmshSession()
+  {
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.Verbosity", 1);
+    gmsh::model::add("gearstiff");
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+// Junctions between pieces are snapped when closer than this (m): profile generators
+// compute shared end points independently, so bit-identical coordinates are not required,
+// but anything visible at the finest mesh sizes (1e-6 m) is a genuine gap.
+constexpr double junction_tolerance = 1e-9;
+
+std::vector<BoundaryPiece> counter_clockwise(const BoundaryLoop& loop)
+{
+  std::vector<BoundaryPiece> pieces = loop.pieces;
+  if (loop.signed_area() < 0.)
+  {
+    std::reverse(pieces.begin(), pieces.end());
+    for (auto& piece : pieces)
+      std::reverse(piece.points.begin(), piece.points.end());
+  }
+  return pieces;
+}
+
+void check_loop(const BoundaryLoop& loop, const std::string& body_name)
+{
+  const std::string parameter = "geometry of " + body_name;
+  if (loop.pieces.empty())
+    throw InputError(parameter, "a boundary loop has no pieces");
+  for (std::size_t k = 0; k < loop.pieces.size(); ++k)
+  {
+    const BoundaryPiece& piece = loop.pieces[k];
+    if (piece.points.size() < 2)
+      throw InputError(parameter,
+                       "boundary piece " + std::to_string(k) + " has fewer than 2 points");
+    for (const auto& p : piece.points)
+      if (!p.allFinite())
+        throw InputError(parameter,
+                         "boundary piece " + std::to_string(k) + " has a non-finite point");
+    for (std::size_t i = 1; i < piece.points.size(); ++i)
+      if ((piece.points[i] - piece.points[i - 1]).norm() <= junction_tolerance)
+        throw InputError(parameter, "boundary piece " + std::to_string(k) +
+                                        " repeats a point (index " + std::to_string(i) + ")");
+    const BoundaryPiece& next = loop.pieces[(k + 1) % loop.pieces.size()];
+    const double gap = (piece.points.back() - next.points.front()).norm();
+    if (gap > junction_tolerance)
+      throw InputError(parameter, "boundary loop is not closed after piece " + std::to_string(k) +
+                                      " (gap " + std::to_string(gap) + " m)");
+    if (piece.kind == CurveKind::arc)
+    {
+      const double r0 = (piece.points.front() - piece.arc_centre).norm();
+      const double r1 = (piece.points.back() - piece.arc_centre).norm();
+      if (std::abs(r0 - r1) > 1e-9 * std::max(1., r0 / 1e-3) || r0 <= 0.)
+        throw InputError(parameter, "arc piece " + std::to_string(k) +
+                                        " does not keep its radius about its centre");
+    }
+  }
+  if (std::abs(loop.signed_area()) <= 0.)
+    throw InputError(parameter, "a boundary loop encloses no area");
+}
+
+// Adds one loop to gmsh's built-in kernel; returns the loop tag and records each curve's
+// boundary id.
+int add_loop(const BoundaryLoop& loop, bool outer, std::map<int, std::vector<int>>& curves_by_id,
+             std::vector<std::pair<int, int>>& curve_ids)
+{
+  std::vector<BoundaryPiece> pieces = counter_clockwise(loop);
+  if (!outer)
+  {
+    std::reverse(pieces.begin(), pieces.end());
+    for (auto& piece : pieces)
+      std::reverse(piece.points.begin(), piece.points.end());
+  }
+  const auto add_point = [](const Eigen::Vector2d& p)
+  { return gmsh::model::geo::addPoint(p.x(), p.y(), 0.); };
+  const int first_tag = add_point(pieces.front().points.front());
+  int start_tag = first_tag;
+  std::vector<int> loop_curves;
+  for (std::size_t k = 0; k < pieces.size(); ++k)
+  {
+    const BoundaryPiece& piece = pieces[k];
+    const bool last_piece = (k + 1 == pieces.size());
+    std::vector<int> tags{start_tag};
+    for (std::size_t i = 1; i + 1 < piece.points.size(); ++i)
+      tags.push_back(add_point(piece.points[i]));
+    tags.push_back(last_piece ? first_tag : add_point(piece.points.back()));
+
+    std::vector<int> new_curves;
+    switch (piece.kind)
+    {
+    case CurveKind::spline:
+      new_curves.push_back(gmsh::model::geo::addSpline(tags));
+      break;
+    case CurveKind::straight:
+      for (std::size_t i = 1; i < tags.size(); ++i)
+        new_curves.push_back(gmsh::model::geo::addLine(tags[i - 1], tags[i]));
+      break;
+    case CurveKind::arc:
+    {
+      const int centre = add_point(piece.arc_centre);
+      new_curves.push_back(gmsh::model::geo::addCircleArc(tags.front(), centre, tags.back()));
+      break;
+    }
+    }
+    for (const int c : new_curves)
+    {
+      loop_curves.push_back(c);
+      curve_ids.emplace_back(c, piece.boundary_id);
+      if (piece.boundary_id != 0)
+        curves_by_id[piece.boundary_id].push_back(c);
+    }
+    start_tag = tags.back();
+  }
+  return gmsh::model::geo::addCurveLoop(loop_curves);
+}
+
+std::unordered_map<std::size_t, Eigen::Vector3d> node_coordinates()
+{
+  std::vector<std::size_t> tags;
+  std::vector<double> coordinates, parametric;
+  gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, Eigen::Vector3d> nodes;
+  nodes.reserve(tags.size());
+  for (std::size_t i = 0; i < tags.size(); ++i)
+    nodes[tags[i]] =
+        Eigen::Vector3d(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]);
+  return nodes;
+}
+} // namespace
+
+double BoundaryLoop::signed_area() const
+{
+  // Shoelace formula over the polygon through all piece points; arcs and splines are
+  // represented by their points, enough for the sign and a plausibility check.
+  double twice_area = 0.;
+  for (const auto& piece : pieces)
+    for (std::size_t i = 1; i < piece.points.size(); ++i)
+    {
+      const auto& a = piece.points[i - 1];
+      const auto& b = piece.points[i];
+      twice_area += a.x() * b.y() - b.x() * a.y();
+    }
+  return 0.5 * twice_area;
+}
+
+double SizeGrading::size_at(const Eigen::Vector2d& point) const
+{
+  double distance = std::numeric_limits<double>::infinity();
+  for (const auto& focus : focus_points)
+    distance = std::min(distance, (point - focus).norm());
+  if (!std::isfinite(distance))
+    return body_size;
+  const double size = fine_size + growth_rate * std::max(0., distance - fine_radius);
+  return std::min(size, body_size);
+}
+
+double scaled_jacobian_quad(const std::vector<Eigen::Vector3d>& corners)
+{
+  double minimum = std::numeric_limits<double>::infinity();
+  for (unsigned int i = 0; i < 4; ++i)
+  {
+    const Eigen::Vector3d e1 = corners[(i + 1) % 4] - corners[i];
+    const Eigen::Vector3d e2 = corners[(i + 3) % 4] - corners[i];
+    // The z component of the cross product: positive for counter-clockwise corners in the
+    // xy-plane, which is where all planar scenes live.
+    const double det = e1.x() * e2.y() - e1.y() * e2.x();
+    minimum = std::min(minimum, det / (e1.norm() * e2.norm()));
+  }
+  return minimum;
+}
+
+double scaled_jacobian_hex(const std::vector<Eigen::Vector3d>& corners)
+{
+  // Edge triples (right-handed for a positively oriented hexahedron), as in the Verdict library.
+  static constexpr unsigned int neighbours[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+                                                    {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+  double minimum = std::numeric_limits<double>::infinity();
+  for (unsigned int i = 0; i < 8; ++i)
+  {
+    const Eigen::Vector3d e1 = corners[neighbours[i][0]] - corners[i];
+    const Eigen::Vector3d e2 = corners[neighbours[i][1]] - corners[i];
+    const Eigen::Vector3d e3 = corners[neighbours[i][2]] - corners[i];
+    minimum = std::min(minimum, e1.cross(e2).dot(e3) / (e1.norm() * e2.norm() * e3.norm()));
+  }
+  return minimum;
+}
+
+MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& grading,
+                                 const MeshOptions& options)
+{
+  if (model.bodies.empty())
+    throw InputError("scene", "has no bodies to mesh");
+  if (options.dimension != 2 && options.dimension != 3)
+    throw InputError("dimension", "must be 2 or 3");
+  if (options.dimension == 3 && !(options.face_width > 0.))
+    throw InputError("face width", "must be positive for a 3D mesh");
+  if (options.dimension == 3 && options.layers < 1)
+    throw InputError("layers", "must be at least 1 for a 3D mesh");
+  if (!(grading.fine_size > 0.) || !(grading.body_size >= grading.fine_size) ||
+      !(grading.growth_rate > 0.) || !(grading.fine_radius >= 0.))
+    throw InputError("mesh size", "needs 0 < contact size <= body size, a positive growth "
+                                  "rate and a non-negative fine radius");
+  if (options.file.empty())
+    throw InputError("mesh file", "no output file given");
+  for (const auto& body : model.bodies)
+  {
+    if (body.material_id <= 0)
+      throw InputError("material id of " + body.name, "must be positive");
+    check_loop(body.outer, body.name);
+    for (const auto& hole : body.holes)
+      check_loop(hole, body.name);
+  }
+
+  MeshStatistics statistics;
+  GmshSession session;
+
+  auto start = Clock::now();
+  std::map<int, std::vector<int>> curves_by_id;
+  std::vector<std::pair<int, int>> curve_ids; // (curve tag, boundary id), every curve
+  std::vector<std::pair<int, int>> surfaces;  // (surface tag, material id)
+  for (const auto& body : model.bodies)
+  {
+    std::vector<int> loops{add_loop(body.outer, true, curves_by_id, curve_ids)};
+    for (const auto& hole : body.holes)
+      loops.push_back(add_loop(hole, false, curves_by_id, curve_ids));
+    surfaces.emplace_back(gmsh::model::geo::addPlaneSurface(loops), body.material_id);
+  }
+
+  // 3D: extrude each surface; gmsh returns, per surface, the top surface, the volume and one
+  // lateral surface per boundary curve in the order of the surface's curve loops, which is the
+  // order in which add_loop created the curves.
+  std::vector<std::pair<int, int>> volumes;               // (volume tag, material id)
+  std::map<int, std::vector<int>> lateral_surfaces_by_id; // boundary id -> surfaces
+  std::vector<int> side_faces;                            // z = 0 and z = face width
+  if (options.dimension == 3)
+  {
+    std::size_t curve_index = 0;
+    for (const auto& [surface, material_id] : surfaces)
+    {
+      gmsh::vectorpair extruded;
+      gmsh::model::geo::extrude({{2, surface}}, 0., 0., options.face_width, extruded,
+                                {static_cast<int>(options.layers)}, {}, true);
+      if (extruded.size() < 3 || extruded[1].first != 3)
+        throw SolverFailure("gmsh extrusion",
+                            "unexpected result for surface " + std::to_string(surface));
+      side_faces.push_back(surface);
+      side_faces.push_back(extruded[0].second);
+      volumes.emplace_back(extruded[1].second, material_id);
+      for (std::size_t i = 2; i < extruded.size(); ++i, ++curve_index)
+      {
+        if (curve_index >= curve_ids.size())
+          throw SolverFailure("gmsh extrusion", "more lateral surfaces than curves");
+        const int id = curve_ids[curve_index].second;
+        if (id != 0)
+          lateral_surfaces_by_id[id].push_back(extruded[i].second);
+      }
+    }
+    if (curve_index != curve_ids.size())
+      throw SolverFailure("gmsh extrusion", "lateral surfaces do not match the curves");
+  }
+  gmsh::model::geo::synchronize();
+
+  const auto name_of_boundary = [&](const int id)
+  {
+    const auto found = model.boundary_names.find(id);
+    return found != model.boundary_names.end() ? found->second : "boundary " + std::to_string(id);
+  };
+  // Bodies with the same material id (e.g. all rollers of a cycloid drive) share one group,
+  // named after the first of them.
+  const auto add_body_groups = [&](const int dim, const std::vector<std::pair<int, int>>& entities)
+  {
+    std::map<int, std::vector<int>> entities_by_id;
+    std::map<int, std::string> names;
+    for (std::size_t b = 0; b < entities.size(); ++b)
+    {
+      entities_by_id[entities[b].second].push_back(entities[b].first);
+      names.emplace(entities[b].second, model.bodies[b].name);
+    }
+    for (const auto& [id, tags] : entities_by_id)
+    {
+      gmsh::model::addPhysicalGroup(dim, tags, id);
+      gmsh::model::setPhysicalName(dim, id, names[id]);
+    }
+  };
+  if (options.dimension == 2)
+  {
+    add_body_groups(2, surfaces);
+    for (const auto& [id, curves] : curves_by_id)
+    {
+      gmsh::model::addPhysicalGroup(1, curves, id);
+      gmsh::model::setPhysicalName(1, id, name_of_boundary(id));
+    }
+  }
+  else
+  {
+    add_body_groups(3, volumes);
+    if (options.side_face_boundary_id != 0)
+    {
+      if (lateral_surfaces_by_id.count(options.side_face_boundary_id))
+        throw InputError("side face boundary id", "is already used by a boundary curve");
+      lateral_surfaces_by_id[options.side_face_boundary_id] = side_faces;
+    }
+    for (const auto& [id, faces] : lateral_surfaces_by_id)
+    {
+      gmsh::model::addPhysicalGroup(2, faces, id);
+      gmsh::model::setPhysicalName(2, id, name_of_boundary(id));
+    }
+  }
+  statistics.time_geometry = seconds_since(start);
+
+  // Sizes come from the grading alone: point and curvature sizes would override the contact
+  // size with the spacing of the profile points.
+  start = Clock::now();
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", grading.fine_size);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", grading.body_size);
+  // Frontal-Delaunay triangles recombined by the full-quad Blossom algorithm: all quadrilaterals
+  // with minimum scaled Jacobian about 0.6 on the scenes. (gmsh 4.8's "Frontal-Delaunay for
+  // quads", algorithm 8, crashes inside its cross-field background mesh when a size callback
+  // is set; the simple recombination leaves triangles.)
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 3);
+  gmsh::option::setNumber("Mesh.Smoothing", 5);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::model::mesh::setSizeCallback(
+      [&grading](int, int, double x, double y, double) {
+        return grading.size_at({x, y});
+      });
+  try
+  {
+    gmsh::model::mesh::generate(options.dimension);
+  }
+  catch (const std::exception& e)
+  {
+    throw SolverFailure("gmsh mesh generation", e.what());
+  }
+  statistics.time_meshing = seconds_since(start);
+
+  // Every cell must be a quadrilateral (hexahedron) with positive scaled Jacobian: deal.II's
+  // parallel::distributed::Triangulation accepts nothing else, and an inverted cell would
+  // silently corrupt every stiffness computed on the mesh.
+  start = Clock::now();
+  const int dim = static_cast<int>(options.dimension);
+  const int cell_type = (dim == 2) ? 3 : 5; // gmsh: 3 = 4-node quadrangle, 5 = 8-node hexahedron
+  const unsigned int n_corners = (dim == 2) ? 4 : 8;
+  const auto nodes = node_coordinates();
+  statistics.n_vertices = nodes.size();
+  double jacobian_sum = 0.;
+  statistics.min_scaled_jacobian = std::numeric_limits<double>::infinity();
+  const auto& entities = (dim == 2) ? surfaces : volumes;
+  for (const auto& [entity, material_id] : entities)
+  {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+    gmsh::model::mesh::getElements(types, element_tags, element_nodes, dim, entity);
+    for (std::size_t t = 0; t < types.size(); ++t)
+    {
+      if (types[t] != cell_type)
+      {
+        std::string type_name;
+        int type_dim, order, n_nodes, n_primary;
+        std::vector<double> local;
+        gmsh::model::mesh::getElementProperties(types[t], type_name, type_dim, order, n_nodes,
+                                                local, n_primary);
+        throw SolverFailure("gmsh quadrilateral meshing",
+                            std::to_string(element_tags[t].size()) + " leftover " + type_name +
+                                " cells in body with material id " + std::to_string(material_id));
+      }
+      std::vector<Eigen::Vector3d> corners(n_corners);
+      for (std::size_t e = 0; e < element_tags[t].size(); ++e)
+      {
+        for (unsigned int c = 0; c < n_corners; ++c)
+          corners[c] = nodes.at(element_nodes[t][n_corners * e + c]);
+        const double q = (dim == 2) ? scaled_jacobian_quad(corners) : scaled_jacobian_hex(corners);
+        statistics.min_scaled_jacobian = std::min(statistics.min_scaled_jacobian, q);
+        jacobian_sum += q;
+      }
+      statistics.cells_per_body[material_id] += element_tags[t].size();
+      statistics.n_cells += element_tags[t].size();
+    }
+  }
+  if (statistics.n_cells == 0)
+    throw SolverFailure("gmsh mesh generation", "produced no cells");
+  statistics.mean_scaled_jacobian = jacobian_sum / statistics.n_cells;
+  if (!(statistics.min_scaled_jacobian > 0.))
+    throw SolverFailure("gmsh mesh generation",
+                        "inverted or degenerate cell (minimum scaled Jacobian " +
+                            std::to_string(statistics.min_scaled_jacobian) + ")");
+  statistics.time_checking = seconds_since(start);
+
+  start = Clock::now();
+  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+  gmsh::option::setNumber("Mesh.Binary", 0);
+  gmsh::option::setNumber("Mesh.SaveAll", 0);
+  gmsh::write(options.file);
+  if (!std::filesystem::is_regular_file(options.file))
+    throw InputError("mesh file", "cannot write '" + options.file + "'");
+  statistics.time_writing = seconds_since(start);
+  return statistics;
+}
+} // namespace gearstiff::geometry

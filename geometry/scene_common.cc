@@ -1,0 +1,121 @@
+#include "geometry/scene_common.h"
+
+#include "kinematics/errors.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace gearstiff::geometry
+{
+double hertz_half_width(const double force_per_length, const double radius_1, const double radius_2,
+                        const double young_modulus_1, const double poisson_ratio_1,
+                        const double young_modulus_2, const double poisson_ratio_2)
+{
+  const double inverse_radius = 1. / radius_1 + 1. / radius_2; // 1/∞ = 0 for a flat
+  if (!(inverse_radius > 0.))
+    throw InputError("contact geometry", "the surfaces do not form a convex contact "
+                                         "(relative curvature not positive)");
+  if (!(force_per_length > 0.))
+    throw InputError("load", "the contact force must be positive for the Hertz estimate");
+  const double effective_modulus =
+      1. / ((1. - poisson_ratio_1 * poisson_ratio_1) / young_modulus_1 +
+            (1. - poisson_ratio_2 * poisson_ratio_2) / young_modulus_2);
+  return std::sqrt(4. * force_per_length / (M_PI * effective_modulus * inverse_radius));
+}
+
+SizeGrading contact_size_grading(const SceneMeshSettings& settings,
+                                 const std::vector<SceneContact>& contacts)
+{
+  SizeGrading grading;
+  double smallest_width = std::numeric_limits<double>::infinity();
+  double largest_width = 0.;
+  for (const auto& contact : contacts)
+  {
+    grading.focus_points.push_back(contact.point);
+    smallest_width = std::min(smallest_width, contact.hertz_half_width);
+    largest_width = std::max(largest_width, contact.hertz_half_width);
+  }
+  const bool have_widths = !contacts.empty() && smallest_width > 0.;
+  if (settings.contact_size > 0.)
+    grading.fine_size = settings.contact_size;
+  else if (have_widths)
+    grading.fine_size = 0.1 * smallest_width; // ten cells across the half-width
+  else
+    throw InputError("contact size", "must be given when the scene has no Hertz estimate");
+  if (settings.fine_radius > 0.)
+    grading.fine_radius = settings.fine_radius;
+  else
+    grading.fine_radius = have_widths ? 3. * largest_width : 10. * grading.fine_size;
+  if (!(settings.growth_rate > 0.))
+    throw InputError("growth rate", "must be positive");
+  grading.growth_rate = settings.growth_rate;
+  if (!(settings.body_size >= grading.fine_size))
+    throw InputError("body size", "must not be smaller than the contact size");
+  grading.body_size = settings.body_size;
+  return grading;
+}
+
+std::vector<BoundaryPiece> arc_pieces(const Eigen::Vector2d& centre, const double radius,
+                                      const double from, const double to, const int boundary_id)
+{
+  const unsigned int n_pieces =
+      std::max(1u, static_cast<unsigned int>(std::ceil(std::abs(to - from) / (0.5 * M_PI) - 1e-9)));
+  const auto point_at = [&](const double angle) -> Eigen::Vector2d
+  { return centre + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)); };
+  std::vector<BoundaryPiece> pieces(n_pieces);
+  for (unsigned int k = 0; k < n_pieces; ++k)
+  {
+    pieces[k].kind = CurveKind::arc;
+    pieces[k].arc_centre = centre;
+    pieces[k].boundary_id = boundary_id;
+    pieces[k].points = {point_at(from + (to - from) * k / n_pieces),
+                        point_at(from + (to - from) * (k + 1) / n_pieces)};
+  }
+  return pieces;
+}
+
+BoundaryLoop circle_loop(const Eigen::Vector2d& centre, const double radius, const int boundary_id)
+{
+  BoundaryLoop loop;
+  loop.pieces = arc_pieces(centre, radius, 0., 2. * M_PI, boundary_id);
+  // Close exactly: cos(2π) is not bit-identical to cos(0).
+  loop.pieces.back().points.back() = loop.pieces.front().points.front();
+  return loop;
+}
+
+SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& contacts,
+                     const SceneMeshSettings& settings, const double face_width,
+                     const std::string& file)
+{
+  const auto start = std::chrono::steady_clock::now();
+  SceneInfo info;
+  const SizeGrading grading = contact_size_grading(settings, contacts);
+  MeshOptions options;
+  options.dimension = settings.dimension;
+  options.layers = settings.layers;
+  options.face_width = face_width;
+  options.side_face_boundary_id = scene_ids::side_faces;
+  options.file = file;
+
+  PlanarModel named = model;
+  if (settings.dimension == 3)
+    named.boundary_names[scene_ids::side_faces] = "side faces";
+  info.mesh = mesh_planar_model(named, grading, options);
+
+  info.file = file;
+  info.dimension = settings.dimension;
+  info.face_width = face_width;
+  for (const auto& body : model.bodies)
+    info.material_names.emplace(body.material_id, body.name);
+  info.boundary_names = named.boundary_names;
+  info.contacts = contacts;
+  info.contact_size = grading.fine_size;
+  info.fine_radius = grading.fine_radius;
+  info.body_size = grading.body_size;
+  info.growth_rate = grading.growth_rate;
+  info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return info;
+}
+} // namespace gearstiff::geometry

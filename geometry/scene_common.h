@@ -1,0 +1,135 @@
+// What every scene shares: the ids written into the mesh, the mesh settings a user chooses, the
+// plain SceneInfo handed to the FE module, the Hertz half-width estimate that sets the default
+// contact size, and small outline builders.
+//
+// A scene has two kinds of bodies ("first", "second": pinion/wheel, disc/rollers, lower/upper
+// cylinder). Their ids are the same in every scene so the FE and contact code need one mapping:
+//
+//   material ids (cells)      1 first body (pinion, disc, cylinder A)
+//                             2 second body (wheel, rollers, cylinder B)
+//   boundary ids (faces)      0 free surface (deal.II's default; not written to the file)
+//                             1 first bore        2 second bore (roller pins)
+//                             3 first candidate contact surface (pinion flanks, disc lobes)
+//                             4 second candidate contact surface (wheel flanks, rollers)
+//                             5 first sector cuts 6 second sector cuts
+//                             7 side faces z = 0 and z = face width (3D only)
+//                             8 output-pin holes of a cycloid disc
+#pragma once
+
+#include "geometry/mesh_planar.h"
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gearstiff::geometry
+{
+namespace scene_ids
+{
+constexpr int first_body = 1;
+constexpr int second_body = 2;
+
+constexpr int free_surface = 0;
+constexpr int first_bore = 1;
+constexpr int second_bore = 2;
+constexpr int first_contact = 3;
+constexpr int second_contact = 4;
+constexpr int first_cuts = 5;
+constexpr int second_cuts = 6;
+constexpr int side_faces = 7;
+constexpr int output_pin_holes = 8;
+
+// The same ids under the names of a gear pair.
+constexpr int pinion_body = first_body;
+constexpr int wheel_body = second_body;
+constexpr int pinion_bore = first_bore;
+constexpr int wheel_bore = second_bore;
+constexpr int pinion_flanks = first_contact;
+constexpr int wheel_flanks = second_contact;
+constexpr int pinion_cuts = first_cuts;
+constexpr int wheel_cuts = second_cuts;
+} // namespace scene_ids
+
+// Mesh choices common to every scene. Zero selects the documented default.
+struct SceneMeshSettings
+{
+  unsigned int dimension = 2; // -, 2: quadrilaterals; 3: hexahedra extruded over the face width
+  unsigned int layers = 8;    // -, hexahedron layers across the face width (3D)
+  // m, h_c, cell size at the predicted contact points; 0: a tenth of the smallest Hertz
+  // half-width estimate of the scene's contacts.
+  double contact_size = 0.;
+  // m, radius around each contact point meshed at h_c; 0: three times the largest Hertz
+  // half-width (the contact zone with margin for the shift of the contact under load).
+  double fine_radius = 0.;
+  double growth_rate = 0.25; // m/m, size increase per unit distance beyond the fine radius
+  double body_size = 5e-4;   // m, the coarse size far from contact
+};
+
+// A predicted contact point (kinematics, before load).
+struct SceneContact
+{
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();  // m, scene frame
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero(); // unit, out of the first body (towards 2nd)
+  double first_curvature_radius = 0.;  // m, of the first body's surface at the point (> 0 convex)
+  double second_curvature_radius = 0.; // m, of the second body's surface (> 0 convex)
+  double normal_force = 0.;            // N, share of the load assumed for the Hertz estimate
+  double hertz_half_width = 0.;        // m, plane-strain Hertz estimate a
+  double gap = 0.;                     // m, initial gap along the normal (0: touching)
+  int first_feature = 0;  // tooth index of the pinion (roller-facing lobe of a disc), or 0
+  int second_feature = 0; // tooth index of the wheel (roller index), or 0
+};
+
+// What the FE module needs to know about a written scene. Plain data; SI units.
+struct SceneInfo
+{
+  std::string kind; // "gear pair", "cylinders", "blocks", "cycloid"
+  std::string file; // path of the written ASCII .msh 4.1 file
+  unsigned int dimension = 2;
+  double face_width = 0.; // m, extrusion length (3D) and the width the loads refer to
+
+  // Ids written into the mesh (see scene_ids); names as in the file's physical groups.
+  std::map<int, std::string> material_names; // material id -> name
+  std::map<int, std::string> boundary_names; // boundary id -> name
+
+  Eigen::Vector2d first_centre = Eigen::Vector2d::Zero();  // m, rotation centre (pinion, disc)
+  Eigen::Vector2d second_centre = Eigen::Vector2d::Zero(); // m, rotation centre (wheel, ring)
+  double first_rotation = 0.;  // rad, angle applied to the first body's profile (CCW)
+  double second_rotation = 0.; // rad, angle applied to the second body's profile (CCW)
+
+  std::vector<SceneContact> contacts; // predicted contact points
+
+  double contact_size = 0.; // m, h_c used
+  double fine_radius = 0.;  // m
+  double body_size = 0.;    // m
+  double growth_rate = 0.;  // m/m
+
+  MeshStatistics mesh;    // cell counts, quality, timings of the meshing stage
+  double time_total = 0.; // s, scene construction + meshing + writing
+};
+
+// Plane-strain Hertz contact half-width of two parallel cylinders (Johnson, Contact Mechanics,
+// 1985, eq. 4.43): a = sqrt(4·F'·R / (π·E*)), 1/R = 1/R1 + 1/R2, 1/E* = Σ (1 − ν²)/E.
+// force_per_length in N/m, radii in m (a flat: infinity; concave: negative), moduli in Pa.
+double hertz_half_width(double force_per_length, double radius_1, double radius_2,
+                        double young_modulus_1, double poisson_ratio_1, double young_modulus_2,
+                        double poisson_ratio_2);
+
+// Resolves the defaults of `settings` from the Hertz half-widths of `contacts` and returns the
+// size grading focused on the contact points.
+SizeGrading contact_size_grading(const SceneMeshSettings& settings,
+                                 const std::vector<SceneContact>& contacts);
+
+// A circle as a closed loop of four quarter arcs carrying `boundary_id` (m).
+BoundaryLoop circle_loop(const Eigen::Vector2d& centre, double radius, int boundary_id);
+
+// Arc pieces from polar angle `from` to `to` (rad, either direction) about `centre`, split so no
+// piece exceeds a quarter turn (gmsh arcs must stay below half a turn).
+std::vector<BoundaryPiece> arc_pieces(const Eigen::Vector2d& centre, double radius, double from,
+                                      double to, int boundary_id);
+
+// Meshes `model` with `settings` (resolving the defaults from the contacts), writes `file` and
+// fills the common part of SceneInfo (ids, sizes, contacts, statistics, file).
+SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& contacts,
+                     const SceneMeshSettings& settings, double face_width, const std::string& file);
+} // namespace gearstiff::geometry
