@@ -1,0 +1,356 @@
+#include "dynamics/integrators.h"
+
+#include "kinematics/errors.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace gearstiff::dynamics
+{
+std::string integrator_name(IntegratorType type)
+{
+  switch (type)
+  {
+  case IntegratorType::rk4:
+    return "RK4";
+  case IntegratorType::adaptive_rk:
+    return "Dormand-Prince 5(4)";
+  case IntegratorType::hht_alpha:
+    return "HHT-alpha";
+  }
+  return "?";
+}
+
+namespace
+{
+// Energy growth beyond this factor is taken as divergence. A physical linear response stays
+// far below it: even a resonance with 0.5 % damping amplifies the static deflection about
+// 100-fold (energy 10⁴), and an unstable RK4 mode grows by |R| ≥ 1.01 per step, so it crosses
+// 10⁶ within a few hundred steps.
+constexpr double divergence_energy_factor = 1e6;
+constexpr unsigned int check_interval = 16; // steps between energy checks
+
+// Stores the output points and watches for divergence; shared by all three methods.
+class Recorder
+{
+public:
+  Recorder(const TorsionalModel& model, Trajectory& trajectory, const IntegratorSettings& settings,
+           const double* angle, const double* velocity)
+      : model(model), trajectory(trajectory), settings(settings), n(model.n_dofs())
+  {
+    const StaticState statics = model.static_state(false);
+    double strain = 0.;
+    for (unsigned int m = 0; m < model.n_meshes(); ++m)
+      strain += 0.5 * statics.mesh_force[m] * statics.deflection[m];
+    reference_energy = std::max(
+        {model.vibration_energy(0., angle, velocity), strain, std::numeric_limits<double>::min()});
+    const std::size_t expected =
+        static_cast<std::size_t>(settings.end_time / settings.time_step / settings.record_stride) +
+        2;
+    trajectory.time.reserve(expected);
+    trajectory.angle.reserve(expected * n);
+    trajectory.velocity.reserve(expected * n);
+  }
+
+  void output(unsigned long index, double time, const double* angle, const double* velocity)
+  {
+    if (index % settings.record_stride != 0)
+      return;
+    trajectory.time.push_back(time);
+    trajectory.angle.insert(trajectory.angle.end(), angle, angle + n);
+    trajectory.velocity.insert(trajectory.velocity.end(), velocity, velocity + n);
+  }
+
+  void check(double time, const double* angle, const double* velocity)
+  {
+    bool finite = true;
+    for (unsigned int i = 0; i < n; ++i)
+      finite = finite && std::isfinite(angle[i]) && std::isfinite(velocity[i]);
+    const double energy = finite ? model.vibration_energy(time, angle, velocity) : 0.;
+    if (finite && energy <= divergence_energy_factor * reference_energy)
+      return;
+    std::ostringstream reason;
+    reason.precision(4);
+    reason << "diverged at t = " << time << " s ("
+           << (finite
+                   ? "vibration energy grew " + std::to_string(energy / reference_energy) + "-fold"
+                   : std::string("non-finite state"))
+           << ") with step " << settings.time_step << " s; estimated RK4 stability limit "
+           << trajectory.rk4_step_limit << " s (highest natural frequency "
+           << trajectory.highest_frequency / (2. * M_PI) << " Hz)";
+    throw SolverFailure(trajectory.method, reason.str());
+  }
+
+private:
+  const TorsionalModel& model;
+  Trajectory& trajectory;
+  const IntegratorSettings& settings;
+  const unsigned int n;
+  double reference_energy = 0.;
+};
+
+unsigned long fixed_step_count(const IntegratorSettings& settings)
+{
+  return static_cast<unsigned long>(std::ceil(settings.end_time / settings.time_step - 1e-9));
+}
+
+void run_rk4(const TorsionalModel& model, std::vector<double> angle, std::vector<double> velocity,
+             const IntegratorSettings& settings, Trajectory& trajectory)
+{
+  const unsigned int n = model.n_dofs();
+  const double h = settings.time_step;
+  std::vector<double> a1(n), a2(n), a3(n), a4(n), phi(n), omega(n), omega2(n), omega3(n), omega4(n);
+  Recorder recorder(model, trajectory, settings, angle.data(), velocity.data());
+  recorder.output(0, 0., angle.data(), velocity.data());
+  const unsigned long steps = fixed_step_count(settings);
+  for (unsigned long step = 0; step < steps; ++step)
+  {
+    const double t = step * h;
+    model.acceleration(t, angle.data(), velocity.data(), a1.data());
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      phi[i] = angle[i] + 0.5 * h * velocity[i];
+      omega2[i] = velocity[i] + 0.5 * h * a1[i];
+    }
+    model.acceleration(t + 0.5 * h, phi.data(), omega2.data(), a2.data());
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      phi[i] = angle[i] + 0.5 * h * omega2[i];
+      omega3[i] = velocity[i] + 0.5 * h * a2[i];
+    }
+    model.acceleration(t + 0.5 * h, phi.data(), omega3.data(), a3.data());
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      phi[i] = angle[i] + h * omega3[i];
+      omega4[i] = velocity[i] + h * a3[i];
+    }
+    model.acceleration(t + h, phi.data(), omega4.data(), a4.data());
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      angle[i] += h / 6. * (velocity[i] + 2. * omega2[i] + 2. * omega3[i] + omega4[i]);
+      velocity[i] += h / 6. * (a1[i] + 2. * a2[i] + 2. * a3[i] + a4[i]);
+    }
+    if ((step + 1) % check_interval == 0 || step + 1 == steps)
+      recorder.check((step + 1) * h, angle.data(), velocity.data());
+    recorder.output(step + 1, (step + 1) * h, angle.data(), velocity.data());
+  }
+  trajectory.cost.steps = steps;
+  trajectory.cost.function_evaluations = 4 * steps;
+  trajectory.cost.smallest_step = trajectory.cost.largest_step = h;
+}
+
+void run_hht(const TorsionalModel& model, std::vector<double> angle, std::vector<double> velocity,
+             const IntegratorSettings& settings, Trajectory& trajectory)
+{
+  const double alpha = settings.hht_alpha;
+  if (!(alpha >= -1. / 3. && alpha <= 0.))
+    throw InputError("Integrator/HHT alpha",
+                     "must lie in [-1/3, 0] for unconditional stability, got " +
+                         std::to_string(alpha));
+  const double beta = 0.25 * (1. - alpha) * (1. - alpha);
+  const double gamma = 0.5 - alpha;
+  const unsigned int n = model.n_dofs();
+  const double h = settings.time_step;
+  const Eigen::VectorXd& torque = model.external_torques();
+  const Eigen::MatrixXd mass = model.inertias().asDiagonal();
+
+  Eigen::Map<Eigen::VectorXd> u(angle.data(), n), v(velocity.data(), n);
+  Eigen::MatrixXd K, C;
+  model.linearization(0., K, C);
+  Eigen::VectorXd internal = K * u + C * v;
+  Eigen::VectorXd a = model.inertias().cwiseInverse().cwiseProduct(torque - internal);
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu(n);
+
+  Recorder recorder(model, trajectory, settings, angle.data(), velocity.data());
+  recorder.output(0, 0., angle.data(), velocity.data());
+  const unsigned long steps = fixed_step_count(settings);
+  for (unsigned long step = 0; step < steps; ++step)
+  {
+    const double t1 = (step + 1) * h;
+    model.linearization(t1, K, C);
+    // Newmark predictors; HHT-α balances M·a₁ + (1+α)·f_int(t₁) − α·f_int(t₀) = T.
+    const Eigen::VectorXd u_pred = u + h * v + h * h * (0.5 - beta) * a;
+    const Eigen::VectorXd v_pred = v + h * (1. - gamma) * a;
+    lu.compute(mass + (1. + alpha) * (beta * h * h * K + gamma * h * C));
+    a = lu.solve(torque + alpha * internal - (1. + alpha) * (K * u_pred + C * v_pred));
+    u = u_pred + beta * h * h * a;
+    v = v_pred + gamma * h * a;
+    internal = K * u + C * v;
+    if ((step + 1) % check_interval == 0 || step + 1 == steps)
+      recorder.check(t1, angle.data(), velocity.data());
+    recorder.output(step + 1, t1, angle.data(), velocity.data());
+  }
+  trajectory.cost.steps = steps;
+  trajectory.cost.function_evaluations = steps + 1;
+  trajectory.cost.linear_solves = steps;
+  trajectory.cost.smallest_step = trajectory.cost.largest_step = h;
+}
+
+// Dormand & Prince (1980) 5(4) tableau, the 5th-order solution propagated (FSAL).
+constexpr double dp_c[7] = {0., 1. / 5., 3. / 10., 4. / 5., 8. / 9., 1., 1.};
+constexpr double dp_a[7][6] = {
+    {},
+    {1. / 5.},
+    {3. / 40., 9. / 40.},
+    {44. / 45., -56. / 15., 32. / 9.},
+    {19372. / 6561., -25360. / 2187., 64448. / 6561., -212. / 729.},
+    {9017. / 3168., -355. / 33., 46732. / 5247., 49. / 176., -5103. / 18656.},
+    {35. / 384., 0., 500. / 1113., 125. / 192., -2187. / 6784., 11. / 84.}};
+constexpr double dp_error[7] = {71. / 57600.,      0.,         -71. / 16695., 71. / 1920.,
+                                -17253. / 339200., 22. / 525., -1. / 40.};
+
+void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
+                  const std::vector<double>& velocity, const IntegratorSettings& settings,
+                  Trajectory& trajectory)
+{
+  const double rtol = settings.relative_tolerance;
+  if (!(rtol > 0. && rtol < 1e-1))
+    throw InputError("Integrator/relative tolerance", "must lie in (0, 0.1)");
+  const unsigned int n = model.n_dofs();
+  const unsigned int size = 2 * n;
+  std::vector<double> y(size), y_new(size), stage(size);
+  std::copy(angle.begin(), angle.end(), y.begin());
+  std::copy(velocity.begin(), velocity.end(), y.begin() + n);
+  std::vector<std::vector<double>> k(7, std::vector<double>(size));
+  auto rhs = [&](double t, const std::vector<double>& state, std::vector<double>& out)
+  {
+    std::copy(state.begin() + n, state.end(), out.begin());
+    model.acceleration(t, state.data(), state.data() + n, out.data() + n);
+    ++trajectory.cost.function_evaluations;
+  };
+
+  // Absolute tolerances on the scale of the static deflection and of a vibration at the
+  // highest natural frequency with that amplitude, so the error test is unit-consistent.
+  const StaticState statics = model.static_state(false);
+  double angle_scale = 0.;
+  for (unsigned int i = 0; i < n; ++i)
+    angle_scale = std::max({angle_scale, std::abs(statics.angle[i]), std::abs(angle[i]),
+                            std::abs(velocity[i]) / trajectory.highest_frequency});
+  if (angle_scale == 0.)
+    angle_scale = 1e-12;
+  std::vector<double> absolute(size);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    absolute[i] = rtol * angle_scale;
+    absolute[n + i] = rtol * angle_scale * trajectory.highest_frequency;
+  }
+
+  Recorder recorder(model, trajectory, settings, y.data(), y.data() + n);
+  recorder.output(0, 0., y.data(), y.data() + n);
+  const unsigned long outputs = fixed_step_count(settings);
+  double t = 0.;
+  double h = std::min(settings.time_step, 0.1 / trajectory.highest_frequency);
+  trajectory.cost.smallest_step = std::numeric_limits<double>::infinity();
+  rhs(t, y, k[0]);
+  for (unsigned long output = 1; output <= outputs; ++output)
+  {
+    const double t_output = output * settings.time_step;
+    while (t < t_output * (1. - 1e-14))
+    {
+      const bool clipped = t + h > t_output;
+      const double step = clipped ? t_output - t : h;
+      for (unsigned int s = 1; s < 7; ++s)
+      {
+        for (unsigned int i = 0; i < size; ++i)
+        {
+          double sum = 0.;
+          for (unsigned int j = 0; j < s; ++j)
+            sum += dp_a[s][j] * k[j][i];
+          stage[i] = y[i] + step * sum;
+        }
+        rhs(t + dp_c[s] * step, stage, k[s]);
+      }
+      y_new = stage; // stage 7 is the 5th-order solution
+      double error = 0.;
+      for (unsigned int i = 0; i < size; ++i)
+      {
+        double e = 0.;
+        for (unsigned int j = 0; j < 7; ++j)
+          e += dp_error[j] * k[j][i];
+        const double scale = absolute[i] + rtol * std::max(std::abs(y[i]), std::abs(y_new[i]));
+        error += (step * e / scale) * (step * e / scale);
+      }
+      error = std::sqrt(error / size);
+      if (!std::isfinite(error))
+        error = 1e10;
+      const double factor = std::min(5., std::max(0.2, 0.9 * std::pow(error, -0.2)));
+      if (error <= 1.)
+      {
+        t = clipped ? t_output : t + step;
+        y.swap(y_new);
+        k[0].swap(k[6]);
+        ++trajectory.cost.steps;
+        trajectory.cost.smallest_step = std::min(trajectory.cost.smallest_step, step);
+        trajectory.cost.largest_step = std::max(trajectory.cost.largest_step, step);
+        if (trajectory.cost.steps % check_interval == 0)
+          recorder.check(t, y.data(), y.data() + n);
+        if (!clipped)
+          h = std::min(step * factor, settings.time_step);
+      }
+      else
+      {
+        ++trajectory.cost.rejected_steps;
+        h = step * factor;
+      }
+      if (h < 1e-12 * settings.end_time)
+        throw SolverFailure(trajectory.method, "step size collapsed to " + std::to_string(h) +
+                                                   " s at t = " + std::to_string(t) + " s");
+    }
+    recorder.check(t, y.data(), y.data() + n);
+    recorder.output(output, t, y.data(), y.data() + n);
+  }
+}
+} // namespace
+
+Trajectory integrate(const TorsionalModel& model, const std::vector<double>& initial_angle,
+                     const std::vector<double>& initial_velocity,
+                     const IntegratorSettings& settings)
+{
+  if (initial_angle.size() != model.n_dofs() || initial_velocity.size() != model.n_dofs())
+    throw InputError("initial state", "needs one angle and one speed per gear");
+  if (!(settings.time_step > 0.) || !std::isfinite(settings.time_step))
+    throw InputError("Integrator/time step", "must be positive");
+  if (!(settings.end_time >= settings.time_step))
+    throw InputError("Integrator/end time", "must be at least one time step");
+  if (settings.record_stride == 0)
+    throw InputError("Integrator/record stride", "must be at least 1");
+
+  Trajectory trajectory;
+  trajectory.n_dofs = model.n_dofs();
+  trajectory.method = integrator_name(settings.type);
+  trajectory.rk4_step_limit = model.rk4_step_limit();
+  trajectory.highest_frequency = model.highest_natural_frequency();
+
+  if (settings.type == IntegratorType::rk4 && settings.time_step > trajectory.rk4_step_limit &&
+      !settings.allow_unstable_step)
+  {
+    std::ostringstream reason;
+    reason.precision(4);
+    reason << settings.time_step << " s exceeds the estimated RK4 stability limit "
+           << trajectory.rk4_step_limit << " s (highest natural frequency "
+           << trajectory.highest_frequency / (2. * M_PI)
+           << " Hz); use a smaller step, the implicit HHT-alpha method, or set "
+              "'allow unstable step = true' to run anyway";
+    throw InputError("Integrator/time step", reason.str());
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  switch (settings.type)
+  {
+  case IntegratorType::rk4:
+    run_rk4(model, initial_angle, initial_velocity, settings, trajectory);
+    break;
+  case IntegratorType::hht_alpha:
+    run_hht(model, initial_angle, initial_velocity, settings, trajectory);
+    break;
+  case IntegratorType::adaptive_rk:
+    run_adaptive(model, initial_angle, initial_velocity, settings, trajectory);
+    break;
+  }
+  trajectory.cost.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return trajectory;
+}
+} // namespace gearstiff::dynamics

@@ -1,0 +1,214 @@
+#include "dynamics/simulation.h"
+
+#include "kinematics/errors.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <unsupported/Eigen/FFT>
+
+namespace gearstiff::dynamics
+{
+std::string start_state_name(StartState start)
+{
+  return start == StartState::rest ? "rest" : "static deflection";
+}
+
+namespace
+{
+// Single-sided amplitude spectrum of samples (t_i, f_i) over [start, end). The window spans
+// a whole number of mesh periods, so the mesh harmonics fall on FFT bins; the series is
+// resampled by linear interpolation onto 2^k points so the FFT never meets a large prime
+// factor (the step oversamples the mesh frequency ~100-fold, so interpolation is harmless).
+void force_spectrum(const std::vector<double>& time, const std::vector<double>& force,
+                    std::size_t first, double start, double end, double max_frequency,
+                    MeshResult& result)
+{
+  const std::size_t available = time.size() - first;
+  std::size_t n = 1;
+  while (n < available && n < (std::size_t(1) << 20))
+    n *= 2;
+  std::vector<double> resampled(n);
+  const double dt = (end - start) / n;
+  std::size_t j = first;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double t = start + i * dt;
+    while (j + 1 < time.size() && time[j + 1] < t)
+      ++j;
+    const std::size_t j1 = std::min(j + 1, time.size() - 1);
+    const double w = (j1 == j) ? 0. : std::clamp((t - time[j]) / (time[j1] - time[j]), 0., 1.);
+    resampled[i] = (1. - w) * force[j] + w * force[j1];
+  }
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spectrum;
+  fft.fwd(spectrum, resampled);
+  const double resolution = 1. / (end - start);
+  for (std::size_t k = 0; k <= n / 2; ++k)
+  {
+    const double frequency = k * resolution;
+    if (frequency > max_frequency)
+      break;
+    result.spectrum_frequency.push_back(frequency);
+    result.spectrum_amplitude.push_back((k == 0 ? 1. : 2.) * std::abs(spectrum[k]) / n);
+  }
+}
+} // namespace
+
+SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings)
+{
+  SimulationResult result;
+  result.start = settings.start;
+  result.modes = model.modal_properties();
+  const double slowest_decay =
+      result.modes.decay_rates.empty() ? 0. : result.modes.decay_rates.front();
+  result.decay_time = slowest_decay > 0. ? std::log(1000.) / slowest_decay
+                                         : std::numeric_limits<double>::infinity();
+
+  const double mesh_period = 1. / model.mesh_position_rate(0);
+  result.window_automatic = settings.steady_state_start < 0.;
+  if (result.window_automatic)
+    // Without damping nothing decays: skip a fixed 20 mesh periods and say so via decay_time.
+    result.window_start = std::isfinite(result.decay_time) ? result.decay_time : 20. * mesh_period;
+  else
+    result.window_start = settings.steady_state_start;
+  const double end_time = settings.end_time > 0.
+                              ? settings.end_time
+                              : result.window_start + settings.window_periods * mesh_period;
+  if (!(end_time > result.window_start + settings.integrator.time_step))
+    throw InputError("Simulation/steady state start",
+                     "the steady-state window [" + std::to_string(result.window_start) + ", " +
+                         std::to_string(end_time) + "] s is empty; lengthen the simulated time");
+
+  const unsigned int n = model.n_dofs();
+  std::vector<double> angle(n, 0.), velocity(n, 0.);
+  if (settings.start == StartState::static_deflection)
+    angle = model.static_state(true).angle;
+  result.initial_angle = angle;
+
+  IntegratorSettings integrator = settings.integrator;
+  integrator.end_time = end_time;
+  result.trajectory = integrate(model, angle, velocity, integrator);
+  const Trajectory& trajectory = result.trajectory;
+
+  const std::vector<double>& time = trajectory.time;
+  std::size_t first = 0;
+  while (first < time.size() && time[first] < result.window_start - 1e-12)
+    ++first;
+  const double available = time.back() - time[first];
+  const double whole_periods = std::floor(available / mesh_period + 1e-9);
+  result.window_start = time[first];
+  result.window_end = whole_periods >= 1. ? time[first] + whole_periods * mesh_period : time.back();
+  std::size_t last = first;
+  while (last + 1 < time.size() && time[last + 1] <= result.window_end + 1e-12)
+    ++last;
+  const double middle = 0.5 * (result.window_start + result.window_end);
+
+  double max_frequency = settings.max_spectrum_frequency;
+  if (max_frequency <= 0.)
+    max_frequency = 1.5 * trajectory.highest_frequency / (2. * M_PI);
+
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+  {
+    MeshResult mesh;
+    const Mesh& description = model.train().meshes[m];
+    mesh.name = description.name.empty() ? "Mesh " + std::to_string(m + 1) : description.name;
+    mesh.nominal_force = model.nominal_force(m);
+    mesh.mesh_frequency = model.mesh_position_rate(m);
+    mesh.initial_position = description.initial_position;
+    mesh.force.resize(time.size());
+    mesh.stiffness.resize(time.size());
+    mesh.deflection.resize(time.size());
+    for (std::size_t i = 0; i < time.size(); ++i)
+    {
+      const MeshResponse response =
+          model.mesh_response(m, time[i], trajectory.angle_at(i), trajectory.velocity_at(i));
+      mesh.force[i] = response.force;
+      mesh.stiffness[i] = response.stiffness;
+      mesh.deflection[i] = response.deflection;
+    }
+    // K_v is relative to the nominal force; a mesh without load has no K_v.
+    const double nominal = std::abs(mesh.nominal_force);
+    const double scale = nominal > 0. ? 1. / nominal : std::numeric_limits<double>::quiet_NaN();
+    mesh.kv_max = -std::numeric_limits<double>::infinity();
+    mesh.kv_min = std::numeric_limits<double>::infinity();
+    mesh.kv_max_first_half = mesh.kv_max_second_half = mesh.kv_max;
+    double sum = 0.;
+    // The window holds whole mesh periods: average over [start, end) with equal weights.
+    const std::size_t mean_last = last > first ? last - 1 : last;
+    for (std::size_t i = first; i <= last; ++i)
+    {
+      const double kv = mesh.force[i] * scale;
+      if (kv > mesh.kv_max)
+      {
+        mesh.kv_max = kv;
+        mesh.kv_max_time = time[i];
+      }
+      mesh.kv_min = std::min(mesh.kv_min, kv);
+      double& half = time[i] < middle ? mesh.kv_max_first_half : mesh.kv_max_second_half;
+      half = std::max(half, kv);
+      if (i <= mean_last)
+        sum += mesh.force[i];
+    }
+    mesh.mean_force = sum / (mean_last - first + 1);
+    if (settings.keep_time_series)
+      force_spectrum(time, mesh.force, first, result.window_start, result.window_end, max_frequency,
+                     mesh);
+    else
+    {
+      mesh.force.clear();
+      mesh.stiffness.clear();
+      mesh.deflection.clear();
+    }
+    result.kv_max = std::max(result.kv_max, mesh.kv_max);
+    result.meshes.push_back(std::move(mesh));
+  }
+  if (!settings.keep_time_series)
+  {
+    result.trajectory.angle.clear();
+    result.trajectory.velocity.clear();
+    result.trajectory.time.clear();
+  }
+  return result;
+}
+
+SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
+                        const std::vector<double>& input_speeds, unsigned int steps_per_mesh_period)
+{
+  const auto start = std::chrono::steady_clock::now();
+  SweepResult sweep;
+  for (const double speed : input_speeds)
+  {
+    GearTrain point_train = train;
+    point_train.input_speed = speed;
+    const TorsionalModel model(point_train);
+    SimulationSettings point = settings;
+    point.keep_time_series = false;
+    double fastest_mesh = 0.;
+    for (unsigned int m = 0; m < model.n_meshes(); ++m)
+      fastest_mesh = std::max(fastest_mesh, model.mesh_position_rate(m));
+    point.integrator.time_step =
+        std::min(settings.integrator.time_step, 1. / (fastest_mesh * steps_per_mesh_period));
+    const SimulationResult result = simulate(model, point);
+
+    SweepPoint p;
+    p.input_speed = speed;
+    p.mesh_frequency = model.mesh_position_rate(0);
+    p.time_step = point.integrator.time_step;
+    p.kv_max = result.kv_max;
+    p.kv_min = std::numeric_limits<double>::infinity();
+    for (const auto& mesh : result.meshes)
+    {
+      p.kv_min = std::min(p.kv_min, mesh.kv_min);
+      p.periodicity =
+          std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
+    }
+    p.cost = result.trajectory.cost;
+    sweep.points.push_back(p);
+  }
+  sweep.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return sweep;
+}
+} // namespace gearstiff::dynamics

@@ -1,0 +1,99 @@
+// A dynamic run of a gear train and what it yields: mesh forces, the dynamic factor
+// K_v(t) = F(t)/F_nominal (gear-data.md §1: K_v = F_c/F_cn), K_v max over a steady-state window,
+// the mesh-force spectrum, and a speed sweep (K_v max against input speed).
+//
+// Results depend on the start (from rest or from the static deflection), on the mesh phase and
+// on whether the start-up transient is included, so each result carries the window, phase and
+// start it was computed with. The steady-state window starts, unless given, after the slowest
+// vibration mode has decayed to 1/1000 (ln 1000 / smallest modal decay rate at mean stiffness)
+// and is then trimmed to a whole number of periods of mesh 1.
+#pragma once
+
+#include "dynamics/integrators.h"
+
+#include <string>
+#include <vector>
+
+namespace gearstiff::dynamics
+{
+enum class StartState
+{
+  rest,             // no deflection, no vibration: the torques are applied suddenly at t = 0
+  static_deflection // static deflection under mean stiffness, no vibration
+};
+
+std::string start_state_name(StartState start);
+
+struct SimulationSettings
+{
+  IntegratorSettings integrator; // its end_time is replaced when end_time below is automatic
+  StartState start = StartState::static_deflection;
+  double steady_state_start = -1.;    // [s] window start; negative: automatic (decay)
+  double end_time = 0.;               // [s] 0: automatic, window start + window periods
+  unsigned int window_periods = 40;   // [-] length of the automatic window in mesh periods
+  double max_spectrum_frequency = 0.; // [Hz] spectrum up to here; 0: 1.5 × highest mode
+  bool keep_time_series = true;       // false: only the summary (speed sweeps)
+};
+
+struct MeshResult
+{
+  std::string name;
+  double nominal_force = 0.;    // [N]
+  double mesh_frequency = 0.;   // [Hz]
+  double initial_position = 0.; // [base pitches] the mesh phase at t = 0
+  // Time series at the output times (empty when keep_time_series is false).
+  std::vector<double> force;      // [N]
+  std::vector<double> stiffness;  // [N/m]
+  std::vector<double> deflection; // [m]
+  // Over the steady-state window:
+  double kv_max = 0.;             // [-] largest F/F_nominal
+  double kv_max_time = 0.;        // [s] where it occurs
+  double kv_min = 0.;             // [-] smallest F/F_nominal (negative: the teeth would separate,
+                                  //     which this linear model does not represent)
+  double mean_force = 0.;         // [N]
+  double kv_max_first_half = 0.;  // [-] K_v max over each half of the window: their
+  double kv_max_second_half = 0.; //     difference shows whether the response is periodic
+  std::vector<double> spectrum_frequency; // [Hz]
+  std::vector<double> spectrum_amplitude; // [N] single-sided amplitude of F
+};
+
+struct SimulationResult
+{
+  Trajectory trajectory;
+  std::vector<MeshResult> meshes;
+  StartState start = StartState::static_deflection;
+  double window_start = 0.; // [s]
+  double window_end = 0.;   // [s]
+  bool window_automatic = true;
+  double decay_time = 0.; // [s] ln(1000)/slowest decay rate (inf without damping)
+  ModalProperties modes;
+  double kv_max = 0.;                // [-] largest over all meshes
+  std::vector<double> initial_angle; // [rad]
+};
+
+SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings);
+
+struct SweepPoint
+{
+  double input_speed = 0.;    // [rad/s]
+  double mesh_frequency = 0.; // [Hz] of mesh 1
+  double time_step = 0.;      // [s] used
+  double kv_max = 0.;         // [-] largest over the meshes in the steady-state window
+  double kv_min = 0.;         // [-]
+  double periodicity = 0.;    // [-] |K_v max(first half) − K_v max(second half)|
+  IntegrationCost cost;
+};
+
+struct SweepResult
+{
+  std::vector<SweepPoint> points;
+  double wall_time = 0.; // [s]
+};
+
+// K_v against input speed. The step is settings.integrator.time_step, reduced where needed so
+// every mesh period holds at least `steps_per_mesh_period` steps (the stiffness jumps must be
+// resolved at high speed).
+SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
+                        const std::vector<double>& input_speeds,
+                        unsigned int steps_per_mesh_period = 40);
+} // namespace gearstiff::dynamics

@@ -1,0 +1,399 @@
+#include "dynamics/torsional_model.h"
+
+#include "kinematics/errors.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+
+namespace gearstiff::dynamics
+{
+namespace
+{
+std::string gear_label(const GearTrain& train, unsigned int i)
+{
+  return train.gears[i].name.empty() ? "Gear " + std::to_string(i + 1) : train.gears[i].name;
+}
+
+std::string mesh_label(const GearTrain& train, unsigned int m)
+{
+  return train.meshes[m].name.empty() ? "Mesh " + std::to_string(m + 1) : train.meshes[m].name;
+}
+
+void require(bool condition, const std::string& parameter, const std::string& reason)
+{
+  if (!condition)
+    throw InputError(parameter, reason);
+}
+
+// Classical RK4 amplification factor for y' = λy at z = hλ.
+double rk4_amplification(std::complex<double> z)
+{
+  return std::abs(1. + z * (1. + z * (0.5 + z * (1. / 6. + z / 24.))));
+}
+} // namespace
+
+double mesh_phase_from_placement(unsigned int driver_teeth, double placement_angle)
+{
+  const double turns = driver_teeth * placement_angle / (2. * M_PI);
+  return turns - std::floor(turns);
+}
+
+TorsionalModel::TorsionalModel(const GearTrain& train)
+    : description(train), n_gears(train.gears.size())
+{
+  require(n_gears >= 2, "gears", "a train needs at least two gears");
+  require(train.meshes.size() + 1 == n_gears, "meshes",
+          "a tree-shaped train of " + std::to_string(n_gears) + " gears has " +
+              std::to_string(n_gears - 1) + " meshes, got " + std::to_string(train.meshes.size()) +
+              " (closed loops are not supported)");
+  require(train.input_speed > 0. && std::isfinite(train.input_speed), "input speed",
+          "must be positive, got " + std::to_string(train.input_speed) + " rad/s");
+
+  inertia.resize(n_gears);
+  torques.resize(n_gears);
+  inverse_inertia.resize(n_gears);
+  for (unsigned int i = 0; i < n_gears; ++i)
+  {
+    const Gear& gear = train.gears[i];
+    require(gear.inertia > 0. && std::isfinite(gear.inertia), gear_label(train, i) + "/inertia",
+            "must be positive, got " + std::to_string(gear.inertia) + " kg·m²");
+    require(std::isfinite(gear.torque), gear_label(train, i) + "/torque", "must be finite");
+    inertia[i] = gear.inertia;
+    inverse_inertia[i] = 1. / gear.inertia;
+    torques[i] = gear.torque;
+  }
+
+  for (unsigned int m = 0; m < train.meshes.size(); ++m)
+  {
+    const Mesh& mesh = train.meshes[m];
+    const std::string label = mesh_label(train, m);
+    require(mesh.driver < n_gears && mesh.driven < n_gears && mesh.driver != mesh.driven,
+            label + "/gears", "driver and driven must be two different gears of the train");
+    require(mesh.driver_base_radius > 0., label + "/driver base radius", "must be positive");
+    require(mesh.driven_base_radius > 0., label + "/driven base radius", "must be positive");
+    require(mesh.base_pitch > 0., label + "/base pitch", "must be positive");
+    require(mesh.contact_ratio >= 1. && mesh.contact_ratio < 4., label + "/contact ratio",
+            "must lie in [1, 4), got " + std::to_string(mesh.contact_ratio));
+    require(mesh.approach_ratio >= 0. && mesh.approach_ratio <= mesh.contact_ratio,
+            label + "/approach ratio", "must lie in [0, contact ratio]");
+    require(mesh.damping >= 0. && std::isfinite(mesh.damping), label + "/damping",
+            "must not be negative, got " + std::to_string(mesh.damping) + " N·s/m");
+    require(mesh.friction_coefficient >= 0. && mesh.friction_coefficient < 1.,
+            label + "/friction coefficient", "must lie in [0, 1)");
+    require(mesh.driver_friction_arm >= 0. && mesh.driven_friction_arm >= 0.,
+            label + "/friction arms", "must not be negative");
+    // A default-constructed MeshStiffness is a zero constant: the caller forgot the source.
+    require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., label + "/stiffness",
+            "no positive mesh stiffness given");
+  }
+
+  // Nominal speeds: r_a·ω_a = r_b·ω_b along every mesh, gear 0 at the input speed.
+  speeds.assign(n_gears, 0.);
+  std::vector<bool> known(n_gears, false);
+  speeds[0] = train.input_speed;
+  known[0] = true;
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (const Mesh& mesh : train.meshes)
+      if (known[mesh.driver] != known[mesh.driven])
+      {
+        if (known[mesh.driver])
+          speeds[mesh.driven] =
+              speeds[mesh.driver] * mesh.driver_base_radius / mesh.driven_base_radius;
+        else
+          speeds[mesh.driver] =
+              speeds[mesh.driven] * mesh.driven_base_radius / mesh.driver_base_radius;
+        known[mesh.driver] = known[mesh.driven] = true;
+        changed = true;
+      }
+  }
+  for (unsigned int i = 0; i < n_gears; ++i)
+    require(known[i], gear_label(train, i), "is not connected to gear 1 by any mesh");
+  rigid.resize(n_gears);
+  for (unsigned int i = 0; i < n_gears; ++i)
+    rigid[i] = speeds[i] / speeds[0];
+
+  for (const Mesh& mesh : train.meshes)
+  {
+    CompiledMesh c;
+    c.a = mesh.driver;
+    c.b = mesh.driven;
+    c.ra = mesh.driver_base_radius;
+    c.rb = mesh.driven_base_radius;
+    c.rfa = mesh.driver_friction_arm;
+    c.rfb = mesh.driven_friction_arm;
+    c.damping = mesh.damping;
+    c.mu = mesh.friction_coefficient;
+    c.contact_ratio = mesh.contact_ratio;
+    c.approach_ratio = mesh.approach_ratio;
+    c.position_rate = speeds[mesh.driver] * mesh.driver_base_radius / mesh.base_pitch;
+    c.initial_position = mesh.initial_position;
+    c.stiffness = mesh.stiffness;
+    meshes.push_back(c);
+  }
+
+  double rigid_acceleration = 0.;
+  std::vector<double> angle;
+  nominal_forces = solve_static(std::vector<double>(meshes.size(), 0.), rigid_acceleration, angle);
+}
+
+MeshStiffnessState TorsionalModel::mesh_state(const CompiledMesh& mesh, double time) const
+{
+  return mesh.stiffness.evaluate(mesh.initial_position + mesh.position_rate * time,
+                                 mesh.contact_ratio, mesh.approach_ratio);
+}
+
+void TorsionalModel::acceleration(double time, const double* angle, const double* velocity,
+                                  double* result) const
+{
+  for (unsigned int i = 0; i < n_gears; ++i)
+    result[i] = torques[i];
+  for (const CompiledMesh& mesh : meshes)
+  {
+    const MeshStiffnessState state = mesh_state(mesh, time);
+    const double deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
+    const double rate = mesh.ra * velocity[mesh.a] - mesh.rb * velocity[mesh.b];
+    const double force = state.stiffness * deflection + mesh.damping * rate;
+    const double friction = mesh.mu * state.friction_direction;
+    result[mesh.a] -= (mesh.ra + friction * mesh.rfa) * force;
+    result[mesh.b] += (mesh.rb + friction * mesh.rfb) * force;
+  }
+  for (unsigned int i = 0; i < n_gears; ++i)
+    result[i] *= inverse_inertia[i];
+}
+
+MeshResponse TorsionalModel::mesh_response(unsigned int m, double time, const double* angle,
+                                           const double* velocity) const
+{
+  const CompiledMesh& mesh = meshes[m];
+  const MeshStiffnessState state = mesh_state(mesh, time);
+  MeshResponse response;
+  response.position = mesh.initial_position + mesh.position_rate * time;
+  response.stiffness = state.stiffness;
+  response.friction_direction = state.friction_direction;
+  response.deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
+  response.deflection_rate = mesh.ra * velocity[mesh.a] - mesh.rb * velocity[mesh.b];
+  response.force = state.stiffness * response.deflection + mesh.damping * response.deflection_rate;
+  return response;
+}
+
+void TorsionalModel::assemble(const std::vector<double>& k, const std::vector<double>& sigma,
+                              Eigen::MatrixXd& K, Eigen::MatrixXd& C) const
+{
+  K.setZero(n_gears, n_gears);
+  C.setZero(n_gears, n_gears);
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+  {
+    const CompiledMesh& mesh = meshes[m];
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(n_gears);
+    Eigen::VectorXd h = Eigen::VectorXd::Zero(n_gears);
+    const double friction = mesh.mu * sigma[m];
+    g[mesh.a] = mesh.ra + friction * mesh.rfa;
+    g[mesh.b] = -(mesh.rb + friction * mesh.rfb);
+    h[mesh.a] = mesh.ra;
+    h[mesh.b] = -mesh.rb;
+    K += k[m] * g * h.transpose();
+    C += mesh.damping * g * h.transpose();
+  }
+}
+
+void TorsionalModel::linearization(double time, Eigen::MatrixXd& K, Eigen::MatrixXd& C) const
+{
+  std::vector<double> k(meshes.size()), sigma(meshes.size());
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+  {
+    const MeshStiffnessState state = mesh_state(meshes[m], time);
+    k[m] = state.stiffness;
+    sigma[m] = state.friction_direction;
+  }
+  assemble(k, sigma, K, C);
+}
+
+std::vector<double> TorsionalModel::solve_static(const std::vector<double>& sigma,
+                                                 double& rigid_acceleration,
+                                                 std::vector<double>& angle_out) const
+{
+  // Unknowns: the mesh forces and the rigid-mode acceleration a0 (zero when the torques
+  // balance). A tree of n gears has n − 1 meshes, so G·F + M·v0·a0 = T is square.
+  const unsigned int n_mesh = meshes.size();
+  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(n_gears, n_gears);
+  for (unsigned int m = 0; m < n_mesh; ++m)
+  {
+    const CompiledMesh& mesh = meshes[m];
+    const double friction = mesh.mu * sigma[m];
+    system(mesh.a, m) = mesh.ra + friction * mesh.rfa;
+    system(mesh.b, m) = -(mesh.rb + friction * mesh.rfb);
+  }
+  system.col(n_mesh) = inertia.cwiseProduct(rigid);
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
+  if (!lu.isInvertible())
+    throw SolverFailure("static deflection", "the torque balance of the train is singular");
+  const Eigen::VectorXd solution = lu.solve(torques);
+  std::vector<double> forces(solution.data(), solution.data() + n_mesh);
+  rigid_acceleration = solution[n_mesh];
+
+  // Angles from the deflections δ_m = F_m/k_mean plus "no rigid-mode component".
+  Eigen::MatrixXd kinematic = Eigen::MatrixXd::Zero(n_gears, n_gears);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_gears);
+  for (unsigned int m = 0; m < n_mesh; ++m)
+  {
+    const CompiledMesh& mesh = meshes[m];
+    kinematic(m, mesh.a) = mesh.ra;
+    kinematic(m, mesh.b) = -mesh.rb;
+    rhs[m] = forces[m] / mesh.stiffness.mean_stiffness(mesh.contact_ratio);
+  }
+  kinematic.row(n_mesh) = inertia.cwiseProduct(rigid).transpose();
+  const Eigen::VectorXd angle = kinematic.fullPivLu().solve(rhs);
+  angle_out.assign(angle.data(), angle.data() + n_gears);
+  return forces;
+}
+
+StaticState TorsionalModel::static_state(bool include_friction) const
+{
+  std::vector<double> sigma(meshes.size(), 0.);
+  if (include_friction)
+    for (unsigned int m = 0; m < meshes.size(); ++m)
+      sigma[m] = meshes[m].stiffness.mean_friction_direction(meshes[m].contact_ratio,
+                                                             meshes[m].approach_ratio);
+  StaticState state;
+  state.mesh_force = solve_static(sigma, state.rigid_acceleration, state.angle);
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    state.deflection.push_back(state.mesh_force[m] /
+                               meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio));
+  return state;
+}
+
+ModalProperties TorsionalModel::modal_properties() const
+{
+  std::vector<double> k(meshes.size()), sigma(meshes.size(), 0.);
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    k[m] = meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio);
+  Eigen::MatrixXd K, C;
+  assemble(k, sigma, K, C);
+  const Eigen::MatrixXd Minv = inertia.cwiseInverse().asDiagonal();
+
+  ModalProperties modes;
+  const Eigen::VectorXcd undamped = (Minv * K).eigenvalues();
+  double largest = 0.;
+  for (const auto& value : undamped)
+    largest = std::max(largest, std::abs(value));
+  for (const auto& value : undamped)
+    if (std::abs(value) > 1e-9 * largest) // the rigid mode has eigenvalue 0
+      modes.natural_frequencies.push_back(std::sqrt(std::abs(value)) / (2. * M_PI));
+  std::sort(modes.natural_frequencies.begin(), modes.natural_frequencies.end());
+
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n_gears, 2 * n_gears);
+  A.topRightCorner(n_gears, n_gears).setIdentity();
+  A.bottomLeftCorner(n_gears, n_gears) = -Minv * K;
+  A.bottomRightCorner(n_gears, n_gears) = -Minv * C;
+  const Eigen::VectorXcd damped = A.eigenvalues();
+  double largest_damped = 0.;
+  for (const auto& value : damped)
+    largest_damped = std::max(largest_damped, std::abs(value));
+  for (const auto& value : damped)
+    if (std::abs(value) > 1e-9 * largest_damped && value.imag() >= 0.)
+      modes.decay_rates.push_back(-value.real());
+  std::sort(modes.decay_rates.begin(), modes.decay_rates.end());
+  return modes;
+}
+
+double TorsionalModel::highest_natural_frequency() const
+{
+  std::vector<double> k(meshes.size()), sigma(meshes.size(), 1.);
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    k[m] = meshes[m].stiffness.max_stiffness(meshes[m].contact_ratio);
+  Eigen::MatrixXd K, C;
+  assemble(k, sigma, K, C);
+  const Eigen::VectorXcd values = (inertia.cwiseInverse().asDiagonal() * K).eigenvalues();
+  double largest = 0.;
+  for (const auto& value : values)
+    largest = std::max(largest, std::abs(value));
+  return std::sqrt(largest);
+}
+
+double TorsionalModel::rk4_limit_for(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C) const
+{
+  const Eigen::MatrixXd Minv = inertia.cwiseInverse().asDiagonal();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n_gears, 2 * n_gears);
+  A.topRightCorner(n_gears, n_gears).setIdentity();
+  A.bottomLeftCorner(n_gears, n_gears) = -Minv * K;
+  A.bottomRightCorner(n_gears, n_gears) = -Minv * C;
+  const Eigen::VectorXcd values = A.eigenvalues();
+  double largest = 0.;
+  for (const auto& value : values)
+    largest = std::max(largest, std::abs(value));
+
+  // Along each ray z = h·λ find where |R(z)| first exceeds 1 (the RK4 region is bounded by
+  // |z| < 3 in every direction): a coarse scan, then bisection. The tolerance 1e-9 ignores
+  // the round-off real part of an undamped eigenvalue, which is ~1e-13 of its size.
+  double limit = std::numeric_limits<double>::infinity();
+  for (const auto& value : values)
+  {
+    const double size = std::abs(value);
+    if (size < 1e-9 * largest)
+      continue; // rigid mode
+    const std::complex<double> direction = value / size;
+    double stable = 0., unstable = 0.;
+    for (double t = 0.01; t < 4.; t += 0.01)
+      if (rk4_amplification(t * direction) > 1. + 1e-9)
+      {
+        unstable = t;
+        break;
+      }
+      else
+        stable = t;
+    if (unstable == 0.)
+      continue;
+    for (int i = 0; i < 60; ++i)
+    {
+      const double middle = 0.5 * (stable + unstable);
+      (rk4_amplification(middle * direction) > 1. + 1e-9 ? unstable : stable) = middle;
+    }
+    limit = std::min(limit, stable / size);
+  }
+  return limit;
+}
+
+double TorsionalModel::rk4_step_limit() const
+{
+  std::vector<double> k(meshes.size()), sigma(meshes.size(), 1.);
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    k[m] = meshes[m].stiffness.max_stiffness(meshes[m].contact_ratio);
+  Eigen::MatrixXd K, C;
+  assemble(k, sigma, K, C);
+  return rk4_limit_for(K, C);
+}
+
+double TorsionalModel::vibration_energy(double time, const double* angle,
+                                        const double* velocity) const
+{
+  const Eigen::Map<const Eigen::VectorXd> v(velocity, n_gears);
+  const double rigid_speed =
+      (rigid.cwiseProduct(inertia)).dot(v) / (rigid.cwiseProduct(inertia)).dot(rigid);
+  const Eigen::VectorXd relative = v - rigid_speed * rigid;
+  double energy = 0.5 * relative.cwiseProduct(inertia).dot(relative);
+  for (const CompiledMesh& mesh : meshes)
+  {
+    const double deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
+    energy += 0.5 * mesh_state(mesh, time).stiffness * deflection * deflection;
+  }
+  return energy;
+}
+
+double TorsionalModel::total_energy(double time, const double* angle, const double* velocity) const
+{
+  const Eigen::Map<const Eigen::VectorXd> v(velocity, n_gears);
+  const Eigen::Map<const Eigen::VectorXd> phi(angle, n_gears);
+  double energy = 0.5 * v.cwiseProduct(inertia).dot(v) - torques.dot(phi);
+  for (const CompiledMesh& mesh : meshes)
+  {
+    const double deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
+    energy += 0.5 * mesh_state(mesh, time).stiffness * deflection * deflection;
+  }
+  return energy;
+}
+} // namespace gearstiff::dynamics
