@@ -1,0 +1,434 @@
+#include "kinematics/gear_pair.h"
+
+#include "kinematics/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace gearstiff::kinematics
+{
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+
+std::string format(double value, int digits = 4)
+{
+  std::ostringstream s;
+  s.precision(digits);
+  s << value;
+  return s.str();
+}
+
+std::string millimetres(double metres)
+{
+  return format(metres * 1e3) + " mm";
+}
+
+void check_gear(const GearSpec& gear, bool wheel)
+{
+  auto name = [&](const std::string& key) { return gear_parameter_name(wheel, key); };
+  if (gear.teeth < 3)
+    throw InputError(name("teeth"), "must be at least 3, got " + std::to_string(gear.teeth));
+  if (!(gear.normal_module > 0.))
+    throw InputError(name("module"), "must be positive");
+  if (!(gear.pressure_angle > 0. && gear.pressure_angle < 0.5 * pi / 2.))
+    throw InputError(name("pressure angle"), "must lie in (0°, 45°)");
+  if (!(std::abs(gear.helix_angle) < pi / 3.))
+    throw InputError(name("helix angle"), "must lie in (−60°, 60°)");
+  if (!(gear.face_width > 0.))
+    throw InputError(name("face width"), "must be positive");
+  if (!(gear.tip_diameter >= 0.))
+    throw InputError(name("tip diameter"), "must be 0 (standard) or positive");
+  if (!(gear.addendum_coefficient > 0.) || !(gear.dedendum_coefficient > 0.) ||
+      !(gear.root_radius_coefficient >= 0.))
+    throw InputError(name("dedendum coefficient"), "basic rack coefficients must be positive");
+  if (!(gear.dedendum_coefficient >
+        gear.root_radius_coefficient * (1. - std::sin(gear.pressure_angle))))
+    throw InputError(name("root radius coefficient"),
+                     "the rack tip round does not fit into the rack dedendum");
+}
+
+// The rack flank generates the involute down to the height where its tip round starts; a
+// point at depth h below the rolling line lies h / sin α_t along the line of action from
+// the pitch point. Returns the roll length from the gear's own tangent point T (m);
+// negative for an external gear means the rack undercuts the involute.
+double form_roll_length(const GearSpec& gear, double reference_radius,
+                        double transverse_pressure_angle)
+{
+  const double m = gear.normal_module;
+  const double straight_flank_depth =
+      (gear.dedendum_coefficient -
+       gear.root_radius_coefficient * (1. - std::sin(gear.pressure_angle))) *
+      m;
+  const double side = gear.internal ? -1. : 1.;
+  return reference_radius * std::sin(transverse_pressure_angle) -
+         side * (straight_flank_depth - gear.profile_shift * m) /
+             std::sin(transverse_pressure_angle);
+}
+} // namespace
+
+std::string gear_parameter_name(bool wheel, const std::string& key)
+{
+  return std::string("Gear pair/") + (wheel ? "Wheel/" : "Pinion/") + key;
+}
+
+double involute(double angle)
+{
+  return std::tan(angle) - angle;
+}
+
+double inverse_involute(double value)
+{
+  if (!(value >= 0.) || !(value < 10.))
+    throw SolverFailure("inverse involute", "argument " + format(value) + " out of range");
+  // inv α ≈ α³/3 near 0 gives a start on the convex side, from which Newton converges
+  // monotonically (inv is convex on [0, π/2)).
+  double angle = std::min(std::cbrt(3. * value), 1.5);
+  for (unsigned int iteration = 0; iteration < 60; ++iteration)
+  {
+    const double tangent = std::tan(angle);
+    const double step = (tangent - angle - value) / (tangent * tangent);
+    angle -= step;
+    if (std::abs(step) < 1e-15)
+      return angle;
+  }
+  throw SolverFailure("inverse involute", "Newton iteration did not converge for " + format(value));
+}
+
+unsigned int GearPairGeometry::pairs_in_contact(double position) const
+{
+  if (position < contact_start || position > contact_end)
+    return 0;
+  const double p = transverse_base_pitch;
+  return static_cast<unsigned int>(std::floor((contact_end - position) / p) +
+                                   std::floor((position - contact_start) / p) + 1.);
+}
+
+double GearPairGeometry::pinion_roll_angle(double position) const
+{
+  return position / (0.5 * pinion.base_diameter);
+}
+
+double GearPairGeometry::single_contact_start() const
+{
+  return contact_end - transverse_base_pitch;
+}
+
+double GearPairGeometry::single_contact_end() const
+{
+  return contact_start + transverse_base_pitch;
+}
+
+GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
+{
+  check_gear(spec.pinion, false);
+  check_gear(spec.wheel, true);
+  if (spec.pinion.internal)
+    throw InputError(gear_parameter_name(false, "internal"),
+                     "the pinion must be external (make the wheel the ring gear)");
+  const GearSpec& g1 = spec.pinion;
+  const GearSpec& g2 = spec.wheel;
+  if (g1.normal_module != g2.normal_module)
+    throw InputError(gear_parameter_name(true, "module"),
+                     "differs from the pinion's: meshing gears share the normal module");
+  if (g1.pressure_angle != g2.pressure_angle)
+    throw InputError(gear_parameter_name(true, "pressure angle"),
+                     "differs from the pinion's: meshing gears share the basic rack");
+  // Meshing external helical gears have opposite hands, internal ones the same hand; the
+  // pair is described by the pinion's β, the wheel's must have the same magnitude.
+  if (std::abs(std::abs(g1.helix_angle) - std::abs(g2.helix_angle)) > 1e-12)
+    throw InputError(gear_parameter_name(true, "helix angle"),
+                     "differs in magnitude from the pinion's");
+  if (g2.internal && g2.teeth <= g1.teeth)
+    throw InputError(gear_parameter_name(true, "teeth"),
+                     "an internal wheel needs more teeth than its pinion (" +
+                         std::to_string(g2.teeth) + " ≤ " + std::to_string(g1.teeth) + ")");
+  if (!(spec.centre_distance >= 0.))
+    throw InputError("Gear pair/centre distance", "must be 0 (from the shifts) or positive");
+
+  GearPairGeometry result;
+  result.spec = spec;
+
+  // DIN 3960 signs: the internal wheel has negative z and diameters.
+  const double s2 = g2.internal ? -1. : 1.;
+  const double z1 = g1.teeth;
+  const double z2 = s2 * g2.teeth;
+  const double m_n = g1.normal_module;
+  const double alpha_n = g1.pressure_angle;
+  const double beta = std::abs(g1.helix_angle);
+
+  const double m_t = m_n / std::cos(beta);
+  const double alpha_t = std::atan(std::tan(alpha_n) / std::cos(beta));
+  result.transverse_module = m_t;
+  result.transverse_pressure_angle = alpha_t;
+  result.base_helix_angle = std::asin(std::sin(beta) * std::cos(alpha_n));
+  result.gear_ratio = g2.teeth / z1;
+
+  const double d1 = z1 * m_t;
+  const double d2 = z2 * m_t;
+  const double db1 = d1 * std::cos(alpha_t);
+  const double db2 = d2 * std::cos(alpha_t);
+  const double x_sum = g1.profile_shift + g2.profile_shift;
+
+  // ISO 21771 eq. for the zero-backlash working pressure angle: inv α_wt = inv α_t +
+  // 2·tan α_n·(x1 + x2)/(z1 + z2), signed z serving external and internal pairs.
+  const double inv_alpha_zero_backlash =
+      involute(alpha_t) + 2. * std::tan(alpha_n) * x_sum / (z1 + z2);
+  if (!(inv_alpha_zero_backlash > 0.))
+    throw InputError(gear_parameter_name(true, "profile shift"),
+                     "x1 + x2 = " + format(x_sum) + " leaves no working pressure angle");
+  const double reference_centre_distance = 0.5 * (d1 + d2);
+  result.reference_centre_distance = std::abs(reference_centre_distance);
+
+  double alpha_wt = 0.;
+  if (spec.centre_distance == 0.)
+  {
+    alpha_wt = inverse_involute(inv_alpha_zero_backlash);
+    result.backlash = 0.;
+  }
+  else
+  {
+    const double cos_alpha_wt =
+        std::abs(reference_centre_distance) * std::cos(alpha_t) / spec.centre_distance;
+    if (!(cos_alpha_wt > 0.2 && cos_alpha_wt < 1.))
+      throw InputError("Gear pair/centre distance",
+                       millimetres(spec.centre_distance) +
+                           " is incompatible with the reference centre distance " +
+                           millimetres(std::abs(reference_centre_distance)));
+    alpha_wt = std::acos(cos_alpha_wt);
+    // Shifts that would close the gap, minus the shifts present, thicken both teeth by
+    // 2·Δx·m_n·sin α_n along the normal line of action.
+    const double x_sum_zero_backlash =
+        (involute(alpha_wt) - involute(alpha_t)) * (z1 + z2) / (2. * std::tan(alpha_n));
+    result.backlash = 2. * m_n * std::sin(alpha_n) * (x_sum_zero_backlash - x_sum);
+    if (result.backlash < -1e-9)
+      throw InputError("Gear pair/centre distance",
+                       millimetres(spec.centre_distance) +
+                           " is too small for the profile shifts (negative backlash " +
+                           millimetres(result.backlash) + ")");
+  }
+  result.working_pressure_angle = alpha_wt;
+  const double a_w = 0.5 * (db1 + db2) / std::cos(alpha_wt); // signed (internal: < 0)
+  result.centre_distance = std::abs(a_w);
+
+  // Tip and root diameters, signed: d ± 2·m_n·(h* ± x) in one formula.
+  auto tip_of = [&](const GearSpec& g, double d, double side)
+  {
+    return g.tip_diameter > 0. ? side * g.tip_diameter
+                               : d + 2. * m_n * (g.addendum_coefficient + g.profile_shift);
+  };
+  auto root_of = [&](const GearSpec& g, double d)
+  { return d - 2. * m_n * (g.dedendum_coefficient - g.profile_shift); };
+  const double da1 = tip_of(g1, d1, 1.);
+  const double da2 = tip_of(g2, d2, s2);
+  const double df1 = root_of(g1, d1);
+  const double df2 = root_of(g2, d2);
+  result.spec.pinion.tip_diameter = std::abs(da1);
+  result.spec.wheel.tip_diameter = std::abs(da2);
+
+  // A tip inside the base circle has no involute to run on.
+  for (const bool wheel : {false, true})
+  {
+    const double da = wheel ? da2 : da1;
+    const double db = wheel ? db2 : db1;
+    const double df = wheel ? df2 : df1;
+    if (!(std::abs(da) > std::abs(db)))
+      throw InputError(gear_parameter_name(wheel, "tip diameter"),
+                       millimetres(std::abs(da)) + " is not outside the base circle " +
+                           millimetres(std::abs(db)));
+    if (!(wheel && g2.internal ? std::abs(da) < std::abs(df) : da > df))
+      throw InputError(gear_parameter_name(wheel, "tip diameter"),
+                       millimetres(std::abs(da)) + " lies beyond the root circle " +
+                           millimetres(std::abs(df)));
+  }
+
+  // Line of action, from T1 towards the pitch point C (module header).
+  const double rb1 = 0.5 * db1;
+  const double rb2 = 0.5 * db2;
+  const double tan_wt = std::tan(alpha_wt);
+  const double t2_position = (rb1 + rb2) * tan_wt;
+  result.line_of_action_length = std::abs(t2_position);
+  result.pitch_point = rb1 * tan_wt;
+  const double ra1 = 0.5 * std::abs(da1);
+  const double ra2 = 0.5 * std::abs(da2);
+  result.contact_end = std::sqrt(ra1 * ra1 - rb1 * rb1);
+  result.contact_start = t2_position - s2 * std::sqrt(ra2 * ra2 - rb2 * rb2);
+  // Roll length on the wheel, measured from its own tangent point T2.
+  auto wheel_roll_length = [&](double position) { return s2 * (t2_position - position); };
+
+  // Undercut by the generating rack (external gears; internal ones are cut by a shaper and
+  // have no rack undercut).
+  const double form1 = form_roll_length(g1, 0.5 * d1, alpha_t);
+  const double form2 = form_roll_length(g2, 0.5 * std::abs(d2), alpha_t);
+  for (const bool wheel : {false, true})
+  {
+    const GearSpec& g = wheel ? g2 : g1;
+    if (g.internal)
+      continue;
+    const double z = g.teeth;
+    const double x_min =
+        (g.dedendum_coefficient - g.root_radius_coefficient * (1. - std::sin(alpha_n))) -
+        z * std::sin(alpha_t) * std::sin(alpha_t) / (2. * std::cos(beta));
+    (wheel ? result.wheel : result.pinion).minimum_profile_shift = x_min;
+    if ((wheel ? form2 : form1) < 0.)
+      throw InputError(gear_parameter_name(wheel, "profile shift"),
+                       "x = " + format(g.profile_shift) + " undercuts the tooth (x_min = " +
+                           format(x_min) + " for z = " + std::to_string(g.teeth) + ")");
+  }
+
+  // Involute interference: each tip must meet the mate inside the mate's involute.
+  if (result.contact_start < form1)
+    throw InputError(gear_parameter_name(true, "tip diameter"),
+                     "the wheel tip reaches below the pinion's involute (involute "
+                     "interference: contact starts " +
+                         millimetres(result.contact_start) +
+                         " from T1, the pinion form circle at " + millimetres(form1) + ")");
+  const double wheel_roll_at_end = wheel_roll_length(result.contact_end);
+  if (g2.internal ? wheel_roll_at_end > form2 : wheel_roll_at_end < form2)
+    throw InputError(gear_parameter_name(false, "tip diameter"),
+                     "the pinion tip reaches beyond the wheel's involute (involute "
+                     "interference at roll length " +
+                         millimetres(wheel_roll_at_end) + ", wheel form limit " +
+                         millimetres(form2) + ")");
+
+  // Radial tip clearances (internal: the ring's root circle encloses the pinion tip).
+  const double rf1 = 0.5 * std::abs(df1);
+  const double rf2 = 0.5 * std::abs(df2);
+  result.tip_clearance_pinion =
+      g2.internal ? rf2 - result.centre_distance - ra1 : result.centre_distance - ra1 - rf2;
+  result.tip_clearance_wheel =
+      g2.internal ? ra2 - result.centre_distance - rf1 : result.centre_distance - ra2 - rf1;
+  if (result.tip_clearance_pinion < 0.)
+    throw InputError(gear_parameter_name(false, "tip diameter"),
+                     "the pinion tip hits the wheel root (clearance " +
+                         millimetres(result.tip_clearance_pinion) + ")");
+  if (result.tip_clearance_wheel < 0.)
+    throw InputError(gear_parameter_name(true, "tip diameter"),
+                     "the wheel tip hits the pinion root (clearance " +
+                         millimetres(result.tip_clearance_wheel) + ")");
+
+  // Per-gear diameters and the tip thickness s_at = d_a·(s_t/d + inv α_t − inv α_at) (ISO
+  // 21771); for an internal gear the tooth narrows towards its (inner) tip, which the
+  // DIN signs of d and d_a take care of.
+  const double cos_wt = std::cos(alpha_wt);
+  for (const bool wheel : {false, true})
+  {
+    const GearSpec& g = wheel ? g2 : g1;
+    GearGeometry& out = wheel ? result.wheel : result.pinion;
+    const double d = wheel ? d2 : d1;
+    const double db = wheel ? db2 : db1;
+    const double da = wheel ? da2 : da1;
+    out.reference_diameter = std::abs(d);
+    out.base_diameter = std::abs(db);
+    out.tip_diameter = std::abs(da);
+    out.root_diameter = std::abs(wheel ? df2 : df1);
+    out.working_diameter = std::abs(db) / cos_wt;
+    const double form = wheel ? form2 : form1;
+    out.form_diameter = 2. * std::sqrt(0.25 * db * db + form * form);
+    const double active_roll = wheel ? wheel_roll_length(result.contact_end) : result.contact_start;
+    out.active_profile_start = 2. * std::sqrt(0.25 * db * db + active_roll * active_roll);
+    out.tooth_thickness = m_t * (pi / 2. + 2. * g.profile_shift * std::tan(alpha_n));
+    const double alpha_at = std::acos(db / da);
+    out.tip_pressure_angle = alpha_at;
+    const double s_at = da * (out.tooth_thickness / d + involute(alpha_t) - involute(alpha_at));
+    const double beta_a = std::atan(std::tan(beta) * da / d);
+    out.tip_thickness = s_at * std::cos(beta_a);
+    if (!(out.tip_thickness > 0.))
+      throw InputError(
+          gear_parameter_name(wheel, g.tip_diameter > 0. ? "tip diameter" : "profile shift"),
+          "the tooth comes to a point before the tip circle (tip thickness " +
+              millimetres(out.tip_thickness) + ")");
+    // A tip thinner than 0.2·m_n is commonly held too fragile (hardened: 0.4·m_n).
+    if (out.tip_thickness < 0.2 * m_n)
+      result.warnings.push_back(std::string(wheel ? "wheel" : "pinion") + " tip thickness " +
+                                millimetres(out.tip_thickness) + " is below 0.2·m_n");
+  }
+
+  result.transverse_base_pitch = pi * m_t * std::cos(alpha_t);
+  result.normal_base_pitch = pi * m_n * std::cos(alpha_n);
+  result.path_of_contact = result.contact_end - result.contact_start;
+  result.transverse_contact_ratio = result.path_of_contact / result.transverse_base_pitch;
+  result.common_face_width = std::min(g1.face_width, g2.face_width);
+  result.overlap_ratio = result.common_face_width * std::sin(beta) / (pi * m_n);
+  result.total_contact_ratio = result.transverse_contact_ratio + result.overlap_ratio;
+  if (result.transverse_contact_ratio < 1.)
+    throw InputError(gear_parameter_name(false, "tip diameter"),
+                     "transverse contact ratio ε_α = " + format(result.transverse_contact_ratio) +
+                         " < 1: the tips are too short for continuous contact");
+
+  // Contact zones: the pair count changes where a pair enters (A + k·p_bt) or leaves
+  // (E − k·p_bt).
+  std::vector<double> breaks{result.contact_start, result.contact_end};
+  for (double p = result.contact_start + result.transverse_base_pitch; p < result.contact_end;
+       p += result.transverse_base_pitch)
+    breaks.push_back(p);
+  for (double p = result.contact_end - result.transverse_base_pitch; p > result.contact_start;
+       p -= result.transverse_base_pitch)
+    breaks.push_back(p);
+  std::sort(breaks.begin(), breaks.end());
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+  {
+    if (breaks[i + 1] - breaks[i] < 1e-12 * result.transverse_base_pitch)
+      continue;
+    ContactZone zone;
+    zone.start = breaks[i];
+    zone.end = breaks[i + 1];
+    zone.pairs = result.pairs_in_contact(0.5 * (zone.start + zone.end));
+    zone.pinion_roll_start = result.pinion_roll_angle(zone.start);
+    zone.pinion_roll_end = result.pinion_roll_angle(zone.end);
+    if (!result.contact_zones.empty() && result.contact_zones.back().pairs == zone.pairs)
+    {
+      result.contact_zones.back().end = zone.end;
+      result.contact_zones.back().pinion_roll_end = zone.pinion_roll_end;
+    }
+    else
+      result.contact_zones.push_back(zone);
+  }
+  return result;
+}
+
+GearPairSpec split_path_pair()
+{
+  constexpr double degree = pi / 180.;
+  GearPairSpec spec;
+  spec.pinion.teeth = 21;
+  spec.wheel.teeth = 57;
+  for (GearSpec* gear : {&spec.pinion, &spec.wheel})
+  {
+    gear->normal_module = 2.5e-3;
+    gear->pressure_angle = 20. * degree;
+    gear->helix_angle = 0.;
+  }
+  spec.pinion.profile_shift = 0.29;
+  spec.wheel.profile_shift = -0.29;
+  spec.pinion.face_width = 26e-3;
+  spec.wheel.face_width = 24e-3;
+  spec.pinion.bore_diameter = 20e-3;
+  spec.wheel.bore_diameter = 40e-3;
+
+  // ε_α falls monotonically as both tip radii shrink by the same Δ: bisect for ε_α = 1.5
+  // between Δ = 0 (standard tips, ε_α ≈ 1.62) and Δ = m_n/4 (ε_α ≈ 1.35).
+  const GearPairGeometry standard = compute_gear_pair(spec);
+  const double da1 = standard.pinion.tip_diameter;
+  const double da2 = standard.wheel.tip_diameter;
+  auto contact_ratio = [&](double reduction)
+  {
+    GearPairSpec trial = spec;
+    trial.pinion.tip_diameter = da1 - 2. * reduction;
+    trial.wheel.tip_diameter = da2 - 2. * reduction;
+    return compute_gear_pair(trial).transverse_contact_ratio;
+  };
+  double low = 0., high = 0.25 * spec.pinion.normal_module;
+  if (!(contact_ratio(low) > 1.5 && contact_ratio(high) < 1.5))
+    throw SolverFailure("split-path tip diameters", "ε_α = 1.5 is not bracketed");
+  while (high - low > 1e-15)
+  {
+    const double middle = 0.5 * (low + high);
+    (contact_ratio(middle) > 1.5 ? low : high) = middle;
+  }
+  spec.pinion.tip_diameter = da1 - (low + high);
+  spec.wheel.tip_diameter = da2 - (low + high);
+  return spec;
+}
+} // namespace gearstiff::kinematics

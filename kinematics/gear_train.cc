@@ -1,0 +1,810 @@
+#include "kinematics/gear_train.h"
+
+#include "kinematics/errors.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace gearstiff::kinematics
+{
+namespace
+{
+constexpr double rpm = 3.14159265358979323846 / 30.; // rad/s per rpm
+
+std::string format(double value, int digits = 5)
+{
+  std::ostringstream s;
+  s.precision(digits);
+  s << value;
+  return s.str();
+}
+
+std::string trim(const std::string& text)
+{
+  const auto first = text.find_first_not_of(" \t\n");
+  if (first == std::string::npos)
+    return "";
+  const auto last = text.find_last_not_of(" \t\n");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream stream(text);
+  while (std::getline(stream, part, separator))
+    parts.push_back(trim(part));
+  if (!parts.empty() && parts.back().empty() && !text.empty() && text.back() == separator)
+    parts.pop_back();
+  return parts;
+}
+
+void check_name(const std::string& name, const std::string& parameter)
+{
+  if (name.empty())
+    throw InputError(parameter, "an entry has an empty member name");
+  for (const char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_'))
+      throw InputError(parameter,
+                       "member name '" + name + "' may hold only letters, digits and '_'");
+}
+
+double parse_number(const std::string& text, const std::string& parameter)
+{
+  std::size_t used = 0;
+  double value = 0.;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value))
+    throw InputError(parameter, "'" + text + "' is not a number");
+  return value;
+}
+
+// "name: value, name: value" → pairs; an empty string gives none.
+std::vector<std::pair<std::string, std::string>> parse_assignments(const std::string& text,
+                                                                   const std::string& key)
+{
+  const std::string parameter = "Train/" + key;
+  std::vector<std::pair<std::string, std::string>> entries;
+  if (trim(text).empty())
+    return entries;
+  for (const std::string& entry : split(text, ','))
+  {
+    const auto colon = entry.find(':');
+    if (colon == std::string::npos)
+      throw InputError(parameter, "entry '" + entry + "' is not of the form name: value");
+    const std::string name = trim(entry.substr(0, colon));
+    check_name(name, parameter);
+    entries.emplace_back(name, trim(entry.substr(colon + 1)));
+  }
+  return entries;
+}
+
+std::vector<std::string> parse_names(const std::string& text, const std::string& key)
+{
+  std::vector<std::string> names;
+  if (trim(text).empty())
+    return names;
+  for (const std::string& name : split(text, ','))
+  {
+    check_name(name, "Train/" + key);
+    names.push_back(name);
+  }
+  return names;
+}
+
+// Rigid bodies: union-find over the connections.
+class RigidBodies
+{
+public:
+  RigidBodies(const GearTrainSpec& spec, const TrainSolution& solution)
+      : parent(solution.names.size())
+  {
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const auto& [a, b] : spec.connections)
+      parent[find(solution.index(a))] = find(solution.index(b));
+  }
+  std::size_t find(std::size_t member)
+  {
+    while (parent[member] != member)
+      member = parent[member] = parent[parent[member]];
+    return member;
+  }
+
+private:
+  std::vector<std::size_t> parent;
+};
+
+const TrainMember& member_of(const GearTrainSpec& spec, const TrainSolution& solution,
+                             const std::string& name)
+{
+  return spec.members[solution.index(name)];
+}
+
+double pitch_radius(const TrainMember& gear)
+{
+  return 0.5 * gear.module * gear.teeth;
+}
+
+// Checks names, tooth counts and module agreement; fills orbit radii and mesh copies.
+void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
+{
+  std::set<std::string> seen;
+  for (const TrainMember& member : spec.members)
+  {
+    if (member.name == housing_name)
+      throw InputError("Train/gears", "'housing' is reserved for the fixed frame");
+    if (!seen.insert(member.name).second)
+      throw InputError("Train/gears", "member '" + member.name + "' is declared twice");
+    if (member.teeth != 0 && std::abs(member.teeth) < 3)
+      throw InputError("Train/gears", "gear '" + member.name + "' has " +
+                                          std::to_string(member.teeth) +
+                                          " teeth; at least 3 are needed");
+    if (member.copies == 0)
+      throw InputError("Train/planets", "member '" + member.name + "' has zero copies");
+    if (member.module < 0. || member.mass < 0. || member.moment_of_inertia < 0.)
+      throw InputError("Train/modules",
+                       "member '" + member.name + "' has a negative module, mass or inertia");
+  }
+  solution.names.clear();
+  for (const TrainMember& member : spec.members)
+    solution.names.push_back(member.name);
+  solution.names.push_back(housing_name);
+
+  auto require = [&](const std::string& name, const std::string& key)
+  {
+    if (std::find(solution.names.begin(), solution.names.end(), name) == solution.names.end())
+      throw InputError("Train/" + key, "unknown member '" + name + "'");
+  };
+  for (const TrainMember& member : spec.members)
+    if (!member.carrier.empty())
+    {
+      require(member.carrier, "planets");
+      if (member.carrier == member.name)
+        throw InputError("Train/planets", "'" + member.name + "' cannot carry itself");
+    }
+  for (const auto& [a, b] : spec.connections)
+  {
+    require(a, "connections");
+    require(b, "connections");
+  }
+  for (const std::string& name : spec.fixed)
+    require(name, "fixed");
+  for (const auto& input : spec.inputs)
+    require(input.first, "inputs");
+  if (!spec.output.empty())
+    require(spec.output, "output");
+
+  for (const TrainMesh& mesh : spec.meshes)
+  {
+    require(mesh.gear_a, "meshes");
+    require(mesh.gear_b, "meshes");
+    require(mesh.frame, "meshes");
+    if (mesh.gear_a == mesh.gear_b || mesh.frame == mesh.gear_a || mesh.frame == mesh.gear_b)
+      throw InputError("Train/meshes", "mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" +
+                                           mesh.frame + " names a member twice");
+    for (const std::string& name : {mesh.gear_a, mesh.gear_b})
+      if (name == housing_name || member_of(spec, solution, name).teeth == 0)
+        throw InputError("Train/meshes", "'" + name + "' in mesh " + mesh.gear_a + "-" +
+                                             mesh.gear_b + " has no teeth (list it in gears)");
+    const TrainMember& a = member_of(spec, solution, mesh.gear_a);
+    const TrainMember& b = member_of(spec, solution, mesh.gear_b);
+    if (a.teeth < 0 && b.teeth < 0)
+      throw InputError("Train/meshes",
+                       "two internal gears " + a.name + " and " + b.name + " cannot mesh");
+    const TrainMember& inner = a.teeth < 0 ? b : a;
+    const TrainMember& outer = a.teeth < 0 ? a : b;
+    if (outer.teeth < 0 && -outer.teeth <= inner.teeth)
+      throw InputError("Train/gears", "internal gear " + outer.name + " (" +
+                                          std::to_string(-outer.teeth) +
+                                          " teeth) must have more teeth than " + inner.name + " (" +
+                                          std::to_string(inner.teeth) + ") that runs inside it");
+    if (a.module > 0. && b.module > 0. && std::abs(a.module - b.module) > 1e-12)
+      throw InputError("Train/modules",
+                       "gears " + a.name + " and " + b.name + " mesh but have different modules");
+  }
+
+  // Orbit radii: a planet's axis sits at the centre distance from its central mate, which
+  // shares the frame's axis. Two meshes giving two radii mean the train does not close.
+  const std::size_t n = solution.names.size();
+  solution.orbit_radius.assign(n, 0.);
+  solution.mesh_copies.assign(spec.meshes.size(), 1);
+  for (std::size_t m = 0; m < spec.meshes.size(); ++m)
+  {
+    const TrainMesh& mesh = spec.meshes[m];
+    if (mesh.frame == housing_name)
+      continue;
+    const TrainMember& a = member_of(spec, solution, mesh.gear_a);
+    const TrainMember& b = member_of(spec, solution, mesh.gear_b);
+    const bool a_planet = a.carrier == mesh.frame;
+    const bool b_planet = b.carrier == mesh.frame;
+    if (a_planet == b_planet)
+      continue; // both central (a fixed-axis pair on a carrier) or planet-planet
+    const TrainMember& planet = a_planet ? a : b;
+    const TrainMember& central = a_planet ? b : a;
+    solution.mesh_copies[m] = planet.copies;
+    if (planet.teeth < 0)
+      throw InputError("Train/planets", "planet " + planet.name + " is an internal gear");
+    if (planet.module == 0. || central.module == 0.)
+      continue;
+    const double radius = central.teeth > 0 ? pitch_radius(central) + pitch_radius(planet)
+                                            : -pitch_radius(central) - pitch_radius(planet);
+    double& known = solution.orbit_radius[solution.index(planet.name)];
+    if (known > 0. && std::abs(known - radius) > 1e-9)
+      throw InputError("Train/gears", "the train does not close: planet " + planet.name + " sits " +
+                                          format(known * 1e3) + " mm from the axis of " +
+                                          mesh.frame + " by one mesh and " + format(radius * 1e3) +
+                                          " mm by mesh " + mesh.gear_a + "-" + mesh.gear_b);
+    known = radius;
+  }
+  // Members rigid with a planet and riding on the same carrier share its axis.
+  RigidBodies bodies(spec, solution);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    for (std::size_t j = 0; j + 1 < n; ++j)
+      if (solution.orbit_radius[i] == 0. && solution.orbit_radius[j] > 0. &&
+          bodies.find(i) == bodies.find(j) && !spec.members[i].carrier.empty() &&
+          spec.members[i].carrier == spec.members[j].carrier)
+        solution.orbit_radius[i] = solution.orbit_radius[j];
+}
+} // namespace
+
+std::size_t TrainSolution::index(const std::string& member) const
+{
+  const auto found = std::find(names.begin(), names.end(), member);
+  if (found == names.end())
+    throw InputError("Train", "unknown member '" + member + "'");
+  return static_cast<std::size_t>(found - names.begin());
+}
+
+double TrainSolution::speed(const std::string& member) const
+{
+  return speeds[index(member)];
+}
+
+TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
+{
+  TrainSolution solution;
+  check_structure(spec, solution);
+  if (spec.inputs.empty())
+    throw InputError("Train/inputs", "no input speed given");
+
+  const std::size_t n = solution.names.size();
+  const std::size_t housing = n - 1;
+  std::vector<Eigen::VectorXd> rows;
+  auto unit_row = [&](std::size_t member)
+  {
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(n);
+    row[member] = 1.;
+    return row;
+  };
+  for (const TrainMesh& mesh : spec.meshes)
+  {
+    // Willis: z_a·(ω_a − ω_c) + z_b·(ω_b − ω_c) = 0, signed z.
+    const std::size_t a = solution.index(mesh.gear_a);
+    const std::size_t b = solution.index(mesh.gear_b);
+    const std::size_t c = solution.index(mesh.frame);
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(n);
+    row[a] += spec.members[a].teeth;
+    row[b] += spec.members[b].teeth;
+    row[c] -= spec.members[a].teeth + spec.members[b].teeth;
+    rows.push_back(row);
+  }
+  for (const auto& [a, b] : spec.connections)
+    rows.push_back(unit_row(solution.index(a)) - unit_row(solution.index(b)));
+  for (const std::string& name : spec.fixed)
+    rows.push_back(unit_row(solution.index(name)));
+  rows.push_back(unit_row(housing));
+  const std::size_t structural_rows = rows.size();
+  for (const auto& input : spec.inputs)
+    rows.push_back(unit_row(solution.index(input.first)));
+
+  Eigen::MatrixXd matrix(rows.size(), n);
+  Eigen::VectorXd right_hand_side = Eigen::VectorXd::Zero(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    matrix.row(r) = rows[r].transpose();
+  for (std::size_t k = 0; k < spec.inputs.size(); ++k)
+    right_hand_side[structural_rows + k] = spec.inputs[k].second;
+
+  // Tooth counts are integers of order 100: a relative pivot threshold of 1e-10 separates
+  // true rank deficiency from rounding by many orders of magnitude.
+  Eigen::FullPivLU<Eigen::MatrixXd> structure(matrix.topRows(structural_rows));
+  structure.setThreshold(1e-10);
+  solution.degrees_of_freedom = static_cast<unsigned int>(n - structure.rank());
+
+  Eigen::FullPivLU<Eigen::MatrixXd> full(matrix);
+  full.setThreshold(1e-10);
+  if (full.rank() < static_cast<Eigen::Index>(n))
+  {
+    const Eigen::MatrixXd kernel = full.kernel();
+    std::string free_members;
+    for (std::size_t i = 0; i < n; ++i)
+      if (kernel.row(i).norm() > 1e-9)
+        free_members += (free_members.empty() ? "" : ", ") + solution.names[i];
+    throw InputError("Train/inputs", "under-constrained: the train has " +
+                                         std::to_string(solution.degrees_of_freedom) +
+                                         " degree(s) of freedom but " +
+                                         std::to_string(spec.inputs.size()) +
+                                         " input(s) fix fewer; undetermined: " + free_members);
+  }
+  const Eigen::VectorXd speeds = full.solve(right_hand_side);
+  const double scale = std::max(1., right_hand_side.cwiseAbs().maxCoeff());
+  if ((matrix * speeds - right_hand_side).norm() > 1e-9 * scale)
+  {
+    if (solution.degrees_of_freedom == 0)
+      throw InputError("Train/meshes",
+                       "over-constrained: meshes, connections and fixed members lock the "
+                       "train (it does not close with any motion)");
+    throw InputError("Train/inputs", "over-constrained: " + std::to_string(spec.inputs.size()) +
+                                         " input speeds contradict a train with " +
+                                         std::to_string(solution.degrees_of_freedom) +
+                                         " degree(s) of freedom");
+  }
+  solution.speeds.assign(speeds.data(), speeds.data() + n);
+  if (!spec.output.empty())
+  {
+    const double output_speed = solution.speed(spec.output);
+    if (std::abs(output_speed) < 1e-12 * scale)
+      throw InputError("Train/output", "'" + spec.output + "' does not turn");
+    solution.ratio = spec.inputs.front().second / output_speed;
+  }
+  return solution;
+}
+
+double pair_efficiency(int teeth_a, int teeth_b, double tooth_friction)
+{
+  return 1. - 2.3 * tooth_friction * std::abs(1. / teeth_a + 1. / teeth_b);
+}
+
+double epicyclic_efficiency(double base_ratio, double base_efficiency)
+{
+  return (1. - base_ratio * base_efficiency) / (1. - base_ratio);
+}
+
+TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution& solution,
+                                 double input_torque, double tooth_friction)
+{
+  if (spec.inputs.size() != 1 || spec.output.empty())
+    throw InputError("Train/inputs", "statics need exactly one input and an output");
+  const std::size_t n = solution.names.size();
+  const std::size_t input = solution.index(spec.inputs.front().first);
+  const std::size_t output = solution.index(spec.output);
+  RigidBodies bodies(spec, solution);
+  std::vector<bool> grounded(n, false);
+  grounded[bodies.find(n - 1)] = true;
+  for (const std::string& name : spec.fixed)
+    grounded[bodies.find(solution.index(name))] = true;
+  if (bodies.find(input) == bodies.find(output))
+    throw InputError("Train/output", "input and output are the same rigid body");
+  if (grounded[bodies.find(output)] || grounded[bodies.find(input)])
+    throw InputError("Train/output", "input or output is held fixed");
+
+  std::map<std::size_t, std::size_t> equation_of; // free body root → row
+  for (std::size_t i = 0; i < n; ++i)
+    if (!grounded[bodies.find(i)] && !equation_of.count(bodies.find(i)))
+      equation_of.emplace(bodies.find(i), equation_of.size());
+  const std::size_t meshes = spec.meshes.size();
+  if (equation_of.size() != meshes + 1)
+    throw InputError("Train/output",
+                     "statics undetermined: " + std::to_string(equation_of.size()) +
+                         " free bodies for " + std::to_string(meshes) +
+                         " mesh torques and one output torque (one degree of freedom needed)");
+
+  TrainStatics statics;
+  statics.meshes.resize(meshes);
+  std::vector<int> a_drives(meshes, 1);
+  std::vector<double> efficiency(meshes);
+  for (std::size_t m = 0; m < meshes; ++m)
+    efficiency[m] =
+        pair_efficiency(spec.members[solution.index(spec.meshes[m].gear_a)].teeth,
+                        spec.members[solution.index(spec.meshes[m].gear_b)].teeth, tooth_friction);
+  // Pass 0 is loss-free and only sets the directions of relative power flow.
+  Eigen::VectorXd unknowns;
+  for (unsigned int pass = 0;; ++pass)
+  {
+    if (pass > 20)
+      throw SolverFailure("train statics", "directions of power flow did not settle after 20 "
+                                           "passes (self-locking train?)");
+    Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(meshes + 1, meshes + 1);
+    Eigen::VectorXd right_hand_side = Eigen::VectorXd::Zero(meshes + 1);
+    auto add = [&](std::size_t member, std::size_t column, double value)
+    {
+      const std::size_t root = bodies.find(member);
+      if (!grounded[root])
+        matrix(equation_of.at(root), column) += value;
+    };
+    std::vector<double> ratio(meshes);
+    for (std::size_t m = 0; m < meshes; ++m)
+    {
+      const TrainMesh& mesh = spec.meshes[m];
+      const double z_a = spec.members[solution.index(mesh.gear_a)].teeth;
+      const double z_b = spec.members[solution.index(mesh.gear_b)].teeth;
+      const double eta = pass == 0 ? 1. : efficiency[m];
+      ratio[m] = z_b / z_a * (a_drives[m] ? eta : 1. / eta);
+      add(solution.index(mesh.gear_a), m, 1.);
+      add(solution.index(mesh.gear_b), m, ratio[m]);
+      add(solution.index(mesh.frame), m, -(1. + ratio[m]));
+    }
+    add(output, meshes, 1.);
+    right_hand_side[equation_of.at(bodies.find(input))] = -input_torque;
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(matrix);
+    lu.setThreshold(1e-10);
+    if (lu.rank() < static_cast<Eigen::Index>(meshes + 1))
+      throw InputError("Train/output", "statics undetermined: the torque equations are "
+                                       "singular for this input/output choice");
+    unknowns = lu.solve(right_hand_side);
+
+    bool changed = false;
+    for (std::size_t m = 0; m < meshes; ++m)
+    {
+      const TrainMesh& mesh = spec.meshes[m];
+      const double relative_speed = solution.speed(mesh.gear_a) - solution.speed(mesh.frame);
+      // Gear a drives when the mesh draws power from it in the frame's reference.
+      const int drives = unknowns[m] * relative_speed <= 0. ? 1 : 0;
+      if (drives != a_drives[m] && std::abs(relative_speed) > 0.)
+      {
+        a_drives[m] = drives;
+        changed = true;
+      }
+      MeshTorques& out = statics.meshes[m];
+      out.on_a = unknowns[m];
+      out.on_b = ratio[m] * unknowns[m];
+      out.on_frame = -(1. + ratio[m]) * unknowns[m];
+      out.efficiency = pass == 0 ? 1. : efficiency[m];
+      out.a_drives = a_drives[m];
+    }
+    statics.power_flow_iterations = pass;
+    if (pass > 0 && !changed)
+      break;
+    if (tooth_friction == 0. && !changed)
+      break;
+  }
+
+  statics.input_torque = input_torque;
+  statics.output_torque = unknowns[meshes];
+  statics.efficiency =
+      -statics.output_torque * solution.speeds[output] / (input_torque * solution.speeds[input]);
+  statics.applied_torque.assign(n, 0.);
+  statics.applied_torque[input] = input_torque;
+  statics.applied_torque[output] = statics.output_torque;
+  // Reactions: each grounded body takes what its meshes put on it, assigned to its fixed
+  // member (or the housing).
+  std::map<std::size_t, double> ground_load;
+  for (std::size_t m = 0; m < meshes; ++m)
+  {
+    const TrainMesh& mesh = spec.meshes[m];
+    const MeshTorques& t = statics.meshes[m];
+    for (const auto& [name, torque] :
+         {std::pair{mesh.gear_a, t.on_a}, std::pair{mesh.gear_b, t.on_b},
+          std::pair{mesh.frame, t.on_frame}})
+    {
+      const std::size_t root = bodies.find(solution.index(name));
+      if (grounded[root])
+        ground_load[root] += torque;
+      if (root == bodies.find(output))
+        statics.output_paths.emplace_back(m, torque);
+    }
+  }
+  for (const auto& [root, load] : ground_load)
+  {
+    std::size_t holder = n - 1;
+    for (const std::string& name : spec.fixed)
+      if (bodies.find(solution.index(name)) == root)
+      {
+        holder = solution.index(name);
+        break;
+      }
+    statics.applied_torque[holder] -= load;
+  }
+
+  // Tooth forces per copy at the pitch circle; planet axis loads as the vector sum over the
+  // planet's meshes (mate external: contact towards the carrier axis, internal: away).
+  std::map<std::size_t, std::pair<double, std::string>> planet_force; // body → (F_y, name)
+  for (std::size_t m = 0; m < meshes; ++m)
+  {
+    const TrainMesh& mesh = spec.meshes[m];
+    const TrainMember& a = member_of(spec, solution, mesh.gear_a);
+    const TrainMember& b = member_of(spec, solution, mesh.gear_b);
+    MeshTorques& t = statics.meshes[m];
+    const double copies = solution.mesh_copies[m];
+    if (a.module > 0.)
+      t.tangential_force = std::abs(t.on_a) / (copies * std::abs(pitch_radius(a)));
+    if (mesh.frame == housing_name || a.module == 0. || b.module == 0.)
+      continue;
+    for (const bool planet_is_a : {true, false})
+    {
+      const TrainMember& planet = planet_is_a ? a : b;
+      const TrainMember& mate = planet_is_a ? b : a;
+      if (planet.carrier != mesh.frame || mate.carrier == mesh.frame)
+        continue;
+      const double torque = planet_is_a ? t.on_a : t.on_b;
+      // t(θ) = (−sin θ, cos θ): θ = π towards the axis gives −y, θ = 0 gives +y.
+      const double direction = mate.teeth > 0 ? -1. : 1.;
+      auto& entry = planet_force[bodies.find(solution.index(planet.name))];
+      entry.first += direction * torque / (copies * pitch_radius(planet));
+      if (entry.second.empty())
+        entry.second = planet.name;
+    }
+  }
+  for (const auto& [root, force] : planet_force)
+    statics.planet_axis_forces.emplace_back(force.second, std::abs(force.first));
+  return statics;
+}
+
+CarrierMethodEfficiency carrier_method_efficiency(const GearTrainSpec& spec, double tooth_friction)
+{
+  if (spec.fixed.size() != 1 || spec.inputs.size() != 1 || spec.output.empty())
+    throw InputError("Train/fixed", "the carrier method needs one fixed member, one input "
+                                    "and an output carrier");
+  if (std::none_of(spec.meshes.begin(), spec.meshes.end(),
+                   [&](const TrainMesh& mesh) { return mesh.frame == spec.output; }))
+    throw InputError("Train/output", "the carrier method needs the output to be a carrier");
+  const TrainSolution solution = solve_train_kinematics(spec);
+  const std::string& fixed = spec.fixed.front();
+  const double carrier_speed = solution.speed(spec.output);
+  const double input_speed = spec.inputs.front().second;
+
+  GearTrainSpec base = spec;
+  base.fixed = {spec.output};
+  base.output = fixed;
+  base.inputs = {{spec.inputs.front().first, input_speed - carrier_speed}};
+  const TrainSolution base_solution = solve_train_kinematics(base);
+
+  CarrierMethodEfficiency result;
+  result.base_ratio = (input_speed - carrier_speed) / (0. - carrier_speed);
+  result.base_efficiency = solve_train_statics(base, base_solution, 1., tooth_friction).efficiency;
+  result.efficiency = epicyclic_efficiency(result.base_ratio, result.base_efficiency);
+  return result;
+}
+
+double reduced_moment_of_inertia(const std::vector<InertiaTerm>& terms)
+{
+  double sum = 0.;
+  for (const InertiaTerm& term : terms)
+    sum += term.copies * (term.moment_of_inertia * term.speed_ratio * term.speed_ratio +
+                          term.mass * term.velocity_ratio * term.velocity_ratio);
+  return sum;
+}
+
+std::vector<InertiaTerm> inertia_terms(const GearTrainSpec& spec, const TrainSolution& solution,
+                                       const std::string& member)
+{
+  const double reference = solution.speed(member);
+  if (reference == 0.)
+    throw InputError("Train/reduce inertia to", "'" + member + "' does not turn");
+  std::vector<InertiaTerm> terms;
+  for (std::size_t i = 0; i < spec.members.size(); ++i)
+  {
+    const TrainMember& body = spec.members[i];
+    if (body.moment_of_inertia == 0. && body.mass == 0.)
+      continue;
+    InertiaTerm term;
+    term.member = body.name;
+    term.moment_of_inertia = body.moment_of_inertia;
+    term.mass = body.mass;
+    term.copies = body.copies;
+    term.speed_ratio = solution.speeds[i] / reference;
+    // Centre speed² = Σ over the carrier chain (ω_carrier·R)²; cross terms cancel between
+    // equally spaced copies and average out over a turn for a single one.
+    double velocity_squared = 0.;
+    std::size_t current = i;
+    for (unsigned int depth = 0; !spec.members[current].carrier.empty(); ++depth)
+    {
+      if (depth > spec.members.size())
+        throw InputError("Train/planets", "carriers form a loop at '" + body.name + "'");
+      const double radius = solution.orbit_radius[current];
+      if (radius == 0. && body.mass > 0.)
+        throw InputError("Train/modules", "the orbit radius of '" + spec.members[current].name +
+                                              "' is unknown: give the modules of its mesh");
+      const std::size_t carrier = solution.index(spec.members[current].carrier);
+      velocity_squared += std::pow(solution.speeds[carrier] * radius, 2);
+      if (carrier == solution.names.size() - 1)
+        break;
+      current = carrier;
+    }
+    term.velocity_ratio = std::sqrt(velocity_squared) / std::abs(reference);
+    terms.push_back(term);
+  }
+  return terms;
+}
+
+GearTrainSpec parse_gear_train(const GearTrainText& text)
+{
+  GearTrainSpec spec;
+  std::map<std::string, std::size_t> index;
+  auto member = [&](const std::string& name) -> TrainMember&
+  {
+    if (!index.count(name))
+    {
+      index[name] = spec.members.size();
+      spec.members.push_back(TrainMember());
+      spec.members.back().name = name;
+    }
+    return spec.members[index[name]];
+  };
+  for (const auto& [name, value] : parse_assignments(text.gears, "gears"))
+  {
+    const double teeth = parse_number(value, "Train/gears");
+    if (teeth == 0. || teeth != std::round(teeth))
+      throw InputError("Train/gears", "gear '" + name +
+                                          "' needs a non-zero whole number of "
+                                          "teeth (negative: internal), got " +
+                                          value);
+    if (index.count(name))
+      throw InputError("Train/gears", "gear '" + name + "' is listed twice");
+    member(name).teeth = static_cast<int>(teeth);
+  }
+  for (const std::string& name : parse_names(text.carriers, "carriers"))
+  {
+    if (index.count(name))
+      throw InputError("Train/carriers", "'" + name + "' is already a gear");
+    member(name);
+  }
+  auto existing = [&](const std::string& name, const std::string& key) -> TrainMember&
+  {
+    if (!index.count(name))
+      throw InputError("Train/" + key,
+                       "unknown member '" + name + "' (declare it in gears or carriers)");
+    return spec.members[index[name]];
+  };
+  for (const auto& [name, value] : parse_assignments(text.modules, "modules"))
+  {
+    const double module = parse_number(value, "Train/modules");
+    if (!(module > 0.))
+      throw InputError("Train/modules", "module of '" + name + "' must be positive");
+    existing(name, "modules").module = module * 1e-3;
+  }
+  for (const auto& [name, value] : parse_assignments(text.planets, "planets"))
+  {
+    const auto star = value.find('*');
+    const std::string carrier = trim(value.substr(0, star));
+    check_name(carrier, "Train/planets");
+    TrainMember& planet = existing(name, "planets");
+    existing(carrier, "planets");
+    planet.carrier = carrier;
+    if (star != std::string::npos)
+    {
+      const double copies = parse_number(trim(value.substr(star + 1)), "Train/planets");
+      if (!(copies >= 1.) || copies != std::round(copies))
+        throw InputError("Train/planets", "copies of '" + name + "' must be a whole number ≥ 1");
+      planet.copies = static_cast<unsigned int>(copies);
+    }
+  }
+  if (!trim(text.meshes).empty())
+    for (const std::string& entry : split(text.meshes, ','))
+    {
+      TrainMesh mesh;
+      const auto slash = entry.find('/');
+      const std::string pair = trim(entry.substr(0, slash));
+      if (slash != std::string::npos)
+        mesh.frame = trim(entry.substr(slash + 1));
+      const auto dash = pair.find('-');
+      if (dash == std::string::npos)
+        throw InputError("Train/meshes", "entry '" + entry + "' is not of the form a-b/frame");
+      mesh.gear_a = trim(pair.substr(0, dash));
+      mesh.gear_b = trim(pair.substr(dash + 1));
+      for (const std::string& name : {mesh.gear_a, mesh.gear_b})
+        existing(name, "meshes");
+      if (mesh.frame != housing_name)
+        existing(mesh.frame, "meshes");
+      spec.meshes.push_back(mesh);
+    }
+  if (!trim(text.connections).empty())
+    for (const std::string& entry : split(text.connections, ','))
+    {
+      const auto equals = entry.find('=');
+      if (equals == std::string::npos)
+        throw InputError("Train/connections", "entry '" + entry + "' is not of the form a=b");
+      const std::string a = trim(entry.substr(0, equals));
+      const std::string b = trim(entry.substr(equals + 1));
+      existing(a, "connections");
+      existing(b, "connections");
+      spec.connections.emplace_back(a, b);
+    }
+  for (const std::string& name : parse_names(text.fixed, "fixed"))
+  {
+    existing(name, "fixed");
+    spec.fixed.push_back(name);
+  }
+  for (const auto& [name, value] : parse_assignments(text.inputs, "inputs"))
+  {
+    existing(name, "inputs");
+    spec.inputs.emplace_back(name, parse_number(value, "Train/inputs") * rpm);
+  }
+  spec.output = trim(text.output);
+  if (!spec.output.empty())
+    existing(spec.output, "output");
+  for (const auto& [name, value] : parse_assignments(text.inertias, "inertias"))
+  {
+    const double inertia = parse_number(value, "Train/inertias");
+    if (inertia < 0.)
+      throw InputError("Train/inertias", "inertia of '" + name + "' is negative");
+    existing(name, "inertias").moment_of_inertia = inertia;
+  }
+  for (const auto& [name, value] : parse_assignments(text.masses, "masses"))
+  {
+    const double mass = parse_number(value, "Train/masses");
+    if (mass < 0.)
+      throw InputError("Train/masses", "mass of '" + name + "' is negative");
+    existing(name, "masses").mass = mass;
+  }
+  return spec;
+}
+
+std::vector<std::string> builtin_train_names()
+{
+  return {"bi-planetary", "planetary", "split-path", "cycloidal"};
+}
+
+GearTrainText builtin_train(const std::string& name)
+{
+  GearTrainText text;
+  if (name == "bi-planetary")
+  {
+    // Drewniak, Garlicka, Kolber 2016 (gear-data.md §2). Each of the three planets 2 carries
+    // an inner set: sun 3 on planet 2's axis, three planets 4 on inner carrier H, ring 5
+    // fixed to carrier h; H drives planet 6, which runs in the fixed ring 7. Modules are not
+    // published: 2 mm for 1-2 and the inner set reproduce the printed forces (1907.94 N =
+    // T1/(3·r1), 2453.06 N = T5/(9·r5)); 4 mm for 6-7 makes planet 6 coaxial with planet 2
+    // ((72 − 21)·4/2 = (21 + 81)·2/2 = 102 mm).
+    text.gears = "1: 21, 2: 81, 3: 21, 4: 24, 5: -69, 6: 21, 7: -72";
+    text.modules = "1: 2, 2: 2, 3: 2, 4: 2, 5: 2, 6: 4, 7: 4";
+    text.carriers = "h, H";
+    text.planets = "2: h*3, 3: h*3, 5: h*3, 6: h*3, H: h*3, 4: H*9";
+    text.meshes = "1-2/h, 3-4/H, 4-5/H, 6-7/h";
+    text.connections = "3=2, 5=h, H=6";
+    text.fixed = "7";
+    text.inputs = "1: 1470";
+    text.output = "h";
+  }
+  else if (name == "planetary")
+  {
+    text.gears = "s: 20, p: 10, r: -40";
+    text.modules = "s: 2, p: 2, r: 2";
+    text.carriers = "c";
+    text.planets = "p: c*3";
+    text.meshes = "s-p/c, p-r/c";
+    text.fixed = "r";
+    text.inputs = "s: 1470";
+    text.output = "c";
+  }
+  else if (name == "split-path")
+  {
+    // Reszuta & Drewniak 2015 (gear-data.md §1): pinion 1 drives wheels 2 and 3.
+    text.gears = "1: 21, 2: 57, 3: 57";
+    text.modules = "1: 2.5, 2: 2.5, 3: 2.5";
+    text.meshes = "1-2, 1-3";
+    text.inputs = "1: 1450";
+    text.output = "2";
+  }
+  else if (name == "cycloidal")
+  {
+    // Chmurawa & Łokiec (gear-data.md §4): disc s (19 lobes) on the eccentric e rolls in the
+    // fixed ring of 20 rollers k; the pin coupling passes the disc's rotation to `out`. The
+    // rolling lobe pair obeys the same Willis relation as a tooth pair.
+    text.gears = "s: 19, k: -20";
+    text.carriers = "e, out";
+    text.planets = "s: e*2";
+    text.meshes = "s-k/e";
+    text.connections = "out=s";
+    text.fixed = "k";
+    text.inputs = "e: 750";
+    text.output = "out";
+  }
+  else
+    throw InputError("Train/builtin", "unknown built-in train '" + name + "'");
+  return text;
+}
+} // namespace gearstiff::kinematics
