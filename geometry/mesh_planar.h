@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -60,7 +61,9 @@ struct PlanarModel
 };
 
 // Target cell size: `fine_size` within `fine_radius` of any focus point, then growing linearly
-// with distance at `growth_rate` (size increase per unit distance) up to `body_size`.
+// with distance at `growth_rate` (size increase per unit distance) up to the coarse size: the
+// constant `body_size`, or `coarse_size(point)` where a scene lets the size grow further away
+// from the region that matters (deep in a gear rim), never above `largest_size`.
 struct SizeGrading
 {
   std::vector<Eigen::Vector2d> focus_points; // m, scene frame (predicted contact points)
@@ -68,6 +71,8 @@ struct SizeGrading
   double fine_radius = 2e-4;                 // m
   double growth_rate = 0.25;                 // m/m; 0.25 keeps neighbour size ratios near 1.3
   double body_size = 5e-4;                   // m
+  std::function<double(const Eigen::Vector2d&)> coarse_size; // m; empty: body_size everywhere
+  double largest_size = 5e-4; // m, upper bound of coarse_size (gmsh's size limit)
 
   double size_at(const Eigen::Vector2d& point) const; // m
 };
@@ -85,13 +90,14 @@ struct MeshStatistics
 {
   unsigned long n_cells = 0; // quadrilaterals (2D) or hexahedra (3D)
   unsigned long n_vertices = 0;
-  std::map<int, unsigned long> cells_per_body; // material id -> cell count
-  double min_scaled_jacobian = 0.;             // -, 1 for a perfect square/cube
-  double mean_scaled_jacobian = 0.;            // -
-  double time_geometry = 0.;                   // s, building the gmsh model
-  double time_meshing = 0.;                    // s, generating the mesh
-  double time_checking = 0.;                   // s, element types and quality
-  double time_writing = 0.;                    // s, writing the .msh file
+  std::map<int, unsigned long> cells_per_body;                 // material id -> cell count
+  double min_scaled_jacobian = 0.;                             // -, 1 for a perfect square/cube
+  double mean_scaled_jacobian = 0.;                            // -
+  Eigen::Vector3d worst_cell_centre = Eigen::Vector3d::Zero(); // m, where the minimum occurs
+  double time_geometry = 0.;                                   // s, building the gmsh model
+  double time_meshing = 0.;                                    // s, generating the mesh
+  double time_checking = 0.;                                   // s, element types and quality
+  double time_writing = 0.;                                    // s, writing the .msh file
 };
 
 // Scaled Jacobian of a cell given its corner coordinates in gmsh/deal.II-lexicographic order

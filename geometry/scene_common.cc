@@ -25,8 +25,9 @@ double hertz_half_width(const double force_per_length, const double radius_1, co
   return std::sqrt(4. * force_per_length / (M_PI * effective_modulus * inverse_radius));
 }
 
-SizeGrading contact_size_grading(const SceneMeshSettings& settings,
-                                 const std::vector<SceneContact>& contacts)
+SizeGrading
+contact_size_grading(const SceneMeshSettings& settings, const std::vector<SceneContact>& contacts,
+                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface)
 {
   SizeGrading grading;
   double smallest_width = std::numeric_limits<double>::infinity();
@@ -47,13 +48,23 @@ SizeGrading contact_size_grading(const SceneMeshSettings& settings,
   if (settings.fine_radius > 0.)
     grading.fine_radius = settings.fine_radius;
   else
-    grading.fine_radius = have_widths ? 3. * largest_width : 10. * grading.fine_size;
+    grading.fine_radius = have_widths ? 2. * largest_width : 10. * grading.fine_size;
   if (!(settings.growth_rate > 0.))
     throw InputError("growth rate", "must be positive");
   grading.growth_rate = settings.growth_rate;
   if (!(settings.body_size >= grading.fine_size))
     throw InputError("body size", "must not be smaller than the contact size");
   grading.body_size = settings.body_size;
+  grading.largest_size = grading.body_size;
+  if (depth_below_surface)
+  {
+    grading.largest_size = settings.rim_size > 0. ? settings.rim_size : 4. * settings.body_size;
+    if (!(grading.largest_size >= grading.body_size))
+      throw InputError("rim size", "must not be smaller than the body size");
+    grading.coarse_size = [depth_below_surface, body = grading.body_size,
+                           rate = grading.growth_rate](const Eigen::Vector2d& point)
+    { return body + rate * std::max(0., depth_below_surface(point)); };
+  }
   return grading;
 }
 
@@ -87,11 +98,12 @@ BoundaryLoop circle_loop(const Eigen::Vector2d& centre, const double radius, con
 
 SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& contacts,
                      const SceneMeshSettings& settings, const double face_width,
-                     const std::string& file)
+                     const std::string& file,
+                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface)
 {
   const auto start = std::chrono::steady_clock::now();
   SceneInfo info;
-  const SizeGrading grading = contact_size_grading(settings, contacts);
+  const SizeGrading grading = contact_size_grading(settings, contacts, depth_below_surface);
   MeshOptions options;
   options.dimension = settings.dimension;
   options.layers = settings.layers;
@@ -114,6 +126,7 @@ SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& 
   info.contact_size = grading.fine_size;
   info.fine_radius = grading.fine_radius;
   info.body_size = grading.body_size;
+  info.rim_size = grading.largest_size;
   info.growth_rate = grading.growth_rate;
   info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return info;

@@ -19,6 +19,7 @@
 #include "geometry/mesh_planar.h"
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -59,11 +60,14 @@ struct SceneMeshSettings
   // m, h_c, cell size at the predicted contact points; 0: a tenth of the smallest Hertz
   // half-width estimate of the scene's contacts.
   double contact_size = 0.;
-  // m, radius around each contact point meshed at h_c; 0: three times the largest Hertz
-  // half-width (the contact zone with margin for the shift of the contact under load).
+  // m, radius around each contact point meshed at h_c; 0: twice the largest Hertz half-width
+  // (the contact zone, plus one half-width for its shift under load).
   double fine_radius = 0.;
   double growth_rate = 0.25; // m/m, size increase per unit distance beyond the fine radius
-  double body_size = 5e-4;   // m, the coarse size far from contact
+  double body_size = 5e-4;   // m, the coarse size in the teeth (bodies) away from contact
+  // m, where a scene lets the size keep growing (gear rims below the root circle), it stops at
+  // this size; 0: four times the body size.
+  double rim_size = 0.;
 };
 
 // A predicted contact point (kinematics, before load).
@@ -78,6 +82,15 @@ struct SceneContact
   double gap = 0.;                     // m, initial gap along the normal (0: touching)
   int first_feature = 0;  // tooth index of the pinion (roller-facing lobe of a disc), or 0
   int second_feature = 0; // tooth index of the wheel (roller index), or 0
+};
+
+// A scene-specific number (extent, position) for reports: value in the SI unit named.
+struct SceneQuantity
+{
+  std::string key;         // snake_case, e.g. "pinion_bore_radius"
+  double value = 0.;       // in `unit`
+  std::string unit;        // "m", "rad" or "-"
+  std::string description; // human label
 };
 
 // What the FE module needs to know about a written scene. Plain data; SI units.
@@ -98,10 +111,14 @@ struct SceneInfo
   double second_rotation = 0.; // rad, angle applied to the second body's profile (CCW)
 
   std::vector<SceneContact> contacts; // predicted contact points
+  // m, a reference segment: the line of action T1 -> T2 of a gear pair (empty otherwise).
+  std::vector<Eigen::Vector2d> reference_line;
+  std::vector<SceneQuantity> quantities; // extent and position of the scene, for reports
 
   double contact_size = 0.; // m, h_c used
   double fine_radius = 0.;  // m
   double body_size = 0.;    // m
+  double rim_size = 0.;     // m, largest size (deep in rims)
   double growth_rate = 0.;  // m/m
 
   MeshStatistics mesh;    // cell counts, quality, timings of the meshing stage
@@ -116,9 +133,11 @@ double hertz_half_width(double force_per_length, double radius_1, double radius_
                         double poisson_ratio_2);
 
 // Resolves the defaults of `settings` from the Hertz half-widths of `contacts` and returns the
-// size grading focused on the contact points.
-SizeGrading contact_size_grading(const SceneMeshSettings& settings,
-                                 const std::vector<SceneContact>& contacts);
+// size grading focused on the contact points. `depth_below_surface` (m, optional) lets the size
+// grow beyond the body size with depth into a rim, at the growth rate, up to the rim size.
+SizeGrading
+contact_size_grading(const SceneMeshSettings& settings, const std::vector<SceneContact>& contacts,
+                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface = {});
 
 // A circle as a closed loop of four quarter arcs carrying `boundary_id` (m).
 BoundaryLoop circle_loop(const Eigen::Vector2d& centre, double radius, int boundary_id);
@@ -131,5 +150,6 @@ std::vector<BoundaryPiece> arc_pieces(const Eigen::Vector2d& centre, double radi
 // Meshes `model` with `settings` (resolving the defaults from the contacts), writes `file` and
 // fills the common part of SceneInfo (ids, sizes, contacts, statistics, file).
 SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& contacts,
-                     const SceneMeshSettings& settings, double face_width, const std::string& file);
+                     const SceneMeshSettings& settings, double face_width, const std::string& file,
+                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface = {});
 } // namespace gearstiff::geometry
