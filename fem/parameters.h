@@ -1,0 +1,62 @@
+// Parameters of the linear-elastic finite-element model shared by every analysis built on fem/:
+// the kinematic model (plane strain, plane stress, 3D), the element degree, the materials of the
+// bodies and the linear solver. Each struct declares its own subsection entries with units in the
+// documentation strings; parse_parameters converts to SI.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <string>
+
+namespace gearstiff::fem
+{
+  enum class PlanarModel
+  {
+    plane_strain, // 2D, ε_zz = 0 (thick gears); forces are per `thickness`
+    plane_stress  // 2D, σ_zz = 0 (thin webs); forces are per `thickness`
+  };
+
+  struct Material
+  {
+    double youngs_modulus = 210e9; // Pa
+    double poisson_ratio = 0.3;    // -
+
+    // Lamé constants of the 3D law, Pa.
+    double lame_lambda() const;
+    double lame_mu() const;
+  };
+
+  // Subsection "Finite elements". The space dimension comes from the mesh; `model` and
+  // `thickness` only matter for 2D meshes.
+  struct ElasticityParameters
+  {
+    PlanarModel model = PlanarModel::plane_strain;
+    unsigned int degree = 1; // FE_Q polynomial degree, 1 or 2
+    double thickness = 1.0;  // m, out-of-plane extent of a 2D model (ignored in 3D)
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+  };
+
+  enum class LinearSolverMethod
+  {
+    direct_mumps,   // sparse Cholesky (MUMPS): robust default for 2D
+    cg_gamg,        // CG + PETSc GAMG with the rigid-body modes as near-null space (large 3D)
+    cg_boomeramg    // CG + hypre BoomerAMG with nodal coarsening (large 3D)
+  };
+
+  // Subsection "Linear solver".
+  struct LinearSolverParameters
+  {
+    LinearSolverMethod method = LinearSolverMethod::direct_mumps;
+    double relative_tolerance = 1e-10; // -, iterative methods: |r| / |b|
+    unsigned int max_iterations = 5000;
+
+    static void declare_parameters(dealii::ParameterHandler& prm);
+    void parse_parameters(dealii::ParameterHandler& prm);
+  };
+
+  std::string to_string(PlanarModel model);
+  std::string to_string(LinearSolverMethod method);
+} // namespace gearstiff::fem
