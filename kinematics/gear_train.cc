@@ -620,6 +620,14 @@ std::vector<InertiaTerm> inertia_terms(const GearTrainSpec& spec, const TrainSol
   return terms;
 }
 
+double milev_planetary_inertia(double sun_radius, double planet_radius, unsigned int planets,
+                               double carrier_thickness_ratio)
+{
+  const double a = sun_radius, c = planet_radius, k = carrier_thickness_ratio;
+  return std::pow(a, 4) / 2. + planets * (2. * a * a * c * c + a * a * std::pow(a + c, 2)) / 4. +
+         std::pow(a + c, 4) * a * a / (4. * k * c * c);
+}
+
 GearTrainSpec parse_gear_train(const GearTrainText& text)
 {
   GearTrainSpec spec;

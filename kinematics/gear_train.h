@@ -140,6 +140,14 @@ double reduced_moment_of_inertia(const std::vector<InertiaTerm>& terms); // kg·
 std::vector<InertiaTerm> inertia_terms(const GearTrainSpec& spec, const TrainSolution& solution,
                                        const std::string& member);
 
+// The planetary J* of Milev et al. 2025 (gear-data.md §3) as printed, in units of ρ·π·h
+// (radii normalised by the ring radius R_b = R_a + 2·R_c = 1): sun R_a, N planets R_c, carrier
+// disc of thickness h/k. Term by term it is Σ J·(ω/ω_a)² + m·(v/ω_a)² with planet spin
+// R_a/R_c, planet centre speed R_a·(R_a + R_c)/(2·R_c) and carrier (ω_h/ω_a)² = R_a²/(2·R_c²)
+// — ratios that no single fixed member gives (see tests/kinematics/test_gear_train.cc).
+double milev_planetary_inertia(double sun_radius, double planet_radius, unsigned int planets,
+                               double carrier_thickness_ratio);
+
 // Raw text of a train as written in a parameter file (subsection "Train"). Each string is a
 // comma-separated list; see app/kinematics_command.cc for the syntax shown to users.
 struct GearTrainText

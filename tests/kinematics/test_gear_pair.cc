@@ -1,0 +1,192 @@
+// Gear pair geometry against gear-data.md §1 (Reszuta & Drewniak, Mechanik 7/2015) and against
+// closed-form ISO 21771 relations that the implementation does not use directly.
+#include "kinematics/errors.h"
+#include "kinematics/gear_pair.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace gearstiff;
+using namespace gearstiff::kinematics;
+
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+constexpr double degree = pi / 180.;
+constexpr double mm = 1e-3;
+
+GearPairSpec standard_tips(GearPairSpec spec)
+{
+  spec.pinion.tip_diameter = 0.;
+  spec.wheel.tip_diameter = 0.;
+  return spec;
+}
+
+// The message names the parameter the user has to fix.
+template <typename F>
+std::string input_error_parameter(F&& f)
+{
+  try
+  {
+    f();
+  }
+  catch (const InputError& e)
+  {
+    return e.parameter();
+  }
+  return "no error";
+}
+} // namespace
+
+TEST(GearPair, InverseInvoluteRoundTrips)
+{
+  for (double angle = 0.05; angle < 1.4; angle += 0.05)
+    EXPECT_NEAR(inverse_involute(involute(angle)), angle, 1e-13);
+}
+
+// gear-data.md §1: r_b1 = 24.667 mm and p_et = 7.380 mm, printed to 1 µm: tolerance half a
+// unit of the last printed digit.
+TEST(GearPair, SplitPathBaseRadiusAndPitch)
+{
+  const GearPairGeometry pair = compute_gear_pair(split_path_pair());
+  EXPECT_NEAR(0.5 * pair.pinion.base_diameter, 24.667 * mm, 0.0005 * mm);
+  EXPECT_NEAR(pair.transverse_base_pitch, 7.380 * mm, 0.0005 * mm);
+  // x1 + x2 = 0: working pressure angle and centre distance stay at 20° and 97.5 mm (§1 table).
+  EXPECT_NEAR(pair.working_pressure_angle, 20. * degree, 1e-12);
+  EXPECT_NEAR(pair.centre_distance, 97.5 * mm, 1e-12);
+}
+
+// gear-data.md §1 note: standard tip diameters d_a = d + 2m(1 + x) give ε_α ≈ 1.618 (3 digits:
+// tolerance 0.0005).
+TEST(GearPair, SplitPathStandardTipsContactRatio)
+{
+  const GearPairGeometry pair = compute_gear_pair(standard_tips(split_path_pair()));
+  EXPECT_NEAR(pair.pinion.tip_diameter, 58.95 * mm, 1e-12);
+  EXPECT_NEAR(pair.wheel.tip_diameter, 146.05 * mm, 1e-12);
+  EXPECT_NEAR(pair.transverse_contact_ratio, 1.618, 0.0005);
+}
+
+// The built-in case: both tip radii reduced equally so that ε_α = 1.500 (gear-data.md §1). The
+// paper prints g_α = 11.068 mm, which is 1.4997·p_et: its own 1.5·p_et = 11.0705 mm. We keep
+// ε_α = 1.500 exactly, so g_α differs from the print by 2.5 µm (0.02 %); tolerance 3 µm.
+TEST(GearPair, SplitPathBuiltInContactRatio)
+{
+  const GearPairSpec spec = split_path_pair();
+  const GearPairGeometry pair = compute_gear_pair(spec);
+  EXPECT_NEAR(pair.transverse_contact_ratio, 1.500, 1e-9);
+  EXPECT_NEAR(pair.path_of_contact, 11.068 * mm, 0.003 * mm);
+  // "both tip radii reduced by about 0.2 mm" (§1 note).
+  const double reduction = 0.5 * (58.95 * mm - spec.pinion.tip_diameter);
+  EXPECT_NEAR(reduction, 0.2 * mm, 0.01 * mm);
+  EXPECT_NEAR(0.5 * (146.05 * mm - spec.wheel.tip_diameter), reduction, 1e-12);
+}
+
+// Zones along the line of action for 1 < ε_α < 2: double AB, single BD, double DE with
+// AB = DE = (ε_α − 1)·p_bt and BD = (2 − ε_α)·p_bt (the definition of ε_α).
+TEST(GearPair, SplitPathContactZones)
+{
+  const GearPairGeometry pair = compute_gear_pair(split_path_pair());
+  ASSERT_EQ(pair.contact_zones.size(), 3u);
+  const double p = pair.transverse_base_pitch;
+  EXPECT_EQ(pair.contact_zones[0].pairs, 2u);
+  EXPECT_EQ(pair.contact_zones[1].pairs, 1u);
+  EXPECT_EQ(pair.contact_zones[2].pairs, 2u);
+  EXPECT_NEAR(pair.contact_zones[0].end - pair.contact_zones[0].start, 0.5 * p, 1e-12);
+  EXPECT_NEAR(pair.contact_zones[1].end - pair.contact_zones[1].start, 0.5 * p, 1e-12);
+  EXPECT_NEAR(pair.contact_zones[1].start, pair.single_contact_start(), 1e-12);
+  EXPECT_NEAR(pair.contact_zones[1].end, pair.single_contact_end(), 1e-12);
+  // Roll angles are positions over r_b1; the single zone spans 0.5·p_bt/r_b1 = π/z1.
+  EXPECT_NEAR(pair.contact_zones[1].pinion_roll_end - pair.contact_zones[1].pinion_roll_start,
+              pi / 21., 1e-12);
+  // The pitch point lies inside the single-contact zone for this pair.
+  EXPECT_EQ(pair.pairs_in_contact(pair.pitch_point), 1u);
+}
+
+// A helical variant: ε_β = b·sin β/(π·m_n) (ISO 21771); α_t from tan α_t = tan α_n / cos β.
+TEST(GearPair, HelicalOverlapRatio)
+{
+  GearPairSpec spec = standard_tips(split_path_pair());
+  spec.pinion.helix_angle = 15. * degree;
+  spec.wheel.helix_angle = -15. * degree;
+  const GearPairGeometry pair = compute_gear_pair(spec);
+  EXPECT_NEAR(pair.overlap_ratio, 24. * std::sin(15. * degree) / (pi * 2.5), 1e-12);
+  EXPECT_NEAR(std::tan(pair.transverse_pressure_angle),
+              std::tan(20. * degree) / std::cos(15. * degree), 1e-12);
+  // Zero-backlash centre distance, independent form: a = m_t·(z1+z2)/2·cos α_t / cos α_wt with
+  // x1 + x2 = 0 → α_wt = α_t.
+  EXPECT_NEAR(pair.centre_distance, 2.5 * mm / std::cos(15. * degree) * 39., 1e-12);
+}
+
+// Profile shifts with x1 + x2 > 0 spread the centre distance: a check against the textbook
+// approximation a ≈ a_d + (x1 + x2 − Δ)·m is loose, so check inv α_wt exactly instead.
+TEST(GearPair, ShiftedWorkingPressureAngle)
+{
+  GearPairSpec spec = standard_tips(split_path_pair());
+  spec.pinion.profile_shift = 0.5;
+  spec.wheel.profile_shift = 0.2;
+  const GearPairGeometry pair = compute_gear_pair(spec);
+  EXPECT_NEAR(involute(pair.working_pressure_angle),
+              involute(20. * degree) + 2. * std::tan(20. * degree) * 0.7 / 78., 1e-14);
+  EXPECT_GT(pair.centre_distance, 97.5 * mm);
+  // With the same shifts but a given larger centre distance, there is backlash.
+  spec.centre_distance = pair.centre_distance + 0.1 * mm;
+  EXPECT_GT(compute_gear_pair(spec).backlash, 0.);
+  spec.centre_distance = pair.centre_distance - 0.1 * mm;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/centre distance");
+}
+
+// An internal pair (24/69, m 2.5): with a standard ring tip the ring tip digs into the pinion
+// fillet (rack form circle), a classic internal-gear interference; a larger ring tip diameter
+// clears it.
+TEST(GearPair, InternalPair)
+{
+  GearPairSpec spec = standard_tips(split_path_pair());
+  spec.pinion.teeth = 24;
+  spec.wheel.teeth = 69;
+  spec.wheel.internal = true;
+  spec.pinion.profile_shift = 0.;
+  spec.wheel.profile_shift = 0.;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
+            "Gear pair/Wheel/tip diameter");
+  spec.wheel.tip_diameter = (69. * 2.5 - 2. * 2.5 * 0.5) * mm; // addendum 0.5·m
+  const GearPairGeometry pair = compute_gear_pair(spec);
+  EXPECT_NEAR(pair.centre_distance, 0.5 * (69. - 24.) * 2.5 * mm, 1e-12);
+  EXPECT_GT(pair.transverse_contact_ratio, 1.);
+  // Internal pairs: the line of action T1T2 = a·sin α_w, T2 on the same side as T1.
+  EXPECT_NEAR(pair.line_of_action_length, pair.centre_distance * std::sin(20. * degree), 1e-12);
+}
+
+TEST(GearPair, RejectsBadInput)
+{
+  const GearPairSpec base = split_path_pair();
+  GearPairSpec spec = base;
+  spec.pinion.teeth = 0;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/Pinion/teeth");
+  // Undercut: x_min = 1.25 − 0.38·(1 − sin 20°) − z·sin²α/2 = −0.228 for z = 21.
+  spec = standard_tips(base);
+  spec.pinion.profile_shift = -0.3;
+  spec.wheel.profile_shift = 0.3;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
+            "Gear pair/Pinion/profile shift");
+  EXPECT_NEAR(compute_gear_pair(standard_tips(base)).pinion.minimum_profile_shift,
+              1.25 - 0.38 * (1. - std::sin(20. * degree)) -
+                  21. * std::pow(std::sin(20. * degree), 2) / 2.,
+              1e-12);
+  // Pointed tooth: x = 1.3 on z = 21 with a standard tip (s_at < 0 by ISO 21771 by hand).
+  spec = standard_tips(base);
+  spec.pinion.profile_shift = 1.3;
+  spec.wheel.profile_shift = -1.3;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
+            "Gear pair/Pinion/profile shift");
+  // Internal wheel with fewer teeth than the pinion.
+  spec = standard_tips(base);
+  spec.wheel.internal = true;
+  spec.wheel.teeth = 20;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/Wheel/teeth");
+  // ε_α < 1: tips cut down to 1 mm above the reference circle.
+  spec = base;
+  spec.pinion.tip_diameter = 54.5 * mm;
+  spec.wheel.tip_diameter = 144.5 * mm;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
+            "Gear pair/Pinion/tip diameter");
+}
