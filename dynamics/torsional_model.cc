@@ -28,6 +28,11 @@ void require(bool condition, const std::string& parameter, const std::string& re
     throw InputError(parameter, reason);
 }
 
+// The rigid mode is a double zero eigenvalue (a Jordan block) of the first-order system;
+// round-off splits it into about ±sqrt(ε)·|λ|max ≈ ±1e-8·|λ|max, so anything below
+// 1e-6·|λ|max is the rigid mode, not a vibration.
+constexpr double rigid_mode_threshold = 1e-6;
+
 // Classical RK4 amplification factor for y' = λy at z = hλ.
 double rk4_amplification(std::complex<double> z)
 {
@@ -295,7 +300,7 @@ ModalProperties TorsionalModel::modal_properties() const
   for (const auto& value : damped)
     largest_damped = std::max(largest_damped, std::abs(value));
   for (const auto& value : damped)
-    if (std::abs(value) > 1e-9 * largest_damped && value.imag() >= 0.)
+    if (std::abs(value) > rigid_mode_threshold * largest_damped && value.imag() >= 0.)
       modes.decay_rates.push_back(-value.real());
   std::sort(modes.decay_rates.begin(), modes.decay_rates.end());
   return modes;
@@ -334,7 +339,7 @@ double TorsionalModel::rk4_limit_for(const Eigen::MatrixXd& K, const Eigen::Matr
   for (const auto& value : values)
   {
     const double size = std::abs(value);
-    if (size < 1e-9 * largest)
+    if (size < rigid_mode_threshold * largest)
       continue; // rigid mode
     const std::complex<double> direction = value / size;
     double stable = 0., unstable = 0.;
