@@ -32,6 +32,14 @@ namespace
 constexpr double divergence_energy_factor = 1e6;
 constexpr unsigned int check_interval = 16; // steps between energy checks
 
+std::string format_number(double value)
+{
+  std::ostringstream s;
+  s.precision(3);
+  s << value;
+  return s.str();
+}
+
 // Stores the output points and watches for divergence; shared by all three methods.
 class Recorder
 {
@@ -46,21 +54,37 @@ public:
       strain += 0.5 * statics.mesh_force[m] * statics.deflection[m];
     reference_energy = std::max(
         {model.vibration_energy(0., angle, velocity), strain, std::numeric_limits<double>::min()});
+    // Sized once: growing vectors inside the step loop would cost more than the steps.
     const std::size_t expected =
         static_cast<std::size_t>(settings.end_time / settings.time_step / settings.record_stride) +
         2;
-    trajectory.time.reserve(expected);
-    trajectory.angle.reserve(expected * n);
-    trajectory.velocity.reserve(expected * n);
+    trajectory.time.resize(expected);
+    trajectory.angle.resize(expected * n);
+    trajectory.velocity.resize(expected * n);
   }
 
   void output(unsigned long index, double time, const double* angle, const double* velocity)
   {
     if (index % settings.record_stride != 0)
       return;
-    trajectory.time.push_back(time);
-    trajectory.angle.insert(trajectory.angle.end(), angle, angle + n);
-    trajectory.velocity.insert(trajectory.velocity.end(), velocity, velocity + n);
+    if (stored == trajectory.time.size())
+    {
+      trajectory.time.resize(2 * stored);
+      trajectory.angle.resize(2 * stored * n);
+      trajectory.velocity.resize(2 * stored * n);
+    }
+    trajectory.time[stored] = time;
+    std::copy(angle, angle + n, trajectory.angle.begin() + stored * n);
+    std::copy(velocity, velocity + n, trajectory.velocity.begin() + stored * n);
+    ++stored;
+  }
+
+  // Drops the unused tail of the preallocated arrays.
+  void finish()
+  {
+    trajectory.time.resize(stored);
+    trajectory.angle.resize(stored * n);
+    trajectory.velocity.resize(stored * n);
   }
 
   void check(double time, const double* angle, const double* velocity)
@@ -75,7 +99,7 @@ public:
     reason.precision(4);
     reason << "diverged at t = " << time << " s ("
            << (finite
-                   ? "vibration energy grew " + std::to_string(energy / reference_energy) + "-fold"
+                   ? "vibration energy grew by a factor " + format_number(energy / reference_energy)
                    : std::string("non-finite state"))
            << ") with step " << settings.time_step << " s; estimated RK4 stability limit "
            << trajectory.rk4_step_limit << " s (highest natural frequency "
@@ -89,6 +113,7 @@ private:
   const IntegratorSettings& settings;
   const unsigned int n;
   double reference_energy = 0.;
+  std::size_t stored = 0;
 };
 
 unsigned long fixed_step_count(const IntegratorSettings& settings)
@@ -136,6 +161,7 @@ void run_rk4(const TorsionalModel& model, std::vector<double> angle, std::vector
       recorder.check((step + 1) * h, angle.data(), velocity.data());
     recorder.output(step + 1, (step + 1) * h, angle.data(), velocity.data());
   }
+  recorder.finish();
   trajectory.cost.steps = steps;
   trajectory.cost.function_evaluations = 4 * steps;
   trajectory.cost.smallest_step = trajectory.cost.largest_step = h;
@@ -182,6 +208,7 @@ void run_hht(const TorsionalModel& model, std::vector<double> angle, std::vector
       recorder.check(t1, angle.data(), velocity.data());
     recorder.output(step + 1, t1, angle.data(), velocity.data());
   }
+  recorder.finish();
   trajectory.cost.steps = steps;
   trajectory.cost.function_evaluations = steps + 1;
   trajectory.cost.linear_solves = steps;
@@ -301,6 +328,7 @@ void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
     recorder.check(t, y.data(), y.data() + n);
     recorder.output(output, t, y.data(), y.data() + n);
   }
+  recorder.finish();
 }
 } // namespace
 
