@@ -42,6 +42,7 @@ struct CycloidCorrection
   double alpha_1 = 0., alpha_2 = 0.;       // rad, generating angles of the arc ends, nominal
   double alpha_ok_1 = 0., alpha_ok_2 = 0.; // rad, the same points on the corrected profile
   double alpha_s = 0.;                     // rad, tangency point S (nominal generating angle)
+  double alpha_ok_s = 0.;                  // rad, S on the corrected profile
   double roller_circle_radius = 0.;        // m, r_k
   double roller_radius = 0.;               // m, q_k
   double rotation = 0.;                    // rad, δ

@@ -133,7 +133,9 @@ TEST(InvoluteTooth, SplitPathPinionFlankIsTheExactInvolute)
       for (const ProfilePoint& p : tooth.points)
       {
         if (p.segment == ProfileSegment::root)
+        {
           EXPECT_NEAR(p.position.norm(), tooth.root_radius, 1e-15);
+        }
       }
     }
 }
