@@ -1,0 +1,179 @@
+#include "app/kinematics_parameters.h"
+
+#include <sstream>
+
+namespace gearstiff::app
+{
+namespace
+{
+constexpr double degree = 3.14159265358979323846 / 180.;
+constexpr double mm = 1e-3;
+
+std::string text(double value)
+{
+  std::ostringstream s;
+  s.precision(12);
+  s << value;
+  return s.str();
+}
+
+void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gear)
+{
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  prm.declare_entry("teeth", std::to_string(gear.teeth), Integer(1),
+                    "number of teeth [-], positive also for an internal gear");
+  prm.declare_entry("module", text(gear.normal_module / mm), Double(0.), "normal module m_n [mm]");
+  prm.declare_entry("pressure angle", text(gear.pressure_angle / degree), Double(0., 45.),
+                    "normal pressure angle of the basic rack α_n [deg]");
+  prm.declare_entry("helix angle", text(gear.helix_angle / degree), Double(-60., 60.),
+                    "helix angle β at the reference circle [deg], 0 for spur gears");
+  prm.declare_entry("profile shift", text(gear.profile_shift), Double(-5., 5.),
+                    "profile shift coefficient x [-] (DIN 3960: > 0 thickens the tooth)");
+  prm.declare_entry("face width", text(gear.face_width / mm), Double(0.), "face width b [mm]");
+  prm.declare_entry("tip diameter", text(gear.tip_diameter / mm), Double(0.),
+                    "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x)");
+  prm.declare_entry("internal", gear.internal ? "true" : "false", Bool(),
+                    "ring gear (teeth inside); only the wheel may be internal");
+  prm.declare_entry("addendum coefficient", text(gear.addendum_coefficient), Double(0.),
+                    "basic rack addendum h_aP/m_n [-] (standard tip diameter only)");
+  prm.declare_entry("dedendum coefficient", text(gear.dedendum_coefficient), Double(0.),
+                    "basic rack dedendum h_fP/m_n [-] (ISO 53 A: 1.25)");
+  prm.declare_entry("root radius coefficient", text(gear.root_radius_coefficient), Double(0.),
+                    "basic rack root radius ρ_fP/m_n [-] (ISO 53 A: 0.38)");
+  prm.declare_entry("bore diameter", text(gear.bore_diameter / mm), Double(0.),
+                    "bore diameter of the gear body [mm] (FE models; 0 = not given)");
+  prm.declare_entry("web thickness", text(gear.web_thickness / mm), Double(0.),
+                    "web thickness b_s [mm] for ISO C_R; 0 = solid blank");
+  prm.declare_entry("rim thickness", text(gear.rim_thickness / mm), Double(0.),
+                    "rim thickness s_R under the root [mm] for ISO C_R (webbed blanks)");
+}
+
+kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm)
+{
+  kinematics::GearSpec gear;
+  gear.teeth = static_cast<unsigned int>(prm.get_integer("teeth"));
+  gear.normal_module = prm.get_double("module") * mm;
+  gear.pressure_angle = prm.get_double("pressure angle") * degree;
+  gear.helix_angle = prm.get_double("helix angle") * degree;
+  gear.profile_shift = prm.get_double("profile shift");
+  gear.face_width = prm.get_double("face width") * mm;
+  gear.tip_diameter = prm.get_double("tip diameter") * mm;
+  gear.internal = prm.get_bool("internal");
+  gear.addendum_coefficient = prm.get_double("addendum coefficient");
+  gear.dedendum_coefficient = prm.get_double("dedendum coefficient");
+  gear.root_radius_coefficient = prm.get_double("root radius coefficient");
+  gear.bore_diameter = prm.get_double("bore diameter") * mm;
+  gear.web_thickness = prm.get_double("web thickness") * mm;
+  gear.rim_thickness = prm.get_double("rim thickness") * mm;
+  return gear;
+}
+} // namespace
+
+void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
+{
+  const kinematics::GearPairSpec pair = kinematics::split_path_pair();
+  prm.enter_subsection("Gear pair");
+  prm.declare_entry("centre distance", text(pair.centre_distance / mm),
+                    dealii::Patterns::Double(0.),
+                    "working centre distance a_w [mm]; 0 = zero backlash from the profile shifts");
+  prm.enter_subsection("Pinion");
+  declare_gear(prm, pair.pinion);
+  prm.leave_subsection();
+  prm.enter_subsection("Wheel");
+  declare_gear(prm, pair.wheel);
+  prm.leave_subsection();
+  prm.leave_subsection();
+
+  prm.enter_subsection("ISO 6336");
+  prm.declare_entry("C_M", "0.8", dealii::Patterns::Double(0., 2.),
+                    "theoretical correction factor C_M [-] (0.8 for solid discs)");
+  prm.declare_entry("specific load", "0", dealii::Patterns::Double(0.),
+                    "F_t·K_A/b [N/mm] for the ISO load factor; 0 = not given");
+  prm.leave_subsection();
+}
+
+kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm)
+{
+  kinematics::GearPairSpec pair;
+  prm.enter_subsection("Gear pair");
+  pair.centre_distance = prm.get_double("centre distance") * mm;
+  prm.enter_subsection("Pinion");
+  pair.pinion = parse_gear(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Wheel");
+  pair.wheel = parse_gear(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  return pair;
+}
+
+kinematics::IsoStiffnessOptions parse_iso_parameters(dealii::ParameterHandler& prm)
+{
+  kinematics::IsoStiffnessOptions options;
+  prm.enter_subsection("ISO 6336");
+  options.theoretical_correction = prm.get_double("C_M");
+  options.specific_load = prm.get_double("specific load") * 1e3; // N/mm → N/m
+  prm.leave_subsection();
+  return options;
+}
+
+void declare_train_parameters(dealii::ParameterHandler& prm)
+{
+  const kinematics::GearTrainText train = kinematics::builtin_train("bi-planetary");
+  using dealii::Patterns::Anything;
+  prm.enter_subsection("Train");
+  prm.declare_entry("gears", train.gears, Anything(),
+                    "toothed members, 'name: teeth, ...' [-]; negative teeth = internal gear");
+  prm.declare_entry("modules", train.modules, Anything(),
+                    "'name: module, ...' [mm] (optional: tooth forces, planet orbit radii, the "
+                    "check that a planet's meshes agree on its axis)");
+  prm.declare_entry("carriers", train.carriers, Anything(),
+                    "toothless members (carriers, shafts), 'name, ...'");
+  prm.declare_entry("planets", train.planets, Anything(),
+                    "members whose axis rides on a carrier, 'name: carrier*copies, ...'");
+  prm.declare_entry("meshes", train.meshes, Anything(),
+                    "'a-b/frame, ...': gears a and b mesh with both axes on frame (a carrier); "
+                    "'a-b' alone: fixed axes in the housing");
+  prm.declare_entry("connections", train.connections, Anything(),
+                    "rigidly joined members, 'a=b, ...'");
+  prm.declare_entry("fixed", train.fixed, Anything(), "members held still, 'name, ...'");
+  prm.declare_entry("inputs", train.inputs, Anything(),
+                    "driven members and their speeds, 'name: speed, ...' [rpm]");
+  prm.declare_entry("output", train.output, Anything(), "output member (ratio, statics)");
+  prm.declare_entry("input torque", "120.2", dealii::Patterns::Double(),
+                    "torque on the first input [N·m] (gear-data.md §2: 120.2); 0 = no statics");
+  prm.declare_entry("tooth friction coefficient", "0.08", dealii::Patterns::Double(0., 0.5),
+                    "μ_z for the pair efficiencies [-] (gear-data.md §2: 0.08)");
+  prm.declare_entry("inertias", "", Anything(),
+                    "'name: J, ...' [kg·m²], one copy about its own axis (optional)");
+  prm.declare_entry("masses", "", Anything(),
+                    "'name: m, ...' [kg], one copy, counts where its axis moves (optional)");
+  prm.declare_entry("reduce inertia to", "", Anything(),
+                    "member the inertia is reduced to; empty = the first input");
+  prm.leave_subsection();
+}
+
+TrainParameters parse_train_parameters(dealii::ParameterHandler& prm)
+{
+  TrainParameters p;
+  prm.enter_subsection("Train");
+  p.text.gears = prm.get("gears");
+  p.text.modules = prm.get("modules");
+  p.text.carriers = prm.get("carriers");
+  p.text.planets = prm.get("planets");
+  p.text.meshes = prm.get("meshes");
+  p.text.connections = prm.get("connections");
+  p.text.fixed = prm.get("fixed");
+  p.text.inputs = prm.get("inputs");
+  p.text.output = prm.get("output");
+  p.text.inertias = prm.get("inertias");
+  p.text.masses = prm.get("masses");
+  p.input_torque = prm.get_double("input torque");
+  p.tooth_friction = prm.get_double("tooth friction coefficient");
+  p.reduce_to = prm.get("reduce inertia to");
+  prm.leave_subsection();
+  return p;
+}
+} // namespace gearstiff::app
