@@ -104,7 +104,17 @@ public:
            << ") with step " << settings.time_step << " s; estimated RK4 stability limit "
            << trajectory.rk4_step_limit << " s (highest natural frequency "
            << trajectory.highest_frequency / (2. * M_PI) << " Hz)";
-    throw SolverFailure(trajectory.method, reason.str());
+    // Below the RK4 limit, or with a stable method, the growth is the model's own: a parametric
+    // resonance of the time-varying mesh stiffness. Real teeth would separate and bound it, which
+    // this linear model does not represent, so no K_v exists there.
+    const bool numerical =
+        settings.type == IntegratorType::rk4 && settings.time_step > trajectory.rk4_step_limit;
+    if (!numerical)
+      reason << "; the step is stable, so the linear model itself is unstable here "
+                "(parametric resonance of the mesh stiffness; tooth separation not modelled)";
+    throw SolverFailure(numerical ? trajectory.method
+                                  : "torsional model (" + trajectory.method + ")",
+                        reason.str());
   }
 
 private:

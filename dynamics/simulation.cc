@@ -191,21 +191,29 @@ SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settin
       fastest_mesh = std::max(fastest_mesh, model.mesh_position_rate(m));
     point.integrator.time_step =
         std::min(settings.integrator.time_step, 1. / (fastest_mesh * steps_per_mesh_period));
-    const SimulationResult result = simulate(model, point);
-
     SweepPoint p;
     p.input_speed = speed;
     p.mesh_frequency = model.mesh_position_rate(0);
     p.time_step = point.integrator.time_step;
-    p.kv_max = result.kv_max;
-    p.kv_min = std::numeric_limits<double>::infinity();
-    for (const auto& mesh : result.meshes)
+    try
     {
-      p.kv_min = std::min(p.kv_min, mesh.kv_min);
-      p.periodicity =
-          std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
+      const SimulationResult result = simulate(model, point);
+      p.kv_max = result.kv_max;
+      p.kv_min = std::numeric_limits<double>::infinity();
+      for (const auto& mesh : result.meshes)
+      {
+        p.kv_min = std::min(p.kv_min, mesh.kv_min);
+        p.periodicity =
+            std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
+      }
+      p.cost = result.trajectory.cost;
     }
-    p.cost = result.trajectory.cost;
+    catch (const SolverFailure& failure)
+    {
+      p.unstable = true;
+      p.failure = failure.what();
+      p.kv_max = p.kv_min = p.periodicity = std::numeric_limits<double>::quiet_NaN();
+    }
     sweep.points.push_back(p);
   }
   sweep.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -81,6 +81,10 @@ struct SweepPoint
   double kv_max = 0.;         // [-] largest over the meshes in the steady-state window
   double kv_min = 0.;         // [-]
   double periodicity = 0.;    // [-] |K_v max(first half) − K_v max(second half)|
+  // The linear model diverged at this speed (parametric resonance): no K_v exists, the K_v
+  // fields are NaN and `failure` holds the SolverFailure message.
+  bool unstable = false;
+  std::string failure;
   IntegrationCost cost;
 };
 
@@ -90,9 +94,10 @@ struct SweepResult
   double wall_time = 0.; // [s]
 };
 
-// K_v against input speed. The step is settings.integrator.time_step, reduced where needed so
-// every mesh period holds at least `steps_per_mesh_period` steps (the stiffness jumps must be
-// resolved at high speed).
+// K_v against input speed. A speed at which the linear model diverges is recorded as unstable
+// (not as a number) and the sweep goes on; bad input still throws. The step is
+// settings.integrator.time_step, reduced where needed so every mesh period holds at least
+// `steps_per_mesh_period` steps (the stiffness jumps must be resolved at high speed).
 SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
                         const std::vector<double>& input_speeds,
                         unsigned int steps_per_mesh_period = 40);

@@ -36,7 +36,7 @@ GearTrain split_path_train(const SplitPathCase& data, const MeshStiffness& stiff
     mesh.driven = wheel;
     mesh.driver_base_radius = data.pinion_base_radius;
     mesh.driven_base_radius = data.wheel_base_radius;
-    mesh.base_pitch = data.base_pitch;
+    mesh.driver_teeth = data.pinion_teeth;
     mesh.contact_ratio = data.contact_ratio;
     mesh.approach_ratio = data.approach_ratio;
     mesh.stiffness = stiffness;

@@ -79,7 +79,7 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
             label + "/gears", "driver and driven must be two different gears of the train");
     require(mesh.driver_base_radius > 0., label + "/driver base radius", "must be positive");
     require(mesh.driven_base_radius > 0., label + "/driven base radius", "must be positive");
-    require(mesh.base_pitch > 0., label + "/base pitch", "must be positive");
+    require(mesh.driver_teeth > 0, label + "/driver teeth", "must be positive");
     require(mesh.contact_ratio >= 1. && mesh.contact_ratio < 4., label + "/contact ratio",
             "must lie in [1, 4), got " + std::to_string(mesh.contact_ratio));
     require(mesh.approach_ratio >= 0. && mesh.approach_ratio <= mesh.contact_ratio,
@@ -135,7 +135,7 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
     c.mu = mesh.friction_coefficient;
     c.contact_ratio = mesh.contact_ratio;
     c.approach_ratio = mesh.approach_ratio;
-    c.position_rate = speeds[mesh.driver] * mesh.driver_base_radius / mesh.base_pitch;
+    c.position_rate = speeds[mesh.driver] * mesh.driver_teeth / (2. * M_PI);
     c.initial_position = mesh.initial_position;
     c.stiffness = mesh.stiffness;
     meshes.push_back(c);

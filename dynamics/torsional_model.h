@@ -48,9 +48,11 @@ struct Mesh
   unsigned int driven = 1;        // index of the driven gear
   double driver_base_radius = 0.; // [m]
   double driven_base_radius = 0.; // [m]
-  double base_pitch = 0.;         // [m] transverse base pitch p_et
-  double contact_ratio = 0.;      // [-] transverse contact ratio ε_α
-  double approach_ratio = 0.;     // [-] ε_f: start of active contact to pitch point / p_et
+  // [-] teeth of the driver: the mesh position advances z pitches per driver revolution, so
+  // the mesh frequency is z·n exactly, whatever rounding the base radii carry.
+  unsigned int driver_teeth = 0;
+  double contact_ratio = 0.;  // [-] transverse contact ratio ε_α
+  double approach_ratio = 0.; // [-] ε_f: start of active contact to pitch point / p_et
   MeshStiffness stiffness;
   double damping = 0.;              // [N·s/m] along the line of action
   double friction_coefficient = 0.; // [-] tooth friction μ

@@ -20,7 +20,7 @@ GearTrain single_pair(double stiffness, double damping, double torque = 49.4)
   Mesh mesh;
   mesh.driver_base_radius = r1;
   mesh.driven_base_radius = r2;
-  mesh.base_pitch = 7.38e-3;
+  mesh.driver_teeth = 21;
   mesh.contact_ratio = 1.5;
   mesh.approach_ratio = 0.58;
   mesh.stiffness = MeshStiffness::constant(stiffness, "Mesh 1/stiffness");
