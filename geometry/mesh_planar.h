@@ -74,7 +74,9 @@ struct SizeGrading
   std::function<double(const Eigen::Vector2d&)> coarse_size; // m; empty: body_size everywhere
   double largest_size = 5e-4; // m, upper bound of coarse_size (gmsh's size limit)
 
-  double size_at(const Eigen::Vector2d& point) const; // m
+  // m; `contact_scale` scales the fine size only (not the coarse sizes or the growth): the
+  // mesher aims below h_c with it because gmsh's edges scatter around the requested size.
+  double size_at(const Eigen::Vector2d& point, double contact_scale = 1.) const;
 };
 
 struct MeshOptions
@@ -94,10 +96,15 @@ struct MeshStatistics
   double min_scaled_jacobian = 0.;                             // -, 1 for a perfect square/cube
   double mean_scaled_jacobian = 0.;                            // -
   Eigen::Vector3d worst_cell_centre = Eigen::Vector3d::Zero(); // m, where the minimum occurs
-  double time_geometry = 0.;                                   // s, building the gmsh model
-  double time_meshing = 0.;                                    // s, generating the mesh
-  double time_checking = 0.;                                   // s, element types and quality
-  double time_writing = 0.;                                    // s, writing the .msh file
+  // m, the longest in-plane edge of the cells with a corner within the fine size of a focus
+  // point: the achieved contact size, to compare with SizeGrading::fine_size.
+  double largest_edge_at_focus = 0.;
+  double contact_scale = 1.;         // -, the scale of the contact-driven size that achieved it
+  unsigned int meshing_attempts = 0; // -, mesh generations needed to achieve it
+  double time_geometry = 0.;         // s, building the gmsh model
+  double time_meshing = 0.;          // s, generating the mesh
+  double time_checking = 0.;         // s, element types and quality
+  double time_writing = 0.;          // s, writing the .msh file
 };
 
 // Scaled Jacobian of a cell given its corner coordinates in gmsh/deal.II-lexicographic order

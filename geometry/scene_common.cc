@@ -48,7 +48,7 @@ contact_size_grading(const SceneMeshSettings& settings, const std::vector<SceneC
   if (settings.fine_radius > 0.)
     grading.fine_radius = settings.fine_radius;
   else
-    grading.fine_radius = have_widths ? 2. * largest_width : 10. * grading.fine_size;
+    grading.fine_radius = have_widths ? 1.5 * largest_width : 10. * grading.fine_size;
   if (!(settings.growth_rate > 0.))
     throw InputError("growth rate", "must be positive");
   grading.growth_rate = settings.growth_rate;

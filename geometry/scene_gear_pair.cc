@@ -4,6 +4,7 @@
 #include "kinematics/errors.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>

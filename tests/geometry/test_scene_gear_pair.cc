@@ -1,0 +1,246 @@
+// The gear-pair scene of the split-path gearbox (../shared/reference/gear-data.md §1, Reszuta &
+// Drewniak 2015): every mesh is read back with deal.II's GridIn::read_msh and checked for its ids,
+// its cell size at the predicted contacts and the gaps along the line of action, measured on the
+// boundary faces deal.II sees (not on the outlines the scene was built from).
+#include "geometry/scene_gear_pair.h"
+#include "kinematics/errors.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <set>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::geometry;
+
+std::string work_file(const std::string& name)
+{
+  const std::filesystem::path folder =
+      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "geometry" / "scene-work";
+  std::filesystem::create_directories(folder);
+  return (folder / name).string();
+}
+
+template <int dim>
+void read_mesh(dealii::Triangulation<dim>& triangulation, const std::string& file)
+{
+  dealii::GridIn<dim> grid_in(triangulation);
+  grid_in.read_msh(file);
+}
+
+struct Ids
+{
+  std::set<int> materials, boundaries;
+};
+
+template <int dim>
+Ids ids_of(const dealii::Triangulation<dim>& triangulation)
+{
+  Ids ids;
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    ids.materials.insert(cell->material_id());
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        ids.boundaries.insert(cell->face(f)->boundary_id());
+  }
+  return ids;
+}
+
+// Distances along the line of action (from T1) where it crosses boundary faces with `id`.
+std::vector<double> crossings(const dealii::Triangulation<2>& triangulation, int id,
+                              const Eigen::Vector2d& t1, const Eigen::Vector2d& t2)
+{
+  const Eigen::Vector2d u = (t2 - t1).normalized();
+  const double length = (t2 - t1).norm();
+  std::vector<double> result;
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+      {
+        const auto v0 = cell->face(f)->vertex(0), v1 = cell->face(f)->vertex(1);
+        const Eigen::Vector2d a(v0[0], v0[1]), b(v1[0], v1[1]);
+        Eigen::Matrix2d m;
+        m << u, a - b;
+        if (std::abs(m.determinant()) < 1e-30)
+          continue;
+        const Eigen::Vector2d ts = m.inverse() * (a - t1);
+        if (ts(1) >= 0. && ts(1) < 1. && ts(0) >= 0. && ts(0) <= length)
+          result.push_back(ts(0));
+      }
+  return result;
+}
+
+// Pinion/wheel flank crossings of the line of action that coincide within `tolerance`.
+unsigned int touching_pairs(const dealii::Triangulation<2>& triangulation, const SceneInfo& info,
+                            double tolerance, std::vector<double>* gaps = nullptr)
+{
+  const auto& line = info.reference_line;
+  const auto pinion = crossings(triangulation, scene_ids::pinion_flanks, line[0], line[1]);
+  const auto wheel = crossings(triangulation, scene_ids::wheel_flanks, line[0], line[1]);
+  unsigned int count = 0;
+  for (const double p : pinion)
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const double w : wheel)
+      nearest = std::min(nearest, std::abs(w - p));
+    if (gaps)
+      gaps->push_back(nearest);
+    if (nearest < tolerance)
+      ++count;
+  }
+  return count;
+}
+
+// Longest edge of the cells that have a vertex within `radius` of `point`.
+double largest_edge_near(const dealii::Triangulation<2>& triangulation,
+                         const Eigen::Vector2d& point, double radius)
+{
+  double largest = 0.;
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    bool near = false;
+    for (const auto v : cell->vertex_indices())
+      near |= (Eigen::Vector2d(cell->vertex(v)[0], cell->vertex(v)[1]) - point).norm() < radius;
+    if (near)
+      for (const auto f : cell->face_indices())
+        largest = std::max(largest, cell->face(f)->measure());
+  }
+  return largest;
+}
+
+SceneInfo scene(const std::string& position, const std::string& name, unsigned int dimension = 2,
+                RimModel rim = RimModel::sector)
+{
+  GearPairSceneSpec spec;
+  spec.position = position;
+  spec.mesh.dimension = dimension;
+  spec.mesh.layers = 3;
+  spec.rim = rim;
+  return write_gear_pair_scene(spec, work_file(name));
+}
+
+// Gap below which a pair counts as touching (m). The scene places the flanks exactly; what
+// remains is the spline through the profile points and the chord between boundary nodes:
+// with h_c ≈ 5-8 µm and a flank curvature radius ≥ 5 mm the chord sag is below 1e-11 m, the
+// spline error below 1e-7 m. 0.5 µm is still 12x smaller than the tooth-pair deflection at the
+// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, gear-data.md §1), so a pair that is
+// "near-zero" here is in contact for any FE analysis at that load.
+constexpr double touching_tolerance = 0.5e-6;
+// The gap to the next pair outside the path of contact is a sizeable fraction of the base
+// pitch; 50 µm separates "touching" from "not touching" by two orders of magnitude.
+constexpr double apart_tolerance = 50e-6;
+
+TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
+{
+  const SceneInfo info = scene("single", "single.msh");
+  dealii::Triangulation<2> triangulation;
+  read_mesh(triangulation, info.file);
+
+  const Ids ids = ids_of(triangulation);
+  EXPECT_EQ(ids.materials, (std::set<int>{scene_ids::pinion_body, scene_ids::wheel_body}));
+  EXPECT_EQ(ids.boundaries,
+            (std::set<int>{scene_ids::free_surface, scene_ids::pinion_bore, scene_ids::wheel_bore,
+                           scene_ids::pinion_flanks, scene_ids::wheel_flanks,
+                           scene_ids::pinion_cuts, scene_ids::wheel_cuts}));
+  EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
+
+  // The split-path pair (ε_α = 1.5, gear-data.md §1) has its pitch point in the single-contact
+  // zone, so "single" puts the one contact at the pitch point C: ℓ = r_b1·tan α_wt with
+  // r_b1 = 24.667 mm and α_wt = 20° → 8.978 mm, 26.25 mm from the pinion axis (r_w1 = r1).
+  ASSERT_EQ(info.contacts.size(), 1u);
+  EXPECT_NEAR(info.contacts[0].point.norm(), 26.25e-3, 1e-6); // 1 µm: r_b1 is given to 1 µm
+  // Hertz half-width at the pitch point ≈ 0.08 mm (contact-notes: 2.0 kN over 24 mm); the
+  // estimate is printed to one significant figure, so ±10 %.
+  EXPECT_NEAR(info.contacts[0].hertz_half_width, 0.08e-3, 0.008e-3);
+  EXPECT_NEAR(info.contact_size, 0.1 * info.contacts[0].hertz_half_width, 1e-12);
+
+  std::vector<double> gaps;
+  EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance, &gaps), 1u);
+  for (const double gap : gaps)
+    EXPECT_TRUE(gap < touching_tolerance || gap > apart_tolerance) << "gap " << gap;
+
+  // Element size at the contact point: every cell touching it has edges no longer than h_c.
+  for (const auto& contact : info.contacts)
+    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * info.contact_size),
+              info.contact_size);
+
+  EXPECT_GT(info.mesh.min_scaled_jacobian, 0.2); // the checker already rejects <= 0
+}
+
+TEST(GearPairScene, DoublePairPositionHasTwoTouchingPairs)
+{
+  const SceneInfo info = scene("double", "double.msh");
+  dealii::Triangulation<2> triangulation;
+  read_mesh(triangulation, info.file);
+  ASSERT_EQ(info.contacts.size(), 2u);
+  // The two contacts are one transverse base pitch apart: p_et = 7.380 mm (gear-data.md §1,
+  // printed to 1 µm).
+  EXPECT_NEAR((info.contacts[1].point - info.contacts[0].point).norm(), 7.380e-3, 1e-6);
+  std::vector<double> gaps;
+  EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance, &gaps), 2u);
+  for (const double gap : gaps)
+    EXPECT_TRUE(gap < touching_tolerance || gap > apart_tolerance) << "gap " << gap;
+  for (const auto& contact : info.contacts)
+    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * info.contact_size),
+              info.contact_size);
+}
+
+TEST(GearPairScene, FullRimHasBoresAndNoCuts)
+{
+  const SceneInfo info = scene("single", "full.msh", 2, RimModel::full);
+  dealii::Triangulation<2> triangulation;
+  read_mesh(triangulation, info.file);
+  const Ids ids = ids_of(triangulation);
+  EXPECT_EQ(ids.boundaries,
+            (std::set<int>{scene_ids::free_surface, scene_ids::pinion_bore, scene_ids::wheel_bore,
+                           scene_ids::pinion_flanks, scene_ids::wheel_flanks}));
+  EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance), 1u);
+}
+
+TEST(GearPairScene, ExtrudedSceneIsHexahedralWithSideFaces)
+{
+  const SceneInfo info = scene("single", "single3d.msh", 3);
+  dealii::Triangulation<3> triangulation;
+  read_mesh(triangulation, info.file);
+  const Ids ids = ids_of(triangulation);
+  EXPECT_EQ(ids.materials, (std::set<int>{scene_ids::pinion_body, scene_ids::wheel_body}));
+  EXPECT_EQ(ids.boundaries,
+            (std::set<int>{scene_ids::pinion_bore, scene_ids::wheel_bore, scene_ids::pinion_flanks,
+                           scene_ids::wheel_flanks, scene_ids::pinion_cuts, scene_ids::wheel_cuts,
+                           scene_ids::side_faces, scene_ids::free_surface}));
+  EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
+  // Face width of the split-path pair: the common width min(26, 24) mm (gear-data.md §1).
+  EXPECT_DOUBLE_EQ(info.face_width, 24e-3);
+  // The extrusion copies the 2D mesh into `layers` layers.
+  const SceneInfo flat = scene("single", "single_for_3d.msh");
+  EXPECT_EQ(info.mesh.n_cells, 3 * flat.mesh.n_cells);
+}
+
+TEST(GearPairScene, RejectsBadInputBeforeMeshing)
+{
+  const std::string file = work_file("rejected.msh");
+  std::filesystem::remove(file);
+  GearPairSceneSpec spec;
+  // 95 mm is below the zero-backlash centre distance 97.5 mm: the teeth would interfere.
+  spec.pair.centre_distance = 95e-3;
+  EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
+  spec = GearPairSceneSpec();
+  spec.pinion_bore_radius = 23e-3; // leaves < 1 module of rim under the 23.85 mm root circle
+  EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
+  spec = GearPairSceneSpec();
+  spec.position = "triple";
+  EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
+  spec = GearPairSceneSpec();
+  spec.position = "double";
+  spec.pinion_teeth_modelled = 1; // two pairs are in contact
+  EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
+} // namespace
