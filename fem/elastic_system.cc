@@ -166,7 +166,7 @@ namespace gearstiff::fem
                   for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                     cell_rhs(i) += fe_face_values.shape_value(i, q) *
                                    traction[fe.system_to_component_index(i).first] *
-                                   fe_face_values.JxW(q) * depth;
+                                   fe_face_values.JxW(q) * depth * system.load_factor;
               }
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix, rhs);
@@ -311,8 +311,12 @@ namespace gearstiff::fem
                                       mpi_communicator);
     impl->unconstrained_rhs.reinit(impl->locally_owned, mpi_communicator);
 
+    // f is kept for unit load factor; residual() scales it.
+    const double factor = load_factor;
+    load_factor = 1.;
     impl->assemble(*this, AffineConstraints<double>(), impl->unconstrained_matrix,
                    impl->unconstrained_rhs);
+    load_factor = factor;
     impl->unconstrained_matrix.compress(VectorOperation::add);
     impl->unconstrained_rhs.compress(VectorOperation::add);
   }
@@ -377,7 +381,7 @@ namespace gearstiff::fem
     u.compress(VectorOperation::insert);
     PETScWrappers::MPI::Vector r(impl->locally_owned, mpi_communicator);
     impl->unconstrained_matrix.vmult(r, u);
-    r -= impl->unconstrained_rhs;
+    r.add(-load_factor, impl->unconstrained_rhs);
     return Vector<double>(r);
   }
 

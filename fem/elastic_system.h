@@ -86,6 +86,9 @@ namespace gearstiff::fem
     // A constant surface traction (Pa) on a boundary, a dead load.
     void add_traction(dealii::types::boundary_id boundary, const dealii::Tensor<1, dim>& traction);
 
+    // Scales the tractions (dead loads) in every later solve and residual; for load stepping.
+    void set_load_factor(double factor) { load_factor = factor; }
+
     // Distributes DoFs and assembles the unconstrained K and f.
     void setup_system();
 
@@ -134,6 +137,7 @@ namespace gearstiff::fem
     std::map<dealii::types::material_id, Material> materials;
     std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, dim>>> tractions;
     std::vector<dealii::Point<dim>> dof_support_points;
+    double load_factor = 1.; // -, multiplies the tractions
     std::unique_ptr<Implementation> impl; // owned
   };
 } // namespace gearstiff::fem

@@ -84,7 +84,8 @@ namespace gearstiff::fem
   }
 
   template <int dim>
-  void RigidHub<dim>::add_constraints(AffineConstraints<double>& constraints) const
+  void RigidHub<dim>::add_constraints(AffineConstraints<double>& constraints,
+                                      double load_factor) const
   {
     for (const auto& node : hub_nodes)
       for (unsigned int c = 0; c < dim; ++c)
@@ -95,7 +96,7 @@ namespace gearstiff::fem
           continue;
         constraints.add_line(dof);
         if (control_type == Control::rotation)
-          constraints.set_inhomogeneity(dof, control_value * lever(node, c));
+          constraints.set_inhomogeneity(dof, load_factor * control_value * lever(node, c));
         else if (lever(node, c) != 0.)
           constraints.add_entry(dof, master_dof, lever(node, c) / master_lever);
       }

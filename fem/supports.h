@@ -58,7 +58,9 @@ namespace gearstiff::fem
 
     // rotation control: u_i = θ·w_i at every hub DoF (w_i the DoF's lever about the axis);
     // torque control: one DoF (the longest lever) stays free and carries θ, the others follow it.
-    void add_constraints(dealii::AffineConstraints<double>& constraints) const;
+    // `load_factor` scales a prescribed rotation (load stepping).
+    void add_constraints(dealii::AffineConstraints<double>& constraints,
+                         double load_factor = 1.) const;
     // Torque control: T enters as the work-conjugate force T/w_m on the free DoF.
     void add_loads(dealii::Vector<double>& point_loads, double load_factor = 1.) const;
 
@@ -68,8 +70,6 @@ namespace gearstiff::fem
     const dealii::Point<dim>& axis() const { return axis_point; }
     Control control() const { return control_type; }
     double value() const { return control_value; } // rad or N·m
-    // Prescribed rotation for a load step (rotation control).
-    void set_value(double v) { control_value = v; }
 
   private:
     double lever(const Node<dim>& node, unsigned int component) const;
