@@ -4,11 +4,8 @@
 // values.
 //
 //   gearstiff kinematics
-//   gearstiff kinematics --set "Train/gears=s: 20, p: 10, r: -40" --set "Train/modules=s: 2, p: 2,
-//   r: 2" \
-//     --set "Train/planets=p: c*3" --set "Train/meshes=s-p/c, p-r/c" --set "Train/carriers=c" \
-//     --set "Train/connections=" --set "Train/fixed=r" --set "Train/inputs=s: 1470" --set
-//     "Train/output=c"
+//   gearstiff kinematics --set "Train/input torque=0"      (speeds only)
+//   gearstiff kinematics tests/kinematics/cli/planetary.prm (a simple planetary set)
 //   gearstiff kinematics train.prm --json -o results/
 #include "app/command.h"
 #include "app/kinematics_parameters.h"
