@@ -413,6 +413,23 @@ double involute_function(double angle)
   return std::tan(angle) - angle;
 }
 
+InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double tip_diameter)
+{
+  if (gear.helix_angle != 0.)
+    throw InputError("helix angle", "the involute tooth generator handles spur gears only");
+  InvoluteToothSpec spec;
+  spec.teeth = gear.teeth;
+  spec.module = gear.normal_module;
+  spec.pressure_angle = gear.pressure_angle;
+  spec.profile_shift = gear.profile_shift;
+  spec.tip_diameter = tip_diameter;
+  spec.internal = gear.internal;
+  spec.cutter_addendum = gear.dedendum_coefficient;
+  spec.cutter_tip_radius = gear.root_radius_coefficient;
+  spec.gear_addendum = gear.addendum_coefficient;
+  return spec;
+}
+
 double tip_diameter(const InvoluteToothSpec& spec)
 {
   if (spec.tip_diameter > 0.)

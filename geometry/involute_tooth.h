@@ -10,6 +10,7 @@
 #pragma once
 
 #include "geometry/tooth_profile.h"
+#include "kinematics/gear_pair.h"
 
 namespace gearstiff::geometry
 {
@@ -53,6 +54,12 @@ struct InvoluteToothSpec
 
 // The tip diameter actually used: spec.tip_diameter or the standard one, in m.
 double tip_diameter(const InvoluteToothSpec& spec);
+
+// The tooth of one gear of kinematics' pair (spur gears; a helical gear is rejected: its
+// transverse profile needs the transverse module and pressure angle, not done here). The
+// cutter is the gear's basic rack (h_fP*, ρ_fP*); tip diameter as the pair uses it.
+// `required_form_diameter` is left 0 (kinematics checks the form circle against its mate).
+InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double tip_diameter);
 
 // inv(α) = tan α − α.
 double involute_function(double angle);

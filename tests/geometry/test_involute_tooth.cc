@@ -429,3 +429,30 @@ TEST(InvoluteTooth, FullOutlineAndSpeed)
   EXPECT_NEAR(outline[tooth.points.size() - 1].position.x(),
               (Eigen::Rotation2Dd(tooth.angular_pitch) * tooth.points.front().position).x(), 1e-15);
 }
+
+TEST(InvoluteTooth, RadiiEqualKinematics)
+{
+  // The split-path pair of gear-data.md §1 as kinematics builds it (tips reduced so that
+  // ε_α = 1.500): every radius the generator reports must equal kinematics' ISO 21771 values,
+  // and the form circle of the generated fillet must equal kinematics' closed-form d_Ff
+  // (DIN 3960 rack tip-round formula) — two independent routes, equal to rounding (1e-12 m).
+  const kinematics::GearPairGeometry pair =
+      kinematics::compute_gear_pair(kinematics::split_path_pair());
+  for (const bool wheel : {false, true})
+  {
+    const kinematics::GearGeometry& k = wheel ? pair.wheel : pair.pinion;
+    const kinematics::GearSpec& gear = wheel ? pair.spec.wheel : pair.spec.pinion;
+    const ToothProfile tooth = generate_involute_tooth(involute_tooth_spec(gear, k.tip_diameter));
+    EXPECT_NEAR(2. * tooth.reference_radius, k.reference_diameter, 1e-12);
+    EXPECT_NEAR(2. * tooth.base_radius, k.base_diameter, 1e-12);
+    EXPECT_NEAR(2. * tooth.tip_radius, k.tip_diameter, 1e-12);
+    EXPECT_NEAR(2. * tooth.root_radius, k.root_diameter, 1e-12);
+    EXPECT_NEAR(tooth.tip_thickness, k.tip_thickness, 1e-12);
+    if (!tooth.undercut)
+    {
+      EXPECT_NEAR(2. * tooth.form_radius, k.form_diameter, 1e-9) << "wheel " << wheel;
+    }
+    // The involute reaches down to the start of the active profile set by the mate.
+    EXPECT_LT(2. * tooth.form_radius, k.active_profile_start);
+  }
+}
