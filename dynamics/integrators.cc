@@ -182,7 +182,7 @@ void run_hht(const TorsionalModel& model, std::vector<double> angle, std::vector
 {
   const double alpha = settings.hht_alpha;
   if (!(alpha >= -1. / 3. && alpha <= 0.))
-    throw InputError("Integrator/HHT alpha",
+    throw InputError("Simulation/HHT alpha",
                      "must lie in [-1/3, 0] for unconditional stability, got " +
                          std::to_string(alpha));
   const double beta = 0.25 * (1. - alpha) * (1. - alpha);
@@ -244,7 +244,7 @@ void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
 {
   const double rtol = settings.relative_tolerance;
   if (!(rtol > 0. && rtol < 1e-1))
-    throw InputError("Integrator/relative tolerance", "must lie in (0, 0.1)");
+    throw InputError("Simulation/relative tolerance", "must lie in (0, 0.1)");
   const unsigned int n = model.n_dofs();
   const unsigned int size = 2 * n;
   std::vector<double> y(size), y_new(size), stage(size);
@@ -349,11 +349,11 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
   if (initial_angle.size() != model.n_dofs() || initial_velocity.size() != model.n_dofs())
     throw InputError("initial state", "needs one angle and one speed per gear");
   if (!(settings.time_step > 0.) || !std::isfinite(settings.time_step))
-    throw InputError("Integrator/time step", "must be positive");
+    throw InputError("Simulation/time step", "must be positive");
   if (!(settings.end_time >= settings.time_step))
-    throw InputError("Integrator/end time", "must be at least one time step");
+    throw InputError("Simulation/simulated time", "must be at least one time step");
   if (settings.record_stride == 0)
-    throw InputError("Integrator/record stride", "must be at least 1");
+    throw InputError("Simulation/output stride", "must be at least 1");
 
   Trajectory trajectory;
   trajectory.n_dofs = model.n_dofs();
@@ -370,8 +370,8 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
            << trajectory.rk4_step_limit << " s (highest natural frequency "
            << trajectory.highest_frequency / (2. * M_PI)
            << " Hz); use a smaller step, the implicit HHT-alpha method, or set "
-              "'allow unstable step = true' to run anyway";
-    throw InputError("Integrator/time step", reason.str());
+              "'Simulation/allow unstable step = true' to run anyway";
+    throw InputError("Simulation/time step", reason.str());
   }
 
   const auto start = std::chrono::steady_clock::now();

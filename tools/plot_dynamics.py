@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Charts of `gearstiff dynamics`.
+
+    plot_dynamics.py vibration SERIES.csv START,END OUT.png   torsional vibration phi_i(t)
+    plot_dynamics.py kv        SERIES.csv START,END OUT.png   K_v(t) with the steady-state window
+    plot_dynamics.py stiffness SERIES.csv START,END OUT.png   mesh stiffness k(t)
+    plot_dynamics.py resonance SWEEP.csv OUT.png              K_v max and ISO K_v against speed
+
+CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
+"""
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header = [h.strip() for h in rows[0]]
+    columns = {h: [] for h in header}
+    for row in rows[1:]:
+        for h, v in zip(header, row):
+            try:
+                columns[h].append(float(v))
+            except ValueError:
+                columns[h].append(float("nan"))
+    return header, columns
+
+
+def shade_window(ax, window):
+    start, end = (float(x) for x in window.split(","))
+    ax.axvspan(start, end, color="0.9", zorder=0, label="steady-state window")
+
+
+def time_series(kind, path, window, png):
+    header, c = read(path)
+    t = c[header[0]]
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    prefix = {"vibration": "phi_", "kv": "kv_", "stiffness": "stiffness_"}[kind]
+    for h in header[1:]:
+        if h.startswith(prefix):
+            ax.plot(t, c[h], lw=0.7, label=h)
+    shade_window(ax, window)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel({"vibration": "angle relative to nominal rotation [µrad]",
+                   "kv": "K_v = F / F_nominal [-]",
+                   "stiffness": "mesh stiffness [N/µm]"}[kind])
+    if kind == "stiffness":
+        # Stiffness repeats every mesh period: show the last few periods of the window.
+        start, end = (float(x) for x in window.split(","))
+        ax.set_xlim(max(start, end - (end - start) / 8), end)
+    ax.legend(loc="best", fontsize=8)
+    ax.grid(True, lw=0.3)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def resonance(path, png):
+    header, c = read(path)
+    speed = c["input_speed [rpm]"]
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    ax.plot(speed, c["kv_max [-]"], "o-", ms=3, lw=1, label="K_v max (simulated)")
+    ax.plot(speed, c["kv_iso [-]"], "--", lw=1, label="K_v ISO 6336-1 method B")
+    unstable = [s for s, u in zip(speed, c["unstable [-]"]) if u > 0.5]
+    if unstable:
+        ax.plot(unstable, [1.0] * len(unstable), "rx", label="linear model diverges")
+    ax.set_xlabel("input speed n1 [rpm]")
+    ax.set_ylabel("dynamic factor K_v [-]")
+    ax.grid(True, lw=0.3)
+    ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
+def main(argv):
+    kind = argv[1]
+    if kind == "resonance":
+        resonance(argv[2], argv[-1])
+    else:
+        time_series(kind, argv[2], argv[3], argv[-1])
+
+
+if __name__ == "__main__":
+    main(sys.argv)
