@@ -319,22 +319,23 @@ namespace gearstiff::contact
         Tensor<1, dim> slip = relative - relative_displacement(node, step_start);
         slip -= (slip * node.normal) * node.normal;
 
+        // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = p_n − c·g (p_n = 0
+        // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s, friction bound μ σ_n.
+        const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
+        const double c = stiffness / h; // Pa/m
         const NodeState old_state = pair.state[k];
-        NodeState new_state = old_state;
+        const bool closed = old_state == NodeState::open ? gap < -gap_tolerance
+                                                         : normal_force >= -force_tolerance;
+        const double normal_trial = // N
+          old_state == NodeState::open ? -c * gap * node.area : normal_force;
+        NodeState new_state = NodeState::open;
         Tensor<1, dim> direction = pair.friction_direction[k];
-        if (old_state == NodeState::open)
+        if (closed && mu == 0.)
+          new_state = NodeState::slip;
+        else if (closed)
         {
-          if (gap < -gap_tolerance)
-            new_state = mu > 0. ? NodeState::stick : NodeState::slip;
-        }
-        else if (normal_force < -force_tolerance)
-          new_state = NodeState::open;
-        else if (mu > 0.)
-        {
-          const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
-          const double pressure = normal_force / node.area;
-          const Tensor<1, dim> trial = tangential_force / node.area - (stiffness / h) * slip;
-          if (trial.norm() <= mu * pressure * (1. + 1e-12))
+          const Tensor<1, dim> trial = tangential_force / node.area - c * slip; // Pa
+          if (trial.norm() <= mu * normal_trial / node.area * (1. + 1e-12))
             new_state = NodeState::stick;
           else
           {
@@ -347,7 +348,7 @@ namespace gearstiff::contact
         {
           node_changed = node_changed || direction * pair.friction_direction[k] < 1. - 1e-10;
           const double used = pair.friction_normal_force[k];
-          const double now = std::max(normal_force, 0.);
+          const double now = std::max(normal_trial, 0.);
           if (old_state == NodeState::slip)
             friction_change = std::max(friction_change, mu * std::abs(now - used));
           pair.friction_normal_force[k] = now;
