@@ -26,7 +26,7 @@ namespace gearstiff::dynamics
 struct CaiParameters
 {
   double scale = 0.; // [N/m] single-pair stiffness at the shape's peak (shape normalised to 1)
-  std::array<double, 3> shape = {0.55, 1.8, -1.8}; // [-] c0, c1, c2 of c2·s² + c1·s + c0
+  std::array<double, 3> shape = {{0.55, 1.8, -1.8}}; // [-] c0, c1, c2 of c2·s² + c1·s + c0
 };
 
 // The published Cai shape scaled so one pair's peak equals `single_pair_peak` [N/m].

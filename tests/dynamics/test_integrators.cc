@@ -171,7 +171,7 @@ TEST(Integrators, Rk4AboveTheStabilityLimitIsRefusedOrDetected)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Integrator/time step");
+    EXPECT_EQ(e.parameter(), "Simulation/time step");
   }
 
   settings.allow_unstable_step = true;
