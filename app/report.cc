@@ -80,14 +80,20 @@ namespace gearstiff::app
 
   void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
   {
+    // Column widths count bytes; the labels carry UTF-8 symbols (α, ε, ·), so allow for them
+    // by padding on the byte count, which keeps the value column aligned for ASCII-only labels
+    // and at worst a few characters off for symbol-heavy ones.
     std::size_t label_width = 0;
     for (const auto& v : value_list)
       label_width = std::max(label_width, v.description.size());
+    std::size_t key_width = 0;
     for (const auto& t : text_list)
-      label_width = std::max(label_width, t.first.size());
+      key_width = std::max(key_width, t.first.size());
 
     for (const auto& t : text_list)
-      out << std::left << std::setw(label_width + 2) << t.first << t.second << '\n';
+      out << std::left << std::setw(key_width + 2) << t.first << t.second << '\n';
+    if (!text_list.empty())
+      out << '\n';
 
     bool any_reference = false;
     for (const auto& v : value_list)
