@@ -1,0 +1,387 @@
+#include "contact/mesh_stiffness.h"
+
+#include "fem/mesh.h"
+#include "kinematics/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace gearstiff::contact
+{
+using namespace dealii;
+
+namespace
+{
+// Flank faces are relabelled per tooth so that every tooth pair is its own contact pair.
+constexpr types::boundary_id pinion_tooth_base = 1000; // + j + offset
+constexpr types::boundary_id wheel_tooth_base = 2000;  // + j + offset (mate of pinion j)
+constexpr int tooth_offset = 500;
+
+types::boundary_id pinion_flank_id(int j)
+{
+  return pinion_tooth_base + j + tooth_offset;
+}
+types::boundary_id wheel_flank_id(int j)
+{
+  return wheel_tooth_base + j + tooth_offset;
+}
+
+// Runs `work` on rank 0 of `communicator` and makes every rank see its outcome: the broadcast
+// numbers on success, or the same exception (type and message) on every rank, so that a bad
+// scene stops all ranks alike instead of leaving them waiting for a mesh file.
+template <typename Work>
+std::vector<double> run_on_root(MPI_Comm communicator, unsigned int n_values, Work work)
+{
+  const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+  std::vector<double> values(n_values, 0.);
+  int status = 0; // 0 ok, 1 InputError, 2 SolverFailure, 3 other
+  std::string first, second;
+  if (root)
+  {
+    try
+    {
+      values = work();
+    }
+    catch (const InputError& e)
+    {
+      status = 1;
+      first = e.parameter();
+      second = e.reason();
+    }
+    catch (const SolverFailure& e)
+    {
+      status = 2;
+      first = e.method();
+      second = e.what();
+      second = second.substr(std::min(second.size(), first.size() + 2));
+    }
+    catch (const std::exception& e)
+    {
+      status = 3;
+      second = e.what();
+    }
+  }
+  MPI_Bcast(&status, 1, MPI_INT, 0, communicator);
+  if (status == 0)
+  {
+    MPI_Bcast(values.data(), n_values, MPI_DOUBLE, 0, communicator);
+    return values;
+  }
+  first = Utilities::MPI::broadcast(communicator, first, 0);
+  second = Utilities::MPI::broadcast(communicator, second, 0);
+  if (status == 1)
+    throw InputError(first, second);
+  if (status == 2)
+    throw SolverFailure(first, second);
+  throw std::runtime_error(second);
+}
+
+// Polar angle of `p` about `centre`, relative to `reference`, in (−π, π].
+template <int dim>
+double relative_angle(const Point<dim>& p, double centre_x, double reference)
+{
+  const double angle = std::atan2(p[1], p[0] - centre_x) - reference;
+  return std::remainder(angle, 2. * M_PI);
+}
+
+template <int dim>
+double polar_radius(const Point<dim>& p, double centre_x)
+{
+  return std::hypot(p[0] - centre_x, p[1]);
+}
+} // namespace
+
+geometry::GearPairSceneSpec default_stiffness_scene()
+{
+  geometry::GearPairSceneSpec scene;
+  // The ANSYS model removed the teeth that do not affect the stiffness but kept the gear
+  // bodies (gear-data.md §1): full rims, three teeth per gear (one pair on either side of the
+  // loaded ones). The sizes are explicit so that a refinement study scales one size field.
+  scene.rim = geometry::RimModel::full;
+  scene.pinion_teeth_modelled = 3;
+  scene.wheel_teeth_modelled = 3;
+  scene.mesh.contact_size = 0.02e-3;
+  scene.mesh.fine_radius = 0.15e-3;
+  scene.mesh.body_size = 0.5e-3;
+  scene.mesh.rim_size = 2e-3;
+  scene.mesh.growth_rate = 0.25;
+  return scene;
+}
+
+template <int dim>
+GearMeshStiffness<dim>::GearMeshStiffness(MPI_Comm mpi_communicator,
+                                          const GearMeshStiffnessSettings& given)
+    : mpi_communicator(mpi_communicator), settings(given)
+{
+  if (!(settings.pinion_torque > 0.))
+    throw InputError(stiffness_parameter::torque,
+                     "must be positive: a torque <= 0 turns the pinion away from the wheel and "
+                     "separates the loaded flanks (no contact, no stiffness)");
+  if (settings.scene.both_flanks)
+    throw InputError("Gear pair scene/both flanks",
+                     "the stiffness analysis loads one flank per tooth; set it to false");
+  if (settings.scene_file.empty())
+    throw InputError("scene file", "no path given for the scene mesh");
+  pair = kinematics::compute_gear_pair(settings.scene.pair);
+  settings.scene.mesh.dimension = dim;
+  // The scene's Hertz estimate of the contact size uses the same load and material.
+  settings.scene.pinion_torque = settings.pinion_torque;
+  settings.scene.young_modulus = settings.material.youngs_modulus;
+  settings.scene.poisson_ratio = settings.material.poisson_ratio;
+  // A 2D model carries the common face width: the contact lines are that long.
+  settings.elasticity.thickness = pair.common_face_width;
+}
+
+template <int dim>
+GearMeshStiffnessResult GearMeshStiffness<dim>::run()
+{
+  Timer timer(mpi_communicator, true);
+  result = GearMeshStiffnessResult();
+  result.dimension = dim;
+  make_scene();
+  setup_problem();
+  solve();
+  evaluate();
+  output_results();
+  result.total_time = timer.wall_time();
+  return result;
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::make_scene()
+{
+  const std::vector<double> scene = run_on_root(
+      mpi_communicator, 6,
+      [this]()
+      {
+        const geometry::SceneInfo info =
+            geometry::write_gear_pair_scene(settings.scene, settings.scene_file);
+        double reference = 0., pairs = 0.;
+        for (const auto& q : info.quantities)
+        {
+          if (q.key == "reference_contact_position")
+            reference = q.value;
+          if (q.key == "pairs_in_contact")
+            pairs = q.value;
+        }
+        return std::vector<double>{info.first_rotation, info.second_rotation, reference, pairs,
+                                   info.contact_size,   info.time_total};
+      });
+  pinion_rotation_angle = scene[0];
+  wheel_rotation_angle = scene[1];
+  result.reference_position = scene[2];
+  result.kinematic_pairs = static_cast<unsigned int>(scene[3]);
+  result.contact_size = scene[4];
+  result.scene_time = scene[5];
+  result.pinion_base_radius = 0.5 * pair.pinion.base_diameter;
+  result.wheel_base_radius = 0.5 * pair.wheel.base_diameter;
+  result.pinion_roll_angle = result.reference_position / result.pinion_base_radius;
+  result.mesh_position =
+      (result.reference_position - pair.contact_start) / pair.transverse_base_pitch;
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::setup_problem()
+{
+  problem = std::make_unique<ContactProblem<dim>>(mpi_communicator, settings.elasticity,
+                                                  settings.linear_solver, settings.contact);
+  Triangulation<dim>& tria = problem->system().triangulation();
+  fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
+  problem->system().set_materials({{geometry::scene_ids::pinion_body, settings.material},
+                                   {geometry::scene_ids::wheel_body, settings.material}},
+                                  "material");
+
+  // Tooth index of each flank face from its polar angle about its gear centre (tooth k of a
+  // gear sits k angular pitches counter-clockwise of its tooth 0); wheel tooth −j mates pinion
+  // tooth j.
+  const double centre_distance = pair.centre_distance;
+  const double pinion_pitch = 2. * M_PI / settings.scene.pair.pinion.teeth;
+  const double wheel_pitch = 2. * M_PI / settings.scene.pair.wheel.teeth;
+  std::set<int> pinion_teeth, wheel_teeth; // pair indices j with flank faces
+  for (const auto& cell : tria.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+    {
+      if (!cell->face(f)->at_boundary())
+        continue;
+      const auto face = cell->face(f);
+      const auto id = face->boundary_id();
+      if (id != geometry::scene_ids::pinion_flanks && id != geometry::scene_ids::wheel_flanks)
+        continue;
+      const bool pinion = id == geometry::scene_ids::pinion_flanks;
+      const double x0 = pinion ? 0. : centre_distance;
+      const double angle =
+          relative_angle(face->center(), x0, pinion ? pinion_rotation_angle : wheel_rotation_angle);
+      const int tooth =
+          static_cast<int>(std::lround(angle / (pinion ? pinion_pitch : wheel_pitch)));
+      const int j = pinion ? tooth : -tooth;
+      if (std::abs(j) >= tooth_offset)
+        throw SolverFailure("stiffness scene", "tooth index out of range");
+      face->set_boundary_id(pinion ? pinion_flank_id(j) : wheel_flank_id(j));
+      (pinion ? pinion_teeth : wheel_teeth).insert(j);
+    }
+
+  // A modelled pair becomes a contact pair when it lies on the path of contact A..E. Pairs
+  // outside it could only touch by tip-corner contact under a deflection larger than their
+  // gap, which the small-sliding mortar pairing (normal projection onto the mate's flank,
+  // which ends at the tip) does not represent; they stay free surfaces.
+  candidate_pairs.clear();
+  for (const int j : pinion_teeth)
+  {
+    const double position = result.reference_position + j * pair.transverse_base_pitch;
+    const double tolerance = 1e-9; // m: the zone ends and positions share their formulas
+    if (wheel_teeth.count(j) == 0 || position < pair.contact_start - tolerance ||
+        position > pair.contact_end + tolerance)
+      continue;
+    ToothPairLoad load;
+    load.pair = j;
+    load.position = position;
+    candidate_pairs.push_back(load);
+    problem->add_contact_pair({pinion_flank_id(j)}, {wheel_flank_id(j)},
+                              "tooth pair " + std::to_string(j));
+  }
+  if (candidate_pairs.empty())
+    throw InputError("Gear pair scene/position", "no tooth pair of the scene is in contact");
+
+  Point<dim> pinion_axis, wheel_axis;
+  wheel_axis[0] = centre_distance;
+  problem->add_rigid_hub(geometry::scene_ids::pinion_bore, pinion_axis,
+                         fem::RigidHub<dim>::Control::torque, settings.pinion_torque,
+                         "pinion bore");
+  // The fixed wheel bore as a hub held at zero rotation: the same constraints as a fixed
+  // support, and its reaction torque comes out about the wheel axis.
+  problem->add_rigid_hub(geometry::scene_ids::wheel_bore, wheel_axis,
+                         fem::RigidHub<dim>::Control::rotation, 0., "wheel bore");
+  result.n_cells = tria.n_active_cells();
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::solve()
+{
+  problem->setup_system();
+  const ContactResults<dim>& contact = problem->solve();
+  result.n_dofs = contact.n_dofs;
+  result.active_set_iterations = contact.active_set_iterations;
+  result.setup_time = contact.setup_time;
+  result.solve_time = contact.assembly_time + contact.solve_time;
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::evaluate()
+{
+  const ContactResults<dim>& contact = problem->results();
+  const SupportResult<dim>& pinion_hub = contact.supports.at(0);
+  const SupportResult<dim>& wheel_hub = contact.supports.at(1);
+  result.pinion_torque = settings.pinion_torque;
+  result.pinion_rotation = pinion_hub.rotation;
+  result.pinion_hub_torque = pinion_hub.torque;
+  result.wheel_torque = wheel_hub.torque;
+  result.torque_ratio = std::abs(wheel_hub.torque / settings.pinion_torque);
+  // A torque-driven hub that does not turn forward means the torque did not close the mesh;
+  // a stiffness from it would be meaningless.
+  if (!(result.pinion_rotation > 0.))
+    throw SolverFailure("gear mesh stiffness",
+                        "the pinion did not rotate forward under the torque (rotation " +
+                            std::to_string(result.pinion_rotation) + " rad)");
+  const double r_b1 = result.pinion_base_radius;
+  result.mesh_stiffness = settings.pinion_torque / (r_b1 * r_b1 * result.pinion_rotation);
+  result.transmission_error = r_b1 * result.pinion_rotation;
+
+  double total = 0.;
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+    total += std::max(contact.pairs[k].normal_force, 0.);
+  result.pairs = candidate_pairs;
+  result.loaded_pairs = 0;
+  result.max_contact_pressure = 0.;
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+  {
+    const PairResult<dim>& pair_result = contact.pairs[k];
+    ToothPairLoad& load = result.pairs[k];
+    load.normal_force = pair_result.normal_force;
+    load.load_share = total > 0. ? std::max(pair_result.normal_force, 0.) / total : 0.;
+    load.max_pressure = pair_result.max_pressure;
+    load.contact_length = pair_result.contact_length;
+    load.closed_nodes = pair_result.n_closed;
+    result.loaded_pairs += load.load_share > 1e-6;
+    result.max_contact_pressure = std::max(result.max_contact_pressure, load.max_pressure);
+  }
+
+  // Root stress: the largest first principal stress on the free surface between the root
+  // circle and the form circle (the fillets), where tooth root cracks start (ISO 6336-3 takes
+  // the tensile fillet stress). Faces lying on the root circle itself (the rim between removed
+  // teeth of a full-rim scene) are not fillets and are skipped.
+  const fem::ElasticSystem<dim>& system = problem->system();
+  const auto& fe = system.get_fe();
+  const QGauss<dim - 1> quadrature(fe.degree + 1);
+  FEFaceValues<dim> fe_face(system.get_mapping(), fe, quadrature,
+                            update_gradients | update_quadrature_points);
+  const Vector<double>& u = problem->solution();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  const double pinion_root = 0.5 * pair.pinion.root_diameter;
+  const double wheel_root = 0.5 * pair.wheel.root_diameter;
+  const double pinion_form = 0.5 * pair.pinion.form_diameter;
+  const double wheel_form = 0.5 * pair.wheel.form_diameter;
+  const bool plane_stress = dim == 2 && settings.elasticity.model == fem::PlanarModel::plane_stress;
+  const double mu = settings.material.lame_mu();
+  double lambda = settings.material.lame_lambda();
+  if (plane_stress)
+    lambda = 2. * lambda * mu / (lambda + 2. * mu);
+  for (const auto& cell : system.get_dof_handler().active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+    {
+      if (!cell->face(f)->at_boundary() ||
+          cell->face(f)->boundary_id() != geometry::scene_ids::free_surface)
+        continue;
+      const bool pinion = cell->material_id() == geometry::scene_ids::pinion_body;
+      const double x0 = pinion ? 0. : pair.centre_distance;
+      const double root = pinion ? pinion_root : wheel_root;
+      const double form = pinion ? pinion_form : wheel_form;
+      bool inside = true, on_root_circle = true;
+      for (const unsigned int v : cell->face(f)->vertex_indices())
+      {
+        const double r = polar_radius(cell->face(f)->vertex(v), x0);
+        inside = inside && r <= form && r >= root * (1. - 1e-6);
+        on_root_circle = on_root_circle && std::abs(r - root) < 1e-9;
+      }
+      if (!inside || on_root_circle)
+        continue;
+      fe_face.reinit(cell, f);
+      cell->get_dof_indices(dofs);
+      for (const unsigned int q : fe_face.quadrature_point_indices())
+      {
+        Tensor<2, dim> gradient;
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+        {
+          const unsigned int c = fe.system_to_component_index(i).first;
+          gradient[c] += u[dofs[i]] * fe_face.shape_grad_component(i, q, c);
+        }
+        const SymmetricTensor<2, dim> strain = symmetrize(gradient);
+        const SymmetricTensor<2, dim> stress =
+            lambda * trace(strain) * unit_symmetric_tensor<dim>() + 2. * mu * strain;
+        const double largest = eigenvalues(stress)[0];
+        double& target = pinion ? result.pinion_root_stress : result.wheel_root_stress;
+        target = std::max(target, largest);
+      }
+    }
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::output_results()
+{
+  if (settings.output_directory.empty())
+    return;
+  result.output_files = problem->output_results(settings.output_directory, settings.output_base);
+}
+
+template class GearMeshStiffness<2>;
+template class GearMeshStiffness<3>;
+} // namespace gearstiff::contact

@@ -1,0 +1,137 @@
+// Mesh stiffness of a spur gear pair from a frictional FE contact solve, after the load case of
+// Reszuta & Drewniak 2015 (../shared/reference/gear-data.md §1): a torque T1 on the pinion whose
+// bore is free only to rotate (a rigid hub, torque-controlled), the wheel bore held fixed, tooth
+// friction μ; the measured pinion rotation Δφ gives
+//
+//     k = T1 / (r_b1² · Δφ)                                     (gear-data.md §1, k'_j, k'_d)
+//
+// at exactly the applied torque: the rotation is the unknown of the solve, not a guess that is
+// scaled afterwards. One GearMeshStiffness is one pinion position (one scene); sweeps over
+// positions are built from it (see mesh_stiffness_sweep.h).
+//
+// Each modelled tooth pair j (pinion tooth j meshing wheel tooth −j, geometry/scene_gear_pair.h)
+// becomes its own contact pair, so the load sharing between pairs is the exact sum of each pair's
+// contact multipliers, not a split guessed afterwards. Without friction the pinion and wheel hub
+// torques satisfy |T_wheel / T_pinion| = r_b2 / r_b1 exactly (every contact force acts along the
+// line of action); the result carries both so callers can check it.
+//
+//   GearMeshStiffnessSettings settings;          // split-path pair, single-pair position
+//   settings.scene.position = "double";
+//   GearMeshStiffness<2> analysis(MPI_COMM_WORLD, settings);
+//   const GearMeshStiffnessResult r = analysis.run();   // r.mesh_stiffness in N/m
+#pragma once
+
+#include "contact/contact_problem.h"
+#include "fem/parameters.h"
+#include "geometry/scene_gear_pair.h"
+
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace gearstiff::contact
+{
+// The scene the stiffness analysis uses unless told otherwise: the split-path pair with full
+// rims and three teeth per gear and explicit mesh sizes (docs/accuracy.md: the cheapest scene
+// within 1% of the converged single-pair stiffness).
+geometry::GearPairSceneSpec default_stiffness_scene();
+
+struct GearMeshStiffnessSettings
+{
+  // Gear pair, position, teeth modelled, bores, rim and mesh sizes (SI, see the header).
+  geometry::GearPairSceneSpec scene = default_stiffness_scene();
+  fem::ElasticityParameters elasticity; // model, degree; thickness is set to the face width
+  fem::LinearSolverParameters linear_solver;
+  ContactParameters contact;             // μ and the active-set controls
+  double pinion_torque = 49.4;           // N·m, T1 > 0 drives the pinion counter-clockwise
+  fem::Material material;                // both gears (steel 210 GPa, 0.3: not published)
+  std::string scene_file;                // path of the .msh to write (rank 0 of the communicator)
+  std::string output_directory;          // VTU of the solved position here; empty: none
+  std::string output_base = "stiffness"; // VTU base name
+};
+
+// One tooth pair in the scene and what it carries.
+struct ToothPairLoad
+{
+  int pair = 0;              // -, j: pinion tooth j meshing wheel tooth −j (0: reference)
+  double position = 0.;      // m, kinematic contact point along the line of action from T1
+  double normal_force = 0.;  // N, Σ of the pair's normal contact multipliers
+  double load_share = 0.;    // -, normal force over the sum over all pairs
+  double max_pressure = 0.;  // Pa
+  double contact_length = 0; // m, extent of the closed nodes (2D: across the profile)
+  unsigned int closed_nodes = 0;
+};
+
+struct GearMeshStiffnessResult
+{
+  // Position.
+  double pinion_roll_angle = 0.;    // rad, ℓ_ref / r_b1 of the reference pair
+  double reference_position = 0.;   // m, ℓ_ref along the line of action from T1
+  double mesh_position = 0.;        // -, (ℓ_ref − A)/p_bt: the reference pair's roll position
+  unsigned int kinematic_pairs = 0; // -, pairs in contact by the kinematics (no load)
+  unsigned int loaded_pairs = 0;    // -, pairs carrying more than 1e-6 of the load
+  // Stiffness and its ingredients.
+  double pinion_torque = 0.;      // N·m, T1 applied
+  double pinion_rotation = 0.;    // rad, Δφ of the pinion hub (> 0 with T1 > 0)
+  double pinion_base_radius = 0.; // m, r_b1
+  double wheel_base_radius = 0.;  // m, r_b2
+  double mesh_stiffness = 0.;     // N/m, T1/(r_b1²·Δφ)
+  double transmission_error = 0.; // m, r_b1·Δφ: the loaded transmission error (wheel fixed)
+  double wheel_torque = 0.;       // N·m, reaction of the fixed wheel bore about its axis
+  double torque_ratio = 0.;       // -, |T_wheel / T1| (= r_b2/r_b1 without friction)
+  double pinion_hub_torque = 0.;  // N·m, reaction at the pinion hub (−T1 to solver precision)
+  // Contact and root.
+  std::vector<ToothPairLoad> pairs; // modelled pairs with contact candidates, by j
+  double max_contact_pressure = 0.; // Pa, over all pairs
+  double pinion_root_stress = 0.;   // Pa, largest first principal stress on the pinion fillets
+  double wheel_root_stress = 0.;    // Pa, the same on the wheel fillets
+  // Model and cost.
+  unsigned int dimension = 2;
+  unsigned int n_cells = 0;
+  unsigned int n_dofs = 0;
+  double contact_size = 0.; // m, h_c of the scene
+  unsigned int active_set_iterations = 0;
+  double scene_time = 0.;                // s, wall: geometry, meshing, writing (rank 0)
+  double setup_time = 0.;                // s, wall: reading, DoFs, stiffness, mortar coupling
+  double solve_time = 0.;                // s, wall: contact iterations (assembly + linear solves)
+  double total_time = 0.;                // s, wall: the whole run
+  std::vector<std::string> output_files; // VTU/PVTU written (relative to the directory)
+};
+
+template <int dim>
+class GearMeshStiffness
+{
+public:
+  // Checks the settings (InputError naming the parameter) before anything is meshed.
+  GearMeshStiffness(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings);
+
+  // Scene, contact solve, evaluation. Throws InputError for an impossible scene (e.g. no pair
+  // in contact), SolverFailure when the contact iteration fails or the pinion does not rotate
+  // forward (the torque did not close the mesh).
+  GearMeshStiffnessResult run();
+
+private:
+  void make_scene();
+  void setup_problem();
+  void solve();
+  void evaluate();
+  void output_results();
+
+  MPI_Comm mpi_communicator;
+  GearMeshStiffnessSettings settings;
+  kinematics::GearPairGeometry pair;
+  std::vector<ToothPairLoad> candidate_pairs;   // pairs given to the contact problem
+  double pinion_rotation_angle = 0.;            // rad, scene rotation of the pinion profile
+  double wheel_rotation_angle = 0.;             // rad
+  std::unique_ptr<ContactProblem<dim>> problem; // owned
+  GearMeshStiffnessResult result;
+};
+
+// Names of the settings' parameters in the command's parameter file, for InputError.
+namespace stiffness_parameter
+{
+inline const std::string torque = "Stiffness/pinion torque";
+inline const std::string positions = "Stiffness/sweep positions";
+inline const std::string pitches = "Stiffness/sweep base pitches";
+} // namespace stiffness_parameter
+} // namespace gearstiff::contact

@@ -1,0 +1,76 @@
+// Mesh stiffness over the mesh cycle: GearMeshStiffness at N pinion positions spread over one or
+// more transverse base pitches, distributed over the MPI ranks (each rank solves its share of
+// positions serially on MPI_COMM_SELF with its own scene file; every rank receives all results),
+// and a discretization study by uniform scaling of the scene's mesh sizes with a Richardson
+// estimate of the converged value.
+#pragma once
+
+#include "contact/mesh_stiffness.h"
+
+#include <functional>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace gearstiff::contact
+{
+struct StiffnessSweepSpec
+{
+  // m, first position of the reference pair along the line of action (from T1); negative:
+  // the start of active contact A.
+  double start_position = -1.;
+  double base_pitches = 1.;    // -, span of the sweep in transverse base pitches (> 0)
+  unsigned int positions = 32; // -, N: positions at start + (i + 1/2)·span·p_bt/N, i < N
+};
+
+struct StiffnessSweepResult
+{
+  std::vector<GearMeshStiffnessResult> positions; // in sweep order, complete on every rank
+  std::vector<unsigned int> rank_of_position;     // -, rank that solved each position
+  unsigned int n_ranks = 1;
+  double wall_time = 0.; // s, the whole sweep (slowest rank)
+};
+
+// Reference-pair positions (m from T1) of the sweep; InputError for zero positions, a
+// non-positive span or a start outside the path of contact.
+std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
+                                    const StiffnessSweepSpec& spec);
+
+// Solves every position (scene "roll angle"). `scene_file_stem` gets "_<position>.msh"
+// appended (one file per position, removed after its solve). With settings.output_directory
+// set, each position writes VTU as "<output_base>_<position>". `progress` (may be empty) is
+// called on rank 0 after each of its positions with a one-line message. A position that fails
+// stops the sweep on every rank with that position's exception (InputError or SolverFailure).
+template <int dim>
+StiffnessSweepResult
+stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
+                const StiffnessSweepSpec& spec, const std::string& scene_file_stem,
+                const std::function<void(const std::string&)>& progress = {});
+
+// The scene's size field multiplied by `factor` everywhere: contact, body and rim sizes and
+// the growth rate scale, the fine radius (a region, not a size) stays. The contact size and
+// rim size must be explicit (InputError otherwise): an automatic size would follow the load.
+geometry::SceneMeshSettings scaled_mesh(const geometry::SceneMeshSettings& mesh, double factor);
+
+// A refinement study: one value per level, each level's sizes halved.
+struct RefinementLevel
+{
+  double size_factor = 1.; // -, sizes relative to the base mesh
+  double stiffness = 0.;   // N/m
+  unsigned int n_dofs = 0;
+  double wall_time = 0.; // s
+};
+
+struct RichardsonEstimate
+{
+  double extrapolated = 0.;   // N/m, k at h → 0
+  double observed_order = 0.; // -, p from the three finest levels
+  double error_finest = 0.;   // -, |k_finest − k_extrapolated| / k_extrapolated
+  bool monotone = false;      // the three differences have one sign (asymptotic range)
+};
+
+// From three or more levels with size ratio 2 (coarse to fine). The order comes from the
+// three finest; SolverFailure when the differences change sign (not in the asymptotic
+// range: no trustworthy extrapolation exists).
+RichardsonEstimate richardson_estimate(const std::vector<RefinementLevel>& levels);
+} // namespace gearstiff::contact
