@@ -1,0 +1,408 @@
+#include "app/dynamics_parameters.h"
+
+#include "dynamics/split_path_case.h"
+#include "kinematics/errors.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace gearstiff::app
+{
+namespace
+{
+using dealii::ParameterHandler;
+using dealii::Patterns::Anything;
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+
+constexpr double mm = 1e-3;
+constexpr double micrometre = 1e-6;
+constexpr double rpm = M_PI / 30.;
+constexpr double degree = M_PI / 180.;
+constexpr double newton_per_mm = 1e3;            // N/mm → N/m
+constexpr double newton_per_mm_micrometre = 1e9; // N/(mm·µm) → N/m²
+
+std::string number(double value)
+{
+  std::ostringstream s;
+  s.precision(10);
+  s << value;
+  return s.str();
+}
+
+std::string gear_section(unsigned int i)
+{
+  return "Gear " + std::to_string(i + 1);
+}
+std::string mesh_section(unsigned int m)
+{
+  return "Mesh " + std::to_string(m + 1);
+}
+
+// "x:k, x:k, ..." with x in base pitches and k in N/mm.
+void parse_table(const std::string& text, const std::string& parameter,
+                 std::vector<double>& positions, std::vector<double>& stiffness)
+{
+  std::istringstream entries(text);
+  std::string entry;
+  while (std::getline(entries, entry, ','))
+  {
+    if (entry.find_first_not_of(" \t") == std::string::npos)
+      continue;
+    const auto colon = entry.find(':');
+    try
+    {
+      if (colon == std::string::npos)
+        throw std::invalid_argument("no colon");
+      std::size_t used = 0;
+      const double x = std::stod(entry.substr(0, colon));
+      const double k = std::stod(entry.substr(colon + 1), &used);
+      if (entry.substr(colon + 1 + used).find_first_not_of(" \t") != std::string::npos)
+        throw std::invalid_argument("trailing text");
+      positions.push_back(x);
+      stiffness.push_back(k * newton_per_mm);
+    }
+    catch (const std::exception&)
+    {
+      throw InputError(parameter,
+                       "entry '" + entry + "' is not 'position:stiffness' (base pitches : N/mm)");
+    }
+  }
+}
+} // namespace
+
+void declare_dynamics_parameters(ParameterHandler& prm)
+{
+  const dynamics::SplitPathCase data = dynamics::split_path_case();
+
+  prm.enter_subsection("Train");
+  prm.declare_entry("number of gears", "3", Integer(2, max_dynamics_gears),
+                    "gears (rotational degrees of freedom) of the train; a tree of n gears has "
+                    "n - 1 meshes, read from 'Mesh 1' ... (-)");
+  prm.declare_entry("input speed", number(data.input_speed_rpm), Double(0.),
+                    "n1, nominal speed of gear 1 (rpm); the others follow from the base radii");
+  prm.declare_entry("published reference", "true", Bool(),
+                    "print the published split-path values (gear-data.md §1, Reszuta & "
+                    "Drewniak 2015) beside ours; set false for other trains");
+  prm.leave_subsection();
+
+  for (unsigned int i = 0; i < max_dynamics_gears; ++i)
+  {
+    prm.enter_subsection(gear_section(i));
+    const bool pinion = i == 0;
+    prm.declare_entry("inertia", number(pinion ? data.pinion_inertia : data.wheel_inertia),
+                      Double(0.), "J, mass moment of inertia about the gear axis (kg·m²)");
+    prm.declare_entry("torque", pinion ? number(data.input_torque) : std::string("balance"),
+                      Anything(),
+                      "external torque (N·m), positive in the running direction (input), "
+                      "negative for a load; 'balance': the load that takes an equal share of "
+                      "its driver's torque, T = -T_driver/(meshes of the driver)·r_b/r_b,driver");
+    prm.leave_subsection();
+  }
+
+  for (unsigned int m = 0; m + 1 < max_dynamics_gears; ++m)
+  {
+    prm.enter_subsection(mesh_section(m));
+    prm.declare_entry("driver gear", "1", Integer(1, max_dynamics_gears),
+                      "number of the driving gear (-)");
+    prm.declare_entry("driven gear", std::to_string(m + 2), Integer(1, max_dynamics_gears),
+                      "number of the driven gear (-)");
+    prm.declare_entry("driver teeth", std::to_string(data.pinion_teeth), Integer(1, 10000),
+                      "z of the driver: the mesh frequency is z·n_driver/60 (-)");
+    prm.declare_entry("driver base radius", number(data.pinion_base_radius / mm), Double(0.),
+                      "r_b of the driver (mm)");
+    prm.declare_entry("driven base radius", number(data.wheel_base_radius / mm), Double(0.),
+                      "r_b of the driven gear (mm)");
+    prm.declare_entry("contact ratio", number(data.contact_ratio), Double(1., 4.),
+                      "epsilon_alpha, transverse contact ratio (-); default from the "
+                      "kinematics module's split-path pair");
+    prm.declare_entry("approach ratio", number(data.approach_ratio), Double(0., 4.),
+                      "epsilon_f, start of active contact to the pitch point in base pitches "
+                      "(-): where the friction force reverses; default from kinematics");
+    prm.declare_entry("placement angle", m == 1 ? "180" : "0", Double(-360., 360.),
+                      "theta, angle of the driven gear's centre around the driver axis, "
+                      "against the driver's rotation, from the driven gear of the first mesh "
+                      "of the same driver (degrees); sets the phase frac(z·theta/360°)");
+    prm.declare_entry("stiffness source", "cai", Selection("cai|constant|table|cai fit"),
+                      "mesh stiffness: 'cai' (Cai curve, peak = stiffness), 'constant', "
+                      "'table' (k(x) table), 'cai fit' (Cai curve least-squares fitted to the "
+                      "table)");
+    prm.declare_entry("stiffness", number(data.single_pair_stiffness / newton_per_mm), Double(),
+                      "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
+    prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
+                      "c0, c1, c2 of the Cai bracket c2·s² + c1·s + c0, s = engagement "
+                      "fraction (-); the published shape peaks at 1");
+    prm.declare_entry("stiffness table", "", Anything(),
+                      "mesh stiffness samples 'x:k, x:k, ...' with x the mesh position in base "
+                      "pitches in [0, 1) (increasing) and k in N/mm");
+    prm.declare_entry("fit cai shape", "false", Bool(),
+                      "cai fit: fit the three shape coefficients too, not only the scale");
+    prm.declare_entry("damping", number(data.mesh_damping), Double(),
+                      "c_g, mesh damping along the line of action (N·s/m)");
+    prm.declare_entry("friction coefficient", number(data.friction_coefficient), Double(0., 0.99),
+                      "mu, tooth friction (-)");
+    prm.declare_entry("driver friction arm", number(data.pinion_friction_arm / mm), Double(0.),
+                      "r_f of the driver (mm)");
+    prm.declare_entry("driven friction arm", number(data.wheel_friction_arm / mm), Double(0.),
+                      "r_f of the driven gear (mm)");
+    prm.leave_subsection();
+  }
+
+  prm.enter_subsection("Simulation");
+  prm.declare_entry("integrator", "RK4", Selection("RK4|adaptive RK|HHT-alpha"),
+                    "RK4: classical Runge-Kutta, fixed step (the published method); adaptive "
+                    "RK: Dormand-Prince 5(4) with error control; HHT-alpha: implicit, for "
+                    "stiff meshes");
+  prm.declare_entry("time step", "5", Double(0.),
+                    "step of RK4 and HHT-alpha, output interval of the adaptive method (µs)");
+  prm.declare_entry("allow unstable step", "false", Bool(),
+                    "run RK4 with a step above the estimated stability limit");
+  prm.declare_entry("relative tolerance", "1e-7", Double(0., 0.1),
+                    "adaptive RK: local error tolerance relative to the state (-)");
+  prm.declare_entry("HHT alpha", "-0.05", Double(-1. / 3., 0.),
+                    "HHT-alpha parameter in [-1/3, 0]; 0 is the trapezoidal rule (-)");
+  prm.declare_entry("start", "static deflection", Selection("static deflection|rest"),
+                    "initial state: static deflection under mean stiffness, or rest (the "
+                    "torques applied suddenly)");
+  prm.declare_entry("initial mesh position", "0", Double(0., 1.),
+                    "position of mesh 1 at t = 0, in base pitches (0: a pair enters contact)");
+  prm.declare_entry("steady state start", "-1", Double(),
+                    "start of the K_v window (s); negative: automatic, when the slowest mode "
+                    "has decayed to 1/1000");
+  prm.declare_entry("simulated time", "0", Double(0.),
+                    "end time (s); 0: the window start plus 'window periods' mesh periods");
+  prm.declare_entry("window periods", "40", Integer(1, 100000),
+                    "length of the automatic K_v window in periods of mesh 1 (-)");
+  prm.declare_entry("output interval", "20", Double(0.),
+                    "spacing of the rows of the time-series CSV (µs); K_v uses every step");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Speed sweep");
+  prm.declare_entry("points", "60", Integer(0, 100000),
+                    "speeds in the K_v resonance chart (-); 0: no sweep");
+  prm.declare_entry("minimum speed", "500", Double(0.), "first input speed (rpm)");
+  prm.declare_entry("maximum speed", "45000", Double(0.), "last input speed (rpm)");
+  prm.declare_entry("steps per mesh period", "40", Integer(8, 10000),
+                    "the step is reduced so each mesh period holds at least this many (-)");
+  prm.leave_subsection();
+
+  prm.enter_subsection("ISO 6336");
+  prm.declare_entry("face width", number(data.face_width / mm), Double(0.),
+                    "b, common face width (mm)");
+  prm.declare_entry("transverse pressure angle", "20", Double(0., 45.),
+                    "alpha_t: F_t = F_bt·cos alpha_t (degrees)");
+  prm.declare_entry("single stiffness", "0", Double(0.),
+                    "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)");
+  prm.declare_entry("mesh stiffness", "0", Double(0.),
+                    "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b");
+  prm.declare_entry("pitch deviation", "8", Double(0.),
+                    "f_pb,eff = f_pb - y_p, effective base pitch deviation (µm); the default "
+                    "is ISO 1328 grade 6 for this size without running-in allowance");
+  prm.declare_entry("profile deviation", "8", Double(0.),
+                    "f_f,eff = f_f_alpha - y_f, effective profile form deviation (µm)");
+  prm.declare_entry("tip relief", "0", Double(0.), "C_a (µm); 0: none");
+  prm.declare_entry("application factor", "1", Double(0.), "K_A (-)");
+  prm.leave_subsection();
+}
+
+DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
+{
+  DynamicsParameters p;
+  prm.enter_subsection("Train");
+  const unsigned int n_gears = prm.get_integer("number of gears");
+  p.train.input_speed = prm.get_double("input speed") * rpm;
+  p.published_reference = prm.get_bool("published reference");
+  prm.leave_subsection();
+
+  std::vector<std::string> torque_text(n_gears);
+  for (unsigned int i = 0; i < n_gears; ++i)
+  {
+    prm.enter_subsection(gear_section(i));
+    dynamics::Gear gear;
+    gear.name = gear_section(i);
+    gear.inertia = prm.get_double("inertia");
+    torque_text[i] = prm.get("torque");
+    prm.leave_subsection();
+    p.train.gears.push_back(gear);
+  }
+
+  for (unsigned int m = 0; m + 1 < n_gears; ++m)
+  {
+    const std::string section = mesh_section(m);
+    prm.enter_subsection(section);
+    dynamics::Mesh mesh;
+    mesh.name = section;
+    const unsigned int driver = prm.get_integer("driver gear");
+    const unsigned int driven = prm.get_integer("driven gear");
+    if (driver > n_gears || driven > n_gears || driver == driven)
+    {
+      prm.leave_subsection();
+      throw InputError(section + "/driven gear",
+                       "a mesh joins two different gears among the first " +
+                           std::to_string(n_gears));
+    }
+    mesh.driver = driver - 1;
+    mesh.driven = driven - 1;
+    mesh.driver_teeth = prm.get_integer("driver teeth");
+    mesh.driver_base_radius = prm.get_double("driver base radius") * mm;
+    mesh.driven_base_radius = prm.get_double("driven base radius") * mm;
+    mesh.contact_ratio = prm.get_double("contact ratio");
+    mesh.approach_ratio = prm.get_double("approach ratio");
+    p.placement_angle.push_back(prm.get_double("placement angle") * degree);
+    mesh.damping = prm.get_double("damping");
+    mesh.friction_coefficient = prm.get_double("friction coefficient");
+    mesh.driver_friction_arm = prm.get_double("driver friction arm") * mm;
+    mesh.driven_friction_arm = prm.get_double("driven friction arm") * mm;
+
+    const std::string source = prm.get("stiffness source");
+    const double stiffness = prm.get_double("stiffness") * newton_per_mm;
+    dynamics::CaiParameters cai = dynamics::cai_published_parameters(stiffness);
+    {
+      std::istringstream shape(prm.get("cai shape"));
+      std::string value;
+      unsigned int i = 0;
+      try
+      {
+        for (; std::getline(shape, value, ','); ++i)
+          if (i < 3)
+            cai.shape[i] = std::stod(value);
+      }
+      catch (const std::exception&)
+      {
+        i = 0;
+      }
+      if (i != 3)
+      {
+        prm.leave_subsection();
+        throw InputError(section + "/cai shape", "expects three numbers c0, c1, c2");
+      }
+    }
+    std::vector<double> positions, values;
+    try
+    {
+      parse_table(prm.get("stiffness table"), section + "/stiffness table", positions, values);
+    }
+    catch (...)
+    {
+      prm.leave_subsection();
+      throw;
+    }
+    const bool fit_shape = prm.get_bool("fit cai shape");
+    prm.leave_subsection();
+
+    std::optional<dynamics::CaiFit> fit;
+    if (source == "constant")
+      mesh.stiffness = dynamics::MeshStiffness::constant(stiffness, section + "/stiffness");
+    else if (source == "cai")
+      mesh.stiffness = dynamics::MeshStiffness::cai(cai, section + "/stiffness");
+    else if (source == "table")
+      mesh.stiffness =
+          dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
+    else
+    {
+      // Validate the samples as a table first so the user gets the table's own message.
+      dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
+      std::vector<dynamics::StiffnessSample> samples;
+      for (std::size_t i = 0; i < positions.size(); ++i)
+        samples.push_back({positions[i], values[i]});
+      fit = dynamics::fit_cai_parameters(samples, mesh.contact_ratio,
+                                         dynamics::StiffnessSampleKind::mesh, fit_shape);
+      mesh.stiffness = dynamics::MeshStiffness::cai(fit->parameters, section + "/stiffness");
+    }
+    p.stiffness_description.push_back(mesh.stiffness.description() +
+                                      (fit ? " (fitted to the table)" : ""));
+    p.cai_fit.push_back(fit);
+    p.train.meshes.push_back(mesh);
+  }
+
+  // Torques: numbers, or "balance" for a load taking an equal share of its driver's torque.
+  std::vector<bool> known(n_gears, false);
+  std::vector<double> torque(n_gears, 0.);
+  for (unsigned int i = 0; i < n_gears; ++i)
+    if (torque_text[i] != "balance")
+    {
+      std::size_t used = 0;
+      try
+      {
+        torque[i] = std::stod(torque_text[i], &used);
+      }
+      catch (const std::exception&)
+      {
+        used = 0;
+      }
+      if (used == 0 || torque_text[i].find_first_not_of(" \t", used) != std::string::npos)
+        throw InputError(gear_section(i) + "/torque",
+                         "expects a number (N·m) or 'balance', got '" + torque_text[i] + "'");
+      known[i] = true;
+    }
+  for (unsigned int i = 0; i < n_gears; ++i)
+    if (!known[i])
+    {
+      const dynamics::Mesh* feeding = nullptr;
+      for (const auto& mesh : p.train.meshes)
+        if (mesh.driven == i)
+          feeding = &mesh;
+      if (feeding == nullptr || !known[feeding->driver] || !(torque[feeding->driver] > 0.))
+        throw InputError(gear_section(i) + "/torque",
+                         "'balance' needs a driving gear with a given positive torque");
+      unsigned int shares = 0;
+      for (const auto& mesh : p.train.meshes)
+        shares += (mesh.driver == feeding->driver);
+      torque[i] = -torque[feeding->driver] / shares * feeding->driven_base_radius /
+                  feeding->driver_base_radius;
+    }
+  for (unsigned int i = 0; i < n_gears; ++i)
+    p.train.gears[i].torque = torque[i];
+
+  prm.enter_subsection("Simulation");
+  const std::string integrator = prm.get("integrator");
+  p.simulation.integrator.type = integrator == "RK4" ? dynamics::IntegratorType::rk4
+                                 : integrator == "adaptive RK"
+                                     ? dynamics::IntegratorType::adaptive_rk
+                                     : dynamics::IntegratorType::hht_alpha;
+  p.simulation.integrator.time_step = prm.get_double("time step") * micrometre;
+  p.simulation.integrator.allow_unstable_step = prm.get_bool("allow unstable step");
+  p.simulation.integrator.relative_tolerance = prm.get_double("relative tolerance");
+  p.simulation.integrator.hht_alpha = prm.get_double("HHT alpha");
+  p.simulation.start = prm.get("start") == "rest" ? dynamics::StartState::rest
+                                                  : dynamics::StartState::static_deflection;
+  p.initial_position = prm.get_double("initial mesh position");
+  p.simulation.steady_state_start = prm.get_double("steady state start");
+  p.simulation.end_time = prm.get_double("simulated time");
+  p.simulation.window_periods = prm.get_integer("window periods");
+  p.output_interval = prm.get_double("output interval") * micrometre;
+  prm.leave_subsection();
+  if (!(p.simulation.integrator.time_step > 0.))
+    throw InputError("Simulation/time step", "must be positive");
+
+  prm.enter_subsection("Speed sweep");
+  p.sweep.points = prm.get_integer("points");
+  p.sweep.minimum_speed = prm.get_double("minimum speed") * rpm;
+  p.sweep.maximum_speed = prm.get_double("maximum speed") * rpm;
+  p.sweep.steps_per_mesh_period = prm.get_integer("steps per mesh period");
+  prm.leave_subsection();
+  if (p.sweep.points > 0 &&
+      !(p.sweep.minimum_speed > 0. && p.sweep.maximum_speed >= p.sweep.minimum_speed))
+    throw InputError("Speed sweep/maximum speed", "needs 0 < minimum speed <= maximum speed");
+
+  prm.enter_subsection("ISO 6336");
+  p.iso.face_width = prm.get_double("face width") * mm;
+  p.iso.pressure_angle = prm.get_double("transverse pressure angle") * degree;
+  p.iso.single_stiffness = prm.get_double("single stiffness") * newton_per_mm_micrometre;
+  p.iso.mesh_stiffness = prm.get_double("mesh stiffness") * newton_per_mm_micrometre;
+  p.iso.pitch_deviation = prm.get_double("pitch deviation") * micrometre;
+  p.iso.profile_deviation = prm.get_double("profile deviation") * micrometre;
+  p.iso.tip_relief = prm.get_double("tip relief") * micrometre;
+  p.iso.application_factor = prm.get_double("application factor");
+  prm.leave_subsection();
+
+  // Mesh phases from the placement angles: each mesh relative to the first mesh of its driver.
+  for (unsigned int m = 0; m < p.train.meshes.size(); ++m)
+    p.train.meshes[m].initial_position =
+        p.initial_position +
+        dynamics::mesh_phase_from_placement(p.train.meshes[m].driver_teeth, p.placement_angle[m]);
+  return p;
+}
+} // namespace gearstiff::app

@@ -1,0 +1,55 @@
+// Parameters of `gearstiff dynamics`: the gear train (gears, meshes, stiffness sources), the
+// simulation, the speed sweep and the ISO 6336-1 method B comparison. Parameter files use
+// engineering units (rpm, mm, N/mm, µs, degrees); parse_dynamics_parameters converts to SI.
+#pragma once
+
+#include "dynamics/cai_stiffness.h"
+#include "dynamics/simulation.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gearstiff::app
+{
+constexpr unsigned int max_dynamics_gears = 6;
+
+struct SweepParameters
+{
+  unsigned int points = 0;                 // [-] 0: no sweep
+  double minimum_speed = 0.;               // [rad/s]
+  double maximum_speed = 0.;               // [rad/s]
+  unsigned int steps_per_mesh_period = 40; // [-]
+};
+
+struct IsoParameters
+{
+  double face_width = 0.;         // [m] b
+  double pressure_angle = 0.;     // [rad] transverse α_t: F_t = F_bt·cos α_t
+  double single_stiffness = 0.;   // [N/m²] c'; 0: from the model (c_γα/(0.75 ε_α + 0.25))
+  double mesh_stiffness = 0.;     // [N/m²] c_γα; 0: mean model stiffness / b
+  double pitch_deviation = 0.;    // [m] f_pb,eff
+  double profile_deviation = 0.;  // [m] f_f,eff
+  double tip_relief = 0.;         // [m] C_a
+  double application_factor = 1.; // [-] K_A
+};
+
+struct DynamicsParameters
+{
+  dynamics::GearTrain train;
+  std::vector<double> placement_angle;                  // [rad] per mesh
+  std::vector<std::string> stiffness_description;       // per mesh, for the report
+  std::vector<std::optional<dynamics::CaiFit>> cai_fit; // per mesh when "cai fit" was used
+  dynamics::SimulationSettings simulation;
+  double output_interval = 0.;     // [s] spacing of the time-series CSV rows
+  double initial_position = 0.;    // [base pitches] mesh 1 at t = 0
+  bool published_reference = true; // compare with gear-data.md §1
+  SweepParameters sweep;
+  IsoParameters iso;
+};
+
+void declare_dynamics_parameters(dealii::ParameterHandler& prm);
+// Throws InputError naming "Section/parameter" for values the patterns cannot catch.
+DynamicsParameters parse_dynamics_parameters(dealii::ParameterHandler& prm);
+} // namespace gearstiff::app
