@@ -300,16 +300,16 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   if (model.bodies.empty())
     throw InputError("scene", "has no bodies to mesh");
   if (options.dimension != 2 && options.dimension != 3)
-    throw InputError("dimension", "must be 2 or 3");
+    throw InputError("Mesh/dimension", "must be 2 or 3");
   if (options.dimension == 3 && !(options.face_width > 0.))
-    throw InputError("face width", "must be positive for a 3D mesh");
+    throw InputError("Mesh/face width", "must be positive for a 3D mesh");
   if (options.dimension == 3 && options.layers < 1)
-    throw InputError("layers", "must be at least 1 for a 3D mesh");
+    throw InputError("Mesh/layers", "must be at least 1 for a 3D mesh");
   if (!(grading.fine_size > 0.) || !(grading.body_size >= grading.fine_size) ||
       !(grading.largest_size >= grading.body_size) || !(grading.growth_rate > 0.) ||
       !(grading.fine_radius >= 0.))
-    throw InputError("mesh size", "needs 0 < contact size <= body size, a positive growth "
-                                  "rate and a non-negative fine radius");
+    throw InputError("Mesh/contact size", "needs 0 < contact size <= body size, a positive growth "
+                                          "rate and a non-negative fine radius");
   if (options.file.empty())
     throw InputError("mesh file", "no output file given");
   for (const auto& body : model.bodies)

@@ -44,23 +44,23 @@ contact_size_grading(const SceneMeshSettings& settings, const std::vector<SceneC
   else if (have_widths)
     grading.fine_size = 0.1 * smallest_width; // ten cells across the half-width
   else
-    throw InputError("contact size", "must be given when the scene has no Hertz estimate");
+    throw InputError("Mesh/contact size", "must be given when the scene has no Hertz estimate");
   if (settings.fine_radius > 0.)
     grading.fine_radius = settings.fine_radius;
   else
     grading.fine_radius = have_widths ? 1.5 * largest_width : 10. * grading.fine_size;
   if (!(settings.growth_rate > 0.))
-    throw InputError("growth rate", "must be positive");
+    throw InputError("Mesh/growth rate", "must be positive");
   grading.growth_rate = settings.growth_rate;
   if (!(settings.body_size >= grading.fine_size))
-    throw InputError("body size", "must not be smaller than the contact size");
+    throw InputError("Mesh/body size", "must not be smaller than the contact size");
   grading.body_size = settings.body_size;
   grading.largest_size = grading.body_size;
   if (depth_below_surface)
   {
     grading.largest_size = settings.rim_size > 0. ? settings.rim_size : 4. * settings.body_size;
     if (!(grading.largest_size >= grading.body_size))
-      throw InputError("rim size", "must not be smaller than the body size");
+      throw InputError("Mesh/rim size", "must not be smaller than the body size");
     grading.coarse_size = [depth_below_surface, body = grading.body_size,
                            rate = grading.growth_rate](const Eigen::Vector2d& point)
     { return body + rate * std::max(0., depth_below_surface(point)); };

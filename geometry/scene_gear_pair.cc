@@ -301,15 +301,18 @@ SceneInfo write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string
                                const ToothProfile& tooth, const std::string& name)
   {
     const double radius = given > 0. ? given : 0.5 * gear.bore_diameter;
+    const std::string parameter =
+        given > 0. ? p + name
+                   : kinematics::gear_parameter_name(&gear == &spec.pair.wheel, "bore diameter");
     const double root_radius = tooth.points.front().position.norm();
     if (!(radius > 0.))
-      throw InputError(p + name, "must be positive (no bore diameter given for the gear)");
+      throw InputError(parameter, "must be positive (no bore given for the gear)");
     // The rim under the root must keep at least one module of material, or the mesh of the
     // rim degenerates into a sliver.
     if (radius > root_radius - gear.normal_module)
-      throw InputError(p + name, "leaves a rim thinner than one module under the root circle "
-                                 "(root radius " +
-                                     std::to_string(root_radius * 1e3) + " mm)");
+      throw InputError(parameter, "leaves a rim thinner than one module under the root circle "
+                                  "(root radius " +
+                                      std::to_string(root_radius * 1e3) + " mm)");
     return radius;
   };
   const double pinion_bore =

@@ -1,0 +1,291 @@
+// `gearstiff mesh [scene.prm]`: writes the FE mesh of one scene (ASCII .msh 4.1, all quadrilateral
+// in 2D, hexahedra extruded over the face width in 3D) and reports its ids, extent, predicted
+// contacts, cell counts, quality and timings. Default: the split-path pair of gear-data.md §1 at
+// the single-pair position (pitch point).
+//
+//   gearstiff mesh -o out                                        out/scene.msh, 2D, single pair
+//   gearstiff mesh --set "Gear pair scene/position=double" -o out
+//   gearstiff mesh --set "Mesh/dimension=3" --set "Mesh/layers=6" -o out
+//   gearstiff mesh --set "Scene/type=cylinders" -o out          Hertz verification scene
+//
+// Without -o the mesh is generated (all checks run, the report is complete) but not kept.
+#include "app/command.h"
+#include "app/kinematics_parameters.h"
+#include "geometry/scene_cylinders.h"
+#include "geometry/scene_gear_pair.h"
+#include "kinematics/errors.h"
+
+#include <cmath>
+#include <deal.II/base/parameter_handler.h>
+#include <filesystem>
+#include <unistd.h>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::app;
+using dealii::ParameterHandler;
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+
+constexpr double mm = 1e-3;
+constexpr double degree = M_PI / 180.;
+const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
+
+void declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Scene");
+  prm.declare_entry("type", "gear pair", Selection("gear pair|cylinders"),
+                    "what to mesh: a spur gear pair at one position (subsections Gear pair, Gear "
+                    "pair scene) or two cylinders in line contact (subsection Cylinders)");
+  prm.declare_entry("mesh file", "scene.msh", dealii::Patterns::Anything(),
+                    "name of the .msh file written into the -o folder");
+  prm.leave_subsection();
+
+  declare_gear_pair_parameters(prm);
+
+  const geometry::GearPairSceneSpec gear;
+  prm.enter_subsection("Gear pair scene");
+  prm.declare_entry("position", gear.position, Selection("single|double|roll angle"),
+                    "single: pitch point if in the single-contact zone (else its middle); double: "
+                    "middle of the first double-contact zone; roll angle: see below");
+  prm.declare_entry("pinion roll angle", "20", Double(),
+                    "pinion roll angle ℓ/r_b1 of the reference pair, ℓ from T1 along the line of "
+                    "action [deg]; must lie on the path of contact (position = roll angle)");
+  prm.declare_entry("pinion teeth modelled", std::to_string(gear.pinion_teeth_modelled), Integer(1),
+                    "pinion teeth in the scene, centred on the contacts [-]");
+  prm.declare_entry("wheel teeth modelled", std::to_string(gear.wheel_teeth_modelled), Integer(1),
+                    "wheel teeth in the scene, centred on the contacts [-]");
+  prm.declare_entry("pinion bore radius", "0", Double(0.),
+                    "pinion bore radius [mm]; 0 = half of Gear pair/Pinion/bore diameter");
+  prm.declare_entry("wheel bore radius", "0", Double(0.),
+                    "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
+  prm.declare_entry("rim", "sector", Selection("sector|full"),
+                    "sector: rim of the modelled teeth only, cut radially (cut faces get ids 5/6); "
+                    "full: whole rim and bore, the other teeth removed");
+  prm.declare_entry("both flanks", "false", Bool(),
+                    "also mark the unloaded flanks as candidate contact surfaces");
+  prm.declare_entry("pinion torque", "49.4", Double(0.),
+                    "pinion torque T1 for the Hertz estimate of the contact size [N·m] "
+                    "(gear-data.md §1: 7.5 kW at 1450 rpm)");
+  prm.declare_entry("Young's modulus", "210", Double(0.),
+                    "Young's modulus of both gears [GPa] (steel; not published)");
+  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
+  prm.leave_subsection();
+
+  const geometry::CylindersSceneSpec cylinders;
+  prm.enter_subsection("Cylinders");
+  prm.declare_entry("radius 1", "10", Double(0.), "radius of the lower cylinder [mm]");
+  prm.declare_entry("radius 2", "10", Double(0.), "radius of the upper cylinder [mm]");
+  prm.declare_entry("bore radius 1", "0", Double(0.),
+                    "bore of the lower cylinder [mm]; 0 = a half-disc whose flat face is the "
+                    "support (boundary id 5)");
+  prm.declare_entry("bore radius 2", "0", Double(0.),
+                    "bore of the upper cylinder [mm]; 0 = half-disc");
+  prm.declare_entry("force per length", "1e5", Double(0.),
+                    "normal line load for the Hertz estimate [N/m]");
+  prm.declare_entry("length", "10", Double(0.), "cylinder length (3D extrusion) [mm]");
+  prm.declare_entry("Young's modulus", "210", Double(0.), "Young's modulus of both [GPa]");
+  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
+  prm.leave_subsection();
+
+  const geometry::SceneMeshSettings mesh;
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("dimension", "2", Integer(2, 3),
+                    "2: quadrilaterals in the transverse plane; 3: hexahedra over the face width");
+  prm.declare_entry("layers", std::to_string(mesh.layers), Integer(1, 1000),
+                    "hexahedron layers across the face width [-] (3D)");
+  prm.declare_entry("contact size", "0", Double(0.),
+                    "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest Hertz "
+                    "half-width");
+  prm.declare_entry("fine radius", "0", Double(0.),
+                    "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the largest "
+                    "Hertz half-width");
+  prm.declare_entry("growth rate", "0.25", Double(0.01, 1.),
+                    "cell size increase per unit distance beyond the fine radius [-]");
+  prm.declare_entry("body size", "0.5", Double(0.),
+                    "cell size in the teeth away from contact [mm]");
+  prm.declare_entry("rim size", "0", Double(0.),
+                    "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size");
+  prm.leave_subsection();
+}
+
+geometry::SceneMeshSettings parse_mesh(ParameterHandler& prm)
+{
+  geometry::SceneMeshSettings mesh;
+  prm.enter_subsection("Mesh");
+  mesh.dimension = prm.get_integer("dimension");
+  mesh.layers = prm.get_integer("layers");
+  mesh.contact_size = prm.get_double("contact size") * mm;
+  mesh.fine_radius = prm.get_double("fine radius") * mm;
+  mesh.growth_rate = prm.get_double("growth rate");
+  mesh.body_size = prm.get_double("body size") * mm;
+  mesh.rim_size = prm.get_double("rim size") * mm;
+  prm.leave_subsection();
+  return mesh;
+}
+
+geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
+{
+  geometry::GearPairSceneSpec spec;
+  spec.pair = parse_gear_pair_parameters(prm);
+  prm.enter_subsection("Gear pair scene");
+  spec.position = prm.get("position");
+  spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
+  spec.pinion_teeth_modelled = prm.get_integer("pinion teeth modelled");
+  spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
+  spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
+  spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
+  spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
+  spec.both_flanks = prm.get_bool("both flanks");
+  spec.pinion_torque = prm.get_double("pinion torque");
+  spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
+  spec.poisson_ratio = prm.get_double("Poisson's ratio");
+  prm.leave_subsection();
+  spec.mesh = parse_mesh(prm);
+  return spec;
+}
+
+geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
+{
+  geometry::CylindersSceneSpec spec;
+  prm.enter_subsection("Cylinders");
+  spec.radius_1 = prm.get_double("radius 1") * mm;
+  spec.radius_2 = prm.get_double("radius 2") * mm;
+  spec.bore_radius_1 = prm.get_double("bore radius 1") * mm;
+  spec.bore_radius_2 = prm.get_double("bore radius 2") * mm;
+  spec.force_per_length = prm.get_double("force per length");
+  spec.length = prm.get_double("length") * mm;
+  spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
+  spec.poisson_ratio = prm.get_double("Poisson's ratio");
+  prm.leave_subsection();
+  spec.mesh = parse_mesh(prm);
+  return spec;
+}
+
+// SI quantities of the scene in the units of the parameter files.
+void add_quantity(Report& report, const geometry::SceneQuantity& q)
+{
+  if (q.unit == "m")
+    report.add_value(q.key, q.value / mm, "mm", q.description);
+  else if (q.unit == "rad")
+    report.add_value(q.key, q.value / degree, "deg", q.description);
+  else
+    report.add_value(q.key, q.value, q.unit, q.description);
+}
+
+void report_scene(const geometry::SceneInfo& info, const std::string& type, Report& report)
+{
+  std::string ids;
+  for (const auto& [id, name] : info.material_names)
+    ids += (ids.empty() ? "" : ", ") + std::to_string(id) + " " + name;
+  report.add_text("material_ids", ids);
+  ids = "0 free surface";
+  for (const auto& [id, name] : info.boundary_names)
+    ids += ", " + std::to_string(id) + " " + name;
+  report.add_text("boundary_ids", ids);
+
+  for (const auto& q : info.quantities)
+    add_quantity(report, q);
+  if (type == "gear pair" && info.contacts.size() == 2)
+    report.add_compared_value(
+        "contact_spacing", (info.contacts[1].point - info.contacts[0].point).norm() / mm, 7.380,
+        "mm", "distance between the two contacts (transverse base pitch p_et)", split_path_source);
+
+  report.add_value("contact_size", info.contact_size / mm, "mm", "h_c, cell size at the contacts");
+  report.add_value("largest_edge_at_contact", info.mesh.largest_edge_at_focus / mm, "mm",
+                   "longest cell edge touching a contact point (≤ h_c)");
+  report.add_value("fine_radius", info.fine_radius / mm, "mm", "radius meshed at h_c");
+  report.add_value("body_size", info.body_size / mm, "mm", "cell size in the bodies");
+  report.add_value("rim_size", info.rim_size / mm, "mm", "largest cell size (rims)");
+  report.add_value("cells", info.mesh.n_cells, "-",
+                   info.dimension == 2 ? "quadrilaterals" : "hexahedra");
+  for (const auto& [id, count] : info.mesh.cells_per_body)
+    report.add_value("cells_material_" + std::to_string(id), count, "-",
+                     "cells of " + info.material_names.at(id));
+  report.add_value("vertices", info.mesh.n_vertices, "-", "mesh vertices");
+  report.add_value("min_scaled_jacobian", info.mesh.min_scaled_jacobian, "-",
+                   "minimum scaled Jacobian (1: square)");
+  report.add_value("mean_scaled_jacobian", info.mesh.mean_scaled_jacobian, "-",
+                   "mean scaled Jacobian");
+  report.add_value("meshing_attempts", info.mesh.meshing_attempts, "-",
+                   "mesh generations until the contact size was met");
+  report.add_value("time_geometry", info.mesh.time_geometry, "s", "building the gmsh model");
+  report.add_value("time_meshing", info.mesh.time_meshing, "s", "mesh generation");
+  report.add_value("time_checking", info.mesh.time_checking, "s", "cell type and quality checks");
+  report.add_value("time_writing", info.mesh.time_writing, "s", "writing the .msh file");
+  report.add_value("time_total", info.time_total, "s", "the whole scene");
+
+  auto& table =
+      report.add_table("contacts",
+                       {"x", "y", "normal_x", "normal_y", "radius_1", "radius_2", "normal_force",
+                        "hertz_half_width", "gap", "feature_1", "feature_2"},
+                       {"mm", "mm", "-", "-", "mm", "mm", "N", "mm", "mm", "-", "-"});
+  for (const auto& c : info.contacts)
+    table.add_row({c.point.x() / mm, c.point.y() / mm, c.normal.x(), c.normal.y(),
+                   c.first_curvature_radius / mm, c.second_curvature_radius / mm, c.normal_force,
+                   c.hertz_half_width / mm, c.gap / mm, double(c.first_feature),
+                   double(c.second_feature)});
+}
+
+void run(ParameterHandler& prm, CommandContext& context)
+{
+  prm.enter_subsection("Scene");
+  const std::string type = prm.get("type");
+  const std::string file_name = prm.get("mesh file");
+  prm.leave_subsection();
+  if (file_name.empty() || file_name.find('/') != std::string::npos ||
+      std::filesystem::path(file_name).extension() != ".msh")
+    throw InputError("Scene/mesh file", "must be a plain file name ending in .msh");
+
+  // Parse everything first: a bad parameter must stop the command before gmsh runs.
+  const bool gear = type == "gear pair";
+  const geometry::GearPairSceneSpec gear_spec =
+      gear ? parse_gear_scene(prm) : geometry::GearPairSceneSpec();
+  const geometry::CylindersSceneSpec cylinder_spec =
+      gear ? geometry::CylindersSceneSpec() : parse_cylinders(prm);
+
+  std::string path;
+  std::filesystem::path scratch;
+  if (context.writes_files())
+    path = context.output_file(file_name, "scene mesh (ASCII .msh 4.1, ids in summary.json)");
+  else
+  {
+    scratch = std::filesystem::temp_directory_path() /
+              ("gearstiff-mesh-" + std::to_string(getpid()) + ".msh");
+    path = scratch.string();
+  }
+  geometry::SceneInfo info;
+  try
+  {
+    info = gear ? geometry::write_gear_pair_scene(gear_spec, path)
+                : geometry::write_cylinders_scene(cylinder_spec, path);
+  }
+  catch (...)
+  {
+    if (!scratch.empty())
+      std::filesystem::remove(scratch);
+    throw;
+  }
+  if (!scratch.empty())
+    std::filesystem::remove(scratch);
+
+  context.pcout << "mesh: " << info.kind << ", " << info.mesh.n_cells << " cells in "
+                << info.time_total << " s" << std::endl;
+  report_scene(info, type, context.report);
+}
+
+const CommandRegistration registration(
+    {"mesh", "FE mesh of a scene (gear pair at one position, cylinders) with gmsh",
+     "Writes the mesh of one FE scene as ASCII .msh 4.1 (deal.II GridIn::read_msh): for a gear "
+     "pair\n"
+     "a few teeth of each gear around the contacts predicted along the line of action, with rim\n"
+     "and bore, the wheel placed in mesh; all quadrilateral (2D) or hexahedra extruded over the\n"
+     "face width (3D), sizes graded from h_c at the contacts (default a tenth of the Hertz\n"
+     "half-width) to the body size. Physical groups: material ids 1 (pinion/first body),\n"
+     "2 (wheel/second body); boundary ids 1/2 bores, 3/4 candidate flanks, 5/6 sector cuts,\n"
+     "7 side faces (3D), 0 free. Leftover triangles or inverted cells are an error.",
+     declare_parameters, run});
+} // namespace
