@@ -64,6 +64,22 @@ namespace gearstiff::app
 
   namespace
   {
+    // Characters shown, not bytes: labels carry UTF-8 symbols (α, ε, ·) and std::setw pads by
+    // bytes, which would shift the value column.
+    std::size_t display_width(const std::string& text)
+    {
+      std::size_t width = 0;
+      for (const unsigned char c : text)
+        width += (c & 0xC0) != 0x80;
+      return width;
+    }
+
+    std::string pad(const std::string& text, std::size_t width)
+    {
+      const std::size_t shown = display_width(text);
+      return shown >= width ? text : text + std::string(width - shown, ' ');
+    }
+
     std::string format_number(double x)
     {
       if (!std::isfinite(x))
@@ -80,18 +96,15 @@ namespace gearstiff::app
 
   void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
   {
-    // Column widths count bytes; the labels carry UTF-8 symbols (α, ε, ·), so allow for them
-    // by padding on the byte count, which keeps the value column aligned for ASCII-only labels
-    // and at worst a few characters off for symbol-heavy ones.
     std::size_t label_width = 0;
     for (const auto& v : value_list)
-      label_width = std::max(label_width, v.description.size());
+      label_width = std::max(label_width, display_width(v.description));
     std::size_t key_width = 0;
     for (const auto& t : text_list)
-      key_width = std::max(key_width, t.first.size());
+      key_width = std::max(key_width, display_width(t.first));
 
     for (const auto& t : text_list)
-      out << std::left << std::setw(key_width + 2) << t.first << t.second << '\n';
+      out << pad(t.first, key_width + 2) << t.second << '\n';
     if (!text_list.empty())
       out << '\n';
 
@@ -101,17 +114,16 @@ namespace gearstiff::app
 
     if (!value_list.empty())
     {
-      out << std::left << std::setw(label_width + 2) << "quantity" << std::right
-          << std::setw(14) << "value" << "  " << std::left << std::setw(12) << "unit";
+      out << pad("quantity", label_width + 2) << std::right
+          << std::setw(14) << "value" << "  " << pad("unit", 12);
       if (any_reference)
         out << std::right << std::setw(14) << "published" << std::setw(11) << "deviation"
             << "  source";
       out << '\n';
       for (const auto& v : value_list)
       {
-        out << std::left << std::setw(label_width + 2) << v.description << std::right
-            << std::setw(14) << format_number(v.value) << "  " << std::left << std::setw(12)
-            << v.unit;
+        out << pad(v.description, label_width + 2) << std::right
+            << std::setw(14) << format_number(v.value) << "  " << pad(v.unit, 12);
         if (!std::isnan(v.reference))
         {
           const double deviation =
