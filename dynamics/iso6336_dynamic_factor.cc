@@ -32,7 +32,7 @@ double reduced_mass(double pinion_inertia, double pinion_base_radius, double whe
 
 namespace
 {
-// ISO 6336-1:2006 Table 8: the C_v factors as functions of the total contact ratio.
+// ISO 6336-1 method B: the C_v factors as functions of the total contact ratio.
 std::array<double, 7> c_v_factors(double eps)
 {
   std::array<double, 7> c{};
@@ -71,19 +71,19 @@ IsoDynamicFactor iso6336_dynamic_factor(const IsoDynamicFactorInput& in)
     throw InputError("ISO 6336/deviations", "f_pb,eff, f_f,eff and C_a must not be negative");
 
   IsoDynamicFactor out;
-  // eq. (6): n_E1 = 30000/(π·z1)·sqrt(c_γα/m_red) [rpm] with per-face-width quantities in
+  // Resonance speed n_E1 = 30000/(π·z1)·sqrt(c_γα/m_red) [rpm] with per-face-width quantities in
   // N/(mm·µm) and kg/mm; in SI and whole-face-width terms ω_E = sqrt(c_γα·b/m_red), n_E1 = ω_E/z1.
   out.resonance_speed =
       std::sqrt(in.mesh_stiffness * in.face_width / in.reduced_mass) / in.pinion_teeth;
   out.resonance_ratio = in.pinion_speed / out.resonance_speed;
 
-  // eq. (8)/(9): N_S from the specific load F_t·K_A/b, compared in N/mm.
+  // N_S from the specific load F_t·K_A/b, compared in N/mm.
   const double specific_load = in.tangential_force * in.application_factor / in.face_width;
   const double specific_load_n_per_mm = specific_load * 1e-3;
   out.subcritical_limit =
       specific_load_n_per_mm >= 100. ? 0.85 : 0.5 + 0.35 * std::sqrt(specific_load_n_per_mm / 100.);
 
-  // eq. (17)-(19): dimensionless deviation and relief terms.
+  // Dimensionless deviation and relief terms.
   out.b_p = in.single_stiffness * in.pitch_deviation / specific_load;
   out.b_f = in.single_stiffness * in.profile_deviation / specific_load;
   out.b_k = std::abs(1. - in.single_stiffness * in.tip_relief / specific_load);
@@ -95,22 +95,22 @@ IsoDynamicFactor iso6336_dynamic_factor(const IsoDynamicFactorInput& in)
   const double N = out.resonance_ratio;
   if (N <= out.subcritical_limit)
   {
-    out.range = IsoSpeedRange::subcritical; // eq. (13): K_v = N·K + 1
+    out.range = IsoSpeedRange::subcritical; // K_v = N·K + 1
     out.kv = N * (c[0] * out.b_p + c[1] * out.b_f + c[2] * out.b_k) + 1.;
   }
   else if (N <= 1.15)
   {
-    out.range = IsoSpeedRange::main_resonance; // eq. (14)
+    out.range = IsoSpeedRange::main_resonance;
     out.kv = main_resonance;
   }
   else if (N < 1.5)
   {
-    out.range = IsoSpeedRange::intermediate; // eq. (16): linear between N = 1.15 and 1.5
+    out.range = IsoSpeedRange::intermediate; // linear between N = 1.15 and 1.5
     out.kv = supercritical + (main_resonance - supercritical) / 0.35 * (1.5 - N);
   }
   else
   {
-    out.range = IsoSpeedRange::supercritical; // eq. (15)
+    out.range = IsoSpeedRange::supercritical;
     out.kv = supercritical;
   }
   return out;

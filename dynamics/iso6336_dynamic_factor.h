@@ -1,10 +1,11 @@
-// The dynamic factor K_v by ISO 6336-1:2006 method B (§6.5), for comparison with the simulated
-// one. Stated assumptions (the standard leaves them to the user; the command reports them):
+// The dynamic factor K_v by ISO 6336-1 method B (internal dynamic factor), for comparison with the
+// simulated one. Stated assumptions (the standard leaves them to the user; the command reports
+// them):
 //  - c_γα (mean mesh stiffness) and c' (single stiffness) per unit face width are inputs; the
 //    command takes them from the dynamic model's own stiffness source by default;
 //  - the effective deviations f_pb,eff = f_pb − y_p and f_f,eff = f_fα − y_f (running-in
 //    allowances already subtracted) and the tip relief C_a are inputs;
-//  - m_red is the reduced mass of the pair from the moments of inertia (ISO 6336-1 eq. 30:
+//  - m_red is the reduced mass of the pair from the moments of inertia (ISO 6336-1 method B:
 //    m_red = m1*·m2*/(m1* + m2*), m* = J/r_b²). For a pinion shared by several meshes the
 //    command gives each mesh its share J1/n_meshes, which makes n_E1 the frequency of the
 //    in-phase mode in which the pinion vibrates against all wheels at once.
@@ -55,7 +56,7 @@ struct IsoDynamicFactor
 // Throws InputError for non-positive stiffness, mass, speed, force or width.
 IsoDynamicFactor iso6336_dynamic_factor(const IsoDynamicFactorInput& input);
 
-// m_red [kg] of a pair from J [kg·m²] and base radii [m] (ISO 6336-1 eq. 30).
+// m_red [kg] of a pair from J [kg·m²] and base radii [m] (ISO 6336-1 method B).
 double reduced_mass(double pinion_inertia, double pinion_base_radius, double wheel_inertia,
                     double wheel_base_radius);
 } // namespace gearstiff::dynamics

@@ -68,6 +68,16 @@ def resonance(path, png):
     unstable = [s for s, u in zip(speed, c["unstable [-]"]) if u > 0.5]
     if unstable:
         ax.plot(unstable, [1.0] * len(unstable), "rx", label="linear model diverges")
+    # Near a parametric instability K_v can reach tens; clip so the chart stays readable and
+    # mark the clipped points at the top edge.
+    finite = sorted(k for k in c["kv_max [-]"] if k == k)
+    if finite:
+        top = min(finite[-1] * 1.05, max(6.0, 2.0 * finite[len(finite) // 2]))
+        ax.set_ylim(0, top)
+        clipped = [s for s, k in zip(speed, c["kv_max [-]"]) if k == k and k > top]
+        if clipped:
+            ax.plot(clipped, [top * 0.98] * len(clipped), "^", color="C0",
+                    label="K_v max beyond the scale")
     ax.set_xlabel("input speed n1 [rpm]")
     ax.set_ylabel("dynamic factor K_v [-]")
     ax.grid(True, lw=0.3)

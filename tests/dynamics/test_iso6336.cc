@@ -72,7 +72,7 @@ TEST(Iso6336DynamicFactor, RangesAndContinuity)
   EXPECT_EQ(at(1.3).range, IsoSpeedRange::intermediate);
   EXPECT_NEAR(at(1.15 + 1e-9).kv, at(1.15).kv, 1e-6);
   EXPECT_NEAR(at(1.5 - 1e-9).kv, at(1.5).kv, 1e-6);
-  // C_v factors of Table 8 for ε_γ > 2 are continuous with the constant ones only roughly;
+  // The C_v factors for ε_γ > 2 follow their own formulas;
   // check one value: ε_γ = 2.5 → C_v7 = 0.125·sin(0.5π) + 0.875 = 1.0.
   in.total_contact_ratio = 2.5;
   EXPECT_NEAR(iso6336_dynamic_factor(in).c_v[6], 1.0, 1e-12);
