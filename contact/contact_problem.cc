@@ -180,7 +180,7 @@ namespace gearstiff::contact
         if (pair.nodes[k].initial_gap <= touching)
           pair.state[k] = parameters.friction_coefficient > 0 ? NodeState::stick : NodeState::slip;
       pair.friction_direction.assign(pair.nodes.size(), Tensor<1, dim>());
-      pair.friction_normal_force.assign(pair.nodes.size(), 0.);
+      pair.friction_bound.assign(pair.nodes.size(), -1.);
     }
     displacement.reinit(dof_handler.n_dofs());
     step_start.reinit(dof_handler.n_dofs());
@@ -271,8 +271,8 @@ namespace gearstiff::contact
         {
           // Coulomb: μ λ_n along the friction direction on the slave, the reaction on the
           // master distributed with the mortar weights.
-          const Tensor<1, dim> force = parameters.friction_coefficient *
-                                       pair.friction_normal_force[k] * pair.friction_direction[k];
+          const Tensor<1, dim> force =
+            std::max(pair.friction_bound[k], 0.) * pair.friction_direction[k];
           const SlaveNode<dim>& node = pair.nodes[k];
           for (unsigned int c = 0; c < dim; ++c)
           {
@@ -285,8 +285,7 @@ namespace gearstiff::contact
   }
 
   template <int dim>
-  std::pair<unsigned int, double>
-  ContactProblem<dim>::update_states(const Vector<double>& residual)
+  unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
   {
     const double mu = parameters.friction_coefficient;
     double largest_normal_force = 0.;
@@ -301,10 +300,12 @@ namespace gearstiff::contact
     // Round-off levels: a closed node is tensile, an open one penetrating, only beyond these.
     const double force_tolerance = 1e-10 * largest_normal_force;
     const double gap_tolerance = 1e-12 * characteristic_length;
-    const double stiffness = elastic.max_youngs_modulus(); // Pa, c = E/h below
+    // Weight of the slip in the tangential trial, c = E/(10 h): of the order of a surface node's
+    // tangential stiffness. It steers the iteration path only; with c = E/h the stick/slip
+    // front of a Cattaneo–Mindlin contact overshot and cycled.
+    const double stiffness = 0.1 * elastic.max_youngs_modulus(); // Pa
 
     unsigned int changed = 0;
-    double friction_change = 0.;
     for (auto& pair : pairs)
       for (unsigned int k = 0; k < pair.nodes.size(); ++k)
       {
@@ -319,8 +320,8 @@ namespace gearstiff::contact
         Tensor<1, dim> slip = relative - relative_displacement(node, step_start);
         slip -= (slip * node.normal) * node.normal;
 
-        // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = p_n − c·g (p_n = 0
-        // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s, friction bound μ σ_n.
+        // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = λ_n − c·g·A (λ_n = 0
+        // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s against the bound.
         const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
         const double c = stiffness / h; // Pa/m
         const NodeState old_state = pair.state[k];
@@ -334,8 +335,11 @@ namespace gearstiff::contact
           new_state = NodeState::slip;
         else if (closed)
         {
+          // A node closing for the first time gets its bound from the trial pressure.
+          if (pair.friction_bound[k] < 0.)
+            pair.friction_bound[k] = mu * std::max(normal_trial, 0.);
           const Tensor<1, dim> trial = tangential_force / node.area - c * slip; // Pa
-          if (trial.norm() <= mu * normal_trial / node.area * (1. + 1e-12))
+          if (trial.norm() <= pair.friction_bound[k] / node.area * (1. + 1e-12))
             new_state = NodeState::stick;
           else
           {
@@ -347,17 +351,35 @@ namespace gearstiff::contact
         if (new_state == NodeState::slip && mu > 0.)
         {
           node_changed = node_changed || direction * pair.friction_direction[k] < 1. - 1e-10;
-          const double used = pair.friction_normal_force[k];
-          const double now = std::max(normal_trial, 0.);
-          if (old_state == NodeState::slip)
-            friction_change = std::max(friction_change, mu * std::abs(now - used));
-          pair.friction_normal_force[k] = now;
           pair.friction_direction[k] = direction;
         }
         pair.state[k] = new_state;
         changed += node_changed ? 1 : 0;
       }
-    return {changed, largest_normal_force > 0. ? friction_change / largest_normal_force : 0.};
+    return changed;
+  }
+
+  template <int dim>
+  double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residual)
+  {
+    if (parameters.friction_coefficient == 0.)
+      return 0.;
+    double largest_normal_force = 0., largest_change = 0.;
+    for (auto& pair : pairs)
+      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      {
+        Tensor<1, dim> force;
+        for (unsigned int c = 0; c < dim; ++c)
+          force[c] = residual[pair.nodes[k].node.dofs[c]];
+        const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
+        largest_normal_force = std::max(largest_normal_force, normal_force);
+        const double bound =
+          pair.state[k] == NodeState::open ? -1. : parameters.friction_coefficient * normal_force;
+        if (pair.state[k] != NodeState::open)
+          largest_change = std::max(largest_change, std::abs(bound - pair.friction_bound[k]));
+        pair.friction_bound[k] = bound;
+      }
+    return largest_normal_force > 0. ? largest_change / largest_normal_force : 0.;
   }
 
   template <int dim>
@@ -382,7 +404,9 @@ namespace gearstiff::contact
         fem::LinearSolveStatistics statistics;
         displacement = elastic.solve(constraints, loads, statistics);
         residual = elastic.residual(displacement);
-        const auto [changes, friction_change] = update_states(residual);
+        const unsigned int changes = update_states(residual);
+        // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
+        const double friction_change = changes == 0 ? update_friction_bounds(residual) : 1.;
         ++result.active_set_iterations;
         result.assembly_time += statistics.assembly_time;
         result.solve_time += statistics.solve_time;
@@ -391,7 +415,7 @@ namespace gearstiff::contact
         record.load_step = step;
         record.iteration = iteration;
         record.n_changed = changes;
-        record.friction_change = friction_change;
+        record.friction_change = changes == 0 ? friction_change : 0.;
         record.time = statistics.assembly_time + statistics.solve_time;
         std::string signature;
         for (const auto& pair : pairs)
@@ -411,7 +435,9 @@ namespace gearstiff::contact
           converged = true;
           break;
         }
-        if (++visited[signature] >= 3 && changes > 0)
+        if (changes == 0) // new bounds: a new Tresca problem
+          visited.clear();
+        else if (++visited[signature] >= 3)
           throw SolverFailure("contact active set",
                               "cycling: the same contact state recurred three times (load step " +
                                 std::to_string(step) + ", iteration " +

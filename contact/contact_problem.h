@@ -9,6 +9,8 @@
 //   slip:  the normal gap is zero (one DoF constrained), the tangential force is μ·λ_n against the
 //          slip direction, with λ_n from the previous iterate (a fixed point on the Coulomb bound,
 //          which contracts at a rate of order μ).
+// The Coulomb bound μ λ_n is held fixed while the stick/slip/open states of that Tresca problem
+// converge, then updated from the new λ_n (successive Tresca approximations).
 // Multipliers are the residual r = K u − f at the slave nodes; every linear system is a
 // symmetric positive definite solve. A node opens when its normal force turns tensile and closes
 // when it penetrates; a sticking node slips when |λ_τ − c·s| > μ λ_n with c = E/h, which only
@@ -161,7 +163,8 @@ namespace gearstiff::contact
       std::vector<SlaveNode<dim>> nodes;
       std::vector<NodeState> state;
       std::vector<dealii::Tensor<1, dim>> friction_direction; // unit, force on the slave
-      std::vector<double> friction_normal_force;              // N, λ_n used for slip forces
+      // N, the slip-force bound μ λ_n of the current Tresca subproblem; negative: not yet set.
+      std::vector<double> friction_bound;
     };
     struct Support
     {
@@ -179,9 +182,12 @@ namespace gearstiff::contact
 
     dealii::AffineConstraints<double> make_constraints(double load_factor) const;
     dealii::Vector<double> make_point_loads(double load_factor) const;
-    // Updates the states from the latest solution; returns the number of changed nodes and the
-    // relative change of the slip forces.
-    std::pair<unsigned int, double> update_states(const dealii::Vector<double>& residual);
+    // Updates the states from the latest solution with the friction bounds held fixed; returns
+    // the number of changed nodes.
+    unsigned int update_states(const dealii::Vector<double>& residual);
+    // Sets the friction bounds to μ λ_n of the latest solution; returns their largest change
+    // relative to the largest normal force.
+    double update_friction_bounds(const dealii::Vector<double>& residual);
     void collect_results(const dealii::Vector<double>& residual);
     // Relative tangential displacement (slave − master) of a node, m.
     dealii::Tensor<1, dim> relative_displacement(const SlaveNode<dim>& node,
