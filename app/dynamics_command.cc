@@ -268,6 +268,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     report.add_value("linear_solves", trajectory.cost.linear_solves, "-", "linear solves");
   report.add_value("integration_time", trajectory.cost.wall_time * 1e3, "ms",
                    "wall time of the integration");
+  report.add_value("integration_cpu_time", trajectory.cost.cpu_time * 1e3, "ms",
+                   "processor time of the integration");
 
   SweepResult sweep;
   if (p.sweep.points > 0)

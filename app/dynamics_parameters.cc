@@ -373,6 +373,7 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
   p.simulation.end_time = prm.get_double("simulated time");
   p.simulation.window_periods = prm.get_integer("window periods");
   p.output_interval = prm.get_double("output interval") * micrometre;
+  p.simulation.record_interval = p.output_interval;
   prm.leave_subsection();
   if (!(p.simulation.integrator.time_step > 0.))
     throw InputError("Simulation/time step", "must be positive");

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <sstream>
 
 namespace gearstiff::dynamics
@@ -65,6 +66,8 @@ public:
 
   void output(unsigned long index, double time, const double* angle, const double* velocity)
   {
+    if (settings.observer)
+      settings.observer(time, angle, velocity);
     if (index % settings.record_stride != 0)
       return;
     if (stored == trajectory.time.size())
@@ -375,6 +378,7 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
   }
 
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   switch (settings.type)
   {
   case IntegratorType::rk4:
@@ -387,6 +391,7 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
     run_adaptive(model, initial_angle, initial_velocity, settings, trajectory);
     break;
   }
+  trajectory.cost.cpu_time = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   trajectory.cost.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return trajectory;

@@ -11,6 +11,7 @@
 
 #include "dynamics/torsional_model.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,11 @@ struct IntegratorSettings
   double relative_tolerance = 1e-7; // [-] adaptive method: per-step error relative to state
   double hht_alpha = -0.05;         // [-] HHT-α parameter in [−1/3, 0]; 0 = trapezoidal rule
   bool allow_unstable_step = false; // run RK4 above the estimated stability limit anyway
-  unsigned int record_stride = 1;   // keep every n-th output point
+  unsigned int record_stride = 1;   // keep every n-th output point in the Trajectory
+  // Called at every output point (before the stride), so results that need every step can be
+  // accumulated without storing the whole trajectory (its memory traffic would cost more than
+  // the integration). Empty: not called.
+  std::function<void(double time, const double* angle, const double* velocity)> observer;
 };
 
 struct IntegrationCost
@@ -47,6 +52,8 @@ struct IntegrationCost
   double smallest_step = 0.;              // [s]
   double largest_step = 0.;               // [s]
   double wall_time = 0.;                  // [s]
+  // [s] processor time of this process during the run: on a shared machine the honest cost
+  double cpu_time = 0.;
 };
 
 struct Trajectory

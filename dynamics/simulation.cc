@@ -68,19 +68,27 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
                                          : std::numeric_limits<double>::infinity();
 
   const double mesh_period = 1. / model.mesh_position_rate(0);
+  const double h = settings.integrator.time_step; // output interval of every method
   result.window_automatic = settings.steady_state_start < 0.;
+  double requested_start = settings.steady_state_start;
   if (result.window_automatic)
     // Without damping nothing decays: skip a fixed 20 mesh periods and say so via decay_time.
-    result.window_start = std::isfinite(result.decay_time) ? result.decay_time : 20. * mesh_period;
-  else
-    result.window_start = settings.steady_state_start;
+    requested_start = std::isfinite(result.decay_time) ? result.decay_time : 20. * mesh_period;
   const double end_time = settings.end_time > 0.
                               ? settings.end_time
-                              : result.window_start + settings.window_periods * mesh_period;
-  if (!(end_time > result.window_start + settings.integrator.time_step))
+                              : requested_start + settings.window_periods * mesh_period;
+  if (!(end_time > requested_start + h))
     throw InputError("Simulation/steady state start",
-                     "the steady-state window [" + std::to_string(result.window_start) + ", " +
+                     "the steady-state window [" + std::to_string(requested_start) + ", " +
                          std::to_string(end_time) + "] s is empty; lengthen the simulated time");
+
+  // The window opens at the first output time after the requested start and spans whole periods
+  // of mesh 1, so the mean is a period mean and the mesh harmonics fall on FFT bins.
+  result.window_start = std::ceil(requested_start / h - 1e-9) * h;
+  const double whole_periods = std::floor((end_time - result.window_start) / mesh_period + 1e-9);
+  result.window_end =
+      whole_periods >= 1. ? result.window_start + whole_periods * mesh_period : end_time;
+  const double middle = 0.5 * (result.window_start + result.window_end);
 
   const unsigned int n = model.n_dofs();
   std::vector<double> angle(n, 0.), velocity(n, 0.);
@@ -88,36 +96,79 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
     angle = model.static_state(true).angle;
   result.initial_angle = angle;
 
-  IntegratorSettings integrator = settings.integrator;
-  integrator.end_time = end_time;
-  result.trajectory = integrate(model, angle, velocity, integrator);
-  const Trajectory& trajectory = result.trajectory;
-
-  const std::vector<double>& time = trajectory.time;
-  std::size_t first = 0;
-  while (first < time.size() && time[first] < result.window_start - 1e-12)
-    ++first;
-  const double available = time.back() - time[first];
-  const double whole_periods = std::floor(available / mesh_period + 1e-9);
-  result.window_start = time[first];
-  result.window_end = whole_periods >= 1. ? time[first] + whole_periods * mesh_period : time.back();
-  std::size_t last = first;
-  while (last + 1 < time.size() && time[last + 1] <= result.window_end + 1e-12)
-    ++last;
-  const double middle = 0.5 * (result.window_start + result.window_end);
-
-  double max_frequency = settings.max_spectrum_frequency;
-  if (max_frequency <= 0.)
-    max_frequency = 1.5 * trajectory.highest_frequency / (2. * M_PI);
-
-  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+  // K_v statistics at every step through the observer; only the window's forces are kept (for
+  // the spectrum) and the trajectory itself every `record_interval`.
+  const unsigned int n_meshes = model.n_meshes();
+  result.meshes.resize(n_meshes);
+  std::vector<double> window_time;
+  std::vector<std::vector<double>> window_force(n_meshes);
+  std::vector<double> scale(n_meshes), force_sum(n_meshes, 0.);
+  std::size_t mean_count = 0;
+  for (unsigned int m = 0; m < n_meshes; ++m)
   {
-    MeshResult mesh;
+    MeshResult& mesh = result.meshes[m];
     const Mesh& description = model.train().meshes[m];
     mesh.name = description.name.empty() ? "Mesh " + std::to_string(m + 1) : description.name;
     mesh.nominal_force = model.nominal_force(m);
     mesh.mesh_frequency = model.mesh_position_rate(m);
     mesh.initial_position = description.initial_position;
+    // K_v is relative to the nominal force; a mesh without load has no K_v.
+    const double nominal = std::abs(mesh.nominal_force);
+    scale[m] = nominal > 0. ? 1. / nominal : std::numeric_limits<double>::quiet_NaN();
+    mesh.kv_max = mesh.kv_max_first_half = mesh.kv_max_second_half =
+        -std::numeric_limits<double>::infinity();
+    mesh.kv_min = std::numeric_limits<double>::infinity();
+  }
+  const double tolerance = 1e-9 * h;
+  IntegratorSettings integrator = settings.integrator;
+  integrator.end_time = end_time;
+  integrator.record_stride =
+      settings.keep_time_series
+          ? std::max(1u, static_cast<unsigned int>(std::lround(settings.record_interval / h)))
+          : std::numeric_limits<unsigned int>::max();
+  integrator.observer = [&](double t, const double* phi, const double* omega)
+  {
+    if (t < result.window_start - tolerance || t > result.window_end + tolerance)
+      return;
+    const bool in_mean = t < result.window_end - 0.5 * h;
+    if (settings.keep_time_series)
+      window_time.push_back(t);
+    for (unsigned int m = 0; m < n_meshes; ++m)
+    {
+      MeshResult& mesh = result.meshes[m];
+      const double force = model.mesh_response(m, t, phi, omega).force;
+      const double kv = force * scale[m];
+      if (kv > mesh.kv_max)
+      {
+        mesh.kv_max = kv;
+        mesh.kv_max_time = t;
+      }
+      mesh.kv_min = std::min(mesh.kv_min, kv);
+      double& half = t < middle ? mesh.kv_max_first_half : mesh.kv_max_second_half;
+      half = std::max(half, kv);
+      if (in_mean)
+        force_sum[m] += force;
+      if (settings.keep_time_series)
+        window_force[m].push_back(force);
+    }
+    mean_count += in_mean;
+  };
+  result.trajectory = integrate(model, angle, velocity, integrator);
+  const Trajectory& trajectory = result.trajectory;
+
+  double max_frequency = settings.max_spectrum_frequency;
+  if (max_frequency <= 0.)
+    max_frequency = 1.5 * trajectory.highest_frequency / (2. * M_PI);
+  for (unsigned int m = 0; m < n_meshes; ++m)
+  {
+    MeshResult& mesh = result.meshes[m];
+    mesh.mean_force = force_sum[m] / std::max<std::size_t>(mean_count, 1);
+    result.kv_max = std::max(result.kv_max, mesh.kv_max);
+    if (!settings.keep_time_series)
+      continue;
+    force_spectrum(window_time, window_force[m], 0, result.window_start, result.window_end,
+                   max_frequency, mesh);
+    const std::vector<double>& time = trajectory.time;
     mesh.force.resize(time.size());
     mesh.stiffness.resize(time.size());
     mesh.deflection.resize(time.size());
@@ -129,41 +180,6 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
       mesh.stiffness[i] = response.stiffness;
       mesh.deflection[i] = response.deflection;
     }
-    // K_v is relative to the nominal force; a mesh without load has no K_v.
-    const double nominal = std::abs(mesh.nominal_force);
-    const double scale = nominal > 0. ? 1. / nominal : std::numeric_limits<double>::quiet_NaN();
-    mesh.kv_max = -std::numeric_limits<double>::infinity();
-    mesh.kv_min = std::numeric_limits<double>::infinity();
-    mesh.kv_max_first_half = mesh.kv_max_second_half = mesh.kv_max;
-    double sum = 0.;
-    // The window holds whole mesh periods: average over [start, end) with equal weights.
-    const std::size_t mean_last = last > first ? last - 1 : last;
-    for (std::size_t i = first; i <= last; ++i)
-    {
-      const double kv = mesh.force[i] * scale;
-      if (kv > mesh.kv_max)
-      {
-        mesh.kv_max = kv;
-        mesh.kv_max_time = time[i];
-      }
-      mesh.kv_min = std::min(mesh.kv_min, kv);
-      double& half = time[i] < middle ? mesh.kv_max_first_half : mesh.kv_max_second_half;
-      half = std::max(half, kv);
-      if (i <= mean_last)
-        sum += mesh.force[i];
-    }
-    mesh.mean_force = sum / (mean_last - first + 1);
-    if (settings.keep_time_series)
-      force_spectrum(time, mesh.force, first, result.window_start, result.window_end, max_frequency,
-                     mesh);
-    else
-    {
-      mesh.force.clear();
-      mesh.stiffness.clear();
-      mesh.deflection.clear();
-    }
-    result.kv_max = std::max(result.kv_max, mesh.kv_max);
-    result.meshes.push_back(std::move(mesh));
   }
   if (!settings.keep_time_series)
   {

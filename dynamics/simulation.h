@@ -33,6 +33,9 @@ struct SimulationSettings
   unsigned int window_periods = 40;   // [-] length of the automatic window in mesh periods
   double max_spectrum_frequency = 0.; // [Hz] spectrum up to here; 0: 1.5 × highest mode
   bool keep_time_series = true;       // false: only the summary (speed sweeps)
+  // [s] spacing of the stored trajectory and time series; 0: every output point. K_v, the mean
+  // force and the spectrum always use every step.
+  double record_interval = 0.;
 };
 
 struct MeshResult
