@@ -1,0 +1,159 @@
+// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair (gear-data.md
+// §1; dynamics/cai_stiffness.h) to FE contact results over the whole engagement A..E.
+//
+//   gearstiff cai -o out                                   scale only, published shape kept
+//   gearstiff cai --set "Cai calibration/fit shape=true"    the shape coefficients too
+//   mpirun -np 2 gearstiff cai -o out                       positions split over the ranks
+//
+// The FE samples of one pair come from a sweep over one base pitch: every pair in contact shares
+// the one deflection r_b1·Δφ, so the mesh stiffness splits into pair stiffnesses k_j = share_j·k
+// exactly as the load does, and the pairs at p and p + 1 cover the whole engagement 0 ≤ p < ε_α.
+// Writes cai_calibrated.prm, which `gearstiff dynamics cai_calibrated.prm` reads (Mesh 1, Mesh 2:
+// stiffness source cai, stiffness = fitted scale, cai shape = fitted shape).
+#include "app/command.h"
+#include "app/stiffness_parameters.h"
+#include "dynamics/cai_stiffness.h"
+#include "dynamics/mesh_stiffness.h"
+#include "kinematics/errors.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::app;
+
+// gear-data.md §1: the paper scales the Cai curve so one pair's peak equals k'_j (ANSYS).
+constexpr double ansys_single = 327.222e6; // N/m
+const std::string paper_source = "gear-data.md §1 (Reszuta & Drewniak 2015: Cai peak = k'_j)";
+
+std::string format(double value, int precision = 6)
+{
+  std::ostringstream s;
+  s.precision(precision);
+  s << value;
+  return s.str();
+}
+
+void declare_parameters(dealii::ParameterHandler& prm)
+{
+  declare_stiffness_parameters(prm);
+  prm.enter_subsection("Stiffness");
+  // One base pitch from A holds every engagement position once (pairs at p and p + 1).
+  prm.set("mode", "sweep");
+  prm.set("sweep positions", "16");
+  prm.leave_subsection();
+  prm.enter_subsection("Cai calibration");
+  prm.declare_entry("fit shape", "false", dealii::Patterns::Bool(),
+                    "also fit the shape coefficients c0, c1, c2 (else only the scale, the "
+                    "published shape 0.55, 1.8, -1.8 kept)");
+  prm.leave_subsection();
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  StiffnessParameters p = parse_stiffness_parameters(prm);
+  prm.enter_subsection("Cai calibration");
+  const bool fit_shape = prm.get_bool("fit shape");
+  prm.leave_subsection();
+  if (p.mode != "sweep")
+    throw InputError("Stiffness/mode", "the Cai calibration needs mode = sweep");
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
+  const double contact_ratio = pair.transverse_contact_ratio;
+  Report& report = context.report;
+
+  const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "cai");
+  std::vector<dynamics::StiffnessSample> samples;
+  for (const auto& [position, stiffness] : pair_stiffness_samples(sweep, contact_ratio))
+    samples.push_back({position, stiffness});
+  const dynamics::CaiFit fit = dynamics::fit_cai_parameters(
+      samples, contact_ratio, dynamics::StiffnessSampleKind::single_pair, fit_shape);
+  const dynamics::CaiParameters paper = dynamics::cai_published_parameters(ansys_single);
+
+  report.add_text("samples", std::to_string(samples.size()) +
+                                 " single-pair FE samples k_j = share_j·k from " +
+                                 std::to_string(sweep.positions.size()) +
+                                 " positions over one base pitch (engagement 0 ≤ p < ε_α = " +
+                                 format(contact_ratio, 5) + ")");
+  report.add_text("fit", fit_shape ? "scale and shape (least squares, shape peak 1)"
+                                   : "scale only (published Cai shape 0.55, 1.8, -1.8)");
+  if (p.published_reference)
+    report.add_compared_value("cai_scale", fit.parameters.scale / 1e6, ansys_single / 1e6, "N/µm",
+                              "calibrated Cai scale (one pair's peak stiffness)", paper_source);
+  else
+    report.add_value("cai_scale", fit.parameters.scale / 1e6, "N/µm",
+                     "calibrated Cai scale (one pair's peak stiffness)");
+  report.add_value("cai_c0", fit.parameters.shape[0], "-", "shape c0");
+  report.add_value("cai_c1", fit.parameters.shape[1], "-", "shape c1");
+  report.add_value("cai_c2", fit.parameters.shape[2], "-", "shape c2");
+  report.add_value("fit_rms_residual", fit.rms_residual / 1e6, "N/µm",
+                   "rms of FE minus calibrated curve");
+  report.add_value("fit_max_residual", fit.max_residual / 1e6, "N/µm",
+                   "largest |FE − calibrated curve|");
+  report.add_value("fit_relative_rms", fit.rms_residual / fit.parameters.scale, "-",
+                   "rms residual / scale");
+  double mean = 0.;
+  for (const auto& r : sweep.positions)
+    mean += r.mesh_stiffness / sweep.positions.size();
+  report.add_value("fe_mean_mesh_stiffness", mean / 1e6, "N/µm", "FE mean mesh stiffness");
+  report.add_value(
+      "cai_mean_mesh_stiffness",
+      dynamics::MeshStiffness::cai(fit.parameters, "cai").mean_stiffness(contact_ratio) / 1e6,
+      "N/µm", "mean mesh stiffness of the calibrated Cai curve");
+  report.add_value("paper_cai_mean_mesh_stiffness",
+                   dynamics::MeshStiffness::cai(paper, "cai").mean_stiffness(contact_ratio) / 1e6,
+                   "N/µm", "mean mesh stiffness of the paper-scaled Cai curve");
+  report.add_value("sweep_wall_time", sweep.wall_time, "s", "wall time of the FE sweep");
+
+  ReportTable& points = report.add_table(
+      "cai_samples", {"roll_position", "fe_pair_stiffness", "calibrated_cai", "paper_cai"},
+      {"base pitches", "N/um", "N/um", "N/um"});
+  for (const auto& s : samples)
+    points.add_row({s.position, s.stiffness / 1e6,
+                    dynamics::cai_pair_stiffness(fit.parameters, s.position / contact_ratio) / 1e6,
+                    dynamics::cai_pair_stiffness(paper, s.position / contact_ratio) / 1e6});
+  ReportTable& curve =
+      report.add_table("cai_curves", {"roll_position", "calibrated_cai", "paper_cai"},
+                       {"base pitches", "N/um", "N/um"});
+  for (unsigned int i = 0; i <= 60; ++i)
+  {
+    const double s = i / 60.;
+    curve.add_row({s * contact_ratio, dynamics::cai_pair_stiffness(fit.parameters, s) / 1e6,
+                   dynamics::cai_pair_stiffness(paper, s) / 1e6});
+  }
+
+  if (context.writes_files() && context.is_root())
+  {
+    std::ofstream out(context.output_file(
+        "cai_calibrated.prm", "calibrated Cai parameters for `gearstiff dynamics` (both meshes)"));
+    out << "# Cai curve calibrated to FE single-pair stiffness (gearstiff cai, " << samples.size()
+        << " samples, rms residual " << format(fit.rms_residual / 1e3)
+        << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n";
+    for (const std::string mesh : {"Mesh 1", "Mesh 2"})
+      out << "subsection " << mesh << "\n  set stiffness source = cai\n"
+          << "  set stiffness = " << format(fit.parameters.scale / 1e3, 10) << "\n"
+          << "  set cai shape = " << format(fit.parameters.shape[0], 10) << ", "
+          << format(fit.parameters.shape[1], 10) << ", " << format(fit.parameters.shape[2], 10)
+          << "\nend\n";
+    out.close();
+    const std::string sample_csv = temporary_csv(report, points, "cai-samples");
+    const std::string curve_csv = temporary_csv(report, curve, "cai-curves");
+    context.plot("plot_cai.py", {sample_csv, curve_csv}, "cai_calibration.png",
+                 "FE pair stiffness, calibrated and paper-scaled Cai curves");
+    std::filesystem::remove(sample_csv);
+    std::filesystem::remove(curve_csv);
+  }
+}
+
+const CommandRegistration registration(Command{
+    "cai", "calibrate the Cai pair-stiffness curve to FE contact results (writes dynamics input)",
+    "Runs an FE stiffness sweep over one base pitch (see `gearstiff stiffness`), splits the mesh\n"
+    "stiffness into the pairs' stiffnesses by their load shares (one deflection, so k_j =\n"
+    "share_j·k), and fits the Cai curve of gear-data.md §1 (scale, optionally its shape) by\n"
+    "least squares (dynamics module). Writes cai_calibrated.prm for `gearstiff dynamics` and a\n"
+    "chart of FE points, calibrated and paper-scaled Cai curves.",
+    declare_parameters, run});
+} // namespace

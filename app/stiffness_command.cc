@@ -1,0 +1,196 @@
+// `gearstiff stiffness [case.prm]`: gear mesh stiffness from a frictional FE contact solve under
+// the published load case of gear-data.md §1 (Reszuta & Drewniak 2015): torque T1 on the pinion,
+// pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly T1.
+//
+//   gearstiff stiffness                                       single-pair position (pitch point)
+//   gearstiff stiffness --set "Stiffness/mode=double"          first double-contact zone
+//   gearstiff stiffness --set "Stiffness/mode=sweep" -o out    k(θ) over one base pitch, 32
+//   positions mpirun -np 2 gearstiff stiffness sweep.prm -o out          the sweep's positions
+//   split over ranks gearstiff stiffness --set "Finite elements/Planar model=plane stress"
+//
+// Files with -o: the sweep table (CSV), k(x) for the dynamics command (stiffness_table.prm),
+// the k(θ) chart (PNG), VTU of every position with "Stiffness/write vtu=true".
+#include "app/command.h"
+#include "app/stiffness_parameters.h"
+#include "kinematics/errors.h"
+#include "kinematics/iso_stiffness.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::app;
+
+constexpr double degree = M_PI / 180.;
+const std::string ansys_source = "gear-data.md §1 (Reszuta & Drewniak 2015, ANSYS)";
+// gear-data.md §1: k'_j = 327 222 N/mm, k'_d = 497 521 N/mm.
+constexpr double ansys_single = 327.222e6; // N/m
+constexpr double ansys_double = 497.521e6; // N/m
+
+std::string format(double value, int precision = 4)
+{
+  std::ostringstream s;
+  s.precision(precision);
+  s << value;
+  return s.str();
+}
+
+// Which position a mode solves, and why it stands for that mode.
+std::string position_reason(const std::string& mode, const kinematics::GearPairGeometry& pair,
+                            const contact::GearMeshStiffnessResult& r)
+{
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  const auto mm = [](double v) { return format(v * 1e3, 5) + " mm"; };
+  const std::string zone = "single-contact zone [B, D] = [" + mm(pair.single_contact_start()) +
+                           ", " + mm(pair.single_contact_end()) + "] from T1";
+  if (mode == "single")
+  {
+    const bool at_pitch = std::abs(r.reference_position - pair.pitch_point) < 1e-12;
+    return (at_pitch ? "the pitch point C (" + mm(pair.pitch_point) + " from T1, roll angle " +
+                           format(r.pinion_roll_angle / degree, 5) + "°) lies in the " + zone +
+                           ": one pair carries the whole load, and the friction force (which "
+                           "reverses at C) has no moment there"
+                     : "the middle of the " + zone + " (the pitch point lies outside it)");
+  }
+  if (mode == "double")
+    return "the middle of the first double-contact zone [A, B] (" + mm(r.reference_position) +
+           " from T1); the second pair sits one base pitch further, in the middle of [D, E]";
+  return "roll angle " + format(r.pinion_roll_angle / degree, 6) + "° (" +
+         mm(r.pinion_roll_angle * r_b1) + " from T1)";
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  const StiffnessParameters p = parse_stiffness_parameters(prm);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
+  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
+  Report& report = context.report;
+
+  report.add_text("load case",
+                  "T1 = " + format(p.settings.pinion_torque) +
+                      " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
+                      "wheel bore fixed, friction μ = " +
+                      format(p.settings.contact.friction_coefficient) +
+                      "; k = T1/(r_b1²·Δφ) (gear-data.md §1)");
+  const bool planar = p.settings.scene.mesh.dimension == 2;
+  report.add_text(
+      "model",
+      std::string(planar ? fem::to_string(p.settings.elasticity.model) + " 2D"
+                         : std::string("3D")) +
+          ", Q" + std::to_string(p.settings.elasticity.degree) +
+          ", E = " + format(p.settings.material.youngs_modulus / 1e9) +
+          " GPa, ν = " + format(p.settings.material.poisson_ratio) + " (assumed: not published)" +
+          (planar
+               ? ", thickness = common face width " + format(pair.common_face_width * 1e3) + " mm"
+               : std::string("")) +
+          ", " + std::to_string(p.settings.scene.pinion_teeth_modelled) + "/" +
+          std::to_string(p.settings.scene.wheel_teeth_modelled) + " teeth modelled, " +
+          (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") + " rims");
+  report.add_value("pinion_base_radius", 0.5 * pair.pinion.base_diameter * 1e3, "mm",
+                   "r_b1 (gear-data.md §1 states 24.667 mm)");
+  report.add_value("iso_single_stiffness", iso.single_per_width / 1e6, "N/µm",
+                   "ISO 6336-1 method B c'·b (gear-data.md §5: ≈ 330 N/µm)");
+  report.add_value("iso_mesh_stiffness", iso.mesh_alpha_per_width / 1e6, "N/µm",
+                   "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
+
+  if (p.mode != "sweep")
+  {
+    context.pcout << "stiffness: solving the " << p.mode << " position on "
+                  << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
+                  << std::endl;
+    const contact::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
+    report.add_text("position", position_reason(p.mode, pair, r));
+    const double reference = p.mode == "single" ? ansys_single : ansys_double;
+    const bool compare = p.published_reference && p.mode != "roll angle";
+    if (compare)
+      report.add_compared_value("mesh_stiffness", r.mesh_stiffness / 1e6, reference / 1e6, "N/µm",
+                                p.mode == "single" ? "single-pair mesh stiffness k'_j"
+                                                   : "double-pair mesh stiffness k'_d",
+                                ansys_source);
+    else
+      report.add_value("mesh_stiffness", r.mesh_stiffness / 1e6, "N/µm",
+                       "mesh stiffness T1/(r_b1²·Δφ)");
+    report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100.,
+                     "%", "k against ISO 6336-1 c'·b");
+    report_stiffness_position(report, r, "", p.mode);
+    context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
+                  << " s (" << r.n_dofs << " DoFs)" << std::endl;
+    return;
+  }
+
+  const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
+  const ReportTable& table = add_stiffness_sweep_table(report, sweep, "stiffness_sweep");
+  double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
+  for (const auto& r : sweep.positions)
+  {
+    sum += r.mesh_stiffness;
+    lowest = std::min(lowest, r.mesh_stiffness);
+    highest = std::max(highest, r.mesh_stiffness);
+    worst_oracle = std::max(
+        worst_oracle, std::abs(r.torque_ratio / (r.wheel_base_radius / r.pinion_base_radius) - 1.));
+    cost += r.total_time;
+  }
+  const double mean = sum / sweep.positions.size();
+  report.add_value("positions", sweep.positions.size(), "-", "positions in the sweep");
+  report.add_value("mean_stiffness", mean / 1e6, "N/µm",
+                   "mean of k over the positions (a mesh-period mean for a 1-pitch sweep)");
+  report.add_value("min_stiffness", lowest / 1e6, "N/µm", "smallest k (single-contact zone)");
+  report.add_value("max_stiffness", highest / 1e6, "N/µm", "largest k (double-contact zone)");
+  if (p.published_reference)
+  {
+    report.add_compared_value("min_vs_ansys_single", lowest / 1e6, ansys_single / 1e6, "N/µm",
+                              "smallest k against the ANSYS single-pair value", ansys_source);
+    report.add_compared_value("max_vs_ansys_double", highest / 1e6, ansys_double / 1e6, "N/µm",
+                              "largest k against the ANSYS double-pair value", ansys_source);
+  }
+  report.add_value("mean_vs_iso", (mean / iso.mesh_alpha_per_width - 1.) * 100., "%",
+                   "mean k against ISO 6336-1 c_γα·b");
+  report.add_value("torque_ratio_deviation", worst_oracle, "-",
+                   "largest | |T_wheel/T1| / (r_b2/r_b1) − 1 | (0 without friction)");
+  report.add_value("sweep_ranks", sweep.n_ranks, "-", "MPI ranks sharing the positions");
+  report.add_value("sweep_cpu_time", cost, "s", "sum of the positions' wall times");
+  report.add_value("sweep_wall_time", sweep.wall_time, "s", "wall time of the sweep");
+
+  if (context.writes_files() && context.is_root())
+  {
+    {
+      std::ofstream out(context.output_file(
+          "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)"));
+      out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
+          << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
+          << "# Use: gearstiff dynamics stiffness_table.prm\n";
+      const std::string text = dynamics_stiffness_table(sweep);
+      for (const std::string mesh : {"Mesh 1", "Mesh 2"})
+        out << "subsection " << mesh << "\n  set stiffness source = table\n"
+            << "  set stiffness table = " << text << "\nend\n";
+    }
+    const std::string csv = temporary_csv(report, table, "stiffness-sweep");
+    context.plot("plot_stiffness.py",
+                 {csv, format(p.published_reference ? ansys_single / 1e6 : 0., 8),
+                  format(p.published_reference ? ansys_double / 1e6 : 0., 8),
+                  format(iso.mesh_alpha_per_width / 1e6, 8), format(mean / 1e6, 8)},
+                 "stiffness_sweep.png",
+                 "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean");
+    std::filesystem::remove(csv);
+  }
+}
+
+const CommandRegistration registration(Command{
+    "stiffness",
+    "gear mesh stiffness from frictional FE contact: single, double, roll angle or k(θ) sweep",
+    "Builds the gear-pair scene (geometry module), solves the frictional contact (dual mortar,\n"
+    "active set) with the published load case of gear-data.md §1: torque T1 on the pinion\n"
+    "(bore free only to rotate), wheel bore fixed, μ = 0.01, and reports the mesh stiffness\n"
+    "k = T1/(r_b1²·Δφ) at exactly T1 (torque-controlled), the transmission error, the load\n"
+    "share of every tooth pair, the largest contact pressure and root stress, and the cost.\n"
+    "Modes: single (pitch point in the single-contact zone), double (first double-contact\n"
+    "zone), roll angle (any position), sweep (N positions over one or more base pitches,\n"
+    "distributed over the MPI ranks: mpirun -np 2 gearstiff stiffness ...). Compared with the\n"
+    "ANSYS values k'_j = 327.2, k'_d = 497.5 N/µm and ISO 6336-1 c'·b.",
+    declare_stiffness_parameters, run});
+} // namespace

@@ -1,0 +1,409 @@
+#include "app/stiffness_parameters.h"
+
+#include "app/kinematics_parameters.h"
+#include "kinematics/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace gearstiff::app
+{
+namespace
+{
+using dealii::ParameterHandler;
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+
+constexpr double mm = 1e-3;
+constexpr double degree = M_PI / 180.;
+
+std::string number(double value)
+{
+  std::ostringstream s;
+  s.precision(10);
+  s << value;
+  return s.str();
+}
+} // namespace
+
+void declare_gear_scene_parameters(ParameterHandler& prm,
+                                   const geometry::GearPairSceneSpec& defaults)
+{
+  prm.enter_subsection("Gear pair scene");
+  prm.declare_entry("pinion teeth modelled", std::to_string(defaults.pinion_teeth_modelled),
+                    Integer(1), "pinion teeth in the scene, centred on the contacts [-]");
+  prm.declare_entry("wheel teeth modelled", std::to_string(defaults.wheel_teeth_modelled),
+                    Integer(1), "wheel teeth in the scene, centred on the contacts [-]");
+  prm.declare_entry("pinion bore radius", number(defaults.pinion_bore_radius / mm), Double(0.),
+                    "pinion bore radius [mm]; 0 = half of Gear pair/Pinion/bore diameter");
+  prm.declare_entry("wheel bore radius", number(defaults.wheel_bore_radius / mm), Double(0.),
+                    "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
+  prm.declare_entry("rim", defaults.rim == geometry::RimModel::full ? "full" : "sector",
+                    Selection("sector|full"),
+                    "sector: rim of the modelled teeth only, cut radially (cut faces get ids "
+                    "5/6, free); full: whole rim and bore, the other teeth removed");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("dimension", std::to_string(defaults.mesh.dimension), Integer(2, 3),
+                    "2: quadrilaterals in the transverse plane; 3: hexahedra over the face "
+                    "width");
+  prm.declare_entry("layers", std::to_string(defaults.mesh.layers), Integer(1, 1000),
+                    "hexahedron layers across the face width [-] (3D)");
+  prm.declare_entry("contact size", number(defaults.mesh.contact_size / mm), Double(0.),
+                    "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest "
+                    "Hertz half-width");
+  prm.declare_entry("fine radius", number(defaults.mesh.fine_radius / mm), Double(0.),
+                    "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the "
+                    "largest Hertz half-width");
+  prm.declare_entry("growth rate", number(defaults.mesh.growth_rate), Double(0.01, 1.),
+                    "cell size increase per unit distance beyond the fine radius [-]");
+  prm.declare_entry("body size", number(defaults.mesh.body_size / mm), Double(0.),
+                    "cell size in the teeth away from contact [mm]");
+  prm.declare_entry("rim size", number(defaults.mesh.rim_size / mm), Double(0.),
+                    "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size");
+  prm.leave_subsection();
+}
+
+void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneSpec& spec)
+{
+  prm.enter_subsection("Gear pair scene");
+  spec.pinion_teeth_modelled = prm.get_integer("pinion teeth modelled");
+  spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
+  spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
+  spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
+  spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Mesh");
+  spec.mesh.dimension = prm.get_integer("dimension");
+  spec.mesh.layers = prm.get_integer("layers");
+  spec.mesh.contact_size = prm.get_double("contact size") * mm;
+  spec.mesh.fine_radius = prm.get_double("fine radius") * mm;
+  spec.mesh.growth_rate = prm.get_double("growth rate");
+  spec.mesh.body_size = prm.get_double("body size") * mm;
+  spec.mesh.rim_size = prm.get_double("rim size") * mm;
+  prm.leave_subsection();
+}
+
+void declare_stiffness_parameters(ParameterHandler& prm)
+{
+  declare_gear_pair_parameters(prm);
+  declare_gear_scene_parameters(prm, contact::default_stiffness_scene());
+
+  prm.enter_subsection("Finite elements");
+  fem::ElasticityParameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Linear solver");
+  fem::LinearSolverParameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Contact");
+  contact::ContactParameters::declare_parameters(prm);
+  // gear-data.md §1: the ANSYS model used μ = 0.01 between the teeth.
+  prm.set("Friction coefficient", "0.01");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Stiffness");
+  prm.declare_entry("mode", "single", Selection("single|double|roll angle|sweep"),
+                    "single: the pitch point if it lies in the single-contact zone, else that "
+                    "zone's middle; double: middle of the first double-contact zone; roll "
+                    "angle: the 'pinion roll angle' below; sweep: k(θ) at 'sweep positions' "
+                    "positions over 'sweep base pitches'");
+  prm.declare_entry("pinion roll angle", "20", Double(),
+                    "mode roll angle: pinion roll angle ℓ/r_b1 of the reference pair, ℓ from "
+                    "T1 along the line of action [deg]; must lie on the path of contact");
+  prm.declare_entry("pinion torque", "49.4", Double(),
+                    "T1 on the pinion [N·m], > 0 (drives the loaded flanks into contact); "
+                    "gear-data.md §1: 7.5 kW at 1450 rpm");
+  prm.declare_entry("Young's modulus", "210", Double(0.),
+                    "E of both gears [GPa] (steel; not published in gear-data.md §1)");
+  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "ν of both gears [-]");
+  prm.declare_entry("sweep start", "-1", Double(),
+                    "pinion roll angle of the first sweep interval's start [deg]; negative: "
+                    "the start of active contact A");
+  prm.declare_entry("sweep base pitches", "1", Double(),
+                    "span of the sweep in transverse base pitches [-] (1: one mesh period)");
+  prm.declare_entry("sweep positions", "32", Integer(),
+                    "N, positions of the sweep [-], at the middles of N equal intervals");
+  prm.declare_entry("write vtu", "false", Bool(),
+                    "write VTU/PVTU of every solved position into the -o folder");
+  prm.declare_entry("published reference", "true", Bool(),
+                    "print the ANSYS values of gear-data.md §1 (Reszuta & Drewniak 2015) "
+                    "beside ours; set false for other pairs");
+  prm.leave_subsection();
+}
+
+StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
+{
+  StiffnessParameters p;
+  contact::GearMeshStiffnessSettings& s = p.settings;
+  s.scene = contact::default_stiffness_scene();
+  s.scene.pair = parse_gear_pair_parameters(prm);
+  parse_gear_scene_parameters(prm, s.scene);
+
+  prm.enter_subsection("Finite elements");
+  s.elasticity.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Linear solver");
+  s.linear_solver.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Contact");
+  s.contact.parse_parameters(prm);
+  prm.leave_subsection();
+
+  prm.enter_subsection("Stiffness");
+  p.mode = prm.get("mode");
+  s.scene.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
+  s.pinion_torque = prm.get_double("pinion torque");
+  s.material.youngs_modulus = prm.get_double("Young's modulus") * 1e9;
+  s.material.poisson_ratio = prm.get_double("Poisson's ratio");
+  const double start = prm.get_double("sweep start");
+  p.sweep.base_pitches = prm.get_double("sweep base pitches");
+  const long positions = prm.get_integer("sweep positions");
+  p.write_vtu = prm.get_bool("write vtu");
+  p.published_reference = prm.get_bool("published reference");
+  prm.leave_subsection();
+
+  if (!(s.pinion_torque > 0.))
+    throw InputError(contact::stiffness_parameter::torque,
+                     "must be positive: a torque <= 0 turns the pinion away from the wheel and "
+                     "separates the loaded flanks (no contact, no stiffness)");
+  if (positions <= 0)
+    throw InputError(contact::stiffness_parameter::positions,
+                     "must be at least 1 (a sweep with zero positions computes nothing)");
+  p.sweep.positions = static_cast<unsigned int>(positions);
+  if (!(p.sweep.base_pitches > 0.))
+    throw InputError(contact::stiffness_parameter::pitches, "must be positive");
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(s.scene.pair);
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  if (start >= 0.)
+    p.sweep.start_position = start * degree * r_b1;
+  // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
+  const double position = s.scene.pinion_roll_angle * r_b1;
+  if (p.mode == "roll angle" &&
+      (position < pair.contact_start - 1e-12 || position > pair.contact_end + 1e-12))
+    throw InputError(
+        "Stiffness/pinion roll angle",
+        "no tooth pair is in contact at " + std::to_string(s.scene.pinion_roll_angle / degree) +
+            "°: the path of contact spans " + std::to_string(pair.contact_start / r_b1 / degree) +
+            "° to " + std::to_string(pair.contact_end / r_b1 / degree) + "°");
+  if (p.mode != "sweep")
+    s.scene.position = p.mode;
+  return p;
+}
+
+namespace
+{
+// A scratch path in the temporary folder; with `shared` every rank gets rank 0's name (one
+// distributed solve reads one file), otherwise each rank its own.
+std::string scratch_stem(MPI_Comm communicator, const std::string& name, bool shared)
+{
+  long id = static_cast<long>(getpid());
+  if (shared)
+    MPI_Bcast(&id, 1, MPI_LONG, 0, communicator);
+  return (std::filesystem::temp_directory_path() / ("gearstiff-" + name + "-" + std::to_string(id)))
+      .string();
+}
+
+// VTU files go straight into vtu/ of the staging folder; registering each position's PVTU
+// record also yields the folder.
+std::string vtu_directory(const StiffnessParameters& p, CommandContext& context,
+                          const std::vector<std::string>& bases)
+{
+  if (!p.write_vtu || !context.writes_files())
+    return "";
+  std::string directory;
+  for (const auto& base : bases)
+    directory =
+        std::filesystem::path(context.output_file("vtu/" + base + ".pvtu",
+                                                  "displacement, stress, contact state (VTU)"))
+            .parent_path()
+            .string();
+  return directory;
+}
+
+std::string format(double value, int precision = 4)
+{
+  std::ostringstream s;
+  s.precision(precision);
+  s << value;
+  return s.str();
+}
+} // namespace
+
+contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
+                                                          CommandContext& context,
+                                                          const std::string& label)
+{
+  contact::GearMeshStiffnessSettings settings = p.settings;
+  settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
+  settings.output_directory = vtu_directory(p, context, {label});
+  settings.output_base = label;
+  contact::GearMeshStiffnessResult result;
+  try
+  {
+    if (settings.scene.mesh.dimension == 3)
+      result = contact::GearMeshStiffness<3>(context.mpi_communicator, settings).run();
+    else
+      result = contact::GearMeshStiffness<2>(context.mpi_communicator, settings).run();
+  }
+  catch (...)
+  {
+    if (context.is_root())
+      std::filesystem::remove(settings.scene_file);
+    throw;
+  }
+  MPI_Barrier(context.mpi_communicator);
+  if (context.is_root())
+    std::filesystem::remove(settings.scene_file);
+  return result;
+}
+
+contact::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
+                                                    CommandContext& context,
+                                                    const std::string& label)
+{
+  contact::GearMeshStiffnessSettings settings = p.settings;
+  std::vector<std::string> bases;
+  for (unsigned int i = 0; i < p.sweep.positions; ++i)
+    bases.push_back(label + "_" + dealii::Utilities::int_to_string(i, 3));
+  settings.output_directory = vtu_directory(p, context, bases);
+  settings.output_base = label;
+  const std::string stem = scratch_stem(context.mpi_communicator, label, false);
+  const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+  context.pcout << label << ": " << p.sweep.positions << " positions over " << p.sweep.base_pitches
+                << " base pitch(es) on " << ranks << " rank(s)" << std::endl;
+  const auto progress = [&context, &label](const std::string& line)
+  { context.pcout << label << ": " << line << std::endl; };
+  const contact::StiffnessSweepResult sweep =
+      settings.scene.mesh.dimension == 3
+          ? contact::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep, stem, progress)
+          : contact::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep, stem,
+                                        progress);
+  return sweep;
+}
+
+void report_stiffness_position(Report& report, const contact::GearMeshStiffnessResult& r,
+                               const std::string& prefix, const std::string& label)
+{
+  report.add_value(prefix + "pinion_roll_angle", r.pinion_roll_angle / degree, "deg",
+                   label + ": pinion roll angle ℓ/r_b1 of the reference pair");
+  report.add_value(prefix + "mesh_position", r.mesh_position, "-",
+                   label + ": reference pair's roll position from A (base pitches)");
+  report.add_value(
+      prefix + "loaded_pairs", r.loaded_pairs, "-",
+      label + ": tooth pairs carrying load (kinematic: " + std::to_string(r.kinematic_pairs) + ")");
+  report.add_value(prefix + "pinion_rotation", r.pinion_rotation * 1e6, "µrad",
+                   label + ": pinion rotation Δφ under T1");
+  report.add_value(prefix + "transmission_error", r.transmission_error * 1e6, "µm",
+                   label + ": loaded transmission error r_b1·Δφ");
+  report.add_value(prefix + "torque_ratio", r.torque_ratio, "-",
+                   label + ": |T_wheel/T1| (r_b2/r_b1 = " +
+                       format(r.wheel_base_radius / r.pinion_base_radius, 6) +
+                       " without friction)");
+  for (const auto& pair : r.pairs)
+    report.add_value(
+        prefix + "load_share_pair_" +
+            (pair.pair < 0 ? "m" + std::to_string(-pair.pair) : std::to_string(pair.pair)),
+        pair.load_share, "-",
+        label + ": load share of tooth pair " + std::to_string(pair.pair) + " (at " +
+            format(pair.position * 1e3, 5) + " mm from T1)");
+  report.add_value(prefix + "max_contact_pressure", r.max_contact_pressure / 1e6, "MPa",
+                   label + ": largest contact pressure");
+  report.add_value(prefix + "pinion_root_stress", r.pinion_root_stress / 1e6, "MPa",
+                   label + ": largest first principal stress on the pinion fillets");
+  report.add_value(prefix + "wheel_root_stress", r.wheel_root_stress / 1e6, "MPa",
+                   label + ": largest first principal stress on the wheel fillets");
+  report.add_value(prefix + "cells", r.n_cells, "-", label + ": cells");
+  report.add_value(prefix + "dofs", r.n_dofs, "-", label + ": degrees of freedom");
+  report.add_value(prefix + "contact_size", r.contact_size * 1e3, "mm",
+                   label + ": h_c, cell size at the contacts");
+  report.add_value(prefix + "active_set_iterations", r.active_set_iterations, "-",
+                   label + ": contact active-set iterations (linear solves)");
+  report.add_value(prefix + "time_scene", r.scene_time, "s", label + ": scene and meshing");
+  report.add_value(prefix + "time_setup", r.setup_time, "s",
+                   label + ": DoFs, stiffness matrix, mortar coupling");
+  report.add_value(prefix + "time_solve", r.solve_time, "s",
+                   label + ": contact iterations (assembly + solves)");
+  report.add_value(prefix + "time_total", r.total_time, "s", label + ": wall time");
+}
+
+const ReportTable& add_stiffness_sweep_table(Report& report,
+                                             const contact::StiffnessSweepResult& sweep,
+                                             const std::string& name)
+{
+  ReportTable& table = report.add_table(
+      name,
+      {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness", "transmission_error",
+       "share_pair_m1", "share_pair_0", "share_pair_p1", "max_pressure", "pinion_root_stress",
+       "wheel_root_stress", "torque_ratio", "iterations", "dofs", "time", "rank"},
+      {"-", "deg", "-", "-", "N/um", "um", "-", "-", "-", "MPa", "MPa", "MPa", "-", "-", "-", "s",
+       "-"});
+  for (unsigned int i = 0; i < sweep.positions.size(); ++i)
+  {
+    const contact::GearMeshStiffnessResult& r = sweep.positions[i];
+    double share[3] = {0., 0., 0.};
+    for (const auto& pair : r.pairs)
+      if (pair.pair >= -1 && pair.pair <= 1)
+        share[pair.pair + 1] = pair.load_share;
+    table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
+                   double(r.loaded_pairs), r.mesh_stiffness / 1e6, r.transmission_error * 1e6,
+                   share[0], share[1], share[2], r.max_contact_pressure / 1e6,
+                   r.pinion_root_stress / 1e6, r.wheel_root_stress / 1e6, r.torque_ratio,
+                   double(r.active_set_iterations), double(r.n_dofs), r.total_time,
+                   double(sweep.rank_of_position[i])});
+  }
+  return table;
+}
+
+std::string temporary_csv(const Report& report, const ReportTable& table, const std::string& name)
+{
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("gearstiff-" + name + "-" + std::to_string(getpid()) + ".csv"))
+                               .string();
+  std::ofstream out(path);
+  report.write_table_csv(table, out);
+  return path;
+}
+
+std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep)
+{
+  std::vector<std::pair<double, double>> samples; // x [base pitches], k [N/mm]
+  for (const auto& r : sweep.positions)
+    samples.emplace_back(r.mesh_position - std::floor(r.mesh_position), r.mesh_stiffness / 1e3);
+  std::sort(samples.begin(), samples.end());
+  std::ostringstream text;
+  text.precision(10);
+  double last = -1.;
+  for (const auto& [x, k] : samples)
+  {
+    if (x - last < 1e-9)
+      continue;
+    text << (last < 0. ? "" : ", ") << x << ":" << k;
+    last = x;
+  }
+  return text.str();
+}
+
+std::vector<std::pair<double, double>>
+pair_stiffness_samples(const contact::StiffnessSweepResult& sweep, double contact_ratio)
+{
+  std::vector<std::pair<double, double>> samples;
+  for (const auto& r : sweep.positions)
+    for (const auto& pair : r.pairs)
+    {
+      const double position = r.mesh_position + pair.pair;
+      if (pair.load_share > 1e-6 && position >= 0. && position < contact_ratio)
+        samples.emplace_back(position, pair.load_share * r.mesh_stiffness);
+    }
+  std::sort(samples.begin(), samples.end());
+  return samples;
+}
+} // namespace gearstiff::app

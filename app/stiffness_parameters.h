@@ -1,0 +1,79 @@
+// Parameter-file form of the FE mesh-stiffness analysis (contact/mesh_stiffness.h), shared by the
+// `stiffness`, `cai` and `run` commands: the gear pair (app/kinematics_parameters.h), the scene
+// (subsections "Gear pair scene" and "Mesh", mm and degrees), the FE model ("Finite elements",
+// "Linear solver", "Contact" of fem/ and contact/) and the load case and sweep ("Stiffness").
+// Defaults: the split-path pair of gear-data.md §1 under its published load case (T1 = 49.4 N·m,
+// μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
+// accuracy-versus-cost study (docs/accuracy.md).
+#pragma once
+
+#include "contact/mesh_stiffness.h"
+#include "contact/mesh_stiffness_sweep.h"
+#include "geometry/scene_gear_pair.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+
+namespace gearstiff::app
+{
+// Subsections "Gear pair scene" (teeth modelled, bores, rim) and "Mesh" (sizes). The position
+// and the load and material of the Hertz size estimate are not declared here: the analysis
+// that meshes the scene supplies them. `defaults` gives the default values.
+void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
+                                   const geometry::GearPairSceneSpec& defaults);
+// Fills every member except pair, position, pinion_roll_angle, pinion_torque, young_modulus
+// and poisson_ratio.
+void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
+
+struct StiffnessParameters
+{
+  contact::GearMeshStiffnessSettings settings; // SI, scene_file left empty
+  std::string mode = "single";                 // single | double | roll angle | sweep
+  contact::StiffnessSweepSpec sweep;
+  bool write_vtu = false;
+  bool published_reference = true; // compare with gear-data.md §1 (split-path pair only)
+};
+
+// Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".
+void declare_stiffness_parameters(dealii::ParameterHandler& prm);
+StiffnessParameters parse_stiffness_parameters(dealii::ParameterHandler& prm);
+} // namespace gearstiff::app
+
+// Steps shared by the stiffness, cai and run commands (they live here because app/ builds only
+// *_command.cc and *_parameters.cc files).
+#include "app/command.h"
+
+namespace gearstiff::app
+{
+// One position (modes single, double, roll angle), solved on all ranks of the context.
+// `label` names the VTU files when p.write_vtu is set.
+contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
+                                                          CommandContext& context,
+                                                          const std::string& label);
+// The sweep of p.sweep, positions distributed over the ranks, progress on context.pcout.
+contact::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
+                                                    CommandContext& context,
+                                                    const std::string& label);
+
+// The position's values (prefix + key) in the report: stiffness, rotation, transmission
+// error, torque ratio, pairs, pressures, root stresses and cost.
+void report_stiffness_position(Report& report, const contact::GearMeshStiffnessResult& r,
+                               const std::string& prefix, const std::string& label);
+// The sweep as a table (one row per position), returned for plotting.
+const ReportTable& add_stiffness_sweep_table(Report& report,
+                                             const contact::StiffnessSweepResult& sweep,
+                                             const std::string& name);
+// Writes `table` to a temporary CSV for a plot script (the report's CSV files appear only
+// after the command returns) and returns its path; remove it after plotting.
+std::string temporary_csv(const Report& report, const ReportTable& table, const std::string& name);
+
+// The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
+// pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions
+// sorted, duplicates modulo one pitch dropped.
+std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep);
+// Single-pair stiffness samples for the Cai fit: at each position each loaded pair j carries
+// k_j = share_j·k at roll position p_ref + j [base pitches] (all pairs share one deflection,
+// so the mesh stiffness splits as the load does).
+std::vector<std::pair<double, double>>
+pair_stiffness_samples(const contact::StiffnessSweepResult& sweep, double contact_ratio);
+} // namespace gearstiff::app
