@@ -124,6 +124,24 @@ namespace gearstiff::contact
     return hertz;
   }
 
+  HertzLineContact fit_hertz_profile(const std::vector<double>& x, const std::vector<double>& p)
+  {
+    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+    for (unsigned int k = 0; k < x.size(); ++k)
+    {
+      const double x2 = x[k] * x[k], p2 = p[k] * p[k];
+      s0 += 1;
+      s1 += x2;
+      s2 += x2 * x2;
+      t0 += p2;
+      t1 += p2 * x2;
+    }
+    const double det = s0 * s2 - s1 * s1;
+    const double squared_peak = (s2 * t0 - s1 * t1) / det;
+    const double slope = -(s0 * t1 - s1 * t0) / det;
+    return {std::sqrt(squared_peak / slope), std::sqrt(squared_peak)};
+  }
+
   template void make_cylinder_pair(const CylinderPairGeometry&, Triangulation<2>&);
   template void make_cylinder_pair(const CylinderPairGeometry&, Triangulation<3>&);
 } // namespace gearstiff::contact

@@ -12,6 +12,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <vector>
+
 namespace gearstiff::contact
 {
   struct CylinderPairGeometry
@@ -45,6 +47,10 @@ namespace gearstiff::contact
     double half_width;    // m, a
     double peak_pressure; // Pa, p0
   };
+
+  // Least-squares fit of the Hertz profile p² = p0² (1 − x²/a²) to nodal pressures (x measured
+  // from the first contact point, m; p in Pa): resolves a finer than the node spacing.
+  HertzLineContact fit_hertz_profile(const std::vector<double>& x, const std::vector<double>& p);
 
   // load per unit length (N/m), radii (m), effective modulus E* (Pa).
   HertzLineContact hertz_line_contact(double load_per_length, double upper_radius,

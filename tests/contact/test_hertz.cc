@@ -49,23 +49,16 @@ namespace
     const PairResult<2>& pair = result.pairs.at(0);
     run.peak_pressure = pair.max_pressure;
     run.closed_extent = 0.5 * pair.contact_length;
-    // Least squares of p² = A − B x² over the closed nodes: a = sqrt(A/B), p0 = sqrt(A).
-    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+    std::vector<double> x, p;
     for (const auto& point : pair.points)
       if (point.state != NodeState::open)
       {
-        const double x2 = point.position[0] * point.position[0];
-        const double p2 = point.pressure * point.pressure;
-        s0 += 1;
-        s1 += x2;
-        s2 += x2 * x2;
-        t0 += p2;
-        t1 += p2 * x2;
+        x.push_back(point.position[0]);
+        p.push_back(point.pressure);
       }
-    const double det = s0 * s2 - s1 * s1;
-    const double A = (s2 * t0 - s1 * t1) / det, B = -(s0 * t1 - s1 * t0) / det;
-    run.fitted_half_width = std::sqrt(A / B);
-    run.fitted_peak = std::sqrt(A);
+    const HertzLineContact fitted = fit_hertz_profile(x, p);
+    run.fitted_half_width = fitted.half_width;
+    run.fitted_peak = fitted.peak_pressure;
     run.iterations = result.active_set_iterations;
     run.n_dofs = result.n_dofs;
     return run;
