@@ -7,10 +7,12 @@
 //   gearstiff mesh --set "Gear pair scene/position=double" -o out
 //   gearstiff mesh --set "Mesh/dimension=3" --set "Mesh/layers=6" -o out
 //   gearstiff mesh --set "Scene/type=cylinders" -o out          Hertz verification scene
+//   gearstiff mesh --set "Scene/type=cycloid" -o out            Cyclo disc and rollers (§4)
 //
 // Without -o the mesh is generated (all checks run, the report is complete) but not kept.
 #include "app/command.h"
 #include "app/kinematics_parameters.h"
+#include "geometry/scene_cycloid.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
 #include "kinematics/errors.h"
@@ -37,9 +39,10 @@ const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015
 void declare_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Scene");
-  prm.declare_entry("type", "gear pair", Selection("gear pair|cylinders"),
+  prm.declare_entry("type", "gear pair", Selection("gear pair|cylinders|cycloid"),
                     "what to mesh: a spur gear pair at one position (subsections Gear pair, Gear "
-                    "pair scene) or two cylinders in line contact (subsection Cylinders)");
+                    "pair scene), two cylinders in line contact (Cylinders) or a cycloid disc "
+                    "with its rollers (Cycloid disc, Cycloid scene)");
   prm.declare_entry("mesh file", "scene.msh", dealii::Patterns::Anything(),
                     "name of the .msh file written into the -o folder");
   prm.leave_subsection();
@@ -89,6 +92,37 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("length", "10", Double(0.), "cylinder length (3D extrusion) [mm]");
   prm.declare_entry("Young's modulus", "210", Double(0.), "Young's modulus of both [GPa]");
   prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
+  prm.leave_subsection();
+
+  const geometry::CycloidSceneSpec cycloid;
+  prm.enter_subsection("Cycloid disc");
+  prm.declare_entry("rollers", "20", Integer(3, 1000),
+                    "z_k, rollers in the ring (-); the disc has z_k - 1 lobes");
+  prm.declare_entry("roller circle radius", "96", Double(0.),
+                    "r, radius of the circle through the roller centres (mm)");
+  prm.declare_entry("eccentricity", "3", Double(0.), "e, eccentricity of the disc (mm)");
+  prm.declare_entry("roller radius", "8.5", Double(0.), "q, roller radius (mm)");
+  prm.leave_subsection();
+  prm.enter_subsection("Cycloid scene");
+  prm.declare_entry("disc rotation", "0", Double(-360., 360.),
+                    "disc rotation ψ about its own centre (degrees); the disc centre follows "
+                    "the eccentric with the ring fixed");
+  prm.declare_entry("bore radius", "25", Double(0.),
+                    "radius of the disc's eccentric-bearing bore (mm; not published)");
+  prm.declare_entry("output pins", "8", Integer(0, 100), "holes for the output pins (-)");
+  prm.declare_entry("output pin circle radius", "55", Double(0.),
+                    "radius of the circle through the hole centres (mm; not published)");
+  prm.declare_entry("output pin hole radius", "12", Double(0.),
+                    "hole radius = pin radius + e (mm; not published)");
+  prm.declare_entry("roller pin radius", "4", Double(0.), "pin inside each roller (mm)");
+  prm.declare_entry("contact clearance", "0.01", Double(0.),
+                    "rollers within this clearance of the disc are contacts (mm)");
+  prm.declare_entry("roller force", "1711", Double(0.),
+                    "roller force for the Hertz estimate of h_c (N; gear-data.md §4 P_max)");
+  prm.declare_entry("disc width", "15", Double(0.),
+                    "disc thickness (mm; not published), the 3D extrusion length");
+  prm.declare_entry("Young's modulus", "210", Double(0.), "Young's modulus (GPa)");
+  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio (-)");
   prm.leave_subsection();
 
   const geometry::SceneMeshSettings mesh;
@@ -165,11 +199,39 @@ geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
   return spec;
 }
 
+geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm)
+{
+  geometry::CycloidSceneSpec spec;
+  prm.enter_subsection("Cycloid disc");
+  spec.ring.rollers = prm.get_integer("rollers");
+  spec.ring.roller_circle_radius = prm.get_double("roller circle radius") * mm;
+  spec.ring.eccentricity = prm.get_double("eccentricity") * mm;
+  spec.ring.roller_radius = prm.get_double("roller radius") * mm;
+  prm.leave_subsection();
+  prm.enter_subsection("Cycloid scene");
+  spec.disc_rotation = prm.get_double("disc rotation") * degree;
+  spec.bore_radius = prm.get_double("bore radius") * mm;
+  spec.output_pins = prm.get_integer("output pins");
+  spec.output_pin_circle_radius = prm.get_double("output pin circle radius") * mm;
+  spec.output_pin_hole_radius = prm.get_double("output pin hole radius") * mm;
+  spec.roller_pin_radius = prm.get_double("roller pin radius") * mm;
+  spec.contact_clearance = prm.get_double("contact clearance") * mm;
+  spec.roller_force = prm.get_double("roller force");
+  spec.disc_width = prm.get_double("disc width") * mm;
+  spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
+  spec.poisson_ratio = prm.get_double("Poisson's ratio");
+  prm.leave_subsection();
+  spec.mesh = parse_mesh(prm);
+  return spec;
+}
+
 // SI quantities of the scene in the units of the parameter files.
 void add_quantity(Report& report, const geometry::SceneQuantity& q)
 {
   if (q.unit == "m")
     report.add_value(q.key, q.value / mm, "mm", q.description);
+  else if (q.unit == "Pa")
+    report.add_value(q.key, q.value / 1e6, "MPa", q.description);
   else if (q.unit == "rad")
     report.add_value(q.key, q.value / degree, "deg", q.description);
   else
@@ -194,10 +256,11 @@ void report_scene(const geometry::SceneInfo& info, const std::string& type, Repo
         "contact_spacing", (info.contacts[1].point - info.contacts[0].point).norm() / mm, 7.380,
         "mm", "distance between the two contacts (transverse base pitch p_et)", split_path_source);
 
-  report.add_value("contact_size", info.contact_size / mm, "mm", "h_c, cell size at the contacts");
-  report.add_value("largest_edge_at_contact", info.mesh.largest_edge_at_focus / mm, "mm",
-                   "longest cell edge touching a contact point (≤ h_c)");
-  report.add_value("fine_radius", info.fine_radius / mm, "mm", "radius meshed at h_c");
+  report.add_value("contact_size", info.contact_size / mm, "mm",
+                   "h_c, cell size at the contacts (smallest)");
+  report.add_value("largest_edge_ratio_at_contact", info.mesh.largest_edge_ratio_at_focus, "-",
+                   "longest cell edge at a contact point / its h_c (≤ 1)");
+  report.add_value("fine_radius", info.fine_radius / mm, "mm", "radius meshed at h_c (largest)");
   report.add_value("body_size", info.body_size / mm, "mm", "cell size in the bodies");
   report.add_value("rim_size", info.rim_size / mm, "mm", "largest cell size (rims)");
   report.add_value("cells", info.mesh.n_cells, "-",
@@ -218,16 +281,16 @@ void report_scene(const geometry::SceneInfo& info, const std::string& type, Repo
   report.add_value("time_writing", info.mesh.time_writing, "s", "writing the .msh file");
   report.add_value("time_total", info.time_total, "s", "the whole scene");
 
-  auto& table =
-      report.add_table("contacts",
-                       {"x", "y", "normal_x", "normal_y", "radius_1", "radius_2", "normal_force",
-                        "hertz_half_width", "gap", "feature_1", "feature_2"},
-                       {"mm", "mm", "-", "-", "mm", "mm", "N", "mm", "mm", "-", "-"});
+  auto& table = report.add_table(
+      "contacts",
+      {"x", "y", "normal_x", "normal_y", "radius_1", "radius_2", "normal_force", "hertz_half_width",
+       "gap", "contact_size", "fine_radius", "feature_1", "feature_2"},
+      {"mm", "mm", "-", "-", "mm", "mm", "N", "mm", "mm", "mm", "mm", "-", "-"});
   for (const auto& c : info.contacts)
     table.add_row({c.point.x() / mm, c.point.y() / mm, c.normal.x(), c.normal.y(),
                    c.first_curvature_radius / mm, c.second_curvature_radius / mm, c.normal_force,
-                   c.hertz_half_width / mm, c.gap / mm, double(c.first_feature),
-                   double(c.second_feature)});
+                   c.hertz_half_width / mm, c.gap / mm, c.contact_size / mm, c.fine_radius / mm,
+                   double(c.first_feature), double(c.second_feature)});
 }
 
 void run(ParameterHandler& prm, CommandContext& context)
@@ -244,8 +307,11 @@ void run(ParameterHandler& prm, CommandContext& context)
   const bool gear = type == "gear pair";
   const geometry::GearPairSceneSpec gear_spec =
       gear ? parse_gear_scene(prm) : geometry::GearPairSceneSpec();
+  const bool cycloid = type == "cycloid";
   const geometry::CylindersSceneSpec cylinder_spec =
-      gear ? geometry::CylindersSceneSpec() : parse_cylinders(prm);
+      type == "cylinders" ? parse_cylinders(prm) : geometry::CylindersSceneSpec();
+  const geometry::CycloidSceneSpec cycloid_spec =
+      cycloid ? parse_cycloid(prm) : geometry::CycloidSceneSpec();
 
   std::string path;
   std::filesystem::path scratch;
@@ -260,8 +326,9 @@ void run(ParameterHandler& prm, CommandContext& context)
   geometry::SceneInfo info;
   try
   {
-    info = gear ? geometry::write_gear_pair_scene(gear_spec, path)
-                : geometry::write_cylinders_scene(cylinder_spec, path);
+    info = gear      ? geometry::write_gear_pair_scene(gear_spec, path)
+           : cycloid ? geometry::write_cycloid_scene(cycloid_spec, path)
+                     : geometry::write_cylinders_scene(cylinder_spec, path);
   }
   catch (...)
   {
@@ -278,14 +345,14 @@ void run(ParameterHandler& prm, CommandContext& context)
 }
 
 const CommandRegistration registration(
-    {"mesh", "FE mesh of a scene (gear pair at one position, cylinders) with gmsh",
-     "Writes the mesh of one FE scene as ASCII .msh 4.1 (deal.II GridIn::read_msh): for a gear "
-     "pair\n"
-     "a few teeth of each gear around the contacts predicted along the line of action, with rim\n"
-     "and bore, the wheel placed in mesh; all quadrilateral (2D) or hexahedra extruded over the\n"
-     "face width (3D), sizes graded from h_c at the contacts (default a tenth of the Hertz\n"
-     "half-width) to the body size. Physical groups: material ids 1 (pinion/first body),\n"
-     "2 (wheel/second body); boundary ids 1/2 bores, 3/4 candidate flanks, 5/6 sector cuts,\n"
-     "7 side faces (3D), 0 free. Leftover triangles or inverted cells are an error.",
+    {"mesh", "FE mesh of a scene (gear pair at one position, cylinders, cycloid) with gmsh",
+     "Writes the mesh of one FE scene as ASCII .msh 4.1 (deal.II GridIn::read_msh): for a gear\n"
+     "pair a few teeth of each gear around the contacts predicted along the line of action, with\n"
+     "rim and bore, the wheel placed in mesh; all quadrilateral (2D) or hexahedra extruded over\n"
+     "the face width (3D), sizes graded from h_c at the contacts (default a tenth of the Hertz\n"
+     "half-width) to the body size. Physical groups: material ids 1 (pinion, disc, cylinder 1),\n"
+     "2 (wheel, rollers, cylinder 2); boundary ids 1/2 bores (roller pins), 3/4 candidate\n"
+     "contact surfaces, 5/6 sector cuts (flat faces), 7 side faces (3D), 8 output-pin holes,\n"
+     "0 free. Leftover triangles or inverted cells are an error.",
      declare_parameters, run});
 } // namespace

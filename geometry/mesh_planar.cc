@@ -176,7 +176,7 @@ void check_cells(const MeshOptions& options, const SizeGrading& grading,
   statistics.n_vertices = nodes.size();
   statistics.n_cells = 0;
   statistics.cells_per_body.clear();
-  statistics.largest_edge_at_focus = 0.;
+  statistics.largest_edge_ratio_at_focus = 0.;
   double jacobian_sum = 0.;
   statistics.min_scaled_jacobian = std::numeric_limits<double>::infinity();
   const auto& entities = (dim == 2) ? surfaces : volumes;
@@ -212,14 +212,17 @@ void check_cells(const MeshOptions& options, const SizeGrading& grading,
             statistics.worst_cell_centre += corner / n_corners;
         }
         jacobian_sum += q;
-        bool at_focus = false;
-        for (unsigned int c = 0; c < 4; ++c)
-          for (const auto& focus : grading.focus_points)
-            at_focus |= (corners[c].head<2>() - focus).norm() <= grading.fine_size;
-        if (at_focus)
+        for (const auto& focus : grading.foci)
+        {
+          bool at_focus = false;
           for (unsigned int c = 0; c < 4; ++c)
-            statistics.largest_edge_at_focus = std::max(statistics.largest_edge_at_focus,
-                                                        (corners[(c + 1) % 4] - corners[c]).norm());
+            at_focus |= (corners[c].head<2>() - focus.point).norm() <= focus.size;
+          if (at_focus)
+            for (unsigned int c = 0; c < 4; ++c)
+              statistics.largest_edge_ratio_at_focus =
+                  std::max(statistics.largest_edge_ratio_at_focus,
+                           (corners[(c + 1) % 4] - corners[c]).norm() / focus.size);
+        }
       }
       statistics.cells_per_body[material_id] += element_tags[t].size();
       statistics.n_cells += element_tags[t].size();
@@ -252,15 +255,20 @@ double BoundaryLoop::signed_area() const
 
 double SizeGrading::size_at(const Eigen::Vector2d& point, const double contact_scale) const
 {
-  const double coarse = coarse_size ? std::min(coarse_size(point), largest_size) : body_size;
-  double distance = std::numeric_limits<double>::infinity();
-  for (const auto& focus : focus_points)
-    distance = std::min(distance, (point - focus).norm());
-  if (!std::isfinite(distance))
-    return coarse;
-  const double size =
-      contact_scale * fine_size + growth_rate * std::max(0., distance - fine_radius);
-  return std::min(size, coarse);
+  double size = coarse_size ? std::min(coarse_size(point), largest_size) : body_size;
+  for (const auto& focus : foci)
+    size =
+        std::min(size, contact_scale * focus.size +
+                           growth_rate * std::max(0., (point - focus.point).norm() - focus.radius));
+  return size;
+}
+
+double SizeGrading::smallest_size() const
+{
+  double size = body_size;
+  for (const auto& focus : foci)
+    size = std::min(size, focus.size);
+  return size;
 }
 
 double scaled_jacobian_quad(const std::vector<Eigen::Vector3d>& corners)
@@ -305,13 +313,16 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     throw InputError("Mesh/face width", "must be positive for a 3D mesh");
   if (options.dimension == 3 && options.layers < 1)
     throw InputError("Mesh/layers", "must be at least 1 for a 3D mesh");
-  if (!(grading.fine_size > 0.) || !(grading.body_size >= grading.fine_size) ||
-      !(grading.largest_size >= grading.body_size) || !(grading.growth_rate > 0.) ||
-      !(grading.fine_radius >= 0.))
+  bool foci_valid = true;
+  for (const auto& focus : grading.foci)
+    foci_valid &= focus.size > 0. && focus.size <= grading.body_size && focus.radius >= 0. &&
+                  focus.point.allFinite();
+  if (!foci_valid || !(grading.body_size > 0.) || !(grading.largest_size >= grading.body_size) ||
+      !(grading.growth_rate > 0.))
     throw InputError("Mesh/contact size", "needs 0 < contact size <= body size, a positive growth "
                                           "rate and a non-negative fine radius");
   if (options.file.empty())
-    throw InputError("mesh file", "no output file given");
+    throw InputError("Scene/mesh file", "no output file given");
   for (const auto& body : model.bodies)
   {
     if (body.material_id <= 0)
@@ -424,7 +435,7 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * grading.fine_size);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.1 * grading.smallest_size());
   gmsh::option::setNumber("Mesh.MeshSizeMax", grading.largest_size);
   // Frontal-Delaunay triangles recombined by the simple full-quad algorithm: all quadrilaterals,
   // minimum scaled Jacobian about 0.35 on the gear scenes, 10-20% faster than full-quad Blossom
@@ -464,15 +475,15 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     statistics.time_checking += seconds_since(start);
     statistics.contact_scale = contact_scale;
     statistics.meshing_attempts = attempt;
-    if (grading.focus_points.empty() || statistics.largest_edge_at_focus <= grading.fine_size)
+    if (statistics.largest_edge_ratio_at_focus <= 1.)
       break;
     if (attempt == max_attempts)
       throw SolverFailure("gmsh mesh generation",
                           "the cells at the contact points stay larger than the contact size (" +
-                              std::to_string(statistics.largest_edge_at_focus) + " m > " +
-                              std::to_string(grading.fine_size) + " m) after " +
-                              std::to_string(max_attempts) + " attempts");
-    contact_scale *= 0.95 * grading.fine_size / statistics.largest_edge_at_focus;
+                              std::to_string(statistics.largest_edge_ratio_at_focus) +
+                              " times the requested size) after " + std::to_string(max_attempts) +
+                              " attempts");
+    contact_scale *= 0.95 / statistics.largest_edge_ratio_at_focus;
   }
 
   start = Clock::now();

@@ -60,23 +60,30 @@ struct PlanarModel
   std::map<int, std::string> boundary_names; // boundary id -> physical group name
 };
 
-// Target cell size: `fine_size` within `fine_radius` of any focus point, then growing linearly
-// with distance at `growth_rate` (size increase per unit distance) up to the coarse size: the
-// constant `body_size`, or `coarse_size(point)` where a scene lets the size grow further away
-// from the region that matters (deep in a gear rim), never above `largest_size`.
+// A point where the mesh must be fine (a predicted contact): cells of `size` within `radius`.
+struct SizeFocus
+{
+  Eigen::Vector2d point = Eigen::Vector2d::Zero(); // m, scene frame
+  double size = 1e-5;                              // m, h_c there
+  double radius = 2e-4;                            // m
+};
+
+// Target cell size: a focus's size within its radius, then growing linearly with distance at
+// `growth_rate` (size increase per unit distance) up to the coarse size: the constant
+// `body_size`, or `coarse_size(point)` where a scene lets the size grow further away from the
+// region that matters (deep in a gear rim), never above `largest_size`.
 struct SizeGrading
 {
-  std::vector<Eigen::Vector2d> focus_points; // m, scene frame (predicted contact points)
-  double fine_size = 1e-5;                   // m, h_c
-  double fine_radius = 2e-4;                 // m
-  double growth_rate = 0.25;                 // m/m; 0.25 keeps neighbour size ratios near 1.3
-  double body_size = 5e-4;                   // m
+  std::vector<SizeFocus> foci;
+  double growth_rate = 0.25; // m/m; 0.25 keeps neighbour size ratios near 1.3
+  double body_size = 5e-4;   // m
   std::function<double(const Eigen::Vector2d&)> coarse_size; // m; empty: body_size everywhere
   double largest_size = 5e-4; // m, upper bound of coarse_size (gmsh's size limit)
 
-  // m; `contact_scale` scales the fine size only (not the coarse sizes or the growth): the
+  // m; `contact_scale` scales the focus sizes only (not the coarse sizes or the growth): the
   // mesher aims below h_c with it because gmsh's edges scatter around the requested size.
   double size_at(const Eigen::Vector2d& point, double contact_scale = 1.) const;
+  double smallest_size() const; // m, over the foci and the body size
 };
 
 struct MeshOptions
@@ -96,9 +103,9 @@ struct MeshStatistics
   double min_scaled_jacobian = 0.;                             // -, 1 for a perfect square/cube
   double mean_scaled_jacobian = 0.;                            // -
   Eigen::Vector3d worst_cell_centre = Eigen::Vector3d::Zero(); // m, where the minimum occurs
-  // m, the longest in-plane edge of the cells with a corner within the fine size of a focus
-  // point: the achieved contact size, to compare with SizeGrading::fine_size.
-  double largest_edge_at_focus = 0.;
+  // -, over the foci: the longest in-plane edge of the cells with a corner within the focus
+  // size of its point, divided by that size (the achieved contact size; ≤ 1 is guaranteed).
+  double largest_edge_ratio_at_focus = 0.;
   double contact_scale = 1.;         // -, the scale of the contact-driven size that achieved it
   unsigned int meshing_attempts = 0; // -, mesh generations needed to achieve it
   double time_geometry = 0.;         // s, building the gmsh model

@@ -26,34 +26,31 @@ double hertz_half_width(const double force_per_length, const double radius_1, co
 }
 
 SizeGrading
-contact_size_grading(const SceneMeshSettings& settings, const std::vector<SceneContact>& contacts,
+contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact>& contacts,
                      const std::function<double(const Eigen::Vector2d&)>& depth_below_surface)
 {
   SizeGrading grading;
-  double smallest_width = std::numeric_limits<double>::infinity();
-  double largest_width = 0.;
-  for (const auto& contact : contacts)
+  for (auto& contact : contacts)
   {
-    grading.focus_points.push_back(contact.point);
-    smallest_width = std::min(smallest_width, contact.hertz_half_width);
-    largest_width = std::max(largest_width, contact.hertz_half_width);
+    const bool have_width = contact.hertz_half_width > 0.;
+    if (settings.contact_size > 0.)
+      contact.contact_size = settings.contact_size;
+    else if (have_width)
+      contact.contact_size = 0.1 * contact.hertz_half_width; // ten cells across the half-width
+    else
+      throw InputError("Mesh/contact size", "must be given when the scene has no Hertz estimate");
+    if (settings.fine_radius > 0.)
+      contact.fine_radius = settings.fine_radius;
+    else
+      contact.fine_radius =
+          have_width ? 1.5 * contact.hertz_half_width : 10. * contact.contact_size;
+    grading.foci.push_back({contact.point, contact.contact_size, contact.fine_radius});
+    if (!(settings.body_size >= contact.contact_size))
+      throw InputError("Mesh/body size", "must not be smaller than the contact size");
   }
-  const bool have_widths = !contacts.empty() && smallest_width > 0.;
-  if (settings.contact_size > 0.)
-    grading.fine_size = settings.contact_size;
-  else if (have_widths)
-    grading.fine_size = 0.1 * smallest_width; // ten cells across the half-width
-  else
-    throw InputError("Mesh/contact size", "must be given when the scene has no Hertz estimate");
-  if (settings.fine_radius > 0.)
-    grading.fine_radius = settings.fine_radius;
-  else
-    grading.fine_radius = have_widths ? 1.5 * largest_width : 10. * grading.fine_size;
   if (!(settings.growth_rate > 0.))
     throw InputError("Mesh/growth rate", "must be positive");
   grading.growth_rate = settings.growth_rate;
-  if (!(settings.body_size >= grading.fine_size))
-    throw InputError("Mesh/body size", "must not be smaller than the contact size");
   grading.body_size = settings.body_size;
   grading.largest_size = grading.body_size;
   if (depth_below_surface)
@@ -96,7 +93,7 @@ BoundaryLoop circle_loop(const Eigen::Vector2d& centre, const double radius, con
   return loop;
 }
 
-SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& contacts,
+SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contacts,
                      const SceneMeshSettings& settings, const double face_width,
                      const std::string& file,
                      const std::function<double(const Eigen::Vector2d&)>& depth_below_surface)
@@ -123,8 +120,9 @@ SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& 
     info.material_names.emplace(body.material_id, body.name);
   info.boundary_names = named.boundary_names;
   info.contacts = contacts;
-  info.contact_size = grading.fine_size;
-  info.fine_radius = grading.fine_radius;
+  info.contact_size = grading.smallest_size();
+  for (const auto& focus : grading.foci)
+    info.fine_radius = std::max(info.fine_radius, focus.radius);
   info.body_size = grading.body_size;
   info.rim_size = grading.largest_size;
   info.growth_rate = grading.growth_rate;

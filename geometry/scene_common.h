@@ -57,12 +57,12 @@ struct SceneMeshSettings
 {
   unsigned int dimension = 2; // -, 2: quadrilaterals; 3: hexahedra extruded over the face width
   unsigned int layers = 8;    // -, hexahedron layers across the face width (3D)
-  // m, h_c, cell size at the predicted contact points; 0: a tenth of the smallest Hertz
-  // half-width estimate of the scene's contacts.
+  // m, h_c, cell size at the predicted contact points; 0: at each contact a tenth of its
+  // Hertz half-width estimate.
   double contact_size = 0.;
-  // m, radius around each contact point meshed at h_c; 0: 1.5 times the largest Hertz
-  // half-width (the contact zone, plus a margin far larger than its shift under load: the
-  // pair deflection is ~6 µm against a ≈ 80 µm in the split-path case).
+  // m, radius around each contact point meshed at h_c; 0: 1.5 times its Hertz half-width (the
+  // contact zone, plus a margin far larger than its shift under load: the pair deflection is ~6 µm
+  // against a ≈ 80 µm in the split-path case).
   double fine_radius = 0.;
   double growth_rate = 0.25; // m/m, size increase per unit distance beyond the fine radius
   double body_size = 5e-4;   // m, the coarse size in the teeth (bodies) away from contact
@@ -81,6 +81,8 @@ struct SceneContact
   double normal_force = 0.;            // N, share of the load assumed for the Hertz estimate
   double hertz_half_width = 0.;        // m, plane-strain Hertz estimate a
   double gap = 0.;                     // m, initial gap along the normal (0: touching)
+  double contact_size = 0.;            // m, h_c used at this contact
+  double fine_radius = 0.;             // m, radius meshed at h_c around it
   int first_feature = 0;  // tooth index of the pinion (roller-facing lobe of a disc), or 0
   int second_feature = 0; // tooth index of the wheel (roller index), or 0
 };
@@ -116,8 +118,8 @@ struct SceneInfo
   std::vector<Eigen::Vector2d> reference_line;
   std::vector<SceneQuantity> quantities; // extent and position of the scene, for reports
 
-  double contact_size = 0.; // m, h_c used
-  double fine_radius = 0.;  // m
+  double contact_size = 0.; // m, smallest h_c over the contacts (each: SceneContact)
+  double fine_radius = 0.;  // m, largest fine radius over the contacts
   double body_size = 0.;    // m
   double rim_size = 0.;     // m, largest size (deep in rims)
   double growth_rate = 0.;  // m/m
@@ -133,11 +135,12 @@ double hertz_half_width(double force_per_length, double radius_1, double radius_
                         double young_modulus_1, double poisson_ratio_1, double young_modulus_2,
                         double poisson_ratio_2);
 
-// Resolves the defaults of `settings` from the Hertz half-widths of `contacts` and returns the
-// size grading focused on the contact points. `depth_below_surface` (m, optional) lets the size
-// grow beyond the body size with depth into a rim, at the growth rate, up to the rim size.
+// Resolves the defaults of `settings` from the Hertz half-widths of `contacts` (filling each
+// contact's contact_size and fine_radius) and returns the size grading focused on them.
+// `depth_below_surface` (m, optional) lets the size grow beyond the body size with depth into a
+// rim, at the growth rate, up to the rim size.
 SizeGrading
-contact_size_grading(const SceneMeshSettings& settings, const std::vector<SceneContact>& contacts,
+contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact>& contacts,
                      const std::function<double(const Eigen::Vector2d&)>& depth_below_surface = {});
 
 // A circle as a closed loop of four quarter arcs carrying `boundary_id` (m).
@@ -150,7 +153,7 @@ std::vector<BoundaryPiece> arc_pieces(const Eigen::Vector2d& centre, double radi
 
 // Meshes `model` with `settings` (resolving the defaults from the contacts), writes `file` and
 // fills the common part of SceneInfo (ids, sizes, contacts, statistics, file).
-SceneInfo mesh_scene(const PlanarModel& model, const std::vector<SceneContact>& contacts,
+SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contacts,
                      const SceneMeshSettings& settings, double face_width, const std::string& file,
                      const std::function<double(const Eigen::Vector2d&)>& depth_below_surface = {});
 } // namespace gearstiff::geometry

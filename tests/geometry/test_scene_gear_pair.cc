@@ -168,8 +168,8 @@ TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
 
   // Element size at the contact point: every cell touching it has edges no longer than h_c.
   for (const auto& contact : info.contacts)
-    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * info.contact_size),
-              info.contact_size);
+    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * contact.contact_size),
+              contact.contact_size);
 
   EXPECT_GT(info.mesh.min_scaled_jacobian, 0.2); // the checker already rejects <= 0
 }
@@ -188,8 +188,8 @@ TEST(GearPairScene, DoublePairPositionHasTwoTouchingPairs)
   for (const double gap : gaps)
     EXPECT_TRUE(gap < touching_tolerance || gap > apart_tolerance) << "gap " << gap;
   for (const auto& contact : info.contacts)
-    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * info.contact_size),
-              info.contact_size);
+    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * contact.contact_size),
+              contact.contact_size);
 }
 
 TEST(GearPairScene, FullRimHasBoresAndNoCuts)

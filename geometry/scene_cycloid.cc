@@ -1,0 +1,214 @@
+#include "geometry/scene_cycloid.h"
+
+#include "kinematics/errors.h"
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+
+namespace gearstiff::geometry
+{
+namespace
+{
+const std::string section = "Cycloid scene/";
+
+Eigen::Vector2d unit(double angle)
+{
+  return Eigen::Vector2d(std::cos(angle), std::sin(angle));
+}
+
+// A circle loop starting at polar angle `start`, so that a mesh node lies exactly there.
+BoundaryLoop circle_from(const Eigen::Vector2d& centre, double radius, double start, int id)
+{
+  BoundaryLoop loop;
+  loop.pieces = arc_pieces(centre, radius, start, start + 2. * M_PI, id);
+  loop.pieces.back().points.back() = loop.pieces.front().points.front();
+  return loop;
+}
+
+// Signed curvature radius of the disc outline at generating angle α (m; > 0 convex, i.e. the
+// outline turns counter-clockwise there), by central differences of the exact curve.
+double curvature_radius(const CycloidDiscSpec& disc, double alpha)
+{
+  const double h = 1e-4;
+  const Eigen::Vector2d a = cycloid_point(disc, alpha - h), b = cycloid_point(disc, alpha),
+                        c = cycloid_point(disc, alpha + h);
+  const Eigen::Vector2d d1 = (c - a) / (2. * h), d2 = (c - 2. * b + a) / (h * h);
+  const double cross = d1.x() * d2.y() - d1.y() * d2.x();
+  return std::pow(d1.norm(), 3) / cross; // ±∞ for a straight stretch
+}
+} // namespace
+
+SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& file)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const CycloidDiscSpec& ring = spec.ring;
+  const CycloidDiscSpec disc = spec.disc.rollers == 0 ? ring : spec.disc;
+  // The profile generator checks the disc itself (m < 1, rollers that fit).
+  const ToothProfile lobe = generate_cycloid_disc(disc, spec.points_per_lobe);
+  const unsigned int lobes = lobe.teeth;
+  if (disc.rollers != ring.rollers || std::abs(disc.eccentricity - ring.eccentricity) > 1e-12)
+    throw InputError(section + "disc", "must have the ring's rollers and eccentricity");
+
+  double lobe_root = std::numeric_limits<double>::infinity();
+  for (const auto& p : lobe.points)
+    lobe_root = std::min(lobe_root, p.position.norm());
+  if (!(spec.bore_radius > 0.))
+    throw InputError(section + "bore radius", "must be positive");
+  if (spec.output_pins > 0)
+  {
+    const double outer = spec.output_pin_circle_radius + spec.output_pin_hole_radius;
+    const double inner = spec.output_pin_circle_radius - spec.output_pin_hole_radius;
+    // At least 1 mm of material between neighbouring features: thinner webs are not a
+    // drawing anyone would build, and they mesh into slivers.
+    const double web = 1e-3;
+    if (!(spec.output_pin_hole_radius > 0.) || outer > lobe_root - web)
+      throw InputError(section + "output pin hole radius",
+                       "the holes must end 1 mm inside the lobe roots (" +
+                           std::to_string(lobe_root * 1e3) + " mm)");
+    if (inner < spec.bore_radius + web)
+      throw InputError(section + "output pin circle radius",
+                       "the holes must stay 1 mm clear of the bore");
+    if (2. * spec.output_pin_circle_radius * std::sin(M_PI / spec.output_pins) <
+        2. * spec.output_pin_hole_radius + web)
+      throw InputError(section + "output pins", "neighbouring holes overlap");
+  }
+  else if (spec.bore_radius > lobe_root - 1e-3)
+    throw InputError(section + "bore radius", "leaves no disc material under the lobes");
+  if (!(spec.roller_pin_radius > 0. && spec.roller_pin_radius < 0.8 * ring.roller_radius))
+    throw InputError(section + "roller pin radius", "must lie in (0, 0.8·q)");
+  if (!(spec.disc_width > 0.))
+    throw InputError(section + "disc width", "must be positive");
+  if (!(spec.roller_force > 0.))
+    throw InputError(section + "roller force", "must be positive");
+
+  const double psi = spec.disc_rotation;
+  const Eigen::Vector2d disc_centre =
+      -ring.eccentricity * unit(-double(lobes) * psi); // see the header
+  const Eigen::Rotation2Dd to_scene(psi);
+  const auto place = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d
+  { return disc_centre + to_scene * p; };
+
+  // Contacts: the exact closest point of the equidistant to each roller centre (golden-section
+  // search in the generating angle between the neighbours of the nearest outline point), the
+  // clearance from prof's roller_clearances for the same placement.
+  const std::vector<double> clearances = roller_clearances(ring, disc, psi);
+  const unsigned int n = lobe.points.size();
+  const double lobe_pitch = 2. * M_PI / lobes;
+  std::vector<SceneContact> contacts;
+  std::vector<double> contact_angles(ring.rollers, 0.);
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+  {
+    const Eigen::Vector2d roller = ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers);
+    const Eigen::Vector2d local = to_scene.inverse() * (roller - disc_centre);
+    double best = std::numeric_limits<double>::infinity(), best_alpha = 0.;
+    for (unsigned int k = 0; k < lobes; ++k)
+      for (unsigned int j = 0; j < n; ++j)
+      {
+        const double alpha = -M_PI / lobes + lobe_pitch * j / (n - 1) + k * lobe_pitch;
+        const double distance = (cycloid_point(disc, alpha) - local).norm();
+        if (distance < best)
+          best = distance, best_alpha = alpha;
+      }
+    double low = best_alpha - lobe_pitch / (n - 1), high = best_alpha + lobe_pitch / (n - 1);
+    const double golden = 0.5 * (std::sqrt(5.) - 1.);
+    for (int it = 0; it < 60; ++it)
+    {
+      const double a = high - golden * (high - low), b = low + golden * (high - low);
+      if ((cycloid_point(disc, a) - local).norm() < (cycloid_point(disc, b) - local).norm())
+        high = b;
+      else
+        low = a;
+    }
+    const double alpha = 0.5 * (low + high);
+    const Eigen::Vector2d point = place(cycloid_point(disc, alpha));
+    contact_angles[i] = std::atan2((point - roller).y(), (point - roller).x());
+    if (clearances[i] > spec.contact_clearance)
+      continue;
+    SceneContact contact;
+    contact.point = point;
+    contact.normal = (roller - point).normalized();
+    contact.first_curvature_radius = curvature_radius(disc, alpha);
+    contact.second_curvature_radius = ring.roller_radius;
+    contact.normal_force = spec.roller_force;
+    contact.gap = clearances[i];
+    contact.first_feature = static_cast<int>(std::lround((alpha + psi) / lobe_pitch));
+    contact.second_feature = static_cast<int>(i);
+    contact.hertz_half_width =
+        hertz_half_width(spec.roller_force / spec.disc_width, contact.first_curvature_radius,
+                         contact.second_curvature_radius, spec.young_modulus, spec.poisson_ratio,
+                         spec.young_modulus, spec.poisson_ratio);
+    contacts.push_back(contact);
+  }
+  if (contacts.empty())
+    throw InputError(section + "contact clearance",
+                     "no roller lies within it at this disc rotation");
+
+  PlanarModel model;
+  PlanarBody disc_body;
+  disc_body.name = "disc";
+  disc_body.material_id = scene_ids::first_body;
+  for (unsigned int k = 0; k < lobes; ++k)
+  {
+    BoundaryPiece piece;
+    piece.kind = CurveKind::spline;
+    piece.boundary_id = scene_ids::first_contact;
+    const Eigen::Rotation2Dd lobe_rotation(k * lobe_pitch);
+    for (const auto& p : lobe.points)
+      piece.points.push_back(place(lobe_rotation * p.position));
+    disc_body.outer.pieces.push_back(piece);
+  }
+  disc_body.outer.pieces.back().points.back() = disc_body.outer.pieces.front().points.front();
+  disc_body.holes.push_back(circle_loop(disc_centre, spec.bore_radius, scene_ids::first_bore));
+  for (unsigned int j = 0; j < spec.output_pins; ++j)
+    disc_body.holes.push_back(
+        circle_loop(place(spec.output_pin_circle_radius * unit(2. * M_PI * j / spec.output_pins)),
+                    spec.output_pin_hole_radius, scene_ids::output_pin_holes));
+  model.bodies.push_back(disc_body);
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+  {
+    const Eigen::Vector2d centre = ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers);
+    PlanarBody roller;
+    roller.name = "rollers";
+    roller.material_id = scene_ids::second_body;
+    roller.outer =
+        circle_from(centre, ring.roller_radius, contact_angles[i], scene_ids::second_contact);
+    roller.holes.push_back(circle_loop(centre, spec.roller_pin_radius, scene_ids::second_bore));
+    model.bodies.push_back(roller);
+  }
+  model.boundary_names = {{scene_ids::first_bore, "disc bore"},
+                          {scene_ids::second_bore, "roller pins"},
+                          {scene_ids::first_contact, "disc lobes"},
+                          {scene_ids::second_contact, "roller surfaces"},
+                          {scene_ids::output_pin_holes, "output pin holes"}};
+
+  // Away from the contacts the disc (below its lobe roots) and the rollers (below their
+  // surface) only carry load to the bore and the pins: let the cells grow with depth there.
+  std::vector<Eigen::Vector2d> roller_centres;
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+    roller_centres.push_back(ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers));
+  const auto depth = [=, q = ring.roller_radius](const Eigen::Vector2d& x)
+  {
+    double result = lobe_root - (x - disc_centre).norm();
+    for (const auto& c : roller_centres)
+      result = std::max(result, q - (x - c).norm());
+    return result;
+  };
+  SceneInfo info = mesh_scene(model, contacts, spec.mesh, spec.disc_width, file, depth);
+  info.kind = "cycloid";
+  info.first_centre = disc_centre;
+  info.second_centre = Eigen::Vector2d::Zero();
+  info.first_rotation = psi;
+  info.quantities = {
+      {"disc_rotation", psi, "rad", "disc rotation ψ"},
+      {"rollers", double(ring.rollers), "-", "rollers z_k (all modelled)"},
+      {"lobes", double(lobes), "-", "disc lobes z_s"},
+      {"rollers_in_contact", double(contacts.size()), "-", "rollers within the contact clearance"},
+      {"disc_bore_radius", spec.bore_radius, "m", "disc bore radius"},
+      {"output_pin_holes", double(spec.output_pins), "-", "output-pin holes"},
+      {"output_pin_hole_radius", spec.output_pin_hole_radius, "m", "output-pin hole radius"},
+      {"lobe_root_radius", lobe_root, "m", "smallest radius of the disc outline"}};
+  info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return info;
+}
+} // namespace gearstiff::geometry

@@ -1,0 +1,48 @@
+// The FE scene of a cycloidal (Cyclo) drive at one disc position: the disc with its lobes, the
+// eccentric-bearing bore and the output-pin holes, and the ring of rollers (each on its pin),
+// after gear-data.md §4 (Chmurawa & Łokiec). Ring centre at the origin, roller i centred at
+// polar angle 2πi/z_k on the roller circle; the disc turned by ψ about its own centre, which sits
+// at −e·(cos z_sψ, −sin z_sψ) — the nominal kinematics with the ring fixed, the same placement as
+// roller_clearances() in geometry/cycloid_disc.h.
+//
+// Ids (scene_common.h): disc material 1, rollers material 2; disc bore 1, roller pins 2, disc
+// lobes 3, roller surfaces 4, output-pin holes 8. Contacts: every roller whose clearance to
+// the disc is at most `contact_clearance`.
+#pragma once
+
+#include "geometry/cycloid_disc.h"
+#include "geometry/scene_common.h"
+
+#include <string>
+
+namespace gearstiff::geometry
+{
+struct CycloidSceneSpec
+{
+  // The ring (roller circle r, roller radius q, eccentricity e, z_k): gear-data.md §4 nominal.
+  CycloidDiscSpec ring = {20, 96e-3, 3e-3, 8.5e-3, 0.};
+  // The disc profile; rollers = 0 takes the ring's (the nominal equidistant). A corrected
+  // profile (r_k, q_k, δ from solve_cycloid_correction) goes here.
+  CycloidDiscSpec disc = {0, 0., 0., 0., 0.};
+  double disc_rotation = 0.; // rad, ψ
+
+  // Not published; sized for the nominal disc (lobe roots at r − q − e = 84.5 mm).
+  double bore_radius = 25e-3;              // m, eccentric-bearing seat of the disc
+  unsigned int output_pins = 8;            // -, holes for the output pins
+  double output_pin_circle_radius = 55e-3; // m
+  double output_pin_hole_radius = 12e-3;   // m, pin radius + e
+  double roller_pin_radius = 4e-3;         // m, pin inside each roller
+
+  double contact_clearance = 1e-5; // m, rollers this close to the disc are contacts
+  double roller_force = 1711.;     // N, P_max of gear-data.md §4, for the Hertz estimate
+  double disc_width = 15e-3;       // m, disc thickness (not published; 3D extrusion)
+  double young_modulus = 210e9;    // Pa
+  double poisson_ratio = 0.3;      // -
+  unsigned int points_per_lobe = 121;
+  SceneMeshSettings mesh;
+};
+
+// Checks the spec (InputError naming "Cycloid scene/..." or "Cycloid disc/..." before gmsh
+// runs), meshes, writes `file`.
+SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& file);
+} // namespace gearstiff::geometry
