@@ -72,7 +72,8 @@ struct GearMeshStiffnessResult
   unsigned int loaded_pairs = 0;    // -, pairs carrying more than 1e-6 of the load
   // Stiffness and its ingredients.
   double pinion_torque = 0.;      // N·m, T1 applied
-  double pinion_rotation = 0.;    // rad, Δφ of the pinion hub (> 0 with T1 > 0)
+  double pinion_rotation = 0.;    // rad, Δφ from the unloaded touching position (> 0)
+  double initial_gap = 0.;        // m, smallest initial normal gap of the meshed flanks
   double pinion_base_radius = 0.; // m, r_b1
   double wheel_base_radius = 0.;  // m, r_b2
   double mesh_stiffness = 0.;     // N/m, T1/(r_b1²·Δφ)
@@ -113,6 +114,7 @@ public:
 private:
   void make_scene();
   void setup_problem();
+  void close_initial_gap(dealii::Triangulation<dim>& tria);
   void solve();
   void evaluate();
   void output_results();
@@ -120,9 +122,11 @@ private:
   MPI_Comm mpi_communicator;
   GearMeshStiffnessSettings settings;
   kinematics::GearPairGeometry pair;
-  std::vector<ToothPairLoad> candidate_pairs;   // pairs given to the contact problem
-  double pinion_rotation_angle = 0.;            // rad, scene rotation of the pinion profile
-  double wheel_rotation_angle = 0.;             // rad
+  std::vector<ToothPairLoad> candidate_pairs; // pairs given to the contact problem
+  double pinion_rotation_angle = 0.;          // rad, scene rotation of the pinion profile
+  double wheel_rotation_angle = 0.;           // rad
+  double outline_gap = 0.;  // m, largest gap between the placed outlines at the contacts
+  double pre_rotation = 0.; // rad, pinion turned forward to close the meshed gap
   std::unique_ptr<ContactProblem<dim>> problem; // owned
   GearMeshStiffnessResult result;
 };
