@@ -1,578 +1,575 @@
 #include "contact/contact_problem.h"
 
-#include <deal.II/base/timer.h>
-#include <deal.II/base/utilities.h>
-
 #include "kinematics/errors.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 #include <map>
 #include <sstream>
 
 namespace gearstiff::contact
 {
-  using namespace dealii;
+using namespace dealii;
 
-  void ContactParameters::declare_parameters(ParameterHandler& prm)
+void ContactParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("Friction coefficient", "0", Patterns::Double(0., 2.),
+                    "-, Coulomb friction coefficient μ between the surfaces (0: frictionless)");
+  prm.declare_entry("Max iterations", "40", Patterns::Integer(1, 1000),
+                    "-, active-set iterations per load step; reaching it is a solver failure");
+  prm.declare_entry("Load steps", "1", Patterns::Integer(1, 1000),
+                    "-, equal load increments (friction is path dependent)");
+  prm.declare_entry("Search distance", "1", Patterns::Double(0.),
+                    "mm, slave points farther than this from the master surface are never "
+                    "paired (small sliding: pairing is frozen in the reference configuration)");
+  prm.declare_entry("Overlap tolerance", "1e-3", Patterns::Double(0.),
+                    "mm, an initial overlap of the bodies beyond this is an input error");
+  prm.declare_entry("Friction tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
+                    "-, convergence of the slip forces relative to the largest normal force");
+}
+
+void ContactParameters::parse_parameters(ParameterHandler& prm)
+{
+  friction_coefficient = prm.get_double("Friction coefficient");
+  max_iterations = prm.get_integer("Max iterations");
+  load_steps = prm.get_integer("Load steps");
+  search_distance = prm.get_double("Search distance") * 1e-3;
+  overlap_tolerance = prm.get_double("Overlap tolerance") * 1e-3;
+  friction_tolerance = prm.get_double("Friction tolerance");
+}
+
+namespace
+{
+// The slave DoF a closed contact constrains: the component of the largest |n_c|, so that
+// the constraint's coefficients −n_c/n_main stay bounded by one.
+template <int dim>
+unsigned int normal_component(const Tensor<1, dim>& normal)
+{
+  unsigned int main = 0;
+  for (unsigned int c = 1; c < dim; ++c)
+    if (std::abs(normal[c]) > std::abs(normal[main]))
+      main = c;
+  return main;
+}
+} // namespace
+
+template <int dim>
+ContactProblem<dim>::ContactProblem(MPI_Comm mpi_communicator,
+                                    const fem::ElasticityParameters& elasticity,
+                                    const fem::LinearSolverParameters& linear_solver,
+                                    const ContactParameters& contact)
+    : mpi_communicator(mpi_communicator), parameters(contact),
+      elastic(mpi_communicator, elasticity, linear_solver)
+{
+}
+
+template <int dim>
+ContactProblem<dim>::~ContactProblem() = default;
+
+template <int dim>
+void ContactProblem<dim>::add_displacement(types::boundary_id boundary, const Tensor<1, dim>& value,
+                                           const std::string& name,
+                                           const std::vector<bool>& components)
+{
+  Support support;
+  support.name = name;
+  support.boundary = boundary;
+  support.displacement = value;
+  support.components = components;
+  supports.push_back(std::move(support));
+}
+
+template <int dim>
+void ContactProblem<dim>::add_rigid_hub(types::boundary_id boundary, const Point<dim>& axis,
+                                        typename fem::RigidHub<dim>::Control control, double value,
+                                        const std::string& name)
+{
+  Support support;
+  support.name = name;
+  support.boundary = boundary;
+  support.is_hub = true;
+  support.axis = axis;
+  support.control = control;
+  support.value = value;
+  supports.push_back(std::move(support));
+}
+
+template <int dim>
+void ContactProblem<dim>::add_contact_pair(const std::vector<types::boundary_id>& slave,
+                                           const std::vector<types::boundary_id>& master,
+                                           const std::string& name)
+{
+  Pair pair;
+  pair.name = name;
+  pair.slave = slave;
+  pair.master = master;
+  pairs.push_back(std::move(pair));
+}
+
+template <int dim>
+void ContactProblem<dim>::setup_system()
+{
+  Timer timer(mpi_communicator, true);
+  elastic.setup_system();
+  const DoFHandler<dim>& dof_handler = elastic.get_dof_handler();
   {
-    prm.declare_entry("Friction coefficient", "0", Patterns::Double(0., 2.),
-                      "-, Coulomb friction coefficient μ between the surfaces (0: frictionless)");
-    prm.declare_entry("Max iterations", "40", Patterns::Integer(1, 1000),
-                      "-, active-set iterations per load step; reaching it is a solver failure");
-    prm.declare_entry("Load steps", "1", Patterns::Integer(1, 1000),
-                      "-, equal load increments (friction is path dependent)");
-    prm.declare_entry("Search distance", "1", Patterns::Double(0.),
-                      "mm, slave points farther than this from the master surface are never "
-                      "paired (small sliding: pairing is frozen in the reference configuration)");
-    prm.declare_entry("Overlap tolerance", "1e-3", Patterns::Double(0.),
-                      "mm, an initial overlap of the bodies beyond this is an input error");
-    prm.declare_entry("Friction tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
-                      "-, convergence of the slip forces relative to the largest normal force");
+    const auto& points = elastic.support_points();
+    Point<dim> low = points.front(), high = points.front();
+    for (const auto& p : points)
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        low[c] = std::min(low[c], p[c]);
+        high[c] = std::max(high[c], p[c]);
+      }
+    characteristic_length = low.distance(high);
   }
 
-  void ContactParameters::parse_parameters(ParameterHandler& prm)
+  for (auto& support : supports)
   {
-    friction_coefficient = prm.get_double("Friction coefficient");
-    max_iterations = prm.get_integer("Max iterations");
-    load_steps = prm.get_integer("Load steps");
-    search_distance = prm.get_double("Search distance") * 1e-3;
-    overlap_tolerance = prm.get_double("Overlap tolerance") * 1e-3;
-    friction_tolerance = prm.get_double("Friction tolerance");
+    support.nodes = fem::boundary_nodes(dof_handler, {support.boundary});
+    if (support.nodes.empty())
+      throw InputError(support.name, "boundary id " + std::to_string(support.boundary) +
+                                         " has no faces in the mesh");
+    if (support.is_hub)
+      support.hub = std::make_unique<fem::RigidHub<dim>>(
+          elastic, support.boundary, support.axis, support.control, support.value, support.name);
   }
 
-  namespace
+  // A slave node whose normal DoF is held by a support keeps the support and is not coupled;
+  // a component held by a roller stays held in the contact constraints too.
+  AffineConstraints<double> held;
+  for (const auto& support : supports)
+    if (support.hub)
+      support.hub->add_constraints(held);
+    else
+      fem::add_prescribed_displacement(support.nodes, support.displacement, held,
+                                       support.components);
+  for (auto& pair : pairs)
   {
-    // The slave DoF a closed contact constrains: the component of the largest |n_c|, so that
-    // the constraint's coefficients −n_c/n_main stay bounded by one.
-    template <int dim>
-    unsigned int normal_component(const Tensor<1, dim>& normal)
+    std::vector<SlaveNode<dim>> coupled = mortar_coupling(
+        dof_handler, pair.slave, pair.master, parameters.search_distance, elastic.depth());
+    pair.nodes.clear();
+    for (auto& node : coupled)
+      if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))
+        pair.nodes.push_back(std::move(node));
+    if (pair.nodes.empty())
+      throw InputError(pair.name, "no contact candidates: no node of the slave surface has "
+                                  "the master surface within the search distance (" +
+                                      std::to_string(parameters.search_distance * 1e3) + " mm)");
+    const auto worst = std::min_element(pair.nodes.begin(), pair.nodes.end(),
+                                        [](const auto& a, const auto& b)
+                                        { return a.initial_gap < b.initial_gap; });
+    if (worst->initial_gap < -parameters.overlap_tolerance)
     {
-      unsigned int main = 0;
-      for (unsigned int c = 1; c < dim; ++c)
-        if (std::abs(normal[c]) > std::abs(normal[main]))
-          main = c;
-      return main;
+      std::ostringstream where;
+      where << "the bodies overlap by " << -worst->initial_gap * 1e3 << " mm at ("
+            << worst->node.position * 1e3 << ") mm, beyond the overlap tolerance of "
+            << parameters.overlap_tolerance * 1e3 << " mm";
+      throw InputError(pair.name, where.str());
     }
-  } // namespace
-
-  template <int dim>
-  ContactProblem<dim>::ContactProblem(MPI_Comm mpi_communicator,
-                                      const fem::ElasticityParameters& elasticity,
-                                      const fem::LinearSolverParameters& linear_solver,
-                                      const ContactParameters& contact)
-    : mpi_communicator(mpi_communicator)
-    , parameters(contact)
-    , elastic(mpi_communicator, elasticity, linear_solver)
-  {}
-
-  template <int dim>
-  ContactProblem<dim>::~ContactProblem() = default;
-
-  template <int dim>
-  void ContactProblem<dim>::add_displacement(types::boundary_id boundary,
-                                             const Tensor<1, dim>& value, const std::string& name,
-                                             const std::vector<bool>& components)
-  {
-    Support support;
-    support.name = name;
-    support.boundary = boundary;
-    support.displacement = value;
-    support.components = components;
-    supports.push_back(std::move(support));
+    // Nodes touching in the reference configuration start closed, so that a body held only
+    // through the contact (a torque-driven hub) is supported from the first solve.
+    const double touching = 1e-8 * characteristic_length;
+    pair.state.assign(pair.nodes.size(), NodeState::open);
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      if (pair.nodes[k].initial_gap <= touching)
+        pair.state[k] = parameters.friction_coefficient > 0 ? NodeState::stick : NodeState::slip;
+    pair.friction_direction.assign(pair.nodes.size(), Tensor<1, dim>());
+    pair.friction_bound.assign(pair.nodes.size(), -1.);
   }
+  displacement.reinit(dof_handler.n_dofs());
+  step_start.reinit(dof_handler.n_dofs());
+  result = ContactResults<dim>();
+  result.n_dofs = dof_handler.n_dofs();
+  result.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+  result.setup_time = timer.wall_time();
+}
 
-  template <int dim>
-  void ContactProblem<dim>::add_rigid_hub(types::boundary_id boundary, const Point<dim>& axis,
-                                          typename fem::RigidHub<dim>::Control control,
-                                          double value, const std::string& name)
+template <int dim>
+Tensor<1, dim> ContactProblem<dim>::relative_displacement(const SlaveNode<dim>& node,
+                                                          const Vector<double>& u) const
+{
+  Tensor<1, dim> relative;
+  for (unsigned int c = 0; c < dim; ++c)
   {
-    Support support;
-    support.name = name;
-    support.boundary = boundary;
-    support.is_hub = true;
-    support.axis = axis;
-    support.control = control;
-    support.value = value;
-    supports.push_back(std::move(support));
+    relative[c] = u[node.node.dofs[c]];
+    for (const auto& master : node.masters)
+      relative[c] -= master.weight * u[master.node.dofs[c]];
   }
+  return relative;
+}
 
-  template <int dim>
-  void ContactProblem<dim>::add_contact_pair(const std::vector<types::boundary_id>& slave,
-                                             const std::vector<types::boundary_id>& master,
-                                             const std::string& name)
-  {
-    Pair pair;
-    pair.name = name;
-    pair.slave = slave;
-    pair.master = master;
-    pairs.push_back(std::move(pair));
-  }
+template <int dim>
+AffineConstraints<double> ContactProblem<dim>::make_constraints(double load_factor) const
+{
+  AffineConstraints<double> constraints;
+  for (const auto& support : supports)
+    if (support.hub)
+      support.hub->add_constraints(constraints, load_factor);
+    else
+      fem::add_prescribed_displacement(support.nodes, load_factor * support.displacement,
+                                       constraints, support.components);
 
-  template <int dim>
-  void ContactProblem<dim>::setup_system()
-  {
-    Timer timer(mpi_communicator, true);
-    elastic.setup_system();
-    const DoFHandler<dim>& dof_handler = elastic.get_dof_handler();
+  for (const auto& pair : pairs)
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
-      const auto& points = elastic.support_points();
-      Point<dim> low = points.front(), high = points.front();
-      for (const auto& p : points)
+      if (pair.state[k] == NodeState::open)
+        continue;
+      const SlaveNode<dim>& node = pair.nodes[k];
+      const Tensor<1, dim>& n = node.normal;
+      if (pair.state[k] == NodeState::stick)
+      {
+        // u_s − Σ w_m u_m = g n + (tangential offset reached at the start of the step).
+        const Tensor<1, dim> start = relative_displacement(node, step_start);
+        const Tensor<1, dim> offset = node.initial_gap * n + (start - (start * n) * n);
         for (unsigned int c = 0; c < dim; ++c)
         {
-          low[c] = std::min(low[c], p[c]);
-          high[c] = std::max(high[c], p[c]);
+          if (constraints.is_constrained(node.node.dofs[c]))
+            continue;
+          constraints.add_line(node.node.dofs[c]);
+          for (const auto& master : node.masters)
+            constraints.add_entry(node.node.dofs[c], master.node.dofs[c], master.weight);
+          constraints.set_inhomogeneity(node.node.dofs[c], offset[c]);
         }
-      characteristic_length = low.distance(high);
-    }
-
-    for (auto& support : supports)
-    {
-      support.nodes = fem::boundary_nodes(dof_handler, {support.boundary});
-      if (support.nodes.empty())
-        throw InputError(support.name, "boundary id " + std::to_string(support.boundary) +
-                                         " has no faces in the mesh");
-      if (support.is_hub)
-        support.hub = std::make_unique<fem::RigidHub<dim>>(
-          elastic, support.boundary, support.axis, support.control, support.value, support.name);
-    }
-
-    // A slave node whose normal DoF is held by a support keeps the support and is not coupled;
-    // a component held by a roller stays held in the contact constraints too.
-    AffineConstraints<double> held;
-    for (const auto& support : supports)
-      if (support.hub)
-        support.hub->add_constraints(held);
-      else
-        fem::add_prescribed_displacement(support.nodes, support.displacement, held,
-                                         support.components);
-    for (auto& pair : pairs)
-    {
-      std::vector<SlaveNode<dim>> coupled =
-        mortar_coupling(dof_handler, pair.slave, pair.master, parameters.search_distance,
-                        elastic.depth());
-      pair.nodes.clear();
-      for (auto& node : coupled)
-        if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))
-          pair.nodes.push_back(std::move(node));
-      if (pair.nodes.empty())
-        throw InputError(pair.name, "no contact candidates: no node of the slave surface has "
-                                    "the master surface within the search distance (" +
-                                      std::to_string(parameters.search_distance * 1e3) + " mm)");
-      const auto worst = std::min_element(
-        pair.nodes.begin(), pair.nodes.end(),
-        [](const auto& a, const auto& b) { return a.initial_gap < b.initial_gap; });
-      if (worst->initial_gap < -parameters.overlap_tolerance)
-      {
-        std::ostringstream where;
-        where << "the bodies overlap by " << -worst->initial_gap * 1e3 << " mm at ("
-              << worst->node.position * 1e3 << ") mm, beyond the overlap tolerance of "
-              << parameters.overlap_tolerance * 1e3 << " mm";
-        throw InputError(pair.name, where.str());
       }
-      // Nodes touching in the reference configuration start closed, so that a body held only
-      // through the contact (a torque-driven hub) is supported from the first solve.
-      const double touching = 1e-8 * characteristic_length;
-      pair.state.assign(pair.nodes.size(), NodeState::open);
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-        if (pair.nodes[k].initial_gap <= touching)
-          pair.state[k] = parameters.friction_coefficient > 0 ? NodeState::stick : NodeState::slip;
-      pair.friction_direction.assign(pair.nodes.size(), Tensor<1, dim>());
-      pair.friction_bound.assign(pair.nodes.size(), -1.);
-    }
-    displacement.reinit(dof_handler.n_dofs());
-    step_start.reinit(dof_handler.n_dofs());
-    result = ContactResults<dim>();
-    result.n_dofs = dof_handler.n_dofs();
-    result.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    result.setup_time = timer.wall_time();
-  }
-
-  template <int dim>
-  Tensor<1, dim> ContactProblem<dim>::relative_displacement(const SlaveNode<dim>& node,
-                                                            const Vector<double>& u) const
-  {
-    Tensor<1, dim> relative;
-    for (unsigned int c = 0; c < dim; ++c)
-    {
-      relative[c] = u[node.node.dofs[c]];
-      for (const auto& master : node.masters)
-        relative[c] -= master.weight * u[master.node.dofs[c]];
-    }
-    return relative;
-  }
-
-  template <int dim>
-  AffineConstraints<double> ContactProblem<dim>::make_constraints(double load_factor) const
-  {
-    AffineConstraints<double> constraints;
-    for (const auto& support : supports)
-      if (support.hub)
-        support.hub->add_constraints(constraints, load_factor);
       else
-        fem::add_prescribed_displacement(support.nodes, load_factor * support.displacement,
-                                         constraints, support.components);
-
-    for (const auto& pair : pairs)
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
       {
-        if (pair.state[k] == NodeState::open)
-          continue;
-        const SlaveNode<dim>& node = pair.nodes[k];
-        const Tensor<1, dim>& n = node.normal;
-        if (pair.state[k] == NodeState::stick)
+        // n·u_s = g + Σ w_m n·u_m, solved for the slave component with the largest |n_c|.
+        const unsigned int main = normal_component(n);
+        const types::global_dof_index dof = node.node.dofs[main];
+        constraints.add_line(dof);
+        for (unsigned int c = 0; c < dim; ++c)
         {
-          // u_s − Σ w_m u_m = g n + (tangential offset reached at the start of the step).
-          const Tensor<1, dim> start = relative_displacement(node, step_start);
-          const Tensor<1, dim> offset = node.initial_gap * n + (start - (start * n) * n);
-          for (unsigned int c = 0; c < dim; ++c)
-          {
-            if (constraints.is_constrained(node.node.dofs[c]))
-              continue;
-            constraints.add_line(node.node.dofs[c]);
+          if (c != main && n[c] != 0.)
+            constraints.add_entry(dof, node.node.dofs[c], -n[c] / n[main]);
+          if (n[c] != 0.)
             for (const auto& master : node.masters)
-              constraints.add_entry(node.node.dofs[c], master.node.dofs[c], master.weight);
-            constraints.set_inhomogeneity(node.node.dofs[c], offset[c]);
-          }
+              constraints.add_entry(dof, master.node.dofs[c], master.weight * n[c] / n[main]);
         }
+        constraints.set_inhomogeneity(dof, node.initial_gap / n[main]);
+      }
+    }
+  constraints.close();
+  return constraints;
+}
+
+template <int dim>
+Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
+{
+  Vector<double> loads(elastic.get_dof_handler().n_dofs());
+  for (const auto& support : supports)
+    if (support.hub)
+      support.hub->add_loads(loads, load_factor);
+  for (const auto& pair : pairs)
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      if (pair.state[k] == NodeState::slip && parameters.friction_coefficient > 0.)
+      {
+        // Coulomb: μ λ_n along the friction direction on the slave, the reaction on the
+        // master distributed with the mortar weights.
+        const Tensor<1, dim> force =
+            std::max(pair.friction_bound[k], 0.) * pair.friction_direction[k];
+        const SlaveNode<dim>& node = pair.nodes[k];
+        for (unsigned int c = 0; c < dim; ++c)
+        {
+          loads[node.node.dofs[c]] += force[c];
+          for (const auto& master : node.masters)
+            loads[master.node.dofs[c]] -= master.weight * force[c];
+        }
+      }
+  return loads;
+}
+
+template <int dim>
+unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
+{
+  const double mu = parameters.friction_coefficient;
+  double largest_normal_force = 0.;
+  for (const auto& pair : pairs)
+    for (const auto& node : pair.nodes)
+    {
+      Tensor<1, dim> force;
+      for (unsigned int c = 0; c < dim; ++c)
+        force[c] = residual[node.node.dofs[c]];
+      largest_normal_force = std::max(largest_normal_force, -(force * node.normal));
+    }
+  // Round-off levels: a closed node is tensile, an open one penetrating, only beyond these.
+  const double force_tolerance = 1e-10 * largest_normal_force;
+  const double gap_tolerance = 1e-12 * characteristic_length;
+  // Weight of the slip in the tangential trial, c = E/(10 h): of the order of a surface node's
+  // tangential stiffness. It steers the iteration path only; with c = E/h the stick/slip
+  // front of a Cattaneo–Mindlin contact overshot and cycled.
+  const double stiffness = 0.1 * elastic.max_youngs_modulus(); // Pa
+
+  unsigned int changed = 0;
+  for (auto& pair : pairs)
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+    {
+      const SlaveNode<dim>& node = pair.nodes[k];
+      Tensor<1, dim> force; // contact force on the slave node, N
+      for (unsigned int c = 0; c < dim; ++c)
+        force[c] = residual[node.node.dofs[c]];
+      const double normal_force = -(force * node.normal);
+      const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
+      const Tensor<1, dim> relative = relative_displacement(node, displacement);
+      const double gap = node.initial_gap - relative * node.normal;
+      Tensor<1, dim> slip = relative - relative_displacement(node, step_start);
+      slip -= (slip * node.normal) * node.normal;
+
+      // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = λ_n − c·g·A (λ_n = 0
+      // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s against the bound.
+      const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
+      const double c = stiffness / h; // Pa/m
+      const NodeState old_state = pair.state[k];
+      const bool closed =
+          old_state == NodeState::open ? gap < -gap_tolerance : normal_force >= -force_tolerance;
+      const double normal_trial = // N
+          old_state == NodeState::open ? -c * gap * node.area : normal_force;
+      NodeState new_state = NodeState::open;
+      Tensor<1, dim> direction = pair.friction_direction[k];
+      if (closed && mu == 0.)
+        new_state = NodeState::slip;
+      else if (closed)
+      {
+        // A node closing for the first time gets its bound from the trial pressure.
+        if (pair.friction_bound[k] < 0.)
+          pair.friction_bound[k] = mu * std::max(normal_trial, 0.);
+        const Tensor<1, dim> trial = tangential_force / node.area - c * slip; // Pa
+        if (trial.norm() <= pair.friction_bound[k] / node.area * (1. + 1e-12))
+          new_state = NodeState::stick;
         else
         {
-          // n·u_s = g + Σ w_m n·u_m, solved for the slave component with the largest |n_c|.
-          const unsigned int main = normal_component(n);
-          const types::global_dof_index dof = node.node.dofs[main];
-          constraints.add_line(dof);
-          for (unsigned int c = 0; c < dim; ++c)
-          {
-            if (c != main && n[c] != 0.)
-              constraints.add_entry(dof, node.node.dofs[c], -n[c] / n[main]);
-            if (n[c] != 0.)
-              for (const auto& master : node.masters)
-                constraints.add_entry(dof, master.node.dofs[c], master.weight * n[c] / n[main]);
-          }
-          constraints.set_inhomogeneity(dof, node.initial_gap / n[main]);
-        }
-      }
-    constraints.close();
-    return constraints;
-  }
-
-  template <int dim>
-  Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
-  {
-    Vector<double> loads(elastic.get_dof_handler().n_dofs());
-    for (const auto& support : supports)
-      if (support.hub)
-        support.hub->add_loads(loads, load_factor);
-    for (const auto& pair : pairs)
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-        if (pair.state[k] == NodeState::slip && parameters.friction_coefficient > 0.)
-        {
-          // Coulomb: μ λ_n along the friction direction on the slave, the reaction on the
-          // master distributed with the mortar weights.
-          const Tensor<1, dim> force =
-            std::max(pair.friction_bound[k], 0.) * pair.friction_direction[k];
-          const SlaveNode<dim>& node = pair.nodes[k];
-          for (unsigned int c = 0; c < dim; ++c)
-          {
-            loads[node.node.dofs[c]] += force[c];
-            for (const auto& master : node.masters)
-              loads[master.node.dofs[c]] -= master.weight * force[c];
-          }
-        }
-    return loads;
-  }
-
-  template <int dim>
-  unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
-  {
-    const double mu = parameters.friction_coefficient;
-    double largest_normal_force = 0.;
-    for (const auto& pair : pairs)
-      for (const auto& node : pair.nodes)
-      {
-        Tensor<1, dim> force;
-        for (unsigned int c = 0; c < dim; ++c)
-          force[c] = residual[node.node.dofs[c]];
-        largest_normal_force = std::max(largest_normal_force, -(force * node.normal));
-      }
-    // Round-off levels: a closed node is tensile, an open one penetrating, only beyond these.
-    const double force_tolerance = 1e-10 * largest_normal_force;
-    const double gap_tolerance = 1e-12 * characteristic_length;
-    // Weight of the slip in the tangential trial, c = E/(10 h): of the order of a surface node's
-    // tangential stiffness. It steers the iteration path only; with c = E/h the stick/slip
-    // front of a Cattaneo–Mindlin contact overshot and cycled.
-    const double stiffness = 0.1 * elastic.max_youngs_modulus(); // Pa
-
-    unsigned int changed = 0;
-    for (auto& pair : pairs)
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-      {
-        const SlaveNode<dim>& node = pair.nodes[k];
-        Tensor<1, dim> force; // contact force on the slave node, N
-        for (unsigned int c = 0; c < dim; ++c)
-          force[c] = residual[node.node.dofs[c]];
-        const double normal_force = -(force * node.normal);
-        const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
-        const Tensor<1, dim> relative = relative_displacement(node, displacement);
-        const double gap = node.initial_gap - relative * node.normal;
-        Tensor<1, dim> slip = relative - relative_displacement(node, step_start);
-        slip -= (slip * node.normal) * node.normal;
-
-        // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = λ_n − c·g·A (λ_n = 0
-        // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s against the bound.
-        const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
-        const double c = stiffness / h; // Pa/m
-        const NodeState old_state = pair.state[k];
-        const bool closed = old_state == NodeState::open ? gap < -gap_tolerance
-                                                         : normal_force >= -force_tolerance;
-        const double normal_trial = // N
-          old_state == NodeState::open ? -c * gap * node.area : normal_force;
-        NodeState new_state = NodeState::open;
-        Tensor<1, dim> direction = pair.friction_direction[k];
-        if (closed && mu == 0.)
           new_state = NodeState::slip;
-        else if (closed)
-        {
-          // A node closing for the first time gets its bound from the trial pressure.
-          if (pair.friction_bound[k] < 0.)
-            pair.friction_bound[k] = mu * std::max(normal_trial, 0.);
-          const Tensor<1, dim> trial = tangential_force / node.area - c * slip; // Pa
-          if (trial.norm() <= pair.friction_bound[k] / node.area * (1. + 1e-12))
-            new_state = NodeState::stick;
-          else
-          {
-            new_state = NodeState::slip;
-            direction = trial / trial.norm();
-          }
+          direction = trial / trial.norm();
         }
-        bool node_changed = new_state != old_state;
-        if (new_state == NodeState::slip && mu > 0.)
-        {
-          node_changed = node_changed || direction * pair.friction_direction[k] < 1. - 1e-10;
-          pair.friction_direction[k] = direction;
-        }
-        pair.state[k] = new_state;
-        changed += node_changed ? 1 : 0;
       }
-    return changed;
-  }
-
-  template <int dim>
-  double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residual)
-  {
-    if (parameters.friction_coefficient == 0.)
-      return 0.;
-    double largest_normal_force = 0., largest_change = 0.;
-    for (auto& pair : pairs)
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      bool node_changed = new_state != old_state;
+      if (new_state == NodeState::slip && mu > 0.)
       {
-        Tensor<1, dim> force;
-        for (unsigned int c = 0; c < dim; ++c)
-          force[c] = residual[pair.nodes[k].node.dofs[c]];
-        const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
-        largest_normal_force = std::max(largest_normal_force, normal_force);
-        const double bound =
-          pair.state[k] == NodeState::open ? -1. : parameters.friction_coefficient * normal_force;
-        if (pair.state[k] != NodeState::open)
-          largest_change = std::max(largest_change, std::abs(bound - pair.friction_bound[k]));
-        pair.friction_bound[k] = bound;
+        node_changed = node_changed || direction * pair.friction_direction[k] < 1. - 1e-10;
+        pair.friction_direction[k] = direction;
       }
-    return largest_normal_force > 0. ? largest_change / largest_normal_force : 0.;
-  }
+      pair.state[k] = new_state;
+      changed += node_changed ? 1 : 0;
+    }
+  return changed;
+}
 
-  template <int dim>
-  const ContactResults<dim>& ContactProblem<dim>::solve()
-  {
-    Timer total(mpi_communicator, true);
-    result.history.clear();
-    result.active_set_iterations = 0;
-    result.load_steps = parameters.load_steps;
-    Vector<double> residual;
-    for (unsigned int step = 1; step <= parameters.load_steps; ++step)
+template <int dim>
+double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residual)
+{
+  if (parameters.friction_coefficient == 0.)
+    return 0.;
+  double largest_normal_force = 0., largest_change = 0.;
+  for (auto& pair : pairs)
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
-      const double load_factor = static_cast<double>(step) / parameters.load_steps;
-      elastic.set_load_factor(load_factor);
-      std::map<std::string, unsigned int> visited; // state signature -> times seen
-      bool converged = false;
-      unsigned int last_changes = 0;
-      for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
-      {
-        const AffineConstraints<double> constraints = make_constraints(load_factor);
-        const Vector<double> loads = make_point_loads(load_factor);
-        fem::LinearSolveStatistics statistics;
-        displacement = elastic.solve(constraints, loads, statistics);
-        residual = elastic.residual(displacement);
-        const unsigned int changes = update_states(residual);
-        // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
-        const double friction_change = changes == 0 ? update_friction_bounds(residual) : 1.;
-        ++result.active_set_iterations;
-        result.assembly_time += statistics.assembly_time;
-        result.solve_time += statistics.solve_time;
+      Tensor<1, dim> force;
+      for (unsigned int c = 0; c < dim; ++c)
+        force[c] = residual[pair.nodes[k].node.dofs[c]];
+      const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
+      largest_normal_force = std::max(largest_normal_force, normal_force);
+      const double bound =
+          pair.state[k] == NodeState::open ? -1. : parameters.friction_coefficient * normal_force;
+      if (pair.state[k] != NodeState::open)
+        largest_change = std::max(largest_change, std::abs(bound - pair.friction_bound[k]));
+      pair.friction_bound[k] = bound;
+    }
+  return largest_normal_force > 0. ? largest_change / largest_normal_force : 0.;
+}
 
-        IterationRecord record;
-        record.load_step = step;
-        record.iteration = iteration;
-        record.n_changed = changes;
-        record.friction_change = changes == 0 ? friction_change : 0.;
-        record.time = statistics.assembly_time + statistics.solve_time;
-        std::string signature;
-        for (const auto& pair : pairs)
-          for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-          {
-            record.n_closed += pair.state[k] != NodeState::open;
-            record.n_stick += pair.state[k] == NodeState::stick;
-            record.n_slip += pair.state[k] == NodeState::slip;
-            signature += static_cast<char>('0' + static_cast<int>(pair.state[k]));
-            if (dim == 2 && pair.state[k] == NodeState::slip)
-              signature += pair.friction_direction[k] * pair.nodes[k].tangents[0] > 0 ? '+' : '-';
-          }
-        result.history.push_back(record);
-        last_changes = changes;
-        if (changes == 0 && friction_change <= parameters.friction_tolerance)
+template <int dim>
+const ContactResults<dim>& ContactProblem<dim>::solve()
+{
+  Timer total(mpi_communicator, true);
+  result.history.clear();
+  result.active_set_iterations = 0;
+  result.load_steps = parameters.load_steps;
+  Vector<double> residual;
+  for (unsigned int step = 1; step <= parameters.load_steps; ++step)
+  {
+    const double load_factor = static_cast<double>(step) / parameters.load_steps;
+    elastic.set_load_factor(load_factor);
+    std::map<std::string, unsigned int> visited; // state signature -> times seen
+    bool converged = false;
+    unsigned int last_changes = 0;
+    for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
+    {
+      const AffineConstraints<double> constraints = make_constraints(load_factor);
+      const Vector<double> loads = make_point_loads(load_factor);
+      fem::LinearSolveStatistics statistics;
+      displacement = elastic.solve(constraints, loads, statistics);
+      residual = elastic.residual(displacement);
+      const unsigned int changes = update_states(residual);
+      // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
+      const double friction_change = changes == 0 ? update_friction_bounds(residual) : 1.;
+      ++result.active_set_iterations;
+      result.assembly_time += statistics.assembly_time;
+      result.solve_time += statistics.solve_time;
+
+      IterationRecord record;
+      record.load_step = step;
+      record.iteration = iteration;
+      record.n_changed = changes;
+      record.friction_change = changes == 0 ? friction_change : 0.;
+      record.time = statistics.assembly_time + statistics.solve_time;
+      std::string signature;
+      for (const auto& pair : pairs)
+        for (unsigned int k = 0; k < pair.nodes.size(); ++k)
         {
-          converged = true;
-          break;
+          record.n_closed += pair.state[k] != NodeState::open;
+          record.n_stick += pair.state[k] == NodeState::stick;
+          record.n_slip += pair.state[k] == NodeState::slip;
+          signature += static_cast<char>('0' + static_cast<int>(pair.state[k]));
+          if (dim == 2 && pair.state[k] == NodeState::slip)
+            signature += pair.friction_direction[k] * pair.nodes[k].tangents[0] > 0 ? '+' : '-';
         }
-        if (changes == 0) // new bounds: a new Tresca problem
-          visited.clear();
-        else if (++visited[signature] >= 3)
-          throw SolverFailure("contact active set",
-                              "cycling: the same contact state recurred three times (load step " +
-                                std::to_string(step) + ", iteration " +
-                                std::to_string(iteration) + ", " + std::to_string(changes) +
-                                " nodes changing)");
+      result.history.push_back(record);
+      last_changes = changes;
+      if (changes == 0 && friction_change <= parameters.friction_tolerance)
+      {
+        converged = true;
+        break;
       }
-      if (!converged)
+      if (changes == 0) // new bounds: a new Tresca problem
+        visited.clear();
+      else if (++visited[signature] >= 3)
         throw SolverFailure("contact active set",
-                            "no convergence within " + std::to_string(parameters.max_iterations) +
+                            "cycling: the same contact state recurred three times (load step " +
+                                std::to_string(step) + ", iteration " + std::to_string(iteration) +
+                                ", " + std::to_string(changes) + " nodes changing)");
+    }
+    if (!converged)
+      throw SolverFailure("contact active set",
+                          "no convergence within " + std::to_string(parameters.max_iterations) +
                               " iterations at load step " + std::to_string(step) + " (" +
                               std::to_string(last_changes) + " nodes still changing state)");
-      step_start = displacement;
-    }
-    collect_results(residual);
-    result.total_time = total.wall_time() + result.setup_time;
-    return result;
+    step_start = displacement;
   }
+  collect_results(residual);
+  result.total_time = total.wall_time() + result.setup_time;
+  return result;
+}
 
-  template <int dim>
-  void ContactProblem<dim>::collect_results(const Vector<double>& residual)
+template <int dim>
+void ContactProblem<dim>::collect_results(const Vector<double>& residual)
+{
+  residual_forces = residual;
+  result.pairs.clear();
+  for (const auto& pair : pairs)
   {
-    residual_forces = residual;
-    result.pairs.clear();
-    for (const auto& pair : pairs)
-    {
-      PairResult<dim> out;
-      out.name = pair.name;
-      // Coordinate along the principal direction of the slave nodes, for profiles.
-      Point<dim> centre;
-      for (const auto& node : pair.nodes)
-        centre += node.node.position / static_cast<double>(pair.nodes.size());
-      Eigen::Matrix<double, dim, dim> covariance = Eigen::Matrix<double, dim, dim>::Zero();
-      for (const auto& node : pair.nodes)
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            covariance(i, j) += (node.node.position[i] - centre[i]) *
-                                (node.node.position[j] - centre[j]);
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, dim, dim>> eigen(covariance);
-      Tensor<1, dim> axis;
+    PairResult<dim> out;
+    out.name = pair.name;
+    // Coordinate along the principal direction of the slave nodes, for profiles.
+    Point<dim> centre;
+    for (const auto& node : pair.nodes)
+      centre += node.node.position / static_cast<double>(pair.nodes.size());
+    Eigen::Matrix<double, dim, dim> covariance = Eigen::Matrix<double, dim, dim>::Zero();
+    for (const auto& node : pair.nodes)
       for (unsigned int i = 0; i < dim; ++i)
-        axis[i] = eigen.eigenvectors()(i, dim - 1);
-      unsigned int largest = 0;
-      for (unsigned int i = 1; i < dim; ++i)
-        if (std::abs(axis[i]) > std::abs(axis[largest]))
-          largest = i;
-      if (axis[largest] < 0)
-        axis = -axis;
+        for (unsigned int j = 0; j < dim; ++j)
+          covariance(i, j) +=
+              (node.node.position[i] - centre[i]) * (node.node.position[j] - centre[j]);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, dim, dim>> eigen(covariance);
+    Tensor<1, dim> axis;
+    for (unsigned int i = 0; i < dim; ++i)
+      axis[i] = eigen.eigenvectors()(i, dim - 1);
+    unsigned int largest = 0;
+    for (unsigned int i = 1; i < dim; ++i)
+      if (std::abs(axis[i]) > std::abs(axis[largest]))
+        largest = i;
+    if (axis[largest] < 0)
+      axis = -axis;
 
-      double low = std::numeric_limits<double>::max(), high = -low;
-      Tensor<1, dim> tangential_sum;
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-      {
-        const SlaveNode<dim>& node = pair.nodes[k];
-        SurfacePoint<dim> point;
-        point.position = node.node.position;
-        point.coordinate = (node.node.position - centre) * axis;
-        Tensor<1, dim> force;
-        for (unsigned int c = 0; c < dim; ++c)
-          force[c] = residual[node.node.dofs[c]];
-        const double normal_force = -(force * node.normal);
-        const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
-        point.state = pair.state[k];
-        const Tensor<1, dim> relative = relative_displacement(node, displacement);
-        point.initial_gap = node.initial_gap;
-        point.gap = point.state == NodeState::open ? node.initial_gap - relative * node.normal : 0.;
-        point.slip = relative - (relative * node.normal) * node.normal;
-        if (point.state != NodeState::open)
-        {
-          point.pressure = normal_force / node.area;
-          point.shear = tangential_force / node.area;
-          ++out.n_closed;
-          out.n_stick += point.state == NodeState::stick;
-          out.n_slip += point.state == NodeState::slip;
-          low = std::min(low, point.coordinate);
-          high = std::max(high, point.coordinate);
-        }
-        out.force_on_slave += force;
-        out.normal_force += normal_force;
-        tangential_sum += tangential_force;
-        out.max_pressure = std::max(out.max_pressure, point.pressure);
-        out.points.push_back(point);
-      }
-      out.tangential_force = tangential_sum.norm();
-      out.contact_length = out.n_closed > 0 ? high - low : 0.;
-      std::sort(out.points.begin(), out.points.end(),
-                [](const auto& a, const auto& b) { return a.coordinate < b.coordinate; });
-      result.pairs.push_back(out);
-    }
-    result.supports.clear();
-    for (const auto& support : supports)
+    double low = std::numeric_limits<double>::max(), high = -low;
+    Tensor<1, dim> tangential_sum;
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
-      SupportResult<dim> out;
-      out.name = support.name;
-      out.is_hub = support.is_hub;
-      out.axis = support.axis;
-      const fem::Reaction<dim> reaction = fem::reaction(support.nodes, residual, support.axis);
-      out.force = reaction.force;
-      out.torque = reaction.torque;
-      if (support.hub)
-        out.rotation = support.hub->rotation(displacement);
-      result.supports.push_back(out);
-    }
-  }
-
-  template <int dim>
-  std::vector<std::string> ContactProblem<dim>::output_results(const std::string& directory,
-                                                               const std::string& base) const
-  {
-    std::vector<fem::NodalField> fields{{"contact_pressure", {}}, {"contact_gap", {}},
-                                        {"contact_slip", {}}, {"contact_state", {}}};
-    for (const auto& pair : pairs)
-      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      const SlaveNode<dim>& node = pair.nodes[k];
+      SurfacePoint<dim> point;
+      point.position = node.node.position;
+      point.coordinate = (node.node.position - centre) * axis;
+      Tensor<1, dim> force;
+      for (unsigned int c = 0; c < dim; ++c)
+        force[c] = residual[node.node.dofs[c]];
+      const double normal_force = -(force * node.normal);
+      const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
+      point.state = pair.state[k];
+      const Tensor<1, dim> relative = relative_displacement(node, displacement);
+      point.initial_gap = node.initial_gap;
+      point.gap = point.state == NodeState::open ? node.initial_gap - relative * node.normal : 0.;
+      point.slip = relative - (relative * node.normal) * node.normal;
+      if (point.state != NodeState::open)
       {
-        const SlaveNode<dim>& node = pair.nodes[k];
-        const types::global_dof_index key = node.node.dofs[0];
-        const Tensor<1, dim> relative = relative_displacement(node, displacement);
-        const bool closed = pair.state[k] != NodeState::open;
-        Tensor<1, dim> force;
-        for (unsigned int c = 0; c < dim; ++c)
-          force[c] = residual_forces[node.node.dofs[c]];
-        fields[0].values[key] = closed ? -(force * node.normal) / node.area : 0.;
-        fields[1].values[key] = closed ? 0. : node.initial_gap - relative * node.normal;
-        fields[2].values[key] = (relative - (relative * node.normal) * node.normal).norm();
-        fields[3].values[key] = static_cast<double>(pair.state[k]);
+        point.pressure = normal_force / node.area;
+        point.shear = tangential_force / node.area;
+        ++out.n_closed;
+        out.n_stick += point.state == NodeState::stick;
+        out.n_slip += point.state == NodeState::slip;
+        low = std::min(low, point.coordinate);
+        high = std::max(high, point.coordinate);
       }
-    return elastic.write_vtu(displacement, fields, directory, base);
+      out.force_on_slave += force;
+      out.normal_force += normal_force;
+      tangential_sum += tangential_force;
+      out.max_pressure = std::max(out.max_pressure, point.pressure);
+      out.points.push_back(point);
+    }
+    out.tangential_force = tangential_sum.norm();
+    out.contact_length = out.n_closed > 0 ? high - low : 0.;
+    std::sort(out.points.begin(), out.points.end(),
+              [](const auto& a, const auto& b) { return a.coordinate < b.coordinate; });
+    result.pairs.push_back(out);
   }
-
-  template <int dim>
-  const ContactResults<dim>& ContactProblem<dim>::run()
+  result.supports.clear();
+  for (const auto& support : supports)
   {
-    setup_system();
-    return solve();
+    SupportResult<dim> out;
+    out.name = support.name;
+    out.is_hub = support.is_hub;
+    out.axis = support.axis;
+    const fem::Reaction<dim> reaction = fem::reaction(support.nodes, residual, support.axis);
+    out.force = reaction.force;
+    out.torque = reaction.torque;
+    if (support.hub)
+      out.rotation = support.hub->rotation(displacement);
+    result.supports.push_back(out);
   }
+}
 
-  template class ContactProblem<2>;
-  template class ContactProblem<3>;
+template <int dim>
+std::vector<std::string> ContactProblem<dim>::output_results(const std::string& directory,
+                                                             const std::string& base) const
+{
+  std::vector<fem::NodalField> fields{
+      {"contact_pressure", {}}, {"contact_gap", {}}, {"contact_slip", {}}, {"contact_state", {}}};
+  for (const auto& pair : pairs)
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+    {
+      const SlaveNode<dim>& node = pair.nodes[k];
+      const types::global_dof_index key = node.node.dofs[0];
+      const Tensor<1, dim> relative = relative_displacement(node, displacement);
+      const bool closed = pair.state[k] != NodeState::open;
+      Tensor<1, dim> force;
+      for (unsigned int c = 0; c < dim; ++c)
+        force[c] = residual_forces[node.node.dofs[c]];
+      fields[0].values[key] = closed ? -(force * node.normal) / node.area : 0.;
+      fields[1].values[key] = closed ? 0. : node.initial_gap - relative * node.normal;
+      fields[2].values[key] = (relative - (relative * node.normal) * node.normal).norm();
+      fields[3].values[key] = static_cast<double>(pair.state[k]);
+    }
+  return elastic.write_vtu(displacement, fields, directory, base);
+}
+
+template <int dim>
+const ContactResults<dim>& ContactProblem<dim>::run()
+{
+  setup_system();
+  return solve();
+}
+
+template class ContactProblem<2>;
+template class ContactProblem<3>;
 } // namespace gearstiff::contact

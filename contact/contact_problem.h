@@ -20,188 +20,187 @@
 // a SolverFailure, so is a body left free to move.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
-#include <deal.II/base/tensor.h>
-#include <deal.II/lac/vector.h>
-
 #include "contact/mortar.h"
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
 
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace gearstiff::contact
 {
-  // Subsection "Contact".
-  struct ContactParameters
-  {
-    double friction_coefficient = 0.;  // -, Coulomb μ
-    unsigned int max_iterations = 40;  // active-set iterations per load step
-    unsigned int load_steps = 1;       // -, loads applied in equal increments (friction history)
-    double search_distance = 1e-3;     // m, slave points farther from the master are not paired
-    double overlap_tolerance = 1e-6;   // m, initial overlap beyond this is an input error
-    double friction_tolerance = 1e-8;  // -, friction-force change relative to the normal force
+// Subsection "Contact".
+struct ContactParameters
+{
+  double friction_coefficient = 0.; // -, Coulomb μ
+  unsigned int max_iterations = 40; // active-set iterations per load step
+  unsigned int load_steps = 1;      // -, loads applied in equal increments (friction history)
+  double search_distance = 1e-3;    // m, slave points farther from the master are not paired
+  double overlap_tolerance = 1e-6;  // m, initial overlap beyond this is an input error
+  double friction_tolerance = 1e-8; // -, friction-force change relative to the normal force
 
-    static void declare_parameters(dealii::ParameterHandler& prm);
-    void parse_parameters(dealii::ParameterHandler& prm);
-  };
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
 
-  enum class NodeState
-  {
-    open = 0,
-    stick = 1,
-    slip = 2
-  };
+enum class NodeState
+{
+  open = 0,
+  stick = 1,
+  slip = 2
+};
 
-  // One slave node of a contact pair in the result.
-  template <int dim>
-  struct SurfacePoint
-  {
-    dealii::Point<dim> position;      // m, reference
-    double coordinate = 0.;           // m, along the surface's principal direction (for plots)
-    double pressure = 0.;             // Pa, normal contact pressure (compressive > 0)
-    dealii::Tensor<1, dim> shear;     // Pa, tangential traction on the slave
-    double gap = 0.;                  // m, current normal gap (0 when closed)
-    double initial_gap = 0.;          // m
-    dealii::Tensor<1, dim> slip;      // m, accumulated tangential slip (slave relative to master)
-    NodeState state = NodeState::open;
-  };
+// One slave node of a contact pair in the result.
+template <int dim>
+struct SurfacePoint
+{
+  dealii::Point<dim> position;  // m, reference
+  double coordinate = 0.;       // m, along the surface's principal direction (for plots)
+  double pressure = 0.;         // Pa, normal contact pressure (compressive > 0)
+  dealii::Tensor<1, dim> shear; // Pa, tangential traction on the slave
+  double gap = 0.;              // m, current normal gap (0 when closed)
+  double initial_gap = 0.;      // m
+  dealii::Tensor<1, dim> slip;  // m, accumulated tangential slip (slave relative to master)
+  NodeState state = NodeState::open;
+};
 
-  template <int dim>
-  struct PairResult
+template <int dim>
+struct PairResult
+{
+  std::string name;
+  std::vector<SurfacePoint<dim>> points; // sorted by coordinate
+  dealii::Tensor<1, dim> force_on_slave; // N, resultant contact force on the slave body
+  double normal_force = 0.;              // N, Σ λ_n
+  double tangential_force = 0.;          // N, |Σ λ_τ| (resultant of the tangential forces)
+  double max_pressure = 0.;              // Pa
+  double contact_length = 0.;            // m, extent of the closed nodes along `coordinate`
+  unsigned int n_closed = 0, n_stick = 0, n_slip = 0;
+};
+
+template <int dim>
+struct SupportResult
+{
+  std::string name;
+  dealii::Tensor<1, dim> force; // N, exerted by the support on the body (residual)
+  double torque = 0.;           // N·m, about +z through `axis`
+  double rotation = 0.;         // rad, rigid hubs only
+  bool is_hub = false;
+  dealii::Point<dim> axis; // m
+};
+
+struct IterationRecord
+{
+  unsigned int load_step = 0, iteration = 0;
+  unsigned int n_closed = 0, n_stick = 0, n_slip = 0, n_changed = 0;
+  double friction_change = 0.; // -, relative
+  double time = 0.;            // s, wall, assembly + solve
+};
+
+template <int dim>
+struct ContactResults
+{
+  std::vector<PairResult<dim>> pairs;
+  std::vector<SupportResult<dim>> supports;
+  std::vector<IterationRecord> history;
+  unsigned int active_set_iterations = 0; // total over the load steps ("Newton steps")
+  unsigned int load_steps = 0;
+  dealii::types::global_dof_index n_dofs = 0;
+  unsigned int n_mpi_ranks = 1;
+  double setup_time = 0.;    // s: DoFs, K, mortar coupling
+  double assembly_time = 0.; // s, summed over iterations
+  double solve_time = 0.;    // s, summed over iterations
+  double total_time = 0.;    // s
+};
+
+template <int dim>
+class ContactProblem
+{
+public:
+  ContactProblem(MPI_Comm mpi_communicator, const fem::ElasticityParameters& elasticity,
+                 const fem::LinearSolverParameters& linear_solver,
+                 const ContactParameters& contact);
+  ~ContactProblem();
+
+  // Fill the mesh, materials and tractions through this before setup_system().
+  fem::ElasticSystem<dim>& system() { return elastic; }
+
+  // Supports; `name` labels the result and error messages (e.g. the physical group).
+  void add_displacement(dealii::types::boundary_id boundary,
+                        const dealii::Tensor<1, dim>& displacement, const std::string& name,
+                        const std::vector<bool>& components = {});
+  void add_rigid_hub(dealii::types::boundary_id boundary, const dealii::Point<dim>& axis,
+                     typename fem::RigidHub<dim>::Control control, double value,
+                     const std::string& name);
+  void add_contact_pair(const std::vector<dealii::types::boundary_id>& slave,
+                        const std::vector<dealii::types::boundary_id>& master,
+                        const std::string& name);
+
+  // DoFs, stiffness, supports and the mortar coupling; InputError when a pair has no
+  // candidates or the bodies overlap beyond the tolerance.
+  void setup_system();
+  // The load steps with their active-set iterations.
+  const ContactResults<dim>& solve();
+  // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
+  // state. Returns the file names written into `directory`.
+  std::vector<std::string> output_results(const std::string& directory,
+                                          const std::string& base) const;
+  const ContactResults<dim>& run();
+
+  const ContactResults<dim>& results() const { return result; }
+  const dealii::Vector<double>& solution() const { return displacement; }
+
+private:
+  struct Pair
   {
     std::string name;
-    std::vector<SurfacePoint<dim>> points; // sorted by coordinate
-    dealii::Tensor<1, dim> force_on_slave; // N, resultant contact force on the slave body
-    double normal_force = 0.;              // N, Σ λ_n
-    double tangential_force = 0.;          // N, |Σ λ_τ| (resultant of the tangential forces)
-    double max_pressure = 0.;              // Pa
-    double contact_length = 0.;            // m, extent of the closed nodes along `coordinate`
-    unsigned int n_closed = 0, n_stick = 0, n_slip = 0;
+    std::vector<dealii::types::boundary_id> slave, master;
+    std::vector<SlaveNode<dim>> nodes;
+    std::vector<NodeState> state;
+    std::vector<dealii::Tensor<1, dim>> friction_direction; // unit, force on the slave
+    // N, the slip-force bound μ λ_n of the current Tresca subproblem; negative: not yet set.
+    std::vector<double> friction_bound;
   };
-
-  template <int dim>
-  struct SupportResult
+  struct Support
   {
     std::string name;
-    dealii::Tensor<1, dim> force; // N, exerted by the support on the body (residual)
-    double torque = 0.;           // N·m, about +z through `axis`
-    double rotation = 0.;         // rad, rigid hubs only
+    dealii::types::boundary_id boundary;
+    dealii::Tensor<1, dim> displacement; // m, displacement supports
+    std::vector<bool> components;        // constrained components (empty: all)
     bool is_hub = false;
-    dealii::Point<dim> axis;      // m
+    dealii::Point<dim> axis; // m, hubs
+    typename fem::RigidHub<dim>::Control control = fem::RigidHub<dim>::Control::rotation;
+    double value = 0.;                       // rad or N·m, hubs
+    std::vector<fem::Node<dim>> nodes;       // resolved by setup_system()
+    std::unique_ptr<fem::RigidHub<dim>> hub; // owned, resolved by setup_system()
   };
 
-  struct IterationRecord
-  {
-    unsigned int load_step = 0, iteration = 0;
-    unsigned int n_closed = 0, n_stick = 0, n_slip = 0, n_changed = 0;
-    double friction_change = 0.; // -, relative
-    double time = 0.;            // s, wall, assembly + solve
-  };
+  dealii::AffineConstraints<double> make_constraints(double load_factor) const;
+  dealii::Vector<double> make_point_loads(double load_factor) const;
+  // Updates the states from the latest solution with the friction bounds held fixed; returns
+  // the number of changed nodes.
+  unsigned int update_states(const dealii::Vector<double>& residual);
+  // Sets the friction bounds to μ λ_n of the latest solution; returns their largest change
+  // relative to the largest normal force.
+  double update_friction_bounds(const dealii::Vector<double>& residual);
+  void collect_results(const dealii::Vector<double>& residual);
+  // Relative tangential displacement (slave − master) of a node, m.
+  dealii::Tensor<1, dim> relative_displacement(const SlaveNode<dim>& node,
+                                               const dealii::Vector<double>& u) const;
 
-  template <int dim>
-  struct ContactResults
-  {
-    std::vector<PairResult<dim>> pairs;
-    std::vector<SupportResult<dim>> supports;
-    std::vector<IterationRecord> history;
-    unsigned int active_set_iterations = 0; // total over the load steps ("Newton steps")
-    unsigned int load_steps = 0;
-    dealii::types::global_dof_index n_dofs = 0;
-    unsigned int n_mpi_ranks = 1;
-    double setup_time = 0.;    // s: DoFs, K, mortar coupling
-    double assembly_time = 0.; // s, summed over iterations
-    double solve_time = 0.;    // s, summed over iterations
-    double total_time = 0.;    // s
-  };
-
-  template <int dim>
-  class ContactProblem
-  {
-  public:
-    ContactProblem(MPI_Comm mpi_communicator, const fem::ElasticityParameters& elasticity,
-                   const fem::LinearSolverParameters& linear_solver,
-                   const ContactParameters& contact);
-    ~ContactProblem();
-
-    // Fill the mesh, materials and tractions through this before setup_system().
-    fem::ElasticSystem<dim>& system() { return elastic; }
-
-    // Supports; `name` labels the result and error messages (e.g. the physical group).
-    void add_displacement(dealii::types::boundary_id boundary,
-                          const dealii::Tensor<1, dim>& displacement, const std::string& name,
-                          const std::vector<bool>& components = {});
-    void add_rigid_hub(dealii::types::boundary_id boundary, const dealii::Point<dim>& axis,
-                       typename fem::RigidHub<dim>::Control control, double value,
-                       const std::string& name);
-    void add_contact_pair(const std::vector<dealii::types::boundary_id>& slave,
-                          const std::vector<dealii::types::boundary_id>& master,
-                          const std::string& name);
-
-    // DoFs, stiffness, supports and the mortar coupling; InputError when a pair has no
-    // candidates or the bodies overlap beyond the tolerance.
-    void setup_system();
-    // The load steps with their active-set iterations.
-    const ContactResults<dim>& solve();
-    // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
-    // state. Returns the file names written into `directory`.
-    std::vector<std::string> output_results(const std::string& directory,
-                                            const std::string& base) const;
-    const ContactResults<dim>& run();
-
-    const ContactResults<dim>& results() const { return result; }
-    const dealii::Vector<double>& solution() const { return displacement; }
-
-  private:
-    struct Pair
-    {
-      std::string name;
-      std::vector<dealii::types::boundary_id> slave, master;
-      std::vector<SlaveNode<dim>> nodes;
-      std::vector<NodeState> state;
-      std::vector<dealii::Tensor<1, dim>> friction_direction; // unit, force on the slave
-      // N, the slip-force bound μ λ_n of the current Tresca subproblem; negative: not yet set.
-      std::vector<double> friction_bound;
-    };
-    struct Support
-    {
-      std::string name;
-      dealii::types::boundary_id boundary;
-      dealii::Tensor<1, dim> displacement; // m, displacement supports
-      std::vector<bool> components;        // constrained components (empty: all)
-      bool is_hub = false;
-      dealii::Point<dim> axis;             // m, hubs
-      typename fem::RigidHub<dim>::Control control = fem::RigidHub<dim>::Control::rotation;
-      double value = 0.;                   // rad or N·m, hubs
-      std::vector<fem::Node<dim>> nodes;   // resolved by setup_system()
-      std::unique_ptr<fem::RigidHub<dim>> hub; // owned, resolved by setup_system()
-    };
-
-    dealii::AffineConstraints<double> make_constraints(double load_factor) const;
-    dealii::Vector<double> make_point_loads(double load_factor) const;
-    // Updates the states from the latest solution with the friction bounds held fixed; returns
-    // the number of changed nodes.
-    unsigned int update_states(const dealii::Vector<double>& residual);
-    // Sets the friction bounds to μ λ_n of the latest solution; returns their largest change
-    // relative to the largest normal force.
-    double update_friction_bounds(const dealii::Vector<double>& residual);
-    void collect_results(const dealii::Vector<double>& residual);
-    // Relative tangential displacement (slave − master) of a node, m.
-    dealii::Tensor<1, dim> relative_displacement(const SlaveNode<dim>& node,
-                                                 const dealii::Vector<double>& u) const;
-
-    MPI_Comm mpi_communicator;
-    ContactParameters parameters;
-    fem::ElasticSystem<dim> elastic;
-    std::vector<Support> supports;
-    std::vector<Pair> pairs;
-    dealii::Vector<double> displacement;      // m, complete
-    dealii::Vector<double> step_start;        // m, converged solution of the previous step
-    dealii::Vector<double> residual_forces;   // N, r = K u − f of the converged solution
-    double characteristic_length = 1.;        // m, mesh diameter
-    ContactResults<dim> result;
-  };
+  MPI_Comm mpi_communicator;
+  ContactParameters parameters;
+  fem::ElasticSystem<dim> elastic;
+  std::vector<Support> supports;
+  std::vector<Pair> pairs;
+  dealii::Vector<double> displacement;    // m, complete
+  dealii::Vector<double> step_start;      // m, converged solution of the previous step
+  dealii::Vector<double> residual_forces; // N, r = K u − f of the converged solution
+  double characteristic_length = 1.;      // m, mesh diameter
+  ContactResults<dim> result;
+};
 } // namespace gearstiff::contact

@@ -11,48 +11,47 @@
 #pragma once
 
 #include <deal.II/grid/tria.h>
-
 #include <vector>
 
 namespace gearstiff::contact
 {
-  struct CylinderPairGeometry
-  {
-    double upper_radius = 10e-3;  // m, R1
-    double lower_radius = 15e-3;  // m, R2
-    double fine_size = 5e-6;      // m, cell size at the contact point (upper body)
-    double fine_zone = 0.2e-3;    // m, half-width of the uniformly fine zone about x = 0
-    double growth = 1.2;          // -, size ratio of neighbouring cells outside the fine zone
-    double lower_size_ratio = 1.3; // -, lower cells are this much coarser (non-matching)
-    double depth = 0.;            // m, extrusion length in z (0: 2D)
-    unsigned int depth_cells = 2; // cells along z when extruded
-  };
+struct CylinderPairGeometry
+{
+  double upper_radius = 10e-3;   // m, R1
+  double lower_radius = 15e-3;   // m, R2
+  double fine_size = 5e-6;       // m, cell size at the contact point (upper body)
+  double fine_zone = 0.2e-3;     // m, half-width of the uniformly fine zone about x = 0
+  double growth = 1.2;           // -, size ratio of neighbouring cells outside the fine zone
+  double lower_size_ratio = 1.3; // -, lower cells are this much coarser (non-matching)
+  double depth = 0.;             // m, extrusion length in z (0: 2D)
+  unsigned int depth_cells = 2;  // cells along z when extruded
+};
 
-  enum CylinderPairIds : unsigned int
-  {
-    upper_body = 1,
-    lower_body = 2,
-    upper_contact = 1,
-    upper_top = 2,
-    lower_contact = 3,
-    lower_bottom = 4,
-    extrusion_faces = 5
-  };
+enum CylinderPairIds : unsigned int
+{
+  upper_body = 1,
+  lower_body = 2,
+  upper_contact = 1,
+  upper_top = 2,
+  lower_contact = 3,
+  lower_bottom = 4,
+  extrusion_faces = 5
+};
 
-  template <int dim>
-  void make_cylinder_pair(const CylinderPairGeometry& geometry, dealii::Triangulation<dim>& tria);
+template <int dim>
+void make_cylinder_pair(const CylinderPairGeometry& geometry, dealii::Triangulation<dim>& tria);
 
-  struct HertzLineContact
-  {
-    double half_width;    // m, a
-    double peak_pressure; // Pa, p0
-  };
+struct HertzLineContact
+{
+  double half_width;    // m, a
+  double peak_pressure; // Pa, p0
+};
 
-  // Least-squares fit of the Hertz profile p² = p0² (1 − x²/a²) to nodal pressures (x measured
-  // from the first contact point, m; p in Pa): resolves a finer than the node spacing.
-  HertzLineContact fit_hertz_profile(const std::vector<double>& x, const std::vector<double>& p);
+// Least-squares fit of the Hertz profile p² = p0² (1 − x²/a²) to nodal pressures (x measured
+// from the first contact point, m; p in Pa): resolves a finer than the node spacing.
+HertzLineContact fit_hertz_profile(const std::vector<double>& x, const std::vector<double>& p);
 
-  // load per unit length (N/m), radii (m), effective modulus E* (Pa).
-  HertzLineContact hertz_line_contact(double load_per_length, double upper_radius,
-                                      double lower_radius, double effective_modulus);
+// load per unit length (N/m), radii (m), effective modulus E* (Pa).
+HertzLineContact hertz_line_contact(double load_per_length, double upper_radius,
+                                    double lower_radius, double effective_modulus);
 } // namespace gearstiff::contact

@@ -14,40 +14,39 @@
 // rule instead of an exact segmentation (the patch test then holds to the quadrature error).
 #pragma once
 
-#include <deal.II/base/tensor.h>
-#include <deal.II/dofs/dof_handler.h>
-
 #include "fem/elastic_system.h"
 
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <vector>
 
 namespace gearstiff::contact
 {
-  template <int dim>
-  struct MortarMaster
-  {
-    fem::Node<dim> node;
-    double weight; // M_sm / D_s, -; the weights of one slave node sum to 1
-  };
+template <int dim>
+struct MortarMaster
+{
+  fem::Node<dim> node;
+  double weight; // M_sm / D_s, -; the weights of one slave node sum to 1
+};
 
-  template <int dim>
-  struct SlaveNode
-  {
-    fem::Node<dim> node;
-    dealii::Tensor<1, dim> normal;                      // unit, outward of the slave body
-    std::vector<dealii::Tensor<1, dim>> tangents;       // dim−1 unit vectors ⟂ normal
-    double area = 0.;                                   // m², D_s times the 2D thickness
-    double initial_gap = 0.;                            // m, g_s (negative: overlap)
-    dealii::Tensor<1, dim> initial_offset;              // m, ∫Φ_s (x̄ − x) / D_s
-    std::vector<MortarMaster<dim>> masters;
-  };
+template <int dim>
+struct SlaveNode
+{
+  fem::Node<dim> node;
+  dealii::Tensor<1, dim> normal;                // unit, outward of the slave body
+  std::vector<dealii::Tensor<1, dim>> tangents; // dim−1 unit vectors ⟂ normal
+  double area = 0.;                             // m², D_s times the 2D thickness
+  double initial_gap = 0.;                      // m, g_s (negative: overlap)
+  dealii::Tensor<1, dim> initial_offset;        // m, ∫Φ_s (x̄ − x) / D_s
+  std::vector<MortarMaster<dim>> masters;
+};
 
-  // Couples every slave node whose dual support projects onto the master surface within
-  // `search_distance` (m). `depth` is the 2D thickness (1 in 3D). Identical on every rank.
-  template <int dim>
-  std::vector<SlaveNode<dim>>
-  mortar_coupling(const dealii::DoFHandler<dim>& dof_handler,
-                  const std::vector<dealii::types::boundary_id>& slave_boundaries,
-                  const std::vector<dealii::types::boundary_id>& master_boundaries,
-                  double search_distance, double depth);
+// Couples every slave node whose dual support projects onto the master surface within
+// `search_distance` (m). `depth` is the 2D thickness (1 in 3D). Identical on every rank.
+template <int dim>
+std::vector<SlaveNode<dim>>
+mortar_coupling(const dealii::DoFHandler<dim>& dof_handler,
+                const std::vector<dealii::types::boundary_id>& slave_boundaries,
+                const std::vector<dealii::types::boundary_id>& master_boundaries,
+                double search_distance, double depth);
 } // namespace gearstiff::contact

@@ -1,5 +1,7 @@
 // VTU/PVTU output of ElasticSystem: displacement, von Mises stress, material id, MPI subdomain
 // and analysis-specific nodal scalars.
+#include "fem/elastic_system.h"
+
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -7,145 +9,143 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
-
-#include "fem/elastic_system.h"
-
 #include <fstream>
 
 namespace gearstiff::fem
 {
-  using namespace dealii;
+using namespace dealii;
 
-  namespace
+namespace
+{
+// von Mises stress from the displacement gradient at each output point, with the material
+// of the cell; σ_zz of plane strain (ν·(σ_xx + σ_yy)) is included.
+template <int dim>
+class VonMises : public DataPostprocessorScalar<dim>
+{
+public:
+  explicit VonMises(const ElasticSystem<dim>& system)
+      : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients), system(system)
   {
-    // von Mises stress from the displacement gradient at each output point, with the material
-    // of the cell; σ_zz of plane strain (ν·(σ_xx + σ_yy)) is included.
-    template <int dim>
-    class VonMises : public DataPostprocessorScalar<dim>
-    {
-    public:
-      explicit VonMises(const ElasticSystem<dim>& system)
-        : DataPostprocessorScalar<dim>("von_mises_stress", update_gradients)
-        , system(system)
-      {}
-
-      void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim>& inputs,
-                                 std::vector<Vector<double>>& computed) const override
-      {
-        const auto cell = inputs.template get_cell<dim>();
-        const Material& m = system.material(cell->material_id());
-        const double mu = m.lame_mu();
-        double lambda = m.lame_lambda();
-        const bool plane_stress =
-          dim == 2 && system.get_parameters().model == PlanarModel::plane_stress;
-        if (plane_stress)
-          lambda = 2. * lambda * mu / (lambda + 2. * mu);
-        for (unsigned int p = 0; p < computed.size(); ++p)
-        {
-          double strain[3][3] = {};
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              strain[i][j] =
-                0.5 * (inputs.solution_gradients[p][i][j] + inputs.solution_gradients[p][j][i]);
-          const double trace = strain[0][0] + strain[1][1] + strain[2][2];
-          double stress[3][3] = {};
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              stress[i][j] = 2. * mu * strain[i][j] + (i == j ? lambda * trace : 0.);
-          if (dim == 2 && plane_stress)
-            stress[2][2] = 0.;
-          const double s11 = stress[0][0], s22 = stress[1][1], s33 = stress[2][2];
-          computed[p](0) = std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) +
-                                            (s33 - s11) * (s33 - s11)) +
-                                     3. * (stress[0][1] * stress[0][1] +
-                                           stress[1][2] * stress[1][2] +
-                                           stress[0][2] * stress[0][2]));
-        }
-      }
-
-    private:
-      const ElasticSystem<dim>& system;
-    };
-  } // namespace
-
-  template <int dim>
-  std::vector<std::string> ElasticSystem<dim>::write_vtu(const Vector<double>& solution,
-                                                         const std::vector<NodalField>& nodal_fields,
-                                                         const std::string& directory,
-                                                         const std::string& base) const
-  {
-    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-
-    // Nodal scalars live on a scalar FE_Q of the same degree, whose DoF i of a cell sits at the
-    // node of the vector element's x-component DoF of the same base index.
-    DoFHandler<dim> scalar_dof_handler(tria);
-    scalar_dof_handler.distribute_dofs(FE_Q<dim>(elasticity.degree));
-    std::vector<Vector<double>> scalar_fields(nodal_fields.size(),
-                                              Vector<double>(scalar_dof_handler.n_dofs()));
-    {
-      const FiniteElement<dim>& fe = get_fe();
-      std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell());
-      std::vector<types::global_dof_index> scalar_dofs(scalar_dof_handler.get_fe().n_dofs_per_cell());
-      auto scalar_cell = scalar_dof_handler.begin_active();
-      for (const auto& cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(vector_dofs);
-        scalar_cell->get_dof_indices(scalar_dofs);
-        for (unsigned int i = 0; i < scalar_dofs.size(); ++i)
-          for (unsigned int k = 0; k < nodal_fields.size(); ++k)
-          {
-            const auto found =
-              nodal_fields[k].values.find(vector_dofs[fe.component_to_system_index(0, i)]);
-            if (found != nodal_fields[k].values.end())
-              scalar_fields[k][scalar_dofs[i]] = found->second;
-          }
-        ++scalar_cell;
-      }
-    }
-
-    Vector<float> material_id(tria.n_active_cells()), subdomain(tria.n_active_cells());
-    for (const auto& cell : tria.active_cell_iterators())
-    {
-      material_id[cell->active_cell_index()] = cell->material_id();
-      subdomain[cell->active_cell_index()] = cell->subdomain_id();
-    }
-
-    DataOut<dim> data_out;
-    data_out.attach_triangulation(tria);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
-      dim, DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(dof_handler, solution,
-                             std::vector<std::string>(dim, "displacement"), vector_field);
-    const VonMises<dim> von_mises(*this);
-    data_out.add_data_vector(dof_handler, solution, von_mises);
-    for (unsigned int k = 0; k < nodal_fields.size(); ++k)
-      data_out.add_data_vector(scalar_dof_handler, scalar_fields[k], nodal_fields[k].name);
-    data_out.add_data_vector(material_id, "material_id", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(subdomain, "subdomain", DataOut<dim>::type_cell_data);
-    data_out.build_patches(get_mapping(), elasticity.degree);
-
-    std::vector<std::string> names;
-    for (unsigned int r = 0; r < n_ranks; ++r)
-      names.push_back(base + "_" + Utilities::int_to_string(r, 4) + ".vtu");
-    {
-      std::ofstream out(directory + "/" + names[rank]);
-      data_out.write_vtu(out);
-    }
-    if (rank == 0)
-    {
-      std::ofstream out(directory + "/" + base + ".pvtu");
-      data_out.write_pvtu_record(out, names);
-    }
-    names.push_back(base + ".pvtu");
-    scalar_dof_handler.clear();
-    return names;
   }
 
-  template std::vector<std::string>
-  ElasticSystem<2>::write_vtu(const Vector<double>&, const std::vector<NodalField>&,
-                              const std::string&, const std::string&) const;
-  template std::vector<std::string>
-  ElasticSystem<3>::write_vtu(const Vector<double>&, const std::vector<NodalField>&,
-                              const std::string&, const std::string&) const;
+  void evaluate_vector_field(const DataPostprocessorInputs::Vector<dim>& inputs,
+                             std::vector<Vector<double>>& computed) const override
+  {
+    const auto cell = inputs.template get_cell<dim>();
+    const Material& m = system.material(cell->material_id());
+    const double mu = m.lame_mu();
+    double lambda = m.lame_lambda();
+    const bool plane_stress =
+        dim == 2 && system.get_parameters().model == PlanarModel::plane_stress;
+    if (plane_stress)
+      lambda = 2. * lambda * mu / (lambda + 2. * mu);
+    for (unsigned int p = 0; p < computed.size(); ++p)
+    {
+      double strain[3][3] = {};
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          strain[i][j] =
+              0.5 * (inputs.solution_gradients[p][i][j] + inputs.solution_gradients[p][j][i]);
+      const double trace = strain[0][0] + strain[1][1] + strain[2][2];
+      double stress[3][3] = {};
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          stress[i][j] = 2. * mu * strain[i][j] + (i == j ? lambda * trace : 0.);
+      if (dim == 2 && plane_stress)
+        stress[2][2] = 0.;
+      const double s11 = stress[0][0], s22 = stress[1][1], s33 = stress[2][2];
+      computed[p](0) = std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) +
+                                        (s33 - s11) * (s33 - s11)) +
+                                 3. * (stress[0][1] * stress[0][1] + stress[1][2] * stress[1][2] +
+                                       stress[0][2] * stress[0][2]));
+    }
+  }
+
+private:
+  const ElasticSystem<dim>& system;
+};
+} // namespace
+
+template <int dim>
+std::vector<std::string> ElasticSystem<dim>::write_vtu(const Vector<double>& solution,
+                                                       const std::vector<NodalField>& nodal_fields,
+                                                       const std::string& directory,
+                                                       const std::string& base) const
+{
+  const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+
+  // Nodal scalars live on a scalar FE_Q of the same degree, whose DoF i of a cell sits at the
+  // node of the vector element's x-component DoF of the same base index.
+  DoFHandler<dim> scalar_dof_handler(tria);
+  scalar_dof_handler.distribute_dofs(FE_Q<dim>(elasticity.degree));
+  std::vector<Vector<double>> scalar_fields(nodal_fields.size(),
+                                            Vector<double>(scalar_dof_handler.n_dofs()));
+  {
+    const FiniteElement<dim>& fe = get_fe();
+    std::vector<types::global_dof_index> vector_dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> scalar_dofs(scalar_dof_handler.get_fe().n_dofs_per_cell());
+    auto scalar_cell = scalar_dof_handler.begin_active();
+    for (const auto& cell : dof_handler.active_cell_iterators())
+    {
+      cell->get_dof_indices(vector_dofs);
+      scalar_cell->get_dof_indices(scalar_dofs);
+      for (unsigned int i = 0; i < scalar_dofs.size(); ++i)
+        for (unsigned int k = 0; k < nodal_fields.size(); ++k)
+        {
+          const auto found =
+              nodal_fields[k].values.find(vector_dofs[fe.component_to_system_index(0, i)]);
+          if (found != nodal_fields[k].values.end())
+            scalar_fields[k][scalar_dofs[i]] = found->second;
+        }
+      ++scalar_cell;
+    }
+  }
+
+  Vector<float> material_id(tria.n_active_cells()), subdomain(tria.n_active_cells());
+  for (const auto& cell : tria.active_cell_iterators())
+  {
+    material_id[cell->active_cell_index()] = cell->material_id();
+    subdomain[cell->active_cell_index()] = cell->subdomain_id();
+  }
+
+  DataOut<dim> data_out;
+  data_out.attach_triangulation(tria);
+  const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+  data_out.add_data_vector(dof_handler, solution, std::vector<std::string>(dim, "displacement"),
+                           vector_field);
+  const VonMises<dim> von_mises(*this);
+  data_out.add_data_vector(dof_handler, solution, von_mises);
+  for (unsigned int k = 0; k < nodal_fields.size(); ++k)
+    data_out.add_data_vector(scalar_dof_handler, scalar_fields[k], nodal_fields[k].name);
+  data_out.add_data_vector(material_id, "material_id", DataOut<dim>::type_cell_data);
+  data_out.add_data_vector(subdomain, "subdomain", DataOut<dim>::type_cell_data);
+  data_out.build_patches(get_mapping(), elasticity.degree);
+
+  std::vector<std::string> names;
+  for (unsigned int r = 0; r < n_ranks; ++r)
+    names.push_back(base + "_" + Utilities::int_to_string(r, 4) + ".vtu");
+  {
+    std::ofstream out(directory + "/" + names[rank]);
+    data_out.write_vtu(out);
+  }
+  if (rank == 0)
+  {
+    std::ofstream out(directory + "/" + base + ".pvtu");
+    data_out.write_pvtu_record(out, names);
+  }
+  names.push_back(base + ".pvtu");
+  scalar_dof_handler.clear();
+  return names;
+}
+
+template std::vector<std::string> ElasticSystem<2>::write_vtu(const Vector<double>&,
+                                                              const std::vector<NodalField>&,
+                                                              const std::string&,
+                                                              const std::string&) const;
+template std::vector<std::string> ElasticSystem<3>::write_vtu(const Vector<double>&,
+                                                              const std::vector<NodalField>&,
+                                                              const std::string&,
+                                                              const std::string&) const;
 } // namespace gearstiff::fem

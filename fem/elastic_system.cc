@@ -1,5 +1,10 @@
 #include "fem/elastic_system.h"
 
+#include "fem/linear_solver.h"
+#include "kinematics/errors.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -11,479 +16,468 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
-
-#include "fem/linear_solver.h"
-#include "kinematics/errors.h"
-
-#include <Eigen/Dense>
-#include <algorithm>
 #include <set>
 #include <sstream>
 
 namespace gearstiff::fem
 {
-  using namespace dealii;
+using namespace dealii;
 
-  template <int dim>
-  std::vector<Node<dim>> boundary_nodes(const DoFHandler<dim>& dof_handler,
-                                        const std::vector<types::boundary_id>& boundaries)
-  {
-    const FiniteElement<dim>& fe = dof_handler.get_fe();
-    const FiniteElement<dim>& base = fe.base_element(0);
-    const MappingQ<dim> mapping(1);
-    const std::vector<Point<dim>>& unit_points = base.get_unit_support_points();
-    std::map<types::global_dof_index, Node<dim>> nodes;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto& cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-      {
-        if (!cell->face(f)->at_boundary() ||
-            std::find(boundaries.begin(), boundaries.end(), cell->face(f)->boundary_id()) ==
+template <int dim>
+std::vector<Node<dim>> boundary_nodes(const DoFHandler<dim>& dof_handler,
+                                      const std::vector<types::boundary_id>& boundaries)
+{
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  const FiniteElement<dim>& base = fe.base_element(0);
+  const MappingQ<dim> mapping(1);
+  const std::vector<Point<dim>>& unit_points = base.get_unit_support_points();
+  std::map<types::global_dof_index, Node<dim>> nodes;
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+    {
+      if (!cell->face(f)->at_boundary() ||
+          std::find(boundaries.begin(), boundaries.end(), cell->face(f)->boundary_id()) ==
               boundaries.end())
+        continue;
+      cell->get_dof_indices(dofs);
+      for (unsigned int i = 0; i < base.n_dofs_per_cell(); ++i)
+      {
+        if (!base.has_support_on_face(i, f))
           continue;
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < base.n_dofs_per_cell(); ++i)
-        {
-          if (!base.has_support_on_face(i, f))
-            continue;
-          Node<dim> node;
-          for (unsigned int c = 0; c < dim; ++c)
-            node.dofs[c] = dofs[fe.component_to_system_index(c, i)];
-          if (nodes.count(node.dofs[0]))
-            continue;
-          node.position = mapping.transform_unit_to_real_cell(cell, unit_points[i]);
-          nodes.emplace(node.dofs[0], node);
-        }
+        Node<dim> node;
+        for (unsigned int c = 0; c < dim; ++c)
+          node.dofs[c] = dofs[fe.component_to_system_index(c, i)];
+        if (nodes.count(node.dofs[0]))
+          continue;
+        node.position = mapping.transform_unit_to_real_cell(cell, unit_points[i]);
+        nodes.emplace(node.dofs[0], node);
       }
-    std::vector<Node<dim>> result;
-    for (const auto& [dof, node] : nodes)
-      result.push_back(node);
-    return result;
-  }
-
-  double Material::lame_lambda() const
-  {
-    return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
-  }
-
-  double Material::lame_mu() const { return youngs_modulus / (2. * (1. + poisson_ratio)); }
-
-  template <int dim>
-  struct ElasticSystem<dim>::Implementation
-  {
-    explicit Implementation(unsigned int degree)
-      : fe(FE_Q<dim>(degree), dim)
-      , mapping(1)
-    {}
-
-    FESystem<dim> fe;
-    MappingQ<dim> mapping;
-    IndexSet locally_owned;
-    PETScWrappers::MPI::SparseMatrix unconstrained_matrix; // K
-    PETScWrappers::MPI::Vector unconstrained_rhs;          // f
-    std::vector<types::material_id> dof_body;              // material id of each DoF's body
-    std::vector<unsigned int> dof_component;               // 0..dim-1
-
-    // Cell stiffness and traction loads of the locally owned cells, condensed with
-    // `constraints` into matrix and rhs (not compressed).
-    void assemble(const ElasticSystem<dim>& system, const AffineConstraints<double>& constraints,
-                  PETScWrappers::MPI::SparseMatrix& matrix, PETScWrappers::MPI::Vector& rhs) const;
-  };
-
-  namespace
-  {
-    // λ of the 2D law: plane stress replaces the 3D λ by 2λμ/(λ+2μ) (σ_zz = 0 eliminated).
-    double effective_lambda(const Material& material, int dim, PlanarModel model)
-    {
-      const double lambda = material.lame_lambda(), mu = material.lame_mu();
-      if (dim == 2 && model == PlanarModel::plane_stress)
-        return 2. * lambda * mu / (lambda + 2. * mu);
-      return lambda;
     }
+  std::vector<Node<dim>> result;
+  for (const auto& [dof, node] : nodes)
+    result.push_back(node);
+  return result;
+}
 
-    // Cell stiffness of isotropic elasticity, ∫ (λ div v div u + 2μ ε(v):ε(u)) · depth.
-    template <int dim>
-    void cell_stiffness(const FEValues<dim>& fe_values, double lambda, double mu, double depth,
-                        FullMatrix<double>& cell_matrix)
+double Material::lame_lambda() const
+{
+  return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+}
+
+double Material::lame_mu() const
+{
+  return youngs_modulus / (2. * (1. + poisson_ratio));
+}
+
+template <int dim>
+struct ElasticSystem<dim>::Implementation
+{
+  explicit Implementation(unsigned int degree) : fe(FE_Q<dim>(degree), dim), mapping(1) {}
+
+  FESystem<dim> fe;
+  MappingQ<dim> mapping;
+  IndexSet locally_owned;
+  PETScWrappers::MPI::SparseMatrix unconstrained_matrix; // K
+  PETScWrappers::MPI::Vector unconstrained_rhs;          // f
+  std::vector<types::material_id> dof_body;              // material id of each DoF's body
+  std::vector<unsigned int> dof_component;               // 0..dim-1
+
+  // Cell stiffness and traction loads of the locally owned cells, condensed with
+  // `constraints` into matrix and rhs (not compressed).
+  void assemble(const ElasticSystem<dim>& system, const AffineConstraints<double>& constraints,
+                PETScWrappers::MPI::SparseMatrix& matrix, PETScWrappers::MPI::Vector& rhs) const;
+};
+
+namespace
+{
+// λ of the 2D law: plane stress replaces the 3D λ by 2λμ/(λ+2μ) (σ_zz = 0 eliminated).
+double effective_lambda(const Material& material, int dim, PlanarModel model)
+{
+  const double lambda = material.lame_lambda(), mu = material.lame_mu();
+  if (dim == 2 && model == PlanarModel::plane_stress)
+    return 2. * lambda * mu / (lambda + 2. * mu);
+  return lambda;
+}
+
+// Cell stiffness of isotropic elasticity, ∫ (λ div v div u + 2μ ε(v):ε(u)) · depth.
+template <int dim>
+void cell_stiffness(const FEValues<dim>& fe_values, double lambda, double mu, double depth,
+                    FullMatrix<double>& cell_matrix)
+{
+  const FiniteElement<dim>& fe = fe_values.get_fe();
+  const unsigned int n = fe.n_dofs_per_cell();
+  cell_matrix = 0;
+  for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+  {
+    const double JxW = fe_values.JxW(q) * depth;
+    for (unsigned int i = 0; i < n; ++i)
     {
-      const FiniteElement<dim>& fe = fe_values.get_fe();
-      const unsigned int n = fe.n_dofs_per_cell();
-      cell_matrix = 0;
-      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      const unsigned int ci = fe.system_to_component_index(i).first;
+      const Tensor<1, dim> grad_i = fe_values.shape_grad(i, q);
+      for (unsigned int j = i; j < n; ++j)
       {
-        const double JxW = fe_values.JxW(q) * depth;
-        for (unsigned int i = 0; i < n; ++i)
-        {
-          const unsigned int ci = fe.system_to_component_index(i).first;
-          const Tensor<1, dim> grad_i = fe_values.shape_grad(i, q);
-          for (unsigned int j = i; j < n; ++j)
-          {
-            const unsigned int cj = fe.system_to_component_index(j).first;
-            const Tensor<1, dim> grad_j = fe_values.shape_grad(j, q);
-            double value = lambda * grad_i[ci] * grad_j[cj] + mu * grad_i[cj] * grad_j[ci];
-            if (ci == cj)
-              value += mu * (grad_i * grad_j);
-            cell_matrix(i, j) += value * JxW;
-          }
-        }
+        const unsigned int cj = fe.system_to_component_index(j).first;
+        const Tensor<1, dim> grad_j = fe_values.shape_grad(j, q);
+        double value = lambda * grad_i[ci] * grad_j[cj] + mu * grad_i[cj] * grad_j[ci];
+        if (ci == cj)
+          value += mu * (grad_i * grad_j);
+        cell_matrix(i, j) += value * JxW;
       }
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < i; ++j)
-          cell_matrix(i, j) = cell_matrix(j, i);
     }
-  } // namespace
-
-  template <int dim>
-  void ElasticSystem<dim>::Implementation::assemble(const ElasticSystem<dim>& system,
-                                                    const AffineConstraints<double>& constraints,
-                                                    PETScWrappers::MPI::SparseMatrix& matrix,
-                                                    PETScWrappers::MPI::Vector& rhs) const
-  {
-    const QGauss<dim> quadrature(fe.degree + 1);
-    const QGauss<dim - 1> face_quadrature(fe.degree + 1);
-    FEValues<dim> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
-    FEFaceValues<dim> fe_face_values(mapping, fe, face_quadrature,
-                                     update_values | update_JxW_values);
-    FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
-    Vector<double> cell_rhs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    const double depth = system.depth();
-    for (const auto& cell : system.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-      {
-        fe_values.reinit(cell);
-        const Material& m = system.material(cell->material_id());
-        cell_stiffness(fe_values, effective_lambda(m, dim, system.elasticity.model), m.lame_mu(),
-                       depth, cell_matrix);
-        cell_rhs = 0;
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            for (const auto& [boundary, traction] : system.tractions)
-              if (cell->face(f)->boundary_id() == boundary)
-              {
-                fe_face_values.reinit(cell, f);
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                    cell_rhs(i) += fe_face_values.shape_value(i, q) *
-                                   traction[fe.system_to_component_index(i).first] *
-                                   fe_face_values.JxW(q) * depth * system.load_factor;
-              }
-        cell->get_dof_indices(dofs);
-        constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix, rhs);
-      }
   }
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < i; ++j)
+      cell_matrix(i, j) = cell_matrix(j, i);
+}
+} // namespace
 
-  template <int dim>
-  ElasticSystem<dim>::ElasticSystem(MPI_Comm mpi_communicator,
-                                    const ElasticityParameters& elasticity,
-                                    const LinearSolverParameters& linear_solver)
-    : mpi_communicator(mpi_communicator)
-    , elasticity(elasticity)
-    , linear_solver(linear_solver)
-    , tria(mpi_communicator, Triangulation<dim>::none, false,
-           parallel::shared::Triangulation<dim>::partition_metis)
-    , dof_handler(tria)
-    , impl(std::make_unique<Implementation>(elasticity.degree))
-  {
-    Assert(elasticity.degree >= 1 && elasticity.degree <= 2,
-           ExcMessage("element degree must be 1 or 2"));
-  }
+template <int dim>
+void ElasticSystem<dim>::Implementation::assemble(const ElasticSystem<dim>& system,
+                                                  const AffineConstraints<double>& constraints,
+                                                  PETScWrappers::MPI::SparseMatrix& matrix,
+                                                  PETScWrappers::MPI::Vector& rhs) const
+{
+  const QGauss<dim> quadrature(fe.degree + 1);
+  const QGauss<dim - 1> face_quadrature(fe.degree + 1);
+  FEValues<dim> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
+  FEFaceValues<dim> fe_face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
+  FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+  Vector<double> cell_rhs(fe.n_dofs_per_cell());
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  const double depth = system.depth();
+  for (const auto& cell : system.dof_handler.active_cell_iterators())
+    if (cell->is_locally_owned())
+    {
+      fe_values.reinit(cell);
+      const Material& m = system.material(cell->material_id());
+      cell_stiffness(fe_values, effective_lambda(m, dim, system.elasticity.model), m.lame_mu(),
+                     depth, cell_matrix);
+      cell_rhs = 0;
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          for (const auto& [boundary, traction] : system.tractions)
+            if (cell->face(f)->boundary_id() == boundary)
+            {
+              fe_face_values.reinit(cell, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  cell_rhs(i) += fe_face_values.shape_value(i, q) *
+                                 traction[fe.system_to_component_index(i).first] *
+                                 fe_face_values.JxW(q) * depth * system.load_factor;
+            }
+      cell->get_dof_indices(dofs);
+      constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix, rhs);
+    }
+}
 
-  template <int dim>
-  ElasticSystem<dim>::~ElasticSystem()
-  {
-    dof_handler.clear();
-  }
+template <int dim>
+ElasticSystem<dim>::ElasticSystem(MPI_Comm mpi_communicator, const ElasticityParameters& elasticity,
+                                  const LinearSolverParameters& linear_solver)
+    : mpi_communicator(mpi_communicator), elasticity(elasticity), linear_solver(linear_solver),
+      tria(mpi_communicator, Triangulation<dim>::none, false,
+           parallel::shared::Triangulation<dim>::partition_metis),
+      dof_handler(tria), impl(std::make_unique<Implementation>(elasticity.degree))
+{
+  Assert(elasticity.degree >= 1 && elasticity.degree <= 2,
+         ExcMessage("element degree must be 1 or 2"));
+}
 
-  template <int dim>
-  const Mapping<dim, dim>& ElasticSystem<dim>::get_mapping() const
-  {
-    return impl->mapping;
-  }
+template <int dim>
+ElasticSystem<dim>::~ElasticSystem()
+{
+  dof_handler.clear();
+}
 
-  template <int dim>
-  const FiniteElement<dim, dim>& ElasticSystem<dim>::get_fe() const
-  {
-    return impl->fe;
-  }
+template <int dim>
+const Mapping<dim, dim>& ElasticSystem<dim>::get_mapping() const
+{
+  return impl->mapping;
+}
 
-  template <int dim>
-  double ElasticSystem<dim>::depth() const
-  {
-    return dim == 2 ? elasticity.thickness : 1.;
-  }
+template <int dim>
+const FiniteElement<dim, dim>& ElasticSystem<dim>::get_fe() const
+{
+  return impl->fe;
+}
 
-  template <int dim>
-  void ElasticSystem<dim>::set_materials(const std::map<types::material_id, Material>& given,
-                                         const std::string& parameter)
-  {
-    std::set<types::material_id> present;
-    for (const auto& cell : tria.active_cell_iterators())
-      present.insert(cell->material_id());
-    for (const auto id : present)
-      if (given.count(id) == 0)
-        throw InputError(parameter, "the mesh has cells with material id " + std::to_string(id) +
+template <int dim>
+double ElasticSystem<dim>::depth() const
+{
+  return dim == 2 ? elasticity.thickness : 1.;
+}
+
+template <int dim>
+void ElasticSystem<dim>::set_materials(const std::map<types::material_id, Material>& given,
+                                       const std::string& parameter)
+{
+  std::set<types::material_id> present;
+  for (const auto& cell : tria.active_cell_iterators())
+    present.insert(cell->material_id());
+  for (const auto id : present)
+    if (given.count(id) == 0)
+      throw InputError(parameter, "the mesh has cells with material id " + std::to_string(id) +
                                       " (physical tag) but no material was given for them");
-    materials = given;
-  }
+  materials = given;
+}
 
-  template <int dim>
-  const Material& ElasticSystem<dim>::material(types::material_id id) const
+template <int dim>
+const Material& ElasticSystem<dim>::material(types::material_id id) const
+{
+  const auto found = materials.find(id);
+  AssertThrow(found != materials.end(), ExcMessage("no material for id " + std::to_string(id)));
+  return found->second;
+}
+
+template <int dim>
+double ElasticSystem<dim>::min_youngs_modulus() const
+{
+  double e = std::numeric_limits<double>::max();
+  for (const auto& [id, m] : materials)
+    e = std::min(e, m.youngs_modulus);
+  return e;
+}
+
+template <int dim>
+double ElasticSystem<dim>::max_youngs_modulus() const
+{
+  double e = 0;
+  for (const auto& [id, m] : materials)
+    e = std::max(e, m.youngs_modulus);
+  return e;
+}
+
+template <int dim>
+void ElasticSystem<dim>::add_traction(types::boundary_id boundary, const Tensor<1, dim>& traction)
+{
+  tractions.emplace_back(boundary, traction);
+}
+
+template <int dim>
+void ElasticSystem<dim>::setup_system()
+{
+  if (tria.n_active_cells() == 0)
+    throw InputError("mesh", "the mesh has no cells");
+  for (const auto& cell : tria.active_cell_iterators())
+    if (!cell->reference_cell().is_hyper_cube())
+      throw InputError("mesh", "has non-quadrilateral/hexahedral cells; FE_Q needs quads "
+                               "(recombine the mesh in gmsh)");
+  if (materials.empty())
+    throw InputError("materials", "none given");
+  for (const auto& cell : tria.active_cell_iterators())
+    material(cell->material_id());
+
+  const FESystem<dim>& fe = impl->fe;
+  dof_handler.distribute_dofs(fe);
+  impl->locally_owned = dof_handler.locally_owned_dofs();
+
+  // Node data of every DoF, on every rank (the mesh is shared).
+  const unsigned int n_dofs = dof_handler.n_dofs();
+  dof_support_points.assign(n_dofs, Point<dim>());
+  impl->dof_body.assign(n_dofs, 0);
+  impl->dof_component.assign(n_dofs, 0);
+  const std::vector<Point<dim>>& unit_points = fe.get_unit_support_points();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  for (const auto& cell : dof_handler.active_cell_iterators())
   {
-    const auto found = materials.find(id);
-    AssertThrow(found != materials.end(), ExcMessage("no material for id " + std::to_string(id)));
-    return found->second;
-  }
-
-  template <int dim>
-  double ElasticSystem<dim>::min_youngs_modulus() const
-  {
-    double e = std::numeric_limits<double>::max();
-    for (const auto& [id, m] : materials)
-      e = std::min(e, m.youngs_modulus);
-    return e;
-  }
-
-  template <int dim>
-  double ElasticSystem<dim>::max_youngs_modulus() const
-  {
-    double e = 0;
-    for (const auto& [id, m] : materials)
-      e = std::max(e, m.youngs_modulus);
-    return e;
-  }
-
-  template <int dim>
-  void ElasticSystem<dim>::add_traction(types::boundary_id boundary,
-                                        const Tensor<1, dim>& traction)
-  {
-    tractions.emplace_back(boundary, traction);
-  }
-
-  template <int dim>
-  void ElasticSystem<dim>::setup_system()
-  {
-    if (tria.n_active_cells() == 0)
-      throw InputError("mesh", "the mesh has no cells");
-    for (const auto& cell : tria.active_cell_iterators())
-      if (!cell->reference_cell().is_hyper_cube())
-        throw InputError("mesh", "has non-quadrilateral/hexahedral cells; FE_Q needs quads "
-                                 "(recombine the mesh in gmsh)");
-    if (materials.empty())
-      throw InputError("materials", "none given");
-    for (const auto& cell : tria.active_cell_iterators())
-      material(cell->material_id());
-
-    const FESystem<dim>& fe = impl->fe;
-    dof_handler.distribute_dofs(fe);
-    impl->locally_owned = dof_handler.locally_owned_dofs();
-
-    // Node data of every DoF, on every rank (the mesh is shared).
-    const unsigned int n_dofs = dof_handler.n_dofs();
-    dof_support_points.assign(n_dofs, Point<dim>());
-    impl->dof_body.assign(n_dofs, 0);
-    impl->dof_component.assign(n_dofs, 0);
-    const std::vector<Point<dim>>& unit_points = fe.get_unit_support_points();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto& cell : dof_handler.active_cell_iterators())
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
     {
-      cell->get_dof_indices(dofs);
-      for (unsigned int i = 0; i < dofs.size(); ++i)
+      dof_support_points[dofs[i]] = impl->mapping.transform_unit_to_real_cell(cell, unit_points[i]);
+      impl->dof_body[dofs[i]] = cell->material_id();
+      impl->dof_component[dofs[i]] = fe.system_to_component_index(i).first;
+    }
+  }
+
+  // The unconstrained K and f, kept for the residual.
+  // All cells, not only owned ones: rows of DoFs on partition boundaries receive entries from
+  // cells of both ranks.
+  DynamicSparsityPattern dsp(n_dofs, n_dofs);
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    cell->get_dof_indices(dofs);
+    for (const auto i : dofs)
+      for (const auto j : dofs)
+        dsp.add(i, j);
+  }
+  impl->unconstrained_matrix.reinit(impl->locally_owned, impl->locally_owned, dsp,
+                                    mpi_communicator);
+  impl->unconstrained_rhs.reinit(impl->locally_owned, mpi_communicator);
+
+  // f is kept for unit load factor; residual() scales it.
+  const double factor = load_factor;
+  load_factor = 1.;
+  impl->assemble(*this, AffineConstraints<double>(), impl->unconstrained_matrix,
+                 impl->unconstrained_rhs);
+  load_factor = factor;
+  impl->unconstrained_matrix.compress(VectorOperation::add);
+  impl->unconstrained_rhs.compress(VectorOperation::add);
+}
+
+template <int dim>
+Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constraints,
+                                         const Vector<double>& point_loads,
+                                         LinearSolveStatistics& statistics) const
+{
+  check_rigid_body_freedom(constraints, "linear solve");
+  Timer timer(mpi_communicator, true);
+  const FESystem<dim>& fe = impl->fe;
+  const unsigned int n_dofs = dof_handler.n_dofs();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+
+  // Every rank holds all constraints, so the whole pattern is built locally; rows not owned are
+  // simply ignored by reinit.
+  DynamicSparsityPattern dsp(n_dofs, n_dofs);
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    cell->get_dof_indices(dofs);
+    constraints.add_entries_local_to_global(dofs, dsp, false);
+  }
+  PETScWrappers::MPI::SparseMatrix matrix;
+  matrix.reinit(impl->locally_owned, impl->locally_owned, dsp, mpi_communicator);
+  PETScWrappers::MPI::Vector rhs(impl->locally_owned, mpi_communicator);
+
+  impl->assemble(*this, constraints, matrix, rhs);
+  // Point loads enter once (on rank 0); loads on constrained DoFs are passed to their masters
+  // as virtual work requires.
+  if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && point_loads.size() > 0)
+    for (types::global_dof_index i = 0; i < point_loads.size(); ++i)
+      if (point_loads[i] != 0.)
       {
-        dof_support_points[dofs[i]] = impl->mapping.transform_unit_to_real_cell(cell, unit_points[i]);
-        impl->dof_body[dofs[i]] = cell->material_id();
-        impl->dof_component[dofs[i]] = fe.system_to_component_index(i).first;
+        Vector<double> load(1);
+        load[0] = point_loads[i];
+        const std::vector<types::global_dof_index> index{i};
+        constraints.distribute_local_to_global(load, index, rhs);
       }
-    }
+  matrix.compress(VectorOperation::add);
+  rhs.compress(VectorOperation::add);
+  statistics.n_dofs = n_dofs;
+  statistics.assembly_time = timer.wall_time();
 
-    // The unconstrained K and f, kept for the residual.
-    // All cells, not only owned ones: rows of DoFs on partition boundaries receive entries from
-    // cells of both ranks.
-    DynamicSparsityPattern dsp(n_dofs, n_dofs);
-    for (const auto& cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (const auto i : dofs)
-        for (const auto j : dofs)
-          dsp.add(i, j);
-    }
-    impl->unconstrained_matrix.reinit(impl->locally_owned, impl->locally_owned, dsp,
-                                      mpi_communicator);
-    impl->unconstrained_rhs.reinit(impl->locally_owned, mpi_communicator);
-
-    // f is kept for unit load factor; residual() scales it.
-    const double factor = load_factor;
-    load_factor = 1.;
-    impl->assemble(*this, AffineConstraints<double>(), impl->unconstrained_matrix,
-                   impl->unconstrained_rhs);
-    load_factor = factor;
-    impl->unconstrained_matrix.compress(VectorOperation::add);
-    impl->unconstrained_rhs.compress(VectorOperation::add);
-  }
-
-  template <int dim>
-  Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constraints,
-                                           const Vector<double>& point_loads,
-                                           LinearSolveStatistics& statistics) const
-  {
-    check_rigid_body_freedom(constraints, "linear solve");
-    Timer timer(mpi_communicator, true);
-    const FESystem<dim>& fe = impl->fe;
-    const unsigned int n_dofs = dof_handler.n_dofs();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-
-    // Every rank holds all constraints, so the whole pattern is built locally; rows not owned are
-    // simply ignored by reinit.
-    DynamicSparsityPattern dsp(n_dofs, n_dofs);
-    for (const auto& cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      constraints.add_entries_local_to_global(dofs, dsp, false);
-    }
-    PETScWrappers::MPI::SparseMatrix matrix;
-    matrix.reinit(impl->locally_owned, impl->locally_owned, dsp, mpi_communicator);
-    PETScWrappers::MPI::Vector rhs(impl->locally_owned, mpi_communicator);
-
-    impl->assemble(*this, constraints, matrix, rhs);
-    // Point loads enter once (on rank 0); loads on constrained DoFs are passed to their masters
-    // as virtual work requires.
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && point_loads.size() > 0)
-      for (types::global_dof_index i = 0; i < point_loads.size(); ++i)
-        if (point_loads[i] != 0.)
-        {
-          Vector<double> load(1);
-          load[0] = point_loads[i];
-          const std::vector<types::global_dof_index> index{i};
-          constraints.distribute_local_to_global(load, index, rhs);
-        }
-    matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
-    statistics.n_dofs = n_dofs;
-    statistics.assembly_time = timer.wall_time();
-
-    timer.restart();
-    PETScWrappers::MPI::Vector solution(impl->locally_owned, mpi_communicator);
-    statistics.iterations =
+  timer.restart();
+  PETScWrappers::MPI::Vector solution(impl->locally_owned, mpi_communicator);
+  statistics.iterations =
       solve_linear_system(matrix, solution, rhs, linear_solver, dof_support_points,
                           impl->dof_component, mpi_communicator);
-    Vector<double> complete(solution);
-    constraints.distribute(complete);
-    statistics.solve_time = timer.wall_time();
-    return complete;
-  }
+  Vector<double> complete(solution);
+  constraints.distribute(complete);
+  statistics.solve_time = timer.wall_time();
+  return complete;
+}
 
-  template <int dim>
-  Vector<double> ElasticSystem<dim>::residual(const Vector<double>& solution) const
-  {
-    PETScWrappers::MPI::Vector u(impl->locally_owned, mpi_communicator);
-    for (const auto i : impl->locally_owned)
-      u[i] = solution[i];
-    u.compress(VectorOperation::insert);
-    PETScWrappers::MPI::Vector r(impl->locally_owned, mpi_communicator);
-    impl->unconstrained_matrix.vmult(r, u);
-    r.add(-load_factor, impl->unconstrained_rhs);
-    return Vector<double>(r);
-  }
+template <int dim>
+Vector<double> ElasticSystem<dim>::residual(const Vector<double>& solution) const
+{
+  PETScWrappers::MPI::Vector u(impl->locally_owned, mpi_communicator);
+  for (const auto i : impl->locally_owned)
+    u[i] = solution[i];
+  u.compress(VectorOperation::insert);
+  PETScWrappers::MPI::Vector r(impl->locally_owned, mpi_communicator);
+  impl->unconstrained_matrix.vmult(r, u);
+  r.add(-load_factor, impl->unconstrained_rhs);
+  return Vector<double>(r);
+}
 
-  template <int dim>
-  void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double>& constraints,
-                                                    const std::string& context) const
+template <int dim>
+void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double>& constraints,
+                                                  const std::string& context) const
+{
+  // Rigid modes per body: dim translations and dim(dim-1)/2 rotations about the body's
+  // centroid, scaled by its radius so that all modes have unit size.
+  constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
+  std::map<types::material_id, unsigned int> body_index;
+  for (const auto& [id, m] : materials)
+    body_index.emplace(id, body_index.size());
+  const unsigned int n_bodies = body_index.size();
+  std::vector<Point<dim>> centroid(n_bodies);
+  std::vector<double> count(n_bodies, 0.), radius(n_bodies, 0.);
+  for (unsigned int i = 0; i < dof_support_points.size(); ++i)
   {
-    // Rigid modes per body: dim translations and dim(dim-1)/2 rotations about the body's
-    // centroid, scaled by its radius so that all modes have unit size.
-    constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
-    std::map<types::material_id, unsigned int> body_index;
-    for (const auto& [id, m] : materials)
-      body_index.emplace(id, body_index.size());
-    const unsigned int n_bodies = body_index.size();
-    std::vector<Point<dim>> centroid(n_bodies);
-    std::vector<double> count(n_bodies, 0.), radius(n_bodies, 0.);
-    for (unsigned int i = 0; i < dof_support_points.size(); ++i)
+    const unsigned int b = body_index.at(impl->dof_body[i]);
+    centroid[b] += dof_support_points[i];
+    count[b] += 1;
+  }
+  for (unsigned int b = 0; b < n_bodies; ++b)
+    if (count[b] > 0)
+      centroid[b] /= count[b];
+  for (unsigned int i = 0; i < dof_support_points.size(); ++i)
+  {
+    const unsigned int b = body_index.at(impl->dof_body[i]);
+    radius[b] = std::max(radius[b], centroid[b].distance(dof_support_points[i]));
+  }
+  // Value of mode k (0..n_modes-1) of DoF i's body at DoF i.
+  auto mode_value = [&](types::global_dof_index i, unsigned int k)
+  {
+    const unsigned int b = body_index.at(impl->dof_body[i]);
+    const unsigned int c = impl->dof_component[i];
+    if (k < dim)
+      return c == k ? 1. : 0.;
+    const Tensor<1, dim> x = (dof_support_points[i] - centroid[b]) / std::max(radius[b], 1e-300);
+    // Rotations about z (2D, 3D), then about x and y (3D).
+    const unsigned int axis = (dim == 2) ? 2 : (k == 3 ? 2 : k - 4);
+    const unsigned int p = (axis + 1) % 3, q = (axis + 2) % 3;
+    // ω × x with ω = e_axis: component p gets −x_q, component q gets x_p.
+    if (c == p)
+      return -(q < dim ? x[q] : 0.);
+    if (c == q)
+      return p < dim ? x[p] : 0.;
+    return 0.;
+  };
+  const unsigned int n_columns = n_modes * n_bodies;
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n_columns, n_columns);
+  std::vector<double> row(n_columns);
+  for (const auto& line : constraints.get_lines())
+  {
+    std::fill(row.begin(), row.end(), 0.);
+    const unsigned int b = body_index.at(impl->dof_body[line.index]);
+    for (unsigned int k = 0; k < n_modes; ++k)
+      row[b * n_modes + k] += mode_value(line.index, k);
+    for (const auto& [j, a] : line.entries)
     {
-      const unsigned int b = body_index.at(impl->dof_body[i]);
-      centroid[b] += dof_support_points[i];
-      count[b] += 1;
-    }
-    for (unsigned int b = 0; b < n_bodies; ++b)
-      if (count[b] > 0)
-        centroid[b] /= count[b];
-    for (unsigned int i = 0; i < dof_support_points.size(); ++i)
-    {
-      const unsigned int b = body_index.at(impl->dof_body[i]);
-      radius[b] = std::max(radius[b], centroid[b].distance(dof_support_points[i]));
-    }
-    // Value of mode k (0..n_modes-1) of DoF i's body at DoF i.
-    auto mode_value = [&](types::global_dof_index i, unsigned int k) {
-      const unsigned int b = body_index.at(impl->dof_body[i]);
-      const unsigned int c = impl->dof_component[i];
-      if (k < dim)
-        return c == k ? 1. : 0.;
-      const Tensor<1, dim> x = (dof_support_points[i] - centroid[b]) / std::max(radius[b], 1e-300);
-      // Rotations about z (2D, 3D), then about x and y (3D).
-      const unsigned int axis = (dim == 2) ? 2 : (k == 3 ? 2 : k - 4);
-      const unsigned int p = (axis + 1) % 3, q = (axis + 2) % 3;
-      // ω × x with ω = e_axis: component p gets −x_q, component q gets x_p.
-      if (c == p)
-        return -(q < dim ? x[q] : 0.);
-      if (c == q)
-        return p < dim ? x[p] : 0.;
-      return 0.;
-    };
-    const unsigned int n_columns = n_modes * n_bodies;
-    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n_columns, n_columns);
-    std::vector<double> row(n_columns);
-    for (const auto& line : constraints.get_lines())
-    {
-      std::fill(row.begin(), row.end(), 0.);
-      const unsigned int b = body_index.at(impl->dof_body[line.index]);
+      const unsigned int bj = body_index.at(impl->dof_body[j]);
       for (unsigned int k = 0; k < n_modes; ++k)
-        row[b * n_modes + k] += mode_value(line.index, k);
-      for (const auto& [j, a] : line.entries)
-      {
-        const unsigned int bj = body_index.at(impl->dof_body[j]);
-        for (unsigned int k = 0; k < n_modes; ++k)
-          row[bj * n_modes + k] -= a * mode_value(j, k);
-      }
-      for (unsigned int p = 0; p < n_columns; ++p)
-        if (row[p] != 0.)
-          for (unsigned int q = 0; q < n_columns; ++q)
-            gram(p, q) += row[p] * row[q];
+        row[bj * n_modes + k] -= a * mode_value(j, k);
     }
-    // A body without any DoF (material without cells) is skipped.
-    for (unsigned int b = 0; b < n_bodies; ++b)
-      if (count[b] == 0)
-        for (unsigned int k = 0; k < n_modes; ++k)
-          gram(b * n_modes + k, b * n_modes + k) = 1.;
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
-    const double largest = std::max(eigen.eigenvalues().maxCoeff(), 1.);
-    const double smallest = eigen.eigenvalues().minCoeff();
-    // The Gram matrix of unit-size modes sums squares of constraint coefficients of order one;
-    // an unrestrained mode gives exactly zero up to round-off.
-    if (smallest > 1e-10 * largest)
-      return;
-    const Eigen::VectorXd free_mode = eigen.eigenvectors().col(0);
-    std::ostringstream bodies;
-    std::string separator;
-    for (const auto& [id, b] : body_index)
-    {
-      double amplitude = 0;
+    for (unsigned int p = 0; p < n_columns; ++p)
+      if (row[p] != 0.)
+        for (unsigned int q = 0; q < n_columns; ++q)
+          gram(p, q) += row[p] * row[q];
+  }
+  // A body without any DoF (material without cells) is skipped.
+  for (unsigned int b = 0; b < n_bodies; ++b)
+    if (count[b] == 0)
       for (unsigned int k = 0; k < n_modes; ++k)
-        amplitude += free_mode[b * n_modes + k] * free_mode[b * n_modes + k];
-      if (amplitude > 1e-2)
-      {
-        bodies << separator << id;
-        separator = ", ";
-      }
+        gram(b * n_modes + k, b * n_modes + k) = 1.;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  const double largest = std::max(eigen.eigenvalues().maxCoeff(), 1.);
+  const double smallest = eigen.eigenvalues().minCoeff();
+  // The Gram matrix of unit-size modes sums squares of constraint coefficients of order one;
+  // an unrestrained mode gives exactly zero up to round-off.
+  if (smallest > 1e-10 * largest)
+    return;
+  const Eigen::VectorXd free_mode = eigen.eigenvectors().col(0);
+  std::ostringstream bodies;
+  std::string separator;
+  for (const auto& [id, b] : body_index)
+  {
+    double amplitude = 0;
+    for (unsigned int k = 0; k < n_modes; ++k)
+      amplitude += free_mode[b * n_modes + k] * free_mode[b * n_modes + k];
+    if (amplitude > 1e-2)
+    {
+      bodies << separator << id;
+      separator = ", ";
     }
-    throw SolverFailure(context, "the body with material id " + bodies.str() +
+  }
+  throw SolverFailure(context, "the body with material id " + bodies.str() +
                                    " is free to move: supports, rigid hubs and closed contacts "
                                    "leave a rigid-body motion unrestrained (singular stiffness)");
-  }
+}
 
-  template std::vector<Node<2>> boundary_nodes(const DoFHandler<2>&,
-                                               const std::vector<types::boundary_id>&);
-  template std::vector<Node<3>> boundary_nodes(const DoFHandler<3>&,
-                                               const std::vector<types::boundary_id>&);
-  template class ElasticSystem<2>;
-  template class ElasticSystem<3>;
+template std::vector<Node<2>> boundary_nodes(const DoFHandler<2>&,
+                                             const std::vector<types::boundary_id>&);
+template std::vector<Node<3>> boundary_nodes(const DoFHandler<3>&,
+                                             const std::vector<types::boundary_id>&);
+template class ElasticSystem<2>;
+template class ElasticSystem<3>;
 } // namespace gearstiff::fem

@@ -12,16 +12,15 @@
 // solution and residual) are complete on every rank; only assembly and the solve are distributed.
 #pragma once
 
+#include "fem/parameters.h"
+
+#include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
-
-#include "fem/parameters.h"
-
-#include <array>
 #include <map>
 #include <memory>
 #include <mpi.h>
@@ -30,114 +29,114 @@
 
 namespace dealii
 {
-  template <int dim, int spacedim>
-  class FiniteElement;
-  template <int dim, int spacedim>
-  class Mapping;
+template <int dim, int spacedim>
+class FiniteElement;
+template <int dim, int spacedim>
+class Mapping;
 } // namespace dealii
 
 namespace gearstiff::fem
 {
-  // One FE node (support point) with its dim DoFs.
-  template <int dim>
-  struct Node
-  {
-    std::array<dealii::types::global_dof_index, dim> dofs; // x, y(, z) components
-    dealii::Point<dim> position;                            // m, reference configuration
-  };
+// One FE node (support point) with its dim DoFs.
+template <int dim>
+struct Node
+{
+  std::array<dealii::types::global_dof_index, dim> dofs; // x, y(, z) components
+  dealii::Point<dim> position;                           // m, reference configuration
+};
 
-  // The nodes on the faces with any of the given boundary ids, sorted by DoF index.
-  template <int dim>
-  std::vector<Node<dim>> boundary_nodes(const dealii::DoFHandler<dim>& dof_handler,
-                                        const std::vector<dealii::types::boundary_id>& boundaries);
+// The nodes on the faces with any of the given boundary ids, sorted by DoF index.
+template <int dim>
+std::vector<Node<dim>> boundary_nodes(const dealii::DoFHandler<dim>& dof_handler,
+                                      const std::vector<dealii::types::boundary_id>& boundaries);
 
-  // Cost of one linear solve, reported with every result.
-  struct LinearSolveStatistics
-  {
-    dealii::types::global_dof_index n_dofs = 0;
-    unsigned int iterations = 0;  // Krylov iterations (0 for the direct solver)
-    double assembly_time = 0.;    // s, wall
-    double solve_time = 0.;       // s, wall
-  };
+// Cost of one linear solve, reported with every result.
+struct LinearSolveStatistics
+{
+  dealii::types::global_dof_index n_dofs = 0;
+  unsigned int iterations = 0; // Krylov iterations (0 for the direct solver)
+  double assembly_time = 0.;   // s, wall
+  double solve_time = 0.;      // s, wall
+};
 
-  // A nodal scalar for output (contact pressure, gap, ...), indexed like the x-component DoF
-  // of each node; nodes not listed are written as 0.
-  struct NodalField
-  {
-    std::string name;
-    std::map<dealii::types::global_dof_index, double> values;
-  };
+// A nodal scalar for output (contact pressure, gap, ...), indexed like the x-component DoF
+// of each node; nodes not listed are written as 0.
+struct NodalField
+{
+  std::string name;
+  std::map<dealii::types::global_dof_index, double> values;
+};
 
-  template <int dim>
-  class ElasticSystem
-  {
-  public:
-    ElasticSystem(MPI_Comm mpi_communicator, const ElasticityParameters& elasticity,
-                  const LinearSolverParameters& linear_solver);
-    ~ElasticSystem();
+template <int dim>
+class ElasticSystem
+{
+public:
+  ElasticSystem(MPI_Comm mpi_communicator, const ElasticityParameters& elasticity,
+                const LinearSolverParameters& linear_solver);
+  ~ElasticSystem();
 
-    // Fill this before setup_system() (GridIn, GridGenerator, ...).
-    dealii::parallel::shared::Triangulation<dim>& triangulation() { return tria; }
+  // Fill this before setup_system() (GridIn, GridGenerator, ...).
+  dealii::parallel::shared::Triangulation<dim>& triangulation() { return tria; }
 
-    // Every material id of the mesh needs a material; a missing one is an InputError naming
-    // `parameter`.
-    void set_materials(const std::map<dealii::types::material_id, Material>& materials,
-                       const std::string& parameter);
-    // A constant surface traction (Pa) on a boundary, a dead load.
-    void add_traction(dealii::types::boundary_id boundary, const dealii::Tensor<1, dim>& traction);
+  // Every material id of the mesh needs a material; a missing one is an InputError naming
+  // `parameter`.
+  void set_materials(const std::map<dealii::types::material_id, Material>& materials,
+                     const std::string& parameter);
+  // A constant surface traction (Pa) on a boundary, a dead load.
+  void add_traction(dealii::types::boundary_id boundary, const dealii::Tensor<1, dim>& traction);
 
-    // Scales the tractions (dead loads) in every later solve and residual; for load stepping.
-    void set_load_factor(double factor) { load_factor = factor; }
+  // Scales the tractions (dead loads) in every later solve and residual; for load stepping.
+  void set_load_factor(double factor) { load_factor = factor; }
 
-    // Distributes DoFs and assembles the unconstrained K and f.
-    void setup_system();
+  // Distributes DoFs and assembles the unconstrained K and f.
+  void setup_system();
 
-    // Solves the system condensed with `constraints` (closed, identical on every rank), with
-    // `point_loads` (N, complete vector, may be empty) added to f. Throws SolverFailure when the
-    // constraints leave a body free to move or the solver fails. Returns the complete solution.
-    dealii::Vector<double> solve(const dealii::AffineConstraints<double>& constraints,
-                                 const dealii::Vector<double>& point_loads,
-                                 LinearSolveStatistics& statistics) const;
+  // Solves the system condensed with `constraints` (closed, identical on every rank), with
+  // `point_loads` (N, complete vector, may be empty) added to f. Throws SolverFailure when the
+  // constraints leave a body free to move or the solver fails. Returns the complete solution.
+  dealii::Vector<double> solve(const dealii::AffineConstraints<double>& constraints,
+                               const dealii::Vector<double>& point_loads,
+                               LinearSolveStatistics& statistics) const;
 
-    // r = K u − f (N): the forces the constraints exert on the bodies.
-    dealii::Vector<double> residual(const dealii::Vector<double>& solution) const;
+  // r = K u − f (N): the forces the constraints exert on the bodies.
+  dealii::Vector<double> residual(const dealii::Vector<double>& solution) const;
 
-    // Throws SolverFailure naming the body when the homogeneous part of `constraints` leaves a
-    // rigid-body motion of some body unrestrained (the stiffness matrix would be singular).
-    void check_rigid_body_freedom(const dealii::AffineConstraints<double>& constraints,
-                                  const std::string& context) const;
+  // Throws SolverFailure naming the body when the homogeneous part of `constraints` leaves a
+  // rigid-body motion of some body unrestrained (the stiffness matrix would be singular).
+  void check_rigid_body_freedom(const dealii::AffineConstraints<double>& constraints,
+                                const std::string& context) const;
 
-    // Writes displacement, von Mises stress, material id, MPI subdomain and the nodal fields as
-    // <directory>/<base>_<rank>.vtu plus <base>.pvtu; returns the file names (relative).
-    std::vector<std::string> write_vtu(const dealii::Vector<double>& solution,
-                                       const std::vector<NodalField>& nodal_fields,
-                                       const std::string& directory, const std::string& base) const;
+  // Writes displacement, von Mises stress, material id, MPI subdomain and the nodal fields as
+  // <directory>/<base>_<rank>.vtu plus <base>.pvtu; returns the file names (relative).
+  std::vector<std::string> write_vtu(const dealii::Vector<double>& solution,
+                                     const std::vector<NodalField>& nodal_fields,
+                                     const std::string& directory, const std::string& base) const;
 
-    const dealii::DoFHandler<dim>& get_dof_handler() const { return dof_handler; }
-    const dealii::Mapping<dim, dim>& get_mapping() const;
-    const dealii::FiniteElement<dim, dim>& get_fe() const;
-    // Position (m) of the node each DoF belongs to.
-    const std::vector<dealii::Point<dim>>& support_points() const { return dof_support_points; }
-    const Material& material(dealii::types::material_id id) const;
-    // Factor turning per-unit-depth integrals into forces: the thickness in 2D, 1 in 3D.
-    double depth() const;
-    // Smallest and largest Young's modulus of the bodies (Pa).
-    double min_youngs_modulus() const;
-    double max_youngs_modulus() const;
-    MPI_Comm get_mpi_communicator() const { return mpi_communicator; }
-    const ElasticityParameters& get_parameters() const { return elasticity; }
+  const dealii::DoFHandler<dim>& get_dof_handler() const { return dof_handler; }
+  const dealii::Mapping<dim, dim>& get_mapping() const;
+  const dealii::FiniteElement<dim, dim>& get_fe() const;
+  // Position (m) of the node each DoF belongs to.
+  const std::vector<dealii::Point<dim>>& support_points() const { return dof_support_points; }
+  const Material& material(dealii::types::material_id id) const;
+  // Factor turning per-unit-depth integrals into forces: the thickness in 2D, 1 in 3D.
+  double depth() const;
+  // Smallest and largest Young's modulus of the bodies (Pa).
+  double min_youngs_modulus() const;
+  double max_youngs_modulus() const;
+  MPI_Comm get_mpi_communicator() const { return mpi_communicator; }
+  const ElasticityParameters& get_parameters() const { return elasticity; }
 
-  private:
-    struct Implementation; // PETSc objects, kept out of this header
-    MPI_Comm mpi_communicator;
-    ElasticityParameters elasticity;
-    LinearSolverParameters linear_solver;
-    dealii::parallel::shared::Triangulation<dim> tria;
-    dealii::DoFHandler<dim> dof_handler;
-    std::map<dealii::types::material_id, Material> materials;
-    std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, dim>>> tractions;
-    std::vector<dealii::Point<dim>> dof_support_points;
-    double load_factor = 1.; // -, multiplies the tractions
-    std::unique_ptr<Implementation> impl; // owned
-  };
+private:
+  struct Implementation; // PETSc objects, kept out of this header
+  MPI_Comm mpi_communicator;
+  ElasticityParameters elasticity;
+  LinearSolverParameters linear_solver;
+  dealii::parallel::shared::Triangulation<dim> tria;
+  dealii::DoFHandler<dim> dof_handler;
+  std::map<dealii::types::material_id, Material> materials;
+  std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, dim>>> tractions;
+  std::vector<dealii::Point<dim>> dof_support_points;
+  double load_factor = 1.;              // -, multiplies the tractions
+  std::unique_ptr<Implementation> impl; // owned
+};
 } // namespace gearstiff::fem

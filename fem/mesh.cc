@@ -1,120 +1,117 @@
 #include "fem/mesh.h"
 
-#include <deal.II/grid/grid_in.h>
-#include <deal.II/grid/grid_tools.h>
-
 #include "kinematics/errors.h"
 
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace gearstiff::fem
 {
-  using namespace dealii;
+using namespace dealii;
 
-  namespace
-  {
-    // $PhysicalNames is plain text in both ASCII and binary .msh files.
-    PhysicalNames read_physical_names(const std::string& file_name, int dim)
+namespace
+{
+// $PhysicalNames is plain text in both ASCII and binary .msh files.
+PhysicalNames read_physical_names(const std::string& file_name, int dim)
+{
+  PhysicalNames names;
+  std::ifstream in(file_name, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("$PhysicalNames", 0) == 0)
     {
-      PhysicalNames names;
-      std::ifstream in(file_name, std::ios::binary);
-      std::string line;
-      while (std::getline(in, line))
-        if (line.rfind("$PhysicalNames", 0) == 0)
-        {
-          std::getline(in, line);
-          const int count = std::stoi(line);
-          for (int k = 0; k < count && std::getline(in, line); ++k)
-          {
-            std::istringstream entry(line);
-            int group_dim = 0, tag = 0;
-            entry >> group_dim >> tag;
-            std::string name;
-            std::getline(entry, name);
-            const auto first = name.find('"'), last = name.rfind('"');
-            if (first != std::string::npos && last > first)
-              name = name.substr(first + 1, last - first - 1);
-            if (group_dim == dim)
-              names.cells[name] = tag;
-            else if (group_dim == dim - 1)
-              names.faces[name] = tag;
-          }
-          break;
-        }
-      return names;
-    }
-  } // namespace
-
-  template <int dim>
-  PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation<dim>& tria,
-                         const std::string& parameter)
-  {
-    if (!std::filesystem::is_regular_file(file_name))
-      throw InputError(parameter, "mesh file '" + file_name + "' does not exist");
-    Triangulation<dim> serial;
-    try
-    {
-      GridIn<dim> grid_in(serial);
-      std::ifstream in(file_name);
-      grid_in.read_msh(in);
-    }
-    catch (const ExceptionBase& e)
-    {
-      std::ostringstream message;
-      e.print_info(message);
-      std::string text = message.str();
-      for (auto& c : text)
-        if (c == '\n')
-          c = ' ';
-      throw InputError(parameter, "cannot read '" + file_name + "' as a " + std::to_string(dim) +
-                                    "D quadrilateral/hexahedral gmsh mesh: " + text);
-    }
-    GridTools::scale(scale, serial);
-    join_bodies<dim>({&serial}, tria);
-    return read_physical_names(file_name, dim);
-  }
-
-  template <int dim>
-  void join_bodies(const std::vector<const Triangulation<dim>*>& parts, Triangulation<dim>& result)
-  {
-    std::vector<Point<dim>> vertices;
-    std::vector<CellData<dim>> cells;
-    SubCellData faces;
-    for (const auto* part : parts)
-    {
-      const unsigned int offset = vertices.size();
-      vertices.insert(vertices.end(), part->get_vertices().begin(), part->get_vertices().end());
-      for (const auto& cell : part->active_cell_iterators())
+      std::getline(in, line);
+      const int count = std::stoi(line);
+      for (int k = 0; k < count && std::getline(in, line); ++k)
       {
-        CellData<dim> data(cell->n_vertices());
-        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-          data.vertices[v] = cell->vertex_index(v) + offset;
-        data.material_id = cell->material_id();
-        cells.push_back(data);
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() != 0)
-          {
-            CellData<dim - 1> face(cell->face(f)->n_vertices());
-            for (unsigned int v = 0; v < face.vertices.size(); ++v)
-              face.vertices[v] = cell->face(f)->vertex_index(v) + offset;
-            face.boundary_id = cell->face(f)->boundary_id();
-            if constexpr (dim == 2)
-              faces.boundary_lines.push_back(face);
-            else
-              faces.boundary_quads.push_back(face);
-          }
+        std::istringstream entry(line);
+        int group_dim = 0, tag = 0;
+        entry >> group_dim >> tag;
+        std::string name;
+        std::getline(entry, name);
+        const auto first = name.find('"'), last = name.rfind('"');
+        if (first != std::string::npos && last > first)
+          name = name.substr(first + 1, last - first - 1);
+        if (group_dim == dim)
+          names.cells[name] = tag;
+        else if (group_dim == dim - 1)
+          names.faces[name] = tag;
       }
+      break;
     }
-    // Vertices are never merged: coincident ones belong to different bodies.
-    result.create_triangulation(vertices, cells, faces);
-  }
+  return names;
+}
+} // namespace
 
-  template PhysicalNames read_msh(const std::string&, double, Triangulation<2>&,
-                                  const std::string&);
-  template PhysicalNames read_msh(const std::string&, double, Triangulation<3>&,
-                                  const std::string&);
-  template void join_bodies(const std::vector<const Triangulation<2>*>&, Triangulation<2>&);
-  template void join_bodies(const std::vector<const Triangulation<3>*>&, Triangulation<3>&);
+template <int dim>
+PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation<dim>& tria,
+                       const std::string& parameter)
+{
+  if (!std::filesystem::is_regular_file(file_name))
+    throw InputError(parameter, "mesh file '" + file_name + "' does not exist");
+  Triangulation<dim> serial;
+  try
+  {
+    GridIn<dim> grid_in(serial);
+    std::ifstream in(file_name);
+    grid_in.read_msh(in);
+  }
+  catch (const ExceptionBase& e)
+  {
+    std::ostringstream message;
+    e.print_info(message);
+    std::string text = message.str();
+    for (auto& c : text)
+      if (c == '\n')
+        c = ' ';
+    throw InputError(parameter, "cannot read '" + file_name + "' as a " + std::to_string(dim) +
+                                    "D quadrilateral/hexahedral gmsh mesh: " + text);
+  }
+  GridTools::scale(scale, serial);
+  join_bodies<dim>({&serial}, tria);
+  return read_physical_names(file_name, dim);
+}
+
+template <int dim>
+void join_bodies(const std::vector<const Triangulation<dim>*>& parts, Triangulation<dim>& result)
+{
+  std::vector<Point<dim>> vertices;
+  std::vector<CellData<dim>> cells;
+  SubCellData faces;
+  for (const auto* part : parts)
+  {
+    const unsigned int offset = vertices.size();
+    vertices.insert(vertices.end(), part->get_vertices().begin(), part->get_vertices().end());
+    for (const auto& cell : part->active_cell_iterators())
+    {
+      CellData<dim> data(cell->n_vertices());
+      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+        data.vertices[v] = cell->vertex_index(v) + offset;
+      data.material_id = cell->material_id();
+      cells.push_back(data);
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() != 0)
+        {
+          CellData<dim - 1> face(cell->face(f)->n_vertices());
+          for (unsigned int v = 0; v < face.vertices.size(); ++v)
+            face.vertices[v] = cell->face(f)->vertex_index(v) + offset;
+          face.boundary_id = cell->face(f)->boundary_id();
+          if constexpr (dim == 2)
+            faces.boundary_lines.push_back(face);
+          else
+            faces.boundary_quads.push_back(face);
+        }
+    }
+  }
+  // Vertices are never merged: coincident ones belong to different bodies.
+  result.create_triangulation(vertices, cells, faces);
+}
+
+template PhysicalNames read_msh(const std::string&, double, Triangulation<2>&, const std::string&);
+template PhysicalNames read_msh(const std::string&, double, Triangulation<3>&, const std::string&);
+template void join_bodies(const std::vector<const Triangulation<2>*>&, Triangulation<2>&);
+template void join_bodies(const std::vector<const Triangulation<3>*>&, Triangulation<3>&);
 } // namespace gearstiff::fem

@@ -5,58 +5,57 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <map>
 #include <string>
 
 namespace gearstiff::fem
 {
-  enum class PlanarModel
-  {
-    plane_strain, // 2D, ε_zz = 0 (thick gears); forces are per `thickness`
-    plane_stress  // 2D, σ_zz = 0 (thin webs); forces are per `thickness`
-  };
+enum class PlanarModel
+{
+  plane_strain, // 2D, ε_zz = 0 (thick gears); forces are per `thickness`
+  plane_stress  // 2D, σ_zz = 0 (thin webs); forces are per `thickness`
+};
 
-  struct Material
-  {
-    double youngs_modulus = 210e9; // Pa
-    double poisson_ratio = 0.3;    // -
+struct Material
+{
+  double youngs_modulus = 210e9; // Pa
+  double poisson_ratio = 0.3;    // -
 
-    // Lamé constants of the 3D law, Pa.
-    double lame_lambda() const;
-    double lame_mu() const;
-  };
+  // Lamé constants of the 3D law, Pa.
+  double lame_lambda() const;
+  double lame_mu() const;
+};
 
-  // Subsection "Finite elements". The space dimension comes from the mesh; `model` and
-  // `thickness` only matter for 2D meshes.
-  struct ElasticityParameters
-  {
-    PlanarModel model = PlanarModel::plane_strain;
-    unsigned int degree = 1; // FE_Q polynomial degree, 1 or 2
-    double thickness = 1.0;  // m, out-of-plane extent of a 2D model (ignored in 3D)
+// Subsection "Finite elements". The space dimension comes from the mesh; `model` and
+// `thickness` only matter for 2D meshes.
+struct ElasticityParameters
+{
+  PlanarModel model = PlanarModel::plane_strain;
+  unsigned int degree = 1; // FE_Q polynomial degree, 1 or 2
+  double thickness = 1.0;  // m, out-of-plane extent of a 2D model (ignored in 3D)
 
-    static void declare_parameters(dealii::ParameterHandler& prm);
-    void parse_parameters(dealii::ParameterHandler& prm);
-  };
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
 
-  enum class LinearSolverMethod
-  {
-    direct_mumps,   // sparse Cholesky (MUMPS): robust default for 2D
-    cg_gamg,        // CG + PETSc GAMG with the rigid-body modes as near-null space (large 3D)
-    cg_boomeramg    // CG + hypre BoomerAMG with nodal coarsening (large 3D)
-  };
+enum class LinearSolverMethod
+{
+  direct_mumps, // sparse Cholesky (MUMPS): robust default for 2D
+  cg_gamg,      // CG + PETSc GAMG with the rigid-body modes as near-null space (large 3D)
+  cg_boomeramg  // CG + hypre BoomerAMG with nodal coarsening (large 3D)
+};
 
-  // Subsection "Linear solver".
-  struct LinearSolverParameters
-  {
-    LinearSolverMethod method = LinearSolverMethod::direct_mumps;
-    double relative_tolerance = 1e-10; // -, iterative methods: |r| / |b|
-    unsigned int max_iterations = 5000;
+// Subsection "Linear solver".
+struct LinearSolverParameters
+{
+  LinearSolverMethod method = LinearSolverMethod::direct_mumps;
+  double relative_tolerance = 1e-10; // -, iterative methods: |r| / |b|
+  unsigned int max_iterations = 5000;
 
-    static void declare_parameters(dealii::ParameterHandler& prm);
-    void parse_parameters(dealii::ParameterHandler& prm);
-  };
+  static void declare_parameters(dealii::ParameterHandler& prm);
+  void parse_parameters(dealii::ParameterHandler& prm);
+};
 
-  std::string to_string(PlanarModel model);
-  std::string to_string(LinearSolverMethod method);
+std::string to_string(PlanarModel model);
+std::string to_string(LinearSolverMethod method);
 } // namespace gearstiff::fem

@@ -2,13 +2,12 @@
 // block slides and the interface transmits exactly T = μ·N (Coulomb's law, each slip node at
 // |λ_τ| = μ λ_n); under a tangential load below μ·N it sticks and carries the load; above μ·N no
 // equilibrium exists and the solver must say so instead of returning a number.
-#include <deal.II/grid/grid_generator.h>
-
 #include "contact/contact_problem.h"
 #include "fem/mesh.h"
 #include "kinematics/errors.h"
 
 #include <cmath>
+#include <deal.II/grid/grid_generator.h>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <mpi.h>
@@ -19,65 +18,65 @@ using namespace gearstiff::contact;
 
 namespace
 {
-  constexpr double width = 1e-3, height = 0.5e-3, thickness = 1e-3; // m
-  constexpr double pressure = 50e6;                                  // Pa, force control
-  constexpr double press = 0.2e-6;                                   // m, displacement control
-  constexpr double mu = 0.3;
-  const fem::Material steel{210e9, 0.3};
+constexpr double width = 1e-3, height = 0.5e-3, thickness = 1e-3; // m
+constexpr double pressure = 50e6;                                 // Pa, force control
+constexpr double press = 0.2e-6;                                  // m, displacement control
+constexpr double mu = 0.3;
+const fem::Material steel{210e9, 0.3};
 
-  // Boundary ids: 1 block bottom (slave), 2 block top, 3 base top (master), 4 base bottom.
-  void make_block_on_base(Triangulation<2>& tria)
+// Boundary ids: 1 block bottom (slave), 2 block top, 3 base top (master), 4 base bottom.
+void make_block_on_base(Triangulation<2>& tria)
+{
+  Triangulation<2> block, base;
+  GridGenerator::subdivided_hyper_rectangle(block, {8, 4}, Point<2>(0, 0), Point<2>(width, height),
+                                            true);
+  GridGenerator::subdivided_hyper_rectangle(base, {6, 4}, Point<2>(-0.2e-3, -height),
+                                            Point<2>(width + 0.2e-3, 0), true);
+  for (auto& cell : block.active_cell_iterators())
   {
-    Triangulation<2> block, base;
-    GridGenerator::subdivided_hyper_rectangle(block, {8, 4}, Point<2>(0, 0),
-                                              Point<2>(width, height), true);
-    GridGenerator::subdivided_hyper_rectangle(base, {6, 4}, Point<2>(-0.2e-3, -height),
-                                              Point<2>(width + 0.2e-3, 0), true);
-    for (auto& cell : block.active_cell_iterators())
-    {
-      cell->set_material_id(1);
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-        {
-          const auto id = cell->face(f)->boundary_id();
-          cell->face(f)->set_boundary_id(id == 2 ? 1 : id == 3 ? 2 : 0);
-        }
-    }
-    for (auto& cell : base.active_cell_iterators())
-    {
-      cell->set_material_id(2);
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-        {
-          const auto id = cell->face(f)->boundary_id();
-          cell->face(f)->set_boundary_id(id == 3 ? 3 : id == 2 ? 4 : 0);
-        }
-    }
-    fem::join_bodies<2>({&block, &base}, tria);
+    cell->set_material_id(1);
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+      {
+        const auto id = cell->face(f)->boundary_id();
+        cell->face(f)->set_boundary_id(id == 2 ? 1 : id == 3 ? 2 : 0);
+      }
   }
+  for (auto& cell : base.active_cell_iterators())
+  {
+    cell->set_material_id(2);
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+      {
+        const auto id = cell->face(f)->boundary_id();
+        cell->face(f)->set_boundary_id(id == 3 ? 3 : id == 2 ? 4 : 0);
+      }
+  }
+  fem::join_bodies<2>({&block, &base}, tria);
+}
 
-  // The block's top is moved by (pull, −press); the base bottom is fixed. Holding the whole top
-  // keeps the block from rocking, so N and T follow from the interface alone.
-  ContactResults<2> run_block(double pull, double shear_traction = 0.)
+// The block's top is moved by (pull, −press); the base bottom is fixed. Holding the whole top
+// keeps the block from rocking, so N and T follow from the interface alone.
+ContactResults<2> run_block(double pull, double shear_traction = 0.)
+{
+  fem::ElasticityParameters elasticity;
+  elasticity.thickness = thickness;
+  ContactParameters contact;
+  contact.friction_coefficient = mu;
+  ContactProblem<2> problem(MPI_COMM_WORLD, elasticity, fem::LinearSolverParameters(), contact);
+  make_block_on_base(problem.system().triangulation());
+  problem.system().set_materials({{1, steel}, {2, steel}}, "materials");
+  problem.add_displacement(4, Tensor<1, 2>(), "base bottom");
+  if (shear_traction != 0.)
   {
-    fem::ElasticityParameters elasticity;
-    elasticity.thickness = thickness;
-    ContactParameters contact;
-    contact.friction_coefficient = mu;
-    ContactProblem<2> problem(MPI_COMM_WORLD, elasticity, fem::LinearSolverParameters(), contact);
-    make_block_on_base(problem.system().triangulation());
-    problem.system().set_materials({{1, steel}, {2, steel}}, "materials");
-    problem.add_displacement(4, Tensor<1, 2>(), "base bottom");
-    if (shear_traction != 0.)
-    {
-      // Force control: pressure and shear on the top, which is otherwise free.
-      problem.system().add_traction(2, Tensor<1, 2>({shear_traction, -pressure}));
-    }
-    else
-      problem.add_displacement(2, Tensor<1, 2>({pull, -press}), "block top");
-    problem.add_contact_pair({1}, {3}, "block");
-    return problem.run();
+    // Force control: pressure and shear on the top, which is otherwise free.
+    problem.system().add_traction(2, Tensor<1, 2>({shear_traction, -pressure}));
   }
+  else
+    problem.add_displacement(2, Tensor<1, 2>({pull, -press}), "block top");
+  problem.add_contact_pair({1}, {3}, "block");
+  return problem.run();
+}
 } // namespace
 
 TEST(Friction, SlidingBlockTransmitsMuTimesNormalForce)

@@ -16,53 +16,53 @@ using namespace gearstiff::contact;
 
 namespace
 {
-  const fem::Material steel{210e9, 0.3};
+const fem::Material steel{210e9, 0.3};
 
-  struct HertzRun
-  {
-    double load_per_length;    // N/m
-    double fitted_half_width;  // m, of the elliptic fit p² = p0²(1 − x²/a²)
-    double fitted_peak;        // Pa
-    double peak_pressure;      // Pa, largest nodal pressure
-    double closed_extent;      // m, half of the extent of the closed nodes
-    unsigned int iterations;
-    unsigned int n_dofs;
-  };
+struct HertzRun
+{
+  double load_per_length;   // N/m
+  double fitted_half_width; // m, of the elliptic fit p² = p0²(1 − x²/a²)
+  double fitted_peak;       // Pa
+  double peak_pressure;     // Pa, largest nodal pressure
+  double closed_extent;     // m, half of the extent of the closed nodes
+  unsigned int iterations;
+  unsigned int n_dofs;
+};
 
-  HertzRun run_hertz(double fine_size, double approach)
-  {
-    fem::ElasticityParameters elasticity;
-    elasticity.thickness = 1e-3;
-    ContactProblem<2> problem(MPI_COMM_WORLD, elasticity, fem::LinearSolverParameters(),
-                              ContactParameters());
-    CylinderPairGeometry geometry;
-    geometry.fine_size = fine_size;
-    make_cylinder_pair(geometry, problem.system().triangulation());
-    problem.system().set_materials({{upper_body, steel}, {lower_body, steel}}, "materials");
-    problem.add_displacement(upper_top, Tensor<1, 2>({0., -approach}), "upper top");
-    problem.add_displacement(lower_bottom, Tensor<1, 2>(), "lower bottom");
-    problem.add_contact_pair({upper_contact}, {lower_contact}, "cylinders");
-    const ContactResults<2>& result = problem.run();
+HertzRun run_hertz(double fine_size, double approach)
+{
+  fem::ElasticityParameters elasticity;
+  elasticity.thickness = 1e-3;
+  ContactProblem<2> problem(MPI_COMM_WORLD, elasticity, fem::LinearSolverParameters(),
+                            ContactParameters());
+  CylinderPairGeometry geometry;
+  geometry.fine_size = fine_size;
+  make_cylinder_pair(geometry, problem.system().triangulation());
+  problem.system().set_materials({{upper_body, steel}, {lower_body, steel}}, "materials");
+  problem.add_displacement(upper_top, Tensor<1, 2>({0., -approach}), "upper top");
+  problem.add_displacement(lower_bottom, Tensor<1, 2>(), "lower bottom");
+  problem.add_contact_pair({upper_contact}, {lower_contact}, "cylinders");
+  const ContactResults<2>& result = problem.run();
 
-    HertzRun run;
-    run.load_per_length = result.supports.at(1).force[1] / elasticity.thickness;
-    const PairResult<2>& pair = result.pairs.at(0);
-    run.peak_pressure = pair.max_pressure;
-    run.closed_extent = 0.5 * pair.contact_length;
-    std::vector<double> x, p;
-    for (const auto& point : pair.points)
-      if (point.state != NodeState::open)
-      {
-        x.push_back(point.position[0]);
-        p.push_back(point.pressure);
-      }
-    const HertzLineContact fitted = fit_hertz_profile(x, p);
-    run.fitted_half_width = fitted.half_width;
-    run.fitted_peak = fitted.peak_pressure;
-    run.iterations = result.active_set_iterations;
-    run.n_dofs = result.n_dofs;
-    return run;
-  }
+  HertzRun run;
+  run.load_per_length = result.supports.at(1).force[1] / elasticity.thickness;
+  const PairResult<2>& pair = result.pairs.at(0);
+  run.peak_pressure = pair.max_pressure;
+  run.closed_extent = 0.5 * pair.contact_length;
+  std::vector<double> x, p;
+  for (const auto& point : pair.points)
+    if (point.state != NodeState::open)
+    {
+      x.push_back(point.position[0]);
+      p.push_back(point.pressure);
+    }
+  const HertzLineContact fitted = fit_hertz_profile(x, p);
+  run.fitted_half_width = fitted.half_width;
+  run.fitted_peak = fitted.peak_pressure;
+  run.iterations = result.active_set_iterations;
+  run.n_dofs = result.n_dofs;
+  return run;
+}
 } // namespace
 
 TEST(Hertz, PlaneStrainCylindersRefinementStudy)

@@ -1,12 +1,11 @@
 // The same frictional Hertz problem solved on all ranks together (METIS partition, distributed
 // PETSc matrix, MUMPS) and on each rank alone (MPI_COMM_SELF) must give the same answer: the
 // partition may change round-off, never the result.
-#include <deal.II/base/mpi.h>
-
 #include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
 
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -16,36 +15,36 @@ using namespace gearstiff::contact;
 
 namespace
 {
-  struct Outcome
-  {
-    ContactResults<2> result;
-    Vector<double> solution;
-    unsigned int n_subdomains;
-  };
+struct Outcome
+{
+  ContactResults<2> result;
+  Vector<double> solution;
+  unsigned int n_subdomains;
+};
 
-  Outcome solve_on(MPI_Comm communicator)
-  {
-    fem::ElasticityParameters elasticity;
-    elasticity.thickness = 1e-3;
-    ContactParameters contact;
-    contact.friction_coefficient = 0.1;
-    ContactProblem<2> problem(communicator, elasticity, fem::LinearSolverParameters(), contact);
-    CylinderPairGeometry geometry;
-    geometry.fine_size = 12.5e-6;
-    make_cylinder_pair(geometry, problem.system().triangulation());
-    problem.system().set_materials({{upper_body, {210e9, 0.3}}, {lower_body, {210e9, 0.3}}},
-                                   "materials");
-    // A small sideways motion of the upper body gives stick and slip zones.
-    problem.add_displacement(upper_top, Tensor<1, 2>({0.3e-6, -4e-6}), "upper top");
-    problem.add_displacement(lower_bottom, Tensor<1, 2>(), "lower bottom");
-    problem.add_contact_pair({upper_contact}, {lower_contact}, "cylinders");
-    Outcome outcome{problem.run(), problem.solution(), 0};
-    std::set<types::subdomain_id> subdomains;
-    for (const auto& cell : problem.system().triangulation().active_cell_iterators())
-      subdomains.insert(cell->subdomain_id());
-    outcome.n_subdomains = subdomains.size();
-    return outcome;
-  }
+Outcome solve_on(MPI_Comm communicator)
+{
+  fem::ElasticityParameters elasticity;
+  elasticity.thickness = 1e-3;
+  ContactParameters contact;
+  contact.friction_coefficient = 0.1;
+  ContactProblem<2> problem(communicator, elasticity, fem::LinearSolverParameters(), contact);
+  CylinderPairGeometry geometry;
+  geometry.fine_size = 12.5e-6;
+  make_cylinder_pair(geometry, problem.system().triangulation());
+  problem.system().set_materials({{upper_body, {210e9, 0.3}}, {lower_body, {210e9, 0.3}}},
+                                 "materials");
+  // A small sideways motion of the upper body gives stick and slip zones.
+  problem.add_displacement(upper_top, Tensor<1, 2>({0.3e-6, -4e-6}), "upper top");
+  problem.add_displacement(lower_bottom, Tensor<1, 2>(), "lower bottom");
+  problem.add_contact_pair({upper_contact}, {lower_contact}, "cylinders");
+  Outcome outcome{problem.run(), problem.solution(), 0};
+  std::set<types::subdomain_id> subdomains;
+  for (const auto& cell : problem.system().triangulation().active_cell_iterators())
+    subdomains.insert(cell->subdomain_id());
+  outcome.n_subdomains = subdomains.size();
+  return outcome;
+}
 } // namespace
 
 TEST(Mpi, OneAndTwoRanksAgree)

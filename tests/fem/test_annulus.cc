@@ -4,15 +4,14 @@
 // (Timoshenko & Goodier, Theory of Elasticity, 3rd ed., §33 "rotating disc"/§41 torsion of a ring
 // by shear on the circles; it follows from τ_rθ = −2μB/r² and T = 2π r² t τ_rθ). It depends on μ
 // only, so plane strain and plane stress must agree.
-#include <deal.II/grid/grid_generator.h>
-
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
 #include "kinematics/errors.h"
 
 #include <cmath>
-#include <iostream>
+#include <deal.II/grid/grid_generator.h>
 #include <gtest/gtest.h>
+#include <iostream>
 #include <mpi.h>
 
 using namespace dealii;
@@ -21,55 +20,55 @@ using namespace gearstiff::fem;
 
 namespace
 {
-  constexpr double inner_radius = 0.01;  // m
-  constexpr double outer_radius = 0.03;  // m
-  constexpr double thickness = 0.02;     // m
-  const Material steel{210e9, 0.3};
+constexpr double inner_radius = 0.01; // m
+constexpr double outer_radius = 0.03; // m
+constexpr double thickness = 0.02;    // m
+const Material steel{210e9, 0.3};
 
-  double analytic_stiffness()
-  {
-    const double a2 = inner_radius * inner_radius, b2 = outer_radius * outer_radius;
-    return 4. * M_PI * steel.lame_mu() * thickness * a2 * b2 / (b2 - a2);
-  }
+double analytic_stiffness()
+{
+  const double a2 = inner_radius * inner_radius, b2 = outer_radius * outer_radius;
+  return 4. * M_PI * steel.lame_mu() * thickness * a2 * b2 / (b2 - a2);
+}
 
-  struct AnnulusResult
-  {
-    double rotation;     // rad
-    double hub_torque;   // N·m, from the residual
-    double outer_torque; // N·m, from the residual
-    double hub_force;    // N, magnitude (must vanish)
-  };
+struct AnnulusResult
+{
+  double rotation;     // rad
+  double hub_torque;   // N·m, from the residual
+  double outer_torque; // N·m, from the residual
+  double hub_force;    // N, magnitude (must vanish)
+};
 
-  AnnulusResult solve_annulus(unsigned int refinements, unsigned int degree, PlanarModel model,
-                              RigidHub<2>::Control control, double value)
-  {
-    ElasticityParameters elasticity;
-    elasticity.degree = degree;
-    elasticity.model = model;
-    elasticity.thickness = thickness;
-    ElasticSystem<2> system(MPI_COMM_WORLD, elasticity, LinearSolverParameters());
-    // colorize: boundary id 0 inner, 1 outer.
-    GridGenerator::hyper_shell(system.triangulation(), Point<2>(), inner_radius, outer_radius, 8,
-                               true);
-    system.triangulation().refine_global(refinements);
-    system.set_materials({{0, steel}}, "material");
-    system.setup_system();
+AnnulusResult solve_annulus(unsigned int refinements, unsigned int degree, PlanarModel model,
+                            RigidHub<2>::Control control, double value)
+{
+  ElasticityParameters elasticity;
+  elasticity.degree = degree;
+  elasticity.model = model;
+  elasticity.thickness = thickness;
+  ElasticSystem<2> system(MPI_COMM_WORLD, elasticity, LinearSolverParameters());
+  // colorize: boundary id 0 inner, 1 outer.
+  GridGenerator::hyper_shell(system.triangulation(), Point<2>(), inner_radius, outer_radius, 8,
+                             true);
+  system.triangulation().refine_global(refinements);
+  system.set_materials({{0, steel}}, "material");
+  system.setup_system();
 
-    RigidHub<2> hub(system, 0, Point<2>(), control, value, "hub");
-    const auto outer = boundary_nodes(system.get_dof_handler(), {1});
-    AffineConstraints<double> constraints;
-    add_prescribed_displacement(outer, Tensor<1, 2>(), constraints);
-    hub.add_constraints(constraints);
-    constraints.close();
-    Vector<double> loads(system.get_dof_handler().n_dofs());
-    hub.add_loads(loads);
-    LinearSolveStatistics statistics;
-    const Vector<double> u = system.solve(constraints, loads, statistics);
-    const Vector<double> r = system.residual(u);
-    const Reaction<2> hub_reaction = hub.reaction(r);
-    return {hub.rotation(u), hub_reaction.torque, reaction(outer, r, Point<2>()).torque,
-            hub_reaction.force.norm()};
-  }
+  RigidHub<2> hub(system, 0, Point<2>(), control, value, "hub");
+  const auto outer = boundary_nodes(system.get_dof_handler(), {1});
+  AffineConstraints<double> constraints;
+  add_prescribed_displacement(outer, Tensor<1, 2>(), constraints);
+  hub.add_constraints(constraints);
+  constraints.close();
+  Vector<double> loads(system.get_dof_handler().n_dofs());
+  hub.add_loads(loads);
+  LinearSolveStatistics statistics;
+  const Vector<double> u = system.solve(constraints, loads, statistics);
+  const Vector<double> r = system.residual(u);
+  const Reaction<2> hub_reaction = hub.reaction(r);
+  return {hub.rotation(u), hub_reaction.torque, reaction(outer, r, Point<2>()).torque,
+          hub_reaction.force.norm()};
+}
 } // namespace
 
 TEST(Annulus, TorqueControlConvergesToLame)
@@ -79,7 +78,7 @@ TEST(Annulus, TorqueControlConvergesToLame)
   for (unsigned int level = 2; level <= 5; ++level)
   {
     const AnnulusResult result =
-      solve_annulus(level, 1, PlanarModel::plane_strain, RigidHub<2>::Control::torque, torque);
+        solve_annulus(level, 1, PlanarModel::plane_strain, RigidHub<2>::Control::torque, torque);
     const double stiffness = torque / result.rotation;
     const double error = std::abs(stiffness / analytic_stiffness() - 1.);
     // Equilibrium of the discrete system: the hub residual carries exactly the applied torque
@@ -107,17 +106,17 @@ TEST(Annulus, RotationControlReactionsAndModels)
   for (const PlanarModel model : {PlanarModel::plane_strain, PlanarModel::plane_stress})
   {
     const AnnulusResult result =
-      solve_annulus(4, 2, model, RigidHub<2>::Control::rotation, rotation);
-    std::cout << to_string(model) << ": k/k_Lame - 1 = "
-              << result.hub_torque / rotation / analytic_stiffness() - 1. << "\n";
+        solve_annulus(4, 2, model, RigidHub<2>::Control::rotation, rotation);
+    std::cout << to_string(model)
+              << ": k/k_Lame - 1 = " << result.hub_torque / rotation / analytic_stiffness() - 1.
+              << "\n";
     EXPECT_NEAR(result.rotation, rotation, 1e-12 * rotation);
     // Reactions from the residual balance each other exactly.
     EXPECT_NEAR(result.hub_torque, -result.outer_torque, 1e-8 * std::abs(result.hub_torque));
     // Q2 on 2k cells: the error (observed −0.038 %) is the straight-sided (MappingQ1) polygon
     // of 128 sides replacing the circles, of order (π/128)² = 0.06 %; bound 0.1 %. The
     // stiffness depends on μ only, for both models.
-    EXPECT_NEAR(result.hub_torque / rotation / analytic_stiffness(), 1., 1e-3)
-      << to_string(model);
+    EXPECT_NEAR(result.hub_torque / rotation / analytic_stiffness(), 1., 1e-3) << to_string(model);
   }
 }
 
