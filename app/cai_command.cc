@@ -139,8 +139,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
           << format(fit.parameters.shape[1], 10) << ", " << format(fit.parameters.shape[2], 10)
           << "\nend\n";
     out.close();
-    const std::string sample_csv = temporary_csv(report, points, "cai-samples");
-    const std::string curve_csv = temporary_csv(report, curve, "cai-curves");
+    const std::string sample_csv = temporary_csv(report, "cai_samples");
+    const std::string curve_csv = temporary_csv(report, "cai_curves");
     context.plot("plot_cai.py", {sample_csv, curve_csv}, "cai_calibration.png",
                  "FE pair stiffness, calibrated and paper-scaled Cai curves");
     std::filesystem::remove(sample_csv);

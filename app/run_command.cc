@@ -114,7 +114,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 
   // 3. k(θ) sweep and Cai calibration.
   const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
-  const ReportTable& sweep_table = add_stiffness_sweep_table(report, sweep, "run_sweep");
+  add_stiffness_sweep_table(report, sweep, "run_sweep");
   double mean = 0., mean_even = 0.;
   unsigned int n_even = 0;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
@@ -213,7 +213,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
         out << "subsection " << mesh << "\n  set stiffness source = table\n"
             << "  set stiffness table = " << dynamics_stiffness_table(sweep) << "\nend\n";
     }
-    const std::string csv = temporary_csv(report, sweep_table, "run-sweep");
+    const std::string csv = temporary_csv(report, "run_sweep");
     context.plot("plot_stiffness.py",
                  {csv, format(ansys_single / 1e6, 8), format(ansys_double / 1e6, 8),
                   format(iso.mesh_alpha_per_width / 1e6, 8), format(mean / 1e6, 8)},

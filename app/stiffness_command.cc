@@ -124,7 +124,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   }
 
   const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
-  const ReportTable& table = add_stiffness_sweep_table(report, sweep, "stiffness_sweep");
+  add_stiffness_sweep_table(report, sweep, "stiffness_sweep");
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
   for (const auto& r : sweep.positions)
   {
@@ -169,7 +169,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
         out << "subsection " << mesh << "\n  set stiffness source = table\n"
             << "  set stiffness table = " << text << "\nend\n";
     }
-    const std::string csv = temporary_csv(report, table, "stiffness-sweep");
+    const std::string csv = temporary_csv(report, "stiffness_sweep");
     context.plot("plot_stiffness.py",
                  {csv, format(p.published_reference ? ansys_single / 1e6 : 0., 8),
                   format(p.published_reference ? ansys_double / 1e6 : 0., 8),

@@ -335,9 +335,8 @@ void report_stiffness_position(Report& report, const contact::GearMeshStiffnessR
   report.add_value(prefix + "time_total", r.total_time, "s", label + ": wall time");
 }
 
-const ReportTable& add_stiffness_sweep_table(Report& report,
-                                             const contact::StiffnessSweepResult& sweep,
-                                             const std::string& name)
+void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResult& sweep,
+                               const std::string& name)
 {
   ReportTable& table = report.add_table(
       name,
@@ -360,16 +359,17 @@ const ReportTable& add_stiffness_sweep_table(Report& report,
                    double(r.active_set_iterations), double(r.n_dofs), r.total_time,
                    double(sweep.rank_of_position[i])});
   }
-  return table;
 }
 
-std::string temporary_csv(const Report& report, const ReportTable& table, const std::string& name)
+std::string temporary_csv(const Report& report, const std::string& table_name)
 {
   const std::string path = (std::filesystem::temp_directory_path() /
-                            ("gearstiff-" + name + "-" + std::to_string(getpid()) + ".csv"))
+                            ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
                                .string();
   std::ofstream out(path);
-  report.write_table_csv(table, out);
+  for (const auto& table : report.tables())
+    if (table.name == table_name)
+      report.write_table_csv(table, out);
   return path;
 }
 

@@ -59,13 +59,13 @@ contact::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p
 // error, torque ratio, pairs, pressures, root stresses and cost.
 void report_stiffness_position(Report& report, const contact::GearMeshStiffnessResult& r,
                                const std::string& prefix, const std::string& label);
-// The sweep as a table (one row per position), returned for plotting.
-const ReportTable& add_stiffness_sweep_table(Report& report,
-                                             const contact::StiffnessSweepResult& sweep,
-                                             const std::string& name);
-// Writes `table` to a temporary CSV for a plot script (the report's CSV files appear only
-// after the command returns) and returns its path; remove it after plotting.
-std::string temporary_csv(const Report& report, const ReportTable& table, const std::string& name);
+// The sweep as a table (one row per position).
+void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResult& sweep,
+                               const std::string& name);
+// Writes the report's table `table_name` to a temporary CSV for a plot script (the report's CSV
+// files appear only after the command returns) and returns its path; remove it after plotting.
+// By name: references into the report's tables do not survive a later add_table.
+std::string temporary_csv(const Report& report, const std::string& table_name);
 
 // The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions
