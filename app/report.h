@@ -4,6 +4,7 @@
 // per table. Plain C++ so every command can fill it without further dependencies.
 #pragma once
 
+#include <deque>
 #include <limits>
 #include <map>
 #include <ostream>
@@ -52,13 +53,14 @@ namespace gearstiff::app
     void write_table_csv(const ReportTable& table, std::ostream& out) const;
 
     const std::vector<ReportValue>& values() const { return value_list; }
-    const std::vector<ReportTable>& tables() const { return table_list; }
+    const std::deque<ReportTable>& tables() const { return table_list; }
     const ReportValue* find_value(const std::string& key) const;
 
   private:
     std::vector<ReportValue> value_list;
     std::vector<std::pair<std::string, std::string>> text_list;
-    std::vector<ReportTable> table_list;
+    // A deque: add_table hands out references that must survive later add_table calls.
+    std::deque<ReportTable> table_list;
     std::vector<std::pair<std::string, std::string>> output_file_list;
   };
 
