@@ -100,6 +100,8 @@ void declare_stiffness_parameters(ParameterHandler& prm)
 
   prm.enter_subsection("Finite elements");
   fem::ElasticityParameters::declare_parameters(prm);
+  // Q2 on the default scene: docs/accuracy.md.
+  prm.set("Element degree", std::to_string(contact::default_stiffness_elasticity().degree));
   prm.leave_subsection();
   prm.enter_subsection("Linear solver");
   fem::LinearSolverParameters::declare_parameters(prm);

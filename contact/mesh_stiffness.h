@@ -35,12 +35,14 @@ namespace gearstiff::contact
 // rims and three teeth per gear and explicit mesh sizes (docs/accuracy.md: the cheapest scene
 // within 1% of the converged single-pair stiffness).
 geometry::GearPairSceneSpec default_stiffness_scene();
+// Plane strain with Q2 elements.
+fem::ElasticityParameters default_stiffness_elasticity();
 
 struct GearMeshStiffnessSettings
 {
   // Gear pair, position, teeth modelled, bores, rim and mesh sizes (SI, see the header).
   geometry::GearPairSceneSpec scene = default_stiffness_scene();
-  fem::ElasticityParameters elasticity; // model, degree; thickness is set to the face width
+  fem::ElasticityParameters elasticity = default_stiffness_elasticity(); // thickness: face width
   fem::LinearSolverParameters linear_solver;
   ContactParameters contact;             // μ and the active-set controls
   double pinion_torque = 49.4;           // N·m, T1 > 0 drives the pinion counter-clockwise

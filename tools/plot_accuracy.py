@@ -27,20 +27,20 @@ def main():
                             f"against the converged value {reference:.1f} N/µm"),
                            (axes[1], "error_ansys", "against ANSYS k'_j = 327.2 N/µm")):
         for name, points in variants.items():
-            time = [float(p["wall_time"]) for p in points]
+            time = [float(p["solve_time"]) for p in points]
             error = [max(float(p[key]) * 100, 1e-3) for p in points]
             if name.startswith("ISO"):
                 ax.plot(time, error, "*", ms=14, label=name)
                 continue
             ax.plot(time, error, "o-", label=name)
             for p, t, e in zip(points, time, error):
-                ax.annotate(f"×{float(p['size_factor']):g}", (t, e), fontsize=6,
+                ax.annotate(f"×{float(p['size_factor']):.2g}", (t, e), fontsize=6,
                             textcoords="offset points", xytext=(3, 3))
         ax.set_xscale("log")
         ax.set_yscale("log")
         if key == "error_reference":
             ax.axhline(1.0, color="k", ls=":", lw=1, label="1% target")
-        ax.set_xlabel("wall time, one rank [s]")
+        ax.set_xlabel("wall time of the solve, one rank [s]")
         ax.set_ylabel("|k / k_ref − 1| [%]")
         ax.set_title(title, fontsize=10)
         ax.grid(alpha=0.3, which="both")
