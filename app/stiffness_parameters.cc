@@ -248,13 +248,15 @@ contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParamet
   settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
   settings.output_directory = vtu_directory(p, context, {label});
   settings.output_base = label;
+  // Solved on rank 0 alone: a distributed solve of one 2D position gains little, and a rank
+  // that left the contact iteration alone would stall the others.
   contact::GearMeshStiffnessResult result;
   try
   {
     if (settings.scene.mesh.dimension == 3)
-      result = contact::GearMeshStiffness<3>(context.mpi_communicator, settings).run();
+      result = contact::solve_on_first_rank<3>(context.mpi_communicator, settings);
     else
-      result = contact::GearMeshStiffness<2>(context.mpi_communicator, settings).run();
+      result = contact::solve_on_first_rank<2>(context.mpi_communicator, settings);
   }
   catch (...)
   {
@@ -262,7 +264,6 @@ contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParamet
       std::filesystem::remove(settings.scene_file);
     throw;
   }
-  MPI_Barrier(context.mpi_communicator);
   if (context.is_root())
     std::filesystem::remove(settings.scene_file);
   return result;

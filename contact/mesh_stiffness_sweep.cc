@@ -252,6 +252,54 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   return result;
 }
 
+template <int dim>
+GearMeshStiffnessResult solve_on_first_rank(MPI_Comm mpi_communicator,
+                                            const GearMeshStiffnessSettings& settings)
+{
+  std::vector<double> row(row_length, 0.);
+  int kind = 0; // 1 InputError, 2 SolverFailure, 3 other
+  std::string first, second;
+  if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+  {
+    try
+    {
+      GearMeshStiffness<dim> analysis(MPI_COMM_SELF, settings);
+      row = pack(analysis.run());
+    }
+    catch (const InputError& e)
+    {
+      kind = 1;
+      first = e.parameter();
+      second = e.reason();
+    }
+    catch (const SolverFailure& e)
+    {
+      kind = 2;
+      first = e.method();
+      const std::string what = e.what();
+      second = what.substr(std::min(what.size(), first.size() + 2));
+    }
+    catch (const std::exception& e)
+    {
+      kind = 3;
+      second = e.what();
+    }
+  }
+  MPI_Bcast(&kind, 1, MPI_INT, 0, mpi_communicator);
+  if (kind != 0)
+  {
+    first = Utilities::MPI::broadcast(mpi_communicator, first, 0);
+    second = Utilities::MPI::broadcast(mpi_communicator, second, 0);
+    if (kind == 1)
+      throw InputError(first, second);
+    if (kind == 2)
+      throw SolverFailure(first, second);
+    throw std::runtime_error(second);
+  }
+  MPI_Bcast(row.data(), row_length, MPI_DOUBLE, 0, mpi_communicator);
+  return unpack(row.data());
+}
+
 geometry::SceneMeshSettings scaled_mesh(const geometry::SceneMeshSettings& mesh, double factor)
 {
   if (!(mesh.contact_size > 0.))
@@ -287,6 +335,8 @@ RichardsonEstimate richardson_estimate(const std::vector<RefinementLevel>& level
   return estimate;
 }
 
+template GearMeshStiffnessResult solve_on_first_rank<2>(MPI_Comm, const GearMeshStiffnessSettings&);
+template GearMeshStiffnessResult solve_on_first_rank<3>(MPI_Comm, const GearMeshStiffnessSettings&);
 template StiffnessSweepResult stiffness_sweep<2>(MPI_Comm, const GearMeshStiffnessSettings&,
                                                  const StiffnessSweepSpec&, const std::string&,
                                                  const std::function<void(const std::string&)>&);

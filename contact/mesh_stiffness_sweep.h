@@ -47,6 +47,14 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                 const StiffnessSweepSpec& spec, const std::string& scene_file_stem,
                 const std::function<void(const std::string&)>& progress = {});
 
+// One position solved serially on rank 0 of `mpi_communicator` (MPI_COMM_SELF), its result
+// broadcast to every rank, its exception (InputError or SolverFailure) thrown on every rank.
+// Used where a distributed solve of a 2D position would save little: one position of the
+// default scene solves in seconds on one core.
+template <int dim>
+GearMeshStiffnessResult solve_on_first_rank(MPI_Comm mpi_communicator,
+                                            const GearMeshStiffnessSettings& settings);
+
 // The scene's size field multiplied by `factor` everywhere: contact, body and rim sizes and
 // the growth rate scale, the fine radius (a region, not a size) stays. The contact size and
 // rim size must be explicit (InputError otherwise): an automatic size would follow the load.
