@@ -160,9 +160,11 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   EXPECT_NEAR(s.single_stress.mesh_stiffness / ansys_single, 0.82, 0.05);
   EXPECT_LT(s.single_stress.mesh_stiffness, s.single_strain.mesh_stiffness);
   // The double pair is more sensitive to the bore (10% against 7% per 5 mm, gear-data.md §1),
-  // so with the same bore it sits ~3% further below: 0.87 − 0.03 ≈ 0.84 ± 0.05 (measured 0.80;
-  // its position within the double zone is not published, k varies ~2% across the zone).
-  EXPECT_NEAR(s.double_strain.mesh_stiffness / ansys_double, 0.84, 0.05);
+  // so with the same small bore it sits ~3% further below ANSYS than the single pair does
+  // (measured above: 0.86): 0.86 − 0.03 ≈ 0.83, ± 0.05 for the same modelling differences
+  // (measured 0.80, near the lower edge; its position within the double zone is not
+  // published, k varies ~2% across the zone).
+  EXPECT_NEAR(s.double_strain.mesh_stiffness / ansys_double, 0.83, 0.05);
   // The published Δφ (gear-data.md §1: 2.481e-4 and 1.632e-4 rad) follow with the same ratios.
   EXPECT_NEAR(2.481e-4 / s.single_strain.pinion_rotation, 0.90, 0.05);
 }
