@@ -6,7 +6,6 @@ usage: plot_cai.py SAMPLES.csv CURVES.csv OUT.png
   CURVES.csv   cai_curves table: roll_position, calibrated_cai, paper_cai [N/um]
 FE single-pair stiffness points with the calibrated and the paper-scaled Cai curves.
 """
-import csv
 import sys
 
 import matplotlib
@@ -14,16 +13,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    names = [h.split(" [")[0] for h in rows[0]]
-    return {n: [float(r[i]) for r in rows[1:]] for i, n in enumerate(names)}
+from report_csv import read_table  # noqa: E402
 
 
 def main():
-    samples, curves = read(sys.argv[1]), read(sys.argv[2])
+    samples, curves = read_table(sys.argv[1]), read_table(sys.argv[2])
     fig, ax = plt.subplots(figsize=(8, 5))
     ax.plot(samples["roll_position"], samples["fe_pair_stiffness"], "o", color="C0",
             label="FE: pair stiffness share·k")

@@ -8,7 +8,6 @@ usage: plot_stiffness.py SWEEP.csv ANSYS_SINGLE ANSYS_DOUBLE ISO_MEAN FE_MEAN OU
   FE_MEAN       mean of the FE sweep [N/um]
 Top: mesh stiffness against the pinion roll angle with the reference lines; bottom: load share.
 """
-import csv
 import sys
 
 import matplotlib
@@ -16,16 +15,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    names = [h.split(" [")[0] for h in rows[0]]
-    return {n: [float(r[i]) for r in rows[1:]] for i, n in enumerate(names)}
+from report_csv import read_table  # noqa: E402
 
 
 def main():
-    table = read(sys.argv[1])
+    table = read_table(sys.argv[1])
     single, double, iso, mean = (float(v) for v in sys.argv[2:6])
     png = sys.argv[-1]
     angle = table["roll_angle"]

@@ -1,0 +1,14 @@
+"""Reading the CSV tables that gearstiff commands write (header "name [unit]", numbers only).
+
+Shared by the plot scripts in this folder; they run as `python3 tools/plot_x.py ...`, so this
+module is found beside them on sys.path.
+"""
+import csv
+
+
+def read_table(path):
+    """The table at `path` as {column name without its unit: [float, ...]}."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    names = [h.split(" [")[0] for h in rows[0]]
+    return {n: [float(r[i]) for r in rows[1:]] for i, n in enumerate(names)}
