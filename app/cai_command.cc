@@ -12,6 +12,7 @@
 // stiffness source cai, stiffness = fitted scale, cai shape = fitted shape).
 #include "app/command.h"
 #include "app/stiffness_parameters.h"
+#include "app/units.h"
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/mesh_stiffness.h"
 #include "kinematics/errors.h"
@@ -19,7 +20,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace
 {
@@ -30,22 +30,10 @@ using namespace gearstiff::app;
 constexpr double ansys_single = 327.222e6; // N/m
 const std::string paper_source = "gear-data.md §1 (Reszuta & Drewniak 2015: Cai peak = k'_j)";
 
-std::string format(double value, int precision = 6)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
-}
-
 void declare_parameters(dealii::ParameterHandler& prm)
 {
-  declare_stiffness_parameters(prm);
-  prm.enter_subsection("Stiffness");
   // One base pitch from A holds every engagement position once (pairs at p and p + 1).
-  prm.set("mode", "sweep");
-  prm.set("sweep positions", "16");
-  prm.leave_subsection();
+  declare_stiffness_sweep_parameters(prm, 16);
   // μ = 0.01 changes k by 0.01% (tests/stiffness) while the contact module's Coulomb iteration
   // can cycle at some positions (a SolverFailure): the calibration sweep omits friction unless
   // asked (the dynamics model carries the tooth friction itself).
@@ -83,7 +71,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                  " single-pair FE samples k_j = share_j·k from " +
                                  std::to_string(sweep.positions.size()) +
                                  " positions over one base pitch (engagement 0 ≤ p < ε_α = " +
-                                 format(contact_ratio, 5) + ")");
+                                 format_number(contact_ratio, 5) + ")");
   report.add_text("fit", fit_shape ? "scale and shape (least squares, shape peak 1)"
                                    : "scale only (published Cai shape 0.55, 1.8, -1.8)");
   if (p.published_reference)
@@ -136,14 +124,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     std::ofstream out(context.output_file(
         "cai_calibrated.prm", "calibrated Cai parameters for `gearstiff dynamics` (both meshes)"));
     out << "# Cai curve calibrated to FE single-pair stiffness (gearstiff cai, " << samples.size()
-        << " samples, rms residual " << format(fit.rms_residual / 1e3)
-        << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n";
-    for (const std::string mesh : {"Mesh 1", "Mesh 2"})
-      out << "subsection " << mesh << "\n  set stiffness source = cai\n"
-          << "  set stiffness = " << format(fit.parameters.scale / 1e3, 10) << "\n"
-          << "  set cai shape = " << format(fit.parameters.shape[0], 10) << ", "
-          << format(fit.parameters.shape[1], 10) << ", " << format(fit.parameters.shape[2], 10)
-          << "\nend\n";
+        << " samples, rms residual " << format_number(fit.rms_residual / 1e3, 6)
+        << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n"
+        << dynamics_cai_input(fit.parameters);
     out.close();
     const std::string sample_csv = temporary_csv(report, "cai_samples");
     const std::string curve_csv = temporary_csv(report, "cai_curves");

@@ -6,6 +6,7 @@
 //   gearstiff contact                         built-in Hertz case
 //   gearstiff contact case.prm -o out         a user mesh; VTU, CSV, JSON into out/
 #include "app/command.h"
+#include "app/fe_contact_parameters.h"
 #include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
 #include "fem/mesh.h"
@@ -84,14 +85,8 @@ void declare_parameters(ParameterHandler& prm)
                     "mm, cell size at the contact point of the built-in Hertz case");
   prm.leave_subsection();
 
-  prm.enter_subsection("Finite elements");
-  fem::ElasticityParameters::declare_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Linear solver");
-  fem::LinearSolverParameters::declare_parameters(prm);
-  prm.leave_subsection();
+  declare_fe_contact_parameters(prm);
   prm.enter_subsection("Contact");
-  contact::ContactParameters::declare_parameters(prm);
   prm.declare_entry("Slave surfaces", "upper contact", Patterns::Anything(),
                     "physical groups (comma-separated) of the slave surface; mesh it at least as "
                     "finely as the master");
@@ -135,16 +130,10 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
   const double fine_size = prm.get_double("Built-in fine size") * 1e-3;
   prm.leave_subsection();
   fem::ElasticityParameters elasticity;
-  prm.enter_subsection("Finite elements");
-  elasticity.parse_parameters(prm);
-  prm.leave_subsection();
   fem::LinearSolverParameters linear_solver;
-  prm.enter_subsection("Linear solver");
-  linear_solver.parse_parameters(prm);
-  prm.leave_subsection();
   contact::ContactParameters contact_parameters;
+  parse_fe_contact_parameters(prm, elasticity, linear_solver, contact_parameters);
   prm.enter_subsection("Contact");
-  contact_parameters.parse_parameters(prm);
   const auto slave_names = split(prm.get("Slave surfaces"), ',');
   const auto master_names = split(prm.get("Master surfaces"), ',');
   prm.leave_subsection();

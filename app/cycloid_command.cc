@@ -6,6 +6,8 @@
 //   gearstiff cycloid --set "Cycloid correction/contact arc ratios=0.2, 0.27, 0.35"
 //   gearstiff cycloid -o out    also writes the disc outlines (CSV) and the tables
 #include "app/command.h"
+#include "app/geometry_parameters.h"
+#include "app/units.h"
 #include "geometry/cycloid_disc.h"
 #include "kinematics/errors.h"
 
@@ -25,9 +27,6 @@ using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::List;
 
-constexpr double mm = 1e-3;
-constexpr double degree = M_PI / 180.;
-
 // gear-data.md §4: the one published correction column (ε = 0.27, Δr = 0.01 mm).
 struct PublishedColumn
 {
@@ -39,14 +38,7 @@ struct PublishedColumn
 
 void declare_parameters(ParameterHandler& prm)
 {
-  prm.enter_subsection("Cycloid disc");
-  prm.declare_entry("rollers", "20", Integer(3, 1000),
-                    "z_k, rollers in the ring (-); the disc has z_k - 1 lobes");
-  prm.declare_entry("roller circle radius", "96", Double(0.),
-                    "r, radius of the circle through the roller centres (mm)");
-  prm.declare_entry("eccentricity", "3", Double(0.), "e, eccentricity of the disc (mm)");
-  prm.declare_entry("roller radius", "8.5", Double(0.), "q, roller radius (mm)");
-  prm.leave_subsection();
+  declare_cycloid_disc_parameters(prm);
   prm.enter_subsection("Cycloid correction");
   prm.declare_entry(
       "contact arc ratios", "0.27", List(Double(0., 0.5), 1),
@@ -59,18 +51,6 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("outline points per lobe", "121", Integer(5, 100000),
                     "points per lobe of the disc outline written with -o (-)");
   prm.leave_subsection();
-}
-
-geometry::CycloidDiscSpec parse_disc(ParameterHandler& prm)
-{
-  geometry::CycloidDiscSpec spec;
-  prm.enter_subsection("Cycloid disc");
-  spec.rollers = prm.get_integer("rollers");
-  spec.roller_circle_radius = prm.get_double("roller circle radius") * mm;
-  spec.eccentricity = prm.get_double("eccentricity") * mm;
-  spec.roller_radius = prm.get_double("roller radius") * mm;
-  prm.leave_subsection();
-  return spec;
 }
 
 std::vector<double> parse_ratios(const std::string& text)
@@ -94,7 +74,7 @@ void write_outline(const std::string& path, const geometry::ToothProfile& lobe)
 
 void run(ParameterHandler& prm, CommandContext& context)
 {
-  const geometry::CycloidDiscSpec nominal = parse_disc(prm);
+  const geometry::CycloidDiscSpec nominal = parse_cycloid_disc_parameters(prm);
   prm.enter_subsection("Cycloid correction");
   const std::vector<double> ratios = parse_ratios(prm.get("contact arc ratios"));
   const double clearance_limit = prm.get_double("clearance limit") * mm;

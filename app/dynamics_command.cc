@@ -12,6 +12,7 @@
 // in dynamics/torsional_model.h; every K_v is reported with the window, phase and start used.
 #include "app/command.h"
 #include "app/dynamics_parameters.h"
+#include "app/units.h"
 #include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/simulation.h"
 #include "kinematics/errors.h"
@@ -21,8 +22,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <sstream>
-#include <unistd.h>
 
 namespace
 {
@@ -30,19 +29,9 @@ using namespace gearstiff;
 using namespace gearstiff::app;
 using namespace gearstiff::dynamics;
 
-constexpr double rpm = M_PI / 30.;
-
 // gear-data.md §1: nominal force per mesh F_cn = 0.5·T1/(r1·cos α_t) = 1001.27 N.
 constexpr double published_nominal_force = 1001.27; // [N]
 const std::string published_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
-
-std::string format(double value, int precision = 4)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
-}
 
 // ISO 6336-1 method B for mesh m at the driver speed `pinion_speed` [rad/s]. The driver's
 // inertia is shared equally among the meshes it drives (see iso6336_dynamic_factor.h).
@@ -148,9 +137,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     const Mesh& mesh = p.train.meshes[m];
     report.add_text(mesh.name + " stiffness", p.stiffness_description[m]);
     report.add_text(mesh.name + " phase", "initial mesh position " +
-                                              format(mesh.initial_position, 6) +
+                                              format_number(mesh.initial_position, 6) +
                                               " base pitches (placement angle " +
-                                              format(p.placement_angle[m] * 180. / M_PI) +
+                                              format_number(p.placement_angle[m] * 180. / M_PI, 4) +
                                               "°, z = " + std::to_string(mesh.driver_teeth) + ")");
   }
   report.add_text("friction", "per pair in contact, sign reverses at the pitch point "
@@ -164,8 +153,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const Trajectory& trajectory = result.trajectory;
 
   report.add_text("steady-state window",
-                  "[" + format(result.window_start, 6) + ", " + format(result.window_end, 6) +
-                      "] s, " +
+                  "[" + format_number(result.window_start, 6) + ", " +
+                      format_number(result.window_end, 6) + "] s, " +
                       (result.window_automatic
                            ? (std::isfinite(result.decay_time)
                                   ? "automatic: starts when the slowest mode has decayed to 1/1000"
@@ -222,10 +211,11 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                      mesh.name + " ISO resonance speed n_E1");
     report.add_value(key + "iso_resonance_ratio", iso.resonance_ratio, "-",
                      mesh.name + " ISO resonance ratio N");
-    report.add_text(mesh.name + " ISO range",
-                    iso_speed_range_name(iso.range) + " (N_S = " + format(iso.subcritical_limit) +
-                        ", B_p = " + format(iso.b_p) + ", B_f = " + format(iso.b_f) +
-                        ", B_k = " + format(iso.b_k) + ")");
+    report.add_text(
+        mesh.name + " ISO range",
+        iso_speed_range_name(iso.range) + " (N_S = " + format_number(iso.subcritical_limit, 4) +
+            ", B_p = " + format_number(iso.b_p, 4) + ", B_f = " + format_number(iso.b_f, 4) +
+            ", B_k = " + format_number(iso.b_k, 4) + ")");
     meshes.add_row({double(m + 1), mesh.nominal_force, mesh.mean_force, mesh.kv_max,
                     mesh.kv_max_time, mesh.kv_min, iso.kv, iso.resonance_ratio});
     if (mesh.kv_min < 0.)
@@ -244,9 +234,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_text("ISO assumptions",
                   "c_gamma_alpha = mean model stiffness / b unless given, c' = c_gamma_alpha/"
                   "(0.75 eps + 0.25) unless given; f_pb,eff = " +
-                      format(p.iso.pitch_deviation * 1e6) +
-                      " µm, f_f,eff = " + format(p.iso.profile_deviation * 1e6) +
-                      " µm, C_a = " + format(p.iso.tip_relief * 1e6) +
+                      format_number(p.iso.pitch_deviation * 1e6, 4) +
+                      " µm, f_f,eff = " + format_number(p.iso.profile_deviation * 1e6, 4) +
+                      " µm, C_a = " + format_number(p.iso.tip_relief * 1e6, 4) +
                       " µm; m_red with the driver inertia shared among its meshes");
 
   auto& harmonics = report.add_table(
@@ -317,7 +307,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                                    "phi_i(t), mesh forces, K_v(t), mesh stiffness");
     write_time_series(series, model, result, p.output_interval);
     write_spectrum(context.output_file("dynamics_spectrum.csv", "mesh-force spectrum"), result);
-    const std::string window = format(result.window_start, 8) + "," + format(result.window_end, 8);
+    const std::string window =
+        format_number(result.window_start, 8) + "," + format_number(result.window_end, 8);
     context.plot("plot_dynamics.py", {"vibration", series, window}, "dynamics_vibration.png",
                  "torsional vibration phi_i(t)");
     context.plot("plot_dynamics.py", {"kv", series, window}, "dynamics_kv.png", "K_v(t)");
@@ -325,17 +316,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                  "mesh stiffness k(t)");
     if (!sweep.points.empty())
     {
-      // The report's tables become CSV files only after the command returns; the chart needs
-      // the sweep now, so it reads a temporary copy.
-      const auto temporary = std::filesystem::temp_directory_path() /
-                             ("gearstiff-sweep-" + std::to_string(getpid()) + ".csv");
-      {
-        std::ofstream out(temporary);
-        report.write_table_csv(report.tables().back(), out);
-      }
-      context.plot("plot_dynamics.py", {"resonance", temporary.string()}, "dynamics_resonance.png",
+      const std::string csv = temporary_csv(report, "dynamics_speed_sweep");
+      context.plot("plot_dynamics.py", {"resonance", csv}, "dynamics_resonance.png",
                    "K_v against input speed (resonance chart)");
-      std::filesystem::remove(temporary);
+      std::filesystem::remove(csv);
     }
   }
 }

@@ -1,5 +1,6 @@
 #include "app/dynamics_parameters.h"
 
+#include "app/units.h"
 #include "dynamics/split_path_case.h"
 #include "kinematics/errors.h"
 
@@ -17,20 +18,9 @@ using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
 
-constexpr double mm = 1e-3;
 constexpr double micrometre = 1e-6;
-constexpr double rpm = M_PI / 30.;
-constexpr double degree = M_PI / 180.;
 constexpr double newton_per_mm = 1e3;            // N/mm → N/m
 constexpr double newton_per_mm_micrometre = 1e9; // N/(mm·µm) → N/m²
-
-std::string number(double value)
-{
-  std::ostringstream s;
-  s.precision(10);
-  s << value;
-  return s.str();
-}
 
 std::string gear_section(unsigned int i)
 {
@@ -81,7 +71,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("number of gears", "3", Integer(2, max_dynamics_gears),
                     "gears (rotational degrees of freedom) of the train; a tree of n gears has "
                     "n - 1 meshes, read from 'Mesh 1' ... (-)");
-  prm.declare_entry("input speed", number(data.input_speed_rpm), Double(0.),
+  prm.declare_entry("input speed", format_number(data.input_speed_rpm, 10), Double(0.),
                     "n1, nominal speed of gear 1 (rpm); the others follow from the base radii");
   prm.declare_entry("published reference", "true", Bool(),
                     "print the published split-path values (gear-data.md §1, Reszuta & "
@@ -92,9 +82,11 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   {
     prm.enter_subsection(gear_section(i));
     const bool pinion = i == 0;
-    prm.declare_entry("inertia", number(pinion ? data.pinion_inertia : data.wheel_inertia),
+    prm.declare_entry("inertia",
+                      format_number(pinion ? data.pinion_inertia : data.wheel_inertia, 10),
                       Double(0.), "J, mass moment of inertia about the gear axis (kg·m²)");
-    prm.declare_entry("torque", pinion ? number(data.input_torque) : std::string("balance"),
+    prm.declare_entry("torque",
+                      pinion ? format_number(data.input_torque, 10) : std::string("balance"),
                       Anything(),
                       "external torque (N·m), positive in the running direction (input), "
                       "negative for a load; 'balance': the load that takes an equal share of "
@@ -111,14 +103,14 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                       "number of the driven gear (-)");
     prm.declare_entry("driver teeth", std::to_string(data.pinion_teeth), Integer(1, 10000),
                       "z of the driver: the mesh frequency is z·n_driver/60 (-)");
-    prm.declare_entry("driver base radius", number(data.pinion_base_radius / mm), Double(0.),
-                      "r_b of the driver (mm)");
-    prm.declare_entry("driven base radius", number(data.wheel_base_radius / mm), Double(0.),
-                      "r_b of the driven gear (mm)");
-    prm.declare_entry("contact ratio", number(data.contact_ratio), Double(1., 4.),
+    prm.declare_entry("driver base radius", format_number(data.pinion_base_radius / mm, 10),
+                      Double(0.), "r_b of the driver (mm)");
+    prm.declare_entry("driven base radius", format_number(data.wheel_base_radius / mm, 10),
+                      Double(0.), "r_b of the driven gear (mm)");
+    prm.declare_entry("contact ratio", format_number(data.contact_ratio, 10), Double(1., 4.),
                       "epsilon_alpha, transverse contact ratio (-); default from the "
                       "kinematics module's split-path pair");
-    prm.declare_entry("approach ratio", number(data.approach_ratio), Double(0., 4.),
+    prm.declare_entry("approach ratio", format_number(data.approach_ratio, 10), Double(0., 4.),
                       "epsilon_f, start of active contact to the pitch point in base pitches "
                       "(-): where the friction force reverses; default from kinematics");
     prm.declare_entry("placement angle", m == 1 ? "180" : "0", Double(-360., 360.),
@@ -129,8 +121,8 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                       "mesh stiffness: 'cai' (Cai curve, peak = stiffness), 'constant', "
                       "'table' (k(x) table), 'cai fit' (Cai curve least-squares fitted to the "
                       "table)");
-    prm.declare_entry("stiffness", number(data.single_pair_stiffness / newton_per_mm), Double(),
-                      "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
+    prm.declare_entry("stiffness", format_number(data.single_pair_stiffness / newton_per_mm, 10),
+                      Double(), "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
     prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
                       "c0, c1, c2 of the Cai bracket c2·s² + c1·s + c0, s = engagement "
                       "fraction (-); the published shape peaks at 1");
@@ -139,14 +131,14 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                       "pitches in [0, 1) (increasing) and k in N/mm");
     prm.declare_entry("fit cai shape", "false", Bool(),
                       "cai fit: fit the three shape coefficients too, not only the scale");
-    prm.declare_entry("damping", number(data.mesh_damping), Double(),
+    prm.declare_entry("damping", format_number(data.mesh_damping, 10), Double(),
                       "c_g, mesh damping along the line of action (N·s/m)");
-    prm.declare_entry("friction coefficient", number(data.friction_coefficient), Double(0., 0.99),
-                      "mu, tooth friction (-)");
-    prm.declare_entry("driver friction arm", number(data.pinion_friction_arm / mm), Double(0.),
-                      "r_f of the driver (mm)");
-    prm.declare_entry("driven friction arm", number(data.wheel_friction_arm / mm), Double(0.),
-                      "r_f of the driven gear (mm)");
+    prm.declare_entry("friction coefficient", format_number(data.friction_coefficient, 10),
+                      Double(0., 0.99), "mu, tooth friction (-)");
+    prm.declare_entry("driver friction arm", format_number(data.pinion_friction_arm / mm, 10),
+                      Double(0.), "r_f of the driver (mm)");
+    prm.declare_entry("driven friction arm", format_number(data.wheel_friction_arm / mm, 10),
+                      Double(0.), "r_f of the driven gear (mm)");
     prm.leave_subsection();
   }
 
@@ -189,7 +181,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 
   prm.enter_subsection("ISO 6336");
-  prm.declare_entry("face width", number(data.face_width / mm), Double(0.),
+  prm.declare_entry("face width", format_number(data.face_width / mm, 10), Double(0.),
                     "b, common face width (mm)");
   prm.declare_entry("transverse pressure angle", "20", Double(0., 45.),
                     "alpha_t: F_t = F_bt·cos alpha_t (degrees)");

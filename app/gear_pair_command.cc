@@ -7,6 +7,7 @@
 //   shift=-0.4" gearstiff gear-pair pair.prm --json -o results/
 #include "app/command.h"
 #include "app/kinematics_parameters.h"
+#include "app/units.h"
 #include "kinematics/gear_pair.h"
 #include "kinematics/iso_stiffness.h"
 
@@ -17,8 +18,6 @@ namespace gearstiff::app
 {
 namespace
 {
-constexpr double degree = 3.14159265358979323846 / 180.;
-constexpr double mm = 1e-3;
 const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
 
 bool same_gear(const kinematics::GearSpec& a, const kinematics::GearSpec& b)

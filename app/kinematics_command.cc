@@ -9,6 +9,7 @@
 //   gearstiff kinematics train.prm --json -o results/
 #include "app/command.h"
 #include "app/kinematics_parameters.h"
+#include "app/units.h"
 #include "kinematics/gear_train.h"
 
 #include <algorithm>
@@ -19,7 +20,6 @@ namespace gearstiff::app
 {
 namespace
 {
-constexpr double rpm = 3.14159265358979323846 / 30.;
 const std::string source = "gear-data.md §2 (Drewniak, Garlicka, Kolber 2016)";
 
 bool same_text(const kinematics::GearTrainText& a, const kinematics::GearTrainText& b)

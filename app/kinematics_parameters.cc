@@ -1,22 +1,11 @@
 #include "app/kinematics_parameters.h"
 
-#include <sstream>
+#include "app/units.h"
 
 namespace gearstiff::app
 {
 namespace
 {
-constexpr double degree = 3.14159265358979323846 / 180.;
-constexpr double mm = 1e-3;
-
-std::string text(double value)
-{
-  std::ostringstream s;
-  s.precision(12);
-  s << value;
-  return s.str();
-}
-
 void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gear)
 {
   using dealii::Patterns::Bool;
@@ -24,29 +13,31 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
   using dealii::Patterns::Integer;
   prm.declare_entry("teeth", std::to_string(gear.teeth), Integer(1),
                     "number of teeth [-], positive also for an internal gear");
-  prm.declare_entry("module", text(gear.normal_module / mm), Double(0.), "normal module m_n [mm]");
-  prm.declare_entry("pressure angle", text(gear.pressure_angle / degree), Double(0., 45.),
-                    "normal pressure angle of the basic rack α_n [deg]");
-  prm.declare_entry("helix angle", text(gear.helix_angle / degree), Double(-60., 60.),
+  prm.declare_entry("module", format_number(gear.normal_module / mm, 12), Double(0.),
+                    "normal module m_n [mm]");
+  prm.declare_entry("pressure angle", format_number(gear.pressure_angle / degree, 12),
+                    Double(0., 45.), "normal pressure angle of the basic rack α_n [deg]");
+  prm.declare_entry("helix angle", format_number(gear.helix_angle / degree, 12), Double(-60., 60.),
                     "helix angle β at the reference circle [deg], 0 for spur gears");
-  prm.declare_entry("profile shift", text(gear.profile_shift), Double(-5., 5.),
+  prm.declare_entry("profile shift", format_number(gear.profile_shift, 12), Double(-5., 5.),
                     "profile shift coefficient x [-] (DIN 3960: > 0 thickens the tooth)");
-  prm.declare_entry("face width", text(gear.face_width / mm), Double(0.), "face width b [mm]");
-  prm.declare_entry("tip diameter", text(gear.tip_diameter / mm), Double(0.),
+  prm.declare_entry("face width", format_number(gear.face_width / mm, 12), Double(0.),
+                    "face width b [mm]");
+  prm.declare_entry("tip diameter", format_number(gear.tip_diameter / mm, 12), Double(0.),
                     "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x)");
   prm.declare_entry("internal", gear.internal ? "true" : "false", Bool(),
                     "ring gear (teeth inside); only the wheel may be internal");
-  prm.declare_entry("addendum coefficient", text(gear.addendum_coefficient), Double(0.),
-                    "basic rack addendum h_aP/m_n [-] (standard tip diameter only)");
-  prm.declare_entry("dedendum coefficient", text(gear.dedendum_coefficient), Double(0.),
-                    "basic rack dedendum h_fP/m_n [-] (ISO 53 A: 1.25)");
-  prm.declare_entry("root radius coefficient", text(gear.root_radius_coefficient), Double(0.),
-                    "basic rack root radius ρ_fP/m_n [-] (ISO 53 A: 0.38)");
-  prm.declare_entry("bore diameter", text(gear.bore_diameter / mm), Double(0.),
+  prm.declare_entry("addendum coefficient", format_number(gear.addendum_coefficient, 12),
+                    Double(0.), "basic rack addendum h_aP/m_n [-] (standard tip diameter only)");
+  prm.declare_entry("dedendum coefficient", format_number(gear.dedendum_coefficient, 12),
+                    Double(0.), "basic rack dedendum h_fP/m_n [-] (ISO 53 A: 1.25)");
+  prm.declare_entry("root radius coefficient", format_number(gear.root_radius_coefficient, 12),
+                    Double(0.), "basic rack root radius ρ_fP/m_n [-] (ISO 53 A: 0.38)");
+  prm.declare_entry("bore diameter", format_number(gear.bore_diameter / mm, 12), Double(0.),
                     "bore diameter of the gear body [mm] (FE models; 0 = not given)");
-  prm.declare_entry("web thickness", text(gear.web_thickness / mm), Double(0.),
+  prm.declare_entry("web thickness", format_number(gear.web_thickness / mm, 12), Double(0.),
                     "web thickness b_s [mm] for ISO C_R; 0 = solid blank");
-  prm.declare_entry("rim thickness", text(gear.rim_thickness / mm), Double(0.),
+  prm.declare_entry("rim thickness", format_number(gear.rim_thickness / mm, 12), Double(0.),
                     "rim thickness s_R under the root [mm] for ISO C_R (webbed blanks)");
 }
 
@@ -75,7 +66,7 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
 {
   const kinematics::GearPairSpec pair = kinematics::split_path_pair();
   prm.enter_subsection("Gear pair");
-  prm.declare_entry("centre distance", text(pair.centre_distance / mm),
+  prm.declare_entry("centre distance", format_number(pair.centre_distance / mm, 12),
                     dealii::Patterns::Double(0.),
                     "working centre distance a_w [mm]; 0 = zero backlash from the profile shifts");
   prm.enter_subsection("Pinion");

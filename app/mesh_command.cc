@@ -11,7 +11,9 @@
 //
 // Without -o the mesh is generated (all checks run, the report is complete) but not kept.
 #include "app/command.h"
+#include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
+#include "app/units.h"
 #include "geometry/scene_cycloid.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
@@ -32,8 +34,6 @@ using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
 
-constexpr double mm = 1e-3;
-constexpr double degree = M_PI / 180.;
 const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
 
 void declare_parameters(ParameterHandler& prm)
@@ -57,17 +57,10 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("pinion roll angle", "20", Double(),
                     "pinion roll angle ℓ/r_b1 of the reference pair, ℓ from T1 along the line of "
                     "action [deg]; must lie on the path of contact (position = roll angle)");
-  prm.declare_entry("pinion teeth modelled", std::to_string(gear.pinion_teeth_modelled), Integer(1),
-                    "pinion teeth in the scene, centred on the contacts [-]");
-  prm.declare_entry("wheel teeth modelled", std::to_string(gear.wheel_teeth_modelled), Integer(1),
-                    "wheel teeth in the scene, centred on the contacts [-]");
-  prm.declare_entry("pinion bore radius", "0", Double(0.),
-                    "pinion bore radius [mm]; 0 = half of Gear pair/Pinion/bore diameter");
-  prm.declare_entry("wheel bore radius", "0", Double(0.),
-                    "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
-  prm.declare_entry("rim", "sector", Selection("sector|full"),
-                    "sector: rim of the modelled teeth only, cut radially (cut faces get ids 5/6); "
-                    "full: whole rim and bore, the other teeth removed");
+  prm.leave_subsection();
+  // The mesh only names the sector cut faces; the analysis that uses it chooses their support.
+  declare_gear_scene_parameters(prm, gear, false);
+  prm.enter_subsection("Gear pair scene");
   prm.declare_entry("both flanks", "false", Bool(),
                     "also mark the unloaded flanks as candidate contact surfaces");
   prm.declare_entry("pinion torque", "49.4", Double(0.),
@@ -94,15 +87,7 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
   prm.leave_subsection();
 
-  const geometry::CycloidSceneSpec cycloid;
-  prm.enter_subsection("Cycloid disc");
-  prm.declare_entry("rollers", "20", Integer(3, 1000),
-                    "z_k, rollers in the ring (-); the disc has z_k - 1 lobes");
-  prm.declare_entry("roller circle radius", "96", Double(0.),
-                    "r, radius of the circle through the roller centres (mm)");
-  prm.declare_entry("eccentricity", "3", Double(0.), "e, eccentricity of the disc (mm)");
-  prm.declare_entry("roller radius", "8.5", Double(0.), "q, roller radius (mm)");
-  prm.leave_subsection();
+  declare_cycloid_disc_parameters(prm);
   prm.enter_subsection("Cycloid scene");
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
                     "disc rotation ψ about its own centre (degrees); the disc centre follows "
@@ -125,60 +110,24 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio (-)");
   prm.leave_subsection();
 
-  const geometry::SceneMeshSettings mesh;
-  prm.enter_subsection("Mesh");
-  prm.declare_entry("dimension", "2", Integer(2, 3),
-                    "2: quadrilaterals in the transverse plane; 3: hexahedra over the face width");
-  prm.declare_entry("layers", std::to_string(mesh.layers), Integer(1, 1000),
-                    "hexahedron layers across the face width [-] (3D)");
-  prm.declare_entry("contact size", "0", Double(0.),
-                    "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest Hertz "
-                    "half-width");
-  prm.declare_entry("fine radius", "0", Double(0.),
-                    "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the largest "
-                    "Hertz half-width");
-  prm.declare_entry("growth rate", "0.25", Double(0.01, 1.),
-                    "cell size increase per unit distance beyond the fine radius [-]");
-  prm.declare_entry("body size", "0.5", Double(0.),
-                    "cell size in the teeth away from contact [mm]");
-  prm.declare_entry("rim size", "0", Double(0.),
-                    "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size");
-  prm.leave_subsection();
-}
-
-geometry::SceneMeshSettings parse_mesh(ParameterHandler& prm)
-{
-  geometry::SceneMeshSettings mesh;
-  prm.enter_subsection("Mesh");
-  mesh.dimension = prm.get_integer("dimension");
-  mesh.layers = prm.get_integer("layers");
-  mesh.contact_size = prm.get_double("contact size") * mm;
-  mesh.fine_radius = prm.get_double("fine radius") * mm;
-  mesh.growth_rate = prm.get_double("growth rate");
-  mesh.body_size = prm.get_double("body size") * mm;
-  mesh.rim_size = prm.get_double("rim size") * mm;
-  prm.leave_subsection();
-  return mesh;
+  // The mesh sizes of all three scene types.
+  declare_scene_mesh_parameters(prm, gear.mesh);
 }
 
 geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
 {
   geometry::GearPairSceneSpec spec;
   spec.pair = parse_gear_pair_parameters(prm);
+  parse_gear_scene_parameters(prm, spec);
+  spec.mesh = parse_scene_mesh_parameters(prm);
   prm.enter_subsection("Gear pair scene");
   spec.position = prm.get("position");
   spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
-  spec.pinion_teeth_modelled = prm.get_integer("pinion teeth modelled");
-  spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
-  spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
-  spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
-  spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
   spec.both_flanks = prm.get_bool("both flanks");
   spec.pinion_torque = prm.get_double("pinion torque");
   spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
   spec.poisson_ratio = prm.get_double("Poisson's ratio");
   prm.leave_subsection();
-  spec.mesh = parse_mesh(prm);
   return spec;
 }
 
@@ -195,19 +144,14 @@ geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
   spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
   spec.poisson_ratio = prm.get_double("Poisson's ratio");
   prm.leave_subsection();
-  spec.mesh = parse_mesh(prm);
+  spec.mesh = parse_scene_mesh_parameters(prm);
   return spec;
 }
 
 geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm)
 {
   geometry::CycloidSceneSpec spec;
-  prm.enter_subsection("Cycloid disc");
-  spec.ring.rollers = prm.get_integer("rollers");
-  spec.ring.roller_circle_radius = prm.get_double("roller circle radius") * mm;
-  spec.ring.eccentricity = prm.get_double("eccentricity") * mm;
-  spec.ring.roller_radius = prm.get_double("roller radius") * mm;
-  prm.leave_subsection();
+  spec.ring = parse_cycloid_disc_parameters(prm);
   prm.enter_subsection("Cycloid scene");
   spec.disc_rotation = prm.get_double("disc rotation") * degree;
   spec.bore_radius = prm.get_double("bore radius") * mm;
@@ -221,7 +165,7 @@ geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm)
   spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
   spec.poisson_ratio = prm.get_double("Poisson's ratio");
   prm.leave_subsection();
-  spec.mesh = parse_mesh(prm);
+  spec.mesh = parse_scene_mesh_parameters(prm);
   return spec;
 }
 

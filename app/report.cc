@@ -1,9 +1,12 @@
 #include "app/report.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace gearstiff::app
 {
@@ -263,5 +266,17 @@ namespace gearstiff::app
         out << (c ? "," : "") << row[c];
       out << '\n';
     }
+  }
+
+  std::string temporary_csv(const Report& report, const std::string& table_name)
+  {
+    const std::string path = (std::filesystem::temp_directory_path() /
+                              ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
+                               .string();
+    std::ofstream out(path);
+    for (const auto& table : report.tables())
+      if (table.name == table_name)
+        report.write_table_csv(table, out);
+    return path;
   }
 } // namespace gearstiff::app

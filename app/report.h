@@ -64,6 +64,11 @@ namespace gearstiff::app
     std::vector<std::pair<std::string, std::string>> output_file_list;
   };
 
+  // Writes the report's table `table_name` to a temporary CSV for a plot script (the report's CSV
+  // files appear only after the command returns) and returns its path; remove it after plotting.
+  // By name: references into the report's tables do not survive a later add_table.
+  std::string temporary_csv(const Report& report, const std::string& table_name);
+
   // JSON string escaping and number formatting shared by every writer in app/.
   std::string json_escape(const std::string& text);
   std::string json_number(double value);

@@ -13,6 +13,7 @@
 //   gearstiff run --set "Stiffness/sweep positions=32"
 #include "app/command.h"
 #include "app/stiffness_parameters.h"
+#include "app/units.h"
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/simulation.h"
 #include "dynamics/split_path_case.h"
@@ -37,22 +38,10 @@ constexpr double ansys_single = 327.222e6; // N/m, k'_j
 constexpr double ansys_double = 497.521e6; // N/m, k'_d
 constexpr double published_mean = 449.9e6; // N/m, k_γ = k'_j·(0.75·ε_α + 0.25)
 
-std::string format(double value, int precision = 5)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
-}
-
 void declare_parameters(dealii::ParameterHandler& prm)
 {
-  declare_stiffness_parameters(prm);
-  prm.enter_subsection("Stiffness");
   // A coarse sweep keeps the chain near a minute; its position error is reported.
-  prm.set("mode", "sweep");
-  prm.set("sweep positions", "12");
-  prm.leave_subsection();
+  declare_stiffness_sweep_parameters(prm, 12);
   prm.enter_subsection("Run");
   prm.declare_entry("sweep friction coefficient", "0", dealii::Patterns::Double(0., 2.),
                     "μ of the k(θ) sweep (-): the single/double solves use Contact/Friction "
@@ -125,11 +114,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   sweep_parameters.settings.contact.friction_coefficient =
       prm.get_double("sweep friction coefficient");
   prm.leave_subsection();
-  report.add_text("sweep friction",
-                  "μ = " + format(sweep_parameters.settings.contact.friction_coefficient) +
-                      " in the k(θ) sweep (single/double: μ = " +
-                      format(p.settings.contact.friction_coefficient) +
-                      "; μ = 0.01 changes k by 0.01%)");
+  report.add_text(
+      "sweep friction",
+      "μ = " + format_number(sweep_parameters.settings.contact.friction_coefficient, 5) +
+          " in the k(θ) sweep (single/double: μ = " +
+          format_number(p.settings.contact.friction_coefficient, 5) +
+          "; μ = 0.01 changes k by 0.01%)");
   const contact::StiffnessSweepResult sweep =
       solve_stiffness_sweep(sweep_parameters, context, "sweep");
   add_stiffness_sweep_table(report, sweep, "run_sweep");
@@ -200,7 +190,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     if (s == 0)
       report.add_text("K_v conditions",
                       "RK4 5 µs, 1450 rpm, T1 49.4 N·m, start from static deflection, window [" +
-                          format(kv.window_start) + ", " + format(kv.window_end) +
+                          format_number(kv.window_start, 5) + ", " +
+                          format_number(kv.window_end, 5) +
                           "] s after the start-up transient, wheels 180° apart (mesh 1-3 half a "
                           "mesh period behind)");
   }
@@ -214,27 +205,16 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 
   if (context.writes_files() && context.is_root())
   {
-    {
-      std::ofstream out(context.output_file("cai_calibrated.prm",
-                                            "calibrated Cai curve for `gearstiff dynamics`"));
-      for (const std::string mesh : {"Mesh 1", "Mesh 2"})
-        out << "subsection " << mesh << "\n  set stiffness source = cai\n"
-            << "  set stiffness = " << format(fit.parameters.scale / 1e3, 10) << "\n"
-            << "  set cai shape = " << format(fit.parameters.shape[0], 10) << ", "
-            << format(fit.parameters.shape[1], 10) << ", " << format(fit.parameters.shape[2], 10)
-            << "\nend\n";
-    }
-    {
-      std::ofstream out(
-          context.output_file("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`"));
-      for (const std::string mesh : {"Mesh 1", "Mesh 2"})
-        out << "subsection " << mesh << "\n  set stiffness source = table\n"
-            << "  set stiffness table = " << dynamics_stiffness_table(sweep) << "\nend\n";
-    }
+    std::ofstream(
+        context.output_file("cai_calibrated.prm", "calibrated Cai curve for `gearstiff dynamics`"))
+        << dynamics_cai_input(fit.parameters);
+    std::ofstream(
+        context.output_file("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`"))
+        << dynamics_table_input(sweep);
     const std::string csv = temporary_csv(report, "run_sweep");
     context.plot("plot_stiffness.py",
-                 {csv, format(ansys_single / 1e6, 8), format(ansys_double / 1e6, 8),
-                  format(iso.mesh_alpha_per_width / 1e6, 8), format(mean / 1e6, 8)},
+                 {csv, format_number(ansys_single / 1e6, 8), format_number(ansys_double / 1e6, 8),
+                  format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
                  "run_stiffness.png", "k(θ) with ANSYS and ISO 6336 values");
     std::filesystem::remove(csv);
   }

@@ -12,6 +12,7 @@
 // the k(θ) chart (PNG), VTU of every position with "Stiffness/write vtu=true".
 #include "app/command.h"
 #include "app/stiffness_parameters.h"
+#include "app/units.h"
 #include "kinematics/errors.h"
 #include "kinematics/iso_stiffness.h"
 
@@ -19,48 +20,39 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace
 {
 using namespace gearstiff;
 using namespace gearstiff::app;
 
-constexpr double degree = M_PI / 180.;
 const std::string ansys_source = "gear-data.md §1 (Reszuta & Drewniak 2015, ANSYS)";
 // gear-data.md §1: k'_j = 327 222 N/mm, k'_d = 497 521 N/mm.
 constexpr double ansys_single = 327.222e6; // N/m
 constexpr double ansys_double = 497.521e6; // N/m
-
-std::string format(double value, int precision = 4)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
-}
 
 // Which position a mode solves, and why it stands for that mode.
 std::string position_reason(const std::string& mode, const kinematics::GearPairGeometry& pair,
                             const contact::GearMeshStiffnessResult& r)
 {
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
-  const auto mm = [](double v) { return format(v * 1e3, 5) + " mm"; };
+  const auto mm = [](double v) { return format_number(v * 1e3, 5) + " mm"; };
   const std::string zone = "single-contact zone [B, D] = [" + mm(pair.single_contact_start()) +
                            ", " + mm(pair.single_contact_end()) + "] from T1";
   if (mode == "single")
   {
     const bool at_pitch = std::abs(r.reference_position - pair.pitch_point) < 1e-12;
-    return (at_pitch ? "the pitch point C (" + mm(pair.pitch_point) + " from T1, roll angle " +
-                           format(r.pinion_roll_angle / degree, 5) + "°) lies in the " + zone +
-                           ": one pair carries the whole load, and the friction force (which "
-                           "reverses at C) has no moment there"
-                     : "the middle of the " + zone + " (the pitch point lies outside it)");
+    return (at_pitch
+                ? "the pitch point C (" + mm(pair.pitch_point) + " from T1, roll angle " +
+                      format_number(r.pinion_roll_angle / degree, 5) + "°) lies in the " + zone +
+                      ": one pair carries the whole load, and the friction force (which "
+                      "reverses at C) has no moment there"
+                : "the middle of the " + zone + " (the pitch point lies outside it)");
   }
   if (mode == "double")
     return "the middle of the first double-contact zone [A, B] (" + mm(r.reference_position) +
            " from T1); the second pair sits one base pitch further, in the middle of [D, E]";
-  return "roll angle " + format(r.pinion_roll_angle / degree, 6) + "° (" +
+  return "roll angle " + format_number(r.pinion_roll_angle / degree, 6) + "° (" +
          mm(r.pinion_roll_angle * r_b1) + " from T1)";
 }
 
@@ -72,25 +64,26 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   Report& report = context.report;
 
   report.add_text("load case",
-                  "T1 = " + format(p.settings.pinion_torque) +
+                  "T1 = " + format_number(p.settings.pinion_torque, 4) +
                       " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
                       "wheel bore fixed, friction μ = " +
-                      format(p.settings.contact.friction_coefficient) +
+                      format_number(p.settings.contact.friction_coefficient, 4) +
                       "; k = T1/(r_b1²·Δφ) (gear-data.md §1)");
   const bool planar = p.settings.scene.mesh.dimension == 2;
-  report.add_text(
-      "model",
-      std::string(planar ? fem::to_string(p.settings.elasticity.model) + " 2D"
-                         : std::string("3D")) +
-          ", Q" + std::to_string(p.settings.elasticity.degree) +
-          ", E = " + format(p.settings.material.youngs_modulus / 1e9) +
-          " GPa, ν = " + format(p.settings.material.poisson_ratio) + " (assumed: not published)" +
-          (planar
-               ? ", thickness = common face width " + format(pair.common_face_width * 1e3) + " mm"
-               : std::string("")) +
-          ", " + std::to_string(p.settings.scene.pinion_teeth_modelled) + "/" +
-          std::to_string(p.settings.scene.wheel_teeth_modelled) + " teeth modelled, " +
-          (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") + " rims");
+  report.add_text("model",
+                  std::string(planar ? fem::to_string(p.settings.elasticity.model) + " 2D"
+                                     : std::string("3D")) +
+                      ", Q" + std::to_string(p.settings.elasticity.degree) +
+                      ", E = " + format_number(p.settings.material.youngs_modulus / 1e9, 4) +
+                      " GPa, ν = " + format_number(p.settings.material.poisson_ratio, 4) +
+                      " (assumed: not published)" +
+                      (planar ? ", thickness = common face width " +
+                                    format_number(pair.common_face_width * 1e3, 4) + " mm"
+                              : std::string("")) +
+                      ", " + std::to_string(p.settings.scene.pinion_teeth_modelled) + "/" +
+                      std::to_string(p.settings.scene.wheel_teeth_modelled) + " teeth modelled, " +
+                      (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") +
+                      " rims");
   report.add_value("pinion_base_radius", 0.5 * pair.pinion.base_diameter * 1e3, "mm",
                    "r_b1 (gear-data.md §1 states 24.667 mm)");
   report.add_value("iso_single_stiffness", iso.single_per_width / 1e6, "N/µm",
@@ -164,16 +157,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
           << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
           << "# Use: gearstiff dynamics stiffness_table.prm\n";
-      const std::string text = dynamics_stiffness_table(sweep);
-      for (const std::string mesh : {"Mesh 1", "Mesh 2"})
-        out << "subsection " << mesh << "\n  set stiffness source = table\n"
-            << "  set stiffness table = " << text << "\nend\n";
+      out << dynamics_table_input(sweep);
     }
     const std::string csv = temporary_csv(report, "stiffness_sweep");
     context.plot("plot_stiffness.py",
-                 {csv, format(p.published_reference ? ansys_single / 1e6 : 0., 8),
-                  format(p.published_reference ? ansys_double / 1e6 : 0., 8),
-                  format(iso.mesh_alpha_per_width / 1e6, 8), format(mean / 1e6, 8)},
+                 {csv, format_number(p.published_reference ? ansys_single / 1e6 : 0., 8),
+                  format_number(p.published_reference ? ansys_double / 1e6 : 0., 8),
+                  format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
                  "stiffness_sweep.png",
                  "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean");
     std::filesystem::remove(csv);

@@ -1,13 +1,15 @@
 #include "app/stiffness_parameters.h"
 
+#include "app/fe_contact_parameters.h"
+#include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
+#include "app/units.h"
 #include "kinematics/errors.h"
 
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <unistd.h>
 
@@ -20,94 +22,22 @@ using dealii::Patterns::Bool;
 using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
-
-constexpr double mm = 1e-3;
-constexpr double degree = M_PI / 180.;
-
-std::string number(double value)
-{
-  std::ostringstream s;
-  s.precision(10);
-  s << value;
-  return s.str();
-}
 } // namespace
-
-void declare_gear_scene_parameters(ParameterHandler& prm,
-                                   const geometry::GearPairSceneSpec& defaults)
-{
-  prm.enter_subsection("Gear pair scene");
-  prm.declare_entry("pinion teeth modelled", std::to_string(defaults.pinion_teeth_modelled),
-                    Integer(1), "pinion teeth in the scene, centred on the contacts [-]");
-  prm.declare_entry("wheel teeth modelled", std::to_string(defaults.wheel_teeth_modelled),
-                    Integer(1), "wheel teeth in the scene, centred on the contacts [-]");
-  prm.declare_entry("pinion bore radius", number(defaults.pinion_bore_radius / mm), Double(0.),
-                    "pinion bore radius [mm]; 0 = half of Gear pair/Pinion/bore diameter");
-  prm.declare_entry("wheel bore radius", number(defaults.wheel_bore_radius / mm), Double(0.),
-                    "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
-  prm.declare_entry("rim", defaults.rim == geometry::RimModel::full ? "full" : "sector",
-                    Selection("sector|full"),
-                    "sector: rim of the modelled teeth only, cut radially (cut faces get ids "
-                    "5/6, free); full: whole rim and bore, the other teeth removed");
-  prm.leave_subsection();
-
-  prm.enter_subsection("Mesh");
-  prm.declare_entry("dimension", std::to_string(defaults.mesh.dimension), Integer(2, 3),
-                    "2: quadrilaterals in the transverse plane; 3: hexahedra over the face "
-                    "width");
-  prm.declare_entry("layers", std::to_string(defaults.mesh.layers), Integer(1, 1000),
-                    "hexahedron layers across the face width [-] (3D)");
-  prm.declare_entry("contact size", number(defaults.mesh.contact_size / mm), Double(0.),
-                    "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest "
-                    "Hertz half-width");
-  prm.declare_entry("fine radius", number(defaults.mesh.fine_radius / mm), Double(0.),
-                    "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the "
-                    "largest Hertz half-width");
-  prm.declare_entry("growth rate", number(defaults.mesh.growth_rate), Double(0.01, 1.),
-                    "cell size increase per unit distance beyond the fine radius [-]");
-  prm.declare_entry("body size", number(defaults.mesh.body_size / mm), Double(0.),
-                    "cell size in the teeth away from contact [mm]");
-  prm.declare_entry("rim size", number(defaults.mesh.rim_size / mm), Double(0.),
-                    "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size");
-  prm.leave_subsection();
-}
-
-void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneSpec& spec)
-{
-  prm.enter_subsection("Gear pair scene");
-  spec.pinion_teeth_modelled = prm.get_integer("pinion teeth modelled");
-  spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
-  spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
-  spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
-  spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
-  prm.leave_subsection();
-
-  prm.enter_subsection("Mesh");
-  spec.mesh.dimension = prm.get_integer("dimension");
-  spec.mesh.layers = prm.get_integer("layers");
-  spec.mesh.contact_size = prm.get_double("contact size") * mm;
-  spec.mesh.fine_radius = prm.get_double("fine radius") * mm;
-  spec.mesh.growth_rate = prm.get_double("growth rate");
-  spec.mesh.body_size = prm.get_double("body size") * mm;
-  spec.mesh.rim_size = prm.get_double("rim size") * mm;
-  prm.leave_subsection();
-}
 
 void declare_stiffness_parameters(ParameterHandler& prm)
 {
   declare_gear_pair_parameters(prm);
-  declare_gear_scene_parameters(prm, contact::default_stiffness_scene());
+  const geometry::GearPairSceneSpec scene = contact::default_stiffness_scene();
+  // The sector cut faces are left free by the stiffness analysis.
+  declare_gear_scene_parameters(prm, scene, true);
+  declare_scene_mesh_parameters(prm, scene.mesh);
 
+  declare_fe_contact_parameters(prm);
   prm.enter_subsection("Finite elements");
-  fem::ElasticityParameters::declare_parameters(prm);
   // Q2 on the default scene: docs/accuracy.md.
   prm.set("Element degree", std::to_string(contact::default_stiffness_elasticity().degree));
   prm.leave_subsection();
-  prm.enter_subsection("Linear solver");
-  fem::LinearSolverParameters::declare_parameters(prm);
-  prm.leave_subsection();
   prm.enter_subsection("Contact");
-  contact::ContactParameters::declare_parameters(prm);
   // gear-data.md §1: the ANSYS model used μ = 0.01 between the teeth.
   prm.set("Friction coefficient", "0.01");
   prm.leave_subsection();
@@ -142,6 +72,15 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
+void declare_stiffness_sweep_parameters(ParameterHandler& prm, unsigned int positions)
+{
+  declare_stiffness_parameters(prm);
+  prm.enter_subsection("Stiffness");
+  prm.set("mode", "sweep");
+  prm.set("sweep positions", std::to_string(positions));
+  prm.leave_subsection();
+}
+
 StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
 {
   StiffnessParameters p;
@@ -149,16 +88,8 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   s.scene = contact::default_stiffness_scene();
   s.scene.pair = parse_gear_pair_parameters(prm);
   parse_gear_scene_parameters(prm, s.scene);
-
-  prm.enter_subsection("Finite elements");
-  s.elasticity.parse_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Linear solver");
-  s.linear_solver.parse_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Contact");
-  s.contact.parse_parameters(prm);
-  prm.leave_subsection();
+  s.scene.mesh = parse_scene_mesh_parameters(prm);
+  parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Stiffness");
   p.mode = prm.get("mode");
@@ -229,14 +160,6 @@ std::string vtu_directory(const StiffnessParameters& p, CommandContext& context,
             .parent_path()
             .string();
   return directory;
-}
-
-std::string format(double value, int precision = 4)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
 }
 } // namespace
 
@@ -309,7 +232,7 @@ void report_stiffness_position(Report& report, const contact::GearMeshStiffnessR
                    label + ": loaded transmission error r_b1·Δφ");
   report.add_value(prefix + "torque_ratio", r.torque_ratio, "-",
                    label + ": |T_wheel/T1| (r_b2/r_b1 = " +
-                       format(r.wheel_base_radius / r.pinion_base_radius, 6) +
+                       format_number(r.wheel_base_radius / r.pinion_base_radius, 6) +
                        " without friction)");
   for (const auto& pair : r.pairs)
     report.add_value(
@@ -317,7 +240,7 @@ void report_stiffness_position(Report& report, const contact::GearMeshStiffnessR
             (pair.pair < 0 ? "m" + std::to_string(-pair.pair) : std::to_string(pair.pair)),
         pair.load_share, "-",
         label + ": load share of tooth pair " + std::to_string(pair.pair) + " (at " +
-            format(pair.position * 1e3, 5) + " mm from T1)");
+            format_number(pair.position * 1e3, 5) + " mm from T1)");
   report.add_value(prefix + "max_contact_pressure", r.max_contact_pressure / 1e6, "MPa",
                    label + ": largest contact pressure");
   report.add_value(prefix + "pinion_root_stress", r.pinion_root_stress / 1e6, "MPa",
@@ -364,18 +287,6 @@ void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResu
   }
 }
 
-std::string temporary_csv(const Report& report, const std::string& table_name)
-{
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
-                               .string();
-  std::ofstream out(path);
-  for (const auto& table : report.tables())
-    if (table.name == table_name)
-      report.write_table_csv(table, out);
-  return path;
-}
-
 std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep)
 {
   std::vector<std::pair<double, double>> samples; // x [base pitches], k [N/mm]
@@ -393,6 +304,27 @@ std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep)
     last = x;
   }
   return text.str();
+}
+
+std::string dynamics_table_input(const contact::StiffnessSweepResult& sweep)
+{
+  const std::string table = dynamics_stiffness_table(sweep);
+  std::string text;
+  for (const std::string mesh : {"Mesh 1", "Mesh 2"})
+    text += "subsection " + mesh + "\n  set stiffness source = table\n" +
+            "  set stiffness table = " + table + "\nend\n";
+  return text;
+}
+
+std::string dynamics_cai_input(const dynamics::CaiParameters& cai)
+{
+  std::string text;
+  for (const std::string mesh : {"Mesh 1", "Mesh 2"})
+    text += "subsection " + mesh + "\n  set stiffness source = cai\n" +
+            "  set stiffness = " + format_number(cai.scale / 1e3, 10) + "\n" +
+            "  set cai shape = " + format_number(cai.shape[0], 10) + ", " +
+            format_number(cai.shape[1], 10) + ", " + format_number(cai.shape[2], 10) + "\nend\n";
+  return text;
 }
 
 std::vector<std::pair<double, double>>

@@ -1,7 +1,8 @@
 // Parameter-file form of the FE mesh-stiffness analysis (contact/mesh_stiffness.h), shared by the
 // `stiffness`, `cai` and `run` commands: the gear pair (app/kinematics_parameters.h), the scene
-// (subsections "Gear pair scene" and "Mesh", mm and degrees), the FE model ("Finite elements",
-// "Linear solver", "Contact" of fem/ and contact/) and the load case and sweep ("Stiffness").
+// (subsections "Gear pair scene" and "Mesh" of app/geometry_parameters.h, mm and degrees), the FE
+// model ("Finite elements", "Linear solver", "Contact" of app/fe_contact_parameters.h) and the
+// load case and sweep ("Stiffness").
 // Defaults: the split-path pair of gear-data.md §1 under its published load case (T1 = 49.4 N·m,
 // μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
 // accuracy-versus-cost study (docs/accuracy.md).
@@ -9,22 +10,13 @@
 
 #include "contact/mesh_stiffness.h"
 #include "contact/mesh_stiffness_sweep.h"
-#include "geometry/scene_gear_pair.h"
+#include "dynamics/cai_stiffness.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
 
 namespace gearstiff::app
 {
-// Subsections "Gear pair scene" (teeth modelled, bores, rim) and "Mesh" (sizes). The position
-// and the load and material of the Hertz size estimate are not declared here: the analysis
-// that meshes the scene supplies them. `defaults` gives the default values.
-void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
-                                   const geometry::GearPairSceneSpec& defaults);
-// Fills every member except pair, position, pinion_roll_angle, pinion_torque, young_modulus
-// and poisson_ratio.
-void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
-
 struct StiffnessParameters
 {
   contact::GearMeshStiffnessSettings settings; // SI, scene_file left empty
@@ -36,6 +28,8 @@ struct StiffnessParameters
 
 // Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".
 void declare_stiffness_parameters(dealii::ParameterHandler& prm);
+// The same with the defaults "Stiffness/mode = sweep" and "sweep positions = `positions`".
+void declare_stiffness_sweep_parameters(dealii::ParameterHandler& prm, unsigned int positions);
 StiffnessParameters parse_stiffness_parameters(dealii::ParameterHandler& prm);
 } // namespace gearstiff::app
 
@@ -62,15 +56,16 @@ void report_stiffness_position(Report& report, const contact::GearMeshStiffnessR
 // The sweep as a table (one row per position).
 void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResult& sweep,
                                const std::string& name);
-// Writes the report's table `table_name` to a temporary CSV for a plot script (the report's CSV
-// files appear only after the command returns) and returns its path; remove it after plotting.
-// By name: references into the report's tables do not survive a later add_table.
-std::string temporary_csv(const Report& report, const std::string& table_name);
 
 // The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions
 // sorted, duplicates modulo one pitch dropped.
 std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep);
+// Subsections "Mesh 1" and "Mesh 2" of a `gearstiff dynamics` parameter file that put on both
+// meshes the sweep's k(x) table (dynamics_stiffness_table), or the Cai curve `cai` (scale
+// written in N/mm).
+std::string dynamics_table_input(const contact::StiffnessSweepResult& sweep);
+std::string dynamics_cai_input(const dynamics::CaiParameters& cai);
 // Single-pair stiffness samples for the Cai fit: at each position each loaded pair j carries
 // k_j = share_j·k at roll position p_ref + j [base pitches] (all pairs share one deflection,
 // so the mesh stiffness splits as the load does).

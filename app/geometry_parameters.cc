@@ -1,0 +1,112 @@
+#include "app/geometry_parameters.h"
+
+#include "app/units.h"
+
+namespace gearstiff::app
+{
+namespace
+{
+using dealii::ParameterHandler;
+using dealii::Patterns::Double;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
+} // namespace
+
+void declare_cycloid_disc_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Cycloid disc");
+  prm.declare_entry("rollers", "20", Integer(3, 1000),
+                    "z_k, rollers in the ring (-); the disc has z_k - 1 lobes");
+  prm.declare_entry("roller circle radius", "96", Double(0.),
+                    "r, radius of the circle through the roller centres (mm)");
+  prm.declare_entry("eccentricity", "3", Double(0.), "e, eccentricity of the disc (mm)");
+  prm.declare_entry("roller radius", "8.5", Double(0.), "q, roller radius (mm)");
+  prm.leave_subsection();
+}
+
+geometry::CycloidDiscSpec parse_cycloid_disc_parameters(ParameterHandler& prm)
+{
+  geometry::CycloidDiscSpec spec;
+  prm.enter_subsection("Cycloid disc");
+  spec.rollers = prm.get_integer("rollers");
+  spec.roller_circle_radius = prm.get_double("roller circle radius") * mm;
+  spec.eccentricity = prm.get_double("eccentricity") * mm;
+  spec.roller_radius = prm.get_double("roller radius") * mm;
+  prm.leave_subsection();
+  return spec;
+}
+
+void declare_scene_mesh_parameters(ParameterHandler& prm,
+                                   const geometry::SceneMeshSettings& defaults)
+{
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("dimension", std::to_string(defaults.dimension), Integer(2, 3),
+                    "2: quadrilaterals in the transverse plane; 3: hexahedra over the face "
+                    "width");
+  prm.declare_entry("layers", std::to_string(defaults.layers), Integer(1, 1000),
+                    "hexahedron layers across the face width [-] (3D)");
+  prm.declare_entry("contact size", format_number(defaults.contact_size / mm, 10), Double(0.),
+                    "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest "
+                    "Hertz half-width");
+  prm.declare_entry("fine radius", format_number(defaults.fine_radius / mm, 10), Double(0.),
+                    "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the "
+                    "largest Hertz half-width");
+  prm.declare_entry("growth rate", format_number(defaults.growth_rate, 10), Double(0.01, 1.),
+                    "cell size increase per unit distance beyond the fine radius [-]");
+  prm.declare_entry("body size", format_number(defaults.body_size / mm, 10), Double(0.),
+                    "cell size in the teeth away from contact [mm]");
+  prm.declare_entry("rim size", format_number(defaults.rim_size / mm, 10), Double(0.),
+                    "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size");
+  prm.leave_subsection();
+}
+
+geometry::SceneMeshSettings parse_scene_mesh_parameters(ParameterHandler& prm)
+{
+  geometry::SceneMeshSettings mesh;
+  prm.enter_subsection("Mesh");
+  mesh.dimension = prm.get_integer("dimension");
+  mesh.layers = prm.get_integer("layers");
+  mesh.contact_size = prm.get_double("contact size") * mm;
+  mesh.fine_radius = prm.get_double("fine radius") * mm;
+  mesh.growth_rate = prm.get_double("growth rate");
+  mesh.body_size = prm.get_double("body size") * mm;
+  mesh.rim_size = prm.get_double("rim size") * mm;
+  prm.leave_subsection();
+  return mesh;
+}
+
+void declare_gear_scene_parameters(ParameterHandler& prm,
+                                   const geometry::GearPairSceneSpec& defaults,
+                                   bool sector_cuts_free)
+{
+  prm.enter_subsection("Gear pair scene");
+  prm.declare_entry("pinion teeth modelled", std::to_string(defaults.pinion_teeth_modelled),
+                    Integer(1), "pinion teeth in the scene, centred on the contacts [-]");
+  prm.declare_entry("wheel teeth modelled", std::to_string(defaults.wheel_teeth_modelled),
+                    Integer(1), "wheel teeth in the scene, centred on the contacts [-]");
+  prm.declare_entry("pinion bore radius", format_number(defaults.pinion_bore_radius / mm, 10),
+                    Double(0.),
+                    "pinion bore radius [mm]; 0 = half of Gear pair/Pinion/bore diameter");
+  prm.declare_entry("wheel bore radius", format_number(defaults.wheel_bore_radius / mm, 10),
+                    Double(0.),
+                    "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
+  prm.declare_entry("rim", defaults.rim == geometry::RimModel::full ? "full" : "sector",
+                    Selection("sector|full"),
+                    std::string("sector: rim of the modelled teeth only, cut radially (cut faces "
+                                "get ids 5/6") +
+                        (sector_cuts_free ? ", free" : "") +
+                        "); full: whole rim and bore, the other teeth removed");
+  prm.leave_subsection();
+}
+
+void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneSpec& spec)
+{
+  prm.enter_subsection("Gear pair scene");
+  spec.pinion_teeth_modelled = prm.get_integer("pinion teeth modelled");
+  spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
+  spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
+  spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
+  spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
+  prm.leave_subsection();
+}
+} // namespace gearstiff::app

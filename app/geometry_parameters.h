@@ -1,0 +1,33 @@
+// Parameter-file form of the geometry module's inputs, shared by the commands that build them:
+// the cycloid disc (subsection "Cycloid disc": `cycloid`, `mesh`), the mesh sizes of a scene
+// ("Mesh") and the gear-pair scene ("Gear pair scene"; both `mesh`, `stiffness`, `cai`, `run`).
+// Lengths in mm; parse_* convert to SI.
+#pragma once
+
+#include "geometry/cycloid_disc.h"
+#include "geometry/scene_gear_pair.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace gearstiff::app
+{
+// Subsection "Cycloid disc": z_k, r, e, q of gear-data.md §4 (Chmurawa & Łokiec) by default.
+void declare_cycloid_disc_parameters(dealii::ParameterHandler& prm);
+geometry::CycloidDiscSpec parse_cycloid_disc_parameters(dealii::ParameterHandler& prm);
+
+// Subsection "Mesh" (dimension, layers, sizes) with `defaults` as default values.
+void declare_scene_mesh_parameters(dealii::ParameterHandler& prm,
+                                   const geometry::SceneMeshSettings& defaults);
+geometry::SceneMeshSettings parse_scene_mesh_parameters(dealii::ParameterHandler& prm);
+
+// Subsection "Gear pair scene": teeth modelled, bores and rim, `defaults` as default values.
+// The position and the load and material of the Hertz size estimate are not declared here: the
+// analysis that meshes the scene supplies them; the sizes are in "Mesh" (above).
+// `sector_cuts_free`: the analysis leaves the sector cut faces free, and the rim's documentation
+// says so (the `mesh` command only names them).
+void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
+                                   const geometry::GearPairSceneSpec& defaults,
+                                   bool sector_cuts_free);
+// Fills pinion/wheel_teeth_modelled, pinion/wheel_bore_radius and rim.
+void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
+} // namespace gearstiff::app

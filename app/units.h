@@ -1,0 +1,17 @@
+// Units of the parameter files and reports (mm, degrees, rpm) in SI, the units every module
+// computes in, and the text form of numbers in parameter defaults, report texts and the
+// parameter files the commands write.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+namespace gearstiff::app
+{
+constexpr double mm = 1e-3;            // m
+constexpr double degree = M_PI / 180.; // rad
+constexpr double rpm = M_PI / 30.;     // rad/s
+
+// `value` with `precision` significant digits, in the default notation of std::ostream.
+std::string format_number(double value, int precision);
+} // namespace gearstiff::app
