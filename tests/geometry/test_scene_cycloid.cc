@@ -2,10 +2,9 @@
 // e = 3 mm, q = 8.5 mm, z_k = 20, read back with deal.II's GridIn.
 #include "geometry/scene_cycloid.h"
 #include "kinematics/errors.h"
+#include "tests/geometry/scene_test_support.h"
 
 #include <cmath>
-#include <deal.II/grid/grid_in.h>
-#include <deal.II/grid/tria.h>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <set>
@@ -14,14 +13,7 @@ namespace
 {
 using namespace gearstiff;
 using namespace gearstiff::geometry;
-
-std::string work_file(const std::string& name)
-{
-  const std::filesystem::path folder =
-      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "geometry" / "scene-work";
-  std::filesystem::create_directories(folder);
-  return (folder / name).string();
-}
+using namespace gearstiff::test_support;
 
 TEST(CycloidScene, NominalDiscTouchesEveryRoller)
 {
@@ -45,18 +37,10 @@ TEST(CycloidScene, NominalDiscTouchesEveryRoller)
   }
 
   dealii::Triangulation<2> triangulation;
-  dealii::GridIn<2> grid_in(triangulation);
-  grid_in.read_msh(info.file);
-  std::set<int> materials, boundaries;
-  for (const auto& cell : triangulation.active_cell_iterators())
-  {
-    materials.insert(cell->material_id());
-    for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary())
-        boundaries.insert(cell->face(f)->boundary_id());
-  }
-  EXPECT_EQ(materials, (std::set<int>{scene_ids::first_body, scene_ids::second_body}));
-  EXPECT_EQ(boundaries,
+  read_mesh(triangulation, info.file);
+  const Ids ids = ids_of(triangulation);
+  EXPECT_EQ(ids.materials, (std::set<int>{scene_ids::first_body, scene_ids::second_body}));
+  EXPECT_EQ(ids.boundaries,
             (std::set<int>{scene_ids::first_bore, scene_ids::second_bore, scene_ids::first_contact,
                            scene_ids::second_contact, scene_ids::output_pin_holes}));
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);

@@ -2,10 +2,9 @@
 // half-width estimate against Johnson, Contact Mechanics (1985) eq. 4.43 evaluated by hand.
 #include "geometry/scene_cylinders.h"
 #include "kinematics/errors.h"
+#include "tests/geometry/scene_test_support.h"
 
 #include <cmath>
-#include <deal.II/grid/grid_in.h>
-#include <deal.II/grid/tria.h>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <set>
@@ -14,14 +13,7 @@ namespace
 {
 using namespace gearstiff;
 using namespace gearstiff::geometry;
-
-std::string work_file(const std::string& name)
-{
-  const std::filesystem::path folder =
-      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "geometry" / "scene-work";
-  std::filesystem::create_directories(folder);
-  return (folder / name).string();
-}
+using namespace gearstiff::test_support;
 
 TEST(CylindersScene, HalfDiscsReadWithIdsAndContactSize)
 {
@@ -36,27 +28,21 @@ TEST(CylindersScene, HalfDiscsReadWithIdsAndContactSize)
   EXPECT_NEAR(info.contact_size, 7.428e-6, 0.001e-6);
 
   dealii::Triangulation<2> triangulation;
-  dealii::GridIn<2> grid_in(triangulation);
-  grid_in.read_msh(info.file);
-  std::set<int> materials, boundaries;
+  read_mesh(triangulation, info.file);
   double largest_edge = 0.;
   for (const auto& cell : triangulation.active_cell_iterators())
   {
-    materials.insert(cell->material_id());
     bool at_contact = false;
     for (const auto v : cell->vertex_indices())
       at_contact |= cell->vertex(v).norm() < 0.5 * info.contact_size;
-    for (const auto f : cell->face_indices())
-    {
-      if (cell->face(f)->at_boundary())
-        boundaries.insert(cell->face(f)->boundary_id());
-      if (at_contact)
+    if (at_contact)
+      for (const auto f : cell->face_indices())
         largest_edge = std::max(largest_edge, cell->face(f)->measure());
-    }
   }
-  EXPECT_EQ(materials, (std::set<int>{scene_ids::first_body, scene_ids::second_body}));
-  EXPECT_EQ(boundaries, (std::set<int>{scene_ids::first_contact, scene_ids::second_contact,
-                                       scene_ids::first_cuts, scene_ids::second_cuts}));
+  const Ids ids = ids_of(triangulation);
+  EXPECT_EQ(ids.materials, (std::set<int>{scene_ids::first_body, scene_ids::second_body}));
+  EXPECT_EQ(ids.boundaries, (std::set<int>{scene_ids::first_contact, scene_ids::second_contact,
+                                           scene_ids::first_cuts, scene_ids::second_cuts}));
   // The scene starts its arcs at the contact point, so both bodies have a vertex there and
   // the cells around it are no larger than h_c.
   EXPECT_GT(largest_edge, 0.);
@@ -71,15 +57,10 @@ TEST(CylindersScene, AnnuliWithBores)
   spec.bore_radius_2 = 8e-3;
   const SceneInfo info = write_cylinders_scene(spec, work_file("annuli.msh"));
   dealii::Triangulation<2> triangulation;
-  dealii::GridIn<2> grid_in(triangulation);
-  grid_in.read_msh(info.file);
-  std::set<int> boundaries;
-  for (const auto& cell : triangulation.active_cell_iterators())
-    for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary())
-        boundaries.insert(cell->face(f)->boundary_id());
-  EXPECT_EQ(boundaries, (std::set<int>{scene_ids::first_bore, scene_ids::second_bore,
-                                       scene_ids::first_contact, scene_ids::second_contact}));
+  read_mesh(triangulation, info.file);
+  EXPECT_EQ(ids_of(triangulation).boundaries,
+            (std::set<int>{scene_ids::first_bore, scene_ids::second_bore, scene_ids::first_contact,
+                           scene_ids::second_contact}));
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
 }
 

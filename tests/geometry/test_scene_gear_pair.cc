@@ -4,12 +4,11 @@
 // boundary faces deal.II sees (not on the outlines the scene was built from).
 #include "geometry/scene_gear_pair.h"
 #include "kinematics/errors.h"
+#include "tests/geometry/scene_test_support.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <deal.II/grid/grid_in.h>
-#include <deal.II/grid/tria.h>
 #include <filesystem>
 #include <gtest/gtest.h>
 #include <set>
@@ -18,40 +17,7 @@ namespace
 {
 using namespace gearstiff;
 using namespace gearstiff::geometry;
-
-std::string work_file(const std::string& name)
-{
-  const std::filesystem::path folder =
-      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "geometry" / "scene-work";
-  std::filesystem::create_directories(folder);
-  return (folder / name).string();
-}
-
-template <int dim>
-void read_mesh(dealii::Triangulation<dim>& triangulation, const std::string& file)
-{
-  dealii::GridIn<dim> grid_in(triangulation);
-  grid_in.read_msh(file);
-}
-
-struct Ids
-{
-  std::set<int> materials, boundaries;
-};
-
-template <int dim>
-Ids ids_of(const dealii::Triangulation<dim>& triangulation)
-{
-  Ids ids;
-  for (const auto& cell : triangulation.active_cell_iterators())
-  {
-    ids.materials.insert(cell->material_id());
-    for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary())
-        ids.boundaries.insert(cell->face(f)->boundary_id());
-  }
-  return ids;
-}
+using namespace gearstiff::test_support;
 
 // Distances along the line of action (from T1) where it crosses boundary faces with `id`.
 std::vector<double> crossings(const dealii::Triangulation<2>& triangulation, int id,
