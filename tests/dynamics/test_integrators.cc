@@ -3,38 +3,22 @@
 #include "dynamics/integrators.h"
 #include "dynamics/split_path_case.h"
 #include "kinematics/errors.h"
+#include "tests/dynamics/single_pair_train.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace gearstiff;
 using namespace gearstiff::dynamics;
+using namespace gearstiff::test_support;
 
 namespace
 {
-// The split-path pinion and one wheel (gear-data.md §1 dynamic parameters) with constant
-// stiffness: a single pair whose relative coordinate δ = r1·φ1 − r2·φ2 obeys
+// The split-path pinion and one wheel (single_pair_train.h) with constant stiffness k: a
+// single pair whose relative coordinate δ = r1·φ1 − r2·φ2 obeys
 //   m_e·δ̈ + c·δ̇ + k·δ = T1/r1,   1/m_e = r1²/J1 + r2²/J2,
 // because the wheel's load T1·r2/r1 balances the input (derivation in torsional_model.h).
-constexpr double J1 = 1.47e-4, J2 = 7.81e-3, r1 = 24.7e-3, r2 = 67.0e-3, T1 = 49.4;
 constexpr double k = 400e6;
-
-GearTrain pair(double damping)
-{
-  GearTrain train;
-  train.gears = {{"Gear 1", J1, T1}, {"Gear 2", J2, -T1 * r2 / r1}};
-  Mesh mesh;
-  mesh.driver_base_radius = r1;
-  mesh.driven_base_radius = r2;
-  mesh.driver_teeth = 21;
-  mesh.contact_ratio = 1.5;
-  mesh.approach_ratio = 0.58;
-  mesh.stiffness = MeshStiffness::constant(k, "Mesh 1/stiffness");
-  mesh.damping = damping;
-  train.meshes = {mesh};
-  train.input_speed = 1450. * M_PI / 30.;
-  return train;
-}
 
 // Step response from rest of the damped oscillator above [m].
 double analytic_deflection(double t, double damping)
@@ -52,7 +36,7 @@ double analytic_deflection(double t, double damping)
 // Largest deviation from the analytic δ(t) over the run, relative to the static deflection.
 double max_error(const IntegratorSettings& settings, double damping)
 {
-  const TorsionalModel model(pair(damping));
+  const TorsionalModel model(single_pair_train(k, damping));
   const Trajectory trajectory = integrate(model, {0., 0.}, {0., 0.}, settings);
   double error = 0.;
   for (std::size_t i = 0; i < trajectory.size(); ++i)
@@ -123,7 +107,7 @@ TEST(Integrators, AdaptiveRungeKuttaMeetsItsTolerance)
   IntegratorSettings settings = settings_for(IntegratorType::adaptive_rk, 10e-6, 2e-3);
   settings.relative_tolerance = 1e-9;
   EXPECT_LT(max_error(settings, 100.), 1e-6);
-  const TorsionalModel model(pair(100.));
+  const TorsionalModel model(single_pair_train(k, 100.));
   const Trajectory trajectory = integrate(model, {0., 0.}, {0., 0.}, settings);
   EXPECT_GT(trajectory.cost.steps, 0u);
   EXPECT_LT(trajectory.cost.steps, 2000u);
@@ -136,7 +120,7 @@ TEST(Integrators, EnergyIsConservedWithoutDamping)
   // The trapezoidal rule (HHT α = 0) conserves it exactly for a linear system (round-off only,
   // 1e-9 of the strain-energy scale over 10⁴ steps); RK4 loses (hω)⁶/72 per step, at 1 µs
   // (hω = 0.043) about 1e-10 per step, so < 1e-5 over 5·10⁴ steps.
-  const TorsionalModel model(pair(0.));
+  const TorsionalModel model(single_pair_train(k, 0.));
   const double energy_scale = 0.5 * k * std::pow(T1 / r1 / k, 2);
   for (const auto& [type, step, tolerance] : {std::tuple{IntegratorType::hht_alpha, 5e-6, 1e-9},
                                               std::tuple{IntegratorType::rk4, 1e-6, 1e-5}})

@@ -2,34 +2,14 @@
 #include "dynamics/split_path_case.h"
 #include "dynamics/torsional_model.h"
 #include "kinematics/errors.h"
+#include "tests/dynamics/single_pair_train.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace gearstiff;
 using namespace gearstiff::dynamics;
-
-namespace
-{
-// A single pair with constant stiffness: pinion 0 drives wheel 1, the wheel's load balances.
-GearTrain single_pair(double stiffness, double damping, double torque = 49.4)
-{
-  GearTrain train;
-  const double r1 = 24.7e-3, r2 = 67.0e-3;
-  train.gears = {{"Gear 1", 1.47e-4, torque}, {"Gear 2", 7.81e-3, -torque * r2 / r1}};
-  Mesh mesh;
-  mesh.driver_base_radius = r1;
-  mesh.driven_base_radius = r2;
-  mesh.driver_teeth = 21;
-  mesh.contact_ratio = 1.5;
-  mesh.approach_ratio = 0.58;
-  mesh.stiffness = MeshStiffness::constant(stiffness, "Mesh 1/stiffness");
-  mesh.damping = damping;
-  train.meshes = {mesh};
-  train.input_speed = 1450. * M_PI / 30.;
-  return train;
-}
-} // namespace
+using namespace gearstiff::test_support;
 
 TEST(TorsionalModel, StaticDeflectionEqualsTorqueOverStiffnessTimesBaseRadiusSquared)
 {
@@ -37,7 +17,7 @@ TEST(TorsionalModel, StaticDeflectionEqualsTorqueOverStiffnessTimesBaseRadiusSqu
   // Δφ = T1/(k·r_b1²). Here Δφ = φ1 − φ2·r_b2/r_b1 (the rigid rotation removed); the static
   // solve is a 2x2 LU, so the agreement is to round-off (1e-12 relative).
   const double k = 327.2e6, T1 = 49.4, r1 = 24.7e-3, r2 = 67.0e-3;
-  const TorsionalModel model(single_pair(k, 100.));
+  const TorsionalModel model(single_pair_train(k, 100.));
   const StaticState state = model.static_state();
   const double relative_rotation = state.angle[0] - state.angle[1] * r2 / r1;
   EXPECT_NEAR(relative_rotation / (T1 / (k * r1 * r1)), 1., 1e-12);
@@ -101,7 +81,7 @@ TEST(TorsionalModel, Rk4LimitOfAnUndampedPairIsTwoRootTwoOverOmega)
   // One vibration mode with ω² = k·(r1²/J1 + r2²/J2); classical RK4 on y' = iωy is stable up to
   // h·ω = 2√2 (the imaginary-axis boundary of its stability region). Bisection to 1e-12.
   const double k = 400e6;
-  const TorsionalModel model(single_pair(k, 0.));
+  const TorsionalModel model(single_pair_train(k, 0.));
   const double omega = std::sqrt(k * (24.7e-3 * 24.7e-3 / 1.47e-4 + 67.0e-3 * 67.0e-3 / 7.81e-3));
   EXPECT_NEAR(model.highest_natural_frequency() / omega, 1., 1e-10);
   EXPECT_NEAR(model.rk4_step_limit() * omega / (2. * std::sqrt(2.)), 1., 1e-8);
@@ -111,7 +91,7 @@ TEST(TorsionalModel, Rk4LimitOfAnUndampedPairIsTwoRootTwoOverOmega)
 
 TEST(TorsionalModel, RejectsBadInput)
 {
-  GearTrain train = single_pair(4e8, 100.);
+  GearTrain train = single_pair_train(4e8, 100.);
   train.gears[1].inertia = 0.;
   try
   {
@@ -122,13 +102,13 @@ TEST(TorsionalModel, RejectsBadInput)
   {
     EXPECT_EQ(e.parameter(), "Gear 2/inertia");
   }
-  train = single_pair(4e8, -1.);
+  train = single_pair_train(4e8, -1.);
   EXPECT_THROW(TorsionalModel model(train), InputError);
-  EXPECT_THROW(single_pair(-4e8, 100.), InputError); // negative stiffness, at the source
-  train = single_pair(4e8, 100.);
+  EXPECT_THROW(single_pair_train(-4e8, 100.), InputError); // negative stiffness, at the source
+  train = single_pair_train(4e8, 100.);
   train.meshes.push_back(train.meshes[0]); // a closed loop
   EXPECT_THROW(TorsionalModel model(train), InputError);
-  train = single_pair(4e8, 100.);
+  train = single_pair_train(4e8, 100.);
   train.meshes[0].contact_ratio = 0.9;
   EXPECT_THROW(TorsionalModel model(train), InputError);
 }
