@@ -2,12 +2,14 @@
 // closed-form ISO 21771 relations that the implementation does not use directly.
 #include "kinematics/errors.h"
 #include "kinematics/gear_pair.h"
+#include "tests/kinematics/input_error_parameter.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace gearstiff;
 using namespace gearstiff::kinematics;
+using gearstiff::test_support::input_error_parameter;
 
 namespace
 {
@@ -20,21 +22,6 @@ GearPairSpec standard_tips(GearPairSpec spec)
   spec.pinion.tip_diameter = 0.;
   spec.wheel.tip_diameter = 0.;
   return spec;
-}
-
-// The message names the parameter the user has to fix.
-template <typename F>
-std::string input_error_parameter(F&& f)
-{
-  try
-  {
-    f();
-  }
-  catch (const InputError& e)
-  {
-    return e.parameter();
-  }
-  return "no error";
 }
 } // namespace
 

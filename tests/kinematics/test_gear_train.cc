@@ -4,12 +4,14 @@
 // tolerance of half a unit of their last printed digit unless stated.
 #include "kinematics/errors.h"
 #include "kinematics/gear_train.h"
+#include "tests/kinematics/input_error_parameter.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace gearstiff;
 using namespace gearstiff::kinematics;
+using gearstiff::test_support::input_error_parameter;
 
 namespace
 {
@@ -26,20 +28,6 @@ Solved solve(const GearTrainText& text)
   Solved solved{parse_gear_train(text), {}};
   solved.solution = solve_train_kinematics(solved.spec);
   return solved;
-}
-
-template <typename F>
-std::string input_error_parameter(F&& f)
-{
-  try
-  {
-    f();
-  }
-  catch (const InputError& e)
-  {
-    return e.parameter();
-  }
-  return "no error";
 }
 
 std::size_t mesh_index(const GearTrainSpec& spec, const std::string& a, const std::string& b)
