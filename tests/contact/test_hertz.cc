@@ -2,22 +2,19 @@
 // §4.3 eq. 4.43–4.45): a = sqrt(4PR/(πE*)), p0 = 2P/(πa), with the load P per unit length taken
 // from the computed reaction. A refinement study of the mesh at the contact: the half-width and
 // peak pressure must approach Hertz and be within 2 % at the finest level.
-#include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
+#include "tests/contact/hertz_cylinders.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <mpi.h>
 
-using namespace dealii;
 using namespace gearstiff;
 using namespace gearstiff::contact;
+using namespace gearstiff::test_support;
 
 namespace
 {
-const fem::Material steel{210e9, 0.3};
-
 struct HertzRun
 {
   double load_per_length;   // N/m
@@ -31,32 +28,14 @@ struct HertzRun
 
 HertzRun run_hertz(double fine_size, double approach)
 {
-  fem::ElasticityParameters elasticity;
-  elasticity.thickness = 1e-3;
-  ContactProblem<2> problem(MPI_COMM_WORLD, elasticity, fem::LinearSolverParameters(),
-                            ContactParameters());
-  CylinderPairGeometry geometry;
-  geometry.fine_size = fine_size;
-  make_cylinder_pair(geometry, problem.system().triangulation());
-  problem.system().set_materials({{upper_body, steel}, {lower_body, steel}}, "materials");
-  problem.add_displacement(upper_top, Tensor<1, 2>({0., -approach}), "upper top");
-  problem.add_displacement(lower_bottom, Tensor<1, 2>(), "lower bottom");
-  problem.add_contact_pair({upper_contact}, {lower_contact}, "cylinders");
-  const ContactResults<2>& result = problem.run();
+  const ContactResults<2> result = solve_hertz_cylinders<2>(fine_size, approach);
 
   HertzRun run;
-  run.load_per_length = result.supports.at(1).force[1] / elasticity.thickness;
+  run.load_per_length = result.supports.at(1).force[1] / cylinder_thickness;
   const PairResult<2>& pair = result.pairs.at(0);
   run.peak_pressure = pair.max_pressure;
   run.closed_extent = 0.5 * pair.contact_length;
-  std::vector<double> x, p;
-  for (const auto& point : pair.points)
-    if (point.state != NodeState::open)
-    {
-      x.push_back(point.position[0]);
-      p.push_back(point.pressure);
-    }
-  const HertzLineContact fitted = fit_hertz_profile(x, p);
+  const HertzLineContact fitted = fit_closed_nodes(pair);
   run.fitted_half_width = fitted.half_width;
   run.fitted_peak = fitted.peak_pressure;
   run.iterations = result.active_set_iterations;

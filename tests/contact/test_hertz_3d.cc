@@ -2,17 +2,16 @@
 // faces: plane strain) must reproduce the 2D plane-strain result. The 3D mortar integrates the
 // slave faces with an iterated Gauss rule instead of the exact 2D segmentation, so the two
 // agree to that quadrature error; the issue asks for 2 %.
-#include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
+#include "tests/contact/hertz_cylinders.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <mpi.h>
 
-using namespace dealii;
 using namespace gearstiff;
 using namespace gearstiff::contact;
+using namespace gearstiff::test_support;
 
 namespace
 {
@@ -27,38 +26,9 @@ struct Summary
 template <int dim>
 Summary run(double fine_size)
 {
-  fem::ElasticityParameters elasticity;
-  elasticity.thickness = 1e-3;
-  ContactProblem<dim> problem(MPI_COMM_WORLD, elasticity, fem::LinearSolverParameters(),
-                              ContactParameters());
-  CylinderPairGeometry geometry;
-  geometry.fine_size = fine_size;
-  geometry.depth = dim == 3 ? 1e-3 : 0.;
-  geometry.depth_cells = 1;
-  make_cylinder_pair(geometry, problem.system().triangulation());
-  problem.system().set_materials({{upper_body, {210e9, 0.3}}, {lower_body, {210e9, 0.3}}},
-                                 "materials");
-  Tensor<1, dim> approach;
-  approach[1] = -4e-6;
-  problem.add_displacement(upper_top, approach, "upper top");
-  problem.add_displacement(lower_bottom, Tensor<1, dim>(), "lower bottom");
-  if (dim == 3)
-  {
-    std::vector<bool> z_only(dim, false);
-    z_only[dim - 1] = true;
-    problem.add_displacement(extrusion_faces, Tensor<1, dim>(), "z faces", z_only);
-  }
-  problem.add_contact_pair({upper_contact}, {lower_contact}, "cylinders");
-  const ContactResults<dim>& result = problem.run();
+  const ContactResults<dim> result = solve_hertz_cylinders<dim>(fine_size, 4e-6);
   const PairResult<dim>& pair = result.pairs.at(0);
-  std::vector<double> x, p;
-  for (const auto& point : pair.points)
-    if (point.state != NodeState::open)
-    {
-      x.push_back(point.position[0]);
-      p.push_back(point.pressure);
-    }
-  const HertzLineContact fitted = fit_hertz_profile(x, p);
+  const HertzLineContact fitted = fit_closed_nodes(pair);
   return {std::abs(result.supports.at(1).force[1]), fitted.half_width, pair.max_pressure,
           result.active_set_iterations};
 }
