@@ -156,8 +156,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
           "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)"));
       out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
           << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
-          << "# Use: gearstiff dynamics stiffness_table.prm\n";
-      out << dynamics_table_input(sweep);
+          << "# Use: gearstiff dynamics stiffness_table.prm\n"
+          << dynamics_table_input(sweep);
     }
     const std::string csv = temporary_csv(report, "stiffness_sweep");
     context.plot("plot_stiffness.py",
