@@ -34,12 +34,6 @@ void declare_parameters(dealii::ParameterHandler& prm)
 {
   // One base pitch from A holds every engagement position once (pairs at p and p + 1).
   declare_stiffness_sweep_parameters(prm, 16);
-  // μ = 0.01 changes k by 0.01% (tests/stiffness) while the contact module's Coulomb iteration
-  // can cycle at some positions (a SolverFailure): the calibration sweep omits friction unless
-  // asked (the dynamics model carries the tooth friction itself).
-  prm.enter_subsection("Contact");
-  prm.set("Friction coefficient", "0");
-  prm.leave_subsection();
   prm.enter_subsection("Cai calibration");
   prm.declare_entry("fit shape", "false", dealii::Patterns::Bool(),
                     "also fit the shape coefficients c0, c1, c2 (else only the scale, the "

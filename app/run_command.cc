@@ -42,13 +42,6 @@ void declare_parameters(dealii::ParameterHandler& prm)
 {
   // A coarse sweep keeps the chain near a minute; its position error is reported.
   declare_stiffness_sweep_parameters(prm, 12);
-  prm.enter_subsection("Run");
-  prm.declare_entry("sweep friction coefficient", "0", dealii::Patterns::Double(0., 2.),
-                    "μ of the k(θ) sweep (-): the single/double solves use Contact/Friction "
-                    "coefficient (0.01, gear-data.md §1); at μ = 0.01 friction changes k by "
-                    "0.01% (tests/stiffness), and the contact module's Coulomb iteration can "
-                    "cycle at some positions (a SolverFailure), so the sweep omits it by default");
-  prm.leave_subsection();
 }
 
 // K_v of both meshes of the split-path train with `stiffness` on each mesh.
@@ -109,19 +102,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                             "double-pair pinion rotation Δφ", ansys_source);
 
   // 3. k(θ) sweep and Cai calibration.
-  prm.enter_subsection("Run");
-  StiffnessParameters sweep_parameters = p;
-  sweep_parameters.settings.contact.friction_coefficient =
-      prm.get_double("sweep friction coefficient");
-  prm.leave_subsection();
-  report.add_text(
-      "sweep friction",
-      "μ = " + format_number(sweep_parameters.settings.contact.friction_coefficient, 5) +
-          " in the k(θ) sweep (single/double: μ = " +
-          format_number(p.settings.contact.friction_coefficient, 5) +
-          "; μ = 0.01 changes k by 0.01%)");
   const contact::StiffnessSweepResult sweep =
-      solve_stiffness_sweep(sweep_parameters, context, "sweep");
+      solve_stiffness_sweep(p, context, "sweep");
   add_stiffness_sweep_table(report, sweep, "run_sweep");
   double mean = 0., mean_even = 0.;
   unsigned int n_even = 0;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -170,15 +171,28 @@ void ContactProblem<dim>::setup_system()
             << parameters.overlap_tolerance * 1e3 << " mm";
       throw InputError(pair.name, where.str());
     }
-    // Nodes touching in the reference configuration start closed, so that a body held only
-    // through the contact (a torque-driven hub) is supported from the first solve.
-    const double touching = 1e-8 * characteristic_length;
+  }
+  // The initial active set: the nodes touching in the reference configuration and, when no
+  // node touches, those at the smallest gap of all pairs. A body held only through the contact
+  // (a torque-driven hub) is then supported from the first solve, and meshed surfaces that do
+  // not touch exactly (chords of curved outlines leave gaps of h²/8ρ) need no adjustment of the
+  // geometry. A node closed at a positive gap is held at that gap: its force turns tensile if it
+  // should not touch, and it opens in the next iteration.
+  const double touching = 1e-8 * characteristic_length;
+  double smallest_gap = std::numeric_limits<double>::max();
+  for (const auto& pair : pairs)
+    for (const auto& node : pair.nodes)
+      smallest_gap = std::min(smallest_gap, node.initial_gap);
+  const double closing_gap = std::max(touching, smallest_gap + touching);
+  for (auto& pair : pairs)
+  {
     pair.state.assign(pair.nodes.size(), NodeState::open);
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-      if (pair.nodes[k].initial_gap <= touching)
-        pair.state[k] = parameters.friction_coefficient > 0 ? NodeState::stick : NodeState::slip;
+      if (pair.nodes[k].initial_gap <= closing_gap)
+        pair.state[k] = NodeState::slip;
     pair.friction_direction.assign(pair.nodes.size(), Tensor<1, dim>());
     pair.friction_bound.assign(pair.nodes.size(), -1.);
+    pair.reversals.assign(pair.nodes.size(), 0);
   }
   displacement.reinit(dof_handler.n_dofs());
   step_start.reinit(dof_handler.n_dofs());
@@ -265,7 +279,7 @@ Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
       support.hub->add_loads(loads, load_factor);
   for (const auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-      if (pair.state[k] == NodeState::slip && parameters.friction_coefficient > 0.)
+      if (pair.state[k] == NodeState::slip && friction > 0.)
       {
         // Coulomb: μ λ_n along the friction direction on the slave, the reaction on the
         // master distributed with the mortar weights.
@@ -285,7 +299,7 @@ Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
 template <int dim>
 unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
 {
-  const double mu = parameters.friction_coefficient;
+  const double mu = friction;
   double largest_normal_force = 0.;
   for (const auto& pair : pairs)
     for (const auto& node : pair.nodes)
@@ -336,8 +350,28 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
         // A node closing for the first time gets its bound from the trial pressure.
         if (pair.friction_bound[k] < 0.)
           pair.friction_bound[k] = mu * std::max(normal_trial, 0.);
+        const double bound = pair.friction_bound[k] / node.area;              // Pa
         const Tensor<1, dim> trial = tangential_force / node.area - c * slip; // Pa
-        if (trial.norm() <= pair.friction_bound[k] / node.area * (1. + 1e-12))
+        const bool inside = trial.norm() <= bound * (1. + 1e-12);
+        if (old_state == NodeState::slip && slip * direction > gap_tolerance)
+        {
+          // The node slid along the friction force it was given, which Coulomb's law forbids.
+          // Either it slides the other way or it sticks; the trial decides with c as the
+          // estimate of its tangential stiffness. But the slip of a node is coupled to that of
+          // its neighbours and to a torque-driven hub, so c can be far off: a pair whose true
+          // state is stick then flips between the two slip directions forever. A node reverses
+          // once per load step; after that it sticks, and leaves stick only along its stick
+          // force, the direction that is consistent for an uncoupled node.
+          if (!inside && pair.reversals[k] == 0)
+          {
+            new_state = NodeState::slip;
+            direction = trial / trial.norm();
+            ++pair.reversals[k];
+          }
+          else
+            new_state = NodeState::stick;
+        }
+        else if (inside)
           new_state = NodeState::stick;
         else
         {
@@ -351,6 +385,11 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
         node_changed = node_changed || direction * pair.friction_direction[k] < 1. - 1e-10;
         pair.friction_direction[k] = direction;
       }
+      // An opened node forgets its bound: closing again, it gets one from its trial pressure,
+      // not the stale μ λ_n of its earlier contact (which made a node at the edge of the
+      // contact close in stick, pull, open and penetrate in turn).
+      if (new_state == NodeState::open)
+        pair.friction_bound[k] = -1.;
       pair.state[k] = new_state;
       changed += node_changed ? 1 : 0;
     }
@@ -360,7 +399,7 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
 template <int dim>
 double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residual)
 {
-  if (parameters.friction_coefficient == 0.)
+  if (friction == 0.)
     return 0.;
   double largest_normal_force = 0., largest_change = 0.;
   for (auto& pair : pairs)
@@ -372,12 +411,40 @@ double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residua
       const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
       largest_normal_force = std::max(largest_normal_force, normal_force);
       const double bound =
-          pair.state[k] == NodeState::open ? -1. : parameters.friction_coefficient * normal_force;
+          pair.state[k] == NodeState::open ? -1. : friction * normal_force;
       if (pair.state[k] != NodeState::open)
         largest_change = std::max(largest_change, std::abs(bound - pair.friction_bound[k]));
       pair.friction_bound[k] = bound;
     }
   return largest_normal_force > 0. ? largest_change / largest_normal_force : 0.;
+}
+
+template <int dim>
+void ContactProblem<dim>::start_friction(const Vector<double>& residual)
+{
+  friction = parameters.friction_coefficient;
+  const double gap_tolerance = 1e-12 * characteristic_length;
+  for (auto& pair : pairs)
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+    {
+      if (pair.state[k] == NodeState::open)
+        continue;
+      const SlaveNode<dim>& node = pair.nodes[k];
+      Tensor<1, dim> force;
+      for (unsigned int c = 0; c < dim; ++c)
+        force[c] = residual[node.node.dofs[c]];
+      pair.friction_bound[k] = friction * std::max(-(force * node.normal), 0.);
+      Tensor<1, dim> slip =
+          relative_displacement(node, displacement) - relative_displacement(node, step_start);
+      slip -= (slip * node.normal) * node.normal;
+      if (slip.norm() > gap_tolerance)
+      {
+        pair.state[k] = NodeState::slip;
+        pair.friction_direction[k] = -slip / slip.norm();
+      }
+      else
+        pair.state[k] = NodeState::stick;
+    }
 }
 
 template <int dim>
@@ -387,11 +454,23 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
   result.history.clear();
   result.active_set_iterations = 0;
   result.load_steps = parameters.load_steps;
+  const double mu = parameters.friction_coefficient;
+  // With friction, the first load step starts frictionless: its converged contact zone and slip
+  // give the frictional iteration a start close to its answer (at the gears' μ = 0.01 the slip
+  // directions and zone hardly change), where starting every closed node in stick made the
+  // whole zone swing between stick and slip. A body held only by friction has no frictionless
+  // equilibrium; the step then starts again with the closed nodes in stick.
+  friction = 0.;
+  std::vector<std::vector<NodeState>> initial_states;
+  for (const auto& pair : pairs)
+    initial_states.push_back(pair.state);
   Vector<double> residual;
   for (unsigned int step = 1; step <= parameters.load_steps; ++step)
   {
     const double load_factor = static_cast<double>(step) / parameters.load_steps;
     elastic.set_load_factor(load_factor);
+    for (auto& pair : pairs)
+      std::fill(pair.reversals.begin(), pair.reversals.end(), 0u);
     std::map<std::string, unsigned int> visited; // state signature -> times seen
     bool converged = false;
     unsigned int last_changes = 0;
@@ -400,9 +479,30 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
       const AffineConstraints<double> constraints = make_constraints(load_factor);
       const Vector<double> loads = make_point_loads(load_factor);
       fem::LinearSolveStatistics statistics;
-      displacement = elastic.solve(constraints, loads, statistics);
+      try
+      {
+        displacement = elastic.solve(constraints, loads, statistics);
+      }
+      catch (const SolverFailure&)
+      {
+        if (friction > 0. || mu == 0.)
+          throw;
+        friction = mu;
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+            pairs[p].state[k] =
+                initial_states[p][k] == NodeState::open ? NodeState::open : NodeState::stick;
+        visited.clear();
+        continue;
+      }
       residual = elastic.residual(displacement);
-      const unsigned int changes = update_states(residual);
+      unsigned int changes = update_states(residual);
+      if (changes == 0 && friction == 0. && mu > 0.)
+      {
+        start_friction(residual);
+        changes = 1; // a new problem: not converged
+        visited.clear();
+      }
       // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
       const double friction_change = changes == 0 ? update_friction_bounds(residual) : 1.;
       ++result.active_set_iterations;

@@ -10,14 +10,18 @@
 //          slip direction, with λ_n from the previous iterate (a fixed point on the Coulomb bound,
 //          which contracts at a rate of order μ).
 // The Coulomb bound μ λ_n is held fixed while the stick/slip/open states of that Tresca problem
-// converge, then updated from the new λ_n (successive Tresca approximations).
+// converge, then updated from the new λ_n (successive Tresca approximations). The first load
+// step starts frictionless; its converged zone and slip give the initial stick/slip states.
 // Multipliers are the residual r = K u − f at the slave nodes; every linear system is a
 // symmetric positive definite solve. A node opens when its normal force turns tensile and closes
-// when it penetrates; a sticking node slips when |λ_τ − c·s| > μ λ_n with c = E/h, which only
-// steers the iteration: the converged state satisfies the contact conditions exactly, so no
-// result depends on a user-tuned penalty. The iteration ends when the state repeats and the
-// friction forces have converged; a state met three times (cycling) or the iteration limit is
-// a SolverFailure, so is a body left free to move.
+// when it penetrates; a sticking node slips when |λ_τ| > μ λ_n, along λ_τ; a slipping node that
+// slid along its own friction force reverses once per load step if |λ_τ − c·s| > μ λ_n
+// (c ≈ E/(10 h)), and sticks otherwise. c only steers the iteration: the converged state
+// satisfies the contact conditions exactly, so no result depends on a user-tuned penalty. The
+// initial active set is the nodes touching in the reference configuration, or those at the
+// smallest gap when none touches. The iteration ends when the state repeats and the friction
+// forces have converged; a state met three times (cycling) or the iteration limit is a
+// SolverFailure, so is a body left free to move.
 #pragma once
 
 #include "contact/mortar.h"
@@ -164,6 +168,8 @@ private:
     std::vector<dealii::Tensor<1, dim>> friction_direction; // unit, force on the slave
     // N, the slip-force bound μ λ_n of the current Tresca subproblem; negative: not yet set.
     std::vector<double> friction_bound;
+    // -, slip-direction reversals of each node in the current load step.
+    std::vector<unsigned int> reversals;
   };
   struct Support
   {
@@ -187,6 +193,9 @@ private:
   // Sets the friction bounds to μ λ_n of the latest solution; returns their largest change
   // relative to the largest normal force.
   double update_friction_bounds(const dealii::Vector<double>& residual);
+  // Switches the friction on after a frictionless start: closed nodes slip against their
+  // frictionless slip (stick where it vanishes), bounded by μ λ_n of that solution.
+  void start_friction(const dealii::Vector<double>& residual);
   void collect_results(const dealii::Vector<double>& residual);
   // Relative tangential displacement (slave − master) of a node, m.
   dealii::Tensor<1, dim> relative_displacement(const SlaveNode<dim>& node,
@@ -201,6 +210,7 @@ private:
   dealii::Vector<double> step_start;      // m, converged solution of the previous step
   dealii::Vector<double> residual_forces; // N, r = K u − f of the converged solution
   double characteristic_length = 1.;      // m, mesh diameter
+  double friction = 0.;                   // -, μ in force (0 during a frictionless start)
   ContactResults<dim> result;
 };
 } // namespace gearstiff::contact

@@ -173,7 +173,7 @@ template <int dim>
 void GearMeshStiffness<dim>::make_scene()
 {
   const std::vector<double> scene = run_on_root(
-      mpi_communicator, 6,
+      mpi_communicator, 5,
       [this]()
       {
         const geometry::SceneInfo info =
@@ -186,11 +186,8 @@ void GearMeshStiffness<dim>::make_scene()
           if (q.key == "pairs_in_contact")
             pairs = q.value;
         }
-        double largest_gap = 0.;
-        for (const auto& contact : info.contacts)
-          largest_gap = std::max(largest_gap, contact.gap);
-        return std::vector<double>{info.first_rotation, info.second_rotation, reference,  pairs,
-                                   info.contact_size,   info.time_total,      largest_gap};
+        return std::vector<double>{info.first_rotation, info.second_rotation, reference,
+                                   pairs,               info.contact_size,    info.time_total};
       });
   pinion_rotation_angle = scene[0];
   wheel_rotation_angle = scene[1];
@@ -198,49 +195,11 @@ void GearMeshStiffness<dim>::make_scene()
   result.kinematic_pairs = static_cast<unsigned int>(scene[3]);
   result.contact_size = scene[4];
   result.scene_time = scene[5];
-  outline_gap = scene[6];
   result.pinion_base_radius = 0.5 * pair.pinion.base_diameter;
   result.wheel_base_radius = 0.5 * pair.wheel.base_diameter;
   result.pinion_roll_angle = result.reference_position / result.pinion_base_radius;
   result.mesh_position =
       (result.reference_position - pair.contact_start) / pair.transverse_base_pitch;
-}
-
-template <int dim>
-void GearMeshStiffness<dim>::close_initial_gap(Triangulation<dim>& tria)
-{
-  // The scene places the flank outlines touching at the contact points, but the mesh replaces
-  // them by chords, which leaves gaps of up to h_c²/(8ρ) per surface. A torque-driven pinion held
-  // only by contact needs a closed node in the first solve, so the pinion is turned forward until
-  // the chords overlap slightly: by the outline gap plus twice the chord sag of the sharpest
-  // contact (ρ_eff = ρ1ρ2/(ρ1 + ρ2), ρ the involute curvature radii ℓ and T1T2 − ℓ). The
-  // rotation is taken out again in evaluate() from the measured initial gaps, so the result does
-  // not depend on it.
-  double sharpest = std::numeric_limits<double>::max();
-  for (int j = -3; j <= 3; ++j)
-  {
-    const double position = result.reference_position + j * pair.transverse_base_pitch;
-    if (position < pair.contact_start - 1e-9 || position > pair.contact_end + 1e-9)
-      continue;
-    const double rho_1 = position, rho_2 = pair.line_of_action_length - position;
-    sharpest = std::min(sharpest, rho_1 * rho_2 / (rho_1 + rho_2));
-  }
-  const double h = result.contact_size;
-  const double overlap = std::max(outline_gap, 0.) + h * h / (4. * sharpest);
-  pre_rotation = overlap / result.pinion_base_radius;
-  const double c = std::cos(pre_rotation), s = std::sin(pre_rotation);
-  std::vector<bool> moved(tria.n_vertices(), false);
-  for (const auto& cell : tria.active_cell_iterators())
-    if (cell->material_id() == geometry::scene_ids::pinion_body)
-      for (const unsigned int v : cell->vertex_indices())
-        if (!moved[cell->vertex_index(v)])
-        {
-          Point<dim>& p = cell->vertex(v);
-          const double x = p[0], y = p[1];
-          p[0] = c * x - s * y;
-          p[1] = s * x + c * y;
-          moved[cell->vertex_index(v)] = true;
-        }
 }
 
 template <int dim>
@@ -250,7 +209,6 @@ void GearMeshStiffness<dim>::setup_problem()
                                                   settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
   fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
-  close_initial_gap(tria);
   problem->system().set_materials({{geometry::scene_ids::pinion_body, settings.material},
                                    {geometry::scene_ids::wheel_body, settings.material}},
                                   "material");
@@ -284,7 +242,8 @@ void GearMeshStiffness<dim>::setup_problem()
       (pinion ? pinion_teeth : wheel_teeth).insert(j);
     }
 
-  // A modelled pair becomes a contact pair when it lies on the path of contact A..E. Pairs
+  // A modelled pair becomes a contact pair when it lies inside the path of contact A..E (the
+  // scene's rule: at A or E itself a pair meets at a tip corner and carries no load). Pairs
   // outside it could only touch by tip-corner contact under a deflection larger than their
   // gap, which the small-sliding mortar pairing (normal projection onto the mate's flank,
   // which ends at the tip) does not represent; they stay free surfaces.
@@ -293,8 +252,8 @@ void GearMeshStiffness<dim>::setup_problem()
   {
     const double position = result.reference_position + j * pair.transverse_base_pitch;
     const double tolerance = 1e-9; // m: the zone ends and positions share their formulas
-    if (wheel_teeth.count(j) == 0 || position < pair.contact_start - tolerance ||
-        position > pair.contact_end + tolerance)
+    if (wheel_teeth.count(j) == 0 || position <= pair.contact_start + tolerance ||
+        position >= pair.contact_end - tolerance)
       continue;
     ToothPairLoad load;
     load.pair = j;
@@ -337,9 +296,10 @@ void GearMeshStiffness<dim>::evaluate()
   const SupportResult<dim>& wheel_hub = contact.supports.at(1);
   result.pinion_torque = settings.pinion_torque;
   // Rotation from the unloaded touching configuration: every normal gap of an involute flank
-  // closes by r_b1 per radian of pinion rotation (its normals are tangent to the base circle),
-  // so the smallest initial gap g_min (negative: the overlap made by close_initial_gap) moves
-  // the touching configuration by g_min/r_b1 from the meshed one.
+  // closes by r_b1 per radian of pinion rotation (its normals are tangent to the base circle).
+  // The meshed flanks are chords of the outlines and touch only after the pinion has turned by
+  // g_min/r_b1 (g_min the smallest initial gap of the mortar nodes; the contact solve starts
+  // with those nodes closed), which is no deflection and is taken out.
   double smallest_gap = std::numeric_limits<double>::max();
   for (const auto& pair_result : contact.pairs)
     for (const auto& point : pair_result.points)

@@ -116,7 +116,6 @@ public:
 private:
   void make_scene();
   void setup_problem();
-  void close_initial_gap(dealii::Triangulation<dim>& tria);
   void solve();
   void evaluate();
   void output_results();
@@ -127,8 +126,6 @@ private:
   std::vector<ToothPairLoad> candidate_pairs; // pairs given to the contact problem
   double pinion_rotation_angle = 0.;          // rad, scene rotation of the pinion profile
   double wheel_rotation_angle = 0.;           // rad
-  double outline_gap = 0.;  // m, largest gap between the placed outlines at the contacts
-  double pre_rotation = 0.; // rad, pinion turned forward to close the meshed gap
   std::unique_ptr<ContactProblem<dim>> problem; // owned
   GearMeshStiffnessResult result;
 };

@@ -343,8 +343,10 @@ SceneInfo write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string
   for (int j = -3; j <= 3; ++j)
   {
     const double position = reference + j * pair.transverse_base_pitch;
-    if (position >= pair.contact_start - path_tolerance &&
-        position <= pair.contact_end + path_tolerance)
+    // A pair at an end of the path (A or E, to round-off) touches only at a tip corner, which
+    // the flank outlines cannot place: it is leaving or entering contact and carries no load.
+    if (position > pair.contact_start + path_tolerance &&
+        position < pair.contact_end - path_tolerance)
       contacting.push_back(j);
   }
   if (contacting.empty())
