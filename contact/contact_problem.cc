@@ -318,6 +318,7 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
   const double stiffness = 0.1 * elastic.max_youngs_modulus(); // Pa
 
   unsigned int changed = 0;
+  direction_change = 0.;
   for (auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
@@ -382,7 +383,14 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
       bool node_changed = new_state != old_state;
       if (new_state == NodeState::slip && mu > 0.)
       {
-        node_changed = node_changed || direction * pair.friction_direction[k] < 1. - 1e-10;
+        // A reversal is a change of state; in 3D the direction also turns within the tangent
+        // plane, which converges as a fixed point with the bounds (direction_change).
+        node_changed = node_changed || direction * pair.friction_direction[k] < 0.;
+        if (old_state == NodeState::slip && largest_normal_force > 0.)
+          direction_change =
+              std::max(direction_change, pair.friction_bound[k] *
+                                             (direction - pair.friction_direction[k]).norm() /
+                                             largest_normal_force);
         pair.friction_direction[k] = direction;
       }
       // An opened node forgets its bound: closing again, it gets one from its trial pressure,
@@ -504,7 +512,8 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
         visited.clear();
       }
       // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
-      const double friction_change = changes == 0 ? update_friction_bounds(residual) : 1.;
+      const double friction_change =
+          changes == 0 ? std::max(update_friction_bounds(residual), direction_change) : 1.;
       ++result.active_set_iterations;
       result.assembly_time += statistics.assembly_time;
       result.solve_time += statistics.solve_time;

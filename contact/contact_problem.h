@@ -211,6 +211,9 @@ private:
   dealii::Vector<double> residual_forces; // N, r = K u − f of the converged solution
   double characteristic_length = 1.;      // m, mesh diameter
   double friction = 0.;                   // -, μ in force (0 during a frictionless start)
+  // -, largest turn of a slip force in the last update_states, relative to the largest normal
+  // force (3D: slip directions converge as a fixed point with the bounds).
+  double direction_change = 0.;
   ContactResults<dim> result;
 };
 } // namespace gearstiff::contact
