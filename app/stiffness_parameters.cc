@@ -243,7 +243,7 @@ void report_stiffness_position(Report& report, const contact::GearMeshStiffnessR
         label + ": load share of tooth pair " + std::to_string(pair.pair) + " (at " +
             format_number(pair.position * 1e3, 5) + " mm from T1)");
   report.add_value(prefix + "max_contact_pressure", r.max_contact_pressure / 1e6, "MPa",
-                   label + ": largest contact pressure");
+                   label + ": largest nodal contact pressure (Q2: an estimate, docs/accuracy.md)");
   report.add_value(prefix + "pinion_root_stress", r.pinion_root_stress / 1e6, "MPa",
                    label + ": largest first principal stress on the pinion fillets");
   report.add_value(prefix + "wheel_root_stress", r.wheel_root_stress / 1e6, "MPa",
