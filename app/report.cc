@@ -10,273 +10,280 @@
 
 namespace gearstiff::app
 {
-  void ReportTable::add_row(const std::vector<double>& row)
-  {
-    if (row.size() != columns.size())
-      throw std::logic_error("table '" + name + "': row has " + std::to_string(row.size()) +
-                             " entries, expected " + std::to_string(columns.size()));
-    rows.push_back(row);
-  }
+void ReportTable::add_row(const std::vector<double>& row)
+{
+  if (row.size() != columns.size())
+    throw std::logic_error("table '" + name + "': row has " + std::to_string(row.size()) +
+                           " entries, expected " + std::to_string(columns.size()));
+  rows.push_back(row);
+}
 
-  void Report::add_value(const std::string& key, double value, const std::string& unit,
-                         const std::string& description)
-  {
-    ReportValue v;
-    v.key = key;
-    v.value = value;
-    v.unit = unit;
-    v.description = description;
-    value_list.push_back(v);
-  }
+void Report::add_value(const std::string& key, double value, const std::string& unit,
+                       const std::string& description)
+{
+  ReportValue v;
+  v.key = key;
+  v.value = value;
+  v.unit = unit;
+  v.description = description;
+  value_list.push_back(v);
+}
 
-  void Report::add_compared_value(const std::string& key, double value, double reference,
-                                  const std::string& unit, const std::string& description,
-                                  const std::string& reference_source)
-  {
-    add_value(key, value, unit, description);
-    value_list.back().reference = reference;
-    value_list.back().reference_source = reference_source;
-  }
+void Report::add_compared_value(const std::string& key, double value, double reference,
+                                const std::string& unit, const std::string& description,
+                                const std::string& reference_source)
+{
+  add_value(key, value, unit, description);
+  value_list.back().reference = reference;
+  value_list.back().reference_source = reference_source;
+}
 
-  void Report::add_text(const std::string& key, const std::string& text)
-  {
-    text_list.emplace_back(key, text);
-  }
+void Report::add_text(const std::string& key, const std::string& text)
+{
+  text_list.emplace_back(key, text);
+}
 
-  ReportTable& Report::add_table(const std::string& name, const std::vector<std::string>& columns,
-                                 const std::vector<std::string>& units)
-  {
-    if (columns.size() != units.size())
-      throw std::logic_error("table '" + name + "': columns and units differ in number");
-    table_list.push_back(ReportTable{name, columns, units, {}});
-    return table_list.back();
-  }
+ReportTable& Report::add_table(const std::string& name, const std::vector<std::string>& columns,
+                               const std::vector<std::string>& units)
+{
+  if (columns.size() != units.size())
+    throw std::logic_error("table '" + name + "': columns and units differ in number");
+  table_list.push_back(ReportTable{name, columns, units, {}});
+  return table_list.back();
+}
 
-  void Report::add_output_file(const std::string& file, const std::string& description)
-  {
-    output_file_list.emplace_back(file, description);
-  }
+void Report::add_output_file(const std::string& file, const std::string& description)
+{
+  output_file_list.emplace_back(file, description);
+}
 
-  const ReportValue* Report::find_value(const std::string& key) const
+const ReportValue* Report::find_value(const std::string& key) const
+{
+  for (const auto& v : value_list)
+    if (v.key == key)
+      return &v;
+  return nullptr;
+}
+
+namespace
+{
+// Characters shown, not bytes: labels carry UTF-8 symbols (α, ε, ·) and std::setw pads by
+// bytes, which would shift the value column.
+std::size_t display_width(const std::string& text)
+{
+  std::size_t width = 0;
+  for (const unsigned char c : text)
+    width += (c & 0xC0) != 0x80;
+  return width;
+}
+
+std::string pad(const std::string& text, std::size_t width)
+{
+  const std::size_t shown = display_width(text);
+  return shown >= width ? text : text + std::string(width - shown, ' ');
+}
+
+std::string format_number(double x)
+{
+  if (!std::isfinite(x))
+    return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+  std::ostringstream s;
+  const double a = std::abs(x);
+  if (a != 0. && (a >= 1e7 || a < 1e-3))
+    s << std::scientific << std::setprecision(5) << x;
+  else
+    s << std::setprecision(7) << x;
+  return s.str();
+}
+} // namespace
+
+void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
+{
+  std::size_t label_width = 0;
+  for (const auto& v : value_list)
+    label_width = std::max(label_width, display_width(v.description));
+  std::size_t key_width = 0;
+  for (const auto& t : text_list)
+    key_width = std::max(key_width, display_width(t.first));
+
+  for (const auto& t : text_list)
+    out << pad(t.first, key_width + 2) << t.second << '\n';
+  if (!text_list.empty())
+    out << '\n';
+
+  bool any_reference = false;
+  for (const auto& v : value_list)
+    any_reference = any_reference || !std::isnan(v.reference);
+
+  if (!value_list.empty())
   {
+    out << pad("quantity", label_width + 2) << std::right << std::setw(14) << "value"
+        << "  " << pad("unit", 12);
+    if (any_reference)
+      out << std::right << std::setw(14) << "published" << std::setw(11) << "deviation"
+          << "  source";
+    out << '\n';
     for (const auto& v : value_list)
-      if (v.key == key)
-        return &v;
-    return nullptr;
-  }
-
-  namespace
-  {
-    // Characters shown, not bytes: labels carry UTF-8 symbols (α, ε, ·) and std::setw pads by
-    // bytes, which would shift the value column.
-    std::size_t display_width(const std::string& text)
     {
-      std::size_t width = 0;
-      for (const unsigned char c : text)
-        width += (c & 0xC0) != 0x80;
-      return width;
-    }
-
-    std::string pad(const std::string& text, std::size_t width)
-    {
-      const std::size_t shown = display_width(text);
-      return shown >= width ? text : text + std::string(width - shown, ' ');
-    }
-
-    std::string format_number(double x)
-    {
-      if (!std::isfinite(x))
-        return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
-      std::ostringstream s;
-      const double a = std::abs(x);
-      if (a != 0. && (a >= 1e7 || a < 1e-3))
-        s << std::scientific << std::setprecision(5) << x;
-      else
-        s << std::setprecision(7) << x;
-      return s.str();
-    }
-  } // namespace
-
-  void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
-  {
-    std::size_t label_width = 0;
-    for (const auto& v : value_list)
-      label_width = std::max(label_width, display_width(v.description));
-    std::size_t key_width = 0;
-    for (const auto& t : text_list)
-      key_width = std::max(key_width, display_width(t.first));
-
-    for (const auto& t : text_list)
-      out << pad(t.first, key_width + 2) << t.second << '\n';
-    if (!text_list.empty())
-      out << '\n';
-
-    bool any_reference = false;
-    for (const auto& v : value_list)
-      any_reference = any_reference || !std::isnan(v.reference);
-
-    if (!value_list.empty())
-    {
-      out << pad("quantity", label_width + 2) << std::right
-          << std::setw(14) << "value" << "  " << pad("unit", 12);
-      if (any_reference)
-        out << std::right << std::setw(14) << "published" << std::setw(11) << "deviation"
-            << "  source";
-      out << '\n';
-      for (const auto& v : value_list)
-      {
-        out << pad(v.description, label_width + 2) << std::right
-            << std::setw(14) << format_number(v.value) << "  " << pad(v.unit, 12);
-        if (!std::isnan(v.reference))
-        {
-          const double deviation =
-            v.reference != 0. ? (v.value - v.reference) / std::abs(v.reference) : v.value;
-          std::ostringstream d;
-          d << std::showpos << std::fixed << std::setprecision(2) << 100. * deviation << " %";
-          out << std::right << std::setw(14) << format_number(v.reference) << std::setw(11)
-              << d.str() << "  " << v.reference_source;
-        }
-        out << '\n';
-      }
-    }
-
-    for (const auto& table : table_list)
-    {
-      out << '\n' << table.name << " (" << table.rows.size() << " rows)\n";
-      std::vector<std::size_t> widths;
-      for (std::size_t c = 0; c < table.columns.size(); ++c)
-        widths.push_back(std::max<std::size_t>(
-          13, std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
-      for (std::size_t c = 0; c < table.columns.size(); ++c)
-        out << std::right << std::setw(widths[c]) << table.columns[c];
-      out << '\n';
-      for (std::size_t c = 0; c < table.columns.size(); ++c)
-        out << std::right << std::setw(widths[c]) << ("[" + table.units[c] + "]");
-      out << '\n';
-      std::size_t printed = 0;
-      for (const auto& row : table.rows)
-      {
-        if (printed++ == max_table_rows)
-        {
-          out << "  ... " << table.rows.size() - max_table_rows
-              << " more rows (use -o DIR for the CSV, or --json)\n";
-          break;
-        }
-        for (std::size_t c = 0; c < row.size(); ++c)
-          out << std::right << std::setw(widths[c]) << format_number(row[c]);
-        out << '\n';
-      }
-    }
-
-    if (!output_file_list.empty())
-    {
-      out << "\nfiles written:\n";
-      for (const auto& f : output_file_list)
-        out << "  " << std::left << std::setw(32) << f.first << f.second << '\n';
-    }
-  }
-
-  std::string json_escape(const std::string& text)
-  {
-    std::ostringstream s;
-    s << '"';
-    for (const char c : text)
-    {
-      switch (c)
-      {
-        case '"': s << "\\\""; break;
-        case '\\': s << "\\\\"; break;
-        case '\n': s << "\\n"; break;
-        case '\t': s << "\\t"; break;
-        default:
-          if (static_cast<unsigned char>(c) < 0x20)
-            s << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
-          else
-            s << c;
-      }
-    }
-    s << '"';
-    return s.str();
-  }
-
-  std::string json_number(double value)
-  {
-    if (!std::isfinite(value))
-      return "null"; // JSON has no NaN/inf; a null is never mistaken for a result
-    std::ostringstream s;
-    s << std::setprecision(12) << value;
-    return s.str();
-  }
-
-  void Report::print_json(std::ostream& out, const std::string& command) const
-  {
-    out << "{\n  \"command\": " << json_escape(command) << ",\n  \"text\": {";
-    for (std::size_t i = 0; i < text_list.size(); ++i)
-      out << (i ? ",\n    " : "\n    ") << json_escape(text_list[i].first) << ": "
-          << json_escape(text_list[i].second);
-    out << (text_list.empty() ? "" : "\n  ") << "},\n  \"values\": {";
-    for (std::size_t i = 0; i < value_list.size(); ++i)
-    {
-      const auto& v = value_list[i];
-      out << (i ? ",\n    " : "\n    ") << json_escape(v.key) << ": {\"value\": "
-          << json_number(v.value) << ", \"unit\": " << json_escape(v.unit)
-          << ", \"description\": " << json_escape(v.description);
+      out << pad(v.description, label_width + 2) << std::right << std::setw(14)
+          << format_number(v.value) << "  " << pad(v.unit, 12);
       if (!std::isnan(v.reference))
-        out << ", \"published\": " << json_number(v.reference)
-            << ", \"relative_deviation\": "
-            << json_number(v.reference != 0. ? (v.value - v.reference) / std::abs(v.reference)
-                                             : v.value)
-            << ", \"source\": " << json_escape(v.reference_source);
-      out << "}";
-    }
-    out << (value_list.empty() ? "" : "\n  ") << "},\n  \"tables\": {";
-    for (std::size_t t = 0; t < table_list.size(); ++t)
-    {
-      const auto& table = table_list[t];
-      out << (t ? ",\n    " : "\n    ") << json_escape(table.name) << ": {\"columns\": [";
-      for (std::size_t c = 0; c < table.columns.size(); ++c)
-        out << (c ? ", " : "") << json_escape(table.columns[c]);
-      out << "], \"units\": [";
-      for (std::size_t c = 0; c < table.units.size(); ++c)
-        out << (c ? ", " : "") << json_escape(table.units[c]);
-      out << "], \"rows\": [";
-      for (std::size_t r = 0; r < table.rows.size(); ++r)
       {
-        out << (r ? ", [" : "[");
-        for (std::size_t c = 0; c < table.rows[r].size(); ++c)
-          out << (c ? ", " : "") << json_number(table.rows[r][c]);
-        out << "]";
+        const double deviation =
+            v.reference != 0. ? (v.value - v.reference) / std::abs(v.reference) : v.value;
+        std::ostringstream d;
+        d << std::showpos << std::fixed << std::setprecision(2) << 100. * deviation << " %";
+        out << std::right << std::setw(14) << format_number(v.reference) << std::setw(11) << d.str()
+            << "  " << v.reference_source;
       }
-      out << "]}";
+      out << '\n';
     }
-    out << (table_list.empty() ? "" : "\n  ") << "},\n  \"files\": [";
-    for (std::size_t i = 0; i < output_file_list.size(); ++i)
-      out << (i ? ", " : "") << json_escape(output_file_list[i].first);
-    out << "]\n}\n";
   }
 
-  void Report::write_table_csv(const ReportTable& table, std::ostream& out) const
+  for (const auto& table : table_list)
   {
+    out << '\n' << table.name << " (" << table.rows.size() << " rows)\n";
+    std::vector<std::size_t> widths;
     for (std::size_t c = 0; c < table.columns.size(); ++c)
-      out << (c ? "," : "") << table.columns[c] << " [" << table.units[c] << "]";
-    out << '\n' << std::setprecision(12);
+      widths.push_back(std::max<std::size_t>(
+          13, std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+      out << std::right << std::setw(widths[c]) << table.columns[c];
+    out << '\n';
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+      out << std::right << std::setw(widths[c]) << ("[" + table.units[c] + "]");
+    out << '\n';
+    std::size_t printed = 0;
     for (const auto& row : table.rows)
     {
+      if (printed++ == max_table_rows)
+      {
+        out << "  ... " << table.rows.size() - max_table_rows
+            << " more rows (use -o DIR for the CSV, or --json)\n";
+        break;
+      }
       for (std::size_t c = 0; c < row.size(); ++c)
-        out << (c ? "," : "") << row[c];
+        out << std::right << std::setw(widths[c]) << format_number(row[c]);
       out << '\n';
     }
   }
 
-  std::string temporary_csv(const Report& report, const std::string& table_name)
+  if (!output_file_list.empty())
   {
-    const std::string path = (std::filesystem::temp_directory_path() /
-                              ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
-                               .string();
-    std::ofstream out(path);
-    for (const auto& table : report.tables())
-      if (table.name == table_name)
-        report.write_table_csv(table, out);
-    return path;
+    out << "\nfiles written:\n";
+    for (const auto& f : output_file_list)
+      out << "  " << std::left << std::setw(32) << f.first << f.second << '\n';
   }
+}
+
+std::string json_escape(const std::string& text)
+{
+  std::ostringstream s;
+  s << '"';
+  for (const char c : text)
+  {
+    switch (c)
+    {
+    case '"':
+      s << "\\\"";
+      break;
+    case '\\':
+      s << "\\\\";
+      break;
+    case '\n':
+      s << "\\n";
+      break;
+    case '\t':
+      s << "\\t";
+      break;
+    default:
+      if (static_cast<unsigned char>(c) < 0x20)
+        s << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+      else
+        s << c;
+    }
+  }
+  s << '"';
+  return s.str();
+}
+
+std::string json_number(double value)
+{
+  if (!std::isfinite(value))
+    return "null"; // JSON has no NaN/inf; a null is never mistaken for a result
+  std::ostringstream s;
+  s << std::setprecision(12) << value;
+  return s.str();
+}
+
+void Report::print_json(std::ostream& out, const std::string& command) const
+{
+  out << "{\n  \"command\": " << json_escape(command) << ",\n  \"text\": {";
+  for (std::size_t i = 0; i < text_list.size(); ++i)
+    out << (i ? ",\n    " : "\n    ") << json_escape(text_list[i].first) << ": "
+        << json_escape(text_list[i].second);
+  out << (text_list.empty() ? "" : "\n  ") << "},\n  \"values\": {";
+  for (std::size_t i = 0; i < value_list.size(); ++i)
+  {
+    const auto& v = value_list[i];
+    out << (i ? ",\n    " : "\n    ") << json_escape(v.key)
+        << ": {\"value\": " << json_number(v.value) << ", \"unit\": " << json_escape(v.unit)
+        << ", \"description\": " << json_escape(v.description);
+    if (!std::isnan(v.reference))
+      out << ", \"published\": " << json_number(v.reference) << ", \"relative_deviation\": "
+          << json_number(v.reference != 0. ? (v.value - v.reference) / std::abs(v.reference)
+                                           : v.value)
+          << ", \"source\": " << json_escape(v.reference_source);
+    out << "}";
+  }
+  out << (value_list.empty() ? "" : "\n  ") << "},\n  \"tables\": {";
+  for (std::size_t t = 0; t < table_list.size(); ++t)
+  {
+    const auto& table = table_list[t];
+    out << (t ? ",\n    " : "\n    ") << json_escape(table.name) << ": {\"columns\": [";
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+      out << (c ? ", " : "") << json_escape(table.columns[c]);
+    out << "], \"units\": [";
+    for (std::size_t c = 0; c < table.units.size(); ++c)
+      out << (c ? ", " : "") << json_escape(table.units[c]);
+    out << "], \"rows\": [";
+    for (std::size_t r = 0; r < table.rows.size(); ++r)
+    {
+      out << (r ? ", [" : "[");
+      for (std::size_t c = 0; c < table.rows[r].size(); ++c)
+        out << (c ? ", " : "") << json_number(table.rows[r][c]);
+      out << "]";
+    }
+    out << "]}";
+  }
+  out << (table_list.empty() ? "" : "\n  ") << "},\n  \"files\": [";
+  for (std::size_t i = 0; i < output_file_list.size(); ++i)
+    out << (i ? ", " : "") << json_escape(output_file_list[i].first);
+  out << "]\n}\n";
+}
+
+void Report::write_table_csv(const ReportTable& table, std::ostream& out) const
+{
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out << (c ? "," : "") << table.columns[c] << " [" << table.units[c] << "]";
+  out << '\n' << std::setprecision(12);
+  for (const auto& row : table.rows)
+  {
+    for (std::size_t c = 0; c < row.size(); ++c)
+      out << (c ? "," : "") << row[c];
+    out << '\n';
+  }
+}
+
+std::string temporary_csv(const Report& report, const std::string& table_name)
+{
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
+                               .string();
+  std::ofstream out(path);
+  for (const auto& table : report.tables())
+    if (table.name == table_name)
+      report.write_table_csv(table, out);
+  return path;
+}
 } // namespace gearstiff::app

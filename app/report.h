@@ -13,63 +13,63 @@
 
 namespace gearstiff::app
 {
-  struct ReportValue
-  {
-    std::string key;         // machine name, snake_case (JSON key)
-    double value = 0.;       // in `unit`
-    std::string unit;        // as printed, e.g. "mm", "N/m", "-"
-    std::string description; // human label
-    // Optional published reference value to print beside the computed one (NaN: none).
-    double reference = std::numeric_limits<double>::quiet_NaN();
-    std::string reference_source;
-  };
+struct ReportValue
+{
+  std::string key;         // machine name, snake_case (JSON key)
+  double value = 0.;       // in `unit`
+  std::string unit;        // as printed, e.g. "mm", "N/m", "-"
+  std::string description; // human label
+  // Optional published reference value to print beside the computed one (NaN: none).
+  double reference = std::numeric_limits<double>::quiet_NaN();
+  std::string reference_source;
+};
 
-  struct ReportTable
-  {
-    std::string name;                      // also the CSV file name (name.csv)
-    std::vector<std::string> columns;      // snake_case column names
-    std::vector<std::string> units;        // one per column
-    std::vector<std::vector<double>> rows; // each row has columns.size() entries
-    void add_row(const std::vector<double>& row);
-  };
+struct ReportTable
+{
+  std::string name;                      // also the CSV file name (name.csv)
+  std::vector<std::string> columns;      // snake_case column names
+  std::vector<std::string> units;        // one per column
+  std::vector<std::vector<double>> rows; // each row has columns.size() entries
+  void add_row(const std::vector<double>& row);
+};
 
-  class Report
-  {
-  public:
-    void add_value(const std::string& key, double value, const std::string& unit,
-                   const std::string& description);
-    // A computed value beside a published one; the deviation is printed and put in the JSON.
-    void add_compared_value(const std::string& key, double value, double reference,
-                            const std::string& unit, const std::string& description,
-                            const std::string& reference_source);
-    void add_text(const std::string& key, const std::string& text);
-    ReportTable& add_table(const std::string& name, const std::vector<std::string>& columns,
-                           const std::vector<std::string>& units);
-    // Files the command wrote (relative to the output directory), listed at the end.
-    void add_output_file(const std::string& file, const std::string& description);
+class Report
+{
+public:
+  void add_value(const std::string& key, double value, const std::string& unit,
+                 const std::string& description);
+  // A computed value beside a published one; the deviation is printed and put in the JSON.
+  void add_compared_value(const std::string& key, double value, double reference,
+                          const std::string& unit, const std::string& description,
+                          const std::string& reference_source);
+  void add_text(const std::string& key, const std::string& text);
+  ReportTable& add_table(const std::string& name, const std::vector<std::string>& columns,
+                         const std::vector<std::string>& units);
+  // Files the command wrote (relative to the output directory), listed at the end.
+  void add_output_file(const std::string& file, const std::string& description);
 
-    void print_text(std::ostream& out, unsigned int max_table_rows = 40) const;
-    void print_json(std::ostream& out, const std::string& command) const;
-    void write_table_csv(const ReportTable& table, std::ostream& out) const;
+  void print_text(std::ostream& out, unsigned int max_table_rows = 40) const;
+  void print_json(std::ostream& out, const std::string& command) const;
+  void write_table_csv(const ReportTable& table, std::ostream& out) const;
 
-    const std::vector<ReportValue>& values() const { return value_list; }
-    const std::deque<ReportTable>& tables() const { return table_list; }
-    const ReportValue* find_value(const std::string& key) const;
+  const std::vector<ReportValue>& values() const { return value_list; }
+  const std::deque<ReportTable>& tables() const { return table_list; }
+  const ReportValue* find_value(const std::string& key) const;
 
-  private:
-    std::vector<ReportValue> value_list;
-    std::vector<std::pair<std::string, std::string>> text_list;
-    // A deque: add_table hands out references that must survive later add_table calls.
-    std::deque<ReportTable> table_list;
-    std::vector<std::pair<std::string, std::string>> output_file_list;
-  };
+private:
+  std::vector<ReportValue> value_list;
+  std::vector<std::pair<std::string, std::string>> text_list;
+  // A deque: add_table hands out references that must survive later add_table calls.
+  std::deque<ReportTable> table_list;
+  std::vector<std::pair<std::string, std::string>> output_file_list;
+};
 
-  // Writes the report's table `table_name` to a temporary CSV for a plot script (the report's CSV
-  // files appear only after the command returns) and returns its path; remove it after plotting.
-  // By name: references into the report's tables do not survive a later add_table.
-  std::string temporary_csv(const Report& report, const std::string& table_name);
+// Writes the report's table `table_name` to a temporary CSV for a plot script (the report's CSV
+// files appear only after the command returns) and returns its path; remove it after plotting.
+// By name: references into the report's tables do not survive a later add_table.
+std::string temporary_csv(const Report& report, const std::string& table_name);
 
-  // JSON string escaping and number formatting shared by every writer in app/.
-  std::string json_escape(const std::string& text);
-  std::string json_number(double value);
+// JSON string escaping and number formatting shared by every writer in app/.
+std::string json_escape(const std::string& text);
+std::string json_number(double value);
 } // namespace gearstiff::app

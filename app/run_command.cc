@@ -102,8 +102,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                             "double-pair pinion rotation Δφ", ansys_source);
 
   // 3. k(θ) sweep and Cai calibration.
-  const contact::StiffnessSweepResult sweep =
-      solve_stiffness_sweep(p, context, "sweep");
+  const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
   add_stiffness_sweep_table(report, sweep, "run_sweep");
   double mean = 0., mean_even = 0.;
   unsigned int n_even = 0;

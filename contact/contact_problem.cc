@@ -418,8 +418,7 @@ double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residua
         force[c] = residual[pair.nodes[k].node.dofs[c]];
       const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
       largest_normal_force = std::max(largest_normal_force, normal_force);
-      const double bound =
-          pair.state[k] == NodeState::open ? -1. : friction * normal_force;
+      const double bound = pair.state[k] == NodeState::open ? -1. : friction * normal_force;
       if (pair.state[k] != NodeState::open)
         largest_change = std::max(largest_change, std::abs(bound - pair.friction_bound[k]));
       pair.friction_bound[k] = bound;

@@ -186,8 +186,8 @@ void GearMeshStiffness<dim>::make_scene()
           if (q.key == "pairs_in_contact")
             pairs = q.value;
         }
-        return std::vector<double>{info.first_rotation, info.second_rotation, reference,
-                                   pairs,               info.contact_size,    info.time_total};
+        return std::vector<double>{info.first_rotation, info.second_rotation, reference, pairs,
+                                   info.contact_size,   info.time_total};
       });
   pinion_rotation_angle = scene[0];
   wheel_rotation_angle = scene[1];

@@ -123,9 +123,9 @@ private:
   MPI_Comm mpi_communicator;
   GearMeshStiffnessSettings settings;
   kinematics::GearPairGeometry pair;
-  std::vector<ToothPairLoad> candidate_pairs; // pairs given to the contact problem
-  double pinion_rotation_angle = 0.;          // rad, scene rotation of the pinion profile
-  double wheel_rotation_angle = 0.;           // rad
+  std::vector<ToothPairLoad> candidate_pairs;   // pairs given to the contact problem
+  double pinion_rotation_angle = 0.;            // rad, scene rotation of the pinion profile
+  double wheel_rotation_angle = 0.;             // rad
   std::unique_ptr<ContactProblem<dim>> problem; // owned
   GearMeshStiffnessResult result;
 };

@@ -1,8 +1,7 @@
 // GoogleTest main for tests that use deal.II/PETSc: MPI (and PETSc) initialised once for all
 // tests; only rank 0 prints, so `mpiexec -np 2` output stays readable.
-#include <deal.II/base/mpi.h>
-
 #include <cstdlib>
+#include <deal.II/base/mpi.h>
 #include <gtest/gtest.h>
 
 int main(int argc, char** argv)

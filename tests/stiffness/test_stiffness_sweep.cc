@@ -81,11 +81,11 @@ TEST(StiffnessSweep, DistributedPositionEqualsSerial)
   const GearMeshStiffnessResult distributed = analysis.run();
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
-    std::cout << std::setprecision(10) << "k serial " << serial.mesh_stiffness / 1e6
-              << " N/um in " << serial.active_set_iterations << " iterations, "
-              << serial.total_time << " s; distributed " << distributed.mesh_stiffness / 1e6
-              << " N/um in " << distributed.active_set_iterations << " iterations, "
-              << distributed.total_time << " s\n";
+    std::cout << std::setprecision(10) << "k serial " << serial.mesh_stiffness / 1e6 << " N/um in "
+              << serial.active_set_iterations << " iterations, " << serial.total_time
+              << " s; distributed " << distributed.mesh_stiffness / 1e6 << " N/um in "
+              << distributed.active_set_iterations << " iterations, " << distributed.total_time
+              << " s\n";
     std::filesystem::remove(settings.scene_file);
   }
   // Direct solves of the same system on one and on two ranks agree to ~1e-12; the friction
