@@ -217,6 +217,31 @@ Tensor<1, dim> ContactProblem<dim>::relative_displacement(const SlaveNode<dim>& 
 }
 
 template <int dim>
+Tensor<1, dim> ContactProblem<dim>::nodal_force(const SlaveNode<dim>& node,
+                                                const Vector<double>& residual) const
+{
+  Tensor<1, dim> force;
+  for (unsigned int c = 0; c < dim; ++c)
+    force[c] = residual[node.node.dofs[c]];
+  return force;
+}
+
+template <int dim>
+Tensor<1, dim> ContactProblem<dim>::step_slip(const SlaveNode<dim>& node) const
+{
+  Tensor<1, dim> slip =
+      relative_displacement(node, displacement) - relative_displacement(node, step_start);
+  slip -= (slip * node.normal) * node.normal;
+  return slip;
+}
+
+template <int dim>
+double ContactProblem<dim>::round_off_gap() const
+{
+  return 1e-12 * characteristic_length;
+}
+
+template <int dim>
 AffineConstraints<double> ContactProblem<dim>::make_constraints(double load_factor) const
 {
   AffineConstraints<double> constraints;
@@ -304,14 +329,12 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
   for (const auto& pair : pairs)
     for (const auto& node : pair.nodes)
     {
-      Tensor<1, dim> force;
-      for (unsigned int c = 0; c < dim; ++c)
-        force[c] = residual[node.node.dofs[c]];
+      const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
       largest_normal_force = std::max(largest_normal_force, -(force * node.normal));
     }
   // Round-off levels: a closed node is tensile, an open one penetrating, only beyond these.
   const double force_tolerance = 1e-10 * largest_normal_force;
-  const double gap_tolerance = 1e-12 * characteristic_length;
+  const double gap_tolerance = round_off_gap();
   // Weight of the slip in the tangential trial, c = E/(10 h): of the order of a surface node's
   // tangential stiffness. It steers the iteration path only; with c = E/h the stick/slip
   // front of a Cattaneo–Mindlin contact overshot and cycled.
@@ -323,15 +346,12 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
       const SlaveNode<dim>& node = pair.nodes[k];
-      Tensor<1, dim> force; // contact force on the slave node, N
-      for (unsigned int c = 0; c < dim; ++c)
-        force[c] = residual[node.node.dofs[c]];
+      const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
       const double normal_force = -(force * node.normal);
       const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
       const Tensor<1, dim> relative = relative_displacement(node, displacement);
       const double gap = node.initial_gap - relative * node.normal;
-      Tensor<1, dim> slip = relative - relative_displacement(node, step_start);
-      slip -= (slip * node.normal) * node.normal;
+      const Tensor<1, dim> slip = step_slip(node);
 
       // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = λ_n − c·g·A (λ_n = 0
       // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s against the bound.
@@ -413,9 +433,7 @@ double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residua
   for (auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
-      Tensor<1, dim> force;
-      for (unsigned int c = 0; c < dim; ++c)
-        force[c] = residual[pair.nodes[k].node.dofs[c]];
+      const Tensor<1, dim> force = nodal_force(pair.nodes[k], residual); // N, on the slave
       const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
       largest_normal_force = std::max(largest_normal_force, normal_force);
       const double bound = pair.state[k] == NodeState::open ? -1. : friction * normal_force;
@@ -430,20 +448,16 @@ template <int dim>
 void ContactProblem<dim>::start_friction(const Vector<double>& residual)
 {
   friction = parameters.friction_coefficient;
-  const double gap_tolerance = 1e-12 * characteristic_length;
+  const double gap_tolerance = round_off_gap();
   for (auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
       if (pair.state[k] == NodeState::open)
         continue;
       const SlaveNode<dim>& node = pair.nodes[k];
-      Tensor<1, dim> force;
-      for (unsigned int c = 0; c < dim; ++c)
-        force[c] = residual[node.node.dofs[c]];
+      const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
       pair.friction_bound[k] = friction * std::max(-(force * node.normal), 0.);
-      Tensor<1, dim> slip =
-          relative_displacement(node, displacement) - relative_displacement(node, step_start);
-      slip -= (slip * node.normal) * node.normal;
+      const Tensor<1, dim> slip = step_slip(node);
       if (slip.norm() > gap_tolerance)
       {
         pair.state[k] = NodeState::slip;
@@ -599,9 +613,7 @@ void ContactProblem<dim>::collect_results(const Vector<double>& residual)
       SurfacePoint<dim> point;
       point.position = node.node.position;
       point.coordinate = (node.node.position - centre) * axis;
-      Tensor<1, dim> force;
-      for (unsigned int c = 0; c < dim; ++c)
-        force[c] = residual[node.node.dofs[c]];
+      const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
       const double normal_force = -(force * node.normal);
       const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
       point.state = pair.state[k];
@@ -660,9 +672,7 @@ std::vector<std::string> ContactProblem<dim>::output_results(const std::string& 
       const types::global_dof_index key = node.node.dofs[0];
       const Tensor<1, dim> relative = relative_displacement(node, displacement);
       const bool closed = pair.state[k] != NodeState::open;
-      Tensor<1, dim> force;
-      for (unsigned int c = 0; c < dim; ++c)
-        force[c] = residual_forces[node.node.dofs[c]];
+      const Tensor<1, dim> force = nodal_force(node, residual_forces); // N, on the slave
       fields[0].values[key] = closed ? -(force * node.normal) / node.area : 0.;
       fields[1].values[key] = closed ? 0. : node.initial_gap - relative * node.normal;
       fields[2].values[key] = (relative - (relative * node.normal) * node.normal).norm();

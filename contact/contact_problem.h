@@ -197,6 +197,13 @@ private:
   // frictionless slip (stick where it vanishes), bounded by μ λ_n of that solution.
   void start_friction(const dealii::Vector<double>& residual);
   void collect_results(const dealii::Vector<double>& residual);
+  // Contact force on a slave node from a residual r = K u − f, N.
+  dealii::Tensor<1, dim> nodal_force(const SlaveNode<dim>& node,
+                                     const dealii::Vector<double>& residual) const;
+  // Tangential slip of a node in the current load step (slave − master), m.
+  dealii::Tensor<1, dim> step_slip(const SlaveNode<dim>& node) const;
+  // m, gaps and slips below this are round-off.
+  double round_off_gap() const;
   // Relative tangential displacement (slave − master) of a node, m.
   dealii::Tensor<1, dim> relative_displacement(const SlaveNode<dim>& node,
                                                const dealii::Vector<double>& u) const;

@@ -6,6 +6,7 @@
 // checked itself, under the published load case (T1 = 49.4 N·m, rigid pinion hub under torque,
 // wheel bore fixed, μ = 0.01) on the default scene (2D plane strain, Q2, 3 teeth, full rims).
 #include "contact/mesh_stiffness.h"
+#include "tests/stiffness/work_file.h"
 
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -25,9 +26,7 @@ double stiffness(const std::string& position, double pinion_bore_radius)
   settings.scene.position = position;
   settings.scene.pinion_bore_radius = pinion_bore_radius; // m
   settings.contact.friction_coefficient = 0.01;           // gear-data.md §1
-  const auto folder = std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "stiffness" / "work";
-  std::filesystem::create_directories(folder);
-  settings.scene_file = (folder / ("bore-" + std::to_string(getpid()) + ".msh")).string();
+  settings.scene_file = stiffness_work_stem("bore") + ".msh";
   GearMeshStiffness<2> analysis(MPI_COMM_SELF, settings);
   const GearMeshStiffnessResult r = analysis.run();
   std::filesystem::remove(settings.scene_file);

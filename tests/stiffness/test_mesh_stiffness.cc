@@ -13,6 +13,7 @@
 #include "contact/mesh_stiffness_sweep.h"
 #include "kinematics/errors.h"
 #include "kinematics/iso_stiffness.h"
+#include "tests/stiffness/work_file.h"
 
 #include <cmath>
 #include <filesystem>
@@ -30,19 +31,12 @@ namespace
 constexpr double ansys_single = 327.222e6; // N/m, gear-data.md §1 k'_j = 327 222 N/mm
 constexpr double ansys_double = 497.521e6; // N/m, gear-data.md §1 k'_d = 497 521 N/mm
 
-std::string scene_file(const std::string& name)
-{
-  const auto folder = std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "stiffness" / "work";
-  std::filesystem::create_directories(folder);
-  return (folder / (name + "-" + std::to_string(getpid()) + ".msh")).string();
-}
-
 GearMeshStiffnessSettings published_case(const std::string& position)
 {
   GearMeshStiffnessSettings settings;
   settings.scene.position = position;
   settings.contact.friction_coefficient = 0.01; // gear-data.md §1
-  settings.scene_file = scene_file(position);
+  settings.scene_file = stiffness_work_stem(position) + ".msh";
   return settings;
 }
 

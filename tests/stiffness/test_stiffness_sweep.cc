@@ -6,6 +6,7 @@
 // tooth bending and contact flattening all cancel out of the ratio).
 #include "contact/mesh_stiffness_sweep.h"
 #include "kinematics/errors.h"
+#include "tests/stiffness/work_file.h"
 
 #include <cmath>
 #include <deal.II/base/utilities.h>
@@ -19,18 +20,6 @@
 using namespace gearstiff;
 using namespace gearstiff::contact;
 
-namespace
-{
-std::string scene_stem()
-{
-  const auto folder = std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "stiffness" / "work";
-  std::filesystem::create_directories(folder);
-  // Rank 0's process id on every rank: a distributed solve reads the file rank 0 writes.
-  const int pid = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, static_cast<int>(getpid()), 0);
-  return (folder / ("sweep-" + std::to_string(pid))).string();
-}
-} // namespace
-
 TEST(StiffnessSweep, FrictionlessTorqueRatioIsTheBaseRadiusRatio)
 {
   GearMeshStiffnessSettings settings;
@@ -40,7 +29,7 @@ TEST(StiffnessSweep, FrictionlessTorqueRatioIsTheBaseRadiusRatio)
   StiffnessSweepSpec spec;
   spec.positions = 6;
   const StiffnessSweepResult sweep =
-      stiffness_sweep<2>(MPI_COMM_WORLD, settings, spec, scene_stem());
+      stiffness_sweep<2>(MPI_COMM_WORLD, settings, spec, stiffness_work_stem("sweep"));
   ASSERT_EQ(sweep.positions.size(), 6u);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   unsigned int on_rank_1 = 0;
@@ -75,7 +64,7 @@ TEST(StiffnessSweep, DistributedPositionEqualsSerial)
 {
   GearMeshStiffnessSettings settings;
   settings.contact.friction_coefficient = 0.01;
-  settings.scene_file = scene_stem() + "_distributed.msh";
+  settings.scene_file = stiffness_work_stem("sweep") + "_distributed.msh";
   const GearMeshStiffnessResult serial = solve_on_first_rank<2>(MPI_COMM_WORLD, settings);
   GearMeshStiffness<2> analysis(MPI_COMM_WORLD, settings);
   const GearMeshStiffnessResult distributed = analysis.run();
@@ -112,7 +101,7 @@ TEST(StiffnessSweep, ThreeDimensionalLiesBetweenPlaneStrainAndPlaneStress)
   settings.elasticity.degree = 1;          // Q1 on a coarse contact zone keeps 3D near 10 s
   settings.scene.mesh.contact_size = 6e-5; // m
   settings.scene.mesh.layers = 2;
-  settings.scene_file = scene_stem() + "_3d.msh";
+  settings.scene_file = stiffness_work_stem("sweep") + "_3d.msh";
   settings.scene.mesh.dimension = 2;
   const GearMeshStiffnessResult strain = solve_on_first_rank<2>(MPI_COMM_WORLD, settings);
   settings.elasticity.model = gearstiff::fem::PlanarModel::plane_stress;
