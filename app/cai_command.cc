@@ -15,7 +15,7 @@
 #include "app/units.h"
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/mesh_stiffness.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <filesystem>
@@ -53,7 +53,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const double contact_ratio = pair.transverse_contact_ratio;
   Report& report = context.report;
 
-  const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "cai");
+  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "cai");
   std::vector<dynamics::StiffnessSample> samples;
   for (const auto& [position, stiffness] : pair_stiffness_samples(sweep, contact_ratio))
     samples.push_back({position, stiffness});

@@ -10,7 +10,7 @@
 #include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
 #include "fem/mesh.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <deal.II/base/utilities.h>

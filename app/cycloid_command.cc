@@ -9,7 +9,7 @@
 #include "app/geometry_parameters.h"
 #include "app/units.h"
 #include "geometry/cycloid_disc.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <chrono>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include "app/units.h"
 #include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/simulation.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <chrono>
 #include <cmath>

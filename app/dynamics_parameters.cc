@@ -2,7 +2,7 @@
 
 #include "app/units.h"
 #include "dynamics/split_path_case.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <sstream>

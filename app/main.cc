@@ -11,7 +11,7 @@
 #include <deal.II/base/utilities.h>
 
 #include "app/command.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <filesystem>
 #include <fstream>

@@ -17,7 +17,7 @@
 #include "geometry/scene_cycloid.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>

@@ -17,7 +17,7 @@
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/simulation.h"
 #include "dynamics/split_path_case.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "kinematics/iso_stiffness.h"
 
 #include <cmath>
@@ -82,11 +82,11 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   StiffnessParameters position = p;
   position.mode = "single";
   position.settings.scene.position = "single";
-  const contact::GearMeshStiffnessResult single =
+  const stiffness::GearMeshStiffnessResult single =
       solve_stiffness_position(position, context, "single");
   position.mode = "double";
   position.settings.scene.position = "double";
-  const contact::GearMeshStiffnessResult twin =
+  const stiffness::GearMeshStiffnessResult twin =
       solve_stiffness_position(position, context, "double");
   report.add_compared_value("single_pair_stiffness", single.mesh_stiffness / 1e6,
                             ansys_single / 1e6, "N/µm", "single-pair mesh stiffness k'_j (FE)",
@@ -102,7 +102,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                             "double-pair pinion rotation Δφ", ansys_source);
 
   // 3. k(θ) sweep and Cai calibration.
-  const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
+  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
   add_stiffness_sweep_table(report, sweep, "run_sweep");
   double mean = 0., mean_even = 0.;
   unsigned int n_even = 0;

@@ -13,7 +13,7 @@
 #include "app/command.h"
 #include "app/stiffness_parameters.h"
 #include "app/units.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "kinematics/iso_stiffness.h"
 
 #include <algorithm>
@@ -33,7 +33,7 @@ constexpr double ansys_double = 497.521e6; // N/m
 
 // Which position a mode solves, and why it stands for that mode.
 std::string position_reason(const std::string& mode, const kinematics::GearPairGeometry& pair,
-                            const contact::GearMeshStiffnessResult& r)
+                            const stiffness::GearMeshStiffnessResult& r)
 {
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
   const auto mm = [](double v) { return format_number(v * 1e3, 5) + " mm"; };
@@ -96,7 +96,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     context.pcout << "stiffness: solving the " << p.mode << " position on "
                   << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
                   << std::endl;
-    const contact::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
+    const stiffness::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
     report.add_text("position", position_reason(p.mode, pair, r));
     const double reference = p.mode == "single" ? ansys_single : ansys_double;
     const bool compare = p.published_reference && p.mode != "roll angle";
@@ -116,7 +116,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     return;
   }
 
-  const contact::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
+  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
   add_stiffness_sweep_table(report, sweep, "stiffness_sweep");
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
   for (const auto& r : sweep.positions)

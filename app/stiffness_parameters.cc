@@ -4,7 +4,7 @@
 #include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
 #include "app/units.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ using dealii::Patterns::Selection;
 void declare_stiffness_parameters(ParameterHandler& prm)
 {
   declare_gear_pair_parameters(prm);
-  const geometry::GearPairSceneSpec scene = contact::default_stiffness_scene();
+  const geometry::GearPairSceneSpec scene = stiffness::default_stiffness_scene();
   // The sector cut faces are left free by the stiffness analysis.
   declare_gear_scene_parameters(prm, scene, true);
   declare_scene_mesh_parameters(prm, scene.mesh);
@@ -35,7 +35,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   declare_fe_contact_parameters(prm);
   prm.enter_subsection("Finite elements");
   // Q2 on the default scene: docs/accuracy.md.
-  prm.set("Element degree", std::to_string(contact::default_stiffness_elasticity().degree));
+  prm.set("Element degree", std::to_string(stiffness::default_stiffness_elasticity().degree));
   prm.leave_subsection();
   prm.enter_subsection("Contact");
   // gear-data.md §1: the ANSYS model used μ = 0.01 between the teeth.
@@ -84,8 +84,8 @@ void declare_stiffness_sweep_parameters(ParameterHandler& prm, unsigned int posi
 StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
 {
   StiffnessParameters p;
-  contact::GearMeshStiffnessSettings& s = p.settings;
-  s.scene = contact::default_stiffness_scene();
+  stiffness::GearMeshStiffnessSettings& s = p.settings;
+  s.scene = stiffness::default_stiffness_scene();
   s.scene.pair = parse_gear_pair_parameters(prm);
   parse_gear_scene_parameters(prm, s.scene);
   s.scene.mesh = parse_scene_mesh_parameters(prm);
@@ -105,15 +105,15 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 
   if (!(s.pinion_torque > 0.))
-    throw InputError(contact::stiffness_parameter::torque,
+    throw InputError(stiffness::stiffness_parameter::torque,
                      "must be positive: a torque <= 0 turns the pinion away from the wheel and "
                      "separates the loaded flanks (no contact, no stiffness)");
   if (positions <= 0)
-    throw InputError(contact::stiffness_parameter::positions,
+    throw InputError(stiffness::stiffness_parameter::positions,
                      "must be at least 1 (a sweep with zero positions computes nothing)");
   p.sweep.positions = static_cast<unsigned int>(positions);
   if (!(p.sweep.base_pitches > 0.))
-    throw InputError(contact::stiffness_parameter::pitches, "must be positive");
+    throw InputError(stiffness::stiffness_parameter::pitches, "must be positive");
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(s.scene.pair);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
   if (start >= 0.)
@@ -163,24 +163,24 @@ std::string vtu_directory(const StiffnessParameters& p, CommandContext& context,
 }
 } // namespace
 
-contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
+stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
                                                           CommandContext& context,
                                                           const std::string& label)
 {
-  contact::GearMeshStiffnessSettings settings = p.settings;
+  stiffness::GearMeshStiffnessSettings settings = p.settings;
   settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
   settings.output_directory = vtu_directory(p, context, {label});
   settings.output_base = label;
   // A 2D position is solved on rank 0 alone: distributed over 2 ranks the default Q2 scene
   // (53k DoFs) took 6.3 s against 6.6 s on one (tests/stiffness, DistributedPositionEqualsSerial
   // checks they agree). A 3D position is distributed over all ranks.
-  contact::GearMeshStiffnessResult result;
+  stiffness::GearMeshStiffnessResult result;
   try
   {
     if (settings.scene.mesh.dimension == 3)
-      result = contact::GearMeshStiffness<3>(context.mpi_communicator, settings).run();
+      result = stiffness::GearMeshStiffness<3>(context.mpi_communicator, settings).run();
     else
-      result = contact::solve_on_first_rank<2>(context.mpi_communicator, settings);
+      result = stiffness::solve_on_first_rank<2>(context.mpi_communicator, settings);
   }
   catch (...)
   {
@@ -193,11 +193,11 @@ contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParamet
   return result;
 }
 
-contact::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
+stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
                                                     CommandContext& context,
                                                     const std::string& label)
 {
-  contact::GearMeshStiffnessSettings settings = p.settings;
+  stiffness::GearMeshStiffnessSettings settings = p.settings;
   std::vector<std::string> bases;
   for (unsigned int i = 0; i < p.sweep.positions; ++i)
     bases.push_back(label + "_" + dealii::Utilities::int_to_string(i, 3));
@@ -209,15 +209,15 @@ contact::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p
                 << " base pitch(es) on " << ranks << " rank(s)" << std::endl;
   const auto progress = [&context, &label](const std::string& line)
   { context.pcout << label << ": " << line << std::endl; };
-  const contact::StiffnessSweepResult sweep =
+  const stiffness::StiffnessSweepResult sweep =
       settings.scene.mesh.dimension == 3
-          ? contact::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep, stem, progress)
-          : contact::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep, stem,
+          ? stiffness::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep, stem, progress)
+          : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep, stem,
                                         progress);
   return sweep;
 }
 
-void report_stiffness_position(Report& report, const contact::GearMeshStiffnessResult& r,
+void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,
                                const std::string& prefix, const std::string& label)
 {
   report.add_value(prefix + "pinion_roll_angle", r.pinion_roll_angle / degree, "deg",
@@ -262,7 +262,7 @@ void report_stiffness_position(Report& report, const contact::GearMeshStiffnessR
   report.add_value(prefix + "time_total", r.total_time, "s", label + ": wall time");
 }
 
-void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResult& sweep,
+void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name)
 {
   ReportTable& table = report.add_table(
@@ -274,7 +274,7 @@ void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResu
        "-"});
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
-    const contact::GearMeshStiffnessResult& r = sweep.positions[i];
+    const stiffness::GearMeshStiffnessResult& r = sweep.positions[i];
     double share[3] = {0., 0., 0.};
     for (const auto& pair : r.pairs)
       if (pair.pair >= -1 && pair.pair <= 1)
@@ -288,7 +288,7 @@ void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResu
   }
 }
 
-std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep)
+std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& sweep)
 {
   std::vector<std::pair<double, double>> samples; // x [base pitches], k [N/mm]
   for (const auto& r : sweep.positions)
@@ -307,7 +307,7 @@ std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep)
   return text.str();
 }
 
-std::string dynamics_table_input(const contact::StiffnessSweepResult& sweep)
+std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep)
 {
   const std::string table = dynamics_stiffness_table(sweep);
   std::string text;
@@ -329,7 +329,7 @@ std::string dynamics_cai_input(const dynamics::CaiParameters& cai)
 }
 
 std::vector<std::pair<double, double>>
-pair_stiffness_samples(const contact::StiffnessSweepResult& sweep, double contact_ratio)
+pair_stiffness_samples(const stiffness::StiffnessSweepResult& sweep, double contact_ratio)
 {
   std::vector<std::pair<double, double>> samples;
   for (const auto& r : sweep.positions)

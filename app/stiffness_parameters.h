@@ -1,4 +1,4 @@
-// Parameter-file form of the FE mesh-stiffness analysis (contact/mesh_stiffness.h), shared by the
+// Parameter-file form of the FE mesh-stiffness analysis (stiffness/mesh_stiffness.h), shared by the
 // `stiffness`, `cai` and `run` commands: the gear pair (app/kinematics_parameters.h), the scene
 // (subsections "Gear pair scene" and "Mesh" of app/geometry_parameters.h, mm and degrees), the FE
 // model ("Finite elements", "Linear solver", "Contact" of app/fe_contact_parameters.h) and the
@@ -8,8 +8,8 @@
 // accuracy-versus-cost study (docs/accuracy.md).
 #pragma once
 
-#include "contact/mesh_stiffness.h"
-#include "contact/mesh_stiffness_sweep.h"
+#include "stiffness/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness_sweep.h"
 #include "dynamics/cai_stiffness.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -19,9 +19,9 @@ namespace gearstiff::app
 {
 struct StiffnessParameters
 {
-  contact::GearMeshStiffnessSettings settings; // SI, scene_file left empty
+  stiffness::GearMeshStiffnessSettings settings; // SI, scene_file left empty
   std::string mode = "single";                 // single | double | roll angle | sweep
-  contact::StiffnessSweepSpec sweep;
+  stiffness::StiffnessSweepSpec sweep;
   bool write_vtu = false;
   bool published_reference = true; // compare with gear-data.md §1 (split-path pair only)
 };
@@ -41,34 +41,34 @@ namespace gearstiff::app
 {
 // One position (modes single, double, roll angle), solved on all ranks of the context.
 // `label` names the VTU files when p.write_vtu is set.
-contact::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
+stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
                                                           CommandContext& context,
                                                           const std::string& label);
 // The sweep of p.sweep, positions distributed over the ranks, progress on context.pcout.
-contact::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
+stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
                                                     CommandContext& context,
                                                     const std::string& label);
 
 // The position's values (prefix + key) in the report: stiffness, rotation, transmission
 // error, torque ratio, pairs, pressures, root stresses and cost.
-void report_stiffness_position(Report& report, const contact::GearMeshStiffnessResult& r,
+void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,
                                const std::string& prefix, const std::string& label);
 // The sweep as a table (one row per position).
-void add_stiffness_sweep_table(Report& report, const contact::StiffnessSweepResult& sweep,
+void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name);
 
 // The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions
 // sorted, duplicates modulo one pitch dropped.
-std::string dynamics_stiffness_table(const contact::StiffnessSweepResult& sweep);
+std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& sweep);
 // Subsections "Mesh 1" and "Mesh 2" of a `gearstiff dynamics` parameter file that put on both
 // meshes the sweep's k(x) table (dynamics_stiffness_table), or the Cai curve `cai` (scale
 // written in N/mm).
-std::string dynamics_table_input(const contact::StiffnessSweepResult& sweep);
+std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep);
 std::string dynamics_cai_input(const dynamics::CaiParameters& cai);
 // Single-pair stiffness samples for the Cai fit: at each position each loaded pair j carries
 // k_j = share_j·k at roll position p_ref + j [base pitches] (all pairs share one deflection,
 // so the mesh stiffness splits as the load does).
 std::vector<std::pair<double, double>>
-pair_stiffness_samples(const contact::StiffnessSweepResult& sweep, double contact_ratio);
+pair_stiffness_samples(const stiffness::StiffnessSweepResult& sweep, double contact_ratio);
 } // namespace gearstiff::app

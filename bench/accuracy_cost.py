@@ -73,7 +73,7 @@ def main():
     parser.add_argument("--quick", action="store_true")
     options = parser.parse_args()
 
-    # Default scene sizes (contact/mesh_stiffness.cc default_stiffness_scene), in mm.
+    # Default scene sizes (stiffness/mesh_stiffness.cc default_stiffness_scene), in mm.
     base = {"contact size": 0.04, "body size": 1.0, "rim size": 4.0, "growth rate": 0.5}
     root2 = math.sqrt(2.0)
     factors = [1, 1 / root2, 0.5] if options.quick else [1, 1 / root2, 0.5, 0.5 / root2]

@@ -1,6 +1,6 @@
 #include "contact/contact_problem.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

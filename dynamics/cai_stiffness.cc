@@ -1,6 +1,6 @@
 #include "dynamics/cai_stiffness.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

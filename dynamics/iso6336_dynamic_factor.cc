@@ -1,6 +1,6 @@
 #include "dynamics/iso6336_dynamic_factor.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #include "dynamics/mesh_stiffness.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <cmath>

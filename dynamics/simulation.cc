@@ -1,6 +1,6 @@
 #include "dynamics/simulation.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <chrono>

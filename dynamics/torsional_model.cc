@@ -1,6 +1,6 @@
 #include "dynamics/torsional_model.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

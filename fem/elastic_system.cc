@@ -1,7 +1,7 @@
 #include "fem/elastic_system.h"
 
 #include "fem/linear_solver.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "fem/linear_solver.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <petscksp.h>
 #include <sstream>

@@ -1,6 +1,6 @@
 #include "fem/mesh.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>

@@ -1,6 +1,6 @@
 #include "fem/supports.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 

@@ -9,7 +9,7 @@
 // solved with Levenberg–Marquardt (Eigen's MINPACK port, central-difference Jacobian).
 #include "geometry/cycloid_disc.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -21,7 +21,7 @@
 // shaper-cut one.
 #include "geometry/involute_tooth.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "geometry/mesh_planar.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "geometry/scene_common.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 #include "geometry/scene_cycloid.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <chrono>

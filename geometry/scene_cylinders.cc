@@ -1,6 +1,6 @@
 #include "geometry/scene_cylinders.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <chrono>
 #include <cmath>

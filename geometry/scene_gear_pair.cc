@@ -1,7 +1,7 @@
 #include "geometry/scene_gear_pair.h"
 
 #include "geometry/involute_tooth.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>

@@ -1,6 +1,6 @@
 #include "kinematics/gear_pair.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <cmath>

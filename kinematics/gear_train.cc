@@ -1,6 +1,6 @@
 #include "kinematics/gear_train.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -4,7 +4,7 @@
 // equilibrium exists and the solver must say so instead of returning a number.
 #include "contact/contact_problem.h"
 #include "fem/mesh.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>

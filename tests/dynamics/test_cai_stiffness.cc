@@ -2,7 +2,7 @@
 // Drewniak 2015).
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/mesh_stiffness.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

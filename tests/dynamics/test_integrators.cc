@@ -2,7 +2,7 @@
 // convergence orders, energy conservation, and the RK4 stability limit.
 #include "dynamics/integrators.h"
 #include "dynamics/split_path_case.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "tests/dynamics/single_pair_train.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // ISO 6336-1:2006 method B dynamic factor, hand-checked on the split-path pair.
 #include "dynamics/iso6336_dynamic_factor.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // energy balance, speed sweep.
 #include "dynamics/simulation.h"
 #include "dynamics/split_path_case.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The torsional model: statics, nominal forces, mesh phase, stability estimate, bad input.
 #include "dynamics/split_path_case.h"
 #include "dynamics/torsional_model.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "tests/dynamics/single_pair_train.h"
 
 #include <cmath>

@@ -6,7 +6,7 @@
 // only, so plane strain and plane stress must agree.
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>

@@ -3,7 +3,7 @@
 // shortened epicycloid, the Levenberg–Marquardt correction against the published ε = 0.27
 // column, roller clearances, and the rejection of impossible discs.
 #include "geometry/cycloid_disc.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

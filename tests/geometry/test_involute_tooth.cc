@@ -6,7 +6,7 @@
 // 2015: z 21/57, m 2.5 mm, α 20°, x ±0.29) and the rings of §2 (Drewniak et al. 2016: z 69, 72).
 // Formulas: DIN 3960 / ISO 21771 (tooth thickness, root circle, undercut limit).
 #include "geometry/involute_tooth.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <Eigen/Geometry>
 #include <chrono>

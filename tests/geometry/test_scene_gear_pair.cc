@@ -3,7 +3,7 @@
 // its cell size at the predicted contacts and the gaps along the line of action, measured on the
 // boundary faces deal.II sees (not on the outlines the scene was built from).
 #include "geometry/scene_gear_pair.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "tests/geometry/scene_test_support.h"
 
 #include <Eigen/Dense>

@@ -1,7 +1,7 @@
 // The parameter an InputError names (the one the user has to fix), for tests of bad input.
 #pragma once
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <string>
 

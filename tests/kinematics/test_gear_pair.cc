@@ -1,6 +1,6 @@
 // Gear pair geometry against gear-data.md §1 (Reszuta & Drewniak, Mechanik 7/2015) and against
 // closed-form ISO 21771 relations that the implementation does not use directly.
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "kinematics/gear_pair.h"
 #include "tests/kinematics/input_error_parameter.h"
 

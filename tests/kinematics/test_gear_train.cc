@@ -2,7 +2,7 @@
 // gear-data.md §2 (Drewniak, Garlicka, Kolber 2016, bi-planetary train), §3 (Milev et al. 2025,
 // planetary J*), §4 (Chmurawa & Łokiec, cycloidal ratio). Printed values are compared with a
 // tolerance of half a unit of their last printed digit unless stated.
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 #include "kinematics/gear_train.h"
 #include "tests/kinematics/input_error_parameter.h"
 

@@ -5,7 +5,7 @@
 // what bounds any comparison with it (tests/stiffness/test_mesh_stiffness.cc); here it is
 // checked itself, under the published load case (T1 = 49.4 N·m, rigid pinion hub under torque,
 // wheel bore fixed, μ = 0.01) on the default scene (2D plane strain, Q2, 3 teeth, full rims).
-#include "contact/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness.h"
 #include "tests/stiffness/work_file.h"
 
 #include <filesystem>
@@ -17,6 +17,7 @@
 
 using namespace gearstiff;
 using namespace gearstiff::contact;
+using namespace gearstiff::stiffness;
 
 namespace
 {

@@ -1,5 +1,5 @@
 // Mesh stiffness of the split-path pair (../shared/reference/gear-data.md §1, Reszuta & Drewniak
-// 2015) from the frictional FE contact solve of contact/mesh_stiffness.h under the published load
+// 2015) from the frictional FE contact solve of stiffness/mesh_stiffness.h under the published load
 // case (T1 = 49.4 N·m on the pinion, pinion bore free only to rotate, wheel bore fixed, μ = 0.01),
 // against the stiffness the paper's ANSYS model reported, k'_j = 327.2·10⁶ N/m (single pair) and
 // k'_d = 497.5·10⁶ N/m (double pair), with ISO 6336-1 c'·b (kinematics/iso_stiffness.h) beside
@@ -8,10 +8,10 @@
 // The model here is stated, not tuned: 2D plane strain (and plane stress), Q2 elements, the
 // common face width 24 mm as thickness, E = 210 GPa, ν = 0.3 (not published), the default bores of
 // kinematics::split_path_pair() (pinion 20 mm, wheel 40 mm diameter: not published), rigid hubs,
-// full rims with three teeth per gear (contact::default_stiffness_scene()).
-#include "contact/mesh_stiffness.h"
-#include "contact/mesh_stiffness_sweep.h"
-#include "kinematics/errors.h"
+// full rims with three teeth per gear (stiffness::default_stiffness_scene()).
+#include "stiffness/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness_sweep.h"
+#include "errors/errors.h"
 #include "kinematics/iso_stiffness.h"
 #include "tests/stiffness/work_file.h"
 
@@ -25,6 +25,7 @@
 
 using namespace gearstiff;
 using namespace gearstiff::contact;
+using namespace gearstiff::stiffness;
 
 namespace
 {

@@ -5,14 +5,14 @@
 // estimate of the converged value.
 #pragma once
 
-#include "contact/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness.h"
 
 #include <functional>
 #include <mpi.h>
 #include <string>
 #include <vector>
 
-namespace gearstiff::contact
+namespace gearstiff::stiffness
 {
 struct StiffnessSweepSpec
 {
@@ -81,4 +81,4 @@ struct RichardsonEstimate
 // three finest; SolverFailure when the differences change sign (not in the asymptotic
 // range: no trustworthy extrapolation exists).
 RichardsonEstimate richardson_estimate(const std::vector<RefinementLevel>& levels);
-} // namespace gearstiff::contact
+} // namespace gearstiff::stiffness

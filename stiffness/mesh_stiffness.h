@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-namespace gearstiff::contact
+namespace gearstiff::stiffness
 {
 // The scene the stiffness analysis uses unless told otherwise: the split-path pair with full
 // rims and three teeth per gear and explicit mesh sizes (docs/accuracy.md: the cheapest scene
@@ -44,7 +44,7 @@ struct GearMeshStiffnessSettings
   geometry::GearPairSceneSpec scene = default_stiffness_scene();
   fem::ElasticityParameters elasticity = default_stiffness_elasticity(); // thickness: face width
   fem::LinearSolverParameters linear_solver;
-  ContactParameters contact;             // μ and the active-set controls
+  contact::ContactParameters contact;            // μ and the active-set controls
   double pinion_torque = 49.4;           // N·m, T1 > 0 drives the pinion counter-clockwise
   fem::Material material;                // both gears (steel 210 GPa, 0.3: not published)
   std::string scene_file;                // path of the .msh to write (rank 0 of the communicator)
@@ -126,7 +126,7 @@ private:
   std::vector<ToothPairLoad> candidate_pairs;   // pairs given to the contact problem
   double pinion_rotation_angle = 0.;            // rad, scene rotation of the pinion profile
   double wheel_rotation_angle = 0.;             // rad
-  std::unique_ptr<ContactProblem<dim>> problem; // owned
+  std::unique_ptr<contact::ContactProblem<dim>> problem; // owned
   GearMeshStiffnessResult result;
 };
 
@@ -137,4 +137,4 @@ inline const std::string torque = "Stiffness/pinion torque";
 inline const std::string positions = "Stiffness/sweep positions";
 inline const std::string pitches = "Stiffness/sweep base pitches";
 } // namespace stiffness_parameter
-} // namespace gearstiff::contact
+} // namespace gearstiff::stiffness

@@ -1,5 +1,5 @@
-// Error types shared by every gearstiff module. They live in the lowest module (kinematics) so
-// that every other module can throw them without depending on deal.II or on app/.
+// Error types shared by every gearstiff module. They are a module of their own, below every
+// other one and free of deal.II and MPI, so that any module can throw them.
 //
 // The `gearstiff` command turns an InputError into one line naming the parameter and a non-zero
 // exit code, and a SolverFailure into one line naming the method and why it failed. Neither is
@@ -38,11 +38,14 @@ namespace gearstiff
     SolverFailure(const std::string& method, const std::string& reason)
       : std::runtime_error(method + ": " + reason)
       , method_name(method)
+      , reason_text(reason)
     {}
 
     const std::string& method() const { return method_name; }
+    const std::string& reason() const { return reason_text; }
 
   private:
     std::string method_name;
+    std::string reason_text;
   };
 } // namespace gearstiff

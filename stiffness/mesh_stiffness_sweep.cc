@@ -1,6 +1,6 @@
-#include "contact/mesh_stiffness_sweep.h"
+#include "stiffness/mesh_stiffness_sweep.h"
 
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
-namespace gearstiff::contact
+namespace gearstiff::stiffness
 {
 using namespace dealii;
 
@@ -343,4 +343,4 @@ template StiffnessSweepResult stiffness_sweep<2>(MPI_Comm, const GearMeshStiffne
 template StiffnessSweepResult stiffness_sweep<3>(MPI_Comm, const GearMeshStiffnessSettings&,
                                                  const StiffnessSweepSpec&, const std::string&,
                                                  const std::function<void(const std::string&)>&);
-} // namespace gearstiff::contact
+} // namespace gearstiff::stiffness

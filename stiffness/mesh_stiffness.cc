@@ -1,7 +1,7 @@
-#include "contact/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness.h"
 
 #include "fem/mesh.h"
-#include "kinematics/errors.h"
+#include "errors/errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,7 @@
 #include <map>
 #include <set>
 
-namespace gearstiff::contact
+namespace gearstiff::stiffness
 {
 using namespace dealii;
 
@@ -205,7 +205,7 @@ void GearMeshStiffness<dim>::make_scene()
 template <int dim>
 void GearMeshStiffness<dim>::setup_problem()
 {
-  problem = std::make_unique<ContactProblem<dim>>(mpi_communicator, settings.elasticity,
+  problem = std::make_unique<contact::ContactProblem<dim>>(mpi_communicator, settings.elasticity,
                                                   settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
   fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
@@ -281,7 +281,7 @@ template <int dim>
 void GearMeshStiffness<dim>::solve()
 {
   problem->setup_system();
-  const ContactResults<dim>& contact = problem->solve();
+  const contact::ContactResults<dim>& contact = problem->solve();
   result.n_dofs = contact.n_dofs;
   result.active_set_iterations = contact.active_set_iterations;
   result.setup_time = contact.setup_time;
@@ -291,9 +291,9 @@ void GearMeshStiffness<dim>::solve()
 template <int dim>
 void GearMeshStiffness<dim>::evaluate()
 {
-  const ContactResults<dim>& contact = problem->results();
-  const SupportResult<dim>& pinion_hub = contact.supports.at(0);
-  const SupportResult<dim>& wheel_hub = contact.supports.at(1);
+  const contact::ContactResults<dim>& contact = problem->results();
+  const contact::SupportResult<dim>& pinion_hub = contact.supports.at(0);
+  const contact::SupportResult<dim>& wheel_hub = contact.supports.at(1);
   result.pinion_torque = settings.pinion_torque;
   // Rotation from the unloaded touching configuration: every normal gap of an involute flank
   // closes by r_b1 per radian of pinion rotation (its normals are tangent to the base circle).
@@ -327,7 +327,7 @@ void GearMeshStiffness<dim>::evaluate()
   result.max_contact_pressure = 0.;
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
   {
-    const PairResult<dim>& pair_result = contact.pairs[k];
+    const contact::PairResult<dim>& pair_result = contact.pairs[k];
     ToothPairLoad& load = result.pairs[k];
     load.normal_force = pair_result.normal_force;
     load.load_share = total > 0. ? std::max(pair_result.normal_force, 0.) / total : 0.;
@@ -407,4 +407,4 @@ void GearMeshStiffness<dim>::output_results()
 
 template class GearMeshStiffness<2>;
 template class GearMeshStiffness<3>;
-} // namespace gearstiff::contact
+} // namespace gearstiff::stiffness
