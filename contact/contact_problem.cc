@@ -1,6 +1,7 @@
 #include "contact/contact_problem.h"
 
 #include "errors/errors.h"
+#include "fem/stiffness_factorization.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -30,6 +31,12 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
                     "mm, an initial overlap of the bodies beyond this is an input error");
   prm.declare_entry("Friction tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
                     "-, convergence of the slip forces relative to the largest normal force");
+  prm.declare_entry("Iteration solves", "auto",
+                    Patterns::Selection("auto|Schur complement|full re-solve"),
+                    "how each active-set iteration is solved: 'Schur complement' factorizes the "
+                    "stiffness once and solves for the contact forces only (needs the direct "
+                    "solver); 'full re-solve' re-assembles and re-solves everything (the "
+                    "reference); 'auto' takes the Schur complement with the direct solver");
 }
 
 void ContactParameters::parse_parameters(ParameterHandler& prm)
@@ -40,6 +47,10 @@ void ContactParameters::parse_parameters(ParameterHandler& prm)
   search_distance = prm.get_double("Search distance") * 1e-3;
   overlap_tolerance = prm.get_double("Overlap tolerance") * 1e-3;
   friction_tolerance = prm.get_double("Friction tolerance");
+  const std::string solves = prm.get("Iteration solves");
+  iteration_solves = solves == "Schur complement" ? IterationSolves::schur_complement
+                     : solves == "full re-solve"  ? IterationSolves::full_resolve
+                                                  : IterationSolves::automatic;
 }
 
 namespace
@@ -197,6 +208,7 @@ void ContactProblem<dim>::setup_system()
   displacement.reinit(dof_handler.n_dofs());
   step_start.reinit(dof_handler.n_dofs());
   result = ContactResults<dim>();
+  condensed.reset();
   result.n_dofs = dof_handler.n_dofs();
   result.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   result.setup_time = timer.wall_time();
@@ -239,6 +251,20 @@ template <int dim>
 double ContactProblem<dim>::round_off_gap() const
 {
   return 1e-12 * characteristic_length;
+}
+
+template <int dim>
+AffineConstraints<double> ContactProblem<dim>::make_support_constraints(double load_factor) const
+{
+  AffineConstraints<double> constraints;
+  for (const auto& support : supports)
+    if (support.hub)
+      support.hub->add_constraints(constraints, load_factor);
+    else
+      fem::add_prescribed_displacement(support.nodes, load_factor * support.displacement,
+                                       constraints, support.components);
+  constraints.close();
+  return constraints;
 }
 
 template <int dim>
@@ -293,6 +319,342 @@ AffineConstraints<double> ContactProblem<dim>::make_constraints(double load_fact
     }
   constraints.close();
   return constraints;
+}
+
+// The Schur-complement method's data, built once per solve(): the factorization of the
+// support-condensed K, the contact DoFs (slave and master DoFs of every candidate node), and
+// for every slave node that has been closed its dim columns P R_cᵀ at the contact DoFs, where
+// R_c u = u_s,c − Σ_m w_m u_m,c is the node's relative displacement in component c. Every
+// contact row (stick: R_c, slip: n·R) and every friction load (F_c R_cᵀ) is a combination of
+// these, so nothing else is ever solved for but one full displacement per iteration.
+template <int dim>
+struct ContactProblem<dim>::Condensed
+{
+  // A node's relative-displacement functional at the contact DoFs: R_c v = Σ weight·v[index].
+  struct Functional
+  {
+    std::vector<std::pair<unsigned int, double>> terms; // (position in dofs, weight)
+    double operator()(const std::vector<double>& v) const
+    {
+      double value = 0.;
+      for (const auto& [i, w] : terms)
+        value += w * v[i];
+      return value;
+    }
+  };
+
+  std::unique_ptr<fem::StiffnessFactorization<dim>> factorization;
+  AffineConstraints<double> supports;                                // at unit load factor
+  std::vector<types::global_dof_index> dofs;                         // contact DoFs, sorted
+  std::vector<std::vector<std::array<Functional, dim>>> functionals; // [pair][node][c]
+  std::vector<std::vector<int>> slot; // [pair][node] → first of its dim columns, −1: none yet
+  std::vector<std::vector<double>> columns; // m/N, P R_cᵀ at dofs
+  std::vector<double> particular;           // m, unit-load solution at dofs
+  std::vector<std::vector<double>> modes;   // free rigid-body modes at dofs
+  std::vector<double> mode_loads;           // N·m (work), Rᵀ f at unit load factor
+
+  unsigned int position(types::global_dof_index dof) const
+  {
+    return std::lower_bound(dofs.begin(), dofs.end(), dof) - dofs.begin();
+  }
+  std::vector<double> at_dofs(const Vector<double>& v) const
+  {
+    std::vector<double> restricted(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      restricted[i] = v[dofs[i]];
+    return restricted;
+  }
+};
+
+template <int dim>
+bool ContactProblem<dim>::use_schur_complement() const
+{
+  switch (parameters.iteration_solves)
+  {
+  case IterationSolves::schur_complement:
+    return true;
+  case IterationSolves::full_resolve:
+    return false;
+  case IterationSolves::automatic:
+    break;
+  }
+  return elastic.get_linear_solver().method == fem::LinearSolverMethod::direct_mumps;
+}
+
+template <int dim>
+Vector<double> ContactProblem<dim>::solve_iteration(double load_factor, IterationRecord& record)
+{
+  if (use_schur_complement())
+    return solve_schur_complement(load_factor, record);
+  fem::LinearSolveStatistics statistics;
+  const Vector<double> solution =
+      elastic.solve(make_constraints(load_factor), make_point_loads(load_factor), statistics);
+  result.assembly_time += statistics.assembly_time;
+  result.solve_time += statistics.solve_time;
+  record.time = statistics.assembly_time + statistics.solve_time;
+  return solution;
+}
+
+template <int dim>
+Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
+                                                           IterationRecord& record)
+{
+  Timer timer(mpi_communicator, true);
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
+  if (!condensed)
+  {
+    // Once: supports at unit load factor, hub torques as unit point loads, one factorization.
+    condensed = std::make_unique<Condensed>();
+    Condensed& c = *condensed;
+    c.supports = make_support_constraints(1.);
+    Vector<double> unit_loads(n_dofs);
+    for (const auto& support : supports)
+      if (support.hub)
+        support.hub->add_loads(unit_loads, 1.);
+    const double step_factor = load_factor;
+    elastic.set_load_factor(1.);
+    c.factorization =
+        std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads);
+    // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
+    const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
+    elastic.set_load_factor(step_factor);
+    for (const auto& pair : pairs)
+      for (const auto& node : pair.nodes)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          c.dofs.push_back(node.node.dofs[d]);
+        for (const auto& master : node.masters)
+          for (unsigned int d = 0; d < dim; ++d)
+            c.dofs.push_back(master.node.dofs[d]);
+      }
+    std::sort(c.dofs.begin(), c.dofs.end());
+    c.dofs.erase(std::unique(c.dofs.begin(), c.dofs.end()), c.dofs.end());
+    for (const auto& pair : pairs)
+    {
+      c.functionals.emplace_back();
+      for (const auto& node : pair.nodes)
+      {
+        std::array<typename Condensed::Functional, dim> functional;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          functional[d].terms.emplace_back(c.position(node.node.dofs[d]), 1.);
+          for (const auto& master : node.masters)
+            functional[d].terms.emplace_back(c.position(master.node.dofs[d]), -master.weight);
+        }
+        c.functionals.back().push_back(functional);
+      }
+      c.slot.emplace_back(pair.nodes.size(), -1);
+    }
+    c.particular = c.at_dofs(c.factorization->particular_solution());
+    for (const auto& mode : c.factorization->free_modes())
+    {
+      c.modes.push_back(c.at_dofs(mode));
+      c.mode_loads.push_back(-(mode * unit_residual) + mode * unit_loads);
+    }
+    result.assembly_time += c.factorization->factorization_time();
+    result.schur_complement = true;
+  }
+  Condensed& c = *condensed;
+
+  // Columns for the nodes closed for the first time, in one block of right-hand sides.
+  {
+    std::vector<fem::SparseLoad> loads;
+    std::vector<std::pair<unsigned int, unsigned int>> new_nodes;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+        if (pairs[p].state[k] != NodeState::open && c.slot[p][k] < 0)
+        {
+          new_nodes.emplace_back(p, k);
+          const SlaveNode<dim>& node = pairs[p].nodes[k];
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            fem::SparseLoad load{{node.node.dofs[d], 1.}};
+            for (const auto& master : node.masters)
+              load.emplace_back(master.node.dofs[d], -master.weight);
+            loads.push_back(std::move(load));
+          }
+        }
+    if (!loads.empty())
+    {
+      std::vector<std::vector<double>> columns = c.factorization->responses(loads, c.dofs);
+      for (unsigned int j = 0; j < new_nodes.size(); ++j)
+        c.slot[new_nodes[j].first][new_nodes[j].second] = c.columns.size() + j * dim;
+      for (auto& column : columns)
+        c.columns.push_back(std::move(column));
+    }
+  }
+
+  // The contact rows G of this iteration as combinations of node columns, with their
+  // right-hand sides; a DoF already held (by a support or an earlier row) keeps that hold, as in
+  // make_constraints.
+  struct Term
+  {
+    unsigned int pair, node, component;
+    double coefficient;
+  };
+  struct Row
+  {
+    std::vector<Term> terms;
+    double value; // m
+  };
+  std::vector<Row> rows;
+  std::vector<bool> used(n_dofs, false);
+  for (unsigned int p = 0; p < pairs.size(); ++p)
+    for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+    {
+      if (pairs[p].state[k] == NodeState::open)
+        continue;
+      const SlaveNode<dim>& node = pairs[p].nodes[k];
+      const Tensor<1, dim>& n = node.normal;
+      if (pairs[p].state[k] == NodeState::stick)
+      {
+        const Tensor<1, dim> start = relative_displacement(node, step_start);
+        const Tensor<1, dim> offset = node.initial_gap * n + (start - (start * n) * n);
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          const types::global_dof_index dof = node.node.dofs[d];
+          if (c.supports.is_constrained(dof) || used[dof])
+            continue;
+          used[dof] = true;
+          rows.push_back({{{p, k, d, 1.}}, offset[d]});
+        }
+      }
+      else
+      {
+        const types::global_dof_index dof = node.node.dofs[normal_component(n)];
+        if (used[dof])
+          continue;
+        used[dof] = true;
+        Row row{{}, node.initial_gap};
+        for (unsigned int d = 0; d < dim; ++d)
+          if (n[d] != 0.)
+            row.terms.push_back({p, k, d, n[d]});
+        rows.push_back(std::move(row));
+      }
+    }
+
+  // Friction loads of the slipping nodes: F_c R_cᵀ, F = μ λ_n along the friction direction.
+  std::vector<Term> friction_terms;
+  if (friction > 0.)
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+        if (pairs[p].state[k] == NodeState::slip)
+        {
+          const Tensor<1, dim> force =
+              std::max(pairs[p].friction_bound[k], 0.) * pairs[p].friction_direction[k];
+          for (unsigned int d = 0; d < dim; ++d)
+            if (force[d] != 0.)
+              friction_terms.push_back({p, k, d, force[d]});
+        }
+
+  auto column = [&](const Term& t) -> const std::vector<double>&
+  { return c.columns[c.slot[t.pair][t.node] + t.component]; };
+  auto functional = [&](const Term& t) -> const typename Condensed::Functional&
+  { return c.functionals[t.pair][t.node][t.component]; };
+
+  // u_base = s·u_p + P f_friction at the contact DoFs; Rᵀ f of the same loads.
+  std::vector<double> base = c.particular;
+  for (double& v : base)
+    v *= load_factor;
+  for (const Term& t : friction_terms)
+  {
+    const std::vector<double>& y = column(t);
+    for (unsigned int i = 0; i < base.size(); ++i)
+      base[i] += t.coefficient * y[i];
+  }
+  const unsigned int m = rows.size(), n_modes = c.modes.size();
+  Eigen::VectorXd mode_load(n_modes);
+  for (unsigned int j = 0; j < n_modes; ++j)
+  {
+    mode_load[j] = load_factor * c.mode_loads[j];
+    for (const Term& t : friction_terms)
+      mode_load[j] += t.coefficient * functional(t)(c.modes[j]);
+  }
+
+  // S = G P Gᵀ, E = G R, b = G u_base − g.
+  Eigen::MatrixXd schur(m, m), coupling(m, n_modes);
+  Eigen::VectorXd rhs(m);
+  for (unsigned int i = 0; i < m; ++i)
+  {
+    for (unsigned int j = 0; j <= i; ++j)
+    {
+      double value = 0.;
+      for (const Term& a : rows[i].terms)
+        for (const Term& b : rows[j].terms)
+          value += a.coefficient * b.coefficient * functional(a)(column(b));
+      schur(i, j) = schur(j, i) = value;
+    }
+    rhs[i] = -rows[i].value;
+    for (const Term& a : rows[i].terms)
+      rhs[i] += a.coefficient * functional(a)(base);
+    for (unsigned int j = 0; j < n_modes; ++j)
+    {
+      coupling(i, j) = 0.;
+      for (const Term& a : rows[i].terms)
+        coupling(i, j) += a.coefficient * functional(a)(c.modes[j]);
+    }
+  }
+
+  // [S −E; −Eᵀ 0] [λ; α] = [b; −Rᵀf]: λ = S⁻¹(b + Eα), (Eᵀ S⁻¹ E) α = Rᵀf − Eᵀ S⁻¹ b.
+  Eigen::VectorXd multipliers = Eigen::VectorXd::Zero(m),
+                  amplitudes = Eigen::VectorXd::Zero(n_modes);
+  const Eigen::LDLT<Eigen::MatrixXd> schur_factor(schur);
+  if (m > 0)
+  {
+    const Eigen::VectorXd pivots = schur_factor.vectorD().cwiseAbs();
+    if (schur_factor.info() != Eigen::Success || pivots.minCoeff() <= 1e-13 * pivots.maxCoeff())
+      throw SolverFailure("contact Schur complement",
+                          "the closed contact constraints are linearly dependent (a slave node "
+                          "constrained twice: do two pairs share a slave surface?)");
+  }
+  bool restrained = n_modes == 0;
+  if (n_modes > 0 && m > 0)
+  {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> coupling_svd(coupling);
+    const Eigen::VectorXd& sigma = coupling_svd.singularValues();
+    restrained = sigma.size() == n_modes && sigma.minCoeff() > 1e-10 * sigma.maxCoeff();
+  }
+  if (!restrained)
+  {
+    // The closed contacts leave a body free: the reference path's check names it.
+    elastic.check_rigid_body_freedom(make_constraints(load_factor), "linear solve");
+    throw SolverFailure("linear solve", "the closed contacts leave a rigid-body motion of a "
+                                        "body held only through contact unrestrained");
+  }
+  if (n_modes > 0)
+  {
+    const Eigen::MatrixXd s_inv_e = schur_factor.solve(coupling);
+    const Eigen::MatrixXd coarse = coupling.transpose() * s_inv_e;
+    amplitudes = coarse.ldlt().solve(mode_load - s_inv_e.transpose() * rhs);
+    multipliers = schur_factor.solve(rhs + coupling * amplitudes);
+  }
+  else if (m > 0)
+    multipliers = schur_factor.solve(rhs);
+
+  // The full displacement: u = s·u_p + P (f_friction − Gᵀλ) + R α.
+  Vector<double> load(n_dofs);
+  auto add_node_load = [&](const Term& t, double force)
+  {
+    const SlaveNode<dim>& node = pairs[t.pair].nodes[t.node];
+    load[node.node.dofs[t.component]] += force;
+    for (const auto& master : node.masters)
+      load[master.node.dofs[t.component]] -= master.weight * force;
+  };
+  for (const Term& t : friction_terms)
+    add_node_load(t, t.coefficient);
+  for (unsigned int i = 0; i < m; ++i)
+    for (const Term& t : rows[i].terms)
+      add_node_load(t, -multipliers[i] * t.coefficient);
+  Vector<double> solution = c.factorization->response(load);
+  solution.add(load_factor, c.factorization->particular_solution());
+  for (unsigned int j = 0; j < n_modes; ++j)
+    solution.add(amplitudes[j], c.factorization->free_modes()[j]);
+
+  record.n_rows = m;
+  record.time = timer.wall_time();
+  result.solve_time += record.time;
+  result.right_hand_sides = c.factorization->n_solves();
+  return solution;
 }
 
 template <int dim>
@@ -497,12 +859,12 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
     unsigned int last_changes = 0;
     for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
     {
-      const AffineConstraints<double> constraints = make_constraints(load_factor);
-      const Vector<double> loads = make_point_loads(load_factor);
-      fem::LinearSolveStatistics statistics;
+      IterationRecord record;
+      record.load_step = step;
+      record.iteration = iteration;
       try
       {
-        displacement = elastic.solve(constraints, loads, statistics);
+        displacement = solve_iteration(load_factor, record);
       }
       catch (const SolverFailure&)
       {
@@ -528,15 +890,8 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
       const double friction_change =
           changes == 0 ? std::max(update_friction_bounds(residual), direction_change) : 1.;
       ++result.active_set_iterations;
-      result.assembly_time += statistics.assembly_time;
-      result.solve_time += statistics.solve_time;
-
-      IterationRecord record;
-      record.load_step = step;
-      record.iteration = iteration;
       record.n_changed = changes;
       record.friction_change = changes == 0 ? friction_change : 0.;
-      record.time = statistics.assembly_time + statistics.solve_time;
       std::string signature;
       for (const auto& pair : pairs)
         for (unsigned int k = 0; k < pair.nodes.size(); ++k)

@@ -22,6 +22,14 @@
 // smallest gap when none touches. The iteration ends when the state repeats and the friction
 // forces have converged; a state met three times (cycling) or the iteration limit is a
 // SolverFailure, so is a body left free to move.
+//
+// Linear algebra: the element work is done once. K is condensed with the supports and factorized
+// once (fem/stiffness_factorization.h); the closed contacts enter as Lagrange multipliers, and each
+// iteration solves only the small Schur complement S = G P Gᵀ on the contact rows G, with the
+// rigid-body modes of the bodies held only through the contacts as extra unknowns. The columns
+// P Gᵀ are computed once per slave node, when it first closes, and kept. The result is the same
+// constrained minimum as eliminating the contact constraints in a re-assembled matrix (the
+// `full re-solve` method, kept as the reference and for iterative linear solvers), to round-off.
 #pragma once
 
 #include "contact/mortar.h"
@@ -38,9 +46,18 @@
 
 namespace gearstiff::contact
 {
+// How each active-set iteration solves its linear system.
+enum class IterationSolves
+{
+  automatic,        // Schur complement with the direct solver, full re-solve otherwise
+  schur_complement, // one factorization, a Schur complement on the contact rows per iteration
+  full_resolve      // re-assemble and re-solve the condensed system every iteration (reference)
+};
+
 // Subsection "Contact".
 struct ContactParameters
 {
+  IterationSolves iteration_solves = IterationSolves::automatic;
   double friction_coefficient = 0.; // -, Coulomb μ
   unsigned int max_iterations = 40; // active-set iterations per load step
   unsigned int load_steps = 1;      // -, loads applied in equal increments (friction history)
@@ -103,6 +120,7 @@ struct IterationRecord
   unsigned int n_closed = 0, n_stick = 0, n_slip = 0, n_changed = 0;
   double friction_change = 0.; // -, relative
   double time = 0.;            // s, wall, assembly + solve
+  unsigned int n_rows = 0;     // -, contact constraint rows (Schur complement size)
 };
 
 template <int dim>
@@ -115,10 +133,12 @@ struct ContactResults
   unsigned int load_steps = 0;
   dealii::types::global_dof_index n_dofs = 0;
   unsigned int n_mpi_ranks = 1;
-  double setup_time = 0.;    // s: DoFs, K, mortar coupling
-  double assembly_time = 0.; // s, summed over iterations
-  double solve_time = 0.;    // s, summed over iterations
-  double total_time = 0.;    // s
+  double setup_time = 0.;            // s: DoFs, K, mortar coupling
+  double assembly_time = 0.;         // s, summed over iterations (Schur: the one factorization)
+  double solve_time = 0.;            // s, summed over iterations
+  double total_time = 0.;            // s
+  bool schur_complement = false;     // the iterations solved the contact Schur complement
+  unsigned int right_hand_sides = 0; // -, solves with the factorization (Schur complement)
 };
 
 template <int dim>
@@ -185,7 +205,15 @@ private:
     std::unique_ptr<fem::RigidHub<dim>> hub; // owned, resolved by setup_system()
   };
 
+  struct Condensed; // the factorization, column cache and contact DoFs of the Schur method
+
   dealii::AffineConstraints<double> make_constraints(double load_factor) const;
+  // Supports only (hubs, prescribed displacements) at the given load factor.
+  dealii::AffineConstraints<double> make_support_constraints(double load_factor) const;
+  // One iteration's displacement: by re-assembly (reference) or through the Schur complement.
+  dealii::Vector<double> solve_iteration(double load_factor, IterationRecord& record);
+  dealii::Vector<double> solve_schur_complement(double load_factor, IterationRecord& record);
+  bool use_schur_complement() const;
   dealii::Vector<double> make_point_loads(double load_factor) const;
   // Updates the states from the latest solution with the friction bounds held fixed; returns
   // the number of changed nodes.
@@ -222,5 +250,6 @@ private:
   // force (3D: slip directions converge as a fixed point with the bounds).
   double direction_change = 0.;
   ContactResults<dim> result;
+  std::unique_ptr<Condensed> condensed; // owned; built by the first Schur iteration
 };
 } // namespace gearstiff::contact

@@ -1,7 +1,7 @@
 #include "fem/elastic_system.h"
 
-#include "fem/linear_solver.h"
 #include "errors/errors.h"
+#include "fem/linear_solver.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -315,12 +315,17 @@ void ElasticSystem<dim>::setup_system()
 }
 
 template <int dim>
-Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constraints,
-                                         const Vector<double>& point_loads,
-                                         LinearSolveStatistics& statistics) const
+const std::vector<unsigned int>& ElasticSystem<dim>::dof_components() const
 {
-  check_rigid_body_freedom(constraints, "linear solve");
-  Timer timer(mpi_communicator, true);
+  return impl->dof_component;
+}
+
+template <int dim>
+void ElasticSystem<dim>::condensed_system(const AffineConstraints<double>& constraints,
+                                          const Vector<double>& point_loads,
+                                          PETScWrappers::MPI::SparseMatrix& matrix,
+                                          PETScWrappers::MPI::Vector& rhs) const
+{
   const FESystem<dim>& fe = impl->fe;
   const unsigned int n_dofs = dof_handler.n_dofs();
   std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -333,9 +338,8 @@ Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constr
     cell->get_dof_indices(dofs);
     constraints.add_entries_local_to_global(dofs, dsp, false);
   }
-  PETScWrappers::MPI::SparseMatrix matrix;
   matrix.reinit(impl->locally_owned, impl->locally_owned, dsp, mpi_communicator);
-  PETScWrappers::MPI::Vector rhs(impl->locally_owned, mpi_communicator);
+  rhs.reinit(impl->locally_owned, mpi_communicator);
 
   impl->assemble(*this, constraints, matrix, rhs);
   // Point loads enter once (on rank 0); loads on constrained DoFs are passed to their masters
@@ -351,7 +355,19 @@ Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constr
       }
   matrix.compress(VectorOperation::add);
   rhs.compress(VectorOperation::add);
-  statistics.n_dofs = n_dofs;
+}
+
+template <int dim>
+Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constraints,
+                                         const Vector<double>& point_loads,
+                                         LinearSolveStatistics& statistics) const
+{
+  check_rigid_body_freedom(constraints, "linear solve");
+  Timer timer(mpi_communicator, true);
+  PETScWrappers::MPI::SparseMatrix matrix;
+  PETScWrappers::MPI::Vector rhs;
+  condensed_system(constraints, point_loads, matrix, rhs);
+  statistics.n_dofs = dof_handler.n_dofs();
   statistics.assembly_time = timer.wall_time();
 
   timer.restart();
@@ -379,40 +395,29 @@ Vector<double> ElasticSystem<dim>::residual(const Vector<double>& solution) cons
 }
 
 template <int dim>
-void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double>& constraints,
-                                                  const std::string& context) const
+struct ElasticSystem<dim>::RigidModeAnalysis
 {
-  // Rigid modes per body: dim translations and dim(dim-1)/2 rotations about the body's
-  // centroid, scaled by its radius so that all modes have unit size.
-  constexpr unsigned int n_modes = dim == 2 ? 3 : 6;
+  static constexpr unsigned int n_modes = dim == 2 ? 3 : 6; // per body
   std::map<types::material_id, unsigned int> body_index;
-  for (const auto& [id, m] : materials)
-    body_index.emplace(id, body_index.size());
-  const unsigned int n_bodies = body_index.size();
-  std::vector<Point<dim>> centroid(n_bodies);
-  std::vector<double> count(n_bodies, 0.), radius(n_bodies, 0.);
-  for (unsigned int i = 0; i < dof_support_points.size(); ++i)
+  std::vector<Point<dim>> centroid; // m, per body
+  std::vector<double> radius;       // m, per body
+  // Eigen-decomposition of the Gram matrix of the unit rigid modes of all bodies under the
+  // constraint rows; zero eigenvalues are the free motions.
+  Eigen::VectorXd eigenvalues;
+  Eigen::MatrixXd eigenvectors;
+  std::vector<unsigned int> free; // columns of eigenvectors that are free motions
+
+  // Value of rigid mode k (0..n_modes−1) of DoF i's body at DoF i: dim translations and
+  // dim(dim−1)/2 rotations about the body's centroid, scaled by its radius (unit size).
+  double mode_value(const ElasticSystem<dim>& system, types::global_dof_index i,
+                    unsigned int k) const
   {
-    const unsigned int b = body_index.at(impl->dof_body[i]);
-    centroid[b] += dof_support_points[i];
-    count[b] += 1;
-  }
-  for (unsigned int b = 0; b < n_bodies; ++b)
-    if (count[b] > 0)
-      centroid[b] /= count[b];
-  for (unsigned int i = 0; i < dof_support_points.size(); ++i)
-  {
-    const unsigned int b = body_index.at(impl->dof_body[i]);
-    radius[b] = std::max(radius[b], centroid[b].distance(dof_support_points[i]));
-  }
-  // Value of mode k (0..n_modes-1) of DoF i's body at DoF i.
-  auto mode_value = [&](types::global_dof_index i, unsigned int k)
-  {
-    const unsigned int b = body_index.at(impl->dof_body[i]);
-    const unsigned int c = impl->dof_component[i];
+    const unsigned int b = body_index.at(system.impl->dof_body[i]);
+    const unsigned int c = system.impl->dof_component[i];
     if (k < dim)
       return c == k ? 1. : 0.;
-    const Tensor<1, dim> x = (dof_support_points[i] - centroid[b]) / std::max(radius[b], 1e-300);
+    const Tensor<1, dim> x =
+        (system.dof_support_points[i] - centroid[b]) / std::max(radius[b], 1e-300);
     // Rotations about z (2D, 3D), then about x and y (3D).
     const unsigned int axis = (dim == 2) ? 2 : (k == 3 ? 2 : k - 4);
     const unsigned int p = (axis + 1) % 3, q = (axis + 2) % 3;
@@ -422,21 +427,50 @@ void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double
     if (c == q)
       return p < dim ? x[p] : 0.;
     return 0.;
-  };
+  }
+};
+
+template <int dim>
+typename ElasticSystem<dim>::RigidModeAnalysis
+ElasticSystem<dim>::rigid_mode_analysis(const AffineConstraints<double>& constraints) const
+{
+  RigidModeAnalysis analysis;
+  constexpr unsigned int n_modes = RigidModeAnalysis::n_modes;
+  for (const auto& [id, m] : materials)
+    analysis.body_index.emplace(id, analysis.body_index.size());
+  const unsigned int n_bodies = analysis.body_index.size();
+  analysis.centroid.assign(n_bodies, Point<dim>());
+  analysis.radius.assign(n_bodies, 0.);
+  std::vector<double> count(n_bodies, 0.);
+  for (unsigned int i = 0; i < dof_support_points.size(); ++i)
+  {
+    const unsigned int b = analysis.body_index.at(impl->dof_body[i]);
+    analysis.centroid[b] += dof_support_points[i];
+    count[b] += 1;
+  }
+  for (unsigned int b = 0; b < n_bodies; ++b)
+    if (count[b] > 0)
+      analysis.centroid[b] /= count[b];
+  for (unsigned int i = 0; i < dof_support_points.size(); ++i)
+  {
+    const unsigned int b = analysis.body_index.at(impl->dof_body[i]);
+    analysis.radius[b] =
+        std::max(analysis.radius[b], analysis.centroid[b].distance(dof_support_points[i]));
+  }
   const unsigned int n_columns = n_modes * n_bodies;
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n_columns, n_columns);
   std::vector<double> row(n_columns);
   for (const auto& line : constraints.get_lines())
   {
     std::fill(row.begin(), row.end(), 0.);
-    const unsigned int b = body_index.at(impl->dof_body[line.index]);
+    const unsigned int b = analysis.body_index.at(impl->dof_body[line.index]);
     for (unsigned int k = 0; k < n_modes; ++k)
-      row[b * n_modes + k] += mode_value(line.index, k);
+      row[b * n_modes + k] += analysis.mode_value(*this, line.index, k);
     for (const auto& [j, a] : line.entries)
     {
-      const unsigned int bj = body_index.at(impl->dof_body[j]);
+      const unsigned int bj = analysis.body_index.at(impl->dof_body[j]);
       for (unsigned int k = 0; k < n_modes; ++k)
-        row[bj * n_modes + k] -= a * mode_value(j, k);
+        row[bj * n_modes + k] -= a * analysis.mode_value(*this, j, k);
     }
     for (unsigned int p = 0; p < n_columns; ++p)
       if (row[p] != 0.)
@@ -449,20 +483,33 @@ void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double
       for (unsigned int k = 0; k < n_modes; ++k)
         gram(b * n_modes + k, b * n_modes + k) = 1.;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
-  const double largest = std::max(eigen.eigenvalues().maxCoeff(), 1.);
-  const double smallest = eigen.eigenvalues().minCoeff();
+  analysis.eigenvalues = eigen.eigenvalues();
+  analysis.eigenvectors = eigen.eigenvectors();
   // The Gram matrix of unit-size modes sums squares of constraint coefficients of order one;
   // an unrestrained mode gives exactly zero up to round-off.
-  if (smallest > 1e-10 * largest)
+  const double largest = std::max(analysis.eigenvalues.maxCoeff(), 1.);
+  for (unsigned int k = 0; k < n_columns; ++k)
+    if (analysis.eigenvalues[k] <= 1e-10 * largest)
+      analysis.free.push_back(k);
+  return analysis;
+}
+
+template <int dim>
+void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double>& constraints,
+                                                  const std::string& context) const
+{
+  const RigidModeAnalysis analysis = rigid_mode_analysis(constraints);
+  if (analysis.free.empty())
     return;
-  const Eigen::VectorXd free_mode = eigen.eigenvectors().col(0);
+  const Eigen::VectorXd free_mode = analysis.eigenvectors.col(analysis.free.front());
   std::ostringstream bodies;
   std::string separator;
-  for (const auto& [id, b] : body_index)
+  for (const auto& [id, b] : analysis.body_index)
   {
     double amplitude = 0;
-    for (unsigned int k = 0; k < n_modes; ++k)
-      amplitude += free_mode[b * n_modes + k] * free_mode[b * n_modes + k];
+    for (unsigned int k = 0; k < RigidModeAnalysis::n_modes; ++k)
+      amplitude += free_mode[b * RigidModeAnalysis::n_modes + k] *
+                   free_mode[b * RigidModeAnalysis::n_modes + k];
     if (amplitude > 1e-2)
     {
       bodies << separator << id;
@@ -472,6 +519,37 @@ void ElasticSystem<dim>::check_rigid_body_freedom(const AffineConstraints<double
   throw SolverFailure(context, "the body with material id " + bodies.str() +
                                    " is free to move: supports, rigid hubs and closed contacts "
                                    "leave a rigid-body motion unrestrained (singular stiffness)");
+}
+
+template <int dim>
+std::vector<Vector<double>>
+ElasticSystem<dim>::free_rigid_modes(const AffineConstraints<double>& constraints) const
+{
+  const RigidModeAnalysis analysis = rigid_mode_analysis(constraints);
+  std::vector<Vector<double>> modes;
+  for (const unsigned int column : analysis.free)
+  {
+    Vector<double> mode(dof_handler.n_dofs());
+    for (types::global_dof_index i = 0; i < mode.size(); ++i)
+    {
+      const unsigned int b = analysis.body_index.at(impl->dof_body[i]);
+      for (unsigned int k = 0; k < RigidModeAnalysis::n_modes; ++k)
+        mode[i] += analysis.eigenvectors(b * RigidModeAnalysis::n_modes + k, column) *
+                   analysis.mode_value(*this, i, k);
+    }
+    // The constrained DoFs follow their masters exactly (the mode satisfies the homogeneous
+    // constraints up to round-off); set them so.
+    AffineConstraints<double> homogeneous;
+    homogeneous.copy_from(constraints);
+    for (const auto& line : constraints.get_lines())
+      homogeneous.set_inhomogeneity(line.index, 0.);
+    homogeneous.distribute(mode);
+    for (const auto& other : modes) // orthonormal: Gram–Schmidt against the earlier ones
+      mode.add(-(mode * other), other);
+    mode /= mode.l2_norm();
+    modes.push_back(std::move(mode));
+  }
+  return modes;
 }
 
 template std::vector<Node<2>> boundary_nodes(const DoFHandler<2>&,

@@ -33,6 +33,11 @@ template <int dim, int spacedim>
 class FiniteElement;
 template <int dim, int spacedim>
 class Mapping;
+namespace PETScWrappers::MPI
+{
+class SparseMatrix;
+class Vector;
+} // namespace PETScWrappers::MPI
 } // namespace dealii
 
 namespace gearstiff::fem
@@ -105,6 +110,21 @@ public:
   // rigid-body motion of some body unrestrained (the stiffness matrix would be singular).
   void check_rigid_body_freedom(const dealii::AffineConstraints<double>& constraints,
                                 const std::string& context) const;
+  // The rigid-body motions the homogeneous part of `constraints` leaves free: an orthonormal
+  // basis of complete DoF vectors (m per unit amplitude); empty when every body is held.
+  std::vector<dealii::Vector<double>>
+  free_rigid_modes(const dealii::AffineConstraints<double>& constraints) const;
+
+  // K and f (tractions times the load factor, plus `point_loads`, N, complete, may be empty)
+  // condensed with `constraints` into `matrix` and `rhs` (initialised here, compressed): the
+  // system every solve factorizes.
+  void condensed_system(const dealii::AffineConstraints<double>& constraints,
+                        const dealii::Vector<double>& point_loads,
+                        dealii::PETScWrappers::MPI::SparseMatrix& matrix,
+                        dealii::PETScWrappers::MPI::Vector& rhs) const;
+  const LinearSolverParameters& get_linear_solver() const { return linear_solver; }
+  // Component (0..dim−1) of every DoF, complete.
+  const std::vector<unsigned int>& dof_components() const;
 
   // Writes displacement, von Mises stress, material id, MPI subdomain and the nodal fields as
   // <directory>/<base>_<rank>.vtu plus <base>.pvtu; returns the file names (relative).
@@ -127,6 +147,9 @@ public:
   const ElasticityParameters& get_parameters() const { return elasticity; }
 
 private:
+  struct RigidModeAnalysis; // the Gram matrix of the rigid modes under the constraints
+  RigidModeAnalysis rigid_mode_analysis(const dealii::AffineConstraints<double>& constraints) const;
+
   struct Implementation; // PETSc objects, kept out of this header
   MPI_Comm mpi_communicator;
   ElasticityParameters elasticity;

@@ -1,11 +1,14 @@
 // GoogleTest main for tests that use deal.II/PETSc: MPI (and PETSc) initialised once for all
 // tests; only rank 0 prints, so `mpiexec -np 2` output stays readable.
+#include "fem/mpi_start.h"
+
 #include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <gtest/gtest.h>
 
 int main(int argc, char** argv)
 {
+  gearstiff::fem::prepare_mpi_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
   // GEARSTIFF_TEST_ALL_RANKS=1 keeps every rank's output, to see a failure of rank 1 alone.

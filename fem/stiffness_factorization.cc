@@ -1,0 +1,268 @@
+#include "fem/stiffness_factorization.h"
+
+#include "errors/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+#include <petscksp.h>
+#include <string>
+
+namespace gearstiff::fem
+{
+using namespace dealii;
+
+namespace
+{
+void check(PetscErrorCode code, const std::string& what)
+{
+  if (code != 0)
+    throw SolverFailure("direct solver (MUMPS) " + what,
+                        "PETSc error code " + std::to_string(code));
+}
+
+AffineConstraints<double> homogeneous_copy(const AffineConstraints<double>& constraints)
+{
+  AffineConstraints<double> homogeneous;
+  homogeneous.copy_from(constraints);
+  for (const auto& line : constraints.get_lines())
+    homogeneous.set_inhomogeneity(line.index, 0.);
+  return homogeneous;
+}
+
+// One DoF per free mode whose fixing removes that mode: pivoted elimination on the mode
+// vectors, each step taking the unconstrained DoF with the largest remaining amplitude, so the
+// fixed DoFs' block of the modes is well conditioned.
+std::vector<types::global_dof_index> fixing_dofs(const std::vector<Vector<double>>& modes,
+                                                 const AffineConstraints<double>& constraints)
+{
+  std::vector<Vector<double>> remaining = modes;
+  std::vector<types::global_dof_index> fixed;
+  for (unsigned int j = 0; j < remaining.size(); ++j)
+  {
+    types::global_dof_index pivot = numbers::invalid_dof_index;
+    double largest = 0.;
+    for (types::global_dof_index i = 0; i < remaining[j].size(); ++i)
+      if (std::abs(remaining[j][i]) > largest && !constraints.is_constrained(i) &&
+          std::find(fixed.begin(), fixed.end(), i) == fixed.end())
+      {
+        largest = std::abs(remaining[j][i]);
+        pivot = i;
+      }
+    if (pivot == numbers::invalid_dof_index)
+      throw SolverFailure("stiffness factorization",
+                          "a free rigid-body mode has no unconstrained DoF to fix");
+    fixed.push_back(pivot);
+    for (unsigned int k = j + 1; k < remaining.size(); ++k)
+      remaining[k].add(-remaining[k][pivot] / remaining[j][pivot], remaining[j]);
+  }
+  return fixed;
+}
+} // namespace
+
+template <int dim>
+struct StiffnessFactorization<dim>::Implementation
+{
+  MPI_Comm mpi_communicator;
+  IndexSet locally_owned;
+  types::global_dof_index n_dofs = 0;
+  AffineConstraints<double> homogeneous; // supports and fixed DoFs, zero inhomogeneities
+  PETScWrappers::MPI::SparseMatrix matrix;
+  KSP ksp = nullptr;
+  Mat factor = nullptr; // owned by the KSP's PC
+
+  ~Implementation()
+  {
+    if (ksp)
+      KSPDestroy(&ksp);
+  }
+
+  // C^T b: a load on a constrained DoF acts on its masters (virtual work), written into the
+  // owned entries of `rhs` (every rank holds the complete load).
+  void condense(const SparseLoad& load, Vec rhs) const
+  {
+    for (const auto& [dof, value] : load)
+    {
+      if (value == 0.)
+        continue;
+      if (const auto* entries = homogeneous.get_constraint_entries(dof))
+      {
+        for (const auto& [master, weight] : *entries)
+          if (locally_owned.is_element(master))
+            check(VecSetValue(rhs, master, weight * value, ADD_VALUES), "VecSetValue");
+      }
+      else if (!homogeneous.is_constrained(dof) && locally_owned.is_element(dof))
+        check(VecSetValue(rhs, dof, value, ADD_VALUES), "VecSetValue");
+    }
+  }
+};
+
+template <int dim>
+StiffnessFactorization<dim>::StiffnessFactorization(const ElasticSystem<dim>& system,
+                                                    const AffineConstraints<double>& constraints,
+                                                    const Vector<double>& point_loads)
+    : impl(std::make_unique<Implementation>())
+{
+  Timer timer(system.get_mpi_communicator(), true);
+  impl->mpi_communicator = system.get_mpi_communicator();
+  impl->locally_owned = system.get_dof_handler().locally_owned_dofs();
+  impl->n_dofs = system.get_dof_handler().n_dofs();
+
+  // Supports plus one fixed DoF per free rigid-body mode: a non-singular matrix whose inverse
+  // is a generalized inverse of the support-condensed one.
+  modes = system.free_rigid_modes(constraints);
+  AffineConstraints<double> fixed;
+  for (const auto& line : constraints.get_lines())
+  {
+    fixed.add_line(line.index);
+    fixed.add_entries(line.index, line.entries);
+    fixed.set_inhomogeneity(line.index, line.inhomogeneity);
+  }
+  for (const auto dof : fixing_dofs(modes, constraints))
+    fixed.add_line(dof);
+  fixed.close();
+  impl->homogeneous = homogeneous_copy(fixed);
+
+  PETScWrappers::MPI::Vector rhs;
+  system.condensed_system(fixed, point_loads, impl->matrix, rhs);
+
+  // Cholesky: the condensed matrix is symmetric positive definite once every body is held.
+  PC pc;
+  check(KSPCreate(impl->mpi_communicator, &impl->ksp), "KSPCreate");
+  check(KSPSetOperators(impl->ksp, impl->matrix, impl->matrix), "KSPSetOperators");
+  check(KSPSetType(impl->ksp, KSPPREONLY), "KSPSetType");
+  check(KSPGetPC(impl->ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  if (KSPSetUp(impl->ksp) != 0)
+    throw SolverFailure("direct solver (MUMPS)",
+                        "the factorization failed (singular matrix: a body may be free to move)");
+  check(PCFactorGetMatrix(pc, &impl->factor), "PCFactorGetMatrix");
+
+  PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
+  check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
+  ++solves;
+  particular.reinit(impl->n_dofs);
+  particular = Vector<double>(solution);
+  fixed.distribute(particular);
+  factor_seconds = timer.wall_time();
+}
+
+template <int dim>
+StiffnessFactorization<dim>::~StiffnessFactorization() = default;
+
+template <int dim>
+Vector<double> StiffnessFactorization<dim>::response(const Vector<double>& load) const
+{
+  SparseLoad entries;
+  for (types::global_dof_index i = 0; i < load.size(); ++i)
+    if (load[i] != 0.)
+      entries.emplace_back(i, load[i]);
+  PETScWrappers::MPI::Vector rhs(impl->locally_owned, impl->mpi_communicator);
+  impl->condense(entries, rhs);
+  rhs.compress(VectorOperation::add);
+  PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
+  check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
+  ++solves;
+  Vector<double> complete(solution);
+  impl->homogeneous.distribute(complete);
+  return complete;
+}
+
+template <int dim>
+std::vector<std::vector<double>>
+StiffnessFactorization<dim>::responses(const std::vector<SparseLoad>& loads,
+                                       const std::vector<types::global_dof_index>& rows) const
+{
+  // The values at `rows` need, for a constrained row, its masters' values: gather both.
+  std::vector<types::global_dof_index> needed;
+  for (const auto row : rows)
+  {
+    if (const auto* entries = impl->homogeneous.get_constraint_entries(row))
+      for (const auto& [master, weight] : *entries)
+        needed.push_back(master);
+    else if (!impl->homogeneous.is_constrained(row))
+      needed.push_back(row);
+  }
+  std::sort(needed.begin(), needed.end());
+  needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+  auto position = [&](types::global_dof_index dof)
+  { return std::lower_bound(needed.begin(), needed.end(), dof) - needed.begin(); };
+
+  std::vector<std::vector<double>> result(loads.size(), std::vector<double>(rows.size(), 0.));
+  // Blocks of right-hand sides: MUMPS solves them together (level-3 BLAS), and a block of
+  // dense columns stays small even for a million DoFs.
+  constexpr unsigned int block = 64;
+  const PetscInt n_local = impl->locally_owned.n_elements();
+  const PetscInt first_local = n_local > 0 ? *impl->locally_owned.begin() : 0;
+  for (unsigned int start = 0; start < loads.size(); start += block)
+  {
+    const unsigned int n_columns = std::min<unsigned int>(block, loads.size() - start);
+    Mat b, x;
+    check(MatCreateDense(impl->mpi_communicator, n_local, PETSC_DECIDE, impl->n_dofs, n_columns,
+                         nullptr, &b),
+          "MatCreateDense");
+    check(MatCreateDense(impl->mpi_communicator, n_local, PETSC_DECIDE, impl->n_dofs, n_columns,
+                         nullptr, &x),
+          "MatCreateDense");
+    PetscScalar* values;
+    check(MatDenseGetArray(b, &values), "MatDenseGetArray");
+    std::fill(values, values + std::size_t(n_local) * n_columns, 0.);
+    for (unsigned int j = 0; j < n_columns; ++j)
+      for (const auto& [dof, value] : loads[start + j])
+      {
+        auto add = [&](types::global_dof_index target, double v)
+        {
+          if (impl->locally_owned.is_element(target))
+            values[std::size_t(j) * n_local + (target - first_local)] += v;
+        };
+        if (const auto* entries = impl->homogeneous.get_constraint_entries(dof))
+          for (const auto& [master, weight] : *entries)
+            add(master, weight * value);
+        else if (!impl->homogeneous.is_constrained(dof))
+          add(dof, value);
+      }
+    check(MatDenseRestoreArray(b, &values), "MatDenseRestoreArray");
+    check(MatAssemblyBegin(b, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(b, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    check(MatMatSolve(impl->factor, b, x), "MatMatSolve");
+    solves += n_columns;
+
+    std::vector<double> gathered(needed.size() * n_columns, 0.);
+    const PetscScalar* solution;
+    check(MatDenseGetArrayRead(x, &solution), "MatDenseGetArrayRead");
+    for (unsigned int i = 0; i < needed.size(); ++i)
+      if (impl->locally_owned.is_element(needed[i]))
+        for (unsigned int j = 0; j < n_columns; ++j)
+          gathered[std::size_t(i) * n_columns + j] =
+              solution[std::size_t(j) * n_local + (needed[i] - first_local)];
+    check(MatDenseRestoreArrayRead(x, &solution), "MatDenseRestoreArrayRead");
+    MatDestroy(&b);
+    MatDestroy(&x);
+    Utilities::MPI::sum(gathered, impl->mpi_communicator, gathered);
+
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (unsigned int j = 0; j < n_columns; ++j)
+      {
+        double value = 0.;
+        if (const auto* entries = impl->homogeneous.get_constraint_entries(rows[r]))
+        {
+          for (const auto& [master, weight] : *entries)
+            value += weight * gathered[position(master) * n_columns + j];
+        }
+        else if (!impl->homogeneous.is_constrained(rows[r]))
+          value = gathered[position(rows[r]) * n_columns + j];
+        result[start + j][r] = value;
+      }
+  }
+  return result;
+}
+
+template class StiffnessFactorization<2>;
+template class StiffnessFactorization<3>;
+} // namespace gearstiff::fem
