@@ -411,13 +411,6 @@ Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
     for (const auto& support : supports)
       if (support.hub)
         support.hub->add_loads(unit_loads, 1.);
-    const double step_factor = load_factor;
-    elastic.set_load_factor(1.);
-    c.factorization =
-        std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads);
-    // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
-    const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
-    elastic.set_load_factor(step_factor);
     for (const auto& pair : pairs)
       for (const auto& node : pair.nodes)
       {
@@ -429,6 +422,13 @@ Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
       }
     std::sort(c.dofs.begin(), c.dofs.end());
     c.dofs.erase(std::unique(c.dofs.begin(), c.dofs.end()), c.dofs.end());
+    const double step_factor = load_factor;
+    elastic.set_load_factor(1.);
+    c.factorization =
+        std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads, c.dofs);
+    // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
+    const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
+    elastic.set_load_factor(step_factor);
     for (const auto& pair : pairs)
     {
       c.functionals.emplace_back();

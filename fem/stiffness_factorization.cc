@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/index_set.h>
@@ -75,11 +76,45 @@ struct StiffnessFactorization<dim>::Implementation
   PETScWrappers::MPI::SparseMatrix matrix;
   KSP ksp = nullptr;
   Mat factor = nullptr; // owned by the KSP's PC
+  // The dense Schur complement of the condensed K on the interface DoFs, factorized; empty
+  // when not computed (several ranks, or no interface given).
+  std::vector<types::global_dof_index> interface; // sorted, unconstrained DoFs
+  Eigen::LLT<Eigen::MatrixXd> interface_factor;
+  bool dense = false;
+
+  // The interface DoFs that carry the condensed loads and the values of `dofs`: unconstrained
+  // DoFs themselves, constrained ones through their masters.
+  std::vector<types::global_dof_index>
+  interface_of(const std::vector<types::global_dof_index>& dofs) const
+  {
+    std::vector<types::global_dof_index> result;
+    for (const auto dof : dofs)
+      if (const auto* entries = homogeneous.get_constraint_entries(dof))
+        for (const auto& [master, weight] : *entries)
+          result.push_back(master);
+      else if (!homogeneous.is_constrained(dof))
+        result.push_back(dof);
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+  }
 
   ~Implementation()
   {
     if (ksp)
       KSPDestroy(&ksp);
+  }
+
+  // Where a load on `dof` acts after condensation (and what the value at `dof` is made of):
+  // the DoF itself, or a constrained DoF's masters with their weights.
+  std::vector<std::pair<types::global_dof_index, double>>
+  condensed_targets(types::global_dof_index dof) const
+  {
+    if (const auto* entries = homogeneous.get_constraint_entries(dof))
+      return *entries;
+    if (homogeneous.is_constrained(dof))
+      return {};
+    return {{dof, 1.}};
   }
 
   // C^T b: a load on a constrained DoF acts on its masters (virtual work), written into the
@@ -103,9 +138,9 @@ struct StiffnessFactorization<dim>::Implementation
 };
 
 template <int dim>
-StiffnessFactorization<dim>::StiffnessFactorization(const ElasticSystem<dim>& system,
-                                                    const AffineConstraints<double>& constraints,
-                                                    const Vector<double>& point_loads)
+StiffnessFactorization<dim>::StiffnessFactorization(
+    const ElasticSystem<dim>& system, const AffineConstraints<double>& constraints,
+    const Vector<double>& point_loads, const std::vector<types::global_dof_index>& interface_dofs)
     : impl(std::make_unique<Implementation>())
 {
   Timer timer(system.get_mpi_communicator(), true);
@@ -139,10 +174,24 @@ StiffnessFactorization<dim>::StiffnessFactorization(const ElasticSystem<dim>& sy
   check(KSPGetPC(impl->ksp, &pc), "KSPGetPC");
   check(PCSetType(pc, PCCHOLESKY), "PCSetType");
   check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+  check(PCFactorGetMatrix(pc, &impl->factor), "PCFactorGetMatrix");
+  const bool serial = Utilities::MPI::n_mpi_processes(impl->mpi_communicator) == 1;
+  if (serial && !interface_dofs.empty())
+  {
+    impl->interface = impl->interface_of(interface_dofs);
+    std::vector<PetscInt> indices(impl->interface.begin(), impl->interface.end());
+    IS is;
+    check(ISCreateGeneral(PETSC_COMM_SELF, indices.size(), indices.data(), PETSC_COPY_VALUES, &is),
+          "ISCreateGeneral");
+    check(MatFactorSetSchurIS(impl->factor, is), "MatFactorSetSchurIS");
+    ISDestroy(&is);
+  }
   if (KSPSetUp(impl->ksp) != 0)
     throw SolverFailure("direct solver (MUMPS)",
                         "the factorization failed (singular matrix: a body may be free to move)");
-  check(PCFactorGetMatrix(pc, &impl->factor), "PCFactorGetMatrix");
+  if (!impl->interface.empty())
+    factorize_interface();
 
   PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
   check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
@@ -155,6 +204,38 @@ StiffnessFactorization<dim>::StiffnessFactorization(const ElasticSystem<dim>& sy
 
 template <int dim>
 StiffnessFactorization<dim>::~StiffnessFactorization() = default;
+
+template <int dim>
+bool StiffnessFactorization<dim>::dense_interface() const
+{
+  return impl->dense;
+}
+
+template <int dim>
+void StiffnessFactorization<dim>::factorize_interface()
+{
+  Mat schur;
+  MatFactorSchurStatus status;
+  check(MatFactorCreateSchurComplement(impl->factor, &schur, &status),
+        "MatFactorCreateSchurComplement");
+  const PetscInt n = impl->interface.size();
+  const PetscScalar* values;
+  check(MatDenseGetArrayRead(schur, &values), "MatDenseGetArrayRead");
+  Eigen::MatrixXd matrix = Eigen::Map<const Eigen::MatrixXd>(values, n, n);
+  check(MatDenseRestoreArrayRead(schur, &values), "MatDenseRestoreArrayRead");
+  MatDestroy(&schur);
+  // For a symmetric factorization MUMPS may return one triangle only: mirror the filled one.
+  const double lower = matrix.triangularView<Eigen::StrictlyLower>().toDenseMatrix().norm();
+  const double upper = matrix.triangularView<Eigen::StrictlyUpper>().toDenseMatrix().norm();
+  if (upper == 0. && lower > 0.)
+    matrix = matrix.selfadjointView<Eigen::Lower>();
+  else if (lower == 0. && upper > 0.)
+    matrix = matrix.selfadjointView<Eigen::Upper>();
+  impl->interface_factor.compute(matrix);
+  // The Schur complement of a positive definite matrix is positive definite; if the dense
+  // factorization fails anyway, the sparse solves remain (same answer, slower).
+  impl->dense = impl->interface_factor.info() == Eigen::Success;
+}
 
 template <int dim>
 Vector<double> StiffnessFactorization<dim>::response(const Vector<double>& load) const
@@ -195,6 +276,41 @@ StiffnessFactorization<dim>::responses(const std::vector<SparseLoad>& loads,
   { return std::lower_bound(needed.begin(), needed.end(), dof) - needed.begin(); };
 
   std::vector<std::vector<double>> result(loads.size(), std::vector<double>(rows.size(), 0.));
+  if (impl->dense &&
+      std::includes(impl->interface.begin(), impl->interface.end(), needed.begin(), needed.end()))
+  {
+    // (K⁻¹)_CC = S⁻¹ for the Schur complement S on the interface C: loads on C only need S.
+    auto interface_position = [&](types::global_dof_index dof)
+    {
+      return std::lower_bound(impl->interface.begin(), impl->interface.end(), dof) -
+             impl->interface.begin();
+    };
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(impl->interface.size(), loads.size());
+    bool on_interface = true;
+    for (unsigned int j = 0; j < loads.size() && on_interface; ++j)
+      for (const auto& [dof, value] : loads[j])
+        for (const auto& [target, weight] : impl->condensed_targets(dof))
+        {
+          const auto k = interface_position(target);
+          if (k == static_cast<long>(impl->interface.size()) || impl->interface[k] != target)
+            on_interface = false;
+          else
+            rhs(k, j) += weight * value;
+        }
+    if (on_interface)
+    {
+      const Eigen::MatrixXd solution = impl->interface_factor.solve(rhs);
+      solves += loads.size();
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        for (const auto& [target, weight] : impl->condensed_targets(rows[r]))
+        {
+          const auto k = interface_position(target);
+          for (unsigned int j = 0; j < loads.size(); ++j)
+            result[j][r] += weight * solution(k, j);
+        }
+      return result;
+    }
+  }
   // Blocks of right-hand sides: MUMPS solves them together (level-3 BLAS), and a block of
   // dense columns stays small even for a million DoFs.
   constexpr unsigned int block = 64;

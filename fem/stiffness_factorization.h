@@ -37,10 +37,15 @@ public:
   // Condenses K with `constraints` (the supports, inhomogeneities at unit load factor), fixes
   // the rigid-body modes they leave free, and factorizes. `point_loads` (N, complete, may be
   // empty) are the unit-load-factor point loads (torques of hubs) added to the tractions.
+  // `interface_dofs` (may be empty): the DoFs that responses() will load and read (the contact
+  // DoFs). On one rank the factorization then also yields the dense Schur complement of K on
+  // them (MUMPS ICNTL(19)), so responses() are dense solves of that small matrix instead of
+  // sparse triangular solves; PETSc supports this in serial only.
   // Needs the direct solver: SolverFailure when the factorization fails.
   StiffnessFactorization(const ElasticSystem<dim>& system,
                          const dealii::AffineConstraints<double>& constraints,
-                         const dealii::Vector<double>& point_loads);
+                         const dealii::Vector<double>& point_loads,
+                         const std::vector<dealii::types::global_dof_index>& interface_dofs = {});
   ~StiffnessFactorization();
 
   // m, the solution for the loads and prescribed displacements at unit load factor, with the
@@ -58,9 +63,13 @@ public:
             const std::vector<dealii::types::global_dof_index>& rows) const;
 
   double factorization_time() const { return factor_seconds; } // s, wall: assembly + factor
-  unsigned int n_solves() const { return solves; }             // right-hand sides so far
+  // Whether responses() use the dense Schur complement on the interface DoFs.
+  bool dense_interface() const;
+  unsigned int n_solves() const { return solves; } // right-hand sides so far
 
 private:
+  void factorize_interface();
+
   struct Implementation; // PETSc objects, kept out of this header
   std::unique_ptr<Implementation> impl;
   dealii::Vector<double> particular;

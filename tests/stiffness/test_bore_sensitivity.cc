@@ -21,7 +21,7 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-double stiffness(const std::string& position, double pinion_bore_radius)
+double pair_stiffness(const std::string& position, double pinion_bore_radius)
 {
   GearMeshStiffnessSettings settings;
   settings.scene.position = position;
@@ -42,9 +42,9 @@ double stiffness(const std::string& position, double pinion_bore_radius)
 // and +9.70%.
 TEST(BoreSensitivity, MatchesTheIndependentPlaneStrainModel)
 {
-  const double single_ratio = stiffness("single", 15e-3) / stiffness("single", 10e-3);
+  const double single_ratio = pair_stiffness("single", 15e-3) / pair_stiffness("single", 10e-3);
   EXPECT_NEAR(single_ratio, 1.07, 0.01);
-  const double double_ratio = stiffness("double", 15e-3) / stiffness("double", 10e-3);
+  const double double_ratio = pair_stiffness("double", 15e-3) / pair_stiffness("double", 10e-3);
   EXPECT_NEAR(double_ratio, 1.10, 0.01);
   // The double pair shares the hub's rotation between two tooth pairs, so the bore's share of
   // its compliance is larger: it must be the more sensitive of the two, as in the source.
