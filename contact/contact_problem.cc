@@ -161,6 +161,13 @@ void ContactProblem<dim>::setup_system()
                                        support.components);
   for (auto& pair : pairs)
   {
+    // A surface paired with itself closes onto its own nodes: every node would be constrained
+    // to itself (the reference path looped forever resolving that chain).
+    for (const auto id : pair.slave)
+      if (std::find(pair.master.begin(), pair.master.end(), id) != pair.master.end())
+        throw InputError(pair.name, "the slave and master surfaces share boundary id " +
+                                        std::to_string(id) +
+                                        ": a surface cannot be its own contact partner");
     std::vector<SlaveNode<dim>> coupled = mortar_coupling(
         dof_handler, pair.slave, pair.master, parameters.search_distance, elastic.depth());
     pair.nodes.clear();
@@ -352,6 +359,15 @@ struct ContactProblem<dim>::Condensed
   std::vector<double> particular;           // m, unit-load solution at dofs
   std::vector<std::vector<double>> modes;   // free rigid-body modes at dofs
   std::vector<double> mode_loads;           // N·m (work), Rᵀ f at unit load factor
+  // No support constrains a slave DoF or takes one as a master: there the contact forces are
+  // exactly f_friction − Gᵀλ, and the iterations need no full displacement field.
+  bool slave_forces_exact = true;
+  // The latest iteration's loads and rigid amplitudes; `partial`: `displacement` holds only the
+  // contact DoFs until complete_solution().
+  Vector<double> contact_load; // N
+  double load_factor = 1.;
+  std::vector<double> amplitudes; // m per unit mode
+  bool partial = false;
 
   unsigned int position(types::global_dof_index dof) const
   {
@@ -382,22 +398,42 @@ bool ContactProblem<dim>::use_schur_complement() const
 }
 
 template <int dim>
-Vector<double> ContactProblem<dim>::solve_iteration(double load_factor, IterationRecord& record)
+void ContactProblem<dim>::solve_iteration(double load_factor, IterationRecord& record,
+                                          Vector<double>& residual)
 {
   if (use_schur_complement())
-    return solve_schur_complement(load_factor, record);
+  {
+    solve_schur_complement(load_factor, record, residual);
+    return;
+  }
   fem::LinearSolveStatistics statistics;
-  const Vector<double> solution =
+  displacement =
       elastic.solve(make_constraints(load_factor), make_point_loads(load_factor), statistics);
+  residual = elastic.residual(displacement);
   result.assembly_time += statistics.assembly_time;
   result.solve_time += statistics.solve_time;
   record.time = statistics.assembly_time + statistics.solve_time;
-  return solution;
 }
 
 template <int dim>
-Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
-                                                           IterationRecord& record)
+void ContactProblem<dim>::complete_solution(Vector<double>& residual)
+{
+  if (!condensed || !condensed->partial)
+    return;
+  // u = s·u_p + P (f_friction − Gᵀλ) + R α, one solve with the converged loads.
+  Condensed& c = *condensed;
+  displacement = c.factorization->response(c.contact_load);
+  displacement.add(c.load_factor, c.factorization->particular_solution());
+  for (unsigned int j = 0; j < c.amplitudes.size(); ++j)
+    displacement.add(c.amplitudes[j], c.factorization->free_modes()[j]);
+  residual = elastic.residual(displacement);
+  c.partial = false;
+  result.right_hand_sides = c.factorization->n_solves();
+}
+
+template <int dim>
+void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRecord& record,
+                                                 Vector<double>& residual)
 {
   Timer timer(mpi_communicator, true);
   const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
@@ -446,6 +482,17 @@ Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
       c.slot.emplace_back(pair.nodes.size(), -1);
     }
     c.particular = c.at_dofs(c.factorization->particular_solution());
+    std::vector<bool> held(n_dofs, false);
+    for (const auto& line : c.supports.get_lines())
+    {
+      held[line.index] = true;
+      for (const auto& [master, weight] : line.entries)
+        held[master] = true;
+    }
+    for (const auto& pair : pairs)
+      for (const auto& node : pair.nodes)
+        for (unsigned int d = 0; d < dim; ++d)
+          c.slave_forces_exact = c.slave_forces_exact && !held[node.node.dofs[d]];
     for (const auto& mode : c.factorization->free_modes())
     {
       c.modes.push_back(c.at_dofs(mode));
@@ -616,10 +663,12 @@ Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
   }
   if (!restrained)
   {
-    // The closed contacts leave a body free: the reference path's check names it.
+    // The closed contacts leave a body free. The reference path's check names the body; it
+    // builds the eliminated constraints, which only the reference path needs to be acyclic.
     elastic.check_rigid_body_freedom(make_constraints(load_factor), "linear solve");
-    throw SolverFailure("linear solve", "the closed contacts leave a rigid-body motion of a "
-                                        "body held only through contact unrestrained");
+    throw SolverFailure("linear solve", "a body held only through contact is free to move: "
+                                        "the closed contacts leave a rigid-body motion "
+                                        "unrestrained");
   }
   if (n_modes > 0)
   {
@@ -631,7 +680,7 @@ Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
   else if (m > 0)
     multipliers = schur_factor.solve(rhs);
 
-  // The full displacement: u = s·u_p + P (f_friction − Gᵀλ) + R α.
+  // The contact loads f_friction − Gᵀλ (N) at the contact DoFs.
   Vector<double> load(n_dofs);
   auto add_node_load = [&](const Term& t, double force)
   {
@@ -645,16 +694,43 @@ Vector<double> ContactProblem<dim>::solve_schur_complement(double load_factor,
   for (unsigned int i = 0; i < m; ++i)
     for (const Term& t : rows[i].terms)
       add_node_load(t, -multipliers[i] * t.coefficient);
-  Vector<double> solution = c.factorization->response(load);
-  solution.add(load_factor, c.factorization->particular_solution());
-  for (unsigned int j = 0; j < n_modes; ++j)
-    solution.add(amplitudes[j], c.factorization->free_modes()[j]);
+  c.contact_load = load;
+  c.load_factor = load_factor;
+  c.amplitudes.assign(amplitudes.data(), amplitudes.data() + n_modes);
+
+  if (c.slave_forces_exact)
+  {
+    // The states need only the displacements at the contact DoFs, u_C = u_base − Σ λ_i P g_iᵀ +
+    // R α, and the forces at the slave DoFs, r = K u − f = f_friction − Gᵀλ there (stationarity
+    // of the Lagrangian at a DoF no support touches). The full field waits for convergence.
+    std::vector<double> contact_displacement = base;
+    for (unsigned int i = 0; i < m; ++i)
+      for (const Term& t : rows[i].terms)
+      {
+        const std::vector<double>& y = column(t);
+        const double factor = -multipliers[i] * t.coefficient;
+        for (unsigned int k = 0; k < y.size(); ++k)
+          contact_displacement[k] += factor * y[k];
+      }
+    for (unsigned int j = 0; j < n_modes; ++j)
+      for (unsigned int k = 0; k < c.dofs.size(); ++k)
+        contact_displacement[k] += amplitudes[j] * c.modes[j][k];
+    displacement.reinit(n_dofs);
+    for (unsigned int k = 0; k < c.dofs.size(); ++k)
+      displacement[c.dofs[k]] = contact_displacement[k];
+    residual = load;
+    c.partial = true;
+  }
+  else
+  {
+    c.partial = true;
+    complete_solution(residual);
+  }
 
   record.n_rows = m;
   record.time = timer.wall_time();
   result.solve_time += record.time;
   result.right_hand_sides = c.factorization->n_solves();
-  return solution;
 }
 
 template <int dim>
@@ -864,7 +940,7 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
       record.iteration = iteration;
       try
       {
-        displacement = solve_iteration(load_factor, record);
+        solve_iteration(load_factor, record, residual);
       }
       catch (const SolverFailure&)
       {
@@ -878,7 +954,6 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
         visited.clear();
         continue;
       }
-      residual = elastic.residual(displacement);
       unsigned int changes = update_states(residual);
       if (changes == 0 && friction == 0. && mu > 0.)
       {
@@ -925,6 +1000,7 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
                               std::to_string(last_changes) + " nodes still changing state)");
     step_start = displacement;
   }
+  complete_solution(residual);
   collect_results(residual);
   result.total_time = total.wall_time() + result.setup_time;
   return result;

@@ -210,9 +210,15 @@ private:
   dealii::AffineConstraints<double> make_constraints(double load_factor) const;
   // Supports only (hubs, prescribed displacements) at the given load factor.
   dealii::AffineConstraints<double> make_support_constraints(double load_factor) const;
-  // One iteration's displacement: by re-assembly (reference) or through the Schur complement.
-  dealii::Vector<double> solve_iteration(double load_factor, IterationRecord& record);
-  dealii::Vector<double> solve_schur_complement(double load_factor, IterationRecord& record);
+  // One iteration: `displacement` and the contact forces `residual` (r = K u − f), by
+  // re-assembly (reference) or through the Schur complement; the latter may leave both valid
+  // only at the contact DoFs until complete_solution().
+  void solve_iteration(double load_factor, IterationRecord& record,
+                       dealii::Vector<double>& residual);
+  void solve_schur_complement(double load_factor, IterationRecord& record,
+                              dealii::Vector<double>& residual);
+  // The whole displacement field and residual of the converged iteration.
+  void complete_solution(dealii::Vector<double>& residual);
   bool use_schur_complement() const;
   dealii::Vector<double> make_point_loads(double load_factor) const;
   // Updates the states from the latest solution with the friction bounds held fixed; returns

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Speed of the contact solver (issue 12): the Schur complement on the contact unknowns with one
+# factorization (default) against the full re-solve of every active-set iteration (the reference,
+# `Contact/Iteration solves=full re-solve`), on the split-path pair of gear-data.md §1 with the
+# published μ = 0.01. Every figure is a median of three runs unless marked; the ratios compare
+# runs taken in this one invocation (the machine is shared).
+#
+#   single pair, default 2D scene (Q2, 53k DoFs), 1 rank: process wall time and contact solve
+#   32- and 128-position sweeps on 2 ranks (and 32 on 1 rank: the 2-rank speed-up)
+#   gearstiff run (the whole chain) on 1 rank
+#   3D, Q1, 8 layers (187k DoFs) on 2 ranks: wall time and peak memory per rank
+#
+# usage: bench/contact_speed.sh [path/to/gearstiff] [--quick]   (--quick: one run each, no 3D)
+set -euo pipefail
+gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
+quick=${2:-}
+runs=3
+[ "$quick" = "--quick" ] && runs=1
+mpi=(mpirun --allow-run-as-root --oversubscribe)
+export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+friction=(--set "Contact/Friction coefficient=0.01")
+
+# Median wall time (s) of `runs` runs of a command.
+median_seconds() {
+  local times=()
+  for _ in $(seq "$runs"); do
+    local start end
+    start=$(date +%s.%N)
+    "$@" >/dev/null 2>&1
+    end=$(date +%s.%N)
+    times+=("$(echo "$end - $start" | bc)")
+  done
+  printf '%s\n' "${times[@]}" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'
+}
+
+# The value of a "<label>   <number>  s" line of a command's text report.
+report_value() { grep -E "$1" | head -1 | awk '{for (i = NF; i > 0; --i) if ($i ~ /^[0-9.]+$/) {print $i; exit}}'; }
+
+echo "| case | Schur complement | full re-solve | ratio |"
+echo "|---|---|---|---|"
+for method in "Schur complement" "full re-solve"; do
+  wall[${#wall[@]}]=$(median_seconds "$gearstiff" stiffness "${friction[@]}" \
+    --set "Contact/Iteration solves=$method")
+  contact[${#contact[@]}]=$("$gearstiff" stiffness "${friction[@]}" \
+    --set "Contact/Iteration solves=$method" | report_value "contact iterations")
+done
+echo "| single pair 2D, process wall [s] | ${wall[0]} | ${wall[1]} | $(echo "scale=2; ${wall[1]} / ${wall[0]}" | bc) |"
+echo "| single pair 2D, contact solve [s] (one run) | ${contact[0]} | ${contact[1]} | $(echo "scale=2; ${contact[1]} / ${contact[0]}" | bc) |"
+
+sweep() { "${mpi[@]}" -np "$1" "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
+  --set "Stiffness/sweep positions=$2" "${friction[@]}" "${@:3}"; }
+s32_2=$(median_seconds sweep 2 32)
+s32_1=$(median_seconds sweep 1 32)
+s128_2=$(median_seconds sweep 2 128)
+echo "| 32-position sweep, 2 ranks [s] | $s32_2 | (was 105-130) | |"
+echo "| 32-position sweep, 1 rank [s]; 2-rank speed-up | $s32_1 | | $(echo "scale=2; $s32_1 / $s32_2" | bc) |"
+echo "| 128-position sweep, 2 ranks [s]; cost / 32 positions | $s128_2 | | $(echo "scale=2; $s128_2 / $s32_2" | bc) |"
+echo "| gearstiff run, 1 rank [s] | $(median_seconds "$gearstiff" run) | (was 94) | |"
+
+if [ "$quick" != "--quick" ]; then
+  log=$(mktemp)
+  /usr/bin/time -f "%e %M" -o "$log.time" "${mpi[@]}" -np 2 "$gearstiff" stiffness \
+    --set "Mesh/dimension=3" --set "Finite elements/Element degree=1" "${friction[@]}" >"$log"
+  read -r seconds kilobytes <"$log.time"
+  echo "| 3D Q1 8 layers ($(grep -oE '[0-9]+ DoFs' "$log" | head -1)), 2 ranks [s], one run | $seconds (peak $((kilobytes / 1024)) MB on the launcher's largest rank) | (was 267) | |"
+  rm -f "$log" "$log.time"
+fi
