@@ -204,13 +204,10 @@ void ContactProblem<dim>::setup_system()
   const double closing_gap = std::max(touching, smallest_gap + touching);
   for (auto& pair : pairs)
   {
-    pair.state.assign(pair.nodes.size(), NodeState::open);
+    pair.memory.assign(pair.nodes.size(), NodeMemory<dim>());
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
       if (pair.nodes[k].initial_gap <= closing_gap)
-        pair.state[k] = NodeState::slip;
-    pair.friction_direction.assign(pair.nodes.size(), Tensor<1, dim>());
-    pair.friction_bound.assign(pair.nodes.size(), -1.);
-    pair.reversals.assign(pair.nodes.size(), 0);
+        pair.memory[k].state = NodeState::slip;
   }
   displacement.reinit(dof_handler.n_dofs());
   step_start.reinit(dof_handler.n_dofs());
@@ -288,11 +285,11 @@ AffineConstraints<double> ContactProblem<dim>::make_constraints(double load_fact
   for (const auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
-      if (pair.state[k] == NodeState::open)
+      if (pair.memory[k].state == NodeState::open)
         continue;
       const SlaveNode<dim>& node = pair.nodes[k];
       const Tensor<1, dim>& n = node.normal;
-      if (pair.state[k] == NodeState::stick)
+      if (pair.memory[k].state == NodeState::stick)
       {
         // u_s − Σ w_m u_m = g n + (tangential offset reached at the start of the step).
         const Tensor<1, dim> start = relative_displacement(node, step_start);
@@ -509,7 +506,7 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
     std::vector<std::pair<unsigned int, unsigned int>> new_nodes;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
-        if (pairs[p].state[k] != NodeState::open && c.slot[p][k] < 0)
+        if (pairs[p].memory[k].state != NodeState::open && c.slot[p][k] < 0)
         {
           new_nodes.emplace_back(p, k);
           const SlaveNode<dim>& node = pairs[p].nodes[k];
@@ -549,11 +546,11 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
   for (unsigned int p = 0; p < pairs.size(); ++p)
     for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
     {
-      if (pairs[p].state[k] == NodeState::open)
+      if (pairs[p].memory[k].state == NodeState::open)
         continue;
       const SlaveNode<dim>& node = pairs[p].nodes[k];
       const Tensor<1, dim>& n = node.normal;
-      if (pairs[p].state[k] == NodeState::stick)
+      if (pairs[p].memory[k].state == NodeState::stick)
       {
         const Tensor<1, dim> start = relative_displacement(node, step_start);
         const Tensor<1, dim> offset = node.initial_gap * n + (start - (start * n) * n);
@@ -585,10 +582,10 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
   if (friction > 0.)
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
-        if (pairs[p].state[k] == NodeState::slip)
+        if (pairs[p].memory[k].state == NodeState::slip)
         {
-          const Tensor<1, dim> force =
-              std::max(pairs[p].friction_bound[k], 0.) * pairs[p].friction_direction[k];
+          const Tensor<1, dim> force = std::max(pairs[p].memory[k].friction_bound, 0.) *
+                                       pairs[p].memory[k].friction_direction;
           for (unsigned int d = 0; d < dim; ++d)
             if (force[d] != 0.)
               friction_terms.push_back({p, k, d, force[d]});
@@ -742,12 +739,12 @@ Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
       support.hub->add_loads(loads, load_factor);
   for (const auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-      if (pair.state[k] == NodeState::slip && friction > 0.)
+      if (pair.memory[k].state == NodeState::slip && friction > 0.)
       {
         // Coulomb: μ λ_n along the friction direction on the slave, the reaction on the
         // master distributed with the mortar weights.
         const Tensor<1, dim> force =
-            std::max(pair.friction_bound[k], 0.) * pair.friction_direction[k];
+            std::max(pair.memory[k].friction_bound, 0.) * pair.memory[k].friction_direction;
         const SlaveNode<dim>& node = pair.nodes[k];
         for (unsigned int c = 0; c < dim; ++c)
         {
@@ -762,7 +759,6 @@ Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
 template <int dim>
 unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
 {
-  const double mu = friction;
   double largest_normal_force = 0.;
   for (const auto& pair : pairs)
     for (const auto& node : pair.nodes)
@@ -771,8 +767,7 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
       largest_normal_force = std::max(largest_normal_force, -(force * node.normal));
     }
   // Round-off levels: a closed node is tensile, an open one penetrating, only beyond these.
-  const double force_tolerance = 1e-10 * largest_normal_force;
-  const double gap_tolerance = round_off_gap();
+  const StateTolerances tolerances{1e-10 * largest_normal_force, round_off_gap()};
   // Weight of the slip in the tangential trial, c = E/(10 h): of the order of a surface node's
   // tangential stiffness. It steers the iteration path only; with c = E/h the stick/slip
   // front of a Cattaneo–Mindlin contact overshot and cycled.
@@ -785,79 +780,19 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
     {
       const SlaveNode<dim>& node = pair.nodes[k];
       const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
-      const double normal_force = -(force * node.normal);
-      const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
-      const Tensor<1, dim> relative = relative_displacement(node, displacement);
-      const double gap = node.initial_gap - relative * node.normal;
-      const Tensor<1, dim> slip = step_slip(node);
-
-      // Complementarity trials of Hüeber & Wohlmuth (2005): normal σ_n = λ_n − c·g·A (λ_n = 0
-      // on open nodes, g = 0 on closed ones), tangential q = t_τ − c·s against the bound.
+      NodeObservation<dim> observation;
+      observation.normal_force = -(force * node.normal);
+      observation.tangential_force = force + observation.normal_force * node.normal;
+      observation.gap = node.initial_gap - relative_displacement(node, displacement) * node.normal;
+      observation.slip = step_slip(node);
+      observation.area = node.area;
       const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
-      const double c = stiffness / h; // Pa/m
-      const NodeState old_state = pair.state[k];
-      const bool closed =
-          old_state == NodeState::open ? gap < -gap_tolerance : normal_force >= -force_tolerance;
-      const double normal_trial = // N
-          old_state == NodeState::open ? -c * gap * node.area : normal_force;
-      NodeState new_state = NodeState::open;
-      Tensor<1, dim> direction = pair.friction_direction[k];
-      if (closed && mu == 0.)
-        new_state = NodeState::slip;
-      else if (closed)
-      {
-        // A node closing for the first time gets its bound from the trial pressure.
-        if (pair.friction_bound[k] < 0.)
-          pair.friction_bound[k] = mu * std::max(normal_trial, 0.);
-        const double bound = pair.friction_bound[k] / node.area;              // Pa
-        const Tensor<1, dim> trial = tangential_force / node.area - c * slip; // Pa
-        const bool inside = trial.norm() <= bound * (1. + 1e-12);
-        if (old_state == NodeState::slip && slip * direction > gap_tolerance)
-        {
-          // The node slid along the friction force it was given, which Coulomb's law forbids.
-          // Either it slides the other way or it sticks; the trial decides with c as the
-          // estimate of its tangential stiffness. But the slip of a node is coupled to that of
-          // its neighbours and to a torque-driven hub, so c can be far off: a pair whose true
-          // state is stick then flips between the two slip directions forever. A node reverses
-          // once per load step; after that it sticks, and leaves stick only along its stick
-          // force, the direction that is consistent for an uncoupled node.
-          if (!inside && pair.reversals[k] == 0)
-          {
-            new_state = NodeState::slip;
-            direction = trial / trial.norm();
-            ++pair.reversals[k];
-          }
-          else
-            new_state = NodeState::stick;
-        }
-        else if (inside)
-          new_state = NodeState::stick;
-        else
-        {
-          new_state = NodeState::slip;
-          direction = trial / trial.norm();
-        }
-      }
-      bool node_changed = new_state != old_state;
-      if (new_state == NodeState::slip && mu > 0.)
-      {
-        // A reversal is a change of state; in 3D the direction also turns within the tangent
-        // plane, which converges as a fixed point with the bounds (direction_change).
-        node_changed = node_changed || direction * pair.friction_direction[k] < 0.;
-        if (old_state == NodeState::slip && largest_normal_force > 0.)
-          direction_change =
-              std::max(direction_change, pair.friction_bound[k] *
-                                             (direction - pair.friction_direction[k]).norm() /
-                                             largest_normal_force);
-        pair.friction_direction[k] = direction;
-      }
-      // An opened node forgets its bound: closing again, it gets one from its trial pressure,
-      // not the stale μ λ_n of its earlier contact (which made a node at the edge of the
-      // contact close in stick, pull, open and penetrate in turn).
-      if (new_state == NodeState::open)
-        pair.friction_bound[k] = -1.;
-      pair.state[k] = new_state;
-      changed += node_changed ? 1 : 0;
+      observation.trial_stiffness = stiffness / h;
+      const NodeUpdate update =
+          update_node_state(pair.memory[k], observation, friction, tolerances);
+      changed += update.changed ? 1 : 0;
+      if (largest_normal_force > 0.)
+        direction_change = std::max(direction_change, update.direction_turn / largest_normal_force);
     }
   return changed;
 }
@@ -874,10 +809,8 @@ double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residua
       const Tensor<1, dim> force = nodal_force(pair.nodes[k], residual); // N, on the slave
       const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
       largest_normal_force = std::max(largest_normal_force, normal_force);
-      const double bound = pair.state[k] == NodeState::open ? -1. : friction * normal_force;
-      if (pair.state[k] != NodeState::open)
-        largest_change = std::max(largest_change, std::abs(bound - pair.friction_bound[k]));
-      pair.friction_bound[k] = bound;
+      largest_change =
+          std::max(largest_change, update_friction_bound(pair.memory[k], normal_force, friction));
     }
   return largest_normal_force > 0. ? largest_change / largest_normal_force : 0.;
 }
@@ -886,23 +819,13 @@ template <int dim>
 void ContactProblem<dim>::start_friction(const Vector<double>& residual)
 {
   friction = parameters.friction_coefficient;
-  const double gap_tolerance = round_off_gap();
   for (auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
-      if (pair.state[k] == NodeState::open)
-        continue;
       const SlaveNode<dim>& node = pair.nodes[k];
       const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
-      pair.friction_bound[k] = friction * std::max(-(force * node.normal), 0.);
-      const Tensor<1, dim> slip = step_slip(node);
-      if (slip.norm() > gap_tolerance)
-      {
-        pair.state[k] = NodeState::slip;
-        pair.friction_direction[k] = -slip / slip.norm();
-      }
-      else
-        pair.state[k] = NodeState::stick;
+      start_node_friction(pair.memory[k], -(force * node.normal), step_slip(node), friction,
+                          round_off_gap());
     }
 }
 
@@ -922,15 +845,20 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
   friction = 0.;
   std::vector<std::vector<NodeState>> initial_states;
   for (const auto& pair : pairs)
-    initial_states.push_back(pair.state);
+  {
+    initial_states.emplace_back();
+    for (const auto& memory : pair.memory)
+      initial_states.back().push_back(memory.state);
+  }
   Vector<double> residual;
   for (unsigned int step = 1; step <= parameters.load_steps; ++step)
   {
     const double load_factor = static_cast<double>(step) / parameters.load_steps;
     elastic.set_load_factor(load_factor);
     for (auto& pair : pairs)
-      std::fill(pair.reversals.begin(), pair.reversals.end(), 0u);
-    std::map<std::string, unsigned int> visited; // state signature -> times seen
+      for (auto& memory : pair.memory)
+        memory.reversals = 0;
+    CycleDetector visited;
     bool converged = false;
     unsigned int last_changes = 0;
     for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
@@ -949,7 +877,7 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
         friction = mu;
         for (unsigned int p = 0; p < pairs.size(); ++p)
           for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
-            pairs[p].state[k] =
+            pairs[p].memory[k].state =
                 initial_states[p][k] == NodeState::open ? NodeState::open : NodeState::stick;
         visited.clear();
         continue;
@@ -967,16 +895,14 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
       ++result.active_set_iterations;
       record.n_changed = changes;
       record.friction_change = changes == 0 ? friction_change : 0.;
-      std::string signature;
+      std::vector<signed char> active_set;
       for (const auto& pair : pairs)
         for (unsigned int k = 0; k < pair.nodes.size(); ++k)
         {
-          record.n_closed += pair.state[k] != NodeState::open;
-          record.n_stick += pair.state[k] == NodeState::stick;
-          record.n_slip += pair.state[k] == NodeState::slip;
-          signature += static_cast<char>('0' + static_cast<int>(pair.state[k]));
-          if (dim == 2 && pair.state[k] == NodeState::slip)
-            signature += pair.friction_direction[k] * pair.nodes[k].tangents[0] > 0 ? '+' : '-';
+          record.n_closed += pair.memory[k].state != NodeState::open;
+          record.n_stick += pair.memory[k].state == NodeState::stick;
+          record.n_slip += pair.memory[k].state == NodeState::slip;
+          active_set.push_back(state_key(pair.memory[k], pair.nodes[k].tangents[0]));
         }
       result.history.push_back(record);
       last_changes = changes;
@@ -987,7 +913,7 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
       }
       if (changes == 0) // new bounds: a new Tresca problem
         visited.clear();
-      else if (++visited[signature] >= 3)
+      else if (visited.visit(active_set) >= 3)
         throw SolverFailure("contact active set",
                             "cycling: the same contact state recurred three times (load step " +
                                 std::to_string(step) + ", iteration " + std::to_string(iteration) +
@@ -1047,7 +973,7 @@ void ContactProblem<dim>::collect_results(const Vector<double>& residual)
       const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
       const double normal_force = -(force * node.normal);
       const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
-      point.state = pair.state[k];
+      point.state = pair.memory[k].state;
       const Tensor<1, dim> relative = relative_displacement(node, displacement);
       point.initial_gap = node.initial_gap;
       point.gap = point.state == NodeState::open ? node.initial_gap - relative * node.normal : 0.;
@@ -1102,12 +1028,12 @@ std::vector<std::string> ContactProblem<dim>::output_results(const std::string& 
       const SlaveNode<dim>& node = pair.nodes[k];
       const types::global_dof_index key = node.node.dofs[0];
       const Tensor<1, dim> relative = relative_displacement(node, displacement);
-      const bool closed = pair.state[k] != NodeState::open;
+      const bool closed = pair.memory[k].state != NodeState::open;
       const Tensor<1, dim> force = nodal_force(node, residual_forces); // N, on the slave
       fields[0].values[key] = closed ? -(force * node.normal) / node.area : 0.;
       fields[1].values[key] = closed ? 0. : node.initial_gap - relative * node.normal;
       fields[2].values[key] = (relative - (relative * node.normal) * node.normal).norm();
-      fields[3].values[key] = static_cast<double>(pair.state[k]);
+      fields[3].values[key] = static_cast<double>(pair.memory[k].state);
     }
   return elastic.write_vtu(displacement, fields, directory, base);
 }

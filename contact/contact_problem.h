@@ -32,6 +32,7 @@
 // `full re-solve` method, kept as the reference and for iterative linear solvers), to round-off.
 #pragma once
 
+#include "contact/active_set.h"
 #include "contact/mortar.h"
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
@@ -67,13 +68,6 @@ struct ContactParameters
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
-};
-
-enum class NodeState
-{
-  open = 0,
-  stick = 1,
-  slip = 2
 };
 
 // One slave node of a contact pair in the result.
@@ -184,12 +178,7 @@ private:
     std::string name;
     std::vector<dealii::types::boundary_id> slave, master;
     std::vector<SlaveNode<dim>> nodes;
-    std::vector<NodeState> state;
-    std::vector<dealii::Tensor<1, dim>> friction_direction; // unit, force on the slave
-    // N, the slip-force bound μ λ_n of the current Tresca subproblem; negative: not yet set.
-    std::vector<double> friction_bound;
-    // -, slip-direction reversals of each node in the current load step.
-    std::vector<unsigned int> reversals;
+    std::vector<NodeMemory<dim>> memory; // contact state of each node (contact/active_set.h)
   };
   struct Support
   {
