@@ -21,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <iomanip>
 
 namespace
@@ -274,9 +275,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     sweep = speed_sweep(p.train, p.simulation, speeds, p.sweep.steps_per_mesh_period);
     auto& table = report.add_table("dynamics_speed_sweep",
                                    {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
-                                    "kv_min", "kv_iso", "unstable", "time_step"},
-                                   {"rpm", "Hz", "-", "-", "-", "-", "-", "µs"});
-    unsigned int unstable = 0, separated = 0;
+                                    "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
+                                   {"rpm", "Hz", "-", "-", "-", "-", "-", "µs", "-"});
+    unsigned int unstable = 0, separated = 0, not_steady = 0;
     unsigned long steps = 0;
     for (const SweepPoint& point : sweep.points)
     {
@@ -285,11 +286,17 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       const TorsionalModel point_model(train);
       const IsoDynamicFactor iso =
           iso_factor(point_model, p, 0, point_model.nominal_speeds()[p.train.meshes[0].driver]);
+      // Only valid points show a K_v (issue 11: diverged or contact-loss rows printed as
+      // ordinary numbers); the linear model's value stays in its own column for the chart.
+      const bool valid = point.status == SweepStatus::valid;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
       table.add_row({point.input_speed / rpm, point.mesh_frequency, iso.resonance_ratio,
-                     point.kv_max, point.kv_min, iso.kv, point.unstable ? 1. : 0.,
-                     point.time_step * 1e6});
-      unstable += point.unstable;
-      separated += (!point.unstable && point.kv_min < 0.);
+                     valid ? point.kv_max : nan, valid ? point.kv_min : nan, iso.kv,
+                     double(static_cast<int>(point.status)), point.time_step * 1e6,
+                     point.kv_max});
+      unstable += point.status == SweepStatus::diverged;
+      separated += point.status == SweepStatus::contact_loss;
+      not_steady += point.status == SweepStatus::not_steady;
       steps += point.cost.steps;
     }
     report.add_value("sweep_points", sweep.points.size(), "-", "speeds in the sweep");
@@ -297,6 +304,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                      "speeds where the linear model diverges (no K_v)");
     report.add_value("sweep_contact_loss", separated, "-",
                      "speeds with negative mesh force (teeth would separate)");
+    report.add_value("sweep_not_steady", not_steady, "-",
+                     "speeds whose K_v window is not periodic (no K_v)");
+    report.add_text("sweep status", "0 = " + sweep_status_name(SweepStatus::valid) + ", 1 = " +
+                                        sweep_status_name(SweepStatus::diverged) + ", 2 = " +
+                                        sweep_status_name(SweepStatus::contact_loss) + ", 3 = " +
+                                        sweep_status_name(SweepStatus::not_steady) +
+                                        "; K_v only for status 0");
     report.add_value("sweep_steps", steps, "-", "integration steps of the sweep");
     report.add_value("sweep_time", sweep.wall_time, "s", "wall time of the sweep");
   }

@@ -299,9 +299,12 @@ ModalProperties TorsionalModel::modal_properties() const
   double largest_damped = 0.;
   for (const auto& value : damped)
     largest_damped = std::max(largest_damped, std::abs(value));
+  // Without damping the real parts are round-off of either sign, ~1e-13·|λ|: a "decay rate"
+  // from them would make the automatic window wait for ever (issue 11), so anything below
+  // 1e-9·|λ| is no decay.
   for (const auto& value : damped)
     if (std::abs(value) > rigid_mode_threshold * largest_damped && value.imag() >= 0.)
-      modes.decay_rates.push_back(-value.real());
+      modes.decay_rates.push_back(-value.real() > 1e-9 * std::abs(value) ? -value.real() : 0.);
   std::sort(modes.decay_rates.begin(), modes.decay_rates.end());
   return modes;
 }
