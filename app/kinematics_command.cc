@@ -37,12 +37,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const kinematics::GearTrainSpec spec = kinematics::parse_gear_train(parameters.text);
   const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
   // Checked before any work: an unknown member here was silently ignored (issue 11).
-  if (!parameters.reduce_to.empty() &&
-      std::none_of(spec.members.begin(), spec.members.end(),
-                   [&](const kinematics::TrainMember& member)
-                   { return member.name == parameters.reduce_to; }))
-    throw InputError("Train/reduce inertia to",
-                     "unknown member '" + parameters.reduce_to + "' (declare it in gears or carriers)");
+  if (!parameters.reduce_to.empty() && std::none_of(spec.members.begin(), spec.members.end(),
+                                                    [&](const kinematics::TrainMember& member) {
+                                                      return member.name == parameters.reduce_to;
+                                                    }))
+    throw InputError("Train/reduce inertia to", "unknown member '" + parameters.reduce_to +
+                                                    "' (declare it in gears or carriers)");
   const bool published = same_text(parameters.text, kinematics::builtin_train("bi-planetary")) &&
                          parameters.input_torque == 120.2 && parameters.tooth_friction == 0.08;
   Report& report = context.report;

@@ -82,11 +82,10 @@ void check_simulation_work(const TorsionalModel& model, const SimulationSettings
 {
   // Per step the observer keeps the window's time and forces (time series only), and the
   // stored trajectory is expanded into three series per mesh afterwards.
-  const double per_step =
-      settings.keep_time_series
-          ? (1. + model.n_meshes()) * sizeof(double) +
-                3. * model.n_meshes() * sizeof(double) / integrator.record_stride
-          : 0.;
+  const double per_step = settings.keep_time_series ? (1. + model.n_meshes()) * sizeof(double) +
+                                                          3. * model.n_meshes() * sizeof(double) /
+                                                              integrator.record_stride
+                                                    : 0.;
   const WorkEstimate work = estimate_work(model, integrator, per_step);
   // A sensible step (the smaller of the RK4 limit and 1/20 mesh period) tells whether the span
   // or the step is to blame.
