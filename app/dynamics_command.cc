@@ -183,6 +183,14 @@ void report_train_model(const DynamicsParameters& p, const TorsionalModel& model
     columns.push_back("energy_" + body);
     units.push_back("-");
   }
+  // Mesh frequency per input rpm of each Train mesh (its first copy): the Campbell chart's
+  // order lines.
+  auto& campbell =
+      report.add_table("dynamics_campbell", {"mesh", "mesh_frequency_per_rpm"}, {"-", "Hz/rpm"});
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+    if (train.mesh_copy[m] == 0)
+      campbell.add_row({double(train.spec_mesh[m] + 1),
+                        model.mesh_position_rate(m) / (p.train.input_speed / rpm)});
   auto& table = report.add_table("dynamics_modal_energy", columns, units);
   for (Eigen::Index k = 0; k < share.rows(); ++k)
   {
@@ -398,6 +406,21 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     context.plot("plot_dynamics.py", {"kv", series, window}, "dynamics_kv.png", "K_v(t)");
     context.plot("plot_dynamics.py", {"stiffness", series, window}, "dynamics_stiffness.png",
                  "mesh stiffness k(t)");
+    if (p.train_description)
+    {
+      // Campbell chart over the sweep range (or 0..2× the input speed without a sweep).
+      const double low = p.sweep.points > 0 ? p.sweep.minimum_speed : 0.;
+      const double high = p.sweep.points > 0 ? p.sweep.maximum_speed : 2. * p.train.input_speed;
+      const std::string campbell = temporary_csv(report, "dynamics_campbell");
+      const std::string modes = temporary_csv(report, "dynamics_modes");
+      context.plot("plot_dynamics.py",
+                   {"campbell", campbell, modes,
+                    format_number(low / rpm, 8) + "," + format_number(high / rpm, 8)},
+                   "dynamics_campbell.png",
+                   "Campbell chart: mesh orders against natural frequencies");
+      std::filesystem::remove(campbell);
+      std::filesystem::remove(modes);
+    }
     if (!sweep.points.empty())
     {
       const std::string csv = temporary_csv(report, "dynamics_speed_sweep");

@@ -34,7 +34,7 @@ TrainDynamicsInput planetary(unsigned int planets, double stiffness = 4e8, doubl
 TrainDynamicsInput bi_planetary()
 {
   kinematics::GearTrainText text = kinematics::builtin_train("bi-planetary");
-  text.inertias = "1: 1e-4, 2: 2e-2, 3: 1e-4, 4: 3e-4, 5: 5e-3, 6: 1e-3, h: 0.5, H: 2e-3";
+  text.inertias = "1: 1e-4, 2: 2e-2, 3: 1e-4, 4: 3e-4, 5: 5e-3, 6: 1e-3, 7: 4e-2, h: 0.5, H: 2e-3";
   // No mass for ring 5: kinematics knows no orbit radius for it (rigid with h, not a planet).
   text.masses = "2: 3.2, 3: 0.3, 4: 0.4, 6: 0.5, H: 0.6";
   TrainDynamicsInput input;
