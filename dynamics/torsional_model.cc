@@ -202,6 +202,7 @@ void TorsionalModel::compile_meshes(const GearTrain& train)
     c.stiffness = mesh.stiffness;
     meshes.push_back(c);
   }
+  cached_states.resize(meshes.size());
 }
 
 double TorsionalModel::deflection(const CompiledMesh& mesh, const double* angle) const
@@ -226,9 +227,18 @@ void TorsionalModel::acceleration(double time, const double* angle, const double
   for (const Suspension& suspension : suspensions)
     result[suspension.dof] -= suspension.stiffness * angle[suspension.dof] +
                               suspension.damping * velocity[suspension.dof];
-  for (const CompiledMesh& mesh : meshes)
+  // RK4 evaluates twice at t + h/2, and its last stage at t + h is usually the next step's
+  // first: the mesh states of the last time are reused (same time, same values: exact).
+  if (!(time == cached_time))
   {
-    const MeshStiffnessState state = mesh_state(mesh, time);
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+      cached_states[m] = mesh_state(meshes[m], time);
+    cached_time = time;
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    const CompiledMesh& mesh = meshes[m];
+    const MeshStiffnessState& state = cached_states[m];
     const double force =
         state.stiffness * deflection(mesh, angle) + mesh.damping * deflection(mesh, velocity);
     const double friction = mesh.mu * state.friction_direction;

@@ -28,6 +28,7 @@
 #include "dynamics/mesh_stiffness.h"
 
 #include <Eigen/Dense>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -237,5 +238,8 @@ private:
   std::vector<double> nominal_forces;
   std::vector<Suspension> suspensions;
   bool general = false;
+  // Mesh states at cached_time (acceleration() only; a model is used by one thread at a time).
+  mutable double cached_time = std::numeric_limits<double>::quiet_NaN();
+  mutable std::vector<MeshStiffnessState> cached_states;
 };
 } // namespace gearstiff::dynamics
