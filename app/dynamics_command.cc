@@ -410,7 +410,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     {
       // Campbell chart over the sweep range (or 0..2× the input speed without a sweep).
       const double low = p.sweep.points > 0 ? p.sweep.minimum_speed : 0.;
-      const double high = p.sweep.points > 0 ? p.sweep.maximum_speed : 2. * p.train.input_speed;
+      // Without a sweep: up to where the fastest mesh's first order meets the highest mode.
+      double fastest = 0.;
+      for (unsigned int m = 0; m < model.n_meshes(); ++m)
+        fastest = std::max(fastest, model.mesh_position_rate(m) / p.train.input_speed);
+      const double high = p.sweep.points > 0
+                              ? p.sweep.maximum_speed
+                              : 1.1 * trajectory.highest_frequency / (2. * M_PI) / fastest;
       const std::string campbell = temporary_csv(report, "dynamics_campbell");
       const std::string modes = temporary_csv(report, "dynamics_modes");
       context.plot("plot_dynamics.py",

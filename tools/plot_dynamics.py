@@ -113,7 +113,7 @@ def campbell(path, modes_path, speeds, png):
     for f in frequencies:
         ax.axhline(f, color="0.5", lw=0.6)
     if frequencies:
-        top = min(top, 1.1 * max(frequencies))
+        top = 1.1 * max(frequencies)
     ax.set_xlim(low, high)
     ax.set_ylim(0, top)
     ax.set_xlabel("input speed [rpm]")
