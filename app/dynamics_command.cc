@@ -15,13 +15,16 @@
 #include "app/units.h"
 #include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/simulation.h"
+#include "dynamics/train_model.h"
 #include "errors/errors.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 
 namespace
 {
@@ -38,6 +41,14 @@ const std::string published_source = "gear-data.md §1 (Reszuta & Drewniak 2015)
 IsoDynamicFactor iso_factor(const TorsionalModel& model, const DynamicsParameters& p,
                             unsigned int m, double pinion_speed)
 {
+  if (p.train_description)
+  {
+    // Method B is written for a pinion–wheel pair on fixed axes; not applied to a train.
+    IsoDynamicFactor none;
+    none.kv = none.resonance_ratio = none.resonance_speed = none.subcritical_limit = none.b_p =
+        none.b_f = none.b_k = std::numeric_limits<double>::quiet_NaN();
+    return none;
+  }
   const Mesh& mesh = p.train.meshes[m];
   unsigned int shares = 0;
   for (const Mesh& other : p.train.meshes)
@@ -122,6 +133,74 @@ void write_spectrum(const std::string& path, const SimulationResult& result)
   }
 }
 
+void report_iso(Report& report, const std::string& key, const std::string& name,
+                const IsoDynamicFactor& iso)
+{
+  report.add_value(key + "kv_iso", iso.kv, "-", name + " K_v ISO 6336-1 method B");
+  report.add_value(key + "iso_resonance_speed", iso.resonance_speed / rpm, "rpm",
+                   name + " ISO resonance speed n_E1");
+  report.add_value(key + "iso_resonance_ratio", iso.resonance_ratio, "-",
+                   name + " ISO resonance ratio N");
+  report.add_text(name + " ISO range", iso_speed_range_name(iso.range) +
+                                           " (N_S = " + format_number(iso.subcritical_limit, 4) +
+                                           ", B_p = " + format_number(iso.b_p, 4) +
+                                           ", B_f = " + format_number(iso.b_f, 4) +
+                                           ", B_k = " + format_number(iso.b_k, 4) + ")");
+}
+
+// Train model: degrees of freedom, assembly notes, J* and the modal energy per body.
+void report_train_model(const DynamicsParameters& p, const TorsionalModel& model, Report& report)
+{
+  const TrainModel& train = p.train_model;
+  std::string dofs;
+  for (const std::string& name : train.dof_names)
+    dofs += (dofs.empty() ? "" : ", ") + name;
+  report.add_text("degrees of freedom", dofs + " (member#copy; rigid bodies by connections)");
+  for (std::size_t i = 0; i < train.notes.size(); ++i)
+    report.add_text("assembly " + std::to_string(i + 1), train.notes[i]);
+  report.add_value("reduced_inertia", train.reduced_inertia, "kg·m²",
+                   "kinematics' J* reduced to the input (the rigid mode's inertia)");
+  const Eigen::VectorXd& r = model.rigid_mode();
+  report.add_value("rigid_mode_inertia", r.cwiseProduct(model.inertias()).dot(r), "kg·m²",
+                   "inertia of the model's nominal rotation (equals J*)");
+
+  // Modal energy distribution per body (all copies together).
+  std::vector<std::string> bodies;
+  std::vector<unsigned int> group;
+  for (const std::string& body : train.dof_body)
+  {
+    const auto found = std::find(bodies.begin(), bodies.end(), body);
+    group.push_back(found - bodies.begin());
+    if (found == bodies.end())
+      bodies.push_back(body);
+  }
+  const Eigen::MatrixXd share = modal_energy_distribution(model, group, bodies.size());
+  const ModeShapes modes = model.mode_shapes();
+  std::vector<std::string> columns{"mode", "frequency"};
+  std::vector<std::string> units{"-", "Hz"};
+  for (const std::string& body : bodies)
+  {
+    columns.push_back("energy_" + body);
+    units.push_back("-");
+  }
+  // Mesh frequency per input rpm of each Train mesh (its first copy): the Campbell chart's
+  // order lines.
+  auto& campbell =
+      report.add_table("dynamics_campbell", {"mesh", "mesh_frequency_per_rpm"}, {"-", "Hz/rpm"});
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+    if (train.mesh_copy[m] == 0)
+      campbell.add_row({double(train.spec_mesh[m] + 1),
+                        model.mesh_position_rate(m) / (p.train.input_speed / rpm)});
+  auto& table = report.add_table("dynamics_modal_energy", columns, units);
+  for (Eigen::Index k = 0; k < share.rows(); ++k)
+  {
+    std::vector<double> row{double(k + 1), modes.frequencies[k]};
+    for (Eigen::Index g = 0; g < share.cols(); ++g)
+      row.push_back(share(k, g));
+    table.add_row(row);
+  }
+}
+
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   const DynamicsParameters p = parse_dynamics_parameters(prm);
@@ -132,15 +211,24 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_text("model", std::to_string(model.n_dofs()) + "-DOF torsional train, " +
                                std::to_string(model.n_meshes()) +
                                " meshes; angles relative to the nominal rotation");
+  if (p.train_description)
+    report_train_model(p, model, report);
   for (unsigned int m = 0; m < model.n_meshes(); ++m)
   {
     const Mesh& mesh = p.train.meshes[m];
     report.add_text(mesh.name + " stiffness", p.stiffness_description[m]);
-    report.add_text(mesh.name + " phase", "initial mesh position " +
-                                              format_number(mesh.initial_position, 6) +
-                                              " base pitches (placement angle " +
-                                              format_number(p.placement_angle[m] * 180. / M_PI, 4) +
-                                              "°, z = " + std::to_string(mesh.driver_teeth) + ")");
+    if (p.train_description)
+      report.add_text(mesh.name + " phase",
+                      "initial mesh position " + format_number(mesh.initial_position, 6) +
+                          " base pitches (planet spacing and sun/ring phasing), ε_α = " +
+                          format_number(mesh.contact_ratio, 5) +
+                          ", ε_f = " + format_number(mesh.approach_ratio, 5));
+    else
+      report.add_text(mesh.name + " phase",
+                      "initial mesh position " + format_number(mesh.initial_position, 6) +
+                          " base pitches (placement angle " +
+                          format_number(p.placement_angle[m] * 180. / M_PI, 4) +
+                          "°, z = " + std::to_string(mesh.driver_teeth) + ")");
   }
   report.add_text("friction", "per pair in contact, sign reverses at the pitch point "
                               "(approach ratio), pairs weighted by their force share");
@@ -206,16 +294,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                      mesh.name + " |K_v max 1st half - 2nd half|");
     const IsoDynamicFactor iso =
         iso_factor(model, p, m, model.nominal_speeds()[p.train.meshes[m].driver]);
-    report.add_value(key + "kv_iso", iso.kv, "-", mesh.name + " K_v ISO 6336-1 method B");
-    report.add_value(key + "iso_resonance_speed", iso.resonance_speed / rpm, "rpm",
-                     mesh.name + " ISO resonance speed n_E1");
-    report.add_value(key + "iso_resonance_ratio", iso.resonance_ratio, "-",
-                     mesh.name + " ISO resonance ratio N");
-    report.add_text(
-        mesh.name + " ISO range",
-        iso_speed_range_name(iso.range) + " (N_S = " + format_number(iso.subcritical_limit, 4) +
-            ", B_p = " + format_number(iso.b_p, 4) + ", B_f = " + format_number(iso.b_f, 4) +
-            ", B_k = " + format_number(iso.b_k, 4) + ")");
+    if (!p.train_description)
+      report_iso(report, key, mesh.name, iso);
     meshes.add_row({double(m + 1), mesh.nominal_force, mesh.mean_force, mesh.kv_max,
                     mesh.kv_max_time, mesh.kv_min, iso.kv, iso.resonance_ratio});
     if (mesh.kv_min < 0.)
@@ -274,9 +354,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     sweep = speed_sweep(p.train, p.simulation, speeds, p.sweep.steps_per_mesh_period);
     auto& table = report.add_table("dynamics_speed_sweep",
                                    {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
-                                    "kv_min", "kv_iso", "unstable", "time_step"},
-                                   {"rpm", "Hz", "-", "-", "-", "-", "-", "µs"});
-    unsigned int unstable = 0, separated = 0;
+                                    "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
+                                   {"rpm", "Hz", "-", "-", "-", "-", "-", "µs", "-"});
+    unsigned int unstable = 0, separated = 0, not_steady = 0;
     unsigned long steps = 0;
     for (const SweepPoint& point : sweep.points)
     {
@@ -285,11 +365,16 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       const TorsionalModel point_model(train);
       const IsoDynamicFactor iso =
           iso_factor(point_model, p, 0, point_model.nominal_speeds()[p.train.meshes[0].driver]);
+      // Only valid points show a K_v (issue 11: diverged or contact-loss rows printed as
+      // ordinary numbers); the linear model's value stays in its own column for the chart.
+      const bool valid = point.status == SweepStatus::valid;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
       table.add_row({point.input_speed / rpm, point.mesh_frequency, iso.resonance_ratio,
-                     point.kv_max, point.kv_min, iso.kv, point.unstable ? 1. : 0.,
-                     point.time_step * 1e6});
-      unstable += point.unstable;
-      separated += (!point.unstable && point.kv_min < 0.);
+                     valid ? point.kv_max : nan, valid ? point.kv_min : nan, iso.kv,
+                     double(static_cast<int>(point.status)), point.time_step * 1e6, point.kv_max});
+      unstable += point.status == SweepStatus::diverged;
+      separated += point.status == SweepStatus::contact_loss;
+      not_steady += point.status == SweepStatus::not_steady;
       steps += point.cost.steps;
     }
     report.add_value("sweep_points", sweep.points.size(), "-", "speeds in the sweep");
@@ -297,6 +382,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                      "speeds where the linear model diverges (no K_v)");
     report.add_value("sweep_contact_loss", separated, "-",
                      "speeds with negative mesh force (teeth would separate)");
+    report.add_value("sweep_not_steady", not_steady, "-",
+                     "speeds whose K_v window is not periodic (no K_v)");
+    report.add_text("sweep status", "0 = " + sweep_status_name(SweepStatus::valid) +
+                                        ", 1 = " + sweep_status_name(SweepStatus::diverged) +
+                                        ", 2 = " + sweep_status_name(SweepStatus::contact_loss) +
+                                        ", 3 = " + sweep_status_name(SweepStatus::not_steady) +
+                                        "; K_v only for status 0");
     report.add_value("sweep_steps", steps, "-", "integration steps of the sweep");
     report.add_value("sweep_time", sweep.wall_time, "s", "wall time of the sweep");
   }
@@ -314,6 +406,27 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     context.plot("plot_dynamics.py", {"kv", series, window}, "dynamics_kv.png", "K_v(t)");
     context.plot("plot_dynamics.py", {"stiffness", series, window}, "dynamics_stiffness.png",
                  "mesh stiffness k(t)");
+    if (p.train_description)
+    {
+      // Campbell chart over the sweep range (or 0..2× the input speed without a sweep).
+      const double low = p.sweep.points > 0 ? p.sweep.minimum_speed : 0.;
+      // Without a sweep: up to where the fastest mesh's first order meets the highest mode.
+      double fastest = 0.;
+      for (unsigned int m = 0; m < model.n_meshes(); ++m)
+        fastest = std::max(fastest, model.mesh_position_rate(m) / p.train.input_speed);
+      const double high = p.sweep.points > 0
+                              ? p.sweep.maximum_speed
+                              : 1.1 * trajectory.highest_frequency / (2. * M_PI) / fastest;
+      const std::string campbell = temporary_csv(report, "dynamics_campbell");
+      const std::string modes = temporary_csv(report, "dynamics_modes");
+      context.plot("plot_dynamics.py",
+                   {"campbell", campbell, modes,
+                    format_number(low / rpm, 8) + "," + format_number(high / rpm, 8)},
+                   "dynamics_campbell.png",
+                   "Campbell chart: mesh orders against natural frequencies");
+      std::filesystem::remove(campbell);
+      std::filesystem::remove(modes);
+    }
     if (!sweep.points.empty())
     {
       const std::string csv = temporary_csv(report, "dynamics_speed_sweep");

@@ -1,7 +1,9 @@
 #include "app/dynamics_parameters.h"
 
+#include "app/kinematics_parameters.h"
 #include "app/units.h"
 #include "dynamics/split_path_case.h"
+#include "dynamics/train_model.h"
 #include "errors/errors.h"
 
 #include <cmath>
@@ -29,6 +31,10 @@ std::string gear_section(unsigned int i)
 std::string mesh_section(unsigned int m)
 {
   return "Mesh " + std::to_string(m + 1);
+}
+std::string train_mesh_section(unsigned int m)
+{
+  return "Train mesh " + std::to_string(m + 1);
 }
 
 // "x:k, x:k, ..." with x in base pitches and k in N/mm.
@@ -61,6 +67,110 @@ void parse_table(const std::string& text, const std::string& parameter,
     }
   }
 }
+// The entries a mesh needs whatever describes its gears: stiffness source, damping, friction.
+// Shared by "Mesh n" (gears and meshes) and "Train mesh n" (Train description).
+void declare_mesh_physics(ParameterHandler& prm, double stiffness, double damping, double friction,
+                          double driver_arm, double driven_arm)
+{
+  prm.declare_entry("stiffness source", "cai", Selection("cai|constant|table|cai fit"),
+                    "mesh stiffness: 'cai' (Cai curve, peak = stiffness), 'constant', "
+                    "'table' (k(x) table), 'cai fit' (Cai curve least-squares fitted to the "
+                    "table)");
+  prm.declare_entry("stiffness", format_number(stiffness / newton_per_mm, 10), Double(),
+                    "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
+  prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
+                    "c0, c1, c2 of the Cai bracket c2·s² + c1·s + c0, s = engagement "
+                    "fraction (-); the published shape peaks at 1");
+  prm.declare_entry("stiffness table", "", Anything(),
+                    "mesh stiffness samples 'x:k, x:k, ...' with x the mesh position in base "
+                    "pitches in [0, 1) (increasing) and k in N/mm");
+  prm.declare_entry("fit cai shape", "false", Bool(),
+                    "cai fit: fit the three shape coefficients too, not only the scale");
+  prm.declare_entry("damping", format_number(damping, 10), Double(),
+                    "c_g, mesh damping along the line of action (N·s/m)");
+  prm.declare_entry("friction coefficient", format_number(friction, 10), Double(0., 0.99),
+                    "mu, tooth friction (-)");
+  prm.declare_entry("driver friction arm", format_number(driver_arm / mm, 10), Double(0.),
+                    "r_f of the driver (mm)");
+  prm.declare_entry("driven friction arm", format_number(driven_arm / mm, 10), Double(0.),
+                    "r_f of the driven gear (mm)");
+}
+
+struct MeshPhysics
+{
+  dynamics::MeshStiffness stiffness;
+  std::optional<dynamics::CaiFit> fit;
+  double damping = 0.;              // [N·s/m]
+  double friction_coefficient = 0.; // [-]
+  double driver_friction_arm = 0.;  // [m]
+  double driven_friction_arm = 0.;  // [m]
+};
+
+// Reads the entries of declare_mesh_physics inside the mesh's subsection `section`.
+MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section,
+                               double contact_ratio)
+{
+  MeshPhysics physics;
+  physics.damping = prm.get_double("damping");
+  physics.friction_coefficient = prm.get_double("friction coefficient");
+  physics.driver_friction_arm = prm.get_double("driver friction arm") * mm;
+  physics.driven_friction_arm = prm.get_double("driven friction arm") * mm;
+
+  const std::string source = prm.get("stiffness source");
+  const double stiffness = prm.get_double("stiffness") * newton_per_mm;
+  dynamics::CaiParameters cai = dynamics::cai_published_parameters(stiffness);
+  {
+    std::istringstream shape(prm.get("cai shape"));
+    std::string value;
+    unsigned int i = 0;
+    try
+    {
+      for (; std::getline(shape, value, ','); ++i)
+        if (i < 3)
+          cai.shape[i] = std::stod(value);
+    }
+    catch (const std::exception&)
+    {
+      i = 0;
+    }
+    if (i != 3)
+      throw InputError(section + "/cai shape", "expects three numbers c0, c1, c2");
+  }
+  std::vector<double> positions, values;
+  parse_table(prm.get("stiffness table"), section + "/stiffness table", positions, values);
+  const bool fit_shape = prm.get_bool("fit cai shape");
+
+  if (source == "constant")
+    physics.stiffness = dynamics::MeshStiffness::constant(stiffness, section + "/stiffness");
+  else if (source == "cai")
+    physics.stiffness = dynamics::MeshStiffness::cai(cai, section + "/stiffness");
+  else if (source == "table")
+    physics.stiffness =
+        dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
+  else
+  {
+    // Validate the samples as a table first so the user gets the table's own message.
+    dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
+    std::vector<dynamics::StiffnessSample> samples;
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      samples.push_back({positions[i], values[i]});
+    physics.fit = dynamics::fit_cai_parameters(samples, contact_ratio,
+                                               dynamics::StiffnessSampleKind::mesh, fit_shape);
+    physics.stiffness =
+        dynamics::MeshStiffness::cai(physics.fit->parameters, section + "/stiffness");
+  }
+  return physics;
+}
+
+void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
+{
+  mesh.stiffness = physics.stiffness;
+  mesh.damping = physics.damping;
+  mesh.friction_coefficient = physics.friction_coefficient;
+  mesh.driver_friction_arm = physics.driver_friction_arm;
+  mesh.driven_friction_arm = physics.driven_friction_arm;
+}
+
 } // namespace
 
 void declare_dynamics_parameters(ParameterHandler& prm)
@@ -76,7 +186,25 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("published reference", "true", Bool(),
                     "print the published split-path values (gear-data.md §1, Reszuta & "
                     "Drewniak 2015) beside ours; set false for other trains");
+  prm.declare_entry("model", "gears and meshes", Selection("gears and meshes|train"),
+                    "'gears and meshes': the sections Gear n / Mesh n (a tree, default: the "
+                    "split path); 'train': the kinematics command's Train description (gears, "
+                    "carriers, planets, meshes, ...) with the sections Train mesh n");
+  prm.declare_entry("pressure angle", "20", Double(0., 45.),
+                    "train model: pressure angle of the standard teeth (x = 0, h_a* = 1) for "
+                    "base radii, contact and approach ratios (degrees)");
+  prm.declare_entry("suspended members", "", Anything(),
+                    "train model: fixed members hung on a torsional spring and damper to the "
+                    "housing, 'name: stiffness damping, ...' (N·m/rad, N·m·s/rad)");
   prm.leave_subsection();
+  declare_train_parameters(prm); // gears, modules, ..., inertias, masses, input torque
+
+  for (unsigned int m = 0; m < max_train_meshes; ++m)
+  {
+    prm.enter_subsection(train_mesh_section(m));
+    declare_mesh_physics(prm, data.single_pair_stiffness, data.mesh_damping, 0., 0., 0.);
+    prm.leave_subsection();
+  }
 
   for (unsigned int i = 0; i < max_dynamics_gears; ++i)
   {
@@ -117,28 +245,9 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                       "theta, angle of the driven gear's centre around the driver axis, "
                       "against the driver's rotation, from the driven gear of the first mesh "
                       "of the same driver (degrees); sets the phase frac(z·theta/360°)");
-    prm.declare_entry("stiffness source", "cai", Selection("cai|constant|table|cai fit"),
-                      "mesh stiffness: 'cai' (Cai curve, peak = stiffness), 'constant', "
-                      "'table' (k(x) table), 'cai fit' (Cai curve least-squares fitted to the "
-                      "table)");
-    prm.declare_entry("stiffness", format_number(data.single_pair_stiffness / newton_per_mm, 10),
-                      Double(), "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
-    prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
-                      "c0, c1, c2 of the Cai bracket c2·s² + c1·s + c0, s = engagement "
-                      "fraction (-); the published shape peaks at 1");
-    prm.declare_entry("stiffness table", "", Anything(),
-                      "mesh stiffness samples 'x:k, x:k, ...' with x the mesh position in base "
-                      "pitches in [0, 1) (increasing) and k in N/mm");
-    prm.declare_entry("fit cai shape", "false", Bool(),
-                      "cai fit: fit the three shape coefficients too, not only the scale");
-    prm.declare_entry("damping", format_number(data.mesh_damping, 10), Double(),
-                      "c_g, mesh damping along the line of action (N·s/m)");
-    prm.declare_entry("friction coefficient", format_number(data.friction_coefficient, 10),
-                      Double(0., 0.99), "mu, tooth friction (-)");
-    prm.declare_entry("driver friction arm", format_number(data.pinion_friction_arm / mm, 10),
-                      Double(0.), "r_f of the driver (mm)");
-    prm.declare_entry("driven friction arm", format_number(data.wheel_friction_arm / mm, 10),
-                      Double(0.), "r_f of the driven gear (mm)");
+    declare_mesh_physics(prm, data.single_pair_stiffness, data.mesh_damping,
+                         data.friction_coefficient, data.pinion_friction_arm,
+                         data.wheel_friction_arm);
     prm.leave_subsection();
   }
 
@@ -199,9 +308,11 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
+namespace
 {
-  DynamicsParameters p;
+// "Gear n" / "Mesh n" sections: a tree-shaped train in the two-gear mesh form.
+void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
+{
   prm.enter_subsection("Train");
   const unsigned int n_gears = prm.get_integer("number of gears");
   p.train.input_speed = prm.get_double("input speed") * rpm;
@@ -243,66 +354,19 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
     mesh.contact_ratio = prm.get_double("contact ratio");
     mesh.approach_ratio = prm.get_double("approach ratio");
     p.placement_angle.push_back(prm.get_double("placement angle") * degree);
-    mesh.damping = prm.get_double("damping");
-    mesh.friction_coefficient = prm.get_double("friction coefficient");
-    mesh.driver_friction_arm = prm.get_double("driver friction arm") * mm;
-    mesh.driven_friction_arm = prm.get_double("driven friction arm") * mm;
-
-    const std::string source = prm.get("stiffness source");
-    const double stiffness = prm.get_double("stiffness") * newton_per_mm;
-    dynamics::CaiParameters cai = dynamics::cai_published_parameters(stiffness);
-    {
-      std::istringstream shape(prm.get("cai shape"));
-      std::string value;
-      unsigned int i = 0;
-      try
-      {
-        for (; std::getline(shape, value, ','); ++i)
-          if (i < 3)
-            cai.shape[i] = std::stod(value);
-      }
-      catch (const std::exception&)
-      {
-        i = 0;
-      }
-      if (i != 3)
-      {
-        prm.leave_subsection();
-        throw InputError(section + "/cai shape", "expects three numbers c0, c1, c2");
-      }
-    }
-    std::vector<double> positions, values;
+    MeshPhysics physics;
     try
     {
-      parse_table(prm.get("stiffness table"), section + "/stiffness table", positions, values);
+      physics = parse_mesh_physics(prm, section, mesh.contact_ratio);
     }
     catch (...)
     {
       prm.leave_subsection();
       throw;
     }
-    const bool fit_shape = prm.get_bool("fit cai shape");
     prm.leave_subsection();
-
-    std::optional<dynamics::CaiFit> fit;
-    if (source == "constant")
-      mesh.stiffness = dynamics::MeshStiffness::constant(stiffness, section + "/stiffness");
-    else if (source == "cai")
-      mesh.stiffness = dynamics::MeshStiffness::cai(cai, section + "/stiffness");
-    else if (source == "table")
-      mesh.stiffness =
-          dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
-    else
-    {
-      // Validate the samples as a table first so the user gets the table's own message.
-      dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
-      std::vector<dynamics::StiffnessSample> samples;
-      for (std::size_t i = 0; i < positions.size(); ++i)
-        samples.push_back({positions[i], values[i]});
-      fit = dynamics::fit_cai_parameters(samples, mesh.contact_ratio,
-                                         dynamics::StiffnessSampleKind::mesh, fit_shape);
-      mesh.stiffness = dynamics::MeshStiffness::cai(fit->parameters, section + "/stiffness");
-    }
+    apply_mesh_physics(physics, mesh);
+    const std::optional<dynamics::CaiFit>& fit = physics.fit;
     p.stiffness_description.push_back(mesh.stiffness.description() +
                                       (fit ? " (fitted to the table)" : ""));
     p.cai_fit.push_back(fit);
@@ -347,6 +411,109 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
     }
   for (unsigned int i = 0; i < n_gears; ++i)
     p.train.gears[i].torque = torque[i];
+}
+
+// "name: k c, ..." [N·m/rad, N·m·s/rad]: fixed members hung on a spring and damper.
+std::vector<dynamics::TrainSuspension> parse_suspensions(const std::string& text)
+{
+  const std::string parameter = "Train/suspended members";
+  std::vector<dynamics::TrainSuspension> suspensions;
+  std::istringstream entries(text);
+  std::string entry;
+  while (std::getline(entries, entry, ','))
+  {
+    if (entry.find_first_not_of(" \t") == std::string::npos)
+      continue;
+    const auto colon = entry.find(':');
+    std::istringstream values(colon == std::string::npos ? "" : entry.substr(colon + 1));
+    dynamics::TrainSuspension suspension;
+    std::string name = colon == std::string::npos ? "" : entry.substr(0, colon);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    suspension.member = name;
+    std::string rest;
+    if (!(values >> suspension.stiffness >> suspension.damping) || (values >> rest) ||
+        name.empty() || !(suspension.stiffness >= 0.) || !(suspension.damping >= 0.) ||
+        !std::isfinite(suspension.stiffness + suspension.damping))
+      throw InputError(parameter, "entry '" + entry +
+                                      "' is not 'member: stiffness damping' with non-negative "
+                                      "numbers (N·m/rad, N·m·s/rad)");
+    suspensions.push_back(suspension);
+  }
+  return suspensions;
+}
+
+// The kinematics command's "Train" description plus "Train mesh n" sections.
+void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
+{
+  const TrainParameters train = parse_train_parameters(prm);
+  dynamics::TrainDynamicsInput input;
+  input.spec = kinematics::parse_gear_train(train.text);
+  input.input_torque = train.input_torque;
+  prm.enter_subsection("Train");
+  input.pressure_angle = prm.get_double("pressure angle") * degree;
+  const std::string suspended = prm.get("suspended members");
+  prm.leave_subsection();
+  input.suspensions = parse_suspensions(suspended);
+  input.initial_position = p.initial_position;
+  if (input.spec.meshes.size() > max_train_meshes)
+    throw InputError("Train/meshes", "at most " + std::to_string(max_train_meshes) +
+                                         " meshes (sections 'Train mesh 1' ...)");
+  for (std::size_t m = 0; m < input.spec.meshes.size(); ++m)
+  {
+    const std::string section = train_mesh_section(m);
+    // The contact ratio of standard teeth, for a Cai fit (the model recomputes it).
+    const kinematics::TrainMesh& tm = input.spec.meshes[m];
+    double contact_ratio = 1.5;
+    for (const auto& a : input.spec.members)
+      for (const auto& b : input.spec.members)
+        if (a.name == tm.gear_a && b.name == tm.gear_b && a.module > 0.)
+          contact_ratio =
+              dynamics::standard_mesh(a.teeth, b.teeth, a.module, input.pressure_angle, 0)
+                  .contact_ratio;
+    prm.enter_subsection(section);
+    MeshPhysics physics;
+    try
+    {
+      physics = parse_mesh_physics(prm, section, contact_ratio);
+    }
+    catch (...)
+    {
+      prm.leave_subsection();
+      throw;
+    }
+    prm.leave_subsection();
+    input.meshes.push_back({physics.stiffness, physics.damping, physics.friction_coefficient,
+                            physics.driver_friction_arm, physics.driven_friction_arm});
+    p.stiffness_description.push_back(physics.stiffness.description() +
+                                      (physics.fit ? " (fitted to the table)" : ""));
+    p.cai_fit.push_back(physics.fit);
+  }
+  p.train_model = dynamics::build_train_model(input);
+  p.train = p.train_model.train;
+  p.published_reference = false;
+  // Per model mesh (every copy): the description of its Train mesh.
+  std::vector<std::string> descriptions;
+  std::vector<std::optional<dynamics::CaiFit>> fits;
+  for (const unsigned int m : p.train_model.spec_mesh)
+  {
+    descriptions.push_back(p.stiffness_description[m]);
+    fits.push_back(p.cai_fit[m]);
+  }
+  p.stiffness_description = descriptions;
+  p.cai_fit = fits;
+  p.placement_angle.assign(p.train.meshes.size(), std::nan(""));
+}
+} // namespace
+
+DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
+{
+  DynamicsParameters p;
+  prm.enter_subsection("Train");
+  p.train_description = prm.get("model") == "train";
+  prm.leave_subsection();
+  if (!p.train_description)
+    parse_numbered_train(prm, p);
 
   prm.enter_subsection("Simulation");
   const std::string integrator = prm.get("integrator");
@@ -391,6 +558,11 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
   p.iso.application_factor = prm.get_double("application factor");
   prm.leave_subsection();
 
+  if (p.train_description)
+  {
+    parse_train_description(prm, p);
+    return p;
+  }
   // Mesh phases from the placement angles: each mesh relative to the first mesh of its driver.
   for (unsigned int m = 0; m < p.train.meshes.size(); ++m)
     p.train.meshes[m].initial_position =

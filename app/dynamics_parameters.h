@@ -5,6 +5,7 @@
 
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/simulation.h"
+#include "dynamics/train_model.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <optional>
@@ -14,6 +15,7 @@
 namespace gearstiff::app
 {
 constexpr unsigned int max_dynamics_gears = 6;
+constexpr unsigned int max_train_meshes = 8; // sections "Train mesh 1" ... of the train model
 
 struct SweepParameters
 {
@@ -37,6 +39,10 @@ struct IsoParameters
 
 struct DynamicsParameters
 {
+  // Train/model = train: the kinematics description, built into train_model (its general-form
+  // GearTrain is copied to `train`); otherwise Gear n / Mesh n.
+  bool train_description = false;
+  dynamics::TrainModel train_model;
   dynamics::GearTrain train;
   std::vector<double> placement_angle;                  // [rad] per mesh
   std::vector<std::string> stiffness_description;       // per mesh, for the report

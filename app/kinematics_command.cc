@@ -10,6 +10,7 @@
 #include "app/command.h"
 #include "app/kinematics_parameters.h"
 #include "app/units.h"
+#include "errors/errors.h"
 #include "kinematics/gear_train.h"
 
 #include <algorithm>
@@ -35,6 +36,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const auto start = std::chrono::steady_clock::now();
   const kinematics::GearTrainSpec spec = kinematics::parse_gear_train(parameters.text);
   const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
+  // Checked before any work: an unknown member here was silently ignored (issue 11).
+  if (!parameters.reduce_to.empty() && std::none_of(spec.members.begin(), spec.members.end(),
+                                                    [&](const kinematics::TrainMember& member) {
+                                                      return member.name == parameters.reduce_to;
+                                                    }))
+    throw InputError("Train/reduce inertia to", "unknown member '" + parameters.reduce_to +
+                                                    "' (declare it in gears or carriers)");
   const bool published = same_text(parameters.text, kinematics::builtin_train("bi-planetary")) &&
                          parameters.input_torque == 120.2 && parameters.tooth_friction == 0.08;
   Report& report = context.report;

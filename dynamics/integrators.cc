@@ -345,6 +345,29 @@ void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
 }
 } // namespace
 
+WorkEstimate estimate_work(const TorsionalModel& model, const IntegratorSettings& settings,
+                           double bytes_per_step)
+{
+  WorkEstimate work;
+  work.steps = std::ceil(settings.end_time / settings.time_step);
+  const double stored = work.steps / std::max(1u, settings.record_stride) + 2.;
+  work.memory = stored * (1. + 2. * model.n_dofs()) * sizeof(double) + work.steps * bytes_per_step;
+  return work;
+}
+
+void check_work(const WorkEstimate& work, const std::string& parameter, const std::string& hint)
+{
+  if (std::isfinite(work.steps) && work.steps <= max_integration_steps &&
+      work.memory <= max_integration_memory)
+    return;
+  std::ostringstream reason;
+  reason.precision(3);
+  reason << "the run would need " << work.steps << " steps and " << work.memory / 1e9
+         << " GB of results (limits " << max_integration_steps << " steps, "
+         << max_integration_memory / 1e9 << " GB); " << hint;
+  throw InputError(parameter, reason.str());
+}
+
 Trajectory integrate(const TorsionalModel& model, const std::vector<double>& initial_angle,
                      const std::vector<double>& initial_velocity,
                      const IntegratorSettings& settings)
@@ -357,6 +380,8 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
     throw InputError("Simulation/simulated time", "must be at least one time step");
   if (settings.record_stride == 0)
     throw InputError("Simulation/output stride", "must be at least 1");
+  check_work(estimate_work(model, settings), "Simulation/time step",
+             "enlarge the time step or shorten the simulated time");
 
   Trajectory trajectory;
   trajectory.n_dofs = model.n_dofs();

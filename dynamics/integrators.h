@@ -72,6 +72,25 @@ struct Trajectory
   const double* velocity_at(std::size_t i) const { return velocity.data() + i * n_dofs; }
 };
 
+// What a run will cost before it starts (issue 11: absurd spans or steps must be refused, not
+// run out of memory or time). Steps are exact for the fixed-step methods and a lower bound for
+// the adaptive one (its output points); memory counts the stored trajectory plus
+// `bytes_per_step` more per step (the caller's own per-step storage).
+struct WorkEstimate
+{
+  double steps = 0.;  // [-]
+  double memory = 0.; // [bytes]
+};
+WorkEstimate estimate_work(const TorsionalModel& model, const IntegratorSettings& settings,
+                           double bytes_per_step = 0.);
+// The limits every run is held to: 2e8 steps (minutes of processor time for a small train)
+// and 2 GiB of stored results.
+constexpr double max_integration_steps = 2e8;
+constexpr double max_integration_memory = 2. * 1024. * 1024. * 1024.;
+// Throws InputError naming `parameter` with the estimate when it exceeds a limit; `hint` says
+// what to change.
+void check_work(const WorkEstimate& work, const std::string& parameter, const std::string& hint);
+
 // Integrates from the initial angles [rad] and speeds [rad/s] (relative to the nominal
 // rotation, see torsional_model.h) from t = 0 to settings.end_time.
 Trajectory integrate(const TorsionalModel& model, const std::vector<double>& initial_angle,

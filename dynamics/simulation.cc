@@ -16,6 +16,22 @@ std::string start_state_name(StartState start)
   return start == StartState::rest ? "rest" : "static deflection";
 }
 
+std::string sweep_status_name(SweepStatus status)
+{
+  switch (status)
+  {
+  case SweepStatus::valid:
+    return "valid";
+  case SweepStatus::diverged:
+    return "diverged (linear model unstable)";
+  case SweepStatus::contact_loss:
+    return "contact loss (mesh force < 0, outside the linear model)";
+  case SweepStatus::not_steady:
+    return "not steady (window halves differ)";
+  }
+  return "?";
+}
+
 namespace
 {
 // Single-sided amplitude spectrum of samples (t_i, f_i) over [start, end). The window spans
@@ -56,6 +72,40 @@ void force_spectrum(const std::vector<double>& time, const std::vector<double>& 
   }
 }
 } // namespace
+
+// Refuses a run that cannot finish (issue 11) before anything is allocated, naming what made
+// it long: a tiny step, a long simulated time, or a window that waits for a decay that takes
+// too long (light damping).
+void check_simulation_work(const TorsionalModel& model, const SimulationSettings& settings,
+                           const IntegratorSettings& integrator, const SimulationResult& result,
+                           double mesh_period)
+{
+  // Per step the observer keeps the window's time and forces (time series only), and the
+  // stored trajectory is expanded into three series per mesh afterwards.
+  const double per_step = settings.keep_time_series ? (1. + model.n_meshes()) * sizeof(double) +
+                                                          3. * model.n_meshes() * sizeof(double) /
+                                                              integrator.record_stride
+                                                    : 0.;
+  const WorkEstimate work = estimate_work(model, integrator, per_step);
+  // A sensible step (the smaller of the RK4 limit and 1/20 mesh period) tells whether the span
+  // or the step is to blame.
+  const double sensible_step = std::min(model.rk4_step_limit(), mesh_period / 20.);
+  const bool span_too_long = integrator.end_time / sensible_step > max_integration_steps;
+  if (!span_too_long)
+    check_work(work, "Simulation/time step",
+               "the step " + std::to_string(integrator.time_step) +
+                   " s is far below what the model needs (RK4 limit " +
+                   std::to_string(model.rk4_step_limit()) + " s): enlarge it");
+  else if (settings.end_time > 0.)
+    check_work(work, "Simulation/simulated time", "shorten it");
+  else if (!result.window_automatic)
+    check_work(work, "Simulation/steady state start", "start the window earlier");
+  else
+    check_work(work, "Simulation/steady state start",
+               "the automatic window waits " + std::to_string(result.decay_time) +
+                   " s for the slowest mode to decay to 1/1000 (mesh damping too light): give "
+                   "the window start or more damping");
+}
 
 SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings)
 {
@@ -124,8 +174,10 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   integrator.end_time = end_time;
   integrator.record_stride =
       settings.keep_time_series
-          ? std::max(1u, static_cast<unsigned int>(std::lround(settings.record_interval / h)))
+          ? std::max(1u, static_cast<unsigned int>(std::lround(std::min(
+                             settings.record_interval / h, double(max_integration_steps)))))
           : std::numeric_limits<unsigned int>::max();
+  check_simulation_work(model, settings, integrator, result, mesh_period);
   integrator.observer = [&](double t, const double* phi, const double* omega)
   {
     if (t < result.window_start - tolerance || t > result.window_end + tolerance)
@@ -223,10 +275,15 @@ SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settin
             std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
       }
       p.cost = result.trajectory.cost;
+      if (p.kv_min < 0.)
+        p.status = SweepStatus::contact_loss;
+      else if (p.periodicity > steady_state_tolerance * p.kv_max)
+        p.status = SweepStatus::not_steady;
     }
     catch (const SolverFailure& failure)
     {
       p.unstable = true;
+      p.status = SweepStatus::diverged;
       p.failure = failure.what();
       p.kv_max = p.kv_min = p.periodicity = std::numeric_limits<double>::quiet_NaN();
     }

@@ -76,6 +76,20 @@ struct SimulationResult
 
 SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings);
 
+// Whether a sweep point has a K_v at all. Only `valid` points carry one: a diverged run has
+// none, a run whose mesh force turns negative (teeth would separate) is outside the linear
+// model, and a run whose two window halves differ has not reached a steady state.
+enum class SweepStatus
+{
+  valid,
+  diverged,
+  contact_loss,
+  not_steady
+};
+std::string sweep_status_name(SweepStatus status);
+// |K_v max(first half) − K_v max(second half)| above this fraction of K_v max: not steady.
+constexpr double steady_state_tolerance = 0.05;
+
 struct SweepPoint
 {
   double input_speed = 0.;    // [rad/s]
@@ -88,6 +102,9 @@ struct SweepPoint
   // fields are NaN and `failure` holds the SolverFailure message.
   bool unstable = false;
   std::string failure;
+  // The K_v fields keep the linear model's values for contact_loss and not_steady points (a
+  // chart may show where the model stops holding); reports must print them as invalid.
+  SweepStatus status = SweepStatus::valid;
   IntegrationCost cost;
 };
 

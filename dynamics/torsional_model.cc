@@ -47,13 +47,15 @@ double mesh_phase_from_placement(unsigned int driver_teeth, double placement_ang
 }
 
 TorsionalModel::TorsionalModel(const GearTrain& train)
-    : description(train), n_gears(train.gears.size())
+    : description(train), n_gears(train.gears.size()), general(!train.speed_ratios.empty())
 {
   require(n_gears >= 2, "gears", "a train needs at least two gears");
-  require(train.meshes.size() + 1 == n_gears, "meshes",
-          "a tree-shaped train of " + std::to_string(n_gears) + " gears has " +
-              std::to_string(n_gears - 1) + " meshes, got " + std::to_string(train.meshes.size()) +
-              " (closed loops are not supported)");
+  if (!general)
+    require(train.meshes.size() + 1 == n_gears, "meshes",
+            "a tree-shaped train of " + std::to_string(n_gears) + " gears has " +
+                std::to_string(n_gears - 1) + " meshes, got " +
+                std::to_string(train.meshes.size()) +
+                " (closed loops need the general form: a Train description)");
   require(train.input_speed > 0. && std::isfinite(train.input_speed), "input speed",
           "must be positive, got " + std::to_string(train.input_speed) + " rad/s");
 
@@ -70,80 +72,145 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
     inverse_inertia[i] = 1. / gear.inertia;
     torques[i] = gear.torque;
   }
-
   for (unsigned int m = 0; m < train.meshes.size(); ++m)
+    validate_mesh(train, m);
+  for (const Suspension& suspension : train.suspensions)
+    require(suspension.dof < n_gears && suspension.stiffness >= 0. && suspension.damping >= 0. &&
+                std::isfinite(suspension.stiffness + suspension.damping),
+            gear_label(train, std::min(suspension.dof, n_gears - 1)) + "/suspension",
+            "needs a degree of freedom of the train and a non-negative stiffness and damping");
+  suspensions = train.suspensions;
+
+  if (general)
   {
-    const Mesh& mesh = train.meshes[m];
-    const std::string label = mesh_label(train, m);
+    require(train.speed_ratios.size() == n_gears, "speed ratios", "one per degree of freedom");
+    speeds.resize(n_gears);
+    for (unsigned int i = 0; i < n_gears; ++i)
+      speeds[i] = train.speed_ratios[i] * train.input_speed;
+  }
+  else
+  {
+    // Nominal speeds: r_a·ω_a = r_b·ω_b along every mesh, gear 0 at the input speed.
+    speeds.assign(n_gears, 0.);
+    std::vector<bool> known(n_gears, false);
+    speeds[0] = train.input_speed;
+    known[0] = true;
+    for (bool changed = true; changed;)
+    {
+      changed = false;
+      for (const Mesh& mesh : train.meshes)
+        if (known[mesh.driver] != known[mesh.driven])
+        {
+          if (known[mesh.driver])
+            speeds[mesh.driven] =
+                speeds[mesh.driver] * mesh.driver_base_radius / mesh.driven_base_radius;
+          else
+            speeds[mesh.driver] =
+                speeds[mesh.driven] * mesh.driven_base_radius / mesh.driver_base_radius;
+          known[mesh.driver] = known[mesh.driven] = true;
+          changed = true;
+        }
+    }
+    for (unsigned int i = 0; i < n_gears; ++i)
+      require(known[i], gear_label(train, i), "is not connected to gear 1 by any mesh");
+  }
+  rigid.resize(n_gears);
+  for (unsigned int i = 0; i < n_gears; ++i)
+    rigid[i] = speeds[i] / speeds[0];
+
+  compile_meshes(train);
+  double rigid_acceleration = 0.;
+  std::vector<double> angle;
+  nominal_forces =
+      general
+          ? solve_static_general(std::vector<double>(meshes.size(), 0.), rigid_acceleration, angle)
+          : solve_static(std::vector<double>(meshes.size(), 0.), rigid_acceleration, angle);
+}
+
+void TorsionalModel::validate_mesh(const GearTrain& train, unsigned int m) const
+{
+  const Mesh& mesh = train.meshes[m];
+  const std::string label = mesh_label(train, m);
+  if (mesh.terms.empty())
+  {
+    require(!general, label + "/gears", "a general train needs the terms of every mesh");
     require(mesh.driver < n_gears && mesh.driven < n_gears && mesh.driver != mesh.driven,
             label + "/gears", "driver and driven must be two different gears of the train");
     require(mesh.driver_base_radius > 0., label + "/driver base radius", "must be positive");
     require(mesh.driven_base_radius > 0., label + "/driven base radius", "must be positive");
     require(mesh.driver_teeth > 0, label + "/driver teeth", "must be positive");
-    require(mesh.contact_ratio >= 1. && mesh.contact_ratio < 4., label + "/contact ratio",
-            "must lie in [1, 4), got " + std::to_string(mesh.contact_ratio));
-    require(mesh.approach_ratio >= 0. && mesh.approach_ratio <= mesh.contact_ratio,
-            label + "/approach ratio", "must lie in [0, contact ratio]");
-    require(mesh.damping >= 0. && std::isfinite(mesh.damping), label + "/damping",
-            "must not be negative, got " + std::to_string(mesh.damping) + " N·s/m");
-    require(mesh.friction_coefficient >= 0. && mesh.friction_coefficient < 1.,
-            label + "/friction coefficient", "must lie in [0, 1)");
-    require(mesh.driver_friction_arm >= 0. && mesh.driven_friction_arm >= 0.,
-            label + "/friction arms", "must not be negative");
-    // A default-constructed MeshStiffness is a zero constant: the caller forgot the source.
-    require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., label + "/stiffness",
-            "no positive mesh stiffness given");
   }
-
-  // Nominal speeds: r_a·ω_a = r_b·ω_b along every mesh, gear 0 at the input speed.
-  speeds.assign(n_gears, 0.);
-  std::vector<bool> known(n_gears, false);
-  speeds[0] = train.input_speed;
-  known[0] = true;
-  for (bool changed = true; changed;)
+  else
   {
-    changed = false;
-    for (const Mesh& mesh : train.meshes)
-      if (known[mesh.driver] != known[mesh.driven])
-      {
-        if (known[mesh.driver])
-          speeds[mesh.driven] =
-              speeds[mesh.driver] * mesh.driver_base_radius / mesh.driven_base_radius;
-        else
-          speeds[mesh.driver] =
-              speeds[mesh.driven] * mesh.driven_base_radius / mesh.driver_base_radius;
-        known[mesh.driver] = known[mesh.driven] = true;
-        changed = true;
-      }
+    require(general && mesh.terms.size() <= 3, label + "/gears",
+            "a mesh joins at most two gears and a frame, in a general train");
+    for (const MeshTerm& term : mesh.terms)
+      require(term.dof < n_gears && std::isfinite(term.coefficient + term.friction_arm),
+              label + "/gears", "a term names no degree of freedom of the train");
+    require(mesh.position_ratio > 0. && std::isfinite(mesh.position_ratio), label + "/gears",
+            "the mesh does not roll (no relative speed in its frame)");
   }
-  for (unsigned int i = 0; i < n_gears; ++i)
-    require(known[i], gear_label(train, i), "is not connected to gear 1 by any mesh");
-  rigid.resize(n_gears);
-  for (unsigned int i = 0; i < n_gears; ++i)
-    rigid[i] = speeds[i] / speeds[0];
+  require(mesh.contact_ratio >= 1. && mesh.contact_ratio < 4., label + "/contact ratio",
+          "must lie in [1, 4), got " + std::to_string(mesh.contact_ratio));
+  require(mesh.approach_ratio >= 0. && mesh.approach_ratio <= mesh.contact_ratio,
+          label + "/approach ratio", "must lie in [0, contact ratio]");
+  require(mesh.damping >= 0. && std::isfinite(mesh.damping), label + "/damping",
+          "must not be negative, got " + std::to_string(mesh.damping) + " N·s/m");
+  require(mesh.friction_coefficient >= 0. && mesh.friction_coefficient < 1.,
+          label + "/friction coefficient", "must lie in [0, 1)");
+  require(mesh.driver_friction_arm >= 0. && mesh.driven_friction_arm >= 0.,
+          label + "/friction arms", "must not be negative");
+  // A default-constructed MeshStiffness is a zero constant: the caller forgot the source.
+  require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., label + "/stiffness",
+          "no positive mesh stiffness given");
+}
 
+void TorsionalModel::compile_meshes(const GearTrain& train)
+{
   for (const Mesh& mesh : train.meshes)
   {
     CompiledMesh c;
-    c.a = mesh.driver;
-    c.b = mesh.driven;
-    c.ra = mesh.driver_base_radius;
-    c.rb = mesh.driven_base_radius;
-    c.rfa = mesh.driver_friction_arm;
-    c.rfb = mesh.driven_friction_arm;
+    if (mesh.terms.empty())
+    {
+      // δ = r_a·φ_a − r_b·φ_b; the driven gear's term is written with negated radius and arm
+      // so one loop serves both forms (negation is exact: the split path is unchanged).
+      c.n_terms = 2;
+      c.dof[0] = mesh.driver;
+      c.dof[1] = mesh.driven;
+      c.c[0] = mesh.driver_base_radius;
+      c.c[1] = -mesh.driven_base_radius;
+      c.arm[0] = mesh.driver_friction_arm;
+      c.arm[1] = -mesh.driven_friction_arm;
+      c.position_rate = speeds[mesh.driver] * mesh.driver_teeth / (2. * M_PI);
+    }
+    else
+    {
+      c.n_terms = mesh.terms.size();
+      for (unsigned int i = 0; i < c.n_terms; ++i)
+      {
+        c.dof[i] = mesh.terms[i].dof;
+        c.c[i] = mesh.terms[i].coefficient;
+        c.arm[i] = mesh.terms[i].friction_arm;
+      }
+      c.position_rate = mesh.position_ratio * train.input_speed;
+    }
     c.damping = mesh.damping;
     c.mu = mesh.friction_coefficient;
     c.contact_ratio = mesh.contact_ratio;
     c.approach_ratio = mesh.approach_ratio;
-    c.position_rate = speeds[mesh.driver] * mesh.driver_teeth / (2. * M_PI);
     c.initial_position = mesh.initial_position;
     c.stiffness = mesh.stiffness;
     meshes.push_back(c);
   }
+  cached_states.resize(meshes.size());
+}
 
-  double rigid_acceleration = 0.;
-  std::vector<double> angle;
-  nominal_forces = solve_static(std::vector<double>(meshes.size(), 0.), rigid_acceleration, angle);
+double TorsionalModel::deflection(const CompiledMesh& mesh, const double* angle) const
+{
+  double delta = mesh.c[0] * angle[mesh.dof[0]] + mesh.c[1] * angle[mesh.dof[1]];
+  if (mesh.n_terms == 3)
+    delta += mesh.c[2] * angle[mesh.dof[2]];
+  return delta;
 }
 
 MeshStiffnessState TorsionalModel::mesh_state(const CompiledMesh& mesh, double time) const
@@ -157,15 +224,26 @@ void TorsionalModel::acceleration(double time, const double* angle, const double
 {
   for (unsigned int i = 0; i < n_gears; ++i)
     result[i] = torques[i];
-  for (const CompiledMesh& mesh : meshes)
+  for (const Suspension& suspension : suspensions)
+    result[suspension.dof] -= suspension.stiffness * angle[suspension.dof] +
+                              suspension.damping * velocity[suspension.dof];
+  // RK4 evaluates twice at t + h/2, and its last stage at t + h is usually the next step's
+  // first: the mesh states of the last time are reused (same time, same values: exact).
+  if (!(time == cached_time))
   {
-    const MeshStiffnessState state = mesh_state(mesh, time);
-    const double deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
-    const double rate = mesh.ra * velocity[mesh.a] - mesh.rb * velocity[mesh.b];
-    const double force = state.stiffness * deflection + mesh.damping * rate;
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+      cached_states[m] = mesh_state(meshes[m], time);
+    cached_time = time;
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    const CompiledMesh& mesh = meshes[m];
+    const MeshStiffnessState& state = cached_states[m];
+    const double force =
+        state.stiffness * deflection(mesh, angle) + mesh.damping * deflection(mesh, velocity);
     const double friction = mesh.mu * state.friction_direction;
-    result[mesh.a] -= (mesh.ra + friction * mesh.rfa) * force;
-    result[mesh.b] += (mesh.rb + friction * mesh.rfb) * force;
+    for (unsigned int i = 0; i < mesh.n_terms; ++i)
+      result[mesh.dof[i]] -= (mesh.c[i] + friction * mesh.arm[i]) * force;
   }
   for (unsigned int i = 0; i < n_gears; ++i)
     result[i] *= inverse_inertia[i];
@@ -180,8 +258,8 @@ MeshResponse TorsionalModel::mesh_response(unsigned int m, double time, const do
   response.position = mesh.initial_position + mesh.position_rate * time;
   response.stiffness = state.stiffness;
   response.friction_direction = state.friction_direction;
-  response.deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
-  response.deflection_rate = mesh.ra * velocity[mesh.a] - mesh.rb * velocity[mesh.b];
+  response.deflection = deflection(mesh, angle);
+  response.deflection_rate = deflection(mesh, velocity);
   response.force = state.stiffness * response.deflection + mesh.damping * response.deflection_rate;
   return response;
 }
@@ -197,12 +275,18 @@ void TorsionalModel::assemble(const std::vector<double>& k, const std::vector<do
     Eigen::VectorXd g = Eigen::VectorXd::Zero(n_gears);
     Eigen::VectorXd h = Eigen::VectorXd::Zero(n_gears);
     const double friction = mesh.mu * sigma[m];
-    g[mesh.a] = mesh.ra + friction * mesh.rfa;
-    g[mesh.b] = -(mesh.rb + friction * mesh.rfb);
-    h[mesh.a] = mesh.ra;
-    h[mesh.b] = -mesh.rb;
+    for (unsigned int i = 0; i < mesh.n_terms; ++i)
+    {
+      g[mesh.dof[i]] += mesh.c[i] + friction * mesh.arm[i];
+      h[mesh.dof[i]] += mesh.c[i];
+    }
     K += k[m] * g * h.transpose();
     C += mesh.damping * g * h.transpose();
+  }
+  for (const Suspension& suspension : suspensions)
+  {
+    K(suspension.dof, suspension.dof) += suspension.stiffness;
+    C(suspension.dof, suspension.dof) += suspension.damping;
   }
 }
 
@@ -230,8 +314,8 @@ std::vector<double> TorsionalModel::solve_static(const std::vector<double>& sigm
   {
     const CompiledMesh& mesh = meshes[m];
     const double friction = mesh.mu * sigma[m];
-    system(mesh.a, m) = mesh.ra + friction * mesh.rfa;
-    system(mesh.b, m) = -(mesh.rb + friction * mesh.rfb);
+    system(mesh.dof[0], m) = mesh.c[0] + friction * mesh.arm[0];
+    system(mesh.dof[1], m) = mesh.c[1] + friction * mesh.arm[1];
   }
   system.col(n_mesh) = inertia.cwiseProduct(rigid);
   Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
@@ -247,13 +331,52 @@ std::vector<double> TorsionalModel::solve_static(const std::vector<double>& sigm
   for (unsigned int m = 0; m < n_mesh; ++m)
   {
     const CompiledMesh& mesh = meshes[m];
-    kinematic(m, mesh.a) = mesh.ra;
-    kinematic(m, mesh.b) = -mesh.rb;
+    kinematic(m, mesh.dof[0]) = mesh.c[0];
+    kinematic(m, mesh.dof[1]) = mesh.c[1];
     rhs[m] = forces[m] / mesh.stiffness.mean_stiffness(mesh.contact_ratio);
   }
   kinematic.row(n_mesh) = inertia.cwiseProduct(rigid).transpose();
   const Eigen::VectorXd angle = kinematic.fullPivLu().solve(rhs);
   angle_out.assign(angle.data(), angle.data() + n_gears);
+  return forces;
+}
+
+std::vector<double> TorsionalModel::solve_static_general(const std::vector<double>& sigma,
+                                                         double& rigid_acceleration,
+                                                         std::vector<double>& angle_out) const
+{
+  // K·φ + M·v0·a0 = T with v0ᵀ·M·φ = 0 (no rigid-mode component): square and regular when
+  // the meshes hold every rotation but the rigid mode. The mesh forces follow from φ.
+  std::vector<double> k(meshes.size());
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    k[m] = meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio);
+  Eigen::MatrixXd K, C;
+  assemble(k, sigma, K, C);
+  const bool has_rigid_mode =
+      suspensions.empty() || std::all_of(suspensions.begin(), suspensions.end(),
+                                         [&](const Suspension& s) { return rigid[s.dof] == 0.; });
+  const unsigned int size = n_gears + (has_rigid_mode ? 1 : 0);
+  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(size, size);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
+  system.topLeftCorner(n_gears, n_gears) = K;
+  rhs.head(n_gears) = torques;
+  if (has_rigid_mode)
+  {
+    const Eigen::VectorXd momentum = inertia.cwiseProduct(rigid);
+    system.block(0, n_gears, n_gears, 1) = momentum;
+    system.block(n_gears, 0, 1, n_gears) = momentum.transpose();
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
+  if (!lu.isInvertible())
+    throw SolverFailure("static deflection",
+                        "the meshes do not hold the train: a rotation other than the nominal "
+                        "one has no stiffness (a member without a mesh?)");
+  const Eigen::VectorXd solution = lu.solve(rhs);
+  angle_out.assign(solution.data(), solution.data() + n_gears);
+  rigid_acceleration = has_rigid_mode ? solution[n_gears] : 0.;
+  std::vector<double> forces(meshes.size());
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    forces[m] = k[m] * deflection(meshes[m], angle_out.data());
   return forces;
 }
 
@@ -265,7 +388,8 @@ StaticState TorsionalModel::static_state(bool include_friction) const
       sigma[m] = meshes[m].stiffness.mean_friction_direction(meshes[m].contact_ratio,
                                                              meshes[m].approach_ratio);
   StaticState state;
-  state.mesh_force = solve_static(sigma, state.rigid_acceleration, state.angle);
+  state.mesh_force = general ? solve_static_general(sigma, state.rigid_acceleration, state.angle)
+                             : solve_static(sigma, state.rigid_acceleration, state.angle);
   for (unsigned int m = 0; m < meshes.size(); ++m)
     state.deflection.push_back(state.mesh_force[m] /
                                meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio));
@@ -299,9 +423,12 @@ ModalProperties TorsionalModel::modal_properties() const
   double largest_damped = 0.;
   for (const auto& value : damped)
     largest_damped = std::max(largest_damped, std::abs(value));
+  // Without damping the real parts are round-off of either sign, ~1e-13·|λ|: a "decay rate"
+  // from them would make the automatic window wait for ever (issue 11), so anything below
+  // 1e-9·|λ| is no decay.
   for (const auto& value : damped)
     if (std::abs(value) > rigid_mode_threshold * largest_damped && value.imag() >= 0.)
-      modes.decay_rates.push_back(-value.real());
+      modes.decay_rates.push_back(-value.real() > 1e-9 * std::abs(value) ? -value.real() : 0.);
   std::sort(modes.decay_rates.begin(), modes.decay_rates.end());
   return modes;
 }
@@ -380,25 +507,49 @@ double TorsionalModel::vibration_energy(double time, const double* angle,
   const double rigid_speed =
       (rigid.cwiseProduct(inertia)).dot(v) / (rigid.cwiseProduct(inertia)).dot(rigid);
   const Eigen::VectorXd relative = v - rigid_speed * rigid;
-  double energy = 0.5 * relative.cwiseProduct(inertia).dot(relative);
-  for (const CompiledMesh& mesh : meshes)
-  {
-    const double deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
-    energy += 0.5 * mesh_state(mesh, time).stiffness * deflection * deflection;
-  }
-  return energy;
+  return 0.5 * relative.cwiseProduct(inertia).dot(relative) + strain_energy(time, angle);
 }
 
 double TorsionalModel::total_energy(double time, const double* angle, const double* velocity) const
 {
   const Eigen::Map<const Eigen::VectorXd> v(velocity, n_gears);
   const Eigen::Map<const Eigen::VectorXd> phi(angle, n_gears);
-  double energy = 0.5 * v.cwiseProduct(inertia).dot(v) - torques.dot(phi);
+  return 0.5 * v.cwiseProduct(inertia).dot(v) - torques.dot(phi) + strain_energy(time, angle);
+}
+
+double TorsionalModel::strain_energy(double time, const double* angle) const
+{
+  double energy = 0.;
   for (const CompiledMesh& mesh : meshes)
   {
-    const double deflection = mesh.ra * angle[mesh.a] - mesh.rb * angle[mesh.b];
-    energy += 0.5 * mesh_state(mesh, time).stiffness * deflection * deflection;
+    const double delta = deflection(mesh, angle);
+    energy += 0.5 * mesh_state(mesh, time).stiffness * delta * delta;
   }
+  for (const Suspension& suspension : suspensions)
+    energy += 0.5 * suspension.stiffness * angle[suspension.dof] * angle[suspension.dof];
   return energy;
+}
+
+Eigen::MatrixXd TorsionalModel::mean_stiffness_matrix() const
+{
+  std::vector<double> k(meshes.size()), sigma(meshes.size(), 0.);
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    k[m] = meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio);
+  Eigen::MatrixXd K, C;
+  assemble(k, sigma, K, C);
+  return K;
+}
+
+ModeShapes TorsionalModel::mode_shapes() const
+{
+  const Eigen::MatrixXd K = mean_stiffness_matrix();
+  const Eigen::MatrixXd M = inertia.asDiagonal();
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (K + K.transpose()), M);
+  if (solver.info() != Eigen::Success)
+    throw SolverFailure("modal analysis", "the generalised eigenproblem did not converge");
+  ModeShapes modes;
+  modes.frequencies = solver.eigenvalues().cwiseMax(0.).cwiseSqrt() / (2. * M_PI);
+  modes.shapes = solver.eigenvectors();
+  return modes;
 }
 } // namespace gearstiff::dynamics

@@ -28,6 +28,7 @@
 #include "dynamics/mesh_stiffness.h"
 
 #include <Eigen/Dense>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,16 @@ struct Gear
   double inertia = 0.; // [kg·m²] mass moment of inertia about its axis
   double torque = 0.;  // [N·m] external torque, positive in the running direction (input),
                        //        negative for a load
+};
+
+// One rotation's share in a mesh of the general form (planetary meshes, see the note on
+// GearTrain): it adds coefficient·φ to the deflection along the line of action, and the mesh
+// puts −(coefficient + μ·σ·friction_arm)·F on this degree of freedom.
+struct MeshTerm
+{
+  unsigned int dof = 0;
+  double coefficient = 0.;  // [m] signed base radius (the carrier: minus the sum of the gears')
+  double friction_arm = 0.; // [m] signed friction arm (the carrier: minus the gears' sum)
 };
 
 struct Mesh
@@ -59,13 +70,35 @@ struct Mesh
   double driver_friction_arm = 0.;  // [m] r_f of the driver
   double driven_friction_arm = 0.;  // [m] r_f of the driven gear
   double initial_position = 0.;     // [base pitches] mesh position at t = 0 (holds the phase)
+  // General form (planetary trains): when not empty these terms replace driver/driven, base
+  // radii and friction arms, and the mesh position advances position_ratio·(input speed)
+  // [base pitches per second per rad/s]: z_a·|ω_a − ω_frame|/(2π·ω_input).
+  std::vector<MeshTerm> terms;
+  double position_ratio = 0.;
 };
 
+// A member that the kinematics holds still but that hangs on a torsional spring and damper to
+// the housing (the bi-planetary paper's variant II: a flexibly suspended ring).
+struct Suspension
+{
+  unsigned int dof = 0;
+  double stiffness = 0.; // [N·m/rad]
+  double damping = 0.;   // [N·m·s/rad]
+};
+
+// Two forms. Tree form (the split path): meshes join two gears each, angles φ_i in each gear's
+// running direction, speeds follow from the base radii, n − 1 meshes for n gears. General form
+// (any train from kinematics::GearTrainSpec, see train_model.h): `speed_ratios` is not empty,
+// angles are absolute (one sense of rotation for all), meshes carry `terms` and may close
+// loops; a static solution exists through the mesh stiffness (statically indeterminate).
 struct GearTrain
 {
   std::vector<Gear> gears;
   std::vector<Mesh> meshes;
   double input_speed = 0.; // [rad/s] nominal speed of gear 0
+  // General form: nominal speed of each degree of freedom per unit input speed [-].
+  std::vector<double> speed_ratios;
+  std::vector<Suspension> suspensions;
 };
 
 // Phase of a mesh relative to another mesh of the same driver [base pitches, in [0, 1)], from
@@ -99,6 +132,14 @@ struct ModalProperties
 {
   std::vector<double> natural_frequencies; // [Hz] undamped, rigid mode excluded, ascending
   std::vector<double> decay_rates;         // [1/s] −Re λ of the damped modes, ascending
+};
+
+// Undamped modes at mean stiffness without friction (K symmetric): K·v = ω²·M·v, v mass
+// normalised (vᵀ·M·v = 1), ascending, the rigid mode (ω ≈ 0) included when the train has one.
+struct ModeShapes
+{
+  Eigen::VectorXd frequencies; // [Hz]
+  Eigen::MatrixXd shapes;      // [rad/sqrt(kg·m²)] one column per mode
 };
 
 class TorsionalModel
@@ -137,6 +178,10 @@ public:
 
   // Undamped natural frequencies and decay rates with every mesh at its mean stiffness.
   ModalProperties modal_properties() const;
+  ModeShapes mode_shapes() const;
+  // Stiffness matrix at mean mesh stiffness without friction [N·m/rad].
+  Eigen::MatrixXd mean_stiffness_matrix() const;
+  bool general_form() const { return general; }
   // Highest undamped natural frequency [rad/s] with every mesh at its largest stiffness.
   double highest_natural_frequency() const;
   // Largest stable classical RK4 step [s]: the largest h for which h·λ stays inside the RK4
@@ -150,14 +195,21 @@ public:
   // Total mechanical energy minus the work potential of the (constant) external torques [J]:
   // conserved when there is no damping, no friction and constant stiffness.
   double total_energy(double time, const double* angle, const double* velocity) const;
+  // Strain energy of the meshes and suspensions [J].
+  double strain_energy(double time, const double* angle) const;
   // Rigid-mode vector: gear angles of a rigid rotation with gear 0 turning by 1 rad.
   const Eigen::VectorXd& rigid_mode() const { return rigid; }
 
 private:
   struct CompiledMesh
   {
-    unsigned int a, b;
-    double ra, rb, rfa, rfb, damping, mu;
+    // δ = Σ c[i]·φ[dof[i]]; torque on dof[i]: −(c[i] + μσ·arm[i])·F. Two terms for a pair,
+    // three with a moving frame (carrier).
+    unsigned int n_terms = 0;
+    unsigned int dof[3] = {0, 0, 0};
+    double c[3] = {0., 0., 0.};
+    double arm[3] = {0., 0., 0.};
+    double damping, mu;
     double contact_ratio, approach_ratio;
     double position_rate, initial_position;
     MeshStiffness stiffness;
@@ -168,6 +220,12 @@ private:
   std::vector<double> solve_static(const std::vector<double>& sigma, double& rigid_acceleration,
                                    std::vector<double>& angle_out) const;
   double rk4_limit_for(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C) const;
+  double deflection(const CompiledMesh& mesh, const double* angle) const;
+  std::vector<double> solve_static_general(const std::vector<double>& sigma,
+                                           double& rigid_acceleration,
+                                           std::vector<double>& angle_out) const;
+  void compile_meshes(const GearTrain& train);
+  void validate_mesh(const GearTrain& train, unsigned int m) const;
 
   GearTrain description;
   unsigned int n_gears = 0;
@@ -178,5 +236,10 @@ private:
   Eigen::VectorXd torques;
   Eigen::VectorXd rigid;
   std::vector<double> nominal_forces;
+  std::vector<Suspension> suspensions;
+  bool general = false;
+  // Mesh states at cached_time (acceleration() only; a model is used by one thread at a time).
+  mutable double cached_time = std::numeric_limits<double>::quiet_NaN();
+  mutable std::vector<MeshStiffnessState> cached_states;
 };
 } // namespace gearstiff::dynamics

@@ -139,6 +139,36 @@ double pitch_radius(const TrainMember& gear)
   return 0.5 * gear.module * gear.teeth;
 }
 
+// Every gear of a mesh either rides on the mesh's frame (a planet of that frame) or shares the
+// frame's own axis (it rides where the frame rides: both on the housing, or both on the same
+// carrier). Anything else puts the gear's axis somewhere the frame cannot hold it, and its
+// copies would be lost (issue 11: "4: 1*9" with meshes on H). Copies need a carrier to ride on.
+void check_mesh_frames(const GearTrainSpec& spec, const TrainSolution& solution)
+{
+  auto carrier_of = [&](const std::string& name)
+  { return name == housing_name ? std::string() : member_of(spec, solution, name).carrier; };
+  for (const TrainMesh& mesh : spec.meshes)
+    for (const std::string& name : {mesh.gear_a, mesh.gear_b})
+    {
+      const std::string& carrier = member_of(spec, solution, name).carrier;
+      if (carrier == mesh.frame || carrier == carrier_of(mesh.frame))
+        continue;
+      const std::string frame_axis =
+          carrier_of(mesh.frame).empty() ? "the housing" : carrier_of(mesh.frame);
+      throw InputError("Train/planets",
+                       "gear '" + name + "' rides on " +
+                           (carrier.empty() ? std::string("the housing") : "'" + carrier + "'") +
+                           " but its mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" + mesh.frame +
+                           " needs it on the frame '" + mesh.frame + "' (a planet) or on " +
+                           frame_axis + " (coaxial with the frame)");
+    }
+  for (const TrainMember& member : spec.members)
+    if (member.copies > 1 && member.carrier.empty())
+      throw InputError("Train/planets", "member '" + member.name + "' has " +
+                                            std::to_string(member.copies) +
+                                            " copies but no carrier to ride on");
+}
+
 // Checks names, tooth counts and module agreement; fills orbit radii and mesh copies.
 void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
 {
@@ -216,6 +246,8 @@ void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
       throw InputError("Train/modules",
                        "gears " + a.name + " and " + b.name + " mesh but have different modules");
   }
+
+  check_mesh_frames(spec, solution);
 
   // Orbit radii: a planet's axis sits at the centre distance from its central mate, which
   // shares the frame's axis. Two meshes giving two radii mean the train does not close.

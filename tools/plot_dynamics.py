@@ -5,6 +5,8 @@
     plot_dynamics.py kv        SERIES.csv START,END OUT.png   K_v(t) with the steady-state window
     plot_dynamics.py stiffness SERIES.csv START,END OUT.png   mesh stiffness k(t)
     plot_dynamics.py resonance SWEEP.csv OUT.png              K_v max and ISO K_v against speed
+    plot_dynamics.py campbell  CAMPBELL.csv MODES.csv MIN,MAX OUT.png
+                                      mesh-frequency orders against the natural frequencies
 
 CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
 """
@@ -65,9 +67,16 @@ def resonance(path, png):
     fig, ax = plt.subplots(figsize=(9, 4.5))
     ax.plot(speed, c["kv_max [-]"], "o-", ms=3, lw=1, label="K_v max (simulated)")
     ax.plot(speed, c["kv_iso [-]"], "--", lw=1, label="K_v ISO 6336-1 method B")
-    unstable = [s for s, u in zip(speed, c["unstable [-]"]) if u > 0.5]
+    status = c["status [-]"]
+    unstable = [s for s, u in zip(speed, status) if round(u) == 1]
     if unstable:
         ax.plot(unstable, [1.0] * len(unstable), "rx", label="linear model diverges")
+    # Status 2/3: the linear model's K_v exists but is not a valid result; shown apart.
+    invalid = [(s, k) for s, u, k in zip(speed, status, c["kv_max_linear [-]"])
+               if round(u) in (2, 3)]
+    if invalid:
+        ax.plot([s for s, _ in invalid], [1.0] * len(invalid), "m+",
+                label="contact loss / not steady (no valid K_v)")
     # Near a parametric instability K_v can reach tens; clip so the chart stays readable and
     # mark the clipped points at the top edge.
     finite = sorted(k for k in c["kv_max [-]"] if k == k)
@@ -86,10 +95,42 @@ def resonance(path, png):
     fig.savefig(png, dpi=120)
 
 
+def campbell(path, modes_path, speeds, png):
+    """Orders 1-3 of every mesh frequency over the input speed, natural frequencies as
+    horizontal lines; a crossing is a speed where a mesh harmonic can excite a mode."""
+    _, c = read(path)
+    _, modes = read(modes_path)
+    low, high = (float(x) for x in speeds.split(","))
+    fig, ax = plt.subplots(figsize=(9, 5))
+    top = 0.0
+    for i, (mesh, rate) in enumerate(zip(c["mesh [-]"], c["mesh_frequency_per_rpm [Hz/rpm]"])):
+        for order, style in ((1, "-"), (2, "--"), (3, ":")):
+            ax.plot([low, high], [order * rate * low, order * rate * high], style,
+                    color=f"C{i % 10}", lw=1,
+                    label=f"mesh {int(mesh)} x{order}" if order == 1 else None)
+            top = max(top, order * rate * high)
+    frequencies = [f for f in modes["frequency [Hz]"] if f == f and f > 0]
+    for f in frequencies:
+        ax.axhline(f, color="0.5", lw=0.6)
+    if frequencies:
+        top = 1.1 * max(frequencies)
+    ax.set_xlim(low, high)
+    ax.set_ylim(0, top)
+    ax.set_xlabel("input speed [rpm]")
+    ax.set_ylabel("frequency [Hz]")
+    ax.set_title("Campbell chart: mesh orders 1 (solid), 2 (dashed), 3 (dotted); modes (grey)")
+    ax.grid(True, lw=0.3)
+    ax.legend(loc="upper left", fontsize=7)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
 def main(argv):
     kind = argv[1]
     if kind == "resonance":
         resonance(argv[2], argv[-1])
+    elif kind == "campbell":
+        campbell(argv[2], argv[3], argv[4], argv[-1])
     else:
         time_series(kind, argv[2], argv[3], argv[-1])
 

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""Bi-planetary study (issue 15): ring 7 fastened to the frame (variant I) against ring 7 hung on
+a torsional spring and damper (variant II), with the train model of `gearstiff dynamics`.
+
+    python3 bench/dynamics_biplanetary_study.py [gearstiff] [points]   (defaults: build, 40)
+
+Input: bench/dynamics_biplanetary.prm (stated assumptions: steel blanks, Cai stiffness
+280 N/µm per mesh, c_g = 100 N·s/m). For each variant: natural frequencies, K_v max of every
+mesh at 1470 rpm, and a K_v speed sweep; writes docs/biplanetary_dynamics.csv (sweeps),
+docs/biplanetary_resonance.png (the resonance charts side by side) and prints the Markdown
+tables used in docs/biplanetary_dynamics.md. Run it holding the build lock.
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
+points = int(sys.argv[2]) if len(sys.argv) > 2 else 40
+prm = os.path.join(root, "bench", "dynamics_biplanetary.prm")
+damping = 50.0  # N·m·s/rad of the suspension
+variants = [("I: ring 7 fixed", None)] + [
+    (f"II: k_s = {k:.0e} N·m/rad", k) for k in (1e5, 1e6, 1e7)]
+
+
+def run(*settings):
+    args = [binary, "dynamics", prm, "--json"]
+    for s in settings:
+        args += ["--set", s]
+    out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
+    return json.loads(out[out.index("{"):])
+
+
+def table(result, name):
+    t = result["tables"][name]
+    return [dict(zip(t["columns"], row)) for row in t["rows"]]
+
+
+results = []
+for label, k in variants:
+    extra = [] if k is None else [f"Train/suspended members=7: {k} {damping}"]
+    single = run(*extra)
+    sweep = run(*extra, f"Speed sweep/points={points}", "Speed sweep/minimum speed=100",
+                "Speed sweep/maximum speed=6000")
+    results.append((label, single, sweep))
+
+print("| variant | natural frequencies [Hz] |")
+print("|---|---|")
+for label, single, _ in results:
+    f = [r["frequency"] for r in table(single, "dynamics_modes")]
+    print(f"| {label} | " + ", ".join(f"{x:.0f}" for x in f) + " |")
+
+print("\n| variant | " + " | ".join(
+    f"K_v max {m}" for m in ("1-2", "3-4", "4-5", "6-7")) + " | sweep: diverged / contact loss / not steady |")
+print("|---|---|---|---|---|---|")
+for label, single, sweep in results:
+    v = single["values"]
+    kv = {}
+    for key, item in v.items():
+        if key.endswith("_kv_max") and key.startswith("mesh"):
+            pass
+    rows = table(single, "dynamics_meshes")
+    names = [t for t in single["text"] if t.endswith(" stiffness")]
+    by_mesh = {}
+    for name, row in zip(names, rows):
+        base = name.split("#")[0].replace(" stiffness", "")
+        by_mesh[base] = max(by_mesh.get(base, 0.0), row["kv_max"] or 0.0)
+    s = sweep["values"]
+    print(f"| {label} | " + " | ".join(f"{by_mesh.get(m, float('nan')):.3f}"
+                                        for m in ("1-2", "3-4", "4-5", "6-7"))
+          + f" | {s['sweep_unstable']['value']:.0f} / {s['sweep_contact_loss']['value']:.0f} / "
+            f"{s['sweep_not_steady']['value']:.0f} |")
+
+os.makedirs(os.path.join(root, "docs"), exist_ok=True)
+with open(os.path.join(root, "docs", "biplanetary_dynamics.csv"), "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(["variant", "input_speed [rpm]", "kv_max [-]", "status [-]", "kv_max_linear [-]"])
+    for label, _, sweep in results:
+        for r in table(sweep, "dynamics_speed_sweep"):
+            w.writerow([label, r["input_speed"], r["kv_max"], r["status"], r["kv_max_linear"]])
+
+fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
+for ax, (label, _, sweep) in zip(axes, (results[0], results[2])):
+    rows = table(sweep, "dynamics_speed_sweep")
+    speed = [r["input_speed"] for r in rows]
+    ax.plot(speed, [r["kv_max"] if r["kv_max"] is not None else float("nan") for r in rows],
+            "o-", ms=3, lw=1, label="K_v max (valid)")
+    bad = [(r["input_speed"], r["status"]) for r in rows if r["status"] != 0]
+    if bad:
+        ax.plot([b[0] for b in bad], [1.0] * len(bad), "rx", label="no valid K_v (status 1-3)")
+    ax.set_title(label)
+    ax.set_xlabel("input speed n1 [rpm]")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+axes[0].set_ylabel("K_v max over all meshes [-]")
+fig.tight_layout()
+fig.savefig(os.path.join(root, "docs", "biplanetary_resonance.png"), dpi=110)
+print("\nwrote docs/biplanetary_dynamics.csv, docs/biplanetary_resonance.png")

@@ -1,0 +1,95 @@
+// The purely rotational lumped model of any gear train described for the kinematics module
+// (kinematics::GearTrainSpec: members, meshes a-b/frame, connections, fixed members, planets with
+// copies, one input, an output), after Lin & Parker (1999) generalised to nested carriers; the
+// derivation and the mesh phasing (Parker & Lin 2004) are in dynamics/README.md.
+//
+//   * one rotation per rigid body (members joined by connections) and per copy of it: a planet
+//     with N copies is N degrees of freedom; bodies holding a fixed member are not degrees of
+//     freedom unless suspended on a torsional spring and damper (Suspension);
+//   * angles are absolute, one sense of rotation for all, relative to the nominal rotation;
+//   * a mesh a-b on frame c (a carrier, or the housing) deflects along its line of action in
+//     the frame's rotating reference: δ = r_a·(φ_a − φ_c) + r_b·(φ_b − φ_c), with signed base
+//     radii r = m·z·cos α/2 (z < 0 for an internal gear) — the Willis relation
+//     z_a(ω_a − ω_c) + z_b(ω_b − ω_c) = 0 of gear_train.h read for small rotations. Lin &
+//     Parker's purely rotational sun–planet and ring–planet deflections are the special cases
+//     (their carrier term (r_s + r_p)·θ_c = R_c·cos α·θ_c).
+//   * by virtual work the mesh force F puts −(∂δ/∂φ_i)·F on each rotation (and the friction
+//     terms of torsional_model.h on the two gears, its reaction on the frame);
+//   * the mass m of a planet copy orbiting at radius R adds m·R² to its carrier (per level of
+//     the carrier chain), as in Lin & Parker's purely rotational carrier equation; so the
+//     kinetic energy of the nominal rotation is ½·J*·ω_in² with kinematics' reduced inertia J*.
+#pragma once
+
+#include "dynamics/mesh_stiffness.h"
+#include "dynamics/torsional_model.h"
+#include "kinematics/gear_train.h"
+
+#include <string>
+#include <vector>
+
+namespace gearstiff::dynamics
+{
+// What a mesh of the Train description needs beyond its tooth counts (one per Train mesh, in
+// the order of Train/meshes; every copy of it gets the same values).
+struct TrainMeshDynamics
+{
+  MeshStiffness stiffness;
+  double damping = 0.;              // [N·s/m]
+  double friction_coefficient = 0.; // [-]
+  double driver_friction_arm = 0.;  // [m] of the gear that drives in the frame's reference
+  double driven_friction_arm = 0.;  // [m]
+};
+
+struct TrainSuspension
+{
+  std::string member;    // a fixed member
+  double stiffness = 0.; // [N·m/rad]
+  double damping = 0.;   // [N·m·s/rad]
+};
+
+struct TrainDynamicsInput
+{
+  kinematics::GearTrainSpec spec; // inertias and masses per member copy inside
+  double input_torque = 0.;       // [N·m] on the (single) input; the output takes the load
+  double pressure_angle = 20. * M_PI / 180.; // [rad] standard teeth (x = 0, h_a* = 1)
+  std::vector<TrainMeshDynamics> meshes;     // one per spec mesh
+  std::vector<TrainSuspension> suspensions;
+  double initial_position = 0.; // [base pitches] added to every mesh phase
+  // Names for error messages: the list parameters of the parameter file.
+  std::string mesh_section = "Train mesh"; // + " n" for mesh n
+};
+
+struct TrainModel
+{
+  GearTrain train;                              // general form, DOF 0 = the input
+  std::vector<std::string> dof_names;           // "1", "2#3" (member, copy), ...
+  std::vector<std::string> dof_body;            // representative member of each DOF's body
+  std::vector<unsigned int> spec_mesh;          // per model mesh: index of its Train mesh
+  std::vector<unsigned int> mesh_copy;          // per model mesh: copy number (0-based)
+  std::vector<std::string> notes;               // assembly spacing, assumptions
+  std::vector<double> spec_mesh_contact_ratio;  // [-] per Train mesh
+  std::vector<double> spec_mesh_approach_ratio; // [-] per Train mesh (driver's side)
+  double reduced_inertia = 0.;                  // [kg·m²] kinematics' J* reduced to the input
+};
+
+// Builds the model; InputError naming the Train parameter (or "<mesh_section> n/...") for
+// trains the kinematics rejects, missing modules, zero inertia, copies that do not divide.
+TrainModel build_train_model(const TrainDynamicsInput& input);
+
+// Standard-tooth (x = 0, h_a* = 1) transverse contact ratio and approach ratio ε_f (start of
+// active contact to the pitch point, in base pitches) of gears with signed tooth counts
+// (negative: internal) and module m [m]; `driver` is 0 for the first gear, 1 for the second.
+struct StandardMesh
+{
+  double contact_ratio = 0.;
+  double approach_ratio = 0.;
+};
+StandardMesh standard_mesh(int teeth_a, int teeth_b, double module, double pressure_angle,
+                           unsigned int driver);
+
+// Share of each group's kinetic energy in every mode [-]: rows = modes of model.mode_shapes(),
+// columns = groups; group_of_dof[i] is the group of DOF i.
+Eigen::MatrixXd modal_energy_distribution(const TorsionalModel& model,
+                                          const std::vector<unsigned int>& group_of_dof,
+                                          unsigned int n_groups);
+} // namespace gearstiff::dynamics
