@@ -226,14 +226,11 @@ def main():
     settings = scene_settings(LADDER_SIZES if args.ladder else SIZES, args.size_scale)
     os.makedirs(args.work, exist_ok=True)
 
-    kinematics = json.loads(subprocess.run([args.gearstiff, "kinematics", "--json"], check=True,
-                                           capture_output=True, text=True).stdout)
-    mesh = json.loads(subprocess.run([args.gearstiff, "mesh", "--json"] +
-                                     sum([["--set", s] for s in settings], []), check=True,
-                                     capture_output=True, text=True).stdout)
-    r_b1 = 0.5e-3 * value(kinematics.get("values", kinematics), "pinion_base_diameter")
-    root = 1e-3 * value(mesh.get("values", mesh), "pinion_root_radius")
-    form = 0.5e-3 * value(kinematics.get("values", kinematics), "pinion_form_diameter")
+    pair = json.loads(subprocess.run([args.gearstiff, "gear-pair", "--json"], check=True,
+                                     capture_output=True, text=True).stdout)["values"]
+    r_b1 = 1e-3 * value(pair, "pinion_base_radius")
+    root = 0.5e-3 * value(pair, "pinion_root_diameter")
+    form = 0.5e-3 * value(pair, "pinion_form_diameter")
     torque = 49.4  # N·m, the default T1 of both commands (gear-data.md §1)
 
     rows, headline = [], None
