@@ -237,7 +237,7 @@ template <int dim>
 class DeckParser
 {
 public:
-  DeckParser(const std::string& parameter) : parameter(parameter) {}
+  explicit DeckParser(const std::string& parameter) : parameter(parameter) {}
 
   Deck parse(const std::vector<DeckLine>& lines)
   {

@@ -269,9 +269,8 @@ void write_supports(std::ostream& out, const SceneInfo& info, const AbaqusDeckSp
   const unsigned int in_plane_dofs = layout.slice || info.dimension == 3 ? 3 : 2;
   out << "*BOUNDARY" << parameters << "\n"
       << boundary_name(info, spec.fixed_bore, "") << "_NODES, 1, " << in_plane_dofs << "\n"
-      << "DRIVEN_REF, 1, " << in_plane_dofs << "\n";
-  if (in_plane_dofs == 3)
-    out << "DRIVEN_ROT, 1, 2\n";
+      << "DRIVEN_REF, 1, " << in_plane_dofs << "\n"
+      << "DRIVEN_ROT, 1, 2\n"; // ccx's rigid bodies are 3D, also over CPE4/CPS4
   if (layout.slice)
     out << "PLANE_STRAIN, 3, 3\n";
 }

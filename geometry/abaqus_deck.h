@@ -11,7 +11,8 @@
 // (ccx manual, "Four-node plane strain element"), but with generated nodes tied by MPCs, and its
 // rigid bodies, contact surfaces and printed node results then refer to nodes that are not in
 // the deck; writing the slice makes the solved model the written one. CPE4/CPS4 are available
-// (Element2D::plane_strain/plane_stress) for other solvers and for re-import into gearstiff.
+// (Element2D::plane_strain/plane_stress) for other solvers and for re-import into gearstiff;
+// ccx 2.20 did not converge with them once the rigid bore was released (docs/calculix.md).
 //
 // Names. A physical group "pinion body" becomes the set PINION_BODY (upper case, spaces to '_');
 // fem/abaqus_reader.h maps them back. Units: those of the mesh (SI: m, N, Pa, N·m).
