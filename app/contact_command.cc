@@ -9,8 +9,9 @@
 #include "app/fe_contact_parameters.h"
 #include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
-#include "fem/mesh.h"
 #include "errors/errors.h"
+#include "fem/abaqus_reader.h"
+#include "fem/mesh.h"
 
 #include <cmath>
 #include <deal.II/base/utilities.h>
@@ -73,7 +74,8 @@ void declare_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Mesh");
   prm.declare_entry("File", "", Patterns::Anything(),
-                    "gmsh .msh of quadrilaterals (2D) or hexahedra (3D) with physical groups; "
+                    "gmsh .msh of quadrilaterals (2D) or hexahedra (3D) with physical groups, or a "
+                    "CalculiX/Abaqus .inp (element sets and surfaces as the groups); "
                     "empty: the built-in Hertz case (groups 'upper', 'lower', 'upper contact', "
                     "'upper top', 'lower contact', 'lower bottom')");
   prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3),
@@ -121,6 +123,15 @@ void declare_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
+// The mesh of Mesh/File by its extension: ".inp" a CalculiX/Abaqus deck, anything else gmsh.
+template <int dim>
+fem::PhysicalNames read_mesh_file(const std::string& file, double unit, Triangulation<dim>& tria)
+{
+  if (std::filesystem::path(file).extension() == ".inp")
+    return fem::read_abaqus(file, unit, tria, "Mesh/File");
+  return fem::read_msh(file, unit, tria, "Mesh/File");
+}
+
 template <int dim>
 void run_contact(ParameterHandler& prm, CommandContext& context)
 {
@@ -158,7 +169,7 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
       names.faces["extrusion faces"] = contact::extrusion_faces;
   }
   else
-    names = fem::read_msh(mesh_file, unit, problem.system().triangulation(), "Mesh/File");
+    names = read_mesh_file<dim>(mesh_file, unit, problem.system().triangulation());
 
   auto face_id = [&](const std::string& name, const std::string& parameter)
   {

@@ -8,16 +8,19 @@
 //   gearstiff mesh --set "Mesh/dimension=3" --set "Mesh/layers=6" -o out
 //   gearstiff mesh --set "Scene/type=cylinders" -o out          Hertz verification scene
 //   gearstiff mesh --set "Scene/type=cycloid" -o out            Cyclo disc and rollers (§4)
+//   gearstiff mesh --set "Mesh/format=inp" -o out               out/scene.inp, a CalculiX/Abaqus
+//                                                               deck (geometry/abaqus_deck.h)
 //
 // Without -o the mesh is generated (all checks run, the report is complete) but not kept.
 #include "app/command.h"
 #include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
 #include "app/units.h"
+#include "errors/errors.h"
+#include "geometry/abaqus_deck.h"
 #include "geometry/scene_cycloid.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
-#include "errors/errors.h"
 
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
@@ -35,6 +38,26 @@ using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
 
 const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
+
+// The file format and the CalculiX/Abaqus deck's own choices (the scene supplies the rest).
+void declare_deck_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("format", "msh", Selection("msh|inp|msh and inp"),
+                    "msh: the gmsh mesh (Scene/mesh file); inp: a CalculiX/Abaqus input deck of "
+                    "the gear-pair scene of the same name ending in .inp, solvable by `ccx -i` "
+                    "as it is (docs/calculix.md); msh and inp: both");
+  prm.leave_subsection();
+  prm.enter_subsection("Abaqus deck");
+  prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
+                    "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
+                    "best); CPE4/CPS4: plane strain/stress quadrilaterals");
+  prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
+                    "Coulomb μ between the flanks [-] (gear-data.md §1: 0.01)");
+  prm.declare_entry("penalty factor", "50", Double(1e-3),
+                    "contact penalty slope K = factor · E / h_c [-]");
+  prm.leave_subsection();
+}
 
 void declare_parameters(ParameterHandler& prm)
 {
@@ -112,6 +135,7 @@ void declare_parameters(ParameterHandler& prm)
 
   // The mesh sizes of all three scene types.
   declare_scene_mesh_parameters(prm, gear.mesh);
+  declare_deck_parameters(prm);
 }
 
 geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
@@ -237,6 +261,67 @@ void report_scene(const geometry::SceneInfo& info, const std::string& type, Repo
                    double(c.first_feature), double(c.second_feature)});
 }
 
+struct DeckRequest
+{
+  bool write = false;   // write the CalculiX/Abaqus deck
+  bool keep_msh = true; // keep the .msh in the output folder
+  geometry::Element2D element_2d = geometry::Element2D::slice;
+  double friction = 0.;       // -
+  double penalty_factor = 0.; // -
+};
+
+DeckRequest parse_deck_request(ParameterHandler& prm, const std::string& type)
+{
+  DeckRequest request;
+  prm.enter_subsection("Mesh");
+  const std::string format = prm.get("format");
+  prm.leave_subsection();
+  request.write = format != "msh";
+  request.keep_msh = format != "inp";
+  if (request.write && type != "gear pair")
+    throw InputError("Mesh/format", "the inp deck is written for the gear-pair scene only");
+  prm.enter_subsection("Abaqus deck");
+  request.element_2d =
+      geometry::parse_element_2d(prm.get("2D elements"), "Abaqus deck/2D elements");
+  request.friction = prm.get_double("friction coefficient");
+  request.penalty_factor = prm.get_double("penalty factor");
+  prm.leave_subsection();
+  return request;
+}
+
+// The deck next to (or instead of) the .msh; without -o it is written to scratch and removed,
+// so every check of the export still runs.
+void write_deck(const geometry::GearPairSceneSpec& spec, const geometry::SceneInfo& info,
+                const DeckRequest& request, const std::string& msh_name, CommandContext& context)
+{
+  geometry::AbaqusDeckSpec deck =
+      geometry::gear_pair_deck_spec(spec, info, request.friction, request.penalty_factor);
+  deck.element_2d = request.element_2d;
+  const std::string name = std::filesystem::path(msh_name).replace_extension(".inp").string();
+  if (context.writes_files())
+  {
+    geometry::write_abaqus_deck(info, deck,
+                                context.output_file(name, "CalculiX/Abaqus input deck (ccx -i)"));
+    context.report.add_value("deck_penalty", deck.penalty, "Pa/m",
+                             "contact penalty slope of the deck");
+    context.report.add_value("deck_closing_rotation", deck.closing_rotation * 1e6, "µrad",
+                             "rotation prescribed in the deck's first step");
+    return;
+  }
+  const std::filesystem::path scratch = std::filesystem::temp_directory_path() /
+                                        ("gearstiff-deck-" + std::to_string(getpid()) + ".inp");
+  try
+  {
+    geometry::write_abaqus_deck(info, deck, scratch.string());
+  }
+  catch (...)
+  {
+    std::filesystem::remove(scratch);
+    throw;
+  }
+  std::filesystem::remove(scratch);
+}
+
 void run(ParameterHandler& prm, CommandContext& context)
 {
   prm.enter_subsection("Scene");
@@ -246,6 +331,7 @@ void run(ParameterHandler& prm, CommandContext& context)
   if (file_name.empty() || file_name.find('/') != std::string::npos ||
       std::filesystem::path(file_name).extension() != ".msh")
     throw InputError("Scene/mesh file", "must be a plain file name ending in .msh");
+  const DeckRequest deck = parse_deck_request(prm, type);
 
   // Parse everything first: a bad parameter must stop the command before gmsh runs.
   const bool gear = type == "gear pair";
@@ -259,7 +345,7 @@ void run(ParameterHandler& prm, CommandContext& context)
 
   std::string path;
   std::filesystem::path scratch;
-  if (context.writes_files())
+  if (context.writes_files() && deck.keep_msh)
     path = context.output_file(file_name, "scene mesh (ASCII .msh 4.1, ids in summary.json)");
   else
   {
@@ -273,6 +359,8 @@ void run(ParameterHandler& prm, CommandContext& context)
     info = gear      ? geometry::write_gear_pair_scene(gear_spec, path)
            : cycloid ? geometry::write_cycloid_scene(cycloid_spec, path)
                      : geometry::write_cylinders_scene(cylinder_spec, path);
+    if (deck.write)
+      write_deck(gear_spec, info, deck, file_name, context);
   }
   catch (...)
   {

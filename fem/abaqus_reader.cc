@@ -1,0 +1,507 @@
+#include "fem/abaqus_reader.h"
+
+#include "errors/errors.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <deal.II/grid/grid_tools.h>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace gearstiff::fem
+{
+using namespace dealii;
+
+namespace
+{
+// *INCLUDE chains deeper than this are taken for a cycle.
+constexpr unsigned int max_include_depth = 20;
+
+// One logical line of the deck (continuation lines joined), with where it came from.
+struct DeckLine
+{
+  std::string text;
+  std::string file;
+  unsigned int number = 0; // 1-based line number in `file`
+  std::string where() const { return file + ":" + std::to_string(number); }
+};
+
+std::string upper(std::string text)
+{
+  for (auto& c : text)
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string trim(const std::string& text)
+{
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos)
+    return "";
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+std::vector<std::string> fields(const std::string& text)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, ','))
+    parts.push_back(trim(part));
+  if (!parts.empty() && parts.back().empty())
+    parts.pop_back();
+  return parts;
+}
+
+bool is_keyword(const std::string& text)
+{
+  return text.size() > 1 && text[0] == '*' && text[1] != '*';
+}
+
+// A keyword line: its name ("ELEMENT") and its parameters (upper-case keys; values as written).
+struct Keyword
+{
+  std::string name;
+  std::map<std::string, std::string> parameters;
+  DeckLine line;
+
+  std::string describe() const { return line.where() + ": *" + name; }
+  std::string get(const std::string& key) const
+  {
+    const auto found = parameters.find(key);
+    return found == parameters.end() ? "" : found->second;
+  }
+};
+
+Keyword parse_keyword(const DeckLine& line)
+{
+  Keyword keyword;
+  keyword.line = line;
+  const auto parts = fields(line.text.substr(1));
+  keyword.name = parts.empty() ? "" : upper(parts[0]);
+  for (std::size_t i = 1; i < parts.size(); ++i)
+  {
+    const auto equals = parts[i].find('=');
+    if (equals == std::string::npos)
+      keyword.parameters[upper(parts[i])] = "";
+    else
+      keyword.parameters[upper(trim(parts[i].substr(0, equals)))] =
+          trim(parts[i].substr(equals + 1));
+  }
+  return keyword;
+}
+
+// The deck's lines with *INCLUDEs expanded, comments and blank lines dropped, and data lines that
+// end in a comma joined with the next one.
+void read_lines(const std::string& file, const std::string& parameter, unsigned int depth,
+                std::vector<DeckLine>& lines)
+{
+  std::ifstream in(file);
+  std::string text;
+  unsigned int number = 0;
+  bool continued = false;
+  while (std::getline(in, text))
+  {
+    ++number;
+    text = trim(text);
+    if (text.empty() || text.rfind("**", 0) == 0)
+      continue;
+    if (continued && !is_keyword(text))
+      lines.back().text += " " + text;
+    else
+    {
+      const DeckLine line{text, file, number};
+      if (is_keyword(text) && upper(parse_keyword(line).name) == "INCLUDE")
+      {
+        const Keyword include = parse_keyword(line);
+        std::filesystem::path target = include.get("INPUT");
+        if (target.is_relative())
+          target = std::filesystem::path(file).parent_path() / target;
+        if (include.get("INPUT").empty() || !std::filesystem::is_regular_file(target))
+          throw InputError(parameter, include.describe() + ": cannot open INPUT='" +
+                                          include.get("INPUT") + "'");
+        if (depth >= max_include_depth)
+          throw InputError(parameter, include.describe() + ": nested more than " +
+                                          std::to_string(max_include_depth) + " deep (a cycle?)");
+        read_lines(target.string(), parameter, depth + 1, lines);
+        continued = false;
+        continue;
+      }
+      lines.push_back(line);
+    }
+    continued = !is_keyword(text) && lines.back().text.back() == ',';
+  }
+}
+
+long to_integer(const std::string& text, const Keyword& keyword, const DeckLine& line,
+                const std::string& parameter)
+{
+  try
+  {
+    std::size_t used = 0;
+    const long value = std::stol(text, &used);
+    if (used == text.size())
+      return value;
+  }
+  catch (const std::exception&)
+  {
+  }
+  throw InputError(parameter,
+                   line.where() + ": *" + keyword.name + ": '" + text + "' is not an integer");
+}
+
+double to_double(const std::string& text, const Keyword& keyword, const DeckLine& line,
+                 const std::string& parameter)
+{
+  try
+  {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size())
+      return value;
+  }
+  catch (const std::exception&)
+  {
+  }
+  throw InputError(parameter,
+                   line.where() + ": *" + keyword.name + ": '" + text + "' is not a number");
+}
+
+// Corner counts and dimension of the element types read.
+struct ElementType
+{
+  unsigned int dim;
+  unsigned int n_nodes;
+};
+
+const std::map<std::string, ElementType>& element_types()
+{
+  static const std::map<std::string, ElementType> types = {
+      {"CPE4", {2, 4}}, {"CPE4R", {2, 4}}, {"CPS4", {2, 4}}, {"CPS4R", {2, 4}},
+      {"C3D8", {3, 8}}, {"C3D8R", {3, 8}}, {"C3D8I", {3, 8}}};
+  return types;
+}
+
+// Abaqus faces as corner positions: 2D S1 = 1-2 ... S4 = 4-1; C3D8 S1 = 1-2-3-4, S2 = 5-8-7-6,
+// S3 = 1-5-6-2, S4 = 2-6-7-3, S5 = 3-7-8-4, S6 = 4-8-5-1.
+const std::vector<std::vector<unsigned int>>& element_faces(unsigned int dim)
+{
+  static const std::vector<std::vector<unsigned int>> quad = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  static const std::vector<std::vector<unsigned int>> hex = {
+      {0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}};
+  return dim == 2 ? quad : hex;
+}
+
+struct Element
+{
+  std::vector<long> nodes;
+  DeckLine line;
+};
+
+// A named group in the order it first appears; members resolved when the deck is complete.
+struct Group
+{
+  std::string name;
+  std::vector<long> elements;                       // element sets
+  std::vector<std::pair<long, unsigned int>> faces; // surfaces: element, 0-based face
+};
+
+// Everything the reader keeps of a deck.
+struct Deck
+{
+  std::map<long, std::array<double, 3>> nodes;
+  std::map<long, Element> elements;
+  std::vector<Group> element_sets, surfaces;
+  std::map<std::string, std::size_t> element_set_index, surface_index; // upper-case name
+
+  Group& group(std::vector<Group>& groups, std::map<std::string, std::size_t>& index,
+               const std::string& name)
+  {
+    const auto [found, added] = index.emplace(upper(name), groups.size());
+    if (added)
+      groups.push_back({name, {}, {}});
+    return groups[found->second];
+  }
+  const Group* element_set(const std::string& name) const
+  {
+    const auto found = element_set_index.find(upper(name));
+    return found == element_set_index.end() ? nullptr : &element_sets[found->second];
+  }
+};
+
+template <int dim>
+class DeckParser
+{
+public:
+  explicit DeckParser(const std::string& parameter) : parameter(parameter) {}
+
+  Deck parse(const std::vector<DeckLine>& lines)
+  {
+    Keyword keyword;
+    for (const auto& line : lines)
+      if (is_keyword(line.text))
+        keyword = start(parse_keyword(line));
+      else if (keyword.name == "NODE")
+        node(keyword, line);
+      else if (keyword.name == "ELEMENT")
+        element(keyword, line);
+      else if (keyword.name == "ELSET")
+        element_set(keyword, line);
+      else if (keyword.name == "SURFACE")
+        surface(keyword, line);
+    return std::move(deck);
+  }
+
+private:
+  [[noreturn]] void fail(const Keyword& keyword, const DeckLine& line,
+                         const std::string& reason) const
+  {
+    throw InputError(parameter, line.where() + ": *" + keyword.name + ": " + reason);
+  }
+
+  // Checks the keyword's parameters; a keyword whose data this reader skips becomes "".
+  Keyword start(Keyword keyword)
+  {
+    if (keyword.name == "ELEMENT")
+    {
+      const std::string type = upper(keyword.get("TYPE"));
+      const auto found = element_types().find(type);
+      if (found == element_types().end())
+        fail(keyword, keyword.line,
+             "TYPE=" + type + " is not supported (CPE4, CPE4R, CPS4, CPS4R, C3D8, C3D8R, C3D8I)");
+      if (found->second.dim != dim)
+        fail(keyword, keyword.line,
+             "TYPE=" + type + " is a " + std::to_string(found->second.dim) +
+                 "D element; the mesh is read as " + std::to_string(dim) + "D (Mesh/Dimension)");
+      element_nodes = found->second.n_nodes;
+      if (!keyword.get("ELSET").empty())
+        deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET"));
+    }
+    else if (keyword.name == "ELSET")
+    {
+      if (keyword.get("ELSET").empty())
+        fail(keyword, keyword.line, "the ELSET= parameter is missing");
+      deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET"));
+    }
+    else if (keyword.name == "SURFACE")
+    {
+      const std::string type = upper(keyword.get("TYPE"));
+      if (!type.empty() && type != "ELEMENT")
+        return Keyword(); // node-based surfaces are no face groups
+      if (keyword.get("NAME").empty())
+        fail(keyword, keyword.line, "the NAME= parameter is missing");
+      deck.group(deck.surfaces, deck.surface_index, keyword.get("NAME"));
+    }
+    else if (keyword.name != "NODE")
+      return Keyword();
+    return keyword;
+  }
+
+  void node(const Keyword& keyword, const DeckLine& line)
+  {
+    const auto parts = fields(line.text);
+    if (parts.size() < 1 + dim)
+      fail(keyword, line, "a node needs an id and " + std::to_string(dim) + " coordinates");
+    std::array<double, 3> x{};
+    for (unsigned int c = 0; c < dim; ++c)
+      x[c] = to_double(parts[1 + c], keyword, line, parameter);
+    deck.nodes[to_integer(parts[0], keyword, line, parameter)] = x;
+  }
+
+  void element(const Keyword& keyword, const DeckLine& line)
+  {
+    const auto parts = fields(line.text);
+    if (parts.size() != 1 + element_nodes)
+      fail(keyword, line,
+           "TYPE=" + upper(keyword.get("TYPE")) + " needs an id and " +
+               std::to_string(element_nodes) + " nodes, the line has " +
+               std::to_string(parts.size()) + " entries");
+    Element element;
+    element.line = line;
+    for (unsigned int n = 0; n < element_nodes; ++n)
+      element.nodes.push_back(to_integer(parts[1 + n], keyword, line, parameter));
+    const long id = to_integer(parts[0], keyword, line, parameter);
+    deck.elements[id] = element;
+    if (!keyword.get("ELSET").empty())
+      deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET"))
+          .elements.push_back(id);
+  }
+
+  void element_set(const Keyword& keyword, const DeckLine& line)
+  {
+    const auto parts = fields(line.text);
+    std::vector<long> members;
+    if (keyword.parameters.count("GENERATE"))
+    {
+      if (parts.size() < 2 || parts.size() > 3)
+        fail(keyword, line, "GENERATE needs 'first, last[, step]'");
+      const long first = to_integer(parts[0], keyword, line, parameter);
+      const long last = to_integer(parts[1], keyword, line, parameter);
+      const long step = parts.size() == 3 ? to_integer(parts[2], keyword, line, parameter) : 1;
+      if (step < 1 || last < first)
+        fail(keyword, line, "GENERATE needs first <= last and a positive step");
+      for (long id = first; id <= last; id += step)
+        members.push_back(id);
+    }
+    else
+      for (const auto& part : parts)
+      {
+        if (!part.empty() && (std::isdigit(static_cast<unsigned char>(part[0])) || part[0] == '-'))
+          members.push_back(to_integer(part, keyword, line, parameter));
+        else if (const Group* set = deck.element_set(part))
+          members.insert(members.end(), set->elements.begin(), set->elements.end());
+        else
+          fail(keyword, line, "element set '" + part + "' is not defined");
+      }
+    for (const long id : members)
+      if (deck.elements.count(id) == 0)
+        fail(keyword, line, "element " + std::to_string(id) + " is not defined");
+    auto& group = deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET"));
+    group.elements.insert(group.elements.end(), members.begin(), members.end());
+  }
+
+  void surface(const Keyword& keyword, const DeckLine& line)
+  {
+    const auto parts = fields(line.text);
+    const std::string label = parts.size() == 2 ? upper(parts[1]) : "";
+    const unsigned int n_faces = element_faces(dim).size();
+    unsigned int face = 0;
+    if (label.size() == 2 && label[0] == 'S' && label[1] >= '1' && label[1] < char('1' + n_faces))
+      face = label[1] - '1';
+    else
+      fail(keyword, line,
+           "expected 'element or element set, S1..S" + std::to_string(n_faces) + "'");
+    if (parts[0].empty())
+      fail(keyword, line, "the element or element set is missing");
+    std::vector<long> members;
+    if (std::isdigit(static_cast<unsigned char>(parts[0][0])))
+      members.push_back(to_integer(parts[0], keyword, line, parameter));
+    else if (const Group* set = deck.element_set(parts[0]))
+      members = set->elements;
+    else
+      fail(keyword, line, "element set '" + parts[0] + "' is not defined");
+    auto& group = deck.group(deck.surfaces, deck.surface_index, keyword.get("NAME"));
+    for (const long id : members)
+    {
+      if (deck.elements.count(id) == 0)
+        fail(keyword, line, "element " + std::to_string(id) + " is not defined");
+      group.faces.emplace_back(id, face);
+    }
+  }
+
+  std::string parameter;
+  unsigned int element_nodes = 0;
+  Deck deck;
+};
+
+// Abaqus corner order (counter-clockwise; hexahedron bottom then top) to deal.II's
+// lexicographic one.
+std::vector<unsigned int> lexicographic(unsigned int dim)
+{
+  if (dim == 2)
+    return {0, 1, 3, 2};
+  return {0, 1, 3, 2, 4, 5, 7, 6};
+}
+
+template <int dim>
+void build_triangulation(const Deck& deck, const double scale, Triangulation<dim>& tria,
+                         const std::string& parameter, PhysicalNames& names)
+{
+  std::map<long, types::material_id> material;
+  for (std::size_t s = deck.element_sets.size(); s-- > 0;) // the first set listing a cell wins
+    for (const long id : deck.element_sets[s].elements)
+      material[id] = static_cast<types::material_id>(s + 1);
+  for (std::size_t s = 0; s < deck.element_sets.size(); ++s)
+    names.cells[group_name_from_abaqus(deck.element_sets[s].name)] = s + 1;
+
+  std::map<long, unsigned int> vertex_of_node;
+  std::vector<Point<dim>> vertices;
+  std::vector<CellData<dim>> cells;
+  const auto order = lexicographic(dim);
+  const auto vertex = [&](long node, const Element& element)
+  {
+    const auto [found, added] = vertex_of_node.emplace(node, vertices.size());
+    if (added)
+    {
+      const auto x = deck.nodes.find(node);
+      if (x == deck.nodes.end())
+        throw InputError(parameter, element.line.where() + ": *ELEMENT: node " +
+                                        std::to_string(node) + " is not defined");
+      Point<dim> p;
+      for (unsigned int c = 0; c < dim; ++c)
+        p[c] = scale * x->second[c];
+      vertices.push_back(p);
+    }
+    return found->second;
+  };
+  for (const auto& [id, element] : deck.elements)
+  {
+    CellData<dim> cell(order.size());
+    for (unsigned int v = 0; v < order.size(); ++v)
+      cell.vertices[v] = vertex(element.nodes[order[v]], element);
+    const auto found = material.find(id);
+    cell.material_id = found == material.end() ? 0 : found->second;
+    cells.push_back(cell);
+  }
+
+  SubCellData faces;
+  for (std::size_t s = 0; s < deck.surfaces.size(); ++s)
+  {
+    names.faces[group_name_from_abaqus(deck.surfaces[s].name)] = s + 1;
+    for (const auto& [id, face] : deck.surfaces[s].faces)
+    {
+      const Element& element = deck.elements.at(id);
+      const auto& corners = element_faces(dim)[face];
+      CellData<dim - 1> data(corners.size());
+      for (unsigned int v = 0; v < corners.size(); ++v)
+        data.vertices[v] = vertex_of_node.at(element.nodes[corners[v]]);
+      if constexpr (dim == 3)
+        std::swap(data.vertices[2], data.vertices[3]); // face corners in lexicographic order
+      data.boundary_id = static_cast<types::boundary_id>(s + 1);
+      if constexpr (dim == 2)
+        faces.boundary_lines.push_back(data);
+      else
+        faces.boundary_quads.push_back(data);
+    }
+  }
+  GridTools::invert_all_negative_measure_cells(vertices, cells);
+  GridTools::consistently_order_cells(cells);
+  Triangulation<dim> serial;
+  serial.create_triangulation(vertices, cells, faces);
+  join_bodies<dim>({&serial}, tria);
+}
+} // namespace
+
+std::string group_name_from_abaqus(const std::string& set_name)
+{
+  std::string name = set_name;
+  for (auto& c : name)
+    c = c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name;
+}
+
+template <int dim>
+PhysicalNames read_abaqus(const std::string& file_name, const double scale,
+                          Triangulation<dim>& tria, const std::string& parameter)
+{
+  if (!std::filesystem::is_regular_file(file_name))
+    throw InputError(parameter, "mesh file '" + file_name + "' does not exist");
+  std::vector<DeckLine> lines;
+  read_lines(file_name, parameter, 0, lines);
+  const Deck deck = DeckParser<dim>(parameter).parse(lines);
+  if (deck.elements.empty())
+    throw InputError(parameter, file_name + ": *ELEMENT: the deck defines no elements");
+  PhysicalNames names;
+  build_triangulation<dim>(deck, scale, tria, parameter, names);
+  return names;
+}
+
+template PhysicalNames read_abaqus(const std::string&, double, Triangulation<2>&,
+                                   const std::string&);
+template PhysicalNames read_abaqus(const std::string&, double, Triangulation<3>&,
+                                   const std::string&);
+} // namespace gearstiff::fem

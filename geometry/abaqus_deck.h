@@ -1,0 +1,102 @@
+// A written scene as a CalculiX/Abaqus input deck (.inp), so that `ccx -i scene` solves the same
+// mesh and load case as gearstiff with no editing: nodes, elements, one element set per body, an
+// element-face surface and a node set per boundary group, the material, the candidate contact
+// pairs (penalty face-to-face contact, Coulomb friction), one bore driven as a rigid body whose
+// rotation node carries the torque, the other bore fixed, and the output requests.
+//
+// Element choice. 3D scenes are written as C3D8 (fully integrated, the same trilinear element as
+// deal.II's FE_Q(1) hexahedron). 2D scenes are written by default as a one-element-thick C3D8
+// slice of thickness `slice_thickness` with u_z = 0 at every node, which is exactly plane strain
+// with FE_Q(1) quadrilaterals: ccx expands CPE4/CPS4 into such a C3D8 slice internally anyway
+// (ccx manual, "Four-node plane strain element"), but with generated nodes tied by MPCs, and its
+// rigid bodies, contact surfaces and printed node results then refer to nodes that are not in
+// the deck; writing the slice makes the solved model the written one. CPE4/CPS4 are available
+// (Element2D::plane_strain/plane_stress) for other solvers and for re-import into gearstiff;
+// ccx 2.20 did not converge with them once the rigid bore was released (docs/calculix.md).
+//
+// Names. A physical group "pinion body" becomes the set PINION_BODY (upper case, spaces to '_');
+// fem/abaqus_reader.h maps them back. Units: those of the mesh (SI: m, N, Pa, N·m).
+//
+// Load case (ccx needs a closed contact before a torque-only rigid body is statically
+// determined): step 1 turns the driven rotation node by `closing_rotation` (a fraction of the
+// expected deflection, so every contact that carries load is closed); step 2 releases it and
+// applies `torque`. The rotation of the rotation node at the end of step 2 is Δφ.
+#pragma once
+
+#include "geometry/scene_common.h"
+#include "geometry/scene_gear_pair.h"
+
+#include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gearstiff::geometry
+{
+// The cells and labelled boundary facets of a written .msh (first-order quadrilaterals and
+// lines in 2D, hexahedra and quadrilaterals in 3D), node indices 0-based into `nodes`.
+struct SceneMesh
+{
+  unsigned int dimension = 2;
+  std::vector<Eigen::Vector3d> nodes; // m
+  struct Cell
+  {
+    std::vector<unsigned int> nodes; // gmsh order (quad counter-clockwise; hex bottom, top)
+    int material_id = 0;
+  };
+  struct Facet
+  {
+    std::vector<unsigned int> nodes;
+    int boundary_id = 0;
+  };
+  std::vector<Cell> cells;
+  std::vector<Facet> facets; // boundary facets with a non-zero boundary id
+};
+
+// Reads a .msh written by mesh_planar_model through gmsh's API. SolverFailure when the file
+// cannot be opened or holds cells other than quadrilaterals (hexahedra).
+SceneMesh read_scene_mesh(const std::string& msh_file, unsigned int dimension);
+
+enum class Element2D
+{
+  slice,        // one-element-thick C3D8, u_z = 0: plane strain (default, see above)
+  plane_strain, // CPE4
+  plane_stress  // CPS4
+};
+
+// Parses "slice", "CPE4" or "CPS4" (InputError naming `parameter` otherwise).
+Element2D parse_element_2d(const std::string& text, const std::string& parameter);
+
+struct AbaqusDeckSpec
+{
+  Element2D element_2d = Element2D::slice;
+  double slice_thickness = 0.;  // m, 2D: thickness of the slice / of CPE4, CPS4 (face width)
+  double young_modulus = 210e9; // Pa, every body
+  double poisson_ratio = 0.3;   // -
+  double friction = 0.;         // -, Coulomb μ between the contact surfaces (0: none)
+  double penalty = 0.;          // Pa/m, slope of the linear pressure-overclosure law
+  double stick_slope = 0.;      // Pa/m, tangential penalty of friction (used when μ > 0)
+  std::vector<std::pair<int, int>> contact_pairs; // (slave, master) boundary ids
+  int driven_bore = 0;                            // boundary id of the rigid, torque-driven bore
+  Eigen::Vector2d driven_centre = Eigen::Vector2d::Zero(); // m, its rotation axis (z direction)
+  double torque = 0.;                                      // N·m about +z on the driven bore
+  double closing_rotation = 0.; // rad, prescribed in step 1 (see the header comment)
+  int fixed_bore = 0;           // boundary id of the bore held fixed
+  std::string title;            // *HEADING text
+};
+
+// The deck for the gear-pair scene: pinion flanks (slave) on wheel flanks (master), pinion bore
+// driven by spec.pinion_torque, wheel bore fixed, Young's modulus and Poisson's ratio of `spec`;
+// `penalty_factor` (-) times E/h_c gives the penalty slope, the closing rotation is a tenth of
+// the rotation an ISO-like 14 N/(mm·µm) stiffness would give.
+AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const SceneInfo& info,
+                                   double friction, double penalty_factor);
+
+// Writes `inp_file` from the mesh of `info.file`. InputError("Abaqus deck/...") for a spec that
+// names ids the mesh lacks.
+void write_abaqus_deck(const SceneInfo& info, const AbaqusDeckSpec& spec,
+                       const std::string& inp_file);
+
+// "pinion body" -> "PINION_BODY".
+std::string abaqus_name(const std::string& group_name);
+} // namespace gearstiff::geometry
