@@ -422,8 +422,24 @@ CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, doubl
   return result;
 }
 
-std::vector<double> roller_clearances(const CycloidDiscSpec& nominal, const CycloidDiscSpec& disc,
-                                      double disc_rotation)
+double cycloid_curvature_radius(const CycloidDiscSpec& disc, double alpha)
+{
+  // Central differences of the exact curve.
+  const double h = 1e-4;
+  const Eigen::Vector2d a = cycloid_point(disc, alpha - h), b = cycloid_point(disc, alpha),
+                        c = cycloid_point(disc, alpha + h);
+  const Eigen::Vector2d d1 = (c - a) / (2. * h), d2 = (c - 2. * b + a) / (h * h);
+  const double cross = d1.x() * d2.y() - d1.y() * d2.x();
+  return std::pow(d1.norm(), 3) / cross; // ±∞ for a straight stretch
+}
+
+double disc_rotation_at_crank_angle(const CycloidDiscSpec& ring, double crank_angle)
+{
+  return (M_PI - crank_angle) / (ring.rollers - 1.);
+}
+
+std::vector<RollerContact> roller_contacts(const CycloidDiscSpec& nominal,
+                                           const CycloidDiscSpec& disc, double disc_rotation)
 {
   check_disc(nominal);
   check_disc(disc);
@@ -433,13 +449,13 @@ std::vector<double> roller_clearances(const CycloidDiscSpec& nominal, const Cycl
   // −e·(cos(z_s ψ), −sin(z_s ψ)), which puts every roller centre on the nominal epicycloid
   // (the disc frame sees roller i at generating angle 2πi/z_k − ψ).
   const Vector disc_centre = -nominal.eccentricity * unit(-double(z_s) * disc_rotation);
-  const Eigen::Rotation2Dd to_disc(-disc_rotation);
-  std::vector<double> clearance(z_k);
+  const Eigen::Rotation2Dd to_disc(-disc_rotation), to_ring(disc_rotation);
+  std::vector<RollerContact> contacts(z_k);
   for (unsigned int i = 0; i < z_k; ++i)
   {
     const double roller_angle = 2. * M_PI * i / z_k;
-    const Vector centre =
-        to_disc * (nominal.roller_circle_radius * unit(roller_angle) - disc_centre);
+    const Vector ring_centre = nominal.roller_circle_radius * unit(roller_angle);
+    const Vector centre = to_disc * (ring_centre - disc_centre);
     // Closest point of the disc's epicycloid (Newton on (E − Q)·E' = 0 from the nominal match).
     double alpha = roller_angle - disc_rotation - disc.rotation;
     for (int it = 0; it < 50; ++it)
@@ -455,10 +471,24 @@ std::vector<double> roller_clearances(const CycloidDiscSpec& nominal, const Cycl
     if (std::abs(d.dot(curve.centre_path_rate(alpha).normalized())) >
         1e-9 * nominal.roller_circle_radius)
       throw SolverFailure("roller clearance", "closest-point iteration did not converge");
+    RollerContact& c = contacts[i];
     // Distance from the roller centre to the disc profile (q_disc inside the epicycloid) minus
     // the roller radius.
-    clearance[i] = d.dot(curve.normal(alpha)) + disc.roller_radius - nominal.roller_radius;
+    c.clearance = d.dot(curve.normal(alpha)) + disc.roller_radius - nominal.roller_radius;
+    c.roller_centre = ring_centre;
+    c.point = disc_centre + to_ring * curve.point(alpha);
+    c.normal = to_ring * curve.normal(alpha);
+    c.generating_angle = alpha;
   }
+  return contacts;
+}
+
+std::vector<double> roller_clearances(const CycloidDiscSpec& nominal, const CycloidDiscSpec& disc,
+                                      double disc_rotation)
+{
+  std::vector<double> clearance;
+  for (const RollerContact& c : roller_contacts(nominal, disc, disc_rotation))
+    clearance.push_back(c.clearance);
   return clearance;
 }
 } // namespace gearstiff::geometry

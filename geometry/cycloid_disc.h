@@ -58,10 +58,32 @@ struct CycloidCorrection
 CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, double contact_arc_ratio,
                                            double clearance_limit);
 
+// Signed curvature radius of the disc outline at generating angle α (m; > 0 convex, i.e. the
+// outline turns counter-clockwise there).
+double cycloid_curvature_radius(const CycloidDiscSpec& disc, double generating_angle);
+
+// The crank (eccentric) angle φ_h (rad) puts the disc centre at e·(cos φ_h, sin φ_h); with the
+// ring fixed the disc has then turned by ψ = (π − φ_h)/z_s about its centre (the placement of
+// roller_clearances: centre at −e·(cos z_sψ, −sin z_sψ)). i = −z_s: ψ falls as φ_h grows.
+double disc_rotation_at_crank_angle(const CycloidDiscSpec& ring, double crank_angle);
+
 // Clearance Δr_i (m) between the disc and each roller i = 0..z_k−1 (roller i at polar angle
 // 2π·i/z_k on the roller circle of the nominal spec) when the disc is turned by
 // disc_rotation (rad) about its own centre, with the disc centre displaced by e along the
 // eccentric direction that matches that rotation; 0 where the roller touches.
 std::vector<double> roller_clearances(const CycloidDiscSpec& nominal, const CycloidDiscSpec& disc,
                                       double disc_rotation);
+
+// Where roller i meets the disc at the same placement (ring frame: ring centre at the origin).
+struct RollerContact
+{
+  double clearance = 0.;                                   // m, Δr_i (as roller_clearances)
+  Eigen::Vector2d roller_centre = Eigen::Vector2d::Zero(); // m, on the roller circle
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();         // m, closest point of the disc outline
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero(); // unit, outward disc normal there (its line
+                                                    // runs through the roller centre)
+  double generating_angle = 0.;                     // rad, α of that point on the disc profile
+};
+std::vector<RollerContact> roller_contacts(const CycloidDiscSpec& nominal,
+                                           const CycloidDiscSpec& disc, double disc_rotation);
 } // namespace gearstiff::geometry

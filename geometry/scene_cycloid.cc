@@ -26,18 +26,48 @@ BoundaryLoop circle_from(const Eigen::Vector2d& centre, double radius, double st
   return loop;
 }
 
-// Signed curvature radius of the disc outline at generating angle α (m; > 0 convex, i.e. the
-// outline turns counter-clockwise there), by central differences of the exact curve.
-double curvature_radius(const CycloidDiscSpec& disc, double alpha)
+// The output pins in their holes (see the header): bodies, and one contact each where the pin
+// meets its hole (on the side away from the disc centre's offset).
+void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_centre,
+                     PlanarModel& model, std::vector<SceneContact>& contacts)
 {
-  const double h = 1e-4;
-  const Eigen::Vector2d a = cycloid_point(disc, alpha - h), b = cycloid_point(disc, alpha),
-                        c = cycloid_point(disc, alpha + h);
-  const Eigen::Vector2d d1 = (c - a) / (2. * h), d2 = (c - 2. * b + a) / (h * h);
-  const double cross = d1.x() * d2.y() - d1.y() * d2.x();
-  return std::pow(d1.norm(), 3) / cross; // ±∞ for a straight stretch
+  const Eigen::Vector2d towards = -disc_centre.normalized(); // from each hole to its pin centre
+  const double play = spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity;
+  for (unsigned int j = 0; j < spec.output_pins; ++j)
+  {
+    const Eigen::Vector2d centre = output_pin_centre(spec, j);
+    PlanarBody pin;
+    pin.name = "output pins";
+    pin.material_id = cycloid_ids::output_pin_body;
+    pin.outer = circle_from(centre, spec.output_pin_radius, std::atan2(towards.y(), towards.x()),
+                            cycloid_ids::output_pin_surfaces);
+    pin.holes.push_back(
+        circle_loop(centre, spec.output_pin_bore_radius, cycloid_ids::output_pin_bores));
+    model.bodies.push_back(pin);
+
+    SceneContact contact;
+    contact.point = centre + spec.output_pin_radius * towards;
+    contact.normal = -towards; // out of the disc (the hole wall) into the hole
+    contact.first_curvature_radius = -spec.output_pin_hole_radius; // concave
+    contact.second_curvature_radius = spec.output_pin_radius;
+    contact.normal_force = spec.pin_force;
+    contact.gap = play;
+    contact.first_feature = static_cast<int>(j);
+    contact.second_feature = static_cast<int>(j);
+    contact.hertz_half_width =
+        hertz_half_width(spec.pin_force / spec.disc_width, contact.first_curvature_radius,
+                         contact.second_curvature_radius, spec.young_modulus, spec.poisson_ratio,
+                         spec.young_modulus, spec.poisson_ratio);
+    contacts.push_back(contact);
+  }
 }
 } // namespace
+
+Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin)
+{
+  return spec.output_pin_circle_radius *
+         unit(spec.disc_rotation + spec.output_pin_phase + 2. * M_PI * pin / spec.output_pins);
+}
 
 SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& file)
 {
@@ -75,6 +105,21 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
   }
   else if (spec.bore_radius > lobe_root - 1e-3)
     throw InputError(section + "bore radius", "leaves no disc material under the lobes");
+  if (spec.output_pin_bodies && spec.output_pins > 0)
+  {
+    if (!(spec.output_pin_radius + ring.eccentricity <= spec.output_pin_hole_radius + 1e-12))
+      throw InputError(section + "output pin radius",
+                       "the pins do not fit their holes: pin radius + e = " +
+                           std::to_string((spec.output_pin_radius + ring.eccentricity) * 1e3) +
+                           " mm exceeds the hole radius " +
+                           std::to_string(spec.output_pin_hole_radius * 1e3) + " mm");
+    if (!(spec.output_pin_bore_radius > 0. &&
+          spec.output_pin_bore_radius < spec.output_pin_radius - 1e-3))
+      throw InputError(section + "output pin bore radius",
+                       "must be positive and leave 1 mm of pin around it");
+    if (!(spec.pin_force > 0.))
+      throw InputError(section + "pin force", "must be positive");
+  }
   if (!(spec.roller_pin_radius > 0. && spec.roller_pin_radius < 0.8 * ring.roller_radius))
     throw InputError(section + "roller pin radius", "must lie in (0, 0.8·q)");
   if (!(spec.disc_width > 0.))
@@ -128,7 +173,7 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
     SceneContact contact;
     contact.point = point;
     contact.normal = (roller - point).normalized();
-    contact.first_curvature_radius = curvature_radius(disc, alpha);
+    contact.first_curvature_radius = cycloid_curvature_radius(disc, alpha);
     contact.second_curvature_radius = ring.roller_radius;
     contact.normal_force = spec.roller_force;
     contact.gap = clearances[i];
@@ -148,23 +193,28 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
   PlanarBody disc_body;
   disc_body.name = "disc";
   disc_body.material_id = scene_ids::first_body;
+  // One closed spline through every lobe's points: pieces joined at the lobe gaps would meet
+  // there with a kink of the interpolating spline (a few µm off the exact outline), right where
+  // a roller sits in a gap in conformal contact — an initial overlap of that size.
+  BoundaryPiece outline;
+  outline.kind = CurveKind::spline;
+  outline.boundary_id = scene_ids::first_contact;
   for (unsigned int k = 0; k < lobes; ++k)
   {
-    BoundaryPiece piece;
-    piece.kind = CurveKind::spline;
-    piece.boundary_id = scene_ids::first_contact;
     const Eigen::Rotation2Dd lobe_rotation(k * lobe_pitch);
-    for (const auto& p : lobe.points)
-      piece.points.push_back(place(lobe_rotation * p.position));
-    disc_body.outer.pieces.push_back(piece);
+    for (unsigned int j = k == 0 ? 0 : 1; j < lobe.points.size(); ++j)
+      outline.points.push_back(place(lobe_rotation * lobe.points[j].position));
   }
-  disc_body.outer.pieces.back().points.back() = disc_body.outer.pieces.front().points.front();
+  outline.points.back() = outline.points.front();
+  disc_body.outer.pieces.push_back(outline);
   disc_body.holes.push_back(circle_loop(disc_centre, spec.bore_radius, scene_ids::first_bore));
   for (unsigned int j = 0; j < spec.output_pins; ++j)
-    disc_body.holes.push_back(
-        circle_loop(place(spec.output_pin_circle_radius * unit(2. * M_PI * j / spec.output_pins)),
-                    spec.output_pin_hole_radius, scene_ids::output_pin_holes));
+    disc_body.holes.push_back(circle_loop(disc_centre + output_pin_centre(spec, j),
+                                          spec.output_pin_hole_radius,
+                                          scene_ids::output_pin_holes));
   model.bodies.push_back(disc_body);
+  if (spec.output_pin_bodies)
+    add_output_pins(spec, disc_centre, model, contacts);
   for (unsigned int i = 0; i < ring.rollers; ++i)
   {
     const Eigen::Vector2d centre = ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers);
@@ -181,17 +231,28 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
                           {scene_ids::first_contact, "disc lobes"},
                           {scene_ids::second_contact, "roller surfaces"},
                           {scene_ids::output_pin_holes, "output pin holes"}};
+  if (spec.output_pin_bodies)
+  {
+    model.boundary_names[cycloid_ids::output_pin_bores] = "output pin bores";
+    model.boundary_names[cycloid_ids::output_pin_surfaces] = "output pin surfaces";
+  }
 
   // Away from the contacts the disc (below its lobe roots) and the rollers (below their
   // surface) only carry load to the bore and the pins: let the cells grow with depth there.
   std::vector<Eigen::Vector2d> roller_centres;
   for (unsigned int i = 0; i < ring.rollers; ++i)
     roller_centres.push_back(ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers));
-  const auto depth = [=, q = ring.roller_radius](const Eigen::Vector2d& x)
+  std::vector<Eigen::Vector2d> pin_centres;
+  for (unsigned int j = 0; spec.output_pin_bodies && j < spec.output_pins; ++j)
+    pin_centres.push_back(output_pin_centre(spec, j));
+  const auto depth =
+      [=, q = ring.roller_radius, p = spec.output_pin_radius](const Eigen::Vector2d& x)
   {
     double result = lobe_root - (x - disc_centre).norm();
     for (const auto& c : roller_centres)
       result = std::max(result, q - (x - c).norm());
+    for (const auto& c : pin_centres)
+      result = std::max(result, p - (x - c).norm());
     return result;
   };
   SceneInfo info = mesh_scene(model, contacts, spec.mesh, spec.disc_width, file, depth);
@@ -207,6 +268,10 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
       {"disc_bore_radius", spec.bore_radius, "m", "disc bore radius"},
       {"output_pin_holes", double(spec.output_pins), "-", "output-pin holes"},
       {"output_pin_hole_radius", spec.output_pin_hole_radius, "m", "output-pin hole radius"},
+      {"output_pin_bodies", spec.output_pin_bodies ? double(spec.output_pins) : 0., "-",
+       "output pins meshed in their holes"},
+      {"output_pin_play", spec.output_pin_hole_radius - spec.output_pin_radius - ring.eccentricity,
+       "m", "radial play of each pin in its hole (hole − pin − e)"},
       {"lobe_root_radius", lobe_root, "m", "smallest radius of the disc outline"}};
   info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return info;

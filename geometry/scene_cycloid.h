@@ -8,6 +8,12 @@
 // Ids (scene_common.h): disc material 1, rollers material 2; disc bore 1, roller pins 2, disc
 // lobes 3, roller surfaces 4, output-pin holes 8. Contacts: every roller whose clearance to
 // the disc is at most `contact_clearance`.
+//
+// With `output_pin_bodies` every hole also holds its output pin (cycloid_ids below): pin j is
+// centred at the hole's vector from the disc centre taken from the ring centre — the
+// parallel-crank (W) mechanism of the output, so every pin sits e off its hole's centre, toward
+// −(disc centre) — and touches its hole there when the play (hole − pin − e) is zero. The pin's
+// bore is where the rigid output member holds it. Each pin adds one contact (the touching point).
 #pragma once
 
 #include "geometry/cycloid_disc.h"
@@ -17,6 +23,14 @@
 
 namespace gearstiff::geometry
 {
+// Ids of the output pins (beyond the common scene_ids).
+namespace cycloid_ids
+{
+constexpr int output_pin_body = 3;      // material id of the output pins
+constexpr int output_pin_bores = 9;     // boundary id: the pins' bores (the output member)
+constexpr int output_pin_surfaces = 10; // boundary id: the pins' outer surfaces
+} // namespace cycloid_ids
+
 struct CycloidSceneSpec
 {
   // The ring (roller circle r, roller radius q, eccentricity e, z_k): gear-data.md §4 nominal.
@@ -32,6 +46,12 @@ struct CycloidSceneSpec
   double output_pin_circle_radius = 55e-3; // m
   double output_pin_hole_radius = 12e-3;   // m, pin radius + e
   double roller_pin_radius = 4e-3;         // m, pin inside each roller
+  // rad, polar angle of hole 0 in the disc frame (the holes turn with the disc by ψ).
+  double output_pin_phase = 0.;
+  bool output_pin_bodies = false;       // mesh the output pins in their holes
+  double output_pin_radius = 9e-3;      // m, hole radius − e: no play (not published)
+  double output_pin_bore_radius = 4e-3; // m, bore of each pin, held by the output member
+  double pin_force = 3776.;             // N, Q_max of gear-data.md §4, for the Hertz estimate
 
   double contact_clearance = 1e-5; // m, rollers this close to the disc are contacts
   double roller_force = 1711.;     // N, P_max of gear-data.md §4, for the Hertz estimate
@@ -41,6 +61,10 @@ struct CycloidSceneSpec
   unsigned int points_per_lobe = 121;
   SceneMeshSettings mesh;
 };
+
+// The centre of output pin j (m, ring frame): the hole's vector from the disc centre, turned by
+// the disc rotation, from the ring centre.
+Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin);
 
 // Checks the spec (InputError naming "Cycloid scene/..." or "Cycloid disc/..." before gmsh
 // runs), meshes, writes `file`.

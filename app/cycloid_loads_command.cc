@@ -1,0 +1,323 @@
+// `gearstiff cycloid-loads [case.prm]`: the load distribution of a cycloid (Cyclo) drive from the
+// FE contact solver — roller forces P_i, output-pin forces Q_j, eccentric-bearing force R, torque
+// balances, loaded counts, contact pressures, disc stress, output rotation — for the nominal and
+// the corrected disc profile, beside the analytic rigid-disc estimate and the published values of
+// gear-data.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque ramp;
+// optionally a crank-angle sweep. Load case and its static equivalence: stiffness/cycloid_loads.h.
+//
+//   gearstiff cycloid-loads                                  §4 drive, nominal + ε = 0.27
+//   gearstiff cycloid-loads --json                           the figures as JSON
+//   mpirun -np 2 gearstiff cycloid-loads --set "Cycloid loads/sweep positions=16" -o out
+//
+// Files with -o: the tables (CSV), the distribution chart, the sweep traces and the torsion
+// curve (PNG), VTU with "Cycloid loads/write vtu=true".
+#include "app/command.h"
+#include "app/cycloid_loads_parameters.h"
+#include "app/units.h"
+#include "errors/errors.h"
+#include "stiffness/cycloid_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::app;
+
+const std::string paper = "gear-data.md §4 (Chmurawa & Łokiec, analytic)";
+// gear-data.md §4: analytic P_max = 1711 N, Q_max = 3776 N, eccentric reaction R = 10.3 kN;
+// rigid-body ADAMS ≈ 2200 N and ≈ 3800 N.
+constexpr double paper_max_roller_force = 1711.; // N
+constexpr double paper_max_pin_force = 3776.;    // N
+constexpr double paper_bearing_force = 10.3e3;   // N
+constexpr double arcmin = M_PI / (180. * 60.);   // rad
+
+// One profile's cases: the position, the torque levels, the sweep.
+struct ProfileCases
+{
+  std::string name; // "nominal" or "corrected"
+  unsigned int position = 0, first_level = 0, levels = 0, first_sweep = 0, sweep = 0;
+};
+
+std::vector<stiffness::CycloidLoadSettings> profile_settings(const CycloidLoadsParameters& p,
+                                                             CommandContext& context)
+{
+  std::vector<stiffness::CycloidLoadSettings> profiles;
+  if (p.nominal)
+    profiles.push_back(p.settings);
+  if (p.corrected)
+  {
+    const geometry::CycloidCorrection c = geometry::solve_cycloid_correction(
+        p.settings.scene.ring, p.contact_arc_ratio, p.clearance_limit);
+    stiffness::CycloidLoadSettings s = p.settings;
+    s.scene.disc = c.corrected_disc(s.scene.ring);
+    profiles.push_back(s);
+    context.report.add_text("correction",
+                            "ε = " + format_number(p.contact_arc_ratio, 4) +
+                                ": r_k = " + format_number(c.roller_circle_radius / mm, 7) +
+                                " mm, q_k = " + format_number(c.roller_radius / mm, 7) +
+                                " mm, δ = " + format_number(c.rotation / degree, 6) +
+                                "° (gearstiff cycloid)");
+  }
+  return profiles;
+}
+
+std::string scratch_stem(MPI_Comm communicator)
+{
+  long id = static_cast<long>(getpid());
+  MPI_Bcast(&id, 1, MPI_LONG, 0, communicator);
+  const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(communicator);
+  return (std::filesystem::temp_directory_path() /
+          ("gearstiff-cycloid-" + std::to_string(id) + "-" + std::to_string(rank)))
+      .string();
+}
+
+// The position's figures, keys prefixed (empty for the first profile).
+void report_position(Report& report, const stiffness::CycloidLoadResult& r,
+                     const std::string& prefix, const std::string& label, bool compare)
+{
+  const auto value =
+      [&](const std::string& key, double v, const std::string& unit, const std::string& what)
+  { report.add_value(prefix + key, v, unit, label + ": " + what); };
+  if (compare)
+  {
+    report.add_compared_value(prefix + "max_roller_force", r.max_roller_force,
+                              paper_max_roller_force, "N", label + ": P_max (FE)", paper);
+    report.add_compared_value(prefix + "max_pin_force", r.max_pin_force, paper_max_pin_force, "N",
+                              label + ": Q_max (FE)", paper);
+    report.add_compared_value(prefix + "bearing_force", r.bearing_force, paper_bearing_force, "N",
+                              label + ": eccentric-bearing force R (FE)", "gear-data.md §4");
+  }
+  else
+  {
+    value("max_roller_force", r.max_roller_force, "N", "P_max (FE)");
+    value("max_pin_force", r.max_pin_force, "N", "Q_max (FE)");
+    value("bearing_force", r.bearing_force, "N", "eccentric-bearing force R (FE)");
+  }
+  value("analytic_max_roller_force", r.analytic.max_roller_force, "N",
+        "P_max, rigid disc + line-contact compliance");
+  value("analytic_max_pin_force", r.analytic.max_pin_force, "N", "Q_max, the same model");
+  value("analytic_bearing_force", r.analytic.bearing_force.norm(), "N", "R, the same model");
+  value("bearing_angle", r.bearing_angle / degree, "deg", "α_R in M_h = R·e·cos α_R");
+  value("bearing_force_direction", r.bearing_force_direction / degree, "deg",
+        "polar angle of R (force on the eccentric)");
+  value("input_torque", r.input_torque, "N·m", "M_h = R·e·cos α_R holding the eccentric");
+  value("input_torque_ratio", r.input_torque_ratio, "-", "M_h / (M_c/z_s) (1: rigid kinematics)");
+  value("loaded_rollers", r.loaded_rollers, "-", "rollers carrying load");
+  value("loaded_pins", r.loaded_pins, "-", "output pins carrying load");
+  value("disc_force_balance", r.disc_force_balance, "-", "|R + Σ contact forces on the disc|/R");
+  value("disc_moment_balance", r.disc_moment_balance, "-",
+        "|Σ moments of P_i and Q_j about the disc centre|/M_c");
+  value("output_moment_balance", r.output_moment_balance, "-", "|Σ c_j × Q_j − M_c|/M_c");
+  value("output_rotation", r.output_rotation / arcmin, "arcmin", "output rotation θ under M_c");
+  value("max_contact_pressure", r.max_contact_pressure / 1e6, "MPa", "peak contact pressure");
+  value("disc_von_mises", r.disc_von_mises / 1e6, "MPa", "largest von Mises stress in the disc");
+  value("n_dofs", r.n_dofs, "-", "DoFs");
+  value("active_set_iterations", r.active_set_iterations, "-", "contact active-set iterations");
+  value("solve_wall_time", r.total_time, "s", "wall time of the position (scene + solve)");
+}
+
+void add_contact_table(Report& report, const std::string& name,
+                       const std::vector<ProfileCases>& profiles,
+                       const std::vector<stiffness::CycloidLoadResult>& results, bool rollers)
+{
+  std::vector<std::string> columns{rollers ? "roller" : "pin", "angle"}, units{"-", "deg"};
+  for (const auto& pc : profiles)
+    for (const std::string c : {"gap", "force", "analytic_force", "max_pressure"})
+    {
+      columns.push_back(c + "_" + pc.name);
+      units.push_back(c == "gap" ? "mm" : c == "max_pressure" ? "MPa" : "N");
+    }
+  ReportTable& table = report.add_table(name, columns, units);
+  const auto& first = results[profiles[0].position];
+  const unsigned int n = rollers ? first.rollers.size() : first.pins.size();
+  for (unsigned int k = 0; k < n; ++k)
+  {
+    std::vector<double> row{double(k), (rollers ? first.rollers : first.pins)[k].angle / degree};
+    for (const auto& pc : profiles)
+    {
+      const auto& l = (rollers ? results[pc.position].rollers : results[pc.position].pins)[k];
+      row.insert(row.end(), {l.initial_gap / mm, l.force, l.analytic_force, l.max_pressure / 1e6});
+    }
+    table.add_row(row);
+  }
+}
+
+void add_sweep_table(Report& report, const ProfileCases& pc,
+                     const std::vector<stiffness::CycloidLoadResult>& results)
+{
+  const auto& first = results[pc.first_sweep];
+  std::vector<std::string> columns{"crank_angle", "max_roller_force", "max_pin_force",
+                                   "bearing_force", "output_rotation"};
+  std::vector<std::string> units{"deg", "N", "N", "N", "arcmin"};
+  for (unsigned int i = 0; i < first.rollers.size(); ++i)
+    columns.push_back("P_" + std::to_string(i)), units.push_back("N");
+  for (unsigned int j = 0; j < first.pins.size(); ++j)
+    columns.push_back("Q_" + std::to_string(j)), units.push_back("N");
+  ReportTable& table = report.add_table("cycloid_sweep_" + pc.name, columns, units);
+  for (unsigned int k = pc.first_sweep; k < pc.first_sweep + pc.sweep; ++k)
+  {
+    const auto& r = results[k];
+    std::vector<double> row{r.crank_angle / degree, r.max_roller_force, r.max_pin_force,
+                            r.bearing_force, r.output_rotation / arcmin};
+    for (const auto& l : r.rollers)
+      row.push_back(l.force);
+    for (const auto& l : r.pins)
+      row.push_back(l.force);
+    table.add_row(row);
+  }
+}
+
+void plot(CommandContext& context, const std::string& table, const std::string& mode,
+          const std::string& png, const std::string& description)
+{
+  const std::string csv = temporary_csv(context.report, table);
+  context.plot("plot_cycloid_loads.py", {mode, csv}, png, description);
+  std::filesystem::remove(csv);
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  const CycloidLoadsParameters p = parse_cycloid_loads_parameters(prm);
+  Report& report = context.report;
+  const double torque = p.settings.output_torque;
+  report.add_text("load case",
+                  "crank angle φ_h = " + format_number(p.settings.crank_angle / degree, 5) +
+                      "°, eccentric held, disc bore on a bearing free to turn, rollers on fixed "
+                      "pins (frictionless), output pins tied to one rigid output member carrying "
+                      "M_c = " +
+                      format_number(torque, 5) +
+                      " N·m (stiffness/cycloid_loads.h: the static equivalent of running)");
+  report.add_text("model",
+                  fem::to_string(p.settings.elasticity.model) + " 2D, Q" +
+                      std::to_string(p.settings.elasticity.degree) +
+                      ", thickness = disc "
+                      "width " +
+                      format_number(p.settings.scene.disc_width / mm, 4) +
+                      " mm, E = " + format_number(p.settings.material.youngs_modulus / 1e9, 4) +
+                      " GPa, μ = " + format_number(p.settings.contact.friction_coefficient, 3));
+  if (p.settings.scene.mesh.dimension != 2)
+    throw InputError("Mesh/dimension", "the cycloid load analysis runs in 2D (3D: not yet)");
+
+  // Every case of every profile in one list, spread over the ranks.
+  const std::vector<stiffness::CycloidLoadSettings> bases = profile_settings(p, context);
+  std::vector<stiffness::CycloidLoadSettings> cases;
+  std::vector<ProfileCases> profiles;
+  const std::vector<double> levels =
+      p.torsional ? stiffness::torsional_levels(torque, p.torque_steps) : std::vector<double>{};
+  const std::vector<double> angles =
+      stiffness::crank_angles(p.settings.crank_angle, p.sweep_span, p.sweep_positions);
+  for (unsigned int b = 0; b < bases.size(); ++b)
+  {
+    ProfileCases pc;
+    pc.name = bases[b].scene.disc.rollers == 0 ? "nominal" : "corrected";
+    pc.position = cases.size();
+    cases.push_back(bases[b]);
+    pc.first_level = cases.size();
+    pc.levels = levels.size();
+    for (const double t : levels)
+    {
+      cases.push_back(bases[b]);
+      cases.back().output_torque = t;
+    }
+    pc.first_sweep = cases.size();
+    pc.sweep = angles.size();
+    for (const double a : angles)
+    {
+      cases.push_back(bases[b]);
+      cases.back().crank_angle = a;
+    }
+    profiles.push_back(pc);
+  }
+  context.pcout << "cycloid-loads: " << cases.size() << " solves on "
+                << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
+                << std::endl;
+  if (p.write_vtu && context.writes_files())
+    for (const auto& pc : profiles)
+    {
+      auto& c = cases[pc.position];
+      c.output_base = "cycloid_" + pc.name;
+      c.output_directory =
+          std::filesystem::path(context.output_file("vtu/" + c.output_base + ".pvtu",
+                                                    "displacement, stress, contact (VTU)"))
+              .parent_path()
+              .string();
+    }
+  const auto progress = [&context](const std::string& line)
+  { context.pcout << "cycloid-loads: " << line << std::endl; };
+  const std::vector<stiffness::CycloidLoadResult> results = stiffness::solve_cycloid_cases(
+      context.mpi_communicator, cases, scratch_stem(context.mpi_communicator), progress);
+
+  const bool published = bases[0].scene.ring.rollers == 20 &&
+                         std::abs(bases[0].scene.ring.roller_circle_radius - 96e-3) < 1e-12 &&
+                         std::abs(bases[0].scene.ring.eccentricity - 3e-3) < 1e-12 &&
+                         std::abs(torque - 440.) < 1e-9;
+  for (unsigned int b = 0; b < profiles.size(); ++b)
+  {
+    const ProfileCases& pc = profiles[b];
+    const std::string prefix = b == 0 ? "" : pc.name + "_";
+    report_position(report, results[pc.position], prefix, pc.name, published && b == 0);
+    if (pc.levels > 0)
+    {
+      const std::vector<stiffness::CycloidLoadResult> ramp(
+          results.begin() + pc.first_level, results.begin() + pc.first_level + pc.levels);
+      const stiffness::TorsionalCurve curve = stiffness::torsional_curve(torque, ramp);
+      report.add_value(prefix + "torsional_stiffness", curve.stiffness * arcmin, "N·m/arcmin",
+                       pc.name + ": secant between 50% and 100% of M_c, both directions");
+      report.add_value(prefix + "lost_motion", curve.lost_motion / arcmin, "arcmin",
+                       pc.name + ": rotation between ±3% of M_c");
+      report.add_value(prefix + "hysteresis", curve.hysteresis / arcmin, "arcmin",
+                       pc.name + ": loading/unloading difference (frictionless: 0)");
+    }
+  }
+  add_contact_table(report, "cycloid_rollers", profiles, results, true);
+  add_contact_table(report, "cycloid_pins", profiles, results, false);
+  if (p.torsional)
+  {
+    std::vector<std::string> columns{"torque"}, units{"N·m"};
+    for (const auto& pc : profiles)
+      columns.push_back("rotation_" + pc.name), units.push_back("arcmin");
+    ReportTable& table = report.add_table("cycloid_torsion", columns, units);
+    for (unsigned int k = 0; k < levels.size(); ++k)
+    {
+      std::vector<double> row{levels[k]};
+      for (const auto& pc : profiles)
+        row.push_back(results[pc.first_level + k].output_rotation / arcmin);
+      table.add_row(row);
+    }
+  }
+  if (p.sweep_positions > 0)
+    for (const auto& pc : profiles)
+      add_sweep_table(report, pc, results);
+
+  if (context.writes_files() && context.is_root())
+  {
+    plot(context, "cycloid_rollers", "rollers", "cycloid_rollers.png",
+         "roller forces P_i, FE and analytic, per profile");
+    plot(context, "cycloid_pins", "pins", "cycloid_pins.png", "output-pin forces Q_j");
+    if (p.torsional)
+      plot(context, "cycloid_torsion", "torsion", "cycloid_torsion.png",
+           "output rotation against torque (torsional stiffness, lost motion)");
+    for (const auto& pc : profiles)
+      if (p.sweep_positions > 0)
+        plot(context, "cycloid_sweep_" + pc.name, "sweep", "cycloid_sweep_" + pc.name + ".png",
+             "P_i(φ_h) and Q_j(φ_h) traces, " + pc.name);
+  }
+}
+
+const CommandRegistration registration(Command{
+    "cycloid-loads",
+    "cycloid drive under load (FE contact): roller and pin forces, bearing force, stiffness",
+    "Solves the cycloid (Cyclo) drive of gear-data.md §4 at one crank angle with the FE contact\n"
+    "solver: disc on its eccentric bearing (free to turn), rollers on fixed pins, output pins\n"
+    "tied to one rigid output member carrying M_c; one contact pair per roller and per pin.\n"
+    "Reports P_i, Q_j, the bearing force R and its angle, torque balances, loaded counts, peak\n"
+    "pressures, disc von Mises stress and output rotation, for the nominal and the corrected\n"
+    "profile, beside the analytic rigid-disc model and the paper (P_max 1711 N, Q_max 3776 N);\n"
+    "torsional stiffness and lost motion from torque levels ±3%, ±50%, ±100% M_c; optionally a\n"
+    "crank-angle sweep spread over the MPI ranks.",
+    declare_cycloid_loads_parameters, run});
+} // namespace

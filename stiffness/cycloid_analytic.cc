@@ -1,0 +1,165 @@
+#include "stiffness/cycloid_analytic.h"
+
+#include "errors/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace gearstiff::stiffness
+{
+namespace
+{
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// One contact of the rigid-body model: it closes by angle·lever − gap and answers with the
+// force of its compliance law.
+struct Spring
+{
+  double lever = 0.;                      // m
+  double gap = 0.;                        // m
+  std::function<double(double)> approach; // m, δ(P)
+};
+
+// P from δ(P) = closure by bisection on a bracket grown from 1 N (δ is increasing in P).
+double force_for_closure(const std::function<double(double)>& approach, double closure)
+{
+  if (!(closure > 0.))
+    return 0.;
+  double low = 0., high = 1.;
+  while (approach(high) < closure)
+  {
+    low = high;
+    high *= 2.;
+    if (high > 1e12)
+      throw SolverFailure("cycloid analytic model", "no contact force matches the closure");
+  }
+  for (int it = 0; it < 100 && high - low > 1e-12 * high; ++it)
+  {
+    const double mid = 0.5 * (low + high);
+    (approach(mid) < closure ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+// The rotation at which Σ P_k(angle·l_k − g_k)·l_k = torque (either sign), and the forces.
+std::vector<double> balance(const std::vector<Spring>& springs, double torque, double& angle,
+                            const std::string& what)
+{
+  const auto forces_at = [&](double a)
+  {
+    std::vector<double> forces;
+    for (const Spring& s : springs)
+      forces.push_back(force_for_closure(s.approach, a * s.lever - s.gap));
+    return forces;
+  };
+  const auto moment = [&](double a)
+  {
+    const std::vector<double> forces = forces_at(a);
+    double sum = 0.;
+    for (unsigned int k = 0; k < springs.size(); ++k)
+      sum += forces[k] * springs[k].lever;
+    return sum;
+  };
+  const double sign = torque > 0. ? 1. : -1.;
+  double low = 0., high = sign * 1e-6;
+  while (std::abs(moment(high)) < std::abs(torque))
+  {
+    low = high;
+    high *= 2.;
+    if (std::abs(high) > 1.)
+      throw SolverFailure("cycloid analytic model", "no " + what + " rotation carries the torque");
+  }
+  for (int it = 0; it < 200 && std::abs(high - low) > 1e-14 * std::abs(high); ++it)
+  {
+    const double mid = 0.5 * (low + high);
+    (std::abs(moment(mid)) < std::abs(torque) ? low : high) = mid;
+  }
+  angle = 0.5 * (low + high);
+  return forces_at(angle);
+}
+} // namespace
+
+double line_contact_approach(double force, double length, double r1, double r2, double e1,
+                             double nu1, double e2, double nu2)
+{
+  if (!(force > 0.))
+    return 0.;
+  const double c1 = (1. - nu1 * nu1) / e1, c2 = (1. - nu2 * nu2) / e2;
+  const double radius = 1. / (1. / r1 + 1. / r2);
+  const double a = std::sqrt(4. * force / length * radius / (M_PI / (c1 + c2)));
+  return force / (M_PI * length) *
+         (c1 * (2. * std::log(4. * std::abs(r1) / a) - 1.) +
+          c2 * (2. * std::log(4. * std::abs(r2) / a) - 1.));
+}
+
+CycloidAnalyticResult analytic_cycloid_loads(const geometry::CycloidSceneSpec& scene,
+                                             double output_torque, double roller_young_modulus)
+{
+  const geometry::CycloidDiscSpec& ring = scene.ring;
+  const geometry::CycloidDiscSpec disc = scene.disc.rollers == 0 ? ring : scene.disc;
+  const double e_disc = scene.young_modulus, nu = scene.poisson_ratio;
+  const double e_roller = roller_young_modulus > 0. ? roller_young_modulus : e_disc;
+  const double width = scene.disc_width;
+  const std::vector<geometry::RollerContact> contacts =
+      geometry::roller_contacts(ring, disc, scene.disc_rotation);
+  const Eigen::Vector2d centre =
+      -ring.eccentricity *
+      Eigen::Vector2d(std::cos(-double(ring.rollers - 1) * scene.disc_rotation),
+                      std::sin(-double(ring.rollers - 1) * scene.disc_rotation));
+  CycloidAnalyticResult result;
+
+  // Rollers: levers about the disc centre, clearances, line contact disc outline / roller.
+  std::vector<Spring> rollers;
+  for (const geometry::RollerContact& c : contacts)
+  {
+    Spring s;
+    s.lever = cross(c.point - centre, c.normal);
+    s.gap = c.clearance;
+    const double r_disc = geometry::cycloid_curvature_radius(disc, c.generating_angle);
+    s.approach = [=, q = ring.roller_radius](double p)
+    { return line_contact_approach(p, width, r_disc, q, e_disc, nu, e_roller, nu); };
+    rollers.push_back(s);
+    result.roller_levers.push_back(s.lever);
+  }
+  result.roller_forces = balance(rollers, output_torque, result.disc_rotation, "disc");
+
+  // Output pins: all pushed along u, levers w_j about the ring centre (equal about C).
+  const Eigen::Vector2d u = -centre.normalized();
+  const double play = scene.output_pin_hole_radius - scene.output_pin_radius - ring.eccentricity;
+  std::vector<Spring> pins;
+  for (unsigned int j = 0; j < scene.output_pins; ++j)
+  {
+    Spring s;
+    s.lever = cross(geometry::output_pin_centre(scene, j), u);
+    s.gap = play;
+    s.approach = [=, rp = scene.output_pin_radius, rh = scene.output_pin_hole_radius](double p)
+    { return line_contact_approach(p, width, -rh, rp, e_disc, nu, e_disc, nu); };
+    pins.push_back(s);
+    result.pin_levers.push_back(s.lever);
+  }
+  double relative = 0.;
+  result.pin_forces = balance(pins, output_torque, relative, "output");
+  result.output_rotation = result.disc_rotation + relative;
+
+  const double small = 1e-6; // of the largest force: loaded, as the FE counts
+  result.max_roller_force =
+      *std::max_element(result.roller_forces.begin(), result.roller_forces.end());
+  result.max_pin_force = *std::max_element(result.pin_forces.begin(), result.pin_forces.end());
+  for (unsigned int i = 0; i < contacts.size(); ++i)
+  {
+    result.bearing_force += result.roller_forces[i] * contacts[i].normal;
+    result.loaded_rollers += result.roller_forces[i] > small * result.max_roller_force;
+  }
+  for (const double q : result.pin_forces)
+  {
+    result.bearing_force -= q * u;
+    result.loaded_pins += q > small * result.max_pin_force;
+  }
+  result.input_torque = std::abs(cross(centre, result.bearing_force));
+  return result;
+}
+} // namespace gearstiff::stiffness

@@ -1,0 +1,410 @@
+#include "stiffness/cycloid_loads.h"
+
+#include "errors/errors.h"
+#include "fem/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/fe/fe_values.h>
+#include <limits>
+
+namespace gearstiff::stiffness
+{
+using namespace dealii;
+
+namespace
+{
+// Every roller and pin is its own contact pair: faces relabelled per roller / pin.
+constexpr types::boundary_id roller_surface_base = 1000; // + i
+constexpr types::boundary_id disc_lobe_base = 2000;      // + i: lobe faces nearest roller i
+constexpr types::boundary_id pin_surface_base = 3000;    // + j
+constexpr types::boundary_id pin_hole_base = 4000;       // + j
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+template <int dim>
+Eigen::Vector2d planar(const Point<dim>& p)
+{
+  return Eigen::Vector2d(p[0], p[1]);
+}
+
+template <int dim>
+Eigen::Vector2d planar(const Tensor<1, dim>& t)
+{
+  return Eigen::Vector2d(t[0], t[1]);
+}
+
+// Index of the point of `centres` nearest to `x`.
+unsigned int nearest(const std::vector<Eigen::Vector2d>& centres, const Eigen::Vector2d& x)
+{
+  unsigned int best = 0;
+  for (unsigned int k = 1; k < centres.size(); ++k)
+    if ((centres[k] - x).norm() < (centres[best] - x).norm())
+      best = k;
+  return best;
+}
+
+Eigen::Vector2d disc_centre(const CycloidLoadSettings& s)
+{
+  return s.scene.ring.eccentricity *
+         Eigen::Vector2d(std::cos(s.crank_angle), std::sin(s.crank_angle));
+}
+
+std::vector<Eigen::Vector2d> roller_centres(const geometry::CycloidDiscSpec& ring)
+{
+  std::vector<Eigen::Vector2d> centres;
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+  {
+    const double angle = 2. * M_PI * i / ring.rollers;
+    centres.push_back(ring.roller_circle_radius *
+                      Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+  }
+  return centres;
+}
+
+std::vector<Eigen::Vector2d> pin_centres(const geometry::CycloidSceneSpec& scene)
+{
+  std::vector<Eigen::Vector2d> centres;
+  for (unsigned int j = 0; j < scene.output_pins; ++j)
+    centres.push_back(geometry::output_pin_centre(scene, j));
+  return centres;
+}
+
+// Largest von Mises stress (Pa) over the Gauss points of the cells of `material`; 2D plane
+// stress has σ_zz = 0, plane strain σ_zz = ν(σ_xx + σ_yy).
+template <int dim>
+double max_von_mises(const fem::ElasticSystem<dim>& system, const Vector<double>& u,
+                     types::material_id material)
+{
+  const auto& fe = system.get_fe();
+  const QGauss<dim> quadrature(fe.degree + 1);
+  FEValues<dim> fe_values(system.get_mapping(), fe, quadrature, update_gradients);
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  const bool plane_stress =
+      dim == 2 && system.get_parameters().model == fem::PlanarModel::plane_stress;
+  const fem::Material& m = system.material(material);
+  const double mu = m.lame_mu();
+  double lambda = m.lame_lambda();
+  if (plane_stress)
+    lambda = 2. * lambda * mu / (lambda + 2. * mu);
+  double largest = 0.;
+  for (const auto& cell : system.get_dof_handler().active_cell_iterators())
+  {
+    if (cell->material_id() != material)
+      continue;
+    fe_values.reinit(cell);
+    cell->get_dof_indices(dofs);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+    {
+      Tensor<2, dim> gradient;
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        const unsigned int c = fe.system_to_component_index(i).first;
+        gradient[c] += u[dofs[i]] * fe_values.shape_grad_component(i, q, c);
+      }
+      const SymmetricTensor<2, dim> strain = symmetrize(gradient);
+      const SymmetricTensor<2, dim> stress =
+          lambda * trace(strain) * unit_symmetric_tensor<dim>() + 2. * mu * strain;
+      SymmetricTensor<2, 3> full;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = a; b < dim; ++b)
+          full[a][b] = stress[a][b];
+      if (dim == 2 && !plane_stress)
+        full[2][2] = m.poisson_ratio * (stress[0][0] + stress[1][1]);
+      const SymmetricTensor<2, 3> deviator = full - trace(full) / 3. * unit_symmetric_tensor<3>();
+      largest = std::max(largest, std::sqrt(1.5 * scalar_product(deviator, deviator)));
+    }
+  }
+  return largest;
+}
+} // namespace
+
+geometry::CycloidSceneSpec default_cycloid_load_scene()
+{
+  geometry::CycloidSceneSpec scene;
+  scene.output_pin_bodies = true;
+  // Rollers this close to the disc are contact pairs (and meshed finely): the corrected
+  // profiles of the correction table open at most a few hundredths of a millimetre near
+  // the loaded flanks; farther rollers cannot close under M_c (their clearance exceeds the
+  // disc's elastic rotation times their lever).
+  scene.contact_clearance = 0.1e-3;
+  scene.mesh.contact_size = 40e-6;
+  scene.mesh.fine_radius = 0.3e-3;
+  scene.mesh.body_size = 0.8e-3;
+  scene.mesh.rim_size = 4e-3;
+  scene.mesh.growth_rate = 0.3;
+  return scene;
+}
+
+fem::ElasticityParameters default_cycloid_elasticity()
+{
+  fem::ElasticityParameters elasticity;
+  elasticity.model = fem::PlanarModel::plane_stress;
+  elasticity.degree = 1;
+  return elasticity;
+}
+
+void check_cycloid_load_settings(const CycloidLoadSettings& s)
+{
+  if (!(std::abs(s.output_torque) > 0.) || !std::isfinite(s.output_torque))
+    throw InputError(cycloid_parameter::torque,
+                     "must not be zero: without a torque nothing is loaded (M_c per disc, N·m)");
+  if (s.scene.output_pins == 0)
+    throw InputError("Cycloid scene/output pins", "the output torque needs at least one pin");
+  if (s.scene_file.empty())
+    throw InputError("scene file", "no path given for the scene mesh");
+}
+
+template <int dim>
+CycloidLoads<dim>::CycloidLoads(const CycloidLoadSettings& given) : settings(given)
+{
+  check_cycloid_load_settings(settings);
+  settings.scene.output_pin_bodies = true;
+  settings.scene.mesh.dimension = dim;
+  settings.scene.disc_rotation =
+      geometry::disc_rotation_at_crank_angle(settings.scene.ring, settings.crank_angle);
+  settings.scene.young_modulus = settings.material.youngs_modulus;
+  settings.scene.poisson_ratio = settings.material.poisson_ratio;
+  settings.elasticity.thickness = settings.scene.disc_width;
+}
+
+template <int dim>
+CycloidLoads<dim>::~CycloidLoads() = default;
+
+template <int dim>
+CycloidLoadResult CycloidLoads<dim>::run()
+{
+  Timer timer(MPI_COMM_SELF, true);
+  result = CycloidLoadResult();
+  result.crank_angle = settings.crank_angle;
+  result.disc_rotation = settings.scene.disc_rotation;
+  result.output_torque = settings.output_torque;
+  make_scene();
+  setup_problem();
+  solve();
+  evaluate();
+  if (!settings.output_directory.empty())
+    result.output_files = problem->output_results(settings.output_directory, settings.output_base);
+  result.total_time = timer.wall_time();
+  return result;
+}
+
+template <int dim>
+void CycloidLoads<dim>::make_scene()
+{
+  const geometry::SceneInfo info =
+      geometry::write_cycloid_scene(settings.scene, settings.scene_file);
+  result.contact_size = info.contact_size;
+  result.scene_time = info.time_total;
+}
+
+template <int dim>
+void CycloidLoads<dim>::setup_problem()
+{
+  problem = std::make_unique<contact::ContactProblem<dim>>(
+      MPI_COMM_SELF, settings.elasticity, settings.linear_solver, settings.contact);
+  Triangulation<dim>& tria = problem->system().triangulation();
+  fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
+  problem->system().set_materials({{geometry::scene_ids::first_body, settings.material},
+                                   {geometry::scene_ids::second_body, settings.roller_material},
+                                   {geometry::cycloid_ids::output_pin_body, settings.material}},
+                                  "material");
+
+  // Faces of every roller and pin, and the disc faces nearest to each, get their own ids.
+  const geometry::CycloidDiscSpec& ring = settings.scene.ring;
+  const Eigen::Vector2d centre = disc_centre(settings);
+  const std::vector<Eigen::Vector2d> rollers = roller_centres(ring),
+                                     pins = pin_centres(settings.scene);
+  std::vector<Eigen::Vector2d> holes;
+  for (const auto& c : pins)
+    holes.push_back(centre + c);
+  for (const auto& cell : tria.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+    {
+      const auto face = cell->face(f);
+      if (!face->at_boundary())
+        continue;
+      const Eigen::Vector2d x = planar(face->center());
+      switch (face->boundary_id())
+      {
+      case geometry::scene_ids::second_contact:
+        face->set_boundary_id(roller_surface_base + nearest(rollers, x));
+        break;
+      case geometry::scene_ids::first_contact:
+        face->set_boundary_id(disc_lobe_base + nearest(rollers, x));
+        break;
+      case geometry::cycloid_ids::output_pin_surfaces:
+        face->set_boundary_id(pin_surface_base + nearest(pins, x));
+        break;
+      case geometry::scene_ids::output_pin_holes:
+        face->set_boundary_id(pin_hole_base + nearest(holes, x));
+        break;
+      default:
+        break;
+      }
+    }
+
+  // Contact pairs: the rollers the scene refined (clearance within the contact clearance) and
+  // every pin; the others keep P_i = 0 (documented in the result as not candidate).
+  const geometry::CycloidDiscSpec disc =
+      settings.scene.disc.rollers == 0 ? ring : settings.scene.disc;
+  const std::vector<geometry::RollerContact> contacts =
+      geometry::roller_contacts(ring, disc, settings.scene.disc_rotation);
+  const double play =
+      settings.scene.output_pin_hole_radius - settings.scene.output_pin_radius - ring.eccentricity;
+  unsigned int pair = 0;
+  result.rollers.clear();
+  roller_pairs.clear();
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+  {
+    CycloidContactLoad load;
+    load.index = i;
+    load.angle = 2. * M_PI * i / ring.rollers;
+    load.initial_gap = contacts[i].clearance;
+    load.candidate = contacts[i].clearance <= settings.scene.contact_clearance;
+    if (!(contacts[i].clearance > -settings.contact.overlap_tolerance))
+      throw InputError("Cycloid disc/roller radius",
+                       "roller " + std::to_string(i) + " overlaps the disc by " +
+                           std::to_string(-contacts[i].clearance * 1e3) + " mm");
+    result.rollers.push_back(load);
+    roller_pairs.push_back(load.candidate ? pair++ : numbers::invalid_unsigned_int);
+    if (load.candidate)
+      problem->add_contact_pair({types::boundary_id(roller_surface_base + i)},
+                                {types::boundary_id(disc_lobe_base + i)},
+                                "roller " + std::to_string(i));
+  }
+  result.pins.clear();
+  pin_pairs.clear();
+  for (unsigned int j = 0; j < pins.size(); ++j)
+  {
+    CycloidContactLoad load;
+    load.index = j;
+    load.angle = std::atan2(pins[j].y(), pins[j].x());
+    load.initial_gap = play;
+    load.candidate = true;
+    result.pins.push_back(load);
+    pin_pairs.push_back(pair++);
+    problem->add_contact_pair({types::boundary_id(pin_surface_base + j)},
+                              {types::boundary_id(pin_hole_base + j)}, "pin " + std::to_string(j));
+  }
+
+  // Supports (see the header): bearing (free to turn), fixed roller pins, rigid output member.
+  Point<dim> bearing_axis, ring_axis;
+  bearing_axis[0] = centre.x();
+  bearing_axis[1] = centre.y();
+  problem->add_rigid_hub(geometry::scene_ids::first_bore, bearing_axis,
+                         fem::RigidHub<dim>::Control::torque, 0., "disc bearing");
+  problem->add_displacement(geometry::scene_ids::second_bore, Tensor<1, dim>(), "roller pins");
+  problem->add_rigid_hub(geometry::cycloid_ids::output_pin_bores, ring_axis,
+                         fem::RigidHub<dim>::Control::torque, settings.output_torque,
+                         "output member");
+  result.n_cells = tria.n_active_cells();
+}
+
+template <int dim>
+void CycloidLoads<dim>::solve()
+{
+  problem->setup_system();
+  const contact::ContactResults<dim>& contact = problem->solve();
+  result.n_dofs = contact.n_dofs;
+  result.active_set_iterations = contact.active_set_iterations;
+  result.setup_time = contact.setup_time;
+  result.solve_time = contact.assembly_time + contact.solve_time;
+}
+
+template <int dim>
+void CycloidLoads<dim>::evaluate()
+{
+  const contact::ContactResults<dim>& contact = problem->results();
+  const auto support = [&contact](const std::string& name) -> const contact::SupportResult<dim>&
+  {
+    for (const auto& s : contact.supports)
+      if (s.name == name)
+        return s;
+    throw SolverFailure("cycloid loads", "no support named " + name);
+  };
+  const contact::SupportResult<dim>& bearing = support("disc bearing");
+  const contact::SupportResult<dim>& output = support("output member");
+  const Eigen::Vector2d centre = disc_centre(settings);
+  const std::vector<Eigen::Vector2d> rollers = roller_centres(settings.scene.ring),
+                                     pins = pin_centres(settings.scene);
+  const double torque = settings.output_torque;
+
+  // Contact forces on the rollers and pins; their lines of action run through the roller and
+  // pin centres (frictionless contact on circles), which gives their moments.
+  Eigen::Vector2d on_disc = Eigen::Vector2d::Zero();
+  double disc_moment = bearing.torque, output_moment = 0.;
+  const auto collect =
+      [&](CycloidContactLoad& load, unsigned int pair, const Eigen::Vector2d& line_point)
+  {
+    if (pair == numbers::invalid_unsigned_int)
+      return;
+    const contact::PairResult<dim>& p = contact.pairs[pair];
+    const Eigen::Vector2d force = planar(p.force_on_slave);
+    load.force = p.normal_force;
+    load.force_x = force.x();
+    load.force_y = force.y();
+    load.max_pressure = p.max_pressure;
+    load.contact_length = p.contact_length;
+    on_disc -= force;
+    disc_moment += cross(line_point - centre, -force);
+    result.max_contact_pressure = std::max(result.max_contact_pressure, p.max_pressure);
+  };
+  for (unsigned int i = 0; i < rollers.size(); ++i)
+    collect(result.rollers[i], roller_pairs[i], rollers[i]);
+  for (unsigned int j = 0; j < pins.size(); ++j)
+  {
+    collect(result.pins[j], pin_pairs[j], pins[j]);
+    output_moment +=
+        cross(pins[j], Eigen::Vector2d(result.pins[j].force_x, result.pins[j].force_y));
+  }
+
+  const auto largest = [](const std::vector<CycloidContactLoad>& loads, unsigned int& loaded)
+  {
+    double top = 0.;
+    for (const auto& l : loads)
+      top = std::max(top, l.force);
+    loaded = 0;
+    for (const auto& l : loads)
+      loaded += l.force > 1e-6 * top;
+    return top;
+  };
+  result.max_roller_force = largest(result.rollers, result.loaded_rollers);
+  result.max_pin_force = largest(result.pins, result.loaded_pins);
+
+  // Bearing: the support's force on the disc; the disc pushes the eccentric with its opposite.
+  const Eigen::Vector2d support_force = planar(bearing.force);
+  const Eigen::Vector2d on_eccentric = -support_force;
+  result.bearing_force = on_eccentric.norm();
+  result.bearing_force_direction = std::atan2(on_eccentric.y(), on_eccentric.x());
+  result.input_torque = std::abs(cross(centre, on_eccentric));
+  const double e = settings.scene.ring.eccentricity;
+  result.bearing_angle = std::acos(std::min(1., result.input_torque / (e * result.bearing_force)));
+  const double lobes = settings.scene.ring.rollers - 1.;
+  result.input_torque_ratio = result.input_torque / (std::abs(torque) / lobes);
+
+  result.disc_force_balance = (support_force + on_disc).norm() / result.bearing_force;
+  result.disc_moment_balance = std::abs(disc_moment) / std::abs(torque);
+  result.output_moment_balance = std::abs(output_moment + torque) / std::abs(torque);
+  result.output_rotation = output.rotation;
+  result.disc_rotation_load = bearing.rotation;
+  result.disc_von_mises =
+      max_von_mises(problem->system(), problem->solution(), geometry::scene_ids::first_body);
+
+  result.analytic =
+      analytic_cycloid_loads(settings.scene, torque, settings.roller_material.youngs_modulus);
+  for (unsigned int i = 0; i < result.rollers.size(); ++i)
+    result.rollers[i].analytic_force = result.analytic.roller_forces[i];
+  for (unsigned int j = 0; j < result.pins.size(); ++j)
+    result.pins[j].analytic_force = result.analytic.pin_forces[j];
+}
+
+template class CycloidLoads<2>;
+template class CycloidLoads<3>;
+} // namespace gearstiff::stiffness

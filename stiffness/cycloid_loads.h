@@ -1,0 +1,144 @@
+// Load distribution of a cycloid (Cyclo) drive at one crank angle from a frictional FE contact
+// solve: the roller forces P_i, the output-pin forces Q_j and the eccentric-bearing force R of
+// the drive of Chmurawa & Łokiec (../shared/reference/gear-data.md §4), nominal or corrected
+// disc profile.
+//
+// Load case — statically equivalent to the running drive at crank angle φ_h. In steady running
+// the (slow) accelerations are negligible and every body is in equilibrium under its contact
+// forces; freezing the mechanism at φ_h therefore needs only supports that transmit the same
+// forces and leave the same freedoms:
+//  - the eccentric is held at φ_h: the disc's bore sits on a bearing that fixes the bore centre
+//    C = e·(cos φ_h, sin φ_h) and lets the disc turn about it (a torque-free rigid hub: the
+//    bearing transmits a force, no moment — the input torque M_h = |C × R| is what holds the
+//    crank, checked against M_c/|i|);
+//  - the rollers turn freely on fixed pins: the disc–roller contact is frictionless, so the
+//    roller's spin carries no load, and each roller is held at its pin bore (fixed);
+//  - the output pins are one body each in their holes (frictionless, the pins roll in the holes
+//    through their sleeves), their bores all held by ONE rigid output member turning about the
+//    ring centre (one rigid hub over every pin bore) which carries the output torque M_c
+//    (counter-clockwise > 0), the rotation θ of the member being the unknown.
+// The disc's rotation β and the output rotation θ are solved for, so every force is at exactly
+// M_c. The geometry's clearances (corrected profile's Δr_i, pin-hole play) are in the mesh:
+// they enter the contact solve as initial gaps. Each roller and each pin is its own contact pair
+// (slave: roller or pin surface, master: the disc faces nearest to it), so P_i and Q_j are
+// exact sums of that pair's multipliers. 2D is plane stress of the disc width by default.
+//
+//   CycloidLoadSettings settings;                 // the §4 drive, M_c = 440 N·m, nominal
+//   settings.scene_file = "/tmp/cycloid.msh";
+//   const CycloidLoadResult r = CycloidLoads<2>(settings).run();   // r.max_roller_force in N
+#pragma once
+
+#include "contact/contact_problem.h"
+#include "fem/parameters.h"
+#include "geometry/scene_cycloid.h"
+#include "stiffness/cycloid_analytic.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gearstiff::stiffness
+{
+// Names of the settings in the command's parameter file, for InputError.
+namespace cycloid_parameter
+{
+inline const std::string torque = "Cycloid loads/output torque";
+inline const std::string contact_arc_ratio = "Cycloid loads/contact arc ratio";
+inline const std::string crank_angle = "Cycloid loads/crank angle";
+inline const std::string positions = "Cycloid loads/sweep positions";
+inline const std::string load_steps = "Cycloid loads/torque steps";
+} // namespace cycloid_parameter
+
+// The §4 drive with output pins in their holes and explicit mesh sizes.
+geometry::CycloidSceneSpec default_cycloid_load_scene();
+// Plane stress (the disc is thin), Q1, thickness = disc width.
+fem::ElasticityParameters default_cycloid_elasticity();
+
+struct CycloidLoadSettings
+{
+  // Ring, disc profile (nominal: disc.rollers = 0), bore, pins, widths and mesh sizes (SI);
+  // disc_rotation is set from the crank angle.
+  geometry::CycloidSceneSpec scene = default_cycloid_load_scene();
+  double crank_angle = 0.;     // rad, φ_h: the disc centre at e·(cos φ_h, sin φ_h)
+  double output_torque = 440.; // N·m, M_c on the output member (counter-clockwise > 0), ≠ 0
+  fem::ElasticityParameters elasticity = default_cycloid_elasticity(); // thickness: disc width
+  fem::LinearSolverParameters linear_solver;
+  contact::ContactParameters contact;  // frictionless by default (see the load case)
+  fem::Material material;              // disc and output pins (steel 210 GPa, 0.3)
+  fem::Material roller_material;       // rollers (the same steel by default)
+  std::string scene_file;              // path of the .msh to write
+  std::string output_directory;        // VTU here; empty: none
+  std::string output_base = "cycloid"; // VTU base name
+};
+
+// One roller or pin and what it carries.
+struct CycloidContactLoad
+{
+  unsigned int index = 0;  // -, roller i (polar angle 2πi/z_k) or pin j
+  double angle = 0.;       // rad, polar angle of its centre about the ring centre
+  double initial_gap = 0.; // m, geometric clearance (roller Δr_i, pin play)
+  double force = 0.;       // N, Σ of the pair's normal multipliers (P_i or Q_j); 0: no pair
+  double force_x = 0., force_y = 0.; // N, resultant on the roller / pin
+  double max_pressure = 0.;          // Pa
+  double contact_length = 0.;        // m
+  double analytic_force = 0.;        // N, the rigid-disc estimate (cycloid_analytic.h)
+  bool candidate = false;            // modelled as a contact pair
+};
+
+struct CycloidLoadResult
+{
+  double crank_angle = 0.;   // rad
+  double disc_rotation = 0.; // rad, ψ of the scene (nominal kinematics)
+  double output_torque = 0.; // N·m, M_c applied
+  std::vector<CycloidContactLoad> rollers, pins;
+  double max_roller_force = 0., max_pin_force = 0.; // N
+  unsigned int loaded_rollers = 0, loaded_pins = 0; // -, carrying > 1e-6 of the largest
+  double bearing_force = 0.;                        // N, R: the disc's force on the eccentric
+  double bearing_angle = 0.;           // rad, α_R: M_h = R·e·cos α_R (from the crank's normal)
+  double bearing_force_direction = 0.; // rad, polar angle of R
+  double input_torque = 0.;            // N·m, M_h = |C × R| holding the eccentric
+  double input_torque_ratio = 0.;      // -, M_h/(M_c/z_s): 1 for rigid kinematics
+  // Balance checks (relative, solver precision expected for the first two).
+  double disc_force_balance = 0.;    // -, |R_on_disc − Σ contact forces| / R
+  double disc_moment_balance = 0.;   // -, |moments about C of P_i and Q_j| / M_c
+  double output_moment_balance = 0.; // -, |Σ c_j × Q_j − M_c| / M_c (lines through pin centres)
+  double output_rotation = 0.;       // rad, θ of the output member under M_c
+  double disc_rotation_load = 0.;    // rad, β of the disc about its bearing
+  double max_contact_pressure = 0.;  // Pa
+  double disc_von_mises = 0.;        // Pa, largest von Mises stress in the disc
+  CycloidAnalyticResult analytic;    // the rigid-disc estimate at the same position
+  // Model and cost.
+  unsigned int n_cells = 0, n_dofs = 0, active_set_iterations = 0;
+  double contact_size = 0.;                                                  // m
+  double scene_time = 0., setup_time = 0., solve_time = 0., total_time = 0.; // s, wall
+  std::vector<std::string> output_files;
+};
+
+template <int dim>
+class CycloidLoads
+{
+public:
+  // Checks the settings (InputError naming the parameter) before anything is meshed. Solves
+  // serially (MPI_COMM_SELF): a 2D position takes seconds; sweeps spread positions over ranks.
+  explicit CycloidLoads(const CycloidLoadSettings& settings);
+  ~CycloidLoads();
+
+  // Scene, contact solve, evaluation. InputError for an impossible scene, SolverFailure when the
+  // contact iteration fails.
+  CycloidLoadResult run();
+
+private:
+  void make_scene();
+  void setup_problem();
+  void solve();
+  void evaluate();
+
+  CycloidLoadSettings settings;
+  std::unique_ptr<contact::ContactProblem<dim>> problem;
+  std::vector<unsigned int> roller_pairs, pin_pairs; // contact pair index of each roller / pin
+  CycloidLoadResult result;
+};
+
+// Checks what the scene cannot (torque, materials); throws InputError naming the parameter.
+void check_cycloid_load_settings(const CycloidLoadSettings& settings);
+} // namespace gearstiff::stiffness
