@@ -116,7 +116,7 @@ def message_cases(binary, work):
                           timeout=60)
     check(proc.returncode == 2 and "folder" in proc.stderr,
           f"messages: a folder as parameter file is named a folder ({proc.stderr.strip()})")
-    proc = subprocess.run([binary, "kinematics", "--set", "Gear pair/module=" + "7" * 200_000],
+    proc = subprocess.run([binary, "gear-pair", "--set", "Gear pair/Pinion/module=" + "7" * 200_000],
                           capture_output=True, text=True, timeout=60)
     check(proc.returncode == 2 and len(proc.stderr) < 1000,
           f"messages: a 200 kB value gives a short error ({len(proc.stderr)} characters)")
@@ -124,7 +124,10 @@ def message_cases(binary, work):
 
 def main():
     binary, work = sys.argv[1], sys.argv[2]
-    launcher = shlex.split(sys.argv[3]) + ["-np", "2"] if len(sys.argv) > 3 and sys.argv[3] else []
+    # MPIEXEC ARGS arrive as a CMake list ("a;b;c") or a shell word list.
+    launcher = []
+    if len(sys.argv) > 3 and sys.argv[3]:
+        launcher = shlex.split(sys.argv[3].replace(";", " ")) + ["-np", "2"]
     os.makedirs(work, exist_ok=True)
     signal_case(binary, work, signal.SIGTERM)
     signal_case(binary, work, signal.SIGINT)
