@@ -105,13 +105,26 @@ CommandLine parse_command_line(int argc, char** argv)
 }
 
 // An error message as one line of reasonable length: newlines become spaces, and a message
-// beyond a few hundred characters (a huge value repeated somewhere) is cut.
-std::string one_line(std::string text)
+// beyond a few hundred characters is cut.
+std::string one_line(const std::string& text)
 {
-  for (auto& c : text)
-    if (c == '\n' || c == '\r')
-      c = ' ';
-  return shortened(text, 600);
+  // Words (runs without white space) are shortened one by one, so a huge value quoted inside
+  // a parser's message does not push the rest of the message out; runs of spaces collapse.
+  std::string line, word;
+  const auto flush = [&]()
+  {
+    if (word.empty())
+      return;
+    line += (line.empty() ? "" : " ") + shortened(word, 2 * limits::echoed_value_length);
+    word.clear();
+  };
+  for (const char c : text)
+    if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
+      flush();
+    else
+      word += c;
+  flush();
+  return shortened(line, 600);
 }
 
 // deal.II's exceptions carry file/line context meant for developers; users get the message.

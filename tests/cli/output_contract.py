@@ -116,10 +116,18 @@ def message_cases(binary, work):
                           timeout=60)
     check(proc.returncode == 2 and "folder" in proc.stderr,
           f"messages: a folder as parameter file is named a folder ({proc.stderr.strip()})")
-    proc = subprocess.run([binary, "gear-pair", "--set", "Gear pair/Pinion/module=" + "7" * 200_000],
-                          capture_output=True, text=True, timeout=60)
-    check(proc.returncode == 2 and len(proc.stderr) < 1000,
-          f"messages: a 200 kB value gives a short error ({len(proc.stderr)} characters)")
+    # 200 kB: through a parameter file (one command-line argument is limited to 128 kB), and
+    # 120 kB through --set.
+    huge = os.path.join(folder, "huge.prm")
+    with open(huge, "w") as f:
+        f.write("subsection Gear pair\n  subsection Pinion\n    set module = " + "7" * 200_000 +
+                "\n  end\nend\n")
+    for how, args in (("file", [huge]), ("--set", ["--set", "Gear pair/Pinion/module=" + "7" * 120_000])):
+        proc = subprocess.run([binary, "gear-pair"] + args, capture_output=True, text=True,
+                              timeout=60)
+        check(proc.returncode == 2 and len(proc.stderr) < 1000,
+              f"messages: a huge value ({how}) gives a short error ({len(proc.stderr)} characters: "
+              f"{proc.stderr.strip()[:200]})")
 
 
 def main():
