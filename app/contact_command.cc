@@ -90,8 +90,8 @@ void check_built_in_size(const contact::CylinderPairGeometry& geometry, const un
 
 // m, the range of body sizes a mesh in the right unit spans: from a watch gear to a wind-turbine
 // stage. A mesh outside it by a factor of 1000 is almost surely in another length unit. Inside
-// the wider range but outside the usual one (1 mm to 2 m), an overlap of the bodies is more
-// likely a unit mistake than a modelling one, and its message says so.
+// the wider range but outside the usual one (1 mm to 2 m), bad contact geometry is more likely
+// a unit mistake than a modelling one, and its message says so.
 constexpr double smallest_plausible_extent = 1e-4;
 constexpr double largest_plausible_extent = 20.;
 constexpr double smallest_usual_extent = 1e-3;
@@ -117,8 +117,9 @@ void check_mesh_extent(const Triangulation<dim>& tria, const double unit)
                          "of the mesh (mm expected, Length unit = 1e-3)");
 }
 
-// Runs the contact problem of a user mesh. An overlap of the bodies of a mesh of unusual size
-// usually means a mesh in another unit than the one declared, so the message says so.
+// Runs the contact problem of a user mesh. Bad geometry (bodies that overlap, or lie beyond the
+// search distance) in a mesh of unusual size usually means a mesh in another unit than the one
+// declared, so the message says so.
 template <int dim>
 const contact::ContactResults<dim>& run_with_unit_hint(contact::ContactProblem<dim>& problem,
                                                        const double unit)
@@ -130,8 +131,7 @@ const contact::ContactResults<dim>& run_with_unit_hint(contact::ContactProblem<d
   catch (const InputError& e)
   {
     const double extent = GridTools::diameter(problem.system().triangulation());
-    if (e.reason().find("overlap") == std::string::npos ||
-        (extent >= smallest_usual_extent && extent <= largest_usual_extent))
+    if (extent >= smallest_usual_extent && extent <= largest_usual_extent)
       throw;
     throw InputError(e.parameter(), e.reason() + "; the mesh spans " + millimetres(extent) +
                                         " at Mesh/Length unit = " + Utilities::to_string(unit) +
