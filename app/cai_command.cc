@@ -49,6 +49,14 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   prm.leave_subsection();
   if (p.mode != "sweep")
     throw InputError("Stiffness/mode", "the Cai calibration needs mode = sweep");
+  // Checked before the FE sweep: every position yields at least one pair sample, so the fit's
+  // unknowns (the scale, or the scale and three shape coefficients: dynamics/cai_stiffness.h)
+  // are determined only with at least that many positions.
+  const unsigned int unknowns = fit_shape ? 3 : 1;
+  if (p.sweep.positions < unknowns)
+    throw InputError(stiffness::stiffness_parameter::positions,
+                     "must be at least " + std::to_string(unknowns) + " for the Cai fit" +
+                         (fit_shape ? " of the shape (Cai calibration/fit shape = true)" : ""));
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const double contact_ratio = pair.transverse_contact_ratio;
   Report& report = context.report;

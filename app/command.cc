@@ -1,96 +1,269 @@
 #include "app/command.h"
 
+#include "errors/errors.h"
+
+#include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
+#include <pthread.h>
 #include <sstream>
+#include <thread>
+#include <unistd.h>
 
 namespace gearstiff::app
 {
-  std::map<std::string, Command>& command_registry()
+std::map<std::string, Command>& command_registry()
+{
+  // Function-local static: registrations from other translation units run before main() in
+  // unspecified order, so the map must exist on first use.
+  static std::map<std::string, Command> registry;
+  return registry;
+}
+
+CommandRegistration::CommandRegistration(Command command)
+{
+  const std::string name = command.name;
+  command_registry().emplace(name, std::move(command));
+}
+
+namespace
+{
+namespace fs = std::filesystem;
+const std::string staging_prefix = ".gearstiff-staging-";
+
+// The staging folder the signal thread removes (empty: none); guarded by the mutex.
+std::mutex staging_mutex;
+std::string staging_to_remove;
+
+void set_staging_to_remove(const std::string& path)
+{
+  const std::lock_guard<std::mutex> lock(staging_mutex);
+  staging_to_remove = path;
+}
+
+// The nearest folder at or above `path` that exists (the current folder at the end).
+fs::path existing_ancestor(const fs::path& path)
+{
+  fs::path candidate = fs::absolute(path).lexically_normal();
+  while (!candidate.empty() && !fs::exists(candidate))
+    candidate = candidate.parent_path();
+  return candidate.empty() ? fs::current_path() : candidate;
+}
+
+// Staging folders in `folder` of processes that no longer run (killed by SIGKILL, or a
+// crash): nothing will ever move or remove them.
+void remove_stale_staging(const fs::path& folder)
+{
+  std::error_code error;
+  if (!fs::is_directory(folder, error))
+    return;
+  for (const auto& entry : fs::directory_iterator(folder, error))
   {
-    // Function-local static: registrations from other translation units run before main() in
-    // unspecified order, so the map must exist on first use.
-    static std::map<std::string, Command> registry;
-    return registry;
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(staging_prefix, 0) != 0)
+      continue;
+    const std::string digits = name.substr(staging_prefix.size());
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const long pid = std::stol(digits);
+    if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      fs::remove_all(entry.path(), error);
   }
+}
 
-  CommandRegistration::CommandRegistration(Command command)
+void wait_for_signals(sigset_t signals)
+{
+  int signal_number = 0;
+  if (sigwait(&signals, &signal_number) != 0)
+    return;
   {
-    const std::string name = command.name;
-    command_registry().emplace(name, std::move(command));
+    const std::lock_guard<std::mutex> lock(staging_mutex);
+    std::error_code error;
+    // Twice: the main thread may still be creating a file while the first pass runs.
+    for (int pass = 0; pass < 2 && !staging_to_remove.empty(); ++pass)
+      fs::remove_all(staging_to_remove, error);
   }
+  std::signal(signal_number, SIG_DFL);
+  pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
+  raise(signal_number);
+  _exit(128 + signal_number); // not reached: the default action ends the process
+}
+} // namespace
 
-  std::string tools_directory()
+void install_signal_cleanup()
+{
+  sigset_t signals;
+  sigemptyset(&signals);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP})
   {
-    if (const char* dir = std::getenv("GEARSTIFF_TOOLS_DIR"))
-      return dir;
-    return GEARSTIFF_TOOLS_DIR;
-  }
-
-  CommandContext::CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
-                                 const std::string& staging_directory, bool quiet)
-    : mpi_communicator(communicator)
-    , pcout(pcout)
-    , staging_directory(staging_directory)
-    , quiet(quiet)
-  {}
-
-  bool CommandContext::is_root() const
-  {
-    int rank = 0;
-    MPI_Comm_rank(mpi_communicator, &rank);
-    return rank == 0;
-  }
-
-  std::string CommandContext::output_file(const std::string& name, const std::string& description)
-  {
-    if (staging_directory.empty())
-      throw std::logic_error("output_file('" + name + "') called without -o DIR");
-    const std::filesystem::path path = std::filesystem::path(staging_directory) / name;
-    std::filesystem::create_directories(path.parent_path());
-    report.add_output_file(name, description);
-    return path.string();
-  }
-
-  namespace
-  {
-    std::string shell_quote(const std::string& s)
+    // A signal the caller ignores (nohup, a background job) stays ignored.
+    struct sigaction current
     {
-      std::string quoted = "'";
-      for (const char c : s)
-        quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-      return quoted + "'";
-    }
-  } // namespace
+    };
+    if (sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler != SIG_IGN)
+      sigaddset(&signals, signal_number);
+  }
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  std::thread(wait_for_signals, signals).detach();
+}
 
-  bool CommandContext::plot(const std::string& script, const std::vector<std::string>& arguments,
-                            const std::string& png_name, const std::string& description)
+StagedOutput::StagedOutput(const std::string& directory_, MPI_Comm communicator)
+    : directory(directory_), communicator(communicator)
+{
+  int rank = 0;
+  MPI_Comm_rank(communicator, &rank);
+  root = rank == 0;
+  // All ranks must agree on the name: rank 0's process id. Rank 0 checks and creates.
+  long id = static_cast<long>(getpid());
+  MPI_Bcast(&id, 1, MPI_LONG, 0, communicator);
+  int ok = 1;
+  std::string problem;
+  fs::path parent;
+  if (root)
   {
-    if (!writes_files() || !is_root())
-      return false;
-    const std::string python =
+    std::error_code error;
+    parent = existing_ancestor(directory);
+    if (fs::exists(directory, error) && !fs::is_directory(directory, error))
+      problem = "'" + directory + "' exists and is not a folder";
+    else if (!fs::is_directory(parent, error))
+      problem = "'" + parent.string() + "' is not a folder";
+    else if (access(parent.c_str(), W_OK | X_OK) != 0)
+      problem = "cannot write into '" + parent.string() + "'";
+    if (problem.empty())
+    {
+      remove_stale_staging(parent);
+      remove_stale_staging(directory); // where earlier versions staged
+      staging = (parent / (staging_prefix + std::to_string(id))).string();
+      set_staging_to_remove(staging);
+      fs::create_directory(staging, error);
+      if (error)
+        problem = "cannot create '" + staging + "': " + error.message();
+    }
+    ok = problem.empty();
+  }
+  MPI_Bcast(&ok, 1, MPI_INT, 0, communicator);
+  if (!ok)
+  {
+    if (root)
+      set_staging_to_remove("");
+    throw InputError("-o", problem);
+  }
+  // The other ranks learn the path (they write their own VTU pieces into it).
+  int length = static_cast<int>(staging.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, communicator);
+  staging.resize(length);
+  MPI_Bcast(staging.data(), length, MPI_CHAR, 0, communicator);
+}
+
+StagedOutput::~StagedOutput()
+{
+  if (!root || committed)
+    return;
+  std::error_code error;
+  fs::remove_all(staging, error);
+  set_staging_to_remove("");
+}
+
+void StagedOutput::commit()
+{
+  // Every rank has written its files (VTU pieces) before rank 0 moves them.
+  MPI_Barrier(communicator);
+  if (!root)
+    return;
+  std::error_code error;
+  if (!fs::exists(directory, error))
+  {
+    // A new folder appears complete, in one rename.
+    fs::create_directories(fs::absolute(directory).lexically_normal().parent_path(), error);
+    fs::rename(staging, directory);
+  }
+  else
+  {
+    // An existing folder: its files of the same names are replaced, others kept.
+    for (const auto& entry : fs::directory_iterator(staging))
+    {
+      const fs::path target = fs::path(directory) / entry.path().filename();
+      fs::remove_all(target);
+      fs::rename(entry.path(), target);
+    }
+    fs::remove_all(staging);
+  }
+  committed = true;
+  set_staging_to_remove("");
+}
+
+std::string tools_directory()
+{
+  if (const char* dir = std::getenv("GEARSTIFF_TOOLS_DIR"))
+    return dir;
+  return GEARSTIFF_TOOLS_DIR;
+}
+
+CommandContext::CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
+                               const std::string& staging_directory, bool quiet)
+    : mpi_communicator(communicator), pcout(pcout), staging_directory(staging_directory),
+      quiet(quiet)
+{
+}
+
+bool CommandContext::is_root() const
+{
+  int rank = 0;
+  MPI_Comm_rank(mpi_communicator, &rank);
+  return rank == 0;
+}
+
+std::string CommandContext::output_file(const std::string& name, const std::string& description)
+{
+  if (staging_directory.empty())
+    throw std::logic_error("output_file('" + name + "') called without -o DIR");
+  const std::filesystem::path path = std::filesystem::path(staging_directory) / name;
+  std::filesystem::create_directories(path.parent_path());
+  report.add_output_file(name, description);
+  return path.string();
+}
+
+namespace
+{
+std::string shell_quote(const std::string& s)
+{
+  std::string quoted = "'";
+  for (const char c : s)
+    quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+} // namespace
+
+bool CommandContext::plot(const std::string& script, const std::vector<std::string>& arguments,
+                          const std::string& png_name, const std::string& description)
+{
+  if (!writes_files() || !is_root())
+    return false;
+  const std::string python =
       std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string script_path = tools_directory() + "/" + script;
-    if (!std::filesystem::exists(script_path))
-    {
-      pcout << "note: plot script " << script_path << " not found; " << png_name
-            << " not drawn\n";
-      return false;
-    }
-    const std::string png = (std::filesystem::path(staging_directory) / png_name).string();
-    std::ostringstream command;
-    command << python << " " << shell_quote(script_path);
-    for (const auto& a : arguments)
-      command << " " << shell_quote(a);
-    command << " " << shell_quote(png) << (quiet ? " >/dev/null 2>&1" : " 1>&2");
-    const int status = std::system(command.str().c_str());
-    if (status != 0 || !std::filesystem::exists(png))
-    {
-      pcout << "note: could not draw " << png_name
-            << " (python3 with matplotlib is needed: apt-get install python3-matplotlib)\n";
-      return false;
-    }
-    report.add_output_file(png_name, description);
-    return true;
+  const std::string script_path = tools_directory() + "/" + script;
+  if (!std::filesystem::exists(script_path))
+  {
+    pcout << "note: plot script " << script_path << " not found; " << png_name << " not drawn\n";
+    return false;
   }
+  const std::string png = (std::filesystem::path(staging_directory) / png_name).string();
+  std::ostringstream command;
+  command << python << " " << shell_quote(script_path);
+  for (const auto& a : arguments)
+    command << " " << shell_quote(a);
+  command << " " << shell_quote(png) << (quiet ? " >/dev/null 2>&1" : " 1>&2");
+  const int status = std::system(command.str().c_str());
+  if (status != 0 || !std::filesystem::exists(png))
+  {
+    pcout << "note: could not draw " << png_name
+          << " (python3 with matplotlib is needed: apt-get install python3-matplotlib)\n";
+    return false;
+  }
+  report.add_output_file(png_name, description);
+  return true;
+}
 } // namespace gearstiff::app

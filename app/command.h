@@ -7,14 +7,14 @@
 //  - has a built-in default case: it runs with no parameter file;
 //  - fills a Report; the driver prints it (text or --json) and, with -o DIR, writes it together
 //    with the parameters actually used. Files are written into a staging folder and moved into
-//    DIR only when the command succeeded, so a failed run leaves nothing that looks like a result.
+//    DIR only when the command succeeded, so a failed run leaves nothing that looks like a result
+//    (StagedOutput: DIR itself is created only then, and SIGINT/SIGTERM remove the staging).
 #pragma once
-
-#include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include "app/report.h"
 
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <map>
 #include <mpi.h>
@@ -23,49 +23,81 @@
 
 namespace gearstiff::app
 {
-  // What a running command may use besides its parameters.
-  class CommandContext
-  {
-  public:
-    CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
-                   const std::string& staging_directory, bool quiet);
+// What a running command may use besides its parameters.
+class CommandContext
+{
+public:
+  CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
+                 const std::string& staging_directory, bool quiet);
 
-    MPI_Comm mpi_communicator;
-    dealii::ConditionalOStream& pcout; // progress and diagnostics (stderr when --json)
-    Report report;
+  MPI_Comm mpi_communicator;
+  dealii::ConditionalOStream& pcout; // progress and diagnostics (stderr when --json)
+  Report report;
 
-    // True when the user gave -o DIR; only then should files be written.
-    bool writes_files() const { return !staging_directory.empty(); }
-    // Path of a result file to write (inside the staging folder); registers it for the listing.
-    std::string output_file(const std::string& name, const std::string& description);
-    // Runs tools/<script> with python3 (matplotlib) if available. A missing python3 or
-    // matplotlib is reported on pcout and skipped: charts are a convenience, never a result.
-    bool plot(const std::string& script, const std::vector<std::string>& arguments,
-              const std::string& png_name, const std::string& description);
-    bool is_root() const;
+  // True when the user gave -o DIR; only then should files be written.
+  bool writes_files() const { return !staging_directory.empty(); }
+  // Path of a result file to write (inside the staging folder); registers it for the listing.
+  std::string output_file(const std::string& name, const std::string& description);
+  // Runs tools/<script> with python3 (matplotlib) if available. A missing python3 or
+  // matplotlib is reported on pcout and skipped: charts are a convenience, never a result.
+  bool plot(const std::string& script, const std::vector<std::string>& arguments,
+            const std::string& png_name, const std::string& description);
+  bool is_root() const;
 
-  private:
-    std::string staging_directory;
-    bool quiet;
-  };
+private:
+  std::string staging_directory;
+  bool quiet;
+};
 
-  struct Command
-  {
-    std::string name;
-    std::string summary;     // one line for `gearstiff --help`
-    std::string description; // several lines for `gearstiff NAME --help`
-    std::function<void(dealii::ParameterHandler&)> declare_parameters;
-    std::function<void(dealii::ParameterHandler&, CommandContext&)> run;
-  };
+struct Command
+{
+  std::string name;
+  std::string summary;     // one line for `gearstiff --help`
+  std::string description; // several lines for `gearstiff NAME --help`
+  std::function<void(dealii::ParameterHandler&)> declare_parameters;
+  std::function<void(dealii::ParameterHandler&, CommandContext&)> run;
+};
 
-  std::map<std::string, Command>& command_registry();
+std::map<std::string, Command>& command_registry();
 
-  struct CommandRegistration
-  {
-    explicit CommandRegistration(Command command);
-  };
+struct CommandRegistration
+{
+  explicit CommandRegistration(Command command);
+};
 
-  // Directory holding tools/ (plot scripts), set at configure time; overridable by
-  // GEARSTIFF_TOOLS_DIR in the environment.
-  std::string tools_directory();
+// The life of the -o folder DIR. Results go into a hidden staging folder
+// `.gearstiff-staging-<pid>` in the nearest existing folder above DIR (same file system, so
+// the final move is a rename). commit() moves them into DIR, creating it only then (one
+// rename when DIR is new); otherwise the staging folder is removed by the destructor, by
+// SIGINT/SIGTERM/SIGHUP (install_signal_cleanup) or, after a SIGKILL, by the next run, which
+// removes staging folders of processes that no longer exist. Only rank 0 touches the files.
+class StagedOutput
+{
+public:
+  // Collective. InputError("-o") when DIR is a file or its folder is not writable.
+  StagedOutput(const std::string& directory, MPI_Comm communicator);
+  ~StagedOutput();
+  StagedOutput(const StagedOutput&) = delete;
+  StagedOutput& operator=(const StagedOutput&) = delete;
+
+  const std::string& staging_directory() const { return staging; }
+  void commit(); // collective; rank 0 moves the results into DIR
+
+private:
+  std::string directory;
+  MPI_Comm communicator;
+  std::string staging;
+  bool root = false;
+  bool committed = false;
+};
+
+// Blocks SIGINT, SIGTERM and SIGHUP in the calling thread (call it first in main, before any
+// other thread exists, so every thread inherits the mask) and starts a thread that waits for
+// them, removes the current staging folder and ends the process by the same signal (exit
+// status 128 + signal number, as a shell reports it).
+void install_signal_cleanup();
+
+// Directory holding tools/ (plot scripts), set at configure time; overridable by
+// GEARSTIFF_TOOLS_DIR in the environment.
+std::string tools_directory();
 } // namespace gearstiff::app

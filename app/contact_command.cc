@@ -10,11 +10,14 @@
 #include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
 #include "errors/errors.h"
+#include "errors/limits.h"
 #include "fem/abaqus_reader.h"
 #include "fem/mesh.h"
+#include "fem/small_strain.h"
 
 #include <cmath>
 #include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -68,6 +71,73 @@ std::vector<std::pair<std::string, std::vector<double>>> named_vectors(const std
                          numbers(entry.substr(colon + 1), parameter));
   }
   return entries;
+}
+
+// The built-in case's mesh grows as 1/fine size²: refuse what could not finish.
+void check_built_in_size(const contact::CylinderPairGeometry& geometry, const unsigned int dim)
+{
+  const double cells = contact::cylinder_pair_cells(geometry, dim);
+  const double limit = dim == 3 ? limits::max_cells_3d : limits::max_cells_2d;
+  if (cells > limit)
+  {
+    std::ostringstream reason;
+    reason.precision(2);
+    reason << "the built-in mesh would have about " << cells << " cells (limit " << limit
+           << ", docs/limits.md); meshing and solving it could not finish: use a larger size "
+              "(default 0.00625 mm)";
+    throw InputError("Mesh/Built-in fine size", reason.str());
+  }
+}
+
+// m, the range of body sizes a mesh in the right unit spans: from a watch gear to a wind-turbine
+// stage. A mesh outside it by a factor of 1000 is almost surely in another length unit. Inside
+// the wider range but outside the usual one (1 mm to 2 m), bad contact geometry is more likely
+// a unit mistake than a modelling one, and its message says so.
+constexpr double smallest_plausible_extent = 1e-4;
+constexpr double largest_plausible_extent = 20.;
+constexpr double smallest_usual_extent = 1e-3;
+constexpr double largest_usual_extent = 2.;
+
+std::string millimetres(const double metres)
+{
+  std::ostringstream s;
+  s.precision(3);
+  s << metres * 1e3 << " mm";
+  return s.str();
+}
+
+template <int dim>
+void check_mesh_extent(const Triangulation<dim>& tria, const double unit)
+{
+  const double extent = GridTools::diameter(tria);
+  if (!(extent >= smallest_plausible_extent && extent <= largest_plausible_extent))
+    throw InputError("Mesh/Length unit",
+                     "the mesh spans " + millimetres(extent) + " with " +
+                         Utilities::to_string(unit) +
+                         " m per mesh unit, implausible for machine parts: check the length unit "
+                         "of the mesh (mm expected, Length unit = 1e-3)");
+}
+
+// Runs the contact problem of a user mesh. Bad geometry (bodies that overlap, or lie beyond the
+// search distance) in a mesh of unusual size usually means a mesh in another unit than the one
+// declared, so the message says so.
+template <int dim>
+const contact::ContactResults<dim>& run_with_unit_hint(contact::ContactProblem<dim>& problem,
+                                                       const double unit)
+{
+  try
+  {
+    return problem.run();
+  }
+  catch (const InputError& e)
+  {
+    const double extent = GridTools::diameter(problem.system().triangulation());
+    if (extent >= smallest_usual_extent && extent <= largest_usual_extent)
+      throw;
+    throw InputError(e.parameter(), e.reason() + "; the mesh spans " + millimetres(extent) +
+                                        " at Mesh/Length unit = " + Utilities::to_string(unit) +
+                                        " m: check the length unit of the mesh (mm expected)");
+  }
 }
 
 void declare_parameters(ParameterHandler& prm)
@@ -159,6 +229,7 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
     geometry.fine_size = fine_size;
     if (dim == 3)
       geometry.depth = elasticity.thickness;
+    check_built_in_size(geometry, dim);
     contact::make_cylinder_pair(geometry, problem.system().triangulation());
     names.cells = {{"upper", contact::upper_body}, {"lower", contact::lower_body}};
     names.faces = {{"upper contact", contact::upper_contact},
@@ -169,7 +240,10 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
       names.faces["extrusion faces"] = contact::extrusion_faces;
   }
   else
+  {
     names = read_mesh_file<dim>(mesh_file, unit, problem.system().triangulation());
+    check_mesh_extent(problem.system().triangulation(), unit);
+  }
 
   auto face_id = [&](const std::string& name, const std::string& parameter)
   {
@@ -265,7 +339,11 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
   context.pcout << "contact: " << (built_in ? "built-in Hertz case" : mesh_file) << ", " << dim
                 << "D, FE_Q(" << elasticity.degree << "), "
                 << Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)\n";
-  const contact::ContactResults<dim>& result = problem.run();
+  const contact::ContactResults<dim>& result =
+      built_in ? problem.run() : run_with_unit_hint(problem, unit);
+  // A load far beyond the linear model still returns numbers; refuse them.
+  fem::check_small_strain(problem.system().get_dof_handler(), problem.solution(),
+                          "Supports (the loads)");
 
   Report& report = context.report;
   report.add_text("method", "dual mortar, primal-dual active set, Coulomb as successive "

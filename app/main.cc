@@ -7,6 +7,7 @@
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else. Errors go to stderr as one line.
 #include "app/command.h"
+#include "app/units.h"
 #include "errors/errors.h"
 #include "fem/mpi_start.h"
 
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <unistd.h>
 
@@ -90,17 +92,40 @@ CommandLine parse_command_line(int argc, char** argv)
       const std::string assignment = (a == "--set") ? next_value(a) : a.substr(6);
       const auto eq = assignment.find('=');
       if (eq == std::string::npos || eq == 0)
-        throw InputError("--set", "expects section/key=value, got '" + assignment + "'");
+        throw InputError("--set", "expects section/key=value, got '" + shortened(assignment) + "'");
       line.overrides.emplace_back(assignment.substr(0, eq), assignment.substr(eq + 1));
     }
     else if (a.rfind("-", 0) == 0)
-      throw InputError(a, "unknown option (see gearstiff --help)");
+      throw InputError(shortened(a), "unknown option (see gearstiff --help)");
     else if (line.parameter_file.empty())
       line.parameter_file = a;
     else
-      throw InputError(a, "a second parameter file was given (only one is read)");
+      throw InputError(shortened(a), "a second parameter file was given (only one is read)");
   }
   return line;
+}
+
+// An error message as one line of reasonable length: newlines become spaces, and a message
+// beyond a few hundred characters is cut.
+std::string one_line(const std::string& text)
+{
+  // Words (runs without white space) are shortened one by one, so a huge value quoted inside
+  // a parser's message does not push the rest of the message out; runs of spaces collapse.
+  std::string line, word;
+  const auto flush = [&]()
+  {
+    if (word.empty())
+      return;
+    line += (line.empty() ? "" : " ") + shortened(word, 2 * limits::echoed_value_length);
+    word.clear();
+  };
+  for (const char c : text)
+    if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
+      flush();
+    else
+      word += c;
+  flush();
+  return shortened(line, 600);
 }
 
 // deal.II's exceptions carry file/line context meant for developers; users get the message.
@@ -117,6 +142,43 @@ std::string deal_ii_message(const dealii::ExceptionBase& e)
   while (!text.empty() && (text.front() == ' '))
     text.erase(text.begin());
   return text;
+}
+
+// `message` with every copy of the user's `value` in it shortened (deal.II repeats the
+// offending value in its pattern messages).
+std::string shortened_in(std::string message, const std::string& value)
+{
+  const std::string replacement = shortened(value);
+  if (value.size() <= replacement.size())
+    return message;
+  for (std::size_t at = message.find(value); at != std::string::npos;
+       at = message.find(value, at + replacement.size()))
+    message.replace(at, value.size(), replacement);
+  return message;
+}
+
+// Reads the parameter file; InputError naming the file for a missing file, a folder or a
+// parse error.
+void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
+{
+  const std::string name = shortened(file);
+  std::error_code error;
+  if (std::filesystem::is_directory(file, error))
+    throw InputError(name, "is a folder, not a parameter file (.prm or .json)");
+  if (!std::filesystem::exists(file, error))
+    throw InputError(name, "parameter file does not exist");
+  if (!std::filesystem::is_regular_file(file, error))
+    throw InputError(name, "is not a regular file (a parameter file .prm or .json is expected)");
+  if (access(file.c_str(), R_OK) != 0)
+    throw InputError(name, "parameter file cannot be read (permissions)");
+  try
+  {
+    prm.parse_input(file, "", false, true);
+  }
+  catch (const dealii::ExceptionBase& e)
+  {
+    throw InputError(name, one_line(deal_ii_message(e)));
+  }
 }
 
 void apply_override(dealii::ParameterHandler& prm, const std::string& path,
@@ -143,18 +205,33 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& path,
   {
     for (; entered > 0; --entered)
       prm.leave_subsection();
-    throw InputError(path, "cannot set to '" + value + "': " + deal_ii_message(e));
+    throw InputError(path, "cannot set to '" + shortened(value) +
+                               "': " + shortened_in(deal_ii_message(e), value));
   }
   for (; entered > 0; --entered)
     prm.leave_subsection();
 }
 
-std::filesystem::path staging_path(const std::string& output_directory, MPI_Comm comm)
+// The parameters used and the report's tables and summary, into the staging folder (rank 0).
+void write_results(CommandContext& context, const dealii::ParameterHandler& prm,
+                   const std::string& command_name)
 {
-  // All ranks must agree on the name: take rank 0's process id.
-  long id = static_cast<long>(getpid());
-  MPI_Bcast(&id, 1, MPI_LONG, 0, comm);
-  return std::filesystem::path(output_directory) / (".gearstiff-staging-" + std::to_string(id));
+  {
+    std::ofstream out(context.output_file("parameters.prm", "parameters actually used"));
+    prm.print_parameters(out, dealii::ParameterHandler::ShortPRM);
+  }
+  {
+    std::ofstream out(context.output_file("parameters.json", "the same, as JSON"));
+    prm.print_parameters(out, dealii::ParameterHandler::ShortJSON);
+  }
+  for (const auto& table : context.report.tables())
+  {
+    std::ofstream out(context.output_file(table.name + ".csv", "table " + table.name));
+    context.report.write_table_csv(table, out);
+  }
+  const std::string summary = context.output_file("summary.json", "all results as JSON");
+  std::ofstream out(summary);
+  context.report.print_json(out, command_name);
 }
 
 int run(int argc, char** argv, MPI_Comm comm)
@@ -191,18 +268,7 @@ int run(int argc, char** argv, MPI_Comm comm)
   }
 
   if (!line.parameter_file.empty())
-  {
-    if (!std::filesystem::is_regular_file(line.parameter_file))
-      throw InputError(line.parameter_file, "parameter file does not exist");
-    try
-    {
-      prm.parse_input(line.parameter_file, "", false, true);
-    }
-    catch (const dealii::ExceptionBase& e)
-    {
-      throw InputError(line.parameter_file, deal_ii_message(e));
-    }
-  }
+    read_parameter_file(prm, line.parameter_file);
   for (const auto& [path, value] : line.overrides)
     apply_override(prm, path, value);
 
@@ -214,62 +280,20 @@ int run(int argc, char** argv, MPI_Comm comm)
     return 0;
   }
 
-  std::filesystem::path staging;
+  // Output folder (checked before any work; created only on success).
+  std::unique_ptr<StagedOutput> output;
   if (!line.output_directory.empty())
-  {
-    staging = staging_path(line.output_directory, comm);
-    if (root)
-    {
-      std::error_code error;
-      std::filesystem::create_directories(staging, error);
-      if (error)
-        throw InputError("-o", "cannot create output directory '" + line.output_directory +
-                                   "': " + error.message());
-    }
-    MPI_Barrier(comm);
-  }
+    output = std::make_unique<StagedOutput>(line.output_directory, comm);
 
   dealii::ConditionalOStream pcout(line.json ? std::cerr : std::cout, root);
-  CommandContext context(comm, pcout, staging.string(), line.json);
-  try
-  {
-    command.run(prm, context);
-  }
-  catch (...)
-  {
-    if (root && !staging.empty())
-      std::filesystem::remove_all(staging);
-    throw;
-  }
+  CommandContext context(comm, pcout, output ? output->staging_directory() : "", line.json);
+  command.run(prm, context);
 
-  if (root && !staging.empty())
+  if (output)
   {
-    {
-      std::ofstream out(context.output_file("parameters.prm", "parameters actually used"));
-      prm.print_parameters(out, dealii::ParameterHandler::ShortPRM);
-    }
-    {
-      std::ofstream out(context.output_file("parameters.json", "the same, as JSON"));
-      prm.print_parameters(out, dealii::ParameterHandler::ShortJSON);
-    }
-    for (const auto& table : context.report.tables())
-    {
-      std::ofstream out(context.output_file(table.name + ".csv", "table " + table.name));
-      context.report.write_table_csv(table, out);
-    }
-    const std::string summary = context.output_file("summary.json", "all results as JSON");
-    {
-      std::ofstream out(summary);
-      context.report.print_json(out, command.name);
-    }
-    // Move the finished results into place; a failed run never reaches this point.
-    for (const auto& entry : std::filesystem::directory_iterator(staging))
-    {
-      const auto target = std::filesystem::path(line.output_directory) / entry.path().filename();
-      std::filesystem::remove_all(target);
-      std::filesystem::rename(entry.path(), target);
-    }
-    std::filesystem::remove_all(staging);
+    if (root)
+      write_results(context, prm, command.name);
+    output->commit();
   }
 
   if (root)
@@ -285,6 +309,8 @@ int run(int argc, char** argv, MPI_Comm comm)
 
 int main(int argc, char** argv)
 {
+  // First, before MPI or any library starts a thread: every thread inherits the blocked signals.
+  gearstiff::app::install_signal_cleanup();
   gearstiff::fem::prepare_mpi_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm comm = MPI_COMM_WORLD;
@@ -296,25 +322,25 @@ int main(int argc, char** argv)
   catch (const gearstiff::InputError& e)
   {
     if (root)
-      std::cerr << "gearstiff: error: " << e.what() << std::endl;
+      std::cerr << "gearstiff: error: " << one_line(e.what()) << std::endl;
     return 2;
   }
   catch (const gearstiff::SolverFailure& e)
   {
     if (root)
-      std::cerr << "gearstiff: solver failure: " << e.what() << std::endl;
+      std::cerr << "gearstiff: solver failure: " << one_line(e.what()) << std::endl;
     return 3;
   }
   catch (const dealii::ExceptionBase& e)
   {
     if (root)
-      std::cerr << "gearstiff: error: " << deal_ii_message(e) << std::endl;
+      std::cerr << "gearstiff: error: " << one_line(deal_ii_message(e)) << std::endl;
     return 1;
   }
   catch (const std::exception& e)
   {
     if (root)
-      std::cerr << "gearstiff: error: " << e.what() << std::endl;
+      std::cerr << "gearstiff: error: " << one_line(e.what()) << std::endl;
     return 1;
   }
 }

@@ -3,6 +3,8 @@
 // parameter files the commands write.
 #pragma once
 
+#include "errors/limits.h"
+
 #include <cmath>
 #include <string>
 
@@ -14,4 +16,8 @@ constexpr double rpm = M_PI / 30.;     // rad/s
 
 // `value` with `precision` significant digits, in the default notation of std::ostream.
 std::string format_number(double value, int precision);
+
+// A user's text as echoed in a message: at most `length` characters, longer text cut with "…"
+// and its size, so that a 200 kB value does not become a 200 kB error line.
+std::string shortened(const std::string& text, unsigned int length = limits::echoed_value_length);
 } // namespace gearstiff::app

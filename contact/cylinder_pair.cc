@@ -40,6 +40,30 @@ std::vector<double> graded_steps(double fine, double fine_zone, double growth, d
   return steps;
 }
 
+// The number of steps graded_steps returns, in closed form (the fine part alone could be
+// billions of cells for an absurd fine size).
+double graded_count(double fine, double fine_zone, double growth, double length)
+{
+  const double zone = std::min(fine_zone, length);
+  const double n_fine = std::max(1., std::ceil(zone / fine));
+  const double rest = length - zone;
+  // Geometric sizes s·g^k, k = 1..n, sum s·g·(g^n − 1)/(g − 1) ≥ rest.
+  const double first = zone / n_fine;
+  const double n_graded =
+      rest > 0.
+          ? std::ceil(std::log(1. + rest * (growth - 1.) / (first * growth)) / std::log(growth))
+          : 0.;
+  return n_fine + n_graded;
+}
+
+double body_cells(double radius, double fine, const CylinderPairGeometry& geometry,
+                  unsigned int dim)
+{
+  const double across = 2. * graded_count(fine, geometry.fine_zone, geometry.growth, 0.8 * radius);
+  const double depth = graded_count(fine, 0.5 * geometry.fine_zone, geometry.growth, radius);
+  return across * depth * (dim == 3 ? geometry.depth_cells : 1.);
+}
+
 // One body: the section |x| <= 0.8 R between the contact arc (y = ±(R − sqrt(R² − x²)))
 // and the flat face y = ±R; `sign` +1 for the upper body, −1 for the lower one.
 template <int dim>
@@ -103,6 +127,13 @@ void make_body(double radius, double fine, const CylinderPairGeometry& geometry,
   }
 }
 } // namespace
+
+double cylinder_pair_cells(const CylinderPairGeometry& geometry, const unsigned int dim)
+{
+  return body_cells(geometry.upper_radius, geometry.fine_size, geometry, dim) +
+         body_cells(geometry.lower_radius, geometry.fine_size * geometry.lower_size_ratio, geometry,
+                    dim);
+}
 
 template <int dim>
 void make_cylinder_pair(const CylinderPairGeometry& geometry, Triangulation<dim>& tria)

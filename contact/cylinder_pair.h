@@ -38,6 +38,10 @@ enum CylinderPairIds : unsigned int
   extrusion_faces = 5
 };
 
+// -, cells make_cylinder_pair would create (both bodies; 3D: times depth_cells), counted
+// without building anything, so that an absurd fine size can be refused before it runs.
+double cylinder_pair_cells(const CylinderPairGeometry& geometry, unsigned int dim);
+
 template <int dim>
 void make_cylinder_pair(const CylinderPairGeometry& geometry, dealii::Triangulation<dim>& tria);
 

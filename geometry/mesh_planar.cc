@@ -1,6 +1,7 @@
 #include "geometry/mesh_planar.h"
 
 #include "errors/errors.h"
+#include "errors/limits.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <gmsh.h>
 #include <set>
+#include <sstream>
 #include <unordered_map>
 
 namespace gearstiff::geometry
@@ -44,6 +46,36 @@ public:
 // compute shared end points independently, so bit-identical coordinates are not required,
 // but anything visible at the finest mesh sizes (1e-6 m) is a genuine gap.
 constexpr double junction_tolerance = 1e-9;
+
+// The longest edges gmsh leaves at a focus point reach about 1.45 times the requested size
+// (full-quad recombination splits cells of twice the size), so the contact-driven size aims
+// at 0.6·h_c, and if an edge at a contact still exceeds h_c the mesh is regenerated finer.
+constexpr double initial_contact_scale = 0.6;
+
+// -, quadrilaterals per h² of area in gmsh's recombined meshes. With 1 the estimate over actual
+// count was (measured, default sizes) gear pair 1.5, cylinders 0.66, cycloid 1.4, 3D gear pair
+// 1.5, stiffness scene 3.4 (its rims grow coarser than the body size, which the estimate does
+// not credit): within the factor the limit needs.
+constexpr double cells_per_square = 1.0;
+
+// Cells of a disc of radius `radius` at size `size` plus the annulus around it where the size
+// grows at `rate` up to `coarse`: ∫ dA/h², h = size + rate·s at distance radius + s.
+double focus_cells(double size, double radius, double rate, double coarse)
+{
+  const double disc = M_PI * radius * radius / (size * size);
+  const double annulus =
+      2. * M_PI / rate *
+      ((radius - size / rate) * (1. / size - 1. / coarse) + std::log(coarse / size) / rate);
+  return disc + std::max(0., annulus);
+}
+
+std::string format_number(double value, int precision = 2)
+{
+  std::ostringstream s;
+  s.precision(precision);
+  s << value;
+  return s.str();
+}
 
 std::vector<BoundaryPiece> counter_clockwise(const BoundaryLoop& loop)
 {
@@ -302,6 +334,67 @@ double scaled_jacobian_hex(const std::vector<Eigen::Vector3d>& corners)
   return minimum;
 }
 
+MeshEstimate estimate_mesh(const PlanarModel& model, const SizeGrading& grading,
+                           const MeshOptions& options)
+{
+  MeshEstimate estimate;
+  for (const auto& body : model.bodies)
+  {
+    estimate.area += std::abs(body.outer.signed_area());
+    for (const auto& hole : body.holes)
+      estimate.area -= std::abs(hole.signed_area());
+  }
+  estimate.area = std::max(estimate.area, 0.);
+  const double coarse = grading.body_size;
+  estimate.body_cells = cells_per_square * estimate.area / (coarse * coarse);
+  for (const auto& focus : grading.foci)
+  {
+    const double size = initial_contact_scale * focus.size;
+    const double whole = cells_per_square * estimate.area / (size * size);
+    const double fine =
+        std::min(whole, cells_per_square * M_PI * focus.radius * focus.radius / (size * size));
+    const double graded =
+        cells_per_square * focus_cells(size, focus.radius, grading.growth_rate, coarse) - fine;
+    estimate.fine_cells += fine;
+    estimate.graded_cells += std::min(std::max(graded, 0.), whole - fine);
+  }
+  estimate.cells = estimate.fine_cells + estimate.graded_cells + estimate.body_cells;
+  if (options.dimension == 3)
+    estimate.cells *= options.layers;
+  return estimate;
+}
+
+void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
+                         const MeshOptions& options)
+{
+  const MeshEstimate estimate = estimate_mesh(model, grading, options);
+  const double limit = options.dimension == 3 ? limits::max_cells_3d : limits::max_cells_2d;
+  if (estimate.cells <= limit)
+    return;
+  double fine_radius = 0.;
+  for (const auto& focus : grading.foci)
+    fine_radius = std::max(fine_radius, focus.radius);
+  const std::string kind = options.dimension == 3 ? "hexahedra" : "cells";
+  const std::string reason =
+      "the mesh would have about " + format_number(estimate.cells) + " " + kind + " (limit " +
+      format_number(limit) + ", docs/limits.md): " + format_number(estimate.fine_cells) +
+      " at the contact size " + format_number(grading.smallest_size() * 1e3, 3) +
+      " mm within the fine radius " + format_number(fine_radius * 1e3, 3) +
+      " mm (0: 1.5 Hertz half-widths of the load), " +
+      format_number(estimate.graded_cells + estimate.body_cells) + " elsewhere (body size " +
+      format_number(grading.body_size * 1e3, 3) + " mm" +
+      (options.dimension == 3 ? ", " + std::to_string(options.layers) + " layers" : "") + ")" +
+      (options.dimension == 2
+           ? ", about " + format_number(estimate.cells * limits::solve_bytes_per_cell_2d / 1e9) +
+                 " GB for a Q2 contact solve"
+           : "") +
+      "; meshing and solving it could not finish";
+  if (estimate.body_cells > estimate.fine_cells + estimate.graded_cells)
+    throw InputError("Mesh/body size", reason + ": use a larger body size");
+  throw InputError("Mesh/contact size",
+                   reason + ": use a larger contact size, a smaller fine radius or a smaller load");
+}
+
 MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& grading,
                                  const MeshOptions& options)
 {
@@ -331,6 +424,8 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     for (const auto& hole : body.holes)
       check_loop(hole, body.name);
   }
+
+  check_mesh_estimate(model, grading, options);
 
   MeshStatistics statistics;
   GmshSession session;
@@ -447,10 +542,6 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);
   gmsh::option::setNumber("Mesh.Smoothing", 5);
   gmsh::option::setNumber("Mesh.ElementOrder", 1);
-  // The longest edges gmsh leaves at a focus point reach about 1.45 times the requested size
-  // (full-quad recombination splits cells of twice the size), so the contact-driven size aims
-  // at 0.6·h_c, and if an edge at a contact still exceeds h_c the mesh is regenerated finer.
-  constexpr double initial_contact_scale = 0.6;
   constexpr unsigned int max_attempts = 3;
   double contact_scale = initial_contact_scale;
   for (unsigned int attempt = 1;; ++attempt)

@@ -1,9 +1,12 @@
 #include "stiffness/mesh_stiffness.h"
 
 #include "fem/mesh.h"
+#include "fem/parallel.h"
+#include "fem/small_strain.h"
 #include "errors/errors.h"
 
 #include <algorithm>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <cstring>
 #include <deal.II/base/quadrature_lib.h>
@@ -34,56 +37,6 @@ types::boundary_id pinion_flank_id(int j)
 types::boundary_id wheel_flank_id(int j)
 {
   return wheel_tooth_base + j + tooth_offset;
-}
-
-// Runs `work` on rank 0 of `communicator` and makes every rank see its outcome: the broadcast
-// numbers on success, or the same exception (type and message) on every rank, so that a bad
-// scene stops all ranks alike instead of leaving them waiting for a mesh file.
-template <typename Work>
-std::vector<double> run_on_root(MPI_Comm communicator, unsigned int n_values, Work work)
-{
-  const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-  std::vector<double> values(n_values, 0.);
-  int status = 0; // 0 ok, 1 InputError, 2 SolverFailure, 3 other
-  std::string first, second;
-  if (root)
-  {
-    try
-    {
-      values = work();
-    }
-    catch (const InputError& e)
-    {
-      status = 1;
-      first = e.parameter();
-      second = e.reason();
-    }
-    catch (const SolverFailure& e)
-    {
-      status = 2;
-      first = e.method();
-      second = e.what();
-      second = second.substr(std::min(second.size(), first.size() + 2));
-    }
-    catch (const std::exception& e)
-    {
-      status = 3;
-      second = e.what();
-    }
-  }
-  MPI_Bcast(&status, 1, MPI_INT, 0, communicator);
-  if (status == 0)
-  {
-    MPI_Bcast(values.data(), n_values, MPI_DOUBLE, 0, communicator);
-    return values;
-  }
-  first = Utilities::MPI::broadcast(communicator, first, 0);
-  second = Utilities::MPI::broadcast(communicator, second, 0);
-  if (status == 1)
-    throw InputError(first, second);
-  if (status == 2)
-    throw SolverFailure(first, second);
-  throw std::runtime_error(second);
 }
 
 // Polar angle of `p` about `centre`, relative to `reference`, in (−π, π].
@@ -172,8 +125,8 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::run()
 template <int dim>
 void GearMeshStiffness<dim>::make_scene()
 {
-  const std::vector<double> scene = run_on_root(
-      mpi_communicator, 5,
+  const std::vector<double> scene = fem::run_on_root(
+      mpi_communicator,
       [this]()
       {
         const geometry::SceneInfo info =
@@ -294,6 +247,9 @@ void GearMeshStiffness<dim>::evaluate()
   const contact::ContactResults<dim>& contact = problem->results();
   const contact::SupportResult<dim>& pinion_hub = contact.supports.at(0);
   const contact::SupportResult<dim>& wheel_hub = contact.supports.at(1);
+  // A torque far beyond the linear model still returns a number; refuse it.
+  fem::check_small_strain(problem->system().get_dof_handler(), problem->solution(),
+                          stiffness_parameter::torque);
   result.pinion_torque = settings.pinion_torque;
   // Rotation from the unloaded touching configuration: every normal gap of an involute flank
   // closes by r_b1 per radian of pinion rotation (its normals are tangent to the base circle).

@@ -62,6 +62,13 @@ struct ToothPairLoad
   double max_pressure = 0.;  // Pa
   double contact_length = 0; // m, extent of the closed nodes (2D: across the profile)
   unsigned int closed_nodes = 0;
+
+  // Every field, for boost-style serialisation (results cross MPI ranks, fem/parallel.h).
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& pair& position& normal_force& load_share& max_pressure& contact_length& closed_nodes;
+  }
 };
 
 struct GearMeshStiffnessResult
@@ -99,6 +106,19 @@ struct GearMeshStiffnessResult
   double solve_time = 0.;                // s, wall: contact iterations (assembly + linear solves)
   double total_time = 0.;                // s, wall: the whole run
   std::vector<std::string> output_files; // VTU/PVTU written (relative to the directory)
+
+  // Every field, for boost-style serialisation (the translation unit that sends a result
+  // includes boost/serialization/vector.hpp and string.hpp).
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& pinion_roll_angle& reference_position& mesh_position& kinematic_pairs& loaded_pairs;
+    archive& pinion_torque& pinion_rotation& initial_gap& pinion_base_radius& wheel_base_radius;
+    archive& mesh_stiffness& transmission_error& wheel_torque& torque_ratio& pinion_hub_torque;
+    archive& pairs& max_contact_pressure& pinion_root_stress& wheel_root_stress;
+    archive& dimension& n_cells& n_dofs& contact_size& active_set_iterations;
+    archive& scene_time& setup_time& solve_time& total_time& output_files;
+  }
 };
 
 template <int dim>

@@ -1,8 +1,12 @@
 #include "stiffness/mesh_stiffness_sweep.h"
 
 #include "errors/errors.h"
+#include "fem/parallel.h"
 
 #include <algorithm>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
@@ -15,95 +19,6 @@ using namespace dealii;
 
 namespace
 {
-// Results cross ranks as fixed-length rows of doubles (a position's row is zero on the
-// ranks that did not solve it, so one sum gathers them all).
-constexpr unsigned int max_pairs = 6;
-constexpr unsigned int pair_fields = 7;
-constexpr unsigned int scalar_fields = 26;
-constexpr unsigned int row_length = scalar_fields + max_pairs * pair_fields;
-
-std::vector<double> pack(const GearMeshStiffnessResult& r)
-{
-  std::vector<double> row{r.pinion_roll_angle,    r.reference_position,
-                          r.mesh_position,        double(r.kinematic_pairs),
-                          double(r.loaded_pairs), r.pinion_torque,
-                          r.pinion_rotation,      r.pinion_base_radius,
-                          r.wheel_base_radius,    r.mesh_stiffness,
-                          r.transmission_error,   r.wheel_torque,
-                          r.torque_ratio,         r.pinion_hub_torque,
-                          r.max_contact_pressure, r.pinion_root_stress,
-                          r.wheel_root_stress,    double(r.dimension),
-                          double(r.n_cells),      double(r.n_dofs),
-                          r.contact_size,         double(r.active_set_iterations),
-                          r.scene_time,           r.setup_time,
-                          r.solve_time,           r.total_time};
-  row.resize(row_length, 0.);
-  if (r.pairs.size() > max_pairs)
-    throw SolverFailure("stiffness sweep", "more tooth pairs than the result rows hold");
-  for (unsigned int k = 0; k < r.pairs.size(); ++k)
-  {
-    const ToothPairLoad& p = r.pairs[k];
-    double* slot = &row[scalar_fields + k * pair_fields];
-    // The first field marks the slot as used (a pair index shifted away from zero).
-    slot[0] = p.pair + 1000.;
-    slot[1] = p.position;
-    slot[2] = p.normal_force;
-    slot[3] = p.load_share;
-    slot[4] = p.max_pressure;
-    slot[5] = p.contact_length;
-    slot[6] = p.closed_nodes;
-  }
-  return row;
-}
-
-GearMeshStiffnessResult unpack(const double* row)
-{
-  GearMeshStiffnessResult r;
-  unsigned int i = 0;
-  r.pinion_roll_angle = row[i++];
-  r.reference_position = row[i++];
-  r.mesh_position = row[i++];
-  r.kinematic_pairs = std::lround(row[i++]);
-  r.loaded_pairs = std::lround(row[i++]);
-  r.pinion_torque = row[i++];
-  r.pinion_rotation = row[i++];
-  r.pinion_base_radius = row[i++];
-  r.wheel_base_radius = row[i++];
-  r.mesh_stiffness = row[i++];
-  r.transmission_error = row[i++];
-  r.wheel_torque = row[i++];
-  r.torque_ratio = row[i++];
-  r.pinion_hub_torque = row[i++];
-  r.max_contact_pressure = row[i++];
-  r.pinion_root_stress = row[i++];
-  r.wheel_root_stress = row[i++];
-  r.dimension = std::lround(row[i++]);
-  r.n_cells = std::lround(row[i++]);
-  r.n_dofs = std::lround(row[i++]);
-  r.contact_size = row[i++];
-  r.active_set_iterations = std::lround(row[i++]);
-  r.scene_time = row[i++];
-  r.setup_time = row[i++];
-  r.solve_time = row[i++];
-  r.total_time = row[i++];
-  for (unsigned int k = 0; k < max_pairs; ++k)
-  {
-    const double* slot = row + scalar_fields + k * pair_fields;
-    if (slot[0] == 0.)
-      break;
-    ToothPairLoad p;
-    p.pair = static_cast<int>(std::lround(slot[0] - 1000.));
-    p.position = slot[1];
-    p.normal_force = slot[2];
-    p.load_share = slot[3];
-    p.max_pressure = slot[4];
-    p.contact_length = slot[5];
-    p.closed_nodes = std::lround(slot[6]);
-    r.pairs.push_back(p);
-  }
-  return r;
-}
-
 std::string format(double value, int precision = 4)
 {
   std::ostringstream s;
@@ -145,6 +60,29 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
   return positions;
 }
 
+// One position of the sweep, solved serially; its scene file is removed whatever happens.
+template <int dim>
+GearMeshStiffnessResult solve_position(const GearMeshStiffnessSettings& settings,
+                                       const double roll_angle, const std::string& suffix,
+                                       const std::string& scene_file_stem)
+{
+  GearMeshStiffnessSettings local = settings;
+  local.scene.position = "roll angle";
+  local.scene.pinion_roll_angle = roll_angle;
+  local.scene_file = scene_file_stem + "_" + suffix + ".msh";
+  local.output_base = settings.output_base + "_" + suffix;
+  GearMeshStiffnessResult result;
+  const fem::Failure failure = fem::catch_failure(
+      [&]()
+      {
+        GearMeshStiffness<dim> analysis(MPI_COMM_SELF, local);
+        result = analysis.run();
+      });
+  std::filesystem::remove(local.scene_file);
+  failure.rethrow();
+  return result;
+}
+
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
@@ -159,95 +97,49 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
 
-  // Round-robin: neighbouring positions cost about the same, so each rank gets a fair share.
-  std::vector<double> rows(std::size_t(n) * row_length, 0.);
-  std::vector<double> owner(n, 0.);
-  int failed_position = static_cast<int>(n); // first failure on this rank (n: none)
-  int failure_kind = 0;                      // 1 InputError, 2 SolverFailure, 3 other
-  std::string failure_first, failure_second;
-  unsigned int done = 0, mine = 0;
-  for (unsigned int i = rank; i < n; i += n_ranks)
-    ++mine;
-  for (unsigned int i = rank; i < n && failure_kind == 0; i += n_ranks)
+  // Round-robin in rounds of one position per rank: neighbouring positions cost about the
+  // same, so each rank gets a fair share, and after every round the ranks agree whether one
+  // of them failed, so all stop within one position's time of the first failure (the first
+  // failing position, lowest index, decides the exception every rank throws).
+  std::vector<std::pair<unsigned int, GearMeshStiffnessResult>> mine;
+  const unsigned int rounds = (n + n_ranks - 1) / n_ranks;
+  for (unsigned int round = 0; round < rounds; ++round)
   {
-    GearMeshStiffnessSettings local = settings;
-    local.scene.position = "roll angle";
-    local.scene.pinion_roll_angle = positions[i] / r_b1;
-    local.scene_file = scene_file_stem + "_" + Utilities::int_to_string(i, 3) + ".msh";
-    local.output_base = settings.output_base + "_" + Utilities::int_to_string(i, 3);
-    try
-    {
-      GearMeshStiffness<dim> analysis(MPI_COMM_SELF, local);
-      const GearMeshStiffnessResult r = analysis.run();
-      std::filesystem::remove(local.scene_file);
-      const std::vector<double> row = pack(r);
-      std::copy(row.begin(), row.end(), rows.begin() + std::size_t(i) * row_length);
-      owner[i] = rank;
-      ++done;
-      if (progress)
-        progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
-                 format(r.pinion_roll_angle * 180. / M_PI, 5) +
-                 "°): k = " + format(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
-                 std::to_string(r.loaded_pairs) + " pair(s), " + format(r.total_time, 3) +
-                 " s [rank 0: " + std::to_string(done) + "/" + std::to_string(mine) + "]");
-    }
-    catch (const InputError& e)
-    {
-      failure_kind = 1;
-      failure_first = e.parameter();
-      failure_second = e.reason();
-    }
-    catch (const SolverFailure& e)
-    {
-      failure_kind = 2;
-      failure_first = e.method();
-      const std::string what = e.what();
-      failure_second = what.substr(std::min(what.size(), failure_first.size() + 2));
-    }
-    catch (const std::exception& e)
-    {
-      failure_kind = 3;
-      failure_second = e.what();
-    }
-    if (failure_kind != 0)
-    {
-      failed_position = static_cast<int>(i);
-      std::filesystem::remove(local.scene_file);
-    }
+    const unsigned int i = round * n_ranks + rank;
+    fem::Failure failure;
+    if (i < n)
+      failure = fem::catch_failure(
+          [&]()
+          {
+            const GearMeshStiffnessResult r = solve_position<dim>(
+                settings, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem);
+            mine.emplace_back(i, r);
+            if (progress)
+              progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) +
+                       " (roll angle " + format(r.pinion_roll_angle * 180. / M_PI, 5) +
+                       "°): k = " + format(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
+                       std::to_string(r.loaded_pairs) + " pair(s), " + format(r.total_time, 3) +
+                       " s [rank 0: " + std::to_string(round + 1) + "/" +
+                       std::to_string((n - rank + n_ranks - 1) / n_ranks) + "]");
+          });
+    if (failure.failed())
+      failure.reason = "sweep position " + std::to_string(i + 1) + " (roll angle " +
+                       format(positions[i] / r_b1 * 180. / M_PI, 5) + "°): " + failure.reason;
+    fem::first_failure(mpi_communicator, failure, static_cast<int>(i)).rethrow();
   }
 
-  // The first failing position (lowest index) decides the exception every rank throws.
-  struct
-  {
-    int position;
-    int rank;
-  } local_failure{failed_position, static_cast<int>(rank)}, first_failure{};
-  MPI_Allreduce(&local_failure, &first_failure, 1, MPI_2INT, MPI_MINLOC, mpi_communicator);
-  if (first_failure.position < static_cast<int>(n))
-  {
-    MPI_Bcast(&failure_kind, 1, MPI_INT, first_failure.rank, mpi_communicator);
-    failure_first = Utilities::MPI::broadcast(mpi_communicator, failure_first, first_failure.rank);
-    failure_second =
-        Utilities::MPI::broadcast(mpi_communicator, failure_second, first_failure.rank);
-    const std::string where =
-        "sweep position " + std::to_string(first_failure.position + 1) + " (roll angle " +
-        format(positions[first_failure.position] / r_b1 * 180. / M_PI, 5) + "°): ";
-    if (failure_kind == 1)
-      throw InputError(failure_first, where + failure_second);
-    if (failure_kind == 2)
-      throw SolverFailure(failure_first, where + failure_second);
-    throw std::runtime_error(where + failure_second);
-  }
-
-  Utilities::MPI::sum(rows, mpi_communicator, rows);
-  Utilities::MPI::sum(owner, mpi_communicator, owner);
+  // Every rank receives every position's result.
   StiffnessSweepResult result;
   result.n_ranks = n_ranks;
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    result.positions.push_back(unpack(&rows[std::size_t(i) * row_length]));
-    result.rank_of_position.push_back(std::lround(owner[i]));
-  }
+  result.positions.resize(n);
+  result.rank_of_position.resize(n);
+  const auto gathered = Utilities::MPI::all_gather(mpi_communicator, mine);
+  for (unsigned int r = 0; r < gathered.size(); ++r)
+    for (const auto& [i, position] : gathered[r])
+    {
+      result.positions[i] = position;
+      result.rank_of_position[i] = r;
+    }
   result.wall_time = timer.wall_time();
   return result;
 }
@@ -256,48 +148,12 @@ template <int dim>
 GearMeshStiffnessResult solve_on_first_rank(MPI_Comm mpi_communicator,
                                             const GearMeshStiffnessSettings& settings)
 {
-  std::vector<double> row(row_length, 0.);
-  int kind = 0; // 1 InputError, 2 SolverFailure, 3 other
-  std::string first, second;
-  if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-  {
-    try
-    {
-      GearMeshStiffness<dim> analysis(MPI_COMM_SELF, settings);
-      row = pack(analysis.run());
-    }
-    catch (const InputError& e)
-    {
-      kind = 1;
-      first = e.parameter();
-      second = e.reason();
-    }
-    catch (const SolverFailure& e)
-    {
-      kind = 2;
-      first = e.method();
-      const std::string what = e.what();
-      second = what.substr(std::min(what.size(), first.size() + 2));
-    }
-    catch (const std::exception& e)
-    {
-      kind = 3;
-      second = e.what();
-    }
-  }
-  MPI_Bcast(&kind, 1, MPI_INT, 0, mpi_communicator);
-  if (kind != 0)
-  {
-    first = Utilities::MPI::broadcast(mpi_communicator, first, 0);
-    second = Utilities::MPI::broadcast(mpi_communicator, second, 0);
-    if (kind == 1)
-      throw InputError(first, second);
-    if (kind == 2)
-      throw SolverFailure(first, second);
-    throw std::runtime_error(second);
-  }
-  MPI_Bcast(row.data(), row_length, MPI_DOUBLE, 0, mpi_communicator);
-  return unpack(row.data());
+  return fem::run_on_root(mpi_communicator,
+                          [&]()
+                          {
+                            GearMeshStiffness<dim> analysis(MPI_COMM_SELF, settings);
+                            return analysis.run();
+                          });
 }
 
 geometry::SceneMeshSettings scaled_mesh(const geometry::SceneMeshSettings& mesh, double factor)

@@ -1,0 +1,189 @@
+#!/usr/bin/python3
+"""Fuzz test of the gearstiff command-line contract (issue 11).
+
+    fuzz.py GEARSTIFF WORKDIR [--seed N] [--budget SECONDS] [--cases-per-command N]
+
+For every parameter of the fast commands (listed by `gearstiff <cmd> --print-parameters --json`)
+and a few FE commands on a coarse scene, it runs the command with seeded random values at the
+edges and beyond (0, negative, NaN, inf, huge, tiny, wrong types, empty, a 120 kB string) and
+asserts only the contract, never a number:
+
+  - the exit code is 0, 2 (bad input) or 3 (failed method), and the run ends within its timeout;
+  - a failing run prints exactly one line on stderr and writes nothing: no -o folder, no
+    staging folder;
+  - a successful run with -o creates the folder.
+
+Stdlib only. The seed makes a failure reproducible: every failing case is printed as a command
+line. The run stops starting new cases when the time budget is spent.
+"""
+import argparse
+import json
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import time
+from itertools import zip_longest
+
+# Commands, the overrides that keep a run short, the per-run timeout (s) and how many cases
+# each gets. Fast commands first; the FE ones on a coarse scene with Q1 elements.
+COARSE_SCENE = [
+    "Mesh/contact size=0.2", "Mesh/fine radius=0.5", "Mesh/body size=1", "Mesh/rim size=3",
+]
+COARSE_FE = COARSE_SCENE + ["Finite elements/Element degree=1"]
+COMMANDS = [
+    ("kinematics", [], 15, 1.0),
+    ("gear-pair", [], 15, 1.0),
+    ("cycloid", [], 15, 1.0),
+    ("dynamics", ["Simulation/simulated time=0.02"], 20, 1.0),
+    ("mesh", COARSE_SCENE, 30, 0.6),
+    ("stiffness", COARSE_FE + ["Stiffness/published reference=false"], 40, 0.25),
+    ("contact", ["Mesh/Built-in fine size=0.05"], 40, 0.25),
+]
+
+HUGE_TEXT = "9" * 120_000  # one argument may hold at most 128 kB
+
+
+def unmangle(name):
+    """deal.II's property-tree names encode characters as _XX (hex)."""
+    return re.sub(r"_([0-9a-fA-F]{2})", lambda m: chr(int(m.group(1), 16)), name)
+
+
+def leaves(tree, path=()):
+    for key, value in tree.items():
+        if not isinstance(value, dict):
+            continue
+        if "value" in value and not any(isinstance(v, dict) for v in value.values()):
+            yield "/".join(path + (unmangle(key),)), value
+        else:
+            yield from leaves(value, path + (unmangle(key),))
+
+
+def parameters(binary, command, cwd):
+    out = subprocess.run([binary, command, "--print-parameters", "--json"], cwd=cwd,
+                         capture_output=True, text=True, timeout=60)
+    if out.returncode != 0:
+        raise SystemExit(f"{command} --print-parameters failed: {out.stderr.strip()}")
+    return list(leaves(json.loads(out.stdout)))
+
+
+def candidate_values(entry, rng):
+    """Edge and hostile values for one parameter, by its pattern."""
+    pattern = entry.get("pattern_description", "")
+    default = str(entry.get("default_value", entry.get("value", "")))
+    generic = ["", " ", "nope", "1e", "0x10", "1,2", "nan", HUGE_TEXT if rng.random() < 0.05 else "-"]
+    if "Selection" in pattern:
+        options = re.sub(r"^\[Selection\s*|\s*\]$", "", pattern).split("|")
+        return options + ["nope", ""]
+    if "Bool" in pattern:
+        return ["true", "false", "yes", "2", ""]
+    if "Integer" in pattern:
+        return ["0", "-1", "1", "2", "3", "1000000", "2147483648", "99999999999", "1.5",
+                "abc", ""]
+    if "Double" in pattern:
+        try:
+            d = float(default)
+        except ValueError:
+            d = 1.0
+        scaled = [repr(d * f) for f in (1000.0, 1e-3, -1.0, 1e6, 1e-6)]
+        return ["nan", "inf", "-inf", "1e308", "-1e308", "0", "-0", "-1", "1e-300", "1e9",
+                "-1e9", "abc", ""] + scaled
+    # Anything / lists: numbers in a list, wrong separators, empty entries.
+    return generic + [default + "," + default, default + ";" + default, "a: nan, inf",
+                      "x: 1e308, -1e308, 0", default.replace(",", ";")]
+
+
+def run_case(binary, command, overrides, timeout, work):
+    out_dir = os.path.join(work, "out")
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    args = [binary, command]
+    for o in overrides:
+        args += ["--set", o]
+    args += ["-o", out_dir]
+    start = time.monotonic()
+    try:
+        proc = subprocess.run(args, cwd=work, capture_output=True, text=True, timeout=timeout,
+                              errors="replace")
+    except subprocess.TimeoutExpired:
+        return args, f"no answer within {timeout} s (hang or unbounded work)", None
+    elapsed = time.monotonic() - start
+    problems = []
+    if proc.returncode not in (0, 2, 3):
+        problems.append(f"exit code {proc.returncode} (contract: 0, 2 or 3)")
+    left = [n for n in os.listdir(work) if n != "out" or proc.returncode != 0]
+    if proc.returncode != 0:
+        lines = [l for l in proc.stderr.splitlines() if l.strip()]
+        if len(lines) != 1:
+            problems.append(f"{len(lines)} lines on stderr (contract: one)")
+        elif len(lines[0]) > 2000:
+            problems.append(f"error line of {len(lines[0])} characters")
+        if left:
+            problems.append(f"failed run left {left}")
+    else:
+        if not os.path.isdir(out_dir):
+            problems.append("successful run with -o created no folder")
+        stale = [n for n in os.listdir(work) if n.startswith(".gearstiff-staging")]
+        if stale:
+            problems.append(f"successful run left {stale}")
+    return args, "; ".join(problems), (proc, elapsed)
+
+
+def shown(args):
+    return " ".join(repr(a) if (" " in a or not a) else a for a in args)[:400]
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("binary")
+    parser.add_argument("work")
+    parser.add_argument("--seed", type=int, default=20261123)
+    parser.add_argument("--budget", type=float, default=60.0)
+    parser.add_argument("--cases-per-command", type=int, default=10)
+    options = parser.parse_args()
+    rng = random.Random(options.seed)
+    os.makedirs(options.work, exist_ok=True)
+    deadline = time.monotonic() + options.budget
+
+    per_command = []
+    for command, base, timeout, weight in COMMANDS:
+        entries = parameters(options.binary, command, options.work)
+        cases = []
+        for _ in range(max(1, round(options.cases_per_command * weight))):
+            chosen = rng.sample(entries, k=min(len(entries), rng.choice((1, 1, 2, 3))))
+            overrides = list(base) + [f"{path}={rng.choice(candidate_values(entry, rng))}"
+                                      for path, entry in chosen]
+            cases.append((command, overrides, timeout))
+        per_command.append(cases)
+    # Round-robin over the commands, so that a short budget still reaches every one.
+    plan = [case for batch in zip_longest(*per_command) for case in batch if case]
+
+    failures, run, codes = [], 0, {}
+    for i, (command, overrides, timeout) in enumerate(plan):
+        remaining = deadline - time.monotonic()
+        if remaining < 2:
+            break
+        args, problem, result = run_case(options.binary, command, overrides,
+                                         min(timeout, max(remaining, 5)),
+                                         os.path.join(options.work, f"case{i}"))
+        run += 1
+        if result:
+            codes[result[0].returncode] = codes.get(result[0].returncode, 0) + 1
+        if problem:
+            stderr = result[0].stderr.strip()[:300] if result else ""
+            failures.append(f"FAIL {shown(args)}\n     {problem}\n     stderr: {stderr}")
+        else:
+            shutil.rmtree(os.path.join(options.work, f"case{i}"), ignore_errors=True)
+    print(f"fuzz: seed {options.seed}, {run} of {len(plan)} cases run, exit codes {codes}")
+    for f in failures:
+        print(f)
+    if run < len(COMMANDS):
+        print("fuzz: the budget allowed too few cases")
+        return 1
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
