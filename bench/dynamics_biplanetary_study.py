@@ -3,6 +3,7 @@
 a torsional spring and damper (variant II), with the train model of `gearstiff dynamics`.
 
     python3 bench/dynamics_biplanetary_study.py [gearstiff] [points]   (defaults: build, 40)
+    python3 bench/dynamics_biplanetary_study.py --plot-only     (chart from the CSV again)
 
 Input: bench/dynamics_biplanetary.prm (stated assumptions: steel blanks, Cai stiffness
 280 N/µm per mesh, c_g = 100 N·s/m). For each variant: natural frequencies, K_v max of every
@@ -22,12 +23,45 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
+binary = sys.argv[1] if len(sys.argv) > 1 and sys.argv[1] != "--plot-only" else os.path.join(root, "build", "app", "gearstiff")
 points = int(sys.argv[2]) if len(sys.argv) > 2 else 40
 prm = os.path.join(root, "bench", "dynamics_biplanetary.prm")
 damping = 50.0  # N·m·s/rad of the suspension
 variants = [("I: ring 7 fixed", None)] + [
     (f"II: k_s = {k:.0e} N·m/rad", k) for k in (1e5, 1e6, 1e7)]
+
+
+def plot_sweeps(sweeps):
+    """Ring fixed against the middle suspension stiffness: the linear model's K_v max in grey,
+    valid points (status 0) in colour, the rest marked by status."""
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
+    for ax, (label, rows) in zip(axes, (sweeps[0], sweeps[2])):
+        speed = [r["input_speed"] for r in rows]
+        ax.plot(speed, [r["kv_max_linear"] for r in rows], "-", color="0.6", lw=1,
+                label="K_v max of the linear model")
+        for status, marker, text in ((0, "o", "valid"), (2, "x", "contact loss"),
+                                     (3, "+", "not steady")):
+            pts = [(r["input_speed"], r["kv_max_linear"]) for r in rows if r["status"] == status]
+            if pts:
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, ms=5, label=text)
+        ax.set_title(label)
+        ax.set_xlabel("input speed n1 [rpm]")
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8)
+    axes[0].set_ylabel("K_v max over all meshes [-]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(root, "docs", "biplanetary_resonance.png"), dpi=110)
+
+
+if len(sys.argv) > 1 and sys.argv[1] == "--plot-only":
+    sweeps = {}
+    with open(os.path.join(root, "docs", "biplanetary_dynamics.csv"), newline="") as f:
+        for r in csv.DictReader(f):
+            sweeps.setdefault(r["variant"], []).append(
+                {"input_speed": float(r["input_speed [rpm]"]), "status": round(float(r["status [-]"])),
+                 "kv_max_linear": float(r["kv_max_linear [-]"])})
+    plot_sweeps(list(sweeps.items()))
+    sys.exit(0)
 
 
 def run(*settings):
@@ -86,20 +120,5 @@ with open(os.path.join(root, "docs", "biplanetary_dynamics.csv"), "w", newline="
         for r in table(sweep, "dynamics_speed_sweep"):
             w.writerow([label, r["input_speed"], r["kv_max"], r["status"], r["kv_max_linear"]])
 
-fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
-for ax, (label, _, sweep) in zip(axes, (results[0], results[2])):
-    rows = table(sweep, "dynamics_speed_sweep")
-    speed = [r["input_speed"] for r in rows]
-    ax.plot(speed, [r["kv_max"] if r["kv_max"] is not None else float("nan") for r in rows],
-            "o-", ms=3, lw=1, label="K_v max (valid)")
-    bad = [(r["input_speed"], r["status"]) for r in rows if r["status"] != 0]
-    if bad:
-        ax.plot([b[0] for b in bad], [1.0] * len(bad), "rx", label="no valid K_v (status 1-3)")
-    ax.set_title(label)
-    ax.set_xlabel("input speed n1 [rpm]")
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
-axes[0].set_ylabel("K_v max over all meshes [-]")
-fig.tight_layout()
-fig.savefig(os.path.join(root, "docs", "biplanetary_resonance.png"), dpi=110)
+plot_sweeps([(label, table(sweep, "dynamics_speed_sweep")) for label, _, sweep in results])
 print("\nwrote docs/biplanetary_dynamics.csv, docs/biplanetary_resonance.png")
