@@ -147,7 +147,10 @@ def main():
         print(f"cheapest within 1%: {cheapest['variant']} factor {cheapest['size_factor']} "
               f"({cheapest['solve_time']:.2f} s, {cheapest['error_reference'] * 100:.2f}%)")
     plot = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "plot_accuracy.py")
-    subprocess.run(["/usr/bin/python3", plot, csv_path, f"{reference}",
+    # CalculiX's ladder on the same meshes (bench/calculix_ladder.sh), when it has been run.
+    calculix = os.path.join(os.path.dirname(os.path.abspath(__file__)), "calculix_ladder.csv")
+    extra = [calculix] if os.path.exists(calculix) else []
+    subprocess.run(["/usr/bin/python3", plot, csv_path, *extra, f"{reference}",
                     os.path.join(options.out, "accuracy.png")], check=True)
 
 
