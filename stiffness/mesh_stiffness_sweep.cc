@@ -171,7 +171,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   for (unsigned int i = rank; i < n && failure_kind == 0; i += n_ranks)
   {
     GearMeshStiffnessSettings local = settings;
-    local.scene.position = "roll angle";
+    local.scene.position = geometry::PairPosition::roll_angle;
     local.scene.pinion_roll_angle = positions[i] / r_b1;
     local.scene_file = scene_file_stem + "_" + Utilities::int_to_string(i, 3) + ".msh";
     local.output_base = settings.output_base + "_" + Utilities::int_to_string(i, 3);

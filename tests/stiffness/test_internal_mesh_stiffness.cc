@@ -1,0 +1,147 @@
+// Mesh stiffness of an internal (ring-planet) pair from the FE contact solve of
+// stiffness/mesh_stiffness.h: the planet as the torque-driven pinion, the ring held fixed on the
+// outer circle of its rim.
+//
+// The pair: planet z = 24, ring z = 69 (the inner set of the bi-planetary train, gear-data.md §2),
+// module 2.5 mm, 20°, no profile shift (the paper's modules and shifts of §2 are not in the
+// reference data: stated defaults), face widths 26/24 mm as the split-path pair, the ring tip at
+// an addendum of 0.5·m_n (d_a2 = 170 mm): a standard ring tip interferes with the planet's
+// fillet (tests/kinematics/test_gear_pair.cc, InternalPair). Planet bore 20 mm; the ring's rim
+// under its root circle (d_f2 = 178.75 mm) is a parameter.
+#include "errors/errors.h"
+#include "kinematics/iso_stiffness.h"
+#include "stiffness/mesh_stiffness.h"
+#include "tests/stiffness/work_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <iomanip>
+#include <iostream>
+
+using namespace gearstiff;
+using namespace gearstiff::stiffness;
+
+namespace
+{
+constexpr double mm = 1e-3;
+
+kinematics::GearPairSpec planet_ring_pair()
+{
+  kinematics::GearPairSpec spec = kinematics::split_path_pair();
+  spec.pinion.teeth = 24;
+  spec.wheel.teeth = 69;
+  spec.wheel.internal = true;
+  spec.pinion.profile_shift = 0.;
+  spec.wheel.profile_shift = 0.;
+  spec.pinion.tip_diameter = 0.;                               // standard
+  spec.wheel.tip_diameter = (69. * 2.5 - 2. * 2.5 * 0.5) * mm; // addendum 0.5·m_n
+  spec.wheel.bore_diameter = 0.;                               // the rim thickness sets it
+  return spec;
+}
+
+GearMeshStiffnessSettings internal_case(geometry::PairPosition position, double rim_modules)
+{
+  GearMeshStiffnessSettings settings;
+  settings.scene.pair = planet_ring_pair();
+  settings.scene.position = position;
+  settings.scene.wheel_rim_thickness = rim_modules * 2.5 * mm;
+  settings.contact.friction_coefficient = 0.; // the torque-ratio oracle below is frictionless
+  settings.scene_file = stiffness_work_stem("internal") + ".msh";
+  return settings;
+}
+
+GearMeshStiffnessResult solve(const GearMeshStiffnessSettings& settings, const std::string& label)
+{
+  GearMeshStiffness<2> analysis(MPI_COMM_SELF, settings);
+  const GearMeshStiffnessResult r = analysis.run();
+  std::filesystem::remove(settings.scene_file);
+  std::cout << std::setprecision(6) << label << ": roll " << r.pinion_roll_angle * 180. / M_PI
+            << " deg, k = " << r.mesh_stiffness / 1e6 << " N/um, |Tr/T1| = " << r.torque_ratio
+            << " (r_b2/r_b1 = " << r.wheel_base_radius / r.pinion_base_radius << "), pairs "
+            << r.loaded_pairs << ", p_max " << r.max_contact_pressure / 1e6 << " MPa, root "
+            << r.pinion_root_stress / 1e6 << "/" << r.wheel_root_stress / 1e6 << " MPa, "
+            << r.n_dofs << " DoFs, " << r.total_time << " s\n";
+  return r;
+}
+
+// Without friction every contact force acts along the line of action, tangent to both base
+// circles, so the ring carries |T_ring| = T1·r_b2/r_b1 exactly whatever the deformation (an
+// exact oracle; the tolerance is the contact solver's force balance, 1e-6 relative as for the
+// external pair in test_stiffness_sweep.cc).
+TEST(InternalMeshStiffness, FrictionlessTorqueRatioAtSweepPositions)
+{
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(planet_ring_pair());
+  GearMeshStiffnessSettings settings = internal_case(geometry::PairPosition::roll_angle, 3.);
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  // Three positions of a 64-position sweep over one base pitch from A (stiffness/
+  // mesh_stiffness_sweep.h): next to A (ring tip corner), middle, next to the end.
+  for (const unsigned int i : {0u, 32u, 63u})
+  {
+    const double position = pair.contact_start + (i + 0.5) * pair.transverse_base_pitch / 64.;
+    settings.scene.pinion_roll_angle = position / r_b1;
+    const GearMeshStiffnessResult r = solve(settings, "sweep position " + std::to_string(i));
+    EXPECT_NEAR(r.torque_ratio, r.wheel_base_radius / r.pinion_base_radius,
+                1e-6 * r.wheel_base_radius / r.pinion_base_radius);
+    EXPECT_EQ(r.kinematic_pairs, pair.pairs_in_contact(position));
+    EXPECT_GT(r.mesh_stiffness, 0.);
+    EXPECT_GT(r.wheel_root_stress, 0.); // the ring fillets are evaluated
+  }
+}
+
+// The ring's concave flank conforms to the planet's convex one: the contact is stiffer than
+// with an external wheel of the same teeth (same planet, same tooth counts, both rims thick),
+// and the Hertz contact half-width of the internal pair is larger at the same load. ISO 6336-1
+// method B c'·b (9.3.2: an internal wheel enters q' with z_n2 = ∞, kinematics/iso_stiffness.cc)
+// is printed beside the FE value: an empirical reference, not an oracle.
+TEST(InternalMeshStiffness, StifferThanExternalPairOfTheSamePlanet)
+{
+  const GearMeshStiffnessResult internal =
+      solve(internal_case(geometry::PairPosition::single, 5.), "internal single, s_R = 5 m");
+  GearMeshStiffnessSettings external = internal_case(geometry::PairPosition::single, 0.);
+  external.scene.pair.wheel.internal = false;
+  external.scene.pair.wheel.tip_diameter = 0.; // standard tips: no interference externally
+  external.scene.pair.wheel.bore_diameter = 150. * mm;
+  const GearMeshStiffnessResult outer = solve(external, "external single");
+  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(
+      kinematics::compute_gear_pair(internal_case(geometry::PairPosition::single, 5.).scene.pair));
+  std::cout << "ISO 6336-1 c'b (internal, z_n2 = inf): " << iso.single_per_width / 1e6
+            << " N/um; FE internal " << internal.mesh_stiffness / 1e6 << ", external "
+            << outer.mesh_stiffness / 1e6 << " N/um (ratio "
+            << internal.mesh_stiffness / outer.mesh_stiffness << ")\n";
+  EXPECT_GT(internal.mesh_stiffness, outer.mesh_stiffness);
+  EXPECT_LT(internal.max_contact_pressure, outer.max_contact_pressure);
+}
+
+// A thin ring rim bends under the tooth load: k rises with the rim thickness s_R and levels off
+// towards the thick-rim value (docs/internal-gears.md has the study from s_R/m = 1 to 5).
+TEST(InternalMeshStiffness, StiffnessRisesWithRimThickness)
+{
+  double previous = 0.;
+  for (const double modules : {1., 2., 4.})
+  {
+    const GearMeshStiffnessResult r =
+        solve(internal_case(geometry::PairPosition::single, modules),
+              "rim s_R/m = " + std::to_string(modules));
+    EXPECT_GT(r.mesh_stiffness, previous);
+    previous = r.mesh_stiffness;
+  }
+}
+
+// A rim thinner than one module under the ring's root circle is refused before meshing,
+// naming the field (the command maps it to "Gear pair scene/wheel rim thickness").
+TEST(InternalMeshStiffness, RejectsThinRim)
+{
+  GearMeshStiffnessSettings settings = internal_case(geometry::PairPosition::single, 0.5);
+  try
+  {
+    GearMeshStiffness<2>(MPI_COMM_SELF, settings).run();
+    FAIL() << "a rim of half a module was accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_EQ(e.parameter(), geometry::scene_field::wheel_rim_thickness);
+  }
+  EXPECT_FALSE(std::filesystem::exists(settings.scene_file));
+}
+} // namespace
