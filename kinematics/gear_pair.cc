@@ -94,7 +94,9 @@ void check_contact_ratio(const GearPairGeometry& result)
 // root circle, an internal gear's outer diameter (bore_diameter) outside it.
 void check_bore(const GearSpec& gear, bool wheel, double root_diameter)
 {
-  if (gear.bore_diameter == 0.)
+  // An internal wheel's outer diameter is checked by the FE scene against its rim thickness;
+  // the pair's geometry does not depend on it.
+  if (gear.bore_diameter == 0. || gear.internal)
     return;
   if (!(gear.bore_diameter > 0.))
     throw InputError(gear_parameter_name(wheel, "bore diameter"), "must be 0 or positive");
