@@ -521,12 +521,11 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
   if (!spec.wheel.internal)
     throw InputError(parameter, "an automatic tip is offered for internal wheels only");
   check_gear(spec.wheel, true);
-  // Between the reference circle (a tooth of full addendum and more) and the
-  // root circle.
+  // A ring's tip lies inside its reference circle; the longest teeth reach down towards the
+  // base circle.
   const double m_n = spec.wheel.normal_module;
   const double reference = spec.wheel.teeth * m_n / std::cos(spec.wheel.helix_angle);
-  const double root =
-      reference + 2. * m_n * (spec.wheel.dedendum_coefficient - spec.wheel.profile_shift);
+  const double base = reference * std::cos(spec.wheel.pressure_angle);
   const auto clears = [&](double tip)
   {
     GearPairSpec trial = spec;
@@ -544,20 +543,18 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
       return false;
     }
   };
-  // Short ring teeth fail on ε_α < 1, long ones on interference: find a valid
-  // tip from the root side first, then bisect towards the interference limit.
-  double low = reference, high = root;
-  if (clears(low))
-    return low;
-  const int steps = 200;
-  int step = 1;
-  while (step < steps && !clears(root - step * (root - reference) / steps))
+  // Short ring teeth fail on ε_α < 1, long ones on interference: find a valid tip from the
+  // reference circle down, then bisect towards the interference limit below it.
+  const int steps = 400;
+  int step = 0;
+  const auto at = [&](int i) { return reference - i * (reference - base) / steps; };
+  while (step < steps && !clears(at(step)))
     ++step;
   if (step == steps)
-    throw InputError(parameter, "no ring tip between the reference and root circles clears the "
+    throw InputError(parameter, "no ring tip between the base and reference circles clears the "
                                 "pinion's involute with a margin of " +
                                     millimetres(margin) + " at ε_α ≥ 1");
-  high = root - step * (root - reference) / steps;
+  double low = base, high = at(step);
   while (high - low > 1e-12)
   {
     const double middle = 0.5 * (low + high);

@@ -134,7 +134,7 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec);
 // the pinion's fillet: the smallest ring tip diameter (the longest ring teeth) for which the
 // pair is valid (compute_gear_pair accepts it) and the ring tip meets the pinion at least
 // `margin` (m, along the line of action) above the pinion's form circle. InputError naming
-// "Gear pair/Wheel/tip diameter" when no ring tip between the reference and root circles
+// "Gear pair/Wheel/tip diameter" when no ring tip between the base and reference circles
 // qualifies. Cost: about 60 pair evaluations (sub-millisecond).
 double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin);
 
