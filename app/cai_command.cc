@@ -23,11 +23,11 @@
 
 namespace
 {
+namespace ansys = gearstiff::kinematics::split_path_published; // the published FE values
 using namespace gearstiff;
 using namespace gearstiff::app;
 
 // gear-data.md §1: the paper scales the Cai curve so one pair's peak equals k'_j (ANSYS).
-constexpr double ansys_single = 327.222e6; // N/m
 const std::string paper_source = "gear-data.md §1 (Reszuta & Drewniak 2015: Cai peak = k'_j)";
 
 void declare_parameters(dealii::ParameterHandler& prm)
@@ -47,7 +47,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   prm.enter_subsection("Cai calibration");
   const bool fit_shape = prm.get_bool("fit shape");
   prm.leave_subsection();
-  if (p.mode != "sweep")
+  if (p.mode != StiffnessMode::sweep)
     throw InputError("Stiffness/mode", "the Cai calibration needs mode = sweep");
   // Checked before the FE sweep: every position yields at least one pair sample, so the fit's
   // unknowns (the scale, or the scale and three shape coefficients: dynamics/cai_stiffness.h)
@@ -67,7 +67,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     samples.push_back({position, stiffness});
   const dynamics::CaiFit fit = dynamics::fit_cai_parameters(
       samples, contact_ratio, dynamics::StiffnessSampleKind::single_pair, fit_shape);
-  const dynamics::CaiParameters paper = dynamics::cai_published_parameters(ansys_single);
+  const dynamics::CaiParameters paper =
+      dynamics::cai_published_parameters(ansys::single_pair_stiffness);
 
   report.add_text("samples", std::to_string(samples.size()) +
                                  " single-pair FE samples k_j = share_j·k from " +
@@ -77,7 +78,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_text("fit", fit_shape ? "scale and shape (least squares, shape peak 1)"
                                    : "scale only (published Cai shape 0.55, 1.8, -1.8)");
   if (p.published_reference)
-    report.add_compared_value("cai_scale", fit.parameters.scale / 1e6, ansys_single / 1e6, "N/µm",
+    report.add_compared_value("cai_scale", fit.parameters.scale / 1e6,
+                              ansys::single_pair_stiffness / 1e6, "N/µm",
                               "calibrated Cai scale (one pair's peak stiffness)", paper_source);
   else
     report.add_value("cai_scale", fit.parameters.scale / 1e6, "N/µm",

@@ -90,6 +90,11 @@ void declare_gear_scene_parameters(ParameterHandler& prm,
   prm.declare_entry("wheel bore radius", format_number(defaults.wheel_bore_radius / mm, 10),
                     Double(0.),
                     "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
+  prm.declare_entry("wheel rim thickness", format_number(defaults.wheel_rim_thickness / mm, 10),
+                    Double(0.),
+                    "internal wheel (ring): rim thickness under the root circle [mm], the rim's "
+                    "outer circle held fixed; 0 = outer radius from 'wheel bore radius' or Gear "
+                    "pair/Wheel/bore diameter (the ring's outer diameter); at least one module");
   prm.declare_entry("rim", defaults.rim == geometry::RimModel::full ? "full" : "sector",
                     Selection("sector|full"),
                     std::string("sector: rim of the modelled teeth only, cut radially (cut faces "
@@ -106,7 +111,25 @@ void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneS
   spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
   spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
   spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
+  spec.wheel_rim_thickness = prm.get_double("wheel rim thickness") * mm;
   spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
   prm.leave_subsection();
+}
+
+ParameterNames gear_scene_parameter_names()
+{
+  namespace field = geometry::scene_field;
+  const std::string section = "Gear pair scene/";
+  return {{field::position, section + "position"},
+          {field::pinion_roll_angle, section + "pinion roll angle"},
+          {field::pinion_teeth_modelled, section + "pinion teeth modelled"},
+          {field::wheel_teeth_modelled, section + "wheel teeth modelled"},
+          {field::pinion_bore_radius, section + "pinion bore radius"},
+          {field::wheel_bore_radius, section + "wheel bore radius"},
+          {field::wheel_rim_thickness, section + "wheel rim thickness"},
+          {field::both_flanks, section + "both flanks"},
+          {field::pinion_torque, section + "pinion torque"},
+          {field::young_modulus, section + "Young's modulus"},
+          {field::poisson_ratio, section + "Poisson's ratio"}};
 }
 } // namespace gearstiff::app

@@ -4,10 +4,13 @@
 // Lengths in mm; parse_* convert to SI.
 #pragma once
 
+#include "errors/errors.h"
 #include "geometry/cycloid_disc.h"
 #include "geometry/scene_gear_pair.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <map>
+#include <string>
 
 namespace gearstiff::app
 {
@@ -30,4 +33,29 @@ void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
                                    bool sector_cuts_free);
 // Fills pinion/wheel_teeth_modelled, pinion/wheel_bore_radius and rim.
 void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
+
+// The libraries name the fields of their specs in an InputError ("scene.pinion_bore_radius",
+// geometry::scene_field); a command names the parameter the user writes. Library field ->
+// parameter path of one command.
+using ParameterNames = std::map<std::string, std::string>;
+// The gear-pair scene's fields as the `mesh` command declares them ("Gear pair scene/...").
+ParameterNames gear_scene_parameter_names();
+
+// Runs `work`; an InputError naming a field of `names` is thrown again under its parameter
+// path, any other error passes unchanged.
+template <typename Work>
+auto with_parameter_names(const ParameterNames& names, Work&& work) -> decltype(work())
+{
+  try
+  {
+    return work();
+  }
+  catch (const InputError& e)
+  {
+    const auto found = names.find(e.parameter());
+    if (found == names.end())
+      throw;
+    throw InputError(found->second, e.reason());
+  }
+}
 } // namespace gearstiff::app

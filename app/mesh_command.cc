@@ -74,7 +74,7 @@ void declare_parameters(ParameterHandler& prm)
 
   const geometry::GearPairSceneSpec gear;
   prm.enter_subsection("Gear pair scene");
-  prm.declare_entry("position", gear.position, Selection("single|double|roll angle"),
+  prm.declare_entry("position", "single", Selection("single|double|roll angle"),
                     "single: pitch point if in the single-contact zone (else its middle); double: "
                     "middle of the first double-contact zone; roll angle: see below");
   prm.declare_entry("pinion roll angle", "20", Double(),
@@ -145,7 +145,7 @@ geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
   parse_gear_scene_parameters(prm, spec);
   spec.mesh = parse_scene_mesh_parameters(prm);
   prm.enter_subsection("Gear pair scene");
-  spec.position = prm.get("position");
+  spec.position = geometry::parse_pair_position(prm.get("position"), "Gear pair scene/position");
   spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
   spec.both_flanks = prm.get_bool("both flanks");
   spec.pinion_torque = prm.get_double("pinion torque");
@@ -356,7 +356,9 @@ void run(ParameterHandler& prm, CommandContext& context)
   geometry::SceneInfo info;
   try
   {
-    info = gear      ? geometry::write_gear_pair_scene(gear_spec, path)
+    info = gear ? with_parameter_names(gear_scene_parameter_names(), [&]
+                                       { return geometry::write_gear_pair_scene(gear_spec, path); })
+                      .info
            : cycloid ? geometry::write_cycloid_scene(cycloid_spec, path)
                      : geometry::write_cylinders_scene(cylinder_spec, path);
     if (deck.write)
@@ -384,7 +386,8 @@ const CommandRegistration registration(
      "the face width (3D), sizes graded from h_c at the contacts (default a tenth of the Hertz\n"
      "half-width) to the body size. Physical groups: material ids 1 (pinion, disc, cylinder 1),\n"
      "2 (wheel, rollers, cylinder 2); boundary ids 1/2 bores (roller pins), 3/4 candidate\n"
-     "contact surfaces, 5/6 sector cuts (flat faces), 7 side faces (3D), 8 output-pin holes,\n"
-     "0 free. Leftover triangles or inverted cells are an error.",
+     "contact surfaces (gear pair: one id per loaded flank, 200 + j on pinion tooth j and\n"
+     "400 + j on the wheel tooth meshing it), 5/6 sector cuts (flat faces), 7 side faces (3D),\n"
+     "8 output-pin holes, 0 free. Leftover triangles or inverted cells are an error.",
      declare_parameters, run});
 } // namespace

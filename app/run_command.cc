@@ -28,14 +28,12 @@
 
 namespace
 {
+namespace ansys = gearstiff::kinematics::split_path_published; // the published FE values
 using namespace gearstiff;
 using namespace gearstiff::app;
 
 const std::string source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
-const std::string ansys_source = "gear-data.md §1 (Reszuta & Drewniak 2015, ANSYS)";
 const std::string iso_source = "gear-data.md §5 (ISO 6336-1 method B, ≈ 330 N/µm)";
-constexpr double ansys_single = 327.222e6; // N/m, k'_j
-constexpr double ansys_double = 497.521e6; // N/m, k'_d
 constexpr double published_mean = 449.9e6; // N/m, k_γ = k'_j·(0.75·ε_α + 0.25)
 
 void declare_parameters(dealii::ParameterHandler& prm)
@@ -58,7 +56,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   dealii::Timer timer(context.mpi_communicator, true);
   StiffnessParameters p = parse_stiffness_parameters(prm);
-  if (p.mode != "sweep")
+  if (p.mode != StiffnessMode::sweep)
     throw InputError("Stiffness/mode", "the run command needs mode = sweep (its k(θ) part)");
   Report& report = context.report;
 
@@ -80,26 +78,27 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   // 2. Single- and double-pair stiffness (all ranks in one solve each).
   context.pcout << "run: single- and double-pair contact solves" << std::endl;
   StiffnessParameters position = p;
-  position.mode = "single";
-  position.settings.scene.position = "single";
+  position.mode = StiffnessMode::single;
+  position.settings.scene.position = geometry::PairPosition::single;
   const stiffness::GearMeshStiffnessResult single =
       solve_stiffness_position(position, context, "single");
-  position.mode = "double";
-  position.settings.scene.position = "double";
+  position.mode = StiffnessMode::double_pair;
+  position.settings.scene.position = geometry::PairPosition::double_pair;
   const stiffness::GearMeshStiffnessResult twin =
       solve_stiffness_position(position, context, "double");
   report.add_compared_value("single_pair_stiffness", single.mesh_stiffness / 1e6,
-                            ansys_single / 1e6, "N/µm", "single-pair mesh stiffness k'_j (FE)",
-                            ansys_source);
-  report.add_compared_value("double_pair_stiffness", twin.mesh_stiffness / 1e6, ansys_double / 1e6,
-                            "N/µm", "double-pair mesh stiffness k'_d (FE)", ansys_source);
+                            ansys::single_pair_stiffness / 1e6, "N/µm",
+                            "single-pair mesh stiffness k'_j (FE)", ansys::source);
+  report.add_compared_value("double_pair_stiffness", twin.mesh_stiffness / 1e6,
+                            ansys::double_pair_stiffness / 1e6, "N/µm",
+                            "double-pair mesh stiffness k'_d (FE)", ansys::source);
   report.add_compared_value(
       "single_vs_iso", single.mesh_stiffness / 1e6, iso.single_per_width / 1e6, "N/µm",
       "single-pair FE stiffness against ISO 6336-1 c'·b (this pair)", "kinematics/iso_stiffness.h");
   report.add_compared_value("single_pinion_rotation", single.pinion_rotation * 1e4, 2.481,
-                            "1e-4 rad", "single-pair pinion rotation Δφ", ansys_source);
+                            "1e-4 rad", "single-pair pinion rotation Δφ", ansys::source);
   report.add_compared_value("double_pinion_rotation", twin.pinion_rotation * 1e4, 1.632, "1e-4 rad",
-                            "double-pair pinion rotation Δφ", ansys_source);
+                            "double-pair pinion rotation Δφ", ansys::source);
 
   // 3. k(θ) sweep and Cai calibration.
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
@@ -132,7 +131,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     samples.push_back({x, k});
   const dynamics::CaiFit fit = dynamics::fit_cai_parameters(
       samples, contact_ratio, dynamics::StiffnessSampleKind::single_pair, false);
-  report.add_compared_value("cai_scale", fit.parameters.scale / 1e6, ansys_single / 1e6, "N/µm",
+  report.add_compared_value("cai_scale", fit.parameters.scale / 1e6,
+                            ansys::single_pair_stiffness / 1e6, "N/µm",
                             "calibrated Cai scale (one pair's peak)", source + ": Cai peak = k'_j");
   report.add_value("cai_fit_relative_rms", fit.rms_residual / fit.parameters.scale, "-",
                    "Cai fit rms residual / scale");
@@ -153,8 +153,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const std::vector<std::pair<std::string, dynamics::MeshStiffness>> sources = {
       {"calibrated Cai", dynamics::MeshStiffness::cai(fit.parameters, "calibrated Cai")},
       {"FE k(θ) table", dynamics::MeshStiffness::table(table_x, table_k, "FE k(θ) table")},
-      {"paper-scaled Cai", dynamics::MeshStiffness::cai(
-                               dynamics::cai_published_parameters(ansys_single), "paper Cai")}};
+      {"paper-scaled Cai",
+       dynamics::MeshStiffness::cai(
+           dynamics::cai_published_parameters(ansys::single_pair_stiffness), "paper Cai")}};
   ReportTable& kv_table = report.add_table(
       "run_kv",
       {"source", "kv_max_mesh1", "kv_max_mesh2", "kv_min_mesh1", "kv_min_mesh2", "mean_stiffness"},
@@ -194,7 +195,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
         << dynamics_table_input(sweep);
     const std::string csv = temporary_csv(report, "run_sweep");
     context.plot("plot_stiffness.py",
-                 {csv, format_number(ansys_single / 1e6, 8), format_number(ansys_double / 1e6, 8),
+                 {csv, format_number(ansys::single_pair_stiffness / 1e6, 8),
+                  format_number(ansys::double_pair_stiffness / 1e6, 8),
                   format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
                  "run_stiffness.png", "k(θ) with ANSYS and ISO 6336 values");
     std::filesystem::remove(csv);

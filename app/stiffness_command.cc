@@ -23,23 +23,19 @@
 
 namespace
 {
+namespace ansys = gearstiff::kinematics::split_path_published; // the published FE values
 using namespace gearstiff;
 using namespace gearstiff::app;
 
-const std::string ansys_source = "gear-data.md §1 (Reszuta & Drewniak 2015, ANSYS)";
-// gear-data.md §1: k'_j = 327 222 N/mm, k'_d = 497 521 N/mm.
-constexpr double ansys_single = 327.222e6; // N/m
-constexpr double ansys_double = 497.521e6; // N/m
-
 // Which position a mode solves, and why it stands for that mode.
-std::string position_reason(const std::string& mode, const kinematics::GearPairGeometry& pair,
+std::string position_reason(StiffnessMode mode, const kinematics::GearPairGeometry& pair,
                             const stiffness::GearMeshStiffnessResult& r)
 {
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
   const auto mm = [](double v) { return format_number(v * 1e3, 5) + " mm"; };
   const std::string zone = "single-contact zone [B, D] = [" + mm(pair.single_contact_start()) +
                            ", " + mm(pair.single_contact_end()) + "] from T1";
-  if (mode == "single")
+  if (mode == StiffnessMode::single)
   {
     const bool at_pitch = std::abs(r.reference_position - pair.pitch_point) < 1e-12;
     return (at_pitch
@@ -49,7 +45,7 @@ std::string position_reason(const std::string& mode, const kinematics::GearPairG
                       "reverses at C) has no moment there"
                 : "the middle of the " + zone + " (the pitch point lies outside it)");
   }
-  if (mode == "double")
+  if (mode == StiffnessMode::double_pair)
     return "the middle of the first double-contact zone [A, B] (" + mm(r.reference_position) +
            " from T1); the second pair sits one base pitch further, in the middle of [D, E]";
   return "roll angle " + format_number(r.pinion_roll_angle / degree, 6) + "° (" +
@@ -91,26 +87,27 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_value("iso_mesh_stiffness", iso.mesh_alpha_per_width / 1e6, "N/µm",
                    "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
 
-  if (p.mode != "sweep")
+  if (p.mode != StiffnessMode::sweep)
   {
-    context.pcout << "stiffness: solving the " << p.mode << " position on "
+    context.pcout << "stiffness: solving the " << mode_name(p.mode) << " position on "
                   << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
                   << std::endl;
     const stiffness::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
     report.add_text("position", position_reason(p.mode, pair, r));
-    const double reference = p.mode == "single" ? ansys_single : ansys_double;
-    const bool compare = p.published_reference && p.mode != "roll angle";
+    const double reference = p.mode == StiffnessMode::single ? ansys::single_pair_stiffness
+                                                             : ansys::double_pair_stiffness;
+    const bool compare = p.published_reference && p.mode != StiffnessMode::roll_angle;
     if (compare)
       report.add_compared_value("mesh_stiffness", r.mesh_stiffness / 1e6, reference / 1e6, "N/µm",
-                                p.mode == "single" ? "single-pair mesh stiffness k'_j"
-                                                   : "double-pair mesh stiffness k'_d",
-                                ansys_source);
+                                p.mode == StiffnessMode::single ? "single-pair mesh stiffness k'_j"
+                                                                : "double-pair mesh stiffness k'_d",
+                                ansys::source);
     else
       report.add_value("mesh_stiffness", r.mesh_stiffness / 1e6, "N/µm",
                        "mesh stiffness T1/(r_b1²·Δφ)");
     report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100.,
                      "%", "k against ISO 6336-1 c'·b");
-    report_stiffness_position(report, r, "", p.mode);
+    report_stiffness_position(report, r, "", mode_name(p.mode));
     context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
                   << " s (" << r.n_dofs << " DoFs)" << std::endl;
     return;
@@ -136,10 +133,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_value("max_stiffness", highest / 1e6, "N/µm", "largest k (double-contact zone)");
   if (p.published_reference)
   {
-    report.add_compared_value("min_vs_ansys_single", lowest / 1e6, ansys_single / 1e6, "N/µm",
-                              "smallest k against the ANSYS single-pair value", ansys_source);
-    report.add_compared_value("max_vs_ansys_double", highest / 1e6, ansys_double / 1e6, "N/µm",
-                              "largest k against the ANSYS double-pair value", ansys_source);
+    report.add_compared_value("min_vs_ansys_single", lowest / 1e6,
+                              ansys::single_pair_stiffness / 1e6, "N/µm",
+                              "smallest k against the ANSYS single-pair value", ansys::source);
+    report.add_compared_value("max_vs_ansys_double", highest / 1e6,
+                              ansys::double_pair_stiffness / 1e6, "N/µm",
+                              "largest k against the ANSYS double-pair value", ansys::source);
   }
   report.add_value("mean_vs_iso", (mean / iso.mesh_alpha_per_width - 1.) * 100., "%",
                    "mean k against ISO 6336-1 c_γα·b");
@@ -161,8 +160,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     }
     const std::string csv = temporary_csv(report, "stiffness_sweep");
     context.plot("plot_stiffness.py",
-                 {csv, format_number(p.published_reference ? ansys_single / 1e6 : 0., 8),
-                  format_number(p.published_reference ? ansys_double / 1e6 : 0., 8),
+                 {csv,
+                  format_number(p.published_reference ? ansys::single_pair_stiffness / 1e6 : 0., 8),
+                  format_number(p.published_reference ? ansys::double_pair_stiffness / 1e6 : 0., 8),
                   format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
                  "stiffness_sweep.png",
                  "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean");

@@ -7,6 +7,7 @@
 #include "errors/errors.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
@@ -81,6 +82,77 @@ void declare_stiffness_sweep_parameters(ParameterHandler& prm, unsigned int posi
   prm.leave_subsection();
 }
 
+std::string mode_name(StiffnessMode mode)
+{
+  switch (mode)
+  {
+  case StiffnessMode::single:
+    return "single";
+  case StiffnessMode::double_pair:
+    return "double";
+  case StiffnessMode::roll_angle:
+    return "roll angle";
+  case StiffnessMode::sweep:
+    break;
+  }
+  return "sweep";
+}
+
+ParameterNames stiffness_parameter_names()
+{
+  ParameterNames names = gear_scene_parameter_names();
+  names[geometry::scene_field::position] = "Stiffness/mode";
+  names[geometry::scene_field::pinion_roll_angle] = "Stiffness/pinion roll angle";
+  names[geometry::scene_field::pinion_torque] = "Stiffness/pinion torque";
+  names[geometry::scene_field::young_modulus] = "Stiffness/Young's modulus";
+  names[geometry::scene_field::poisson_ratio] = "Stiffness/Poisson's ratio";
+  names[stiffness::stiffness_parameter::torque] = "Stiffness/pinion torque";
+  names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
+  names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
+  names[stiffness::stiffness_parameter::start] = "Stiffness/sweep start";
+  return names;
+}
+
+namespace
+{
+StiffnessMode parse_mode(const std::string& text)
+{
+  for (const StiffnessMode mode : {StiffnessMode::single, StiffnessMode::double_pair,
+                                   StiffnessMode::roll_angle, StiffnessMode::sweep})
+    if (text == mode_name(mode))
+      return mode;
+  throw InputError("Stiffness/mode",
+                   "'" + text + "' is not one of single, double, roll angle, sweep");
+}
+
+// The checks the analysis makes before it meshes, run at parse time: the library's own (one
+// copy each), their field names mapped to the parameters by the caller.
+void check_stiffness_parameters(const StiffnessParameters& p,
+                                const kinematics::GearPairGeometry& pair)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  stiffness::check_stiffness_settings(s);
+  // The pattern admits the closed interval; ν = 0.5 makes λ infinite (incompressible) and
+  // E = 0 no material at all.
+  if (!(s.material.youngs_modulus > 0.))
+    throw InputError(geometry::scene_field::young_modulus, "must be positive");
+  if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
+    throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
+  if (p.mode == StiffnessMode::sweep)
+    stiffness::sweep_positions(pair, p.sweep);
+  // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  const double position = s.scene.pinion_roll_angle * r_b1;
+  if (p.mode == StiffnessMode::roll_angle &&
+      (position < pair.contact_start - 1e-12 || position > pair.contact_end + 1e-12))
+    throw InputError(
+        geometry::scene_field::pinion_roll_angle,
+        "no tooth pair is in contact at " + std::to_string(s.scene.pinion_roll_angle / degree) +
+            "°: the path of contact spans " + std::to_string(pair.contact_start / r_b1 / degree) +
+            "° to " + std::to_string(pair.contact_end / r_b1 / degree) + "°");
+}
+} // namespace
+
 StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
 {
   StiffnessParameters p;
@@ -92,7 +164,7 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Stiffness");
-  p.mode = prm.get("mode");
+  p.mode = parse_mode(prm.get("mode"));
   s.scene.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
   s.pinion_torque = prm.get_double("pinion torque");
   s.material.youngs_modulus = prm.get_double("Young's modulus") * 1e9;
@@ -104,31 +176,27 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   p.published_reference = prm.get_bool("published reference");
   prm.leave_subsection();
 
-  if (!(s.pinion_torque > 0.))
-    throw InputError(stiffness::stiffness_parameter::torque,
-                     "must be positive: a torque <= 0 turns the pinion away from the wheel and "
-                     "separates the loaded flanks (no contact, no stiffness)");
   if (positions <= 0)
-    throw InputError(stiffness::stiffness_parameter::positions,
+    throw InputError("Stiffness/sweep positions",
                      "must be at least 1 (a sweep with zero positions computes nothing)");
-  p.sweep.positions = static_cast<unsigned int>(positions);
-  if (!(p.sweep.base_pitches > 0.))
-    throw InputError(stiffness::stiffness_parameter::pitches, "must be positive");
+  p.sweep.positions = static_cast<unsigned int>(std::min<long>(positions, UINT_MAX));
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(s.scene.pair);
-  const double r_b1 = 0.5 * pair.pinion.base_diameter;
   if (start >= 0.)
-    p.sweep.start_position = start * degree * r_b1;
-  // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
-  const double position = s.scene.pinion_roll_angle * r_b1;
-  if (p.mode == "roll angle" &&
-      (position < pair.contact_start - 1e-12 || position > pair.contact_end + 1e-12))
-    throw InputError(
-        "Stiffness/pinion roll angle",
-        "no tooth pair is in contact at " + std::to_string(s.scene.pinion_roll_angle / degree) +
-            "°: the path of contact spans " + std::to_string(pair.contact_start / r_b1 / degree) +
-            "° to " + std::to_string(pair.contact_end / r_b1 / degree) + "°");
-  if (p.mode != "sweep")
-    s.scene.position = p.mode;
+    p.sweep.start_position = start * degree * 0.5 * pair.pinion.base_diameter;
+  switch (p.mode)
+  {
+  case StiffnessMode::single:
+    s.scene.position = geometry::PairPosition::single;
+    break;
+  case StiffnessMode::double_pair:
+    s.scene.position = geometry::PairPosition::double_pair;
+    break;
+  case StiffnessMode::roll_angle:
+  case StiffnessMode::sweep:
+    s.scene.position = geometry::PairPosition::roll_angle;
+    break;
+  }
+  with_parameter_names(stiffness_parameter_names(), [&] { check_stiffness_parameters(p, pair); });
   return p;
 }
 
@@ -164,8 +232,8 @@ std::string vtu_directory(const StiffnessParameters& p, CommandContext& context,
 } // namespace
 
 stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
-                                                          CommandContext& context,
-                                                          const std::string& label)
+                                                            CommandContext& context,
+                                                            const std::string& label)
 {
   stiffness::GearMeshStiffnessSettings settings = p.settings;
   settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
@@ -177,10 +245,14 @@ stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParam
   stiffness::GearMeshStiffnessResult result;
   try
   {
-    if (settings.scene.mesh.dimension == 3)
-      result = stiffness::GearMeshStiffness<3>(context.mpi_communicator, settings).run();
-    else
-      result = stiffness::solve_on_first_rank<2>(context.mpi_communicator, settings);
+    result = with_parameter_names(
+        stiffness_parameter_names(),
+        [&]
+        {
+          return settings.scene.mesh.dimension == 3
+                     ? stiffness::GearMeshStiffness<3>(context.mpi_communicator, settings).run()
+                     : stiffness::solve_on_first_rank<2>(context.mpi_communicator, settings);
+        });
   }
   catch (...)
   {
@@ -194,8 +266,8 @@ stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParam
 }
 
 stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
-                                                    CommandContext& context,
-                                                    const std::string& label)
+                                                      CommandContext& context,
+                                                      const std::string& label)
 {
   stiffness::GearMeshStiffnessSettings settings = p.settings;
   std::vector<std::string> bases;
@@ -209,12 +281,16 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
                 << " base pitch(es) on " << ranks << " rank(s)" << std::endl;
   const auto progress = [&context, &label](const std::string& line)
   { context.pcout << label << ": " << line << std::endl; };
-  const stiffness::StiffnessSweepResult sweep =
-      settings.scene.mesh.dimension == 3
-          ? stiffness::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep, stem, progress)
-          : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep, stem,
-                                        progress);
-  return sweep;
+  return with_parameter_names(
+      stiffness_parameter_names(),
+      [&]
+      {
+        return settings.scene.mesh.dimension == 3
+                   ? stiffness::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep,
+                                                   stem, progress)
+                   : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep,
+                                                   stem, progress);
+      });
 }
 
 void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,

@@ -8,19 +8,31 @@
 // accuracy-versus-cost study (docs/accuracy.md).
 #pragma once
 
+#include "app/geometry_parameters.h"
+#include "dynamics/cai_stiffness.h"
 #include "stiffness/mesh_stiffness.h"
 #include "stiffness/mesh_stiffness_sweep.h"
-#include "dynamics/cai_stiffness.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
 
 namespace gearstiff::app
 {
+// What "Stiffness/mode" asks for: one position of the scene, or a sweep.
+enum class StiffnessMode
+{
+  single,
+  double_pair,
+  roll_angle,
+  sweep
+};
+// The parameter-file spelling: "single", "double", "roll angle", "sweep".
+std::string mode_name(StiffnessMode mode);
+
 struct StiffnessParameters
 {
   stiffness::GearMeshStiffnessSettings settings; // SI, scene_file left empty
-  std::string mode = "single";                 // single | double | roll angle | sweep
+  StiffnessMode mode = StiffnessMode::single;
   stiffness::StiffnessSweepSpec sweep;
   bool write_vtu = false;
   bool published_reference = true; // compare with gear-data.md §1 (split-path pair only)
@@ -30,7 +42,12 @@ struct StiffnessParameters
 void declare_stiffness_parameters(dealii::ParameterHandler& prm);
 // The same with the defaults "Stiffness/mode = sweep" and "sweep positions = `positions`".
 void declare_stiffness_sweep_parameters(dealii::ParameterHandler& prm, unsigned int positions);
+// Parses and checks everything the analysis checks before it meshes (gear pair, scene
+// extent, torque, sweep positions), so that bad input fails before any FE work.
 StiffnessParameters parse_stiffness_parameters(dealii::ParameterHandler& prm);
+// The stiffness and scene fields (stiffness::stiffness_parameter, geometry::scene_field) as the
+// stiffness, cai and run commands declare them.
+ParameterNames stiffness_parameter_names();
 } // namespace gearstiff::app
 
 // Steps shared by the stiffness, cai and run commands (they live here because app/ builds only
@@ -42,12 +59,12 @@ namespace gearstiff::app
 // One position (modes single, double, roll angle), solved on all ranks of the context.
 // `label` names the VTU files when p.write_vtu is set.
 stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
-                                                          CommandContext& context,
-                                                          const std::string& label);
+                                                            CommandContext& context,
+                                                            const std::string& label);
 // The sweep of p.sweep, positions distributed over the ranks, progress on context.pcout.
 stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
-                                                    CommandContext& context,
-                                                    const std::string& label);
+                                                      CommandContext& context,
+                                                      const std::string& label);
 
 // The position's values (prefix + key) in the report: stiffness, rotation, transmission
 // error, torque ratio, pairs, pressures, root stresses and cost.

@@ -1,6 +1,7 @@
 #include "geometry/tooth_profile.h"
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace gearstiff::geometry
 {
@@ -28,4 +29,19 @@ std::vector<ProfilePoint> full_outline(const ToothProfile& tooth)
   }
   return outline;
 }
+double arc_length(const std::function<double(double)>& speed, double a, double b)
+{
+  static const double nodes[5] = {-0.9061798459386640, -0.5384693101056831, 0., 0.5384693101056831,
+                                  0.9061798459386640};
+  static const double weights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                    0.4786286704993665, 0.2369268850561891};
+  const int pieces = 4;
+  const double h = (b - a) / pieces;
+  double length = 0.;
+  for (int p = 0; p < pieces; ++p)
+    for (int q = 0; q < 5; ++q)
+      length += 0.5 * h * weights[q] * speed(a + (p + 0.5) * h + 0.5 * h * nodes[q]);
+  return std::abs(length);
+}
+
 } // namespace gearstiff::geometry

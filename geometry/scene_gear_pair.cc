@@ -1,13 +1,14 @@
 #include "geometry/scene_gear_pair.h"
 
-#include "geometry/involute_tooth.h"
 #include "errors/errors.h"
+#include "geometry/involute_tooth.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <sstream>
 
@@ -15,8 +16,6 @@ namespace gearstiff::geometry
 {
 namespace
 {
-constexpr const char* section = "Gear pair scene/";
-
 // Contacts closer than this to the ends A, E of the path of contact still count (m): the
 // zone ends come from the same floating-point formulas as the positions.
 constexpr double path_tolerance = 1e-9;
@@ -39,26 +38,47 @@ InvoluteToothSpec tooth_spec(const kinematics::GearSpec& gear,
   return spec;
 }
 
-bool is_flank(const ProfilePoint& point)
+// Radius of the outline's first point, the middle of the root gap: where the rim begins.
+double outline_root_radius(const ToothProfile& tooth)
 {
-  return point.segment == ProfileSegment::flank || point.segment == ProfileSegment::relief;
+  return tooth.points.front().position.norm();
 }
 
-// ψ_b: an involute flank on side +1 of a tooth on the +x axis lies at polar angle
-// ψ_b − inv(α_r), cos α_r = r_b/r. Recovered from the profile points, so the placement below
+bool is_flank(ProfileSegment segment)
+{
+  return segment == ProfileSegment::flank || segment == ProfileSegment::relief;
+}
+
+// The loaded flank of a tooth in its own frame (header comment): side +1 of the pinion and of
+// an external wheel; an internal wheel turns with the pinion, and the pinion's leading flank
+// pushes the ring tooth's −1 side.
+int loaded_side(const ToothProfile& tooth)
+{
+  return tooth.internal ? -1 : +1;
+}
+
+// σ of involute_tooth.cc: +1 external, −1 internal (the involute unwinds the other way).
+double involute_sign(const ToothProfile& tooth)
+{
+  return tooth.internal ? -1. : 1.;
+}
+
+// ψ_b: the loaded flank (side s) of a tooth on the +x axis lies at polar angle
+// s·(ψ_b − σ·inv(α_r)), cos α_r = r_b/r. Recovered from the profile points, so the placement below
 // relies only on the profile actually meshed; points that disagree mean the profile is not
 // the involute of its base circle, and placing it would produce a wrong gap.
 double base_half_angle(const ToothProfile& tooth)
 {
   std::vector<double> values;
   for (const auto& point : tooth.points)
-    if (point.segment == ProfileSegment::flank && point.side == +1)
+    if (point.segment == ProfileSegment::flank && point.side == loaded_side(tooth))
     {
       const double r = point.position.norm();
       if (r <= tooth.base_radius * (1. + 1e-12))
         continue;
-      values.push_back(std::atan2(point.position.y(), point.position.x()) +
-                       kinematics::involute(std::acos(tooth.base_radius / r)));
+      values.push_back(loaded_side(tooth) * std::atan2(point.position.y(), point.position.x()) +
+                       involute_sign(tooth) *
+                           kinematics::involute(std::acos(tooth.base_radius / r)));
     }
   if (values.empty())
     throw SolverFailure("gear scene placement", "the tooth profile has no involute flank points");
@@ -75,14 +95,15 @@ double base_half_angle(const ToothProfile& tooth)
   return sum / values.size();
 }
 
-// Rotation (rad, CCW) that puts the loaded flank (side +1) of tooth 0 of a gear centred at
-// `centre` through `point`.
+// Rotation (rad, CCW) that puts the loaded flank of tooth 0 of a gear centred at `centre`
+// through `point`.
 double placing_rotation(const ToothProfile& tooth, const Eigen::Vector2d& centre,
                         const Eigen::Vector2d& point)
 {
   const Eigen::Vector2d d = point - centre;
-  return std::atan2(d.y(), d.x()) - base_half_angle(tooth) +
-         kinematics::involute(std::acos(tooth.base_radius / d.norm()));
+  const double involute = kinematics::involute(std::acos(tooth.base_radius / d.norm()));
+  return std::atan2(d.y(), d.x()) -
+         loaded_side(tooth) * (base_half_angle(tooth) - involute_sign(tooth) * involute);
 }
 
 Eigen::Vector2d place(const Eigen::Vector2d& p, const Eigen::Vector2d& centre, double rotation)
@@ -90,86 +111,81 @@ Eigen::Vector2d place(const Eigen::Vector2d& p, const Eigen::Vector2d& centre, d
   return centre + Eigen::Rotation2Dd(rotation) * p;
 }
 
-// Parameter t of the intersection of origin + t·direction with the loaded flank (side +1)
-// polyline of the given tooth, nearest to t = 0; none if the line misses the flank.
+bool is_loaded_flank(const ProfileEdge& edge, const ToothProfile& tooth)
+{
+  return is_flank(edge.segment) && edge.side == loaded_side(tooth);
+}
+
+// Parameter t of the intersection of origin + t·direction with the loaded flank
+// polyline of the given tooth, nearest to t = 0; none if the line misses the flank. The
+// polyline is the one meshed: its top piece runs from the tip corner (edge_between).
 std::optional<double> flank_intersection(const ToothProfile& tooth, const Eigen::Vector2d& centre,
                                          double rotation, const Eigen::Vector2d& origin,
                                          const Eigen::Vector2d& direction)
 {
   std::optional<double> best;
-  const ProfilePoint* previous = nullptr;
-  for (const auto& point : tooth.points)
+  for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
   {
-    if (!(is_flank(point) && point.side == +1))
-    {
-      previous = nullptr;
+    if (!is_loaded_flank(edge_between(tooth.points[i], tooth.points[i + 1]), tooth))
       continue;
-    }
-    if (previous != nullptr)
+    const Eigen::Vector2d a = place(tooth.points[i].position, centre, rotation);
+    const Eigen::Vector2d b = place(tooth.points[i + 1].position, centre, rotation);
+    // Solve origin + t·direction = a + s·(b − a).
+    Eigen::Matrix2d m;
+    m << direction, a - b;
+    if (std::abs(m.determinant()) > 1e-300)
     {
-      const Eigen::Vector2d a = place(previous->position, centre, rotation);
-      const Eigen::Vector2d b = place(point.position, centre, rotation);
-      // Solve origin + t·direction = a + s·(b − a).
-      Eigen::Matrix2d m;
-      m << direction, a - b;
-      if (std::abs(m.determinant()) > 1e-300)
-      {
-        const Eigen::Vector2d ts = m.inverse() * (a - origin);
-        if (ts(1) >= -1e-12 && ts(1) <= 1. + 1e-12 && (!best || std::abs(ts(0)) < std::abs(*best)))
-          best = ts(0);
-      }
+      const Eigen::Vector2d ts = m.inverse() * (a - origin);
+      if (ts(1) >= -1e-12 && ts(1) <= 1. + 1e-12 && (!best || std::abs(ts(0)) < std::abs(*best)))
+        best = ts(0);
     }
-    previous = &point;
   }
   return best;
 }
 
-// The outline pieces of teeth `first`..`last` (indices CCW from tooth 0), placed. A new piece
-// starts wherever the segment or side changes, so kinks (flank to tip, relief start) stay
-// kinks and each piece carries one boundary id.
+// The outline pieces of teeth `first`..`last` (indices CCW from tooth 0), placed; the flanks of
+// tooth k carry flank_id(k). A new piece
+// starts wherever the segment or side of the outline changes (edge_between), so kinks (flank
+// to tip, relief start) stay kinks and each piece carries one boundary id.
 std::vector<BoundaryPiece> teeth_pieces(const ToothProfile& tooth, const Eigen::Vector2d& centre,
-                                        double rotation, int first, int last, int flank_id,
-                                        bool both_flanks)
+                                        double rotation, int first, int last,
+                                        const std::function<int(int)>& flank_id, bool both_flanks)
 {
   std::vector<BoundaryPiece> pieces;
-  const auto id_of = [&](const ProfilePoint& p)
-  { return (is_flank(p) && (p.side == +1 || both_flanks)) ? flank_id : 0; };
   for (int k = first; k <= last; ++k)
   {
-    const double angle = rotation + k * tooth.angular_pitch;
-    const ProfilePoint* run_start = nullptr;
-    for (std::size_t i = 0; i < tooth.points.size(); ++i)
+    const auto id_of = [&](const ProfileEdge& edge)
     {
-      const ProfilePoint& point = tooth.points[i];
-      const Eigen::Vector2d position = place(point.position, centre, angle);
-      const bool new_run = run_start == nullptr || point.segment != run_start->segment ||
-                           point.side != run_start->side;
-      if (new_run)
+      return (is_flank(edge.segment) && (edge.side == loaded_side(tooth) || both_flanks))
+                 ? flank_id(k)
+                 : 0;
+    };
+    const double angle = rotation + k * tooth.angular_pitch;
+    std::optional<ProfileEdge> previous;
+    for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
+    {
+      const ProfileEdge edge = edge_between(tooth.points[i], tooth.points[i + 1]);
+      if (!previous || edge.segment != previous->segment || edge.side != previous->side)
       {
-        if (!pieces.empty() && i > 0)
-          pieces.back().points.push_back(position);
-        if (i + 1 < tooth.points.size())
-        {
-          pieces.emplace_back();
-          pieces.back().kind = CurveKind::spline;
-          pieces.back().boundary_id = id_of(point);
-          pieces.back().points.push_back(position);
-        }
-        run_start = &point;
+        pieces.emplace_back();
+        pieces.back().kind = CurveKind::spline;
+        pieces.back().boundary_id = id_of(edge);
+        pieces.back().points.push_back(place(tooth.points[i].position, centre, angle));
       }
-      else
-        pieces.back().points.push_back(position);
+      pieces.back().points.push_back(place(tooth.points[i + 1].position, centre, angle));
+      previous = edge;
     }
   }
-  // Consecutive teeth share their gap-middle point: the next tooth's first point starts a
-  // piece that duplicates the previous piece's end, which is where it belongs.
+  // Consecutive teeth share their gap-middle point: the next tooth's first piece starts where
+  // the previous tooth's last piece ends.
   return pieces;
 }
 
 struct GearBodySpec
 {
   std::string name;
-  int material_id, bore_id, flank_id, cut_id;
+  int material_id, bore_id, cut_id;
+  std::function<int(int)> flank_id; // of the tooth index in the gear's own frame
   double bore_radius;
 };
 
@@ -182,7 +198,7 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
   body.material_id = body_spec.material_id;
   body.outer.pieces =
       teeth_pieces(tooth, centre, rotation, first, last, body_spec.flank_id, both_flanks);
-  const double root_radius = tooth.points.front().position.norm();
+  const double root_radius = outline_root_radius(tooth);
   const double start_angle = rotation + (first - 0.5) * tooth.angular_pitch;
   const double end_angle = rotation + (last + 0.5) * tooth.angular_pitch;
   const Eigen::Vector2d outline_start = body.outer.pieces.front().points.front();
@@ -212,6 +228,13 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
         body.outer.pieces.push_back(piece);
     body.holes.push_back(circle_loop(centre, body_spec.bore_radius, body_spec.bore_id));
   }
+  // A ring's "bore" is its outer boundary, the teeth line the hole it encloses.
+  if (tooth.internal && rim == RimModel::full)
+  {
+    body.outer.pieces.back().points.back() = outline_start;
+    std::swap(body.outer, body.holes.front());
+    return body;
+  }
   // The loop closes on the first point exactly (rotations by 2π are not bit-exact).
   body.outer.pieces.back().points.back() = outline_start;
   return body;
@@ -221,33 +244,30 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
 double reference_position(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair)
 {
   const double b = pair.single_contact_start(), d = pair.single_contact_end();
-  if (spec.position == "single")
+  switch (spec.position)
   {
+  case PairPosition::single:
     if (!(d > b))
-      throw InputError(std::string(section) + "position",
+      throw InputError(scene_field::position,
                        "'single': the pair has no single-contact zone (contact ratio " +
                            std::to_string(pair.transverse_contact_ratio) + ")");
     return (pair.pitch_point >= b && pair.pitch_point <= d) ? pair.pitch_point : 0.5 * (b + d);
-  }
-  if (spec.position == "double")
+  case PairPosition::double_pair:
     return 0.5 * (pair.contact_start + b); // B = E − p_bt ends the first double zone
-  if (spec.position == "roll angle")
-  {
-    const double radius = 0.5 * pair.pinion.base_diameter;
-    const double position = spec.pinion_roll_angle * radius;
-    if (position < pair.contact_start - path_tolerance ||
-        position > pair.contact_end + path_tolerance)
-    {
-      std::ostringstream range;
-      range << "must lie on the path of contact, between "
-            << pair.contact_start / radius * 180 / M_PI << " and "
-            << pair.contact_end / radius * 180 / M_PI << " degrees";
-      throw InputError(std::string(section) + "pinion roll angle", range.str());
-    }
-    return position;
+  case PairPosition::roll_angle:
+    break;
   }
-  throw InputError(std::string(section) + "position",
-                   "'" + spec.position + "' is not one of single, double, roll angle");
+  const double radius = 0.5 * pair.pinion.base_diameter;
+  const double position = spec.pinion_roll_angle * radius;
+  if (position < pair.contact_start - path_tolerance ||
+      position > pair.contact_end + path_tolerance)
+  {
+    std::ostringstream range;
+    range << "must lie on the path of contact, between " << pair.contact_start / radius * 180 / M_PI
+          << " and " << pair.contact_end / radius * 180 / M_PI << " degrees";
+    throw InputError(scene_field::pinion_roll_angle, range.str());
+  }
+  return position;
 }
 
 // Window of `count` consecutive pair indices centred on the contacting ones; an even count
@@ -260,7 +280,165 @@ int window_start(const std::vector<int>& contacting, unsigned int count)
   centre /= contacting.size();
   return static_cast<int>(std::floor(centre - 0.5 * (count - 1.) + 1e-9));
 }
+
+// The spec's own checks (the pair's are kinematics'): load, material, flank choice.
+void check_scene_spec(const GearPairSceneSpec& spec)
+{
+  if (!(spec.wheel_rim_thickness >= 0.))
+    throw InputError(scene_field::wheel_rim_thickness, "must be 0 or positive");
+  if (spec.wheel_rim_thickness > 0. && !spec.pair.wheel.internal)
+    throw InputError(scene_field::wheel_rim_thickness,
+                     "applies to an internal wheel only (external gears: bore radius)");
+  if (spec.pair.pinion.helix_angle != 0. || spec.pair.wheel.helix_angle != 0.)
+    throw InputError(kinematics::gear_parameter_name(false, "helix angle"),
+                     "the gear-pair scene models spur gears only (helix angle 0)");
+  if (!(spec.pinion_torque > 0.))
+    throw InputError(scene_field::pinion_torque, "must be positive");
+  if (!(spec.young_modulus > 0.))
+    throw InputError(scene_field::young_modulus, "must be positive");
+  if (!(spec.poisson_ratio > 0. && spec.poisson_ratio < 0.5))
+    throw InputError(scene_field::poisson_ratio, "must lie in (0, 0.5)");
+}
+
+// The bore radius of one gear (internal wheel: the outer radius of its rim): the rim
+// thickness, else the scene's own radius, else half the gear's bore diameter. The rim under the
+// root must keep at least one module of material, or its mesh degenerates into a sliver.
+double bore_radius(double given, double rim_thickness, const kinematics::GearSpec& gear, bool wheel,
+                   const ToothProfile& tooth, const std::string& field)
+{
+  const double root_radius = outline_root_radius(tooth);
+  const double sigma = involute_sign(tooth);
+  const double radius = rim_thickness > 0. ? root_radius + rim_thickness
+                        : given > 0.       ? given
+                                           : 0.5 * gear.bore_diameter;
+  const std::string parameter = rim_thickness > 0. ? scene_field::wheel_rim_thickness
+                                : given > 0.
+                                    ? field
+                                    : kinematics::gear_parameter_name(wheel, "bore diameter");
+  if (!(radius > 0.))
+    throw InputError(parameter, std::string("must be positive (no ") +
+                                    (gear.internal ? "outer diameter" : "bore") +
+                                    " given for the gear)");
+  if (sigma * (root_radius - radius) < gear.normal_module)
+    throw InputError(parameter, "leaves a rim thinner than one module (" +
+                                    std::to_string(gear.normal_module * 1e3) +
+                                    " mm) under the root circle (root radius " +
+                                    std::to_string(root_radius * 1e3) + " mm)");
+  return radius;
+}
+
+void check_teeth_modelled(unsigned int count, unsigned int teeth, RimModel rim,
+                          const std::string& field)
+{
+  const unsigned int limit = rim == RimModel::sector ? teeth - 1 : teeth;
+  if (count < 1 || count > limit)
+    throw InputError(field, "must lie between 1 and " + std::to_string(limit) +
+                                (rim == RimModel::sector ? " (sector rim)" : ""));
+}
+
+// The pairs j inside the path of contact (A, E). A pair at an end (to round-off) touches only
+// at a tip corner, which the flank outlines cannot place: it is leaving or entering contact
+// and carries no load.
+std::vector<int> pairs_in_contact(const kinematics::GearPairGeometry& pair, double reference)
+{
+  std::vector<int> contacting;
+  for (int j = -3; j <= 3; ++j)
+  {
+    const double position = reference + j * pair.transverse_base_pitch;
+    if (position > pair.contact_start + path_tolerance &&
+        position < pair.contact_end - path_tolerance)
+      contacting.push_back(j);
+  }
+  if (contacting.empty())
+    throw SolverFailure("gear scene placement", "no pair in contact at the chosen position");
+  return contacting;
+}
+
+// The line of action (header comment): T1 on the pinion base circle, direction u.
+struct LineOfAction
+{
+  Eigen::Vector2d t1, u;
+  double t2; // m, T2 from T1 (internal pair: behind T1, negative)
+  Eigen::Vector2d at(double position) const { return t1 + position * u; }
+};
+
+LineOfAction line_of_action(const kinematics::GearPairGeometry& pair)
+{
+  const double alpha = pair.working_pressure_angle;
+  const double base_radius_1 = 0.5 * pair.pinion.base_diameter;
+  return {base_radius_1 * Eigen::Vector2d(std::cos(alpha), -std::sin(alpha)),
+          Eigen::Vector2d(std::sin(alpha), std::cos(alpha)),
+          pair.spec.wheel.internal ? -pair.line_of_action_length : pair.line_of_action_length};
+}
+
+// The placed teeth: profiles, centres and the rotations that put pair 0 at the reference.
+struct PlacedGears
+{
+  ToothProfile pinion, wheel;
+  Eigen::Vector2d pinion_centre, wheel_centre;
+  double pinion_rotation = 0., wheel_rotation = 0.;
+};
+
+// The wheel tooth that meshes pinion tooth j: −j on an external wheel (it turns the other
+// way), +j on a ring (it turns with the pinion).
+int mate_tooth(const ToothProfile& wheel, int j)
+{
+  return wheel.internal ? j : -j;
+}
+
+// Predicted contact of pair j with its Hertz estimate and its initial gap measured between the
+// placed flank outlines along the line of action.
+SceneContact predicted_contact(const GearPairSceneSpec& spec,
+                               const kinematics::GearPairGeometry& pair, const LineOfAction& line,
+                               const PlacedGears& gears, double reference, int j,
+                               double normal_force)
+{
+  SceneContact contact;
+  const double position = reference + j * pair.transverse_base_pitch;
+  contact.point = line.at(position);
+  contact.normal = line.u;
+  // The flank curvature radii are the distances to the tangent points T1 and T2; a ring's
+  // flank is concave (negative radius).
+  contact.first_curvature_radius = position;
+  contact.second_curvature_radius =
+      gears.wheel.internal ? -(position - line.t2) : line.t2 - position;
+  contact.normal_force = normal_force;
+  contact.first_feature = j;
+  contact.second_feature = -j;
+  if (!(contact.first_curvature_radius > 0. && std::abs(contact.second_curvature_radius) > 0. &&
+        (gears.wheel.internal || contact.second_curvature_radius > 0.)))
+    throw SolverFailure("gear scene placement", "contact outside the line of action");
+  const double face_width = pair.common_face_width;
+  contact.hertz_half_width = hertz_half_width(
+      normal_force / face_width, contact.first_curvature_radius, contact.second_curvature_radius,
+      spec.young_modulus, spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
+  const auto on_pinion = flank_intersection(gears.pinion, gears.pinion_centre,
+                                            gears.pinion_rotation + j * gears.pinion.angular_pitch,
+                                            contact.point, line.u);
+  const auto on_wheel = flank_intersection(gears.wheel, gears.wheel_centre,
+                                           gears.wheel_rotation + mate_tooth(gears.wheel, j) *
+                                                                      gears.wheel.angular_pitch,
+                                           contact.point, line.u);
+  if (!on_pinion || !on_wheel)
+    throw SolverFailure("gear scene placement",
+                        "the line of action misses a flank of pair " + std::to_string(j));
+  contact.gap = *on_wheel - *on_pinion;
+  return contact;
+}
 } // namespace
+
+int pinion_flank_id(int pair)
+{
+  if (std::abs(pair) > max_pair_index)
+    throw SolverFailure("gear scene ids",
+                        "tooth pair index " + std::to_string(pair) + " out of range");
+  return 200 + pair;
+}
+
+int wheel_flank_id(int pair)
+{
+  return pinion_flank_id(pair) + 200;
+}
 
 RimModel parse_rim_model(const std::string& text, const std::string& parameter)
 {
@@ -271,147 +449,102 @@ RimModel parse_rim_model(const std::string& text, const std::string& parameter)
   throw InputError(parameter, "'" + text + "' is not one of sector, full");
 }
 
-SceneInfo write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
+PairPosition parse_pair_position(const std::string& text, const std::string& parameter)
+{
+  if (text == "single")
+    return PairPosition::single;
+  if (text == "double")
+    return PairPosition::double_pair;
+  if (text == "roll angle")
+    return PairPosition::roll_angle;
+  throw InputError(parameter, "'" + text + "' is not one of single, double, roll angle");
+}
+
+GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
 {
   const auto start = std::chrono::steady_clock::now();
-  const std::string p = section;
 
   // Everything is checked before gmsh runs: the pair itself (interference, backlash, contact
   // ratio) by the kinematics, the scene's own extent here.
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
-  if (spec.pair.wheel.internal)
-    throw InputError(kinematics::gear_parameter_name(true, "internal"),
-                     "the gear-pair scene models external pairs only");
-  if (spec.pair.pinion.helix_angle != 0. || spec.pair.wheel.helix_angle != 0.)
-    throw InputError(kinematics::gear_parameter_name(false, "helix angle"),
-                     "the gear-pair scene models spur gears only (helix angle 0)");
-  if (!(spec.pinion_torque > 0.))
-    throw InputError(p + "pinion torque", "must be positive");
-  if (!(spec.young_modulus > 0.))
-    throw InputError(p + "Young's modulus", "must be positive");
-  if (!(spec.poisson_ratio > 0. && spec.poisson_ratio < 0.5))
-    throw InputError(p + "Poisson's ratio", "must lie in (0, 0.5)");
-
-  const ToothProfile pinion_tooth =
+  check_scene_spec(spec);
+  PlacedGears gears;
+  gears.pinion =
       generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
-  const ToothProfile wheel_tooth =
-      generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  gears.wheel = generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
 
-  const auto bore_radius = [&](double given, const kinematics::GearSpec& gear,
-                               const ToothProfile& tooth, const std::string& name)
-  {
-    const double radius = given > 0. ? given : 0.5 * gear.bore_diameter;
-    const std::string parameter =
-        given > 0. ? p + name
-                   : kinematics::gear_parameter_name(&gear == &spec.pair.wheel, "bore diameter");
-    const double root_radius = tooth.points.front().position.norm();
-    if (!(radius > 0.))
-      throw InputError(parameter, "must be positive (no bore given for the gear)");
-    // The rim under the root must keep at least one module of material, or the mesh of the
-    // rim degenerates into a sliver.
-    if (radius > root_radius - gear.normal_module)
-      throw InputError(parameter, "leaves a rim thinner than one module under the root circle "
-                                  "(root radius " +
-                                      std::to_string(root_radius * 1e3) + " mm)");
-    return radius;
-  };
-  const double pinion_bore =
-      bore_radius(spec.pinion_bore_radius, spec.pair.pinion, pinion_tooth, "pinion bore radius");
-  const double wheel_bore =
-      bore_radius(spec.wheel_bore_radius, spec.pair.wheel, wheel_tooth, "wheel bore radius");
+  GearPairScene scene;
+  scene.pinion_bore_radius = bore_radius(spec.pinion_bore_radius, 0., spec.pair.pinion, false,
+                                         gears.pinion, scene_field::pinion_bore_radius);
+  scene.wheel_bore_radius =
+      bore_radius(spec.wheel_bore_radius, spec.wheel_rim_thickness, spec.pair.wheel, true,
+                  gears.wheel, scene_field::wheel_bore_radius);
+  check_teeth_modelled(spec.pinion_teeth_modelled, spec.pair.pinion.teeth, spec.rim,
+                       scene_field::pinion_teeth_modelled);
+  check_teeth_modelled(spec.wheel_teeth_modelled, spec.pair.wheel.teeth, spec.rim,
+                       scene_field::wheel_teeth_modelled);
 
-  const auto check_count = [&](unsigned int count, unsigned int teeth, const std::string& name)
-  {
-    const unsigned int limit = spec.rim == RimModel::sector ? teeth - 1 : teeth;
-    if (count < 1 || count > limit)
-      throw InputError(p + name, "must lie between 1 and " + std::to_string(limit) +
-                                     (spec.rim == RimModel::sector ? " (sector rim)" : ""));
-  };
-  check_count(spec.pinion_teeth_modelled, spec.pair.pinion.teeth, "pinion teeth modelled");
-  check_count(spec.wheel_teeth_modelled, spec.pair.wheel.teeth, "wheel teeth modelled");
+  // Position and the pairs in contact there.
+  const LineOfAction line = line_of_action(pair);
+  scene.reference_position = reference_position(spec, pair);
+  scene.contact_pairs = pairs_in_contact(pair, scene.reference_position);
+  for (const auto& [count, field] :
+       {std::pair{spec.pinion_teeth_modelled, scene_field::pinion_teeth_modelled},
+        std::pair{spec.wheel_teeth_modelled, scene_field::wheel_teeth_modelled}})
+    if (count < scene.contact_pairs.size())
+      throw InputError(field, "must be at least the number of pairs in contact (" +
+                                  std::to_string(scene.contact_pairs.size()) +
+                                  ") at this position");
 
-  // Line of action (header comment): T1 on the pinion base circle, direction u.
-  const double alpha = pair.working_pressure_angle;
-  const double base_radius_1 = 0.5 * pair.pinion.base_diameter;
-  const Eigen::Vector2d pinion_centre(0., 0.), wheel_centre(pair.centre_distance, 0.);
-  const Eigen::Vector2d u(std::sin(alpha), std::cos(alpha));
-  const Eigen::Vector2d t1 = base_radius_1 * Eigen::Vector2d(std::cos(alpha), -std::sin(alpha));
-  const Eigen::Vector2d t2 = t1 + pair.line_of_action_length * u;
+  // Placement: the loaded flanks of pair 0 through the reference point.
+  const Eigen::Vector2d reference_point = line.at(scene.reference_position);
+  gears.pinion_centre = Eigen::Vector2d(0., 0.);
+  // An external wheel sits beyond the pitch point, a ring's centre on the other side of the
+  // pinion's (the pitch point lies on the ring's pitch circle, outside the pinion).
+  gears.wheel_centre =
+      Eigen::Vector2d(spec.pair.wheel.internal ? -pair.centre_distance : pair.centre_distance, 0.);
+  gears.pinion_rotation = placing_rotation(gears.pinion, gears.pinion_centre, reference_point);
+  gears.wheel_rotation = placing_rotation(gears.wheel, gears.wheel_centre, reference_point);
 
-  const double reference = reference_position(spec, pair);
-  std::vector<int> contacting;
-  for (int j = -3; j <= 3; ++j)
-  {
-    const double position = reference + j * pair.transverse_base_pitch;
-    // A pair at an end of the path (A or E, to round-off) touches only at a tip corner, which
-    // the flank outlines cannot place: it is leaving or entering contact and carries no load.
-    if (position > pair.contact_start + path_tolerance &&
-        position < pair.contact_end - path_tolerance)
-      contacting.push_back(j);
-  }
-  if (contacting.empty())
-    throw SolverFailure("gear scene placement", "no pair in contact at the chosen position");
-  for (const auto& [count, name] : {std::pair{spec.pinion_teeth_modelled, "pinion teeth modelled"},
-                                    std::pair{spec.wheel_teeth_modelled, "wheel teeth modelled"}})
-    if (count < contacting.size())
-      throw InputError(p + name, "must be at least the number of pairs in contact (" +
-                                     std::to_string(contacting.size()) + ") at this position");
-
-  const Eigen::Vector2d reference_point = t1 + reference * u;
-  const double pinion_rotation = placing_rotation(pinion_tooth, pinion_centre, reference_point);
-  const double wheel_rotation = placing_rotation(wheel_tooth, wheel_centre, reference_point);
-
-  // Predicted contacts, each with its measured initial gap between the placed flank outlines.
-  const double face_width = std::min(spec.pair.pinion.face_width, spec.pair.wheel.face_width);
-  const double normal_force = spec.pinion_torque / base_radius_1 / contacting.size();
+  const double normal_force =
+      spec.pinion_torque / (0.5 * pair.pinion.base_diameter) / scene.contact_pairs.size();
   std::vector<SceneContact> contacts;
-  for (const int j : contacting)
-  {
-    SceneContact contact;
-    const double position = reference + j * pair.transverse_base_pitch;
-    contact.point = t1 + position * u;
-    contact.normal = u;
-    contact.first_curvature_radius = position;
-    contact.second_curvature_radius = pair.line_of_action_length - position;
-    contact.normal_force = normal_force;
-    contact.first_feature = j;
-    contact.second_feature = -j;
-    if (!(contact.first_curvature_radius > 0. && contact.second_curvature_radius > 0.))
-      throw SolverFailure("gear scene placement", "contact outside the line of action");
-    contact.hertz_half_width = hertz_half_width(
-        normal_force / face_width, contact.first_curvature_radius, contact.second_curvature_radius,
-        spec.young_modulus, spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
-    const auto on_pinion =
-        flank_intersection(pinion_tooth, pinion_centre,
-                           pinion_rotation + j * pinion_tooth.angular_pitch, contact.point, u);
-    const auto on_wheel =
-        flank_intersection(wheel_tooth, wheel_centre,
-                           wheel_rotation - j * wheel_tooth.angular_pitch, contact.point, u);
-    if (!on_pinion || !on_wheel)
-      throw SolverFailure("gear scene placement",
-                          "the line of action misses a flank of pair " + std::to_string(j));
-    contact.gap = *on_wheel - *on_pinion;
-    contacts.push_back(contact);
-  }
+  for (const int j : scene.contact_pairs)
+    contacts.push_back(
+        predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force));
 
-  const int pinion_first = window_start(contacting, spec.pinion_teeth_modelled);
+  // Bodies: windows of modelled teeth centred on the contacting pairs, one id per flank.
+  const int pinion_first = window_start(scene.contact_pairs, spec.pinion_teeth_modelled);
   const int pinion_last = pinion_first + static_cast<int>(spec.pinion_teeth_modelled) - 1;
-  const int wheel_first_pair = window_start(contacting, spec.wheel_teeth_modelled);
+  const int wheel_first_pair = window_start(scene.contact_pairs, spec.wheel_teeth_modelled);
   const int wheel_last_pair = wheel_first_pair + static_cast<int>(spec.wheel_teeth_modelled) - 1;
+  for (int j = std::max(pinion_first, wheel_first_pair);
+       j <= std::min(pinion_last, wheel_last_pair); ++j)
+    scene.modelled_pairs.push_back(j);
 
   PlanarModel model;
-  model.bodies.push_back(gear_body({"pinion body", scene_ids::pinion_body, scene_ids::pinion_bore,
-                                    scene_ids::pinion_flanks, scene_ids::pinion_cuts, pinion_bore},
-                                   pinion_tooth, pinion_centre, pinion_rotation, pinion_first,
-                                   pinion_last, spec.rim, spec.both_flanks));
-  model.bodies.push_back(gear_body({"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore,
-                                    scene_ids::wheel_flanks, scene_ids::wheel_cuts, wheel_bore},
-                                   wheel_tooth, wheel_centre, wheel_rotation, -wheel_last_pair,
-                                   -wheel_first_pair, spec.rim, spec.both_flanks));
+  model.bodies.push_back(
+      gear_body({"pinion body", scene_ids::pinion_body, scene_ids::pinion_bore,
+                 scene_ids::pinion_cuts, pinion_flank_id, scene.pinion_bore_radius},
+                gears.pinion, gears.pinion_centre, gears.pinion_rotation, pinion_first, pinion_last,
+                spec.rim, spec.both_flanks));
+  const ToothProfile& wheel_tooth = gears.wheel;
+  const int wheel_first =
+      std::min(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
+  const int wheel_last =
+      std::max(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
+  model.bodies.push_back(
+      gear_body({"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
+                 [&wheel_tooth](int k) { return wheel_flank_id(mate_tooth(wheel_tooth, k)); },
+                 scene.wheel_bore_radius},
+                gears.wheel, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last,
+                spec.rim, spec.both_flanks));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},
-                          {scene_ids::wheel_bore, "wheel bore"},
-                          {scene_ids::pinion_flanks, "pinion candidate flanks"},
-                          {scene_ids::wheel_flanks, "wheel candidate flanks"}};
+                          {scene_ids::wheel_bore, "wheel bore"}};
+  for (int j = pinion_first; j <= pinion_last; ++j)
+    model.boundary_names[pinion_flank_id(j)] = "pinion flank " + std::to_string(j);
+  for (int j = wheel_first_pair; j <= wheel_last_pair; ++j)
+    model.boundary_names[wheel_flank_id(j)] = "wheel flank " + std::to_string(j);
   if (spec.rim == RimModel::sector)
   {
     model.boundary_names[scene_ids::pinion_cuts] = "pinion sector cuts";
@@ -420,46 +553,63 @@ SceneInfo write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string
 
   // The rims only carry the tooth loads to the bore: their cells may grow with depth below
   // the root circle, which keeps a thin-rimmed wheel sector from dominating the cell count.
-  const double pinion_root = pinion_tooth.points.front().position.norm();
-  const double wheel_root = wheel_tooth.points.front().position.norm();
-  const auto depth_below_root = [=](const Eigen::Vector2d& x)
+  scene.pinion_root_radius = outline_root_radius(gears.pinion);
+  scene.wheel_root_radius = outline_root_radius(gears.wheel);
+  const auto depth_below_root = [&](const Eigen::Vector2d& x)
   {
-    return std::max(pinion_root - (x - pinion_centre).norm(),
-                    wheel_root - (x - wheel_centre).norm());
+    return std::max(scene.pinion_root_radius - (x - gears.pinion_centre).norm(),
+                    involute_sign(gears.wheel) *
+                        (scene.wheel_root_radius - (x - gears.wheel_centre).norm()));
   };
-  SceneInfo info = mesh_scene(model, contacts, spec.mesh, face_width, file, depth_below_root);
+  scene.info =
+      mesh_scene(model, contacts, spec.mesh, pair.common_face_width, file, depth_below_root);
+  SceneInfo& info = scene.info;
   info.kind = "gear pair";
-  info.first_centre = pinion_centre;
-  info.second_centre = wheel_centre;
-  info.first_rotation = pinion_rotation;
-  info.second_rotation = wheel_rotation;
-  info.reference_line = {t1, t2};
-  const auto add = [&](const std::string& key, double value, const std::string& unit,
-                       const std::string& description) {
-    info.quantities.push_back({key, value, unit, description});
-  };
-  add("centre_distance", pair.centre_distance, "m", "centre distance a_w");
-  add("working_pressure_angle", alpha, "rad", "working pressure angle α_wt");
-  add("reference_contact_position", reference, "m", "reference contact, distance from T1");
-  add("pinion_roll_angle", reference / base_radius_1, "rad", "pinion roll angle ℓ/r_b1");
-  add("pairs_in_contact", contacting.size(), "-", "tooth pairs in contact");
-  add("pinion_teeth_modelled", spec.pinion_teeth_modelled, "-", "pinion teeth in the scene");
-  add("wheel_teeth_modelled", spec.wheel_teeth_modelled, "-", "wheel teeth in the scene");
-  add("pinion_bore_radius", pinion_bore, "m", "pinion bore radius");
-  add("wheel_bore_radius", wheel_bore, "m", "wheel bore radius");
-  add("pinion_root_radius", pinion_root, "m", "pinion root radius (rim outer radius)");
-  add("wheel_root_radius", wheel_root, "m", "wheel root radius (rim outer radius)");
-  add("pinion_tip_radius", pinion_tooth.tip_radius, "m", "pinion tip radius");
-  add("wheel_tip_radius", wheel_tooth.tip_radius, "m", "wheel tip radius");
-  add("pinion_sector_angle",
-      spec.rim == RimModel::sector ? spec.pinion_teeth_modelled * pinion_tooth.angular_pitch
-                                   : 2. * M_PI,
-      "rad", "angle spanned by the pinion body");
-  add("wheel_sector_angle",
-      spec.rim == RimModel::sector ? spec.wheel_teeth_modelled * wheel_tooth.angular_pitch
-                                   : 2. * M_PI,
-      "rad", "angle spanned by the wheel body");
+  info.first_centre = gears.pinion_centre;
+  info.second_centre = gears.wheel_centre;
+  info.first_rotation = gears.pinion_rotation;
+  info.second_rotation = gears.wheel_rotation;
+  info.reference_line = {line.at(std::min(0., line.t2)),
+                         line.at(std::max(line.t2, pair.contact_end))};
+  scene.pinion_roll_angle = scene.reference_position / (0.5 * pair.pinion.base_diameter);
+  scene.pinion_tip_radius = gears.pinion.tip_radius;
+  scene.wheel_tip_radius = gears.wheel.tip_radius;
+  scene.pinion_sector_angle = spec.rim == RimModel::sector
+                                  ? spec.pinion_teeth_modelled * gears.pinion.angular_pitch
+                                  : 2. * M_PI;
+  scene.wheel_sector_angle = spec.rim == RimModel::sector
+                                 ? spec.wheel_teeth_modelled * gears.wheel.angular_pitch
+                                 : 2. * M_PI;
+  info.quantities = scene_quantities(scene);
+  info.quantities.insert(info.quantities.begin(),
+                         {{"centre_distance", pair.centre_distance, "m", "centre distance a_w"},
+                          {"working_pressure_angle", pair.working_pressure_angle, "rad",
+                           "working pressure angle α_wt"},
+                          {"pinion_teeth_modelled", double(spec.pinion_teeth_modelled), "-",
+                           "pinion teeth in the scene"},
+                          {"wheel_teeth_modelled", double(spec.wheel_teeth_modelled), "-",
+                           "wheel teeth in the scene"}});
   info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return info;
+  return scene;
+}
+
+std::vector<SceneQuantity> scene_quantities(const GearPairScene& scene)
+{
+  return {
+      {"reference_contact_position", scene.reference_position, "m",
+       "reference contact, distance from T1"},
+      {"pinion_roll_angle", scene.pinion_roll_angle, "rad", "pinion roll angle ℓ/r_b1"},
+      {"pairs_in_contact", double(scene.contact_pairs.size()), "-", "tooth pairs in contact"},
+      {"modelled_pairs", double(scene.modelled_pairs.size()), "-",
+       "tooth pairs with both teeth in the scene"},
+      {"pinion_bore_radius", scene.pinion_bore_radius, "m", "pinion bore radius"},
+      {"wheel_bore_radius", scene.wheel_bore_radius, "m", "wheel bore radius"},
+      {"pinion_root_radius", scene.pinion_root_radius, "m",
+       "pinion root radius (rim outer radius)"},
+      {"wheel_root_radius", scene.wheel_root_radius, "m", "wheel root radius (rim outer radius)"},
+      {"pinion_tip_radius", scene.pinion_tip_radius, "m", "pinion tip radius"},
+      {"wheel_tip_radius", scene.wheel_tip_radius, "m", "wheel tip radius"},
+      {"pinion_sector_angle", scene.pinion_sector_angle, "rad", "angle spanned by the pinion body"},
+      {"wheel_sector_angle", scene.wheel_sector_angle, "rad", "angle spanned by the wheel body"}};
 }
 } // namespace gearstiff::geometry

@@ -3,6 +3,10 @@
 // the other teeth removed, as in the ANSYS model of Reszuta & Drewniak 2015), the wheel placed in
 // mesh, contact points predicted along the line of action.
 //
+// Internal pairs (ring wheel): the ring centre at (−a_w, 0), its rim held on its outer circle
+// (boundary id "wheel bore"), its loaded flank side −1, and pinion tooth j meshes ring tooth +j;
+// T2 lies behind T1 on the line of action.
+//
 // Scene frame: pinion centre at the origin, wheel centre at (a_w, 0); the pinion drives counter-
 // clockwise, so the line of action runs from T1 = r_b1·(cos α_wt, −sin α_wt) on the pinion base
 // circle upwards through the pitch point to T2 on the wheel base circle, with direction
@@ -20,6 +24,7 @@
 #include "kinematics/gear_pair.h"
 
 #include <string>
+#include <vector>
 
 namespace gearstiff::geometry
 {
@@ -29,20 +34,29 @@ enum class RimModel
   full    // the whole rim and bore, teeth other than the modelled ones removed
 };
 
+// Where the reference pair (j = 0) touches.
+enum class PairPosition
+{
+  single,      // pitch point if it lies in the single-contact zone, else that zone's middle
+  double_pair, // middle of the first double-contact zone (the second pair then sits in the
+               // middle of the last one)
+  roll_angle   // GearPairSceneSpec::pinion_roll_angle
+};
+
 struct GearPairSceneSpec
 {
   kinematics::GearPairSpec pair = kinematics::split_path_pair();
 
-  // Position: "single" (pitch point if it lies in the single-contact zone, else that zone's
-  // middle), "double" (middle of the first double-contact zone; the second pair then sits in
-  // the middle of the last one), or "roll angle" (pinion_roll_angle below).
-  std::string position = "single";
+  PairPosition position = PairPosition::single;
   double pinion_roll_angle = 0.; // rad, ℓ_ref/r_b1 of the reference pair, within [A, E]
 
   unsigned int pinion_teeth_modelled = 5; // -, teeth of the pinion in the scene
   unsigned int wheel_teeth_modelled = 5;  // -, teeth of the wheel in the scene
   double pinion_bore_radius = 0.;         // m; 0: half of pair.pinion.bore_diameter
   double wheel_bore_radius = 0.;          // m; 0: half of pair.wheel.bore_diameter
+  // m, internal wheel: rim thickness under the root circle, which sets its outer radius (held
+  // fixed); 0: the outer radius is wheel_bore_radius (or half of pair.wheel.bore_diameter).
+  double wheel_rim_thickness = 0.;
   RimModel rim = RimModel::sector;
   bool both_flanks = false; // also mark the unloaded flanks as candidate contact surfaces
 
@@ -57,10 +71,58 @@ struct GearPairSceneSpec
   ProfileResolution resolution = {4, 32, 160, 24, 12};
 };
 
-// Checks the spec (InputError naming the parameter; all before gmsh runs), builds the scene,
+// Names of the spec's fields in the InputError the scene throws ("scene.<member>"); the
+// command that fills the spec maps them to its own parameter names. Errors of the pair itself
+// come from kinematics::compute_gear_pair and name "Gear pair/..." parameters.
+namespace scene_field
+{
+inline const std::string position = "scene.position";
+inline const std::string pinion_roll_angle = "scene.pinion_roll_angle";
+inline const std::string pinion_teeth_modelled = "scene.pinion_teeth_modelled";
+inline const std::string wheel_teeth_modelled = "scene.wheel_teeth_modelled";
+inline const std::string pinion_bore_radius = "scene.pinion_bore_radius";
+inline const std::string wheel_bore_radius = "scene.wheel_bore_radius";
+inline const std::string wheel_rim_thickness = "scene.wheel_rim_thickness";
+inline const std::string both_flanks = "scene.both_flanks";
+inline const std::string pinion_torque = "scene.pinion_torque";
+inline const std::string young_modulus = "scene.young_modulus";
+inline const std::string poisson_ratio = "scene.poisson_ratio";
+} // namespace scene_field
+
+// Boundary ids of the tooth flanks: every modelled pinion tooth j writes its flanks with
+// pinion_flank_id(j), the wheel tooth −j that meshes it with wheel_flank_id(j), so that each
+// tooth pair is its own contact pair without any relabelling. |j| ≤ max_pair_index.
+constexpr int max_pair_index = 99;
+int pinion_flank_id(int pair);
+int wheel_flank_id(int pair);
+
+// A written gear-pair scene: the common SceneInfo and what this scene adds, by name.
+struct GearPairScene
+{
+  SceneInfo info;                  // mesh, ids, predicted contacts (one per pair in contact)
+  double reference_position = 0.;  // m, ℓ_ref of pair 0 along the line of action from T1
+  double pinion_roll_angle = 0.;   // rad, ℓ_ref/r_b1
+  std::vector<int> contact_pairs;  // -, j of the pairs inside the path of contact (A, E)
+  std::vector<int> modelled_pairs; // -, j whose pinion and wheel teeth are both in the scene
+  double pinion_bore_radius = 0.;  // m
+  double wheel_bore_radius = 0.;   // m
+  double pinion_root_radius = 0.;  // m, of the meshed profile
+  double wheel_root_radius = 0.;   // m
+  double pinion_tip_radius = 0.;   // m
+  double wheel_tip_radius = 0.;    // m
+  double pinion_sector_angle = 0.; // rad, angle spanned by the pinion body (full rim: 2π)
+  double wheel_sector_angle = 0.;  // rad
+};
+
+// Checks the spec (InputError naming the field; all before gmsh runs), builds the scene,
 // meshes it into `file` and returns what the FE module needs. Cost: well under a second in 2D.
-SceneInfo write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file);
+GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file);
+
+// The scene's numbers for reports (key, SI value, unit, description).
+std::vector<SceneQuantity> scene_quantities(const GearPairScene& scene);
 
 // Parses "sector" or "full" (InputError naming `parameter` otherwise).
 RimModel parse_rim_model(const std::string& text, const std::string& parameter);
+// Parses "single", "double" or "roll angle" (InputError naming `parameter` otherwise).
+PairPosition parse_pair_position(const std::string& text, const std::string& parameter);
 } // namespace gearstiff::geometry

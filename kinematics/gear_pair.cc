@@ -49,10 +49,11 @@ void check_gear(const GearSpec& gear, bool wheel)
                      "the rack tip round does not fit into the rack dedendum");
 }
 
-// The rack flank generates the involute down to the height where its tip round starts; a
-// point at depth h below the rolling line lies h / sin α_t along the line of action from
-// the pitch point. Returns the roll length from the gear's own tangent point T (m);
-// negative for an external gear means the rack undercuts the involute.
+// The rack flank generates the involute down to the height where its tip round
+// starts; a point at depth h below the rolling line lies h / sin α_t along the
+// line of action from the pitch point. Returns the roll length from the gear's
+// own tangent point T (m); negative for an external gear means the rack
+// undercuts the involute.
 double form_roll_length(const GearSpec& gear, double reference_radius,
                         double transverse_pressure_angle)
 {
@@ -65,6 +66,45 @@ double form_roll_length(const GearSpec& gear, double reference_radius,
   return reference_radius * std::sin(transverse_pressure_angle) -
          side * (straight_flank_depth - gear.profile_shift * m) /
              std::sin(transverse_pressure_angle);
+}
+
+// ε_α ≥ 1, naming what shortened the path of contact: a given centre distance
+// larger than the zero-backlash one pulls the tips apart (positive backlash),
+// otherwise the tips are short.
+void check_contact_ratio(const GearPairGeometry& result)
+{
+  const double ratio = result.transverse_contact_ratio;
+  if (ratio >= 1.)
+    return;
+  const std::string path = result.path_of_contact > 0.
+                               ? "transverse contact ratio ε_α = " + format(ratio) + " < 1"
+                               : "the tips do not reach each other's flanks along the line of "
+                                 "action (no path of "
+                                 "contact)";
+  if (result.spec.centre_distance > 0. && result.backlash > 0.)
+    throw InputError("Gear pair/centre distance", millimetres(result.centre_distance) +
+                                                      " exceeds the zero-backlash distance "
+                                                      "(backlash " +
+                                                      millimetres(result.backlash) + "): " + path);
+  throw InputError(gear_parameter_name(false, "tip diameter"),
+                   path + ": the tips are too short for continuous contact");
+}
+
+// The body inside the root circle: an external gear's bore must lie inside its
+// root circle, an internal gear's outer diameter (bore_diameter) outside it.
+void check_bore(const GearSpec& gear, bool wheel, double root_diameter)
+{
+  // An internal wheel's outer diameter is checked by the FE scene against its rim thickness;
+  // the pair's geometry does not depend on it.
+  if (gear.bore_diameter == 0. || gear.internal)
+    return;
+  if (!(gear.bore_diameter > 0.))
+    throw InputError(gear_parameter_name(wheel, "bore diameter"), "must be 0 or positive");
+  if (gear.internal ? gear.bore_diameter <= root_diameter : gear.bore_diameter >= root_diameter)
+    throw InputError(gear_parameter_name(wheel, "bore diameter"),
+                     millimetres(gear.bore_diameter) + " lies " +
+                         (gear.internal ? "inside" : "outside") + " the root circle " +
+                         millimetres(root_diameter) + ": no gear body is left");
 }
 } // namespace
 
@@ -82,8 +122,8 @@ double inverse_involute(double value)
 {
   if (!(value >= 0.) || !(value < 10.))
     throw SolverFailure("inverse involute", "argument " + format(value) + " out of range");
-  // inv α ≈ α³/3 near 0 gives a start on the convex side, from which Newton converges
-  // monotonically (inv is convex on [0, π/2)).
+  // inv α ≈ α³/3 near 0 gives a start on the convex side, from which Newton
+  // converges monotonically (inv is convex on [0, π/2)).
   double angle = std::min(std::cbrt(3. * value), 1.5);
   for (unsigned int iteration = 0; iteration < 60; ++iteration)
   {
@@ -120,7 +160,9 @@ double GearPairGeometry::single_contact_end() const
   return contact_start + transverse_base_pitch;
 }
 
-GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
+namespace
+{
+void check_pair_spec(const GearPairSpec& spec)
 {
   check_gear(spec.pinion, false);
   check_gear(spec.wheel, true);
@@ -135,8 +177,9 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
   if (g1.pressure_angle != g2.pressure_angle)
     throw InputError(gear_parameter_name(true, "pressure angle"),
                      "differs from the pinion's: meshing gears share the basic rack");
-  // Meshing external helical gears have opposite hands, internal ones the same hand; the
-  // pair is described by the pinion's β, the wheel's must have the same magnitude.
+  // Meshing external helical gears have opposite hands, internal ones the same
+  // hand; the pair is described by the pinion's β, the wheel's must have the
+  // same magnitude.
   if (std::abs(std::abs(g1.helix_angle) - std::abs(g2.helix_angle)) > 1e-12)
     throw InputError(gear_parameter_name(true, "helix angle"),
                      "differs in magnitude from the pinion's");
@@ -146,39 +189,70 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
                          std::to_string(g2.teeth) + " ≤ " + std::to_string(g1.teeth) + ")");
   if (!(spec.centre_distance >= 0.))
     throw InputError("Gear pair/centre distance", "must be 0 (from the shifts) or positive");
+}
 
-  GearPairGeometry result;
-  result.spec = spec;
+// The pair's basic quantities with the DIN 3960 signs: the internal wheel has
+// negative z and diameters, so one set of formulas serves both kinds of pair.
+struct SignedPair
+{
+  double s2;               // -, +1 external wheel, −1 internal
+  double z1, z2;           // -, signed tooth counts
+  double m_n, alpha_n;     // m, rad
+  double beta;             // rad, |β|
+  double m_t, alpha_t;     // m, rad (transverse)
+  double d1, d2, db1, db2; // m, reference and base diameters
+  double da1, da2;         // m, tip diameters
+  double df1, df2;         // m, root diameters
+  double x_sum;            // -, x1 + x2
+};
 
-  // DIN 3960 signs: the internal wheel has negative z and diameters.
-  const double s2 = g2.internal ? -1. : 1.;
-  const double z1 = g1.teeth;
-  const double z2 = s2 * g2.teeth;
-  const double m_n = g1.normal_module;
-  const double alpha_n = g1.pressure_angle;
-  const double beta = std::abs(g1.helix_angle);
+SignedPair signed_pair(const GearPairSpec& spec)
+{
+  const GearSpec& g1 = spec.pinion;
+  const GearSpec& g2 = spec.wheel;
+  SignedPair p;
+  p.s2 = g2.internal ? -1. : 1.;
+  p.z1 = g1.teeth;
+  p.z2 = p.s2 * g2.teeth;
+  p.m_n = g1.normal_module;
+  p.alpha_n = g1.pressure_angle;
+  p.beta = std::abs(g1.helix_angle);
+  p.m_t = p.m_n / std::cos(p.beta);
+  p.alpha_t = std::atan(std::tan(p.alpha_n) / std::cos(p.beta));
+  p.d1 = p.z1 * p.m_t;
+  p.d2 = p.z2 * p.m_t;
+  p.db1 = p.d1 * std::cos(p.alpha_t);
+  p.db2 = p.d2 * std::cos(p.alpha_t);
+  p.x_sum = g1.profile_shift + g2.profile_shift;
+  // Tip and root diameters, signed: d ± 2·m_n·(h* ± x) in one formula.
+  const auto tip_of = [&](const GearSpec& g, double d, double side)
+  {
+    return g.tip_diameter > 0. ? side * g.tip_diameter
+                               : d + 2. * p.m_n * (g.addendum_coefficient + g.profile_shift);
+  };
+  const auto root_of = [&](const GearSpec& g, double d)
+  { return d - 2. * p.m_n * (g.dedendum_coefficient - g.profile_shift); };
+  p.da1 = tip_of(g1, p.d1, 1.);
+  p.da2 = tip_of(g2, p.d2, p.s2);
+  p.df1 = root_of(g1, p.d1);
+  p.df2 = root_of(g2, p.d2);
+  return p;
+}
 
-  const double m_t = m_n / std::cos(beta);
-  const double alpha_t = std::atan(std::tan(alpha_n) / std::cos(beta));
-  result.transverse_module = m_t;
-  result.transverse_pressure_angle = alpha_t;
-  result.base_helix_angle = std::asin(std::sin(beta) * std::cos(alpha_n));
-  result.gear_ratio = g2.teeth / z1;
-
-  const double d1 = z1 * m_t;
-  const double d2 = z2 * m_t;
-  const double db1 = d1 * std::cos(alpha_t);
-  const double db2 = d2 * std::cos(alpha_t);
-  const double x_sum = g1.profile_shift + g2.profile_shift;
-
-  // ISO 21771 eq. for the zero-backlash working pressure angle: inv α_wt = inv α_t +
-  // 2·tan α_n·(x1 + x2)/(z1 + z2), signed z serving external and internal pairs.
+// α_wt and the backlash: zero backlash from the shifts, or the given centre
+// distance.
+void set_working_pressure_angle(const GearPairSpec& spec, const SignedPair& p,
+                                GearPairGeometry& result)
+{
+  // ISO 21771 eq. for the zero-backlash working pressure angle: inv α_wt = inv
+  // α_t + 2·tan α_n·(x1 + x2)/(z1 + z2), signed z serving external and internal
+  // pairs.
   const double inv_alpha_zero_backlash =
-      involute(alpha_t) + 2. * std::tan(alpha_n) * x_sum / (z1 + z2);
+      involute(p.alpha_t) + 2. * std::tan(p.alpha_n) * p.x_sum / (p.z1 + p.z2);
   if (!(inv_alpha_zero_backlash > 0.))
     throw InputError(gear_parameter_name(true, "profile shift"),
-                     "x1 + x2 = " + format(x_sum) + " leaves no working pressure angle");
-  const double reference_centre_distance = 0.5 * (d1 + d2);
+                     "x1 + x2 = " + format(p.x_sum) + " leaves no working pressure angle");
+  const double reference_centre_distance = 0.5 * (p.d1 + p.d2);
   result.reference_centre_distance = std::abs(reference_centre_distance);
 
   double alpha_wt = 0.;
@@ -190,18 +264,18 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
   else
   {
     const double cos_alpha_wt =
-        std::abs(reference_centre_distance) * std::cos(alpha_t) / spec.centre_distance;
+        std::abs(reference_centre_distance) * std::cos(p.alpha_t) / spec.centre_distance;
     if (!(cos_alpha_wt > 0.2 && cos_alpha_wt < 1.))
       throw InputError("Gear pair/centre distance",
                        millimetres(spec.centre_distance) +
                            " is incompatible with the reference centre distance " +
                            millimetres(std::abs(reference_centre_distance)));
     alpha_wt = std::acos(cos_alpha_wt);
-    // Shifts that would close the gap, minus the shifts present, thicken both teeth by
-    // 2·Δx·m_n·sin α_n along the normal line of action.
+    // Shifts that would close the gap, minus the shifts present, thicken both
+    // teeth by 2·Δx·m_n·sin α_n along the normal line of action.
     const double x_sum_zero_backlash =
-        (involute(alpha_wt) - involute(alpha_t)) * (z1 + z2) / (2. * std::tan(alpha_n));
-    result.backlash = 2. * m_n * std::sin(alpha_n) * (x_sum_zero_backlash - x_sum);
+        (involute(alpha_wt) - involute(p.alpha_t)) * (p.z1 + p.z2) / (2. * std::tan(p.alpha_n));
+    result.backlash = 2. * p.m_n * std::sin(p.alpha_n) * (x_sum_zero_backlash - p.x_sum);
     if (result.backlash < -1e-9)
       throw InputError("Gear pair/centre distance",
                        millimetres(spec.centre_distance) +
@@ -209,96 +283,121 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
                            millimetres(result.backlash) + ")");
   }
   result.working_pressure_angle = alpha_wt;
-  const double a_w = 0.5 * (db1 + db2) / std::cos(alpha_wt); // signed (internal: < 0)
+  const double a_w = 0.5 * (p.db1 + p.db2) / std::cos(alpha_wt); // signed (internal: < 0)
   result.centre_distance = std::abs(a_w);
+}
 
-  // Tip and root diameters, signed: d ± 2·m_n·(h* ± x) in one formula.
-  auto tip_of = [&](const GearSpec& g, double d, double side)
-  {
-    return g.tip_diameter > 0. ? side * g.tip_diameter
-                               : d + 2. * m_n * (g.addendum_coefficient + g.profile_shift);
-  };
-  auto root_of = [&](const GearSpec& g, double d)
-  { return d - 2. * m_n * (g.dedendum_coefficient - g.profile_shift); };
-  const double da1 = tip_of(g1, d1, 1.);
-  const double da2 = tip_of(g2, d2, s2);
-  const double df1 = root_of(g1, d1);
-  const double df2 = root_of(g2, d2);
-  result.spec.pinion.tip_diameter = std::abs(da1);
-  result.spec.wheel.tip_diameter = std::abs(da2);
-
-  // A tip inside the base circle has no involute to run on.
+// Each tip between its base and root circles, and each body inside its root
+// circle.
+void check_tips_and_bores(const GearPairSpec& spec, const SignedPair& p)
+{
   for (const bool wheel : {false, true})
   {
-    const double da = wheel ? da2 : da1;
-    const double db = wheel ? db2 : db1;
-    const double df = wheel ? df2 : df1;
+    const double da = wheel ? p.da2 : p.da1;
+    const double db = wheel ? p.db2 : p.db1;
+    const double df = wheel ? p.df2 : p.df1;
+    const GearSpec& g = wheel ? spec.wheel : spec.pinion;
+    // An explicit tip below (external) / above (internal) the root circle that
+    // the module, teeth and shift give does not belong to this gear at all: the
+    // module (or teeth) was changed without the tip, which is what to fix
+    // first.
+    const bool tip_beyond_root = g.internal ? std::abs(da) >= std::abs(df) : da <= df;
+    if (g.tip_diameter > 0. && tip_beyond_root)
+      throw InputError(gear_parameter_name(wheel, "module"),
+                       format(g.normal_module * 1e3) + " mm with " + std::to_string(g.teeth) +
+                           " teeth puts the root circle at " + millimetres(std::abs(df)) + ", " +
+                           (g.internal ? "inside" : "outside") + " the given tip diameter " +
+                           millimetres(std::abs(da)) +
+                           " (tip diameter 0 takes the standard tip of this module)");
+    // A tip inside the base circle has no involute to run on.
     if (!(std::abs(da) > std::abs(db)))
       throw InputError(gear_parameter_name(wheel, "tip diameter"),
                        millimetres(std::abs(da)) + " is not outside the base circle " +
                            millimetres(std::abs(db)));
-    if (!(wheel && g2.internal ? std::abs(da) < std::abs(df) : da > df))
+    if (!(g.internal ? std::abs(da) < std::abs(df) : da > df))
       throw InputError(gear_parameter_name(wheel, "tip diameter"),
                        millimetres(std::abs(da)) + " lies beyond the root circle " +
                            millimetres(std::abs(df)));
+    check_bore(g, wheel, std::abs(df));
   }
+}
 
-  // Line of action, from T1 towards the pitch point C (module header).
-  const double rb1 = 0.5 * db1;
-  const double rb2 = 0.5 * db2;
-  const double tan_wt = std::tan(alpha_wt);
+// Line of action from T1 towards the pitch point C (module header): T2, C, A
+// and E.
+void set_line_of_action(const SignedPair& p, GearPairGeometry& result)
+{
+  const double rb1 = 0.5 * p.db1;
+  const double rb2 = 0.5 * p.db2;
+  const double tan_wt = std::tan(result.working_pressure_angle);
   const double t2_position = (rb1 + rb2) * tan_wt;
   result.line_of_action_length = std::abs(t2_position);
   result.pitch_point = rb1 * tan_wt;
-  const double ra1 = 0.5 * std::abs(da1);
-  const double ra2 = 0.5 * std::abs(da2);
+  const double ra1 = 0.5 * std::abs(p.da1);
+  const double ra2 = 0.5 * std::abs(p.da2);
   result.contact_end = std::sqrt(ra1 * ra1 - rb1 * rb1);
-  result.contact_start = t2_position - s2 * std::sqrt(ra2 * ra2 - rb2 * rb2);
-  // Roll length on the wheel, measured from its own tangent point T2.
-  auto wheel_roll_length = [&](double position) { return s2 * (t2_position - position); };
+  result.contact_start = t2_position - p.s2 * std::sqrt(ra2 * ra2 - rb2 * rb2);
+}
 
-  // Undercut by the generating rack (external gears; internal ones are cut by a shaper and
-  // have no rack undercut).
-  const double form1 = form_roll_length(g1, 0.5 * d1, alpha_t);
-  const double form2 = form_roll_length(g2, 0.5 * std::abs(d2), alpha_t);
+// Roll length on the wheel at `position`, measured from its own tangent point
+// T2.
+double wheel_roll_length(const SignedPair& p, const GearPairGeometry& result, double position)
+{
+  const double t2_position = 0.5 * (p.db1 + p.db2) * std::tan(result.working_pressure_angle);
+  return p.s2 * (t2_position - position);
+}
+
+// Undercut by the generating rack (external gears; internal ones are cut by a
+// shaper and have no rack undercut), then involute interference: each tip must
+// meet the mate inside the mate's involute. Returns the form roll lengths of
+// pinion and wheel (m from T1, T2).
+std::pair<double, double> check_undercut_and_interference(const GearPairSpec& spec,
+                                                          const SignedPair& p,
+                                                          GearPairGeometry& result)
+{
+  const double form1 = form_roll_length(spec.pinion, 0.5 * p.d1, p.alpha_t);
+  const double form2 = form_roll_length(spec.wheel, 0.5 * std::abs(p.d2), p.alpha_t);
   for (const bool wheel : {false, true})
   {
-    const GearSpec& g = wheel ? g2 : g1;
+    const GearSpec& g = wheel ? spec.wheel : spec.pinion;
     if (g.internal)
       continue;
     const double z = g.teeth;
     const double x_min =
-        (g.dedendum_coefficient - g.root_radius_coefficient * (1. - std::sin(alpha_n))) -
-        z * std::sin(alpha_t) * std::sin(alpha_t) / (2. * std::cos(beta));
+        (g.dedendum_coefficient - g.root_radius_coefficient * (1. - std::sin(p.alpha_n))) -
+        z * std::sin(p.alpha_t) * std::sin(p.alpha_t) / (2. * std::cos(p.beta));
     (wheel ? result.wheel : result.pinion).minimum_profile_shift = x_min;
     if ((wheel ? form2 : form1) < 0.)
       throw InputError(gear_parameter_name(wheel, "profile shift"),
                        "x = " + format(g.profile_shift) + " undercuts the tooth (x_min = " +
                            format(x_min) + " for z = " + std::to_string(g.teeth) + ")");
   }
-
-  // Involute interference: each tip must meet the mate inside the mate's involute.
   if (result.contact_start < form1)
     throw InputError(gear_parameter_name(true, "tip diameter"),
                      "the wheel tip reaches below the pinion's involute (involute "
                      "interference: contact starts " +
                          millimetres(result.contact_start) +
                          " from T1, the pinion form circle at " + millimetres(form1) + ")");
-  const double wheel_roll_at_end = wheel_roll_length(result.contact_end);
-  if (g2.internal ? wheel_roll_at_end > form2 : wheel_roll_at_end < form2)
+  const double wheel_roll_at_end = wheel_roll_length(p, result, result.contact_end);
+  if (spec.wheel.internal ? wheel_roll_at_end > form2 : wheel_roll_at_end < form2)
     throw InputError(gear_parameter_name(false, "tip diameter"),
                      "the pinion tip reaches beyond the wheel's involute (involute "
                      "interference at roll length " +
                          millimetres(wheel_roll_at_end) + ", wheel form limit " +
                          millimetres(form2) + ")");
+  return {form1, form2};
+}
 
-  // Radial tip clearances (internal: the ring's root circle encloses the pinion tip).
-  const double rf1 = 0.5 * std::abs(df1);
-  const double rf2 = 0.5 * std::abs(df2);
+// Radial tip clearances (internal: the ring's root circle encloses the pinion
+// tip).
+void check_tip_clearances(const GearPairSpec& spec, const SignedPair& p, GearPairGeometry& result)
+{
+  const double ra1 = 0.5 * std::abs(p.da1), ra2 = 0.5 * std::abs(p.da2);
+  const double rf1 = 0.5 * std::abs(p.df1), rf2 = 0.5 * std::abs(p.df2);
+  const bool internal = spec.wheel.internal;
   result.tip_clearance_pinion =
-      g2.internal ? rf2 - result.centre_distance - ra1 : result.centre_distance - ra1 - rf2;
+      internal ? rf2 - result.centre_distance - ra1 : result.centre_distance - ra1 - rf2;
   result.tip_clearance_wheel =
-      g2.internal ? ra2 - result.centre_distance - rf1 : result.centre_distance - ra2 - rf1;
+      internal ? ra2 - result.centre_distance - rf1 : result.centre_distance - ra2 - rf1;
   if (result.tip_clearance_pinion < 0.)
     throw InputError(gear_parameter_name(false, "tip diameter"),
                      "the pinion tip hits the wheel root (clearance " +
@@ -307,58 +406,55 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
     throw InputError(gear_parameter_name(true, "tip diameter"),
                      "the wheel tip hits the pinion root (clearance " +
                          millimetres(result.tip_clearance_wheel) + ")");
+}
 
-  // Per-gear diameters and the tip thickness s_at = d_a·(s_t/d + inv α_t − inv α_at) (ISO
-  // 21771); for an internal gear the tooth narrows towards its (inner) tip, which the
-  // DIN signs of d and d_a take care of.
-  const double cos_wt = std::cos(alpha_wt);
+// Per-gear diameters and the tip thickness s_at = d_a·(s_t/d + inv α_t − inv
+// α_at) (ISO 21771); for an internal gear the tooth narrows towards its (inner)
+// tip, which the DIN signs of d and d_a take care of.
+void set_gear_geometry(const GearPairSpec& spec, const SignedPair& p,
+                       std::pair<double, double> form_rolls, GearPairGeometry& result)
+{
+  const double cos_wt = std::cos(result.working_pressure_angle);
   for (const bool wheel : {false, true})
   {
-    const GearSpec& g = wheel ? g2 : g1;
+    const GearSpec& g = wheel ? spec.wheel : spec.pinion;
     GearGeometry& out = wheel ? result.wheel : result.pinion;
-    const double d = wheel ? d2 : d1;
-    const double db = wheel ? db2 : db1;
-    const double da = wheel ? da2 : da1;
+    const double d = wheel ? p.d2 : p.d1;
+    const double db = wheel ? p.db2 : p.db1;
+    const double da = wheel ? p.da2 : p.da1;
     out.reference_diameter = std::abs(d);
     out.base_diameter = std::abs(db);
     out.tip_diameter = std::abs(da);
-    out.root_diameter = std::abs(wheel ? df2 : df1);
+    out.root_diameter = std::abs(wheel ? p.df2 : p.df1);
     out.working_diameter = std::abs(db) / cos_wt;
-    const double form = wheel ? form2 : form1;
+    const double form = wheel ? form_rolls.second : form_rolls.first;
     out.form_diameter = 2. * std::sqrt(0.25 * db * db + form * form);
-    const double active_roll = wheel ? wheel_roll_length(result.contact_end) : result.contact_start;
+    const double active_roll =
+        wheel ? wheel_roll_length(p, result, result.contact_end) : result.contact_start;
     out.active_profile_start = 2. * std::sqrt(0.25 * db * db + active_roll * active_roll);
-    out.tooth_thickness = m_t * (pi / 2. + 2. * g.profile_shift * std::tan(alpha_n));
+    out.tooth_thickness = p.m_t * (pi / 2. + 2. * g.profile_shift * std::tan(p.alpha_n));
     const double alpha_at = std::acos(db / da);
     out.tip_pressure_angle = alpha_at;
-    const double s_at = da * (out.tooth_thickness / d + involute(alpha_t) - involute(alpha_at));
-    const double beta_a = std::atan(std::tan(beta) * da / d);
+    const double s_at = da * (out.tooth_thickness / d + involute(p.alpha_t) - involute(alpha_at));
+    const double beta_a = std::atan(std::tan(p.beta) * da / d);
     out.tip_thickness = s_at * std::cos(beta_a);
     if (!(out.tip_thickness > 0.))
       throw InputError(
           gear_parameter_name(wheel, g.tip_diameter > 0. ? "tip diameter" : "profile shift"),
           "the tooth comes to a point before the tip circle (tip thickness " +
               millimetres(out.tip_thickness) + ")");
-    // A tip thinner than 0.2·m_n is commonly held too fragile (hardened: 0.4·m_n).
-    if (out.tip_thickness < 0.2 * m_n)
+    // A tip thinner than 0.2·m_n is commonly held too fragile (hardened:
+    // 0.4·m_n).
+    if (out.tip_thickness < 0.2 * p.m_n)
       result.warnings.push_back(std::string(wheel ? "wheel" : "pinion") + " tip thickness " +
                                 millimetres(out.tip_thickness) + " is below 0.2·m_n");
   }
+}
 
-  result.transverse_base_pitch = pi * m_t * std::cos(alpha_t);
-  result.normal_base_pitch = pi * m_n * std::cos(alpha_n);
-  result.path_of_contact = result.contact_end - result.contact_start;
-  result.transverse_contact_ratio = result.path_of_contact / result.transverse_base_pitch;
-  result.common_face_width = std::min(g1.face_width, g2.face_width);
-  result.overlap_ratio = result.common_face_width * std::sin(beta) / (pi * m_n);
-  result.total_contact_ratio = result.transverse_contact_ratio + result.overlap_ratio;
-  if (result.transverse_contact_ratio < 1.)
-    throw InputError(gear_parameter_name(false, "tip diameter"),
-                     "transverse contact ratio ε_α = " + format(result.transverse_contact_ratio) +
-                         " < 1: the tips are too short for continuous contact");
-
-  // Contact zones: the pair count changes where a pair enters (A + k·p_bt) or leaves
-  // (E − k·p_bt).
+// Contact zones: the pair count changes where a pair enters (A + k·p_bt) or
+// leaves (E − k·p_bt).
+void set_contact_zones(GearPairGeometry& result)
+{
   std::vector<double> breaks{result.contact_start, result.contact_end};
   for (double p = result.contact_start + result.transverse_base_pitch; p < result.contact_end;
        p += result.transverse_base_pitch)
@@ -385,7 +481,86 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
     else
       result.contact_zones.push_back(zone);
   }
+}
+} // namespace
+
+GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
+{
+  check_pair_spec(spec);
+  const SignedPair p = signed_pair(spec);
+  GearPairGeometry result;
+  result.spec = spec;
+  result.transverse_module = p.m_t;
+  result.transverse_pressure_angle = p.alpha_t;
+  result.base_helix_angle = std::asin(std::sin(p.beta) * std::cos(p.alpha_n));
+  result.gear_ratio = spec.wheel.teeth / p.z1;
+  set_working_pressure_angle(spec, p, result);
+  result.spec.pinion.tip_diameter = std::abs(p.da1);
+  result.spec.wheel.tip_diameter = std::abs(p.da2);
+  check_tips_and_bores(spec, p);
+  set_line_of_action(p, result);
+  const std::pair<double, double> form_rolls = check_undercut_and_interference(spec, p, result);
+  check_tip_clearances(spec, p, result);
+  set_gear_geometry(spec, p, form_rolls, result);
+
+  result.transverse_base_pitch = pi * p.m_t * std::cos(p.alpha_t);
+  result.normal_base_pitch = pi * p.m_n * std::cos(p.alpha_n);
+  result.path_of_contact = result.contact_end - result.contact_start;
+  result.transverse_contact_ratio = result.path_of_contact / result.transverse_base_pitch;
+  result.common_face_width = std::min(spec.pinion.face_width, spec.wheel.face_width);
+  result.overlap_ratio = result.common_face_width * std::sin(p.beta) / (pi * p.m_n);
+  result.total_contact_ratio = result.transverse_contact_ratio + result.overlap_ratio;
+  check_contact_ratio(result);
+  set_contact_zones(result);
   return result;
+}
+
+double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
+{
+  const std::string parameter = gear_parameter_name(true, "tip diameter");
+  if (!spec.wheel.internal)
+    throw InputError(parameter, "an automatic tip is offered for internal wheels only");
+  check_gear(spec.wheel, true);
+  // A ring's tip lies inside its reference circle; the longest teeth reach down towards the
+  // base circle.
+  const double m_n = spec.wheel.normal_module;
+  const double reference = spec.wheel.teeth * m_n / std::cos(spec.wheel.helix_angle);
+  const double base = reference * std::cos(spec.wheel.pressure_angle);
+  const auto clears = [&](double tip)
+  {
+    GearPairSpec trial = spec;
+    trial.wheel.tip_diameter = tip;
+    try
+    {
+      const GearPairGeometry pair = compute_gear_pair(trial);
+      const double rb1 = 0.5 * pair.pinion.base_diameter;
+      const double form_roll = std::sqrt(
+          std::max(0., 0.25 * pair.pinion.form_diameter * pair.pinion.form_diameter - rb1 * rb1));
+      return pair.contact_start - form_roll >= margin;
+    }
+    catch (const InputError&)
+    {
+      return false;
+    }
+  };
+  // Short ring teeth fail on ε_α < 1, long ones on interference: find a valid tip from the
+  // reference circle down, then bisect towards the interference limit below it.
+  const int steps = 400;
+  int step = 0;
+  const auto at = [&](int i) { return reference - i * (reference - base) / steps; };
+  while (step < steps && !clears(at(step)))
+    ++step;
+  if (step == steps)
+    throw InputError(parameter, "no ring tip between the base and reference circles clears the "
+                                "pinion's involute with a margin of " +
+                                    millimetres(margin) + " at ε_α ≥ 1");
+  double low = base, high = at(step);
+  while (high - low > 1e-12)
+  {
+    const double middle = 0.5 * (low + high);
+    (clears(middle) ? high : low) = middle;
+  }
+  return high;
 }
 
 GearPairSpec split_path_pair()
@@ -407,8 +582,9 @@ GearPairSpec split_path_pair()
   spec.pinion.bore_diameter = 20e-3;
   spec.wheel.bore_diameter = 40e-3;
 
-  // ε_α falls monotonically as both tip radii shrink by the same Δ: bisect for ε_α = 1.5
-  // between Δ = 0 (standard tips, ε_α ≈ 1.62) and Δ = m_n/4 (ε_α ≈ 1.35).
+  // ε_α falls monotonically as both tip radii shrink by the same Δ: bisect for
+  // ε_α = 1.5 between Δ = 0 (standard tips, ε_α ≈ 1.62) and Δ = m_n/4 (ε_α
+  // ≈ 1.35).
   const GearPairGeometry standard = compute_gear_pair(spec);
   const double da1 = standard.pinion.tip_diameter;
   const double da2 = standard.wheel.tip_diameter;

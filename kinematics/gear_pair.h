@@ -130,6 +130,14 @@ std::string gear_parameter_name(bool wheel, const std::string& key);
 // ε_α < 1. Cost: a few microseconds (one Newton solve for inv α_wt).
 GearPairGeometry compute_gear_pair(const GearPairSpec& spec);
 
+// The ring tip designers choose for an internal pair whose standard ring tip interferes with
+// the pinion's fillet: the smallest ring tip diameter (the longest ring teeth) for which the
+// pair is valid (compute_gear_pair accepts it) and the ring tip meets the pinion at least
+// `margin` (m, along the line of action) above the pinion's form circle. InputError naming
+// "Gear pair/Wheel/tip diameter" when no ring tip between the base and reference circles
+// qualifies. Cost: about 60 pair evaluations (sub-millisecond).
+double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin);
+
 // inv(α) = tan α − α and its inverse (Newton, |error| < 1e-14 rad for α in (0, 1.5)).
 double involute(double angle);
 double inverse_involute(double value);
@@ -139,4 +147,14 @@ double inverse_involute(double value);
 // standard tips (they give ε_α ≈ 1.618); both tip radii are reduced by the same amount,
 // solved so that ε_α = 1.500 exactly. Bores (not published): pinion 20 mm, wheel 40 mm.
 GearPairSpec split_path_pair();
+
+// What Reszuta & Drewniak 2015 report for that pair from their ANSYS model (gear-data.md §1,
+// printed in N/mm and rad): the one place these reference values live.
+namespace split_path_published
+{
+constexpr double single_pair_stiffness = 327.222e6; // N/m, k'_j = 327 222 N/mm
+constexpr double double_pair_stiffness = 497.521e6; // N/m, k'_d = 497 521 N/mm
+constexpr double single_pair_rotation = 2.481e-4;   // rad, Δφ of the single-pair position
+inline const std::string source = "gear-data.md §1 (Reszuta & Drewniak 2015, ANSYS)";
+} // namespace split_path_published
 } // namespace gearstiff::kinematics

@@ -4,6 +4,7 @@
 #include "fem/parallel.h"
 #include "fem/small_strain.h"
 #include "errors/errors.h"
+#include "fem/mesh.h"
 
 #include <algorithm>
 #include <boost/serialization/vector.hpp>
@@ -25,26 +26,11 @@ using namespace dealii;
 
 namespace
 {
-// Flank faces are relabelled per tooth so that every tooth pair is its own contact pair.
-constexpr types::boundary_id pinion_tooth_base = 1000; // + j + offset
-constexpr types::boundary_id wheel_tooth_base = 2000;  // + j + offset (mate of pinion j)
-constexpr int tooth_offset = 500;
-
-types::boundary_id pinion_flank_id(int j)
+// x of the wheel axis in the scene frame (geometry/scene_gear_pair.h): an external wheel at
+// +a_w, a ring at −a_w.
+double wheel_axis_x(const kinematics::GearPairGeometry& pair)
 {
-  return pinion_tooth_base + j + tooth_offset;
-}
-types::boundary_id wheel_flank_id(int j)
-{
-  return wheel_tooth_base + j + tooth_offset;
-}
-
-// Polar angle of `p` about `centre`, relative to `reference`, in (−π, π].
-template <int dim>
-double relative_angle(const Point<dim>& p, double centre_x, double reference)
-{
-  const double angle = std::atan2(p[1], p[0] - centre_x) - reference;
-  return std::remainder(angle, 2. * M_PI);
+  return pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
 }
 
 template <int dim>
@@ -83,20 +69,25 @@ fem::ElasticityParameters default_stiffness_elasticity()
   return elasticity;
 }
 
-template <int dim>
-GearMeshStiffness<dim>::GearMeshStiffness(MPI_Comm mpi_communicator,
-                                          const GearMeshStiffnessSettings& given)
-    : mpi_communicator(mpi_communicator), settings(given)
+void check_stiffness_settings(const GearMeshStiffnessSettings& settings)
 {
   if (!(settings.pinion_torque > 0.))
     throw InputError(stiffness_parameter::torque,
                      "must be positive: a torque <= 0 turns the pinion away from the wheel and "
                      "separates the loaded flanks (no contact, no stiffness)");
   if (settings.scene.both_flanks)
-    throw InputError("Gear pair scene/both flanks",
+    throw InputError(geometry::scene_field::both_flanks,
                      "the stiffness analysis loads one flank per tooth; set it to false");
+}
+
+template <int dim>
+GearMeshStiffness<dim>::GearMeshStiffness(MPI_Comm mpi_communicator,
+                                          const GearMeshStiffnessSettings& given)
+    : mpi_communicator(mpi_communicator), settings(given)
+{
+  check_stiffness_settings(settings);
   if (settings.scene_file.empty())
-    throw InputError("scene file", "no path given for the scene mesh");
+    throw InputError(stiffness_parameter::scene_file, "no path given for the scene mesh");
   pair = kinematics::compute_gear_pair(settings.scene.pair);
   settings.scene.mesh.dimension = dim;
   // The scene's Hertz estimate of the contact size uses the same load and material.
@@ -125,29 +116,32 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::run()
 template <int dim>
 void GearMeshStiffness<dim>::make_scene()
 {
-  const std::vector<double> scene = fem::run_on_root(
-      mpi_communicator,
-      [this]()
-      {
-        const geometry::SceneInfo info =
-            geometry::write_gear_pair_scene(settings.scene, settings.scene_file);
-        double reference = 0., pairs = 0.;
-        for (const auto& q : info.quantities)
-        {
-          if (q.key == "reference_contact_position")
-            reference = q.value;
-          if (q.key == "pairs_in_contact")
-            pairs = q.value;
-        }
-        return std::vector<double>{info.first_rotation, info.second_rotation, reference, pairs,
-                                   info.contact_size,   info.time_total};
-      });
-  pinion_rotation_angle = scene[0];
-  wheel_rotation_angle = scene[1];
-  result.reference_position = scene[2];
-  result.kinematic_pairs = static_cast<unsigned int>(scene[3]);
-  result.contact_size = scene[4];
-  result.scene_time = scene[5];
+  // Rank 0 writes the scene; every rank receives its numbers: ℓ_ref, h_c, the scene time and
+  // the pairs j in contact (which are also modelled: the scene's windows cover them).
+  const std::vector<double> scene =
+      fem::run_on_root(mpi_communicator,
+                  [this]()
+                  {
+                    const geometry::GearPairScene written =
+                        geometry::write_gear_pair_scene(settings.scene, settings.scene_file);
+                    std::vector<double> values{written.reference_position,
+                                               written.info.contact_size, written.info.time_total};
+                    for (const int j : written.contact_pairs)
+                      values.push_back(j);
+                    return values;
+                  });
+  result.reference_position = scene[0];
+  result.contact_size = scene[1];
+  result.scene_time = scene[2];
+  candidate_pairs.clear();
+  for (std::size_t i = 3; i < scene.size(); ++i)
+  {
+    ToothPairLoad load;
+    load.pair = static_cast<int>(std::lround(scene[i]));
+    load.position = result.reference_position + load.pair * pair.transverse_base_pitch;
+    candidate_pairs.push_back(load);
+  }
+  result.kinematic_pairs = candidate_pairs.size();
   result.pinion_base_radius = 0.5 * pair.pinion.base_diameter;
   result.wheel_base_radius = 0.5 * pair.wheel.base_diameter;
   result.pinion_roll_angle = result.reference_position / result.pinion_base_radius;
@@ -158,68 +152,27 @@ void GearMeshStiffness<dim>::make_scene()
 template <int dim>
 void GearMeshStiffness<dim>::setup_problem()
 {
-  problem = std::make_unique<contact::ContactProblem<dim>>(mpi_communicator, settings.elasticity,
-                                                  settings.linear_solver, settings.contact);
+  problem = std::make_unique<contact::ContactProblem<dim>>(
+      mpi_communicator, settings.elasticity, settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
   fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
   problem->system().set_materials({{geometry::scene_ids::pinion_body, settings.material},
                                    {geometry::scene_ids::wheel_body, settings.material}},
                                   "material");
 
-  // Tooth index of each flank face from its polar angle about its gear centre (tooth k of a
-  // gear sits k angular pitches counter-clockwise of its tooth 0); wheel tooth −j mates pinion
-  // tooth j.
-  const double centre_distance = pair.centre_distance;
-  const double pinion_pitch = 2. * M_PI / settings.scene.pair.pinion.teeth;
-  const double wheel_pitch = 2. * M_PI / settings.scene.pair.wheel.teeth;
-  std::set<int> pinion_teeth, wheel_teeth; // pair indices j with flank faces
-  for (const auto& cell : tria.active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-    {
-      if (!cell->face(f)->at_boundary())
-        continue;
-      const auto face = cell->face(f);
-      const auto id = face->boundary_id();
-      if (id != geometry::scene_ids::pinion_flanks && id != geometry::scene_ids::wheel_flanks)
-        continue;
-      const bool pinion = id == geometry::scene_ids::pinion_flanks;
-      const double x0 = pinion ? 0. : centre_distance;
-      const double angle =
-          relative_angle(face->center(), x0, pinion ? pinion_rotation_angle : wheel_rotation_angle);
-      const int tooth =
-          static_cast<int>(std::lround(angle / (pinion ? pinion_pitch : wheel_pitch)));
-      const int j = pinion ? tooth : -tooth;
-      if (std::abs(j) >= tooth_offset)
-        throw SolverFailure("stiffness scene", "tooth index out of range");
-      face->set_boundary_id(pinion ? pinion_flank_id(j) : wheel_flank_id(j));
-      (pinion ? pinion_teeth : wheel_teeth).insert(j);
-    }
-
-  // A modelled pair becomes a contact pair when it lies inside the path of contact A..E (the
-  // scene's rule: at A or E itself a pair meets at a tip corner and carries no load). Pairs
-  // outside it could only touch by tip-corner contact under a deflection larger than their
-  // gap, which the small-sliding mortar pairing (normal projection onto the mate's flank,
-  // which ends at the tip) does not represent; they stay free surfaces.
-  candidate_pairs.clear();
-  for (const int j : pinion_teeth)
-  {
-    const double position = result.reference_position + j * pair.transverse_base_pitch;
-    const double tolerance = 1e-9; // m: the zone ends and positions share their formulas
-    if (wheel_teeth.count(j) == 0 || position <= pair.contact_start + tolerance ||
-        position >= pair.contact_end - tolerance)
-      continue;
-    ToothPairLoad load;
-    load.pair = j;
-    load.position = position;
-    candidate_pairs.push_back(load);
-    problem->add_contact_pair({pinion_flank_id(j)}, {wheel_flank_id(j)},
-                              "tooth pair " + std::to_string(j));
-  }
-  if (candidate_pairs.empty())
-    throw InputError("Gear pair scene/position", "no tooth pair of the scene is in contact");
+  // Each pair in contact is its own contact pair: the scene wrote one boundary id per flank.
+  // Pairs outside the path of contact could only touch by tip-corner contact under a
+  // deflection larger than their gap, which the small-sliding mortar pairing (normal
+  // projection onto the mate's flank, which ends at the tip) does not represent; they stay
+  // free surfaces.
+  for (const ToothPairLoad& load : candidate_pairs)
+    problem->add_contact_pair(
+        {static_cast<types::boundary_id>(geometry::pinion_flank_id(load.pair))},
+        {static_cast<types::boundary_id>(geometry::wheel_flank_id(load.pair))},
+        "tooth pair " + std::to_string(load.pair));
 
   Point<dim> pinion_axis, wheel_axis;
-  wheel_axis[0] = centre_distance;
+  wheel_axis[0] = wheel_axis_x(pair);
   problem->add_rigid_hub(geometry::scene_ids::pinion_bore, pinion_axis,
                          fem::RigidHub<dim>::Control::torque, settings.pinion_torque,
                          "pinion bore");
@@ -321,14 +274,17 @@ void GearMeshStiffness<dim>::evaluate()
           cell->face(f)->boundary_id() != geometry::scene_ids::free_surface)
         continue;
       const bool pinion = cell->material_id() == geometry::scene_ids::pinion_body;
-      const double x0 = pinion ? 0. : pair.centre_distance;
+      const double x0 = pinion ? 0. : wheel_axis_x(pair);
       const double root = pinion ? pinion_root : wheel_root;
       const double form = pinion ? pinion_form : wheel_form;
+      // Between the root and the form circle (a ring's root circle is the larger one).
+      const double low = std::min(root * (1. - 1e-6), form);
+      const double high = std::max(root * (1. + 1e-6), form);
       bool inside = true, on_root_circle = true;
       for (const unsigned int v : cell->face(f)->vertex_indices())
       {
         const double r = polar_radius(cell->face(f)->vertex(v), x0);
-        inside = inside && r <= form && r >= root * (1. - 1e-6);
+        inside = inside && r <= high && r >= low;
         on_root_circle = on_root_circle && std::abs(r - root) < 1e-9;
       }
       if (!inside || on_root_circle)

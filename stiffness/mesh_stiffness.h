@@ -16,7 +16,7 @@
 // line of action); the result carries both so callers can check it.
 //
 //   GearMeshStiffnessSettings settings;          // split-path pair, single-pair position
-//   settings.scene.position = "double";
+//   settings.scene.position = geometry::PairPosition::double_pair;
 //   GearMeshStiffness<2> analysis(MPI_COMM_WORLD, settings);
 //   const GearMeshStiffnessResult r = analysis.run();   // r.mesh_stiffness in N/m
 #pragma once
@@ -44,7 +44,7 @@ struct GearMeshStiffnessSettings
   geometry::GearPairSceneSpec scene = default_stiffness_scene();
   fem::ElasticityParameters elasticity = default_stiffness_elasticity(); // thickness: face width
   fem::LinearSolverParameters linear_solver;
-  contact::ContactParameters contact;            // μ and the active-set controls
+  contact::ContactParameters contact;    // μ and the active-set controls
   double pinion_torque = 49.4;           // N·m, T1 > 0 drives the pinion counter-clockwise
   fem::Material material;                // both gears (steel 210 GPa, 0.3: not published)
   std::string scene_file;                // path of the .msh to write (rank 0 of the communicator)
@@ -143,18 +143,26 @@ private:
   MPI_Comm mpi_communicator;
   GearMeshStiffnessSettings settings;
   kinematics::GearPairGeometry pair;
-  std::vector<ToothPairLoad> candidate_pairs;   // pairs given to the contact problem
-  double pinion_rotation_angle = 0.;            // rad, scene rotation of the pinion profile
-  double wheel_rotation_angle = 0.;             // rad
+  std::vector<ToothPairLoad> candidate_pairs; // pairs given to the contact problem
+  double pinion_rotation_angle = 0.;          // rad, scene rotation of the pinion profile
+  double wheel_rotation_angle = 0.;           // rad
   std::unique_ptr<contact::ContactProblem<dim>> problem; // owned
   GearMeshStiffnessResult result;
 };
 
-// Names of the settings' parameters in the command's parameter file, for InputError.
+// Names of the settings' fields in the InputError this module throws ("stiffness.<member>",
+// "sweep.<member>"; the scene's are geometry::scene_field). The command that fills the
+// settings maps them to its parameter names.
 namespace stiffness_parameter
 {
-inline const std::string torque = "Stiffness/pinion torque";
-inline const std::string positions = "Stiffness/sweep positions";
-inline const std::string pitches = "Stiffness/sweep base pitches";
+inline const std::string torque = "stiffness.pinion_torque";
+inline const std::string positions = "sweep.positions";
+inline const std::string pitches = "sweep.base_pitches";
+inline const std::string start = "sweep.start_position";
+inline const std::string scene_file = "stiffness.scene_file";
 } // namespace stiffness_parameter
+
+// The checks of the settings the constructor makes before anything is meshed (InputError
+// naming the field): a positive torque that closes the mesh, one loaded flank per tooth.
+void check_stiffness_settings(const GearMeshStiffnessSettings& settings);
 } // namespace gearstiff::stiffness

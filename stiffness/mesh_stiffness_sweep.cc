@@ -67,7 +67,7 @@ GearMeshStiffnessResult solve_position(const GearMeshStiffnessSettings& settings
                                        const std::string& scene_file_stem)
 {
   GearMeshStiffnessSettings local = settings;
-  local.scene.position = "roll angle";
+  local.scene.position = geometry::PairPosition::roll_angle;
   local.scene.pinion_roll_angle = roll_angle;
   local.scene_file = scene_file_stem + "_" + suffix + ".msh";
   local.output_base = settings.output_base + "_" + suffix;

@@ -2,8 +2,8 @@
 // Drewniak 2015): every mesh is read back with deal.II's GridIn::read_msh and checked for its ids,
 // its cell size at the predicted contacts and the gaps along the line of action, measured on the
 // boundary faces deal.II sees (not on the outlines the scene was built from).
-#include "geometry/scene_gear_pair.h"
 #include "errors/errors.h"
+#include "geometry/scene_gear_pair.h"
 #include "tests/geometry/scene_test_support.h"
 
 #include <Eigen/Dense>
@@ -19,16 +19,27 @@ using namespace gearstiff;
 using namespace gearstiff::geometry;
 using namespace gearstiff::test_support;
 
-// Distances along the line of action (from T1) where it crosses boundary faces with `id`.
-std::vector<double> crossings(const dealii::Triangulation<2>& triangulation, int id,
-                              const Eigen::Vector2d& t1, const Eigen::Vector2d& t2)
+// Boundary ids of the loaded flanks of pairs first..last on one gear (one id per flank).
+std::set<int> flank_ids(bool wheel, int first, int last)
+{
+  std::set<int> ids;
+  for (int j = first; j <= last; ++j)
+    ids.insert(wheel ? wheel_flank_id(j) : pinion_flank_id(j));
+  return ids;
+}
+
+// Distances along the line of action (from T1) where it crosses boundary faces with an id of
+// `ids`.
+std::vector<double> crossings(const dealii::Triangulation<2>& triangulation,
+                              const std::set<int>& ids, const Eigen::Vector2d& t1,
+                              const Eigen::Vector2d& t2)
 {
   const Eigen::Vector2d u = (t2 - t1).normalized();
   const double length = (t2 - t1).norm();
   std::vector<double> result;
   for (const auto& cell : triangulation.active_cell_iterators())
     for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+      if (cell->face(f)->at_boundary() && ids.count(cell->face(f)->boundary_id()) > 0)
       {
         const auto v0 = cell->face(f)->vertex(0), v1 = cell->face(f)->vertex(1);
         const Eigen::Vector2d a(v0[0], v0[1]), b(v1[0], v1[1]);
@@ -48,8 +59,9 @@ unsigned int touching_pairs(const dealii::Triangulation<2>& triangulation, const
                             double tolerance, std::vector<double>* gaps = nullptr)
 {
   const auto& line = info.reference_line;
-  const auto pinion = crossings(triangulation, scene_ids::pinion_flanks, line[0], line[1]);
-  const auto wheel = crossings(triangulation, scene_ids::wheel_flanks, line[0], line[1]);
+  const int n = max_pair_index;
+  const auto pinion = crossings(triangulation, flank_ids(false, -n, n), line[0], line[1]);
+  const auto wheel = crossings(triangulation, flank_ids(true, -n, n), line[0], line[1]);
   unsigned int count = 0;
   for (const double p : pinion)
   {
@@ -85,11 +97,11 @@ SceneInfo scene(const std::string& position, const std::string& name, unsigned i
                 RimModel rim = RimModel::sector)
 {
   GearPairSceneSpec spec;
-  spec.position = position;
+  spec.position = parse_pair_position(position, "position");
   spec.mesh.dimension = dimension;
   spec.mesh.layers = 3;
   spec.rim = rim;
-  return write_gear_pair_scene(spec, work_file(name));
+  return write_gear_pair_scene(spec, work_file(name)).info;
 }
 
 // Gap below which a pair counts as touching (m). The scene places the flanks exactly; what
@@ -111,10 +123,12 @@ TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
 
   const Ids ids = ids_of(triangulation);
   EXPECT_EQ(ids.materials, (std::set<int>{scene_ids::pinion_body, scene_ids::wheel_body}));
-  EXPECT_EQ(ids.boundaries,
-            (std::set<int>{scene_ids::free_surface, scene_ids::pinion_bore, scene_ids::wheel_bore,
-                           scene_ids::pinion_flanks, scene_ids::wheel_flanks,
-                           scene_ids::pinion_cuts, scene_ids::wheel_cuts}));
+  // One id per loaded flank: five teeth per gear centred on pair 0 (pairs −2..2).
+  std::set<int> expected{scene_ids::free_surface, scene_ids::pinion_bore, scene_ids::wheel_bore,
+                         scene_ids::pinion_cuts, scene_ids::wheel_cuts};
+  expected.merge(flank_ids(false, -2, 2));
+  expected.merge(flank_ids(true, -2, 2));
+  EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
 
   // The split-path pair (ε_α = 1.5, gear-data.md §1) has its pitch point in the single-contact
@@ -164,9 +178,10 @@ TEST(GearPairScene, FullRimHasBoresAndNoCuts)
   dealii::Triangulation<2> triangulation;
   read_mesh(triangulation, info.file);
   const Ids ids = ids_of(triangulation);
-  EXPECT_EQ(ids.boundaries,
-            (std::set<int>{scene_ids::free_surface, scene_ids::pinion_bore, scene_ids::wheel_bore,
-                           scene_ids::pinion_flanks, scene_ids::wheel_flanks}));
+  std::set<int> expected{scene_ids::free_surface, scene_ids::pinion_bore, scene_ids::wheel_bore};
+  expected.merge(flank_ids(false, -2, 2));
+  expected.merge(flank_ids(true, -2, 2));
+  EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance), 1u);
 }
 
@@ -177,16 +192,45 @@ TEST(GearPairScene, ExtrudedSceneIsHexahedralWithSideFaces)
   read_mesh(triangulation, info.file);
   const Ids ids = ids_of(triangulation);
   EXPECT_EQ(ids.materials, (std::set<int>{scene_ids::pinion_body, scene_ids::wheel_body}));
-  EXPECT_EQ(ids.boundaries,
-            (std::set<int>{scene_ids::pinion_bore, scene_ids::wheel_bore, scene_ids::pinion_flanks,
-                           scene_ids::wheel_flanks, scene_ids::pinion_cuts, scene_ids::wheel_cuts,
-                           scene_ids::side_faces, scene_ids::free_surface}));
+  std::set<int> expected{scene_ids::pinion_bore, scene_ids::wheel_bore, scene_ids::pinion_cuts,
+                         scene_ids::wheel_cuts,  scene_ids::side_faces, scene_ids::free_surface};
+  expected.merge(flank_ids(false, -2, 2));
+  expected.merge(flank_ids(true, -2, 2));
+  EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
   // Face width of the split-path pair: the common width min(26, 24) mm (gear-data.md §1).
   EXPECT_DOUBLE_EQ(info.face_width, 24e-3);
   // The extrusion copies the 2D mesh into `layers` layers.
   const SceneInfo flat = scene("single", "single_for_3d.msh");
   EXPECT_EQ(info.mesh.n_cells, 3 * flat.mesh.n_cells);
+}
+
+// Fine sweeps (64-256 positions, stiffness/mesh_stiffness_sweep.h: ℓ_i = A + (i + ½)·p_bt/N)
+// put a contact within p_bt/(2N) of an end of the path of contact: at the first position the
+// reference pair touches next to the wheel's tip corner, near the middle of the sweep pair +1
+// next to the pinion's. The scene must place and mesh these flanks like any other, with every
+// pair the kinematics counts touching (issue 11: they failed with "the line of action misses
+// a flank" because the flank piece next to the tip corner was labelled tip).
+TEST(GearPairScene, FineSweepPositionsNearThePathEndsTouch)
+{
+  GearPairSceneSpec spec;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  spec.position = PairPosition::roll_angle;
+  for (const unsigned int n : {64u, 256u})
+    for (const unsigned int i : {0u, n / 2 - 1, n / 2, n - 1})
+    {
+      const double position = pair.contact_start + (i + 0.5) * pair.transverse_base_pitch / n;
+      spec.pinion_roll_angle = position / r_b1;
+      SceneInfo info;
+      ASSERT_NO_THROW(info = write_gear_pair_scene(spec, work_file("sweep_end.msh")).info)
+          << "position " << i << " of " << n;
+      EXPECT_EQ(info.contacts.size(), pair.pairs_in_contact(position));
+      dealii::Triangulation<2> triangulation;
+      read_mesh(triangulation, info.file);
+      EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance), info.contacts.size())
+          << "position " << i << " of " << n;
+    }
 }
 
 TEST(GearPairScene, RejectsBadInputBeforeMeshing)
@@ -200,11 +244,9 @@ TEST(GearPairScene, RejectsBadInputBeforeMeshing)
   spec = GearPairSceneSpec();
   spec.pinion_bore_radius = 23e-3; // leaves < 1 module of rim under the 23.85 mm root circle
   EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
+  EXPECT_THROW(parse_pair_position("triple", "position"), InputError);
   spec = GearPairSceneSpec();
-  spec.position = "triple";
-  EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
-  spec = GearPairSceneSpec();
-  spec.position = "double";
+  spec.position = PairPosition::double_pair;
   spec.pinion_teeth_modelled = 1; // two pairs are in contact
   EXPECT_THROW(write_gear_pair_scene(spec, file), InputError);
   EXPECT_FALSE(std::filesystem::exists(file));

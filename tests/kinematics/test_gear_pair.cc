@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <iostream>
 
 using namespace gearstiff;
 using namespace gearstiff::kinematics;
@@ -141,6 +142,51 @@ TEST(GearPair, InternalPair)
   EXPECT_GT(pair.transverse_contact_ratio, 1.);
   // Internal pairs: the line of action T1T2 = a·sin α_w, T2 on the same side as T1.
   EXPECT_NEAR(pair.line_of_action_length, pair.centre_distance * std::sin(20. * degree), 1e-12);
+}
+
+// The automatic ring tip of the same pair: the longest ring teeth that still meet the pinion on
+// its involute with the stated margin. Exact by construction: the pair is valid at that tip,
+// a tip 1 µm smaller (longer teeth) is not (or breaks the margin), and the hand-chosen
+// 170 mm tip above (addendum 0.5·m) is valid, so the automatic one is no larger.
+TEST(GearPair, ClearingRingTip)
+{
+  GearPairSpec spec = standard_tips(split_path_pair());
+  spec.pinion.teeth = 24;
+  spec.wheel.teeth = 69;
+  spec.wheel.internal = true;
+  spec.pinion.profile_shift = 0.;
+  spec.wheel.profile_shift = 0.;
+  const double margin = 0.05 * mm;
+  const double tip = clearing_ring_tip_diameter(spec, margin);
+  EXPECT_LE(tip, 170. * mm);
+  spec.wheel.tip_diameter = tip;
+  const GearPairGeometry pair = compute_gear_pair(spec);
+  const double rb1 = 0.5 * pair.pinion.base_diameter;
+  const double form_roll =
+      std::sqrt(0.25 * pair.pinion.form_diameter * pair.pinion.form_diameter - rb1 * rb1);
+  EXPECT_NEAR(pair.contact_start - form_roll, margin, 1e-9); // bisection to 1e-12 m in d_a2
+  EXPECT_GT(pair.transverse_contact_ratio, 1.);
+  std::cout << "24/69 ring tip auto: d_a2 = " << tip / mm
+            << " mm, eps_alpha = " << pair.transverse_contact_ratio << "\n";
+  spec.wheel.internal = false;
+  EXPECT_EQ(input_error_parameter([&] { clearing_ring_tip_diameter(spec, margin); }),
+            "Gear pair/Wheel/tip diameter");
+}
+
+// Issue 11: the parameter to fix is named. A given centre distance beyond the zero-backlash
+// one shortens the path of contact; a bore outside the root circle leaves no body.
+TEST(GearPair, NamesTheParameterToFix)
+{
+  GearPairSpec spec = split_path_pair();
+  spec.centre_distance = 99. * mm; // zero-backlash 97.5 mm (gear-data.md §1)
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/centre distance");
+  spec = split_path_pair();
+  spec.pinion.bore_diameter = 100. * mm;
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
+            "Gear pair/Pinion/bore diameter");
+  spec = split_path_pair();
+  spec.pinion.normal_module = spec.wheel.normal_module = 1.; // 1 m with the 58.55 mm tip
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/Pinion/module");
 }
 
 TEST(GearPair, RejectsBadInput)

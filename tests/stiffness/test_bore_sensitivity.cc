@@ -24,7 +24,7 @@ namespace
 double pair_stiffness(const std::string& position, double pinion_bore_radius)
 {
   GearMeshStiffnessSettings settings;
-  settings.scene.position = position;
+  settings.scene.position = geometry::parse_pair_position(position, "position");
   settings.scene.pinion_bore_radius = pinion_bore_radius; // m
   settings.contact.friction_coefficient = 0.01;           // gear-data.md §1
   settings.scene_file = stiffness_work_stem("bore") + ".msh";

@@ -22,7 +22,7 @@ namespace
 GearMeshStiffnessResult solve(const std::string& position, contact::IterationSolves method)
 {
   GearMeshStiffnessSettings settings;
-  settings.scene.position = position;
+  settings.scene.position = geometry::parse_pair_position(position, "position");
   settings.contact.friction_coefficient = 0.01; // gear-data.md §1
   settings.contact.iteration_solves = method;
   settings.scene_file = stiffness_work_stem("solves-" + position) + ".msh";
