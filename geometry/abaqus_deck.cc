@@ -378,7 +378,7 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const SceneInf
   const double base_radius = 0.5 * pair.pinion.base_diameter;
   deck.closing_rotation =
       0.1 * spec.pinion_torque / (14e9 * info.face_width * base_radius * base_radius);
-  deck.title = "gearstiff gear pair scene (" + spec.position + " position), " +
+  deck.title = "gearstiff gear pair scene (" + to_string(spec.position) + " position), " +
                std::to_string(info.mesh.n_cells) + " cells";
   return deck;
 }

@@ -460,6 +460,20 @@ PairPosition parse_pair_position(const std::string& text, const std::string& par
   throw InputError(parameter, "'" + text + "' is not one of single, double, roll angle");
 }
 
+std::string to_string(PairPosition position)
+{
+  switch (position)
+  {
+  case PairPosition::single:
+    return "single";
+  case PairPosition::double_pair:
+    return "double";
+  case PairPosition::roll_angle:
+    break;
+  }
+  return "roll angle";
+}
+
 GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
 {
   const auto start = std::chrono::steady_clock::now();

@@ -125,4 +125,6 @@ std::vector<SceneQuantity> scene_quantities(const GearPairScene& scene);
 RimModel parse_rim_model(const std::string& text, const std::string& parameter);
 // Parses "single", "double" or "roll angle" (InputError naming `parameter` otherwise).
 PairPosition parse_pair_position(const std::string& text, const std::string& parameter);
+// The parameter-file word of a position ("single", "double", "roll angle").
+std::string to_string(PairPosition position);
 } // namespace gearstiff::geometry
