@@ -214,15 +214,17 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   {
     ProfileCases pc;
     pc.name = bases[b].scene.disc.rollers == 0 ? "nominal" : "corrected";
-    pc.position = cases.size();
-    cases.push_back(bases[b]);
+    // The position is the ramp's +M_c level when there is a ramp.
     pc.first_level = cases.size();
     pc.levels = levels.size();
+    pc.position = levels.empty() ? cases.size() : pc.first_level + levels.size() - 1;
     for (const double t : levels)
     {
       cases.push_back(bases[b]);
       cases.back().output_torque = t;
     }
+    if (levels.empty())
+      cases.push_back(bases[b]);
     pc.first_sweep = cases.size();
     pc.sweep = angles.size();
     for (const double a : angles)

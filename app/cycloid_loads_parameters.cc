@@ -41,6 +41,8 @@ void declare_scene(ParameterHandler& prm, const geometry::CycloidSceneSpec& s)
                     "published)");
   prm.declare_entry("contact clearance", in_mm(s.contact_clearance), Double(0.),
                     "rollers within this clearance of the disc are contact pairs (mm)");
+  prm.declare_entry("outline points per lobe", std::to_string(s.points_per_lobe),
+                    Integer(5, 100000), "points per lobe of the disc outline spline (-)");
   prm.leave_subsection();
 }
 
@@ -56,6 +58,7 @@ void parse_scene(ParameterHandler& prm, geometry::CycloidSceneSpec& s)
   s.roller_pin_radius = prm.get_double("roller pin radius") * mm;
   s.disc_width = prm.get_double("disc width") * mm;
   s.contact_clearance = prm.get_double("contact clearance") * mm;
+  s.points_per_lobe = prm.get_integer("outline points per lobe");
   prm.leave_subsection();
 }
 } // namespace

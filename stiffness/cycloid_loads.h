@@ -102,11 +102,15 @@ struct CycloidLoadResult
   double disc_force_balance = 0.;    // -, |R_on_disc − Σ contact forces| / R
   double disc_moment_balance = 0.;   // -, |moments about C of P_i and Q_j| / M_c
   double output_moment_balance = 0.; // -, |Σ c_j × Q_j − M_c| / M_c (lines through pin centres)
-  double output_rotation = 0.;       // rad, θ of the output member under M_c
-  double disc_rotation_load = 0.;    // rad, β of the disc about its bearing
-  double max_contact_pressure = 0.;  // Pa
-  double disc_von_mises = 0.;        // Pa, largest von Mises stress in the disc
-  CycloidAnalyticResult analytic;    // the rigid-disc estimate at the same position
+  // rad, rigid rotation of disc and output member that closes the first roller clearance before
+  // any load (the corrected profile's backlash in the torque's sense; 0 for nominal): the solve
+  // starts from there, so that a roller touches, and it is part of the rotations below.
+  double closing_rotation = 0.;
+  double output_rotation = 0.;      // rad, θ of the output member under M_c
+  double disc_rotation_load = 0.;   // rad, β of the disc about its bearing
+  double max_contact_pressure = 0.; // Pa
+  double disc_von_mises = 0.;       // Pa, largest von Mises stress in the disc
+  CycloidAnalyticResult analytic;   // the rigid-disc estimate at the same position
   // Model and cost.
   unsigned int n_cells = 0, n_dofs = 0, active_set_iterations = 0;
   double contact_size = 0.;                                                  // m
@@ -134,6 +138,9 @@ private:
   void evaluate();
 
   CycloidLoadSettings settings;
+  // The scene solved: settings.scene turned rigidly (disc profile and pins) by the closing
+  // rotation.
+  geometry::CycloidSceneSpec closed_scene;
   std::unique_ptr<contact::ContactProblem<dim>> problem;
   std::vector<unsigned int> roller_pairs, pin_pairs; // contact pair index of each roller / pin
   CycloidLoadResult result;

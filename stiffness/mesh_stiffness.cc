@@ -1,7 +1,7 @@
 #include "stiffness/mesh_stiffness.h"
 
-#include "fem/mesh.h"
 #include "errors/errors.h"
+#include "fem/mesh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -205,8 +205,8 @@ void GearMeshStiffness<dim>::make_scene()
 template <int dim>
 void GearMeshStiffness<dim>::setup_problem()
 {
-  problem = std::make_unique<contact::ContactProblem<dim>>(mpi_communicator, settings.elasticity,
-                                                  settings.linear_solver, settings.contact);
+  problem = std::make_unique<contact::ContactProblem<dim>>(
+      mpi_communicator, settings.elasticity, settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
   fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
   problem->system().set_materials({{geometry::scene_ids::pinion_body, settings.material},

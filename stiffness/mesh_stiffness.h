@@ -44,7 +44,7 @@ struct GearMeshStiffnessSettings
   geometry::GearPairSceneSpec scene = default_stiffness_scene();
   fem::ElasticityParameters elasticity = default_stiffness_elasticity(); // thickness: face width
   fem::LinearSolverParameters linear_solver;
-  contact::ContactParameters contact;            // μ and the active-set controls
+  contact::ContactParameters contact;    // μ and the active-set controls
   double pinion_torque = 49.4;           // N·m, T1 > 0 drives the pinion counter-clockwise
   fem::Material material;                // both gears (steel 210 GPa, 0.3: not published)
   std::string scene_file;                // path of the .msh to write (rank 0 of the communicator)
@@ -123,9 +123,9 @@ private:
   MPI_Comm mpi_communicator;
   GearMeshStiffnessSettings settings;
   kinematics::GearPairGeometry pair;
-  std::vector<ToothPairLoad> candidate_pairs;   // pairs given to the contact problem
-  double pinion_rotation_angle = 0.;            // rad, scene rotation of the pinion profile
-  double wheel_rotation_angle = 0.;             // rad
+  std::vector<ToothPairLoad> candidate_pairs; // pairs given to the contact problem
+  double pinion_rotation_angle = 0.;          // rad, scene rotation of the pinion profile
+  double wheel_rotation_angle = 0.;           // rad
   std::unique_ptr<contact::ContactProblem<dim>> problem; // owned
   GearMeshStiffnessResult result;
 };
