@@ -106,7 +106,7 @@ Eigen::Vector2d disc_centre(const geometry::CycloidSceneSpec& scene)
 }
 } // namespace
 
-double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign)
+double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign, double overlap)
 {
   const geometry::CycloidDiscSpec disc = scene.disc.rollers == 0 ? scene.ring : scene.disc;
   const Eigen::Vector2d centre = disc_centre(scene);
@@ -115,7 +115,7 @@ double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_s
   {
     const double lever = torque_sign * cross(c.point - centre, c.normal);
     if (lever > 0.)
-      smallest = std::min(smallest, std::max(c.clearance, 0.) / lever);
+      smallest = std::min(smallest, (std::max(c.clearance, 0.) + overlap) / lever);
   }
   if (!std::isfinite(smallest))
     throw SolverFailure("cycloid closing rotation", "no roller closes in that sense");

@@ -182,7 +182,11 @@ CycloidLoads<dim>::CycloidLoads(const CycloidLoadSettings& given) : settings(giv
   closed_scene = settings.scene;
   if (settings.scene.disc.rollers != 0)
   {
-    const double beta = closing_rotation(settings.scene, settings.output_torque > 0. ? 1. : -1.);
+    // The closest roller is closed by a fifth of the overlap tolerance beyond touching: the
+    // meshed outlines differ from the exact ones by fractions of a micrometre, and a roller left
+    // at a tiny positive gap would not be in the solver's initial active set.
+    const double beta = closing_rotation(settings.scene, settings.output_torque > 0. ? 1. : -1.,
+                                         0.2 * settings.contact.overlap_tolerance);
     const double signed_beta = settings.output_torque > 0. ? beta : -beta;
     closed_scene.disc.rotation += signed_beta;
     closed_scene.output_pin_phase += signed_beta;
