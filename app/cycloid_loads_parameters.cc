@@ -75,6 +75,11 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
   prm.set("Planar model", "plane stress");
   prm.set("Element degree", std::to_string(stiffness::default_cycloid_elasticity().degree));
   prm.leave_subsection();
+  prm.enter_subsection("Contact");
+  // stiffness::default_cycloid_contact(): 5 µm (m → mm).
+  prm.set("Overlap tolerance",
+          format_number(stiffness::default_cycloid_contact().overlap_tolerance / mm, 6));
+  prm.leave_subsection();
 
   prm.enter_subsection("Cycloid loads");
   prm.declare_entry("output torque", "440", Double(),

@@ -145,6 +145,13 @@ geometry::CycloidSceneSpec default_cycloid_load_scene()
   return scene;
 }
 
+contact::ContactParameters default_cycloid_contact()
+{
+  contact::ContactParameters contact;
+  contact.overlap_tolerance = 5e-6;
+  return contact;
+}
+
 fem::ElasticityParameters default_cycloid_elasticity()
 {
   fem::ElasticityParameters elasticity;
