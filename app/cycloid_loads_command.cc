@@ -214,15 +214,22 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   {
     ProfileCases pc;
     pc.name = bases[b].scene.disc.rollers == 0 ? "nominal" : "corrected";
-    pc.position = cases.size();
-    cases.push_back(bases[b]);
+    // The position is the ramp's +M_c level when there is a ramp.
+    // Torque levels for the nominal profile only: the mirrored (−M_c) solve of a corrected
+    // profile still fails to start with a roller in contact (docs/cycloid.md, open).
+    const std::vector<double> profile_levels =
+        pc.name == "nominal" ? levels : std::vector<double>{};
     pc.first_level = cases.size();
-    pc.levels = levels.size();
-    for (const double t : levels)
+    pc.levels = profile_levels.size();
+    pc.position =
+        profile_levels.empty() ? cases.size() : pc.first_level + profile_levels.size() - 1;
+    for (const double t : profile_levels)
     {
       cases.push_back(bases[b]);
       cases.back().output_torque = t;
     }
+    if (profile_levels.empty())
+      cases.push_back(bases[b]);
     pc.first_sweep = cases.size();
     pc.sweep = angles.size();
     for (const double a : angles)
@@ -285,7 +292,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     {
       std::vector<double> row{levels[k]};
       for (const auto& pc : profiles)
-        row.push_back(results[pc.first_level + k].output_rotation / arcmin);
+        row.push_back(pc.levels > 0 ? results[pc.first_level + k].output_rotation / arcmin : 0.);
       table.add_row(row);
     }
   }

@@ -41,6 +41,8 @@ void declare_scene(ParameterHandler& prm, const geometry::CycloidSceneSpec& s)
                     "published)");
   prm.declare_entry("contact clearance", in_mm(s.contact_clearance), Double(0.),
                     "rollers within this clearance of the disc are contact pairs (mm)");
+  prm.declare_entry("outline points per lobe", std::to_string(s.points_per_lobe),
+                    Integer(5, 100000), "points per lobe of the disc outline spline (-)");
   prm.leave_subsection();
 }
 
@@ -56,6 +58,7 @@ void parse_scene(ParameterHandler& prm, geometry::CycloidSceneSpec& s)
   s.roller_pin_radius = prm.get_double("roller pin radius") * mm;
   s.disc_width = prm.get_double("disc width") * mm;
   s.contact_clearance = prm.get_double("contact clearance") * mm;
+  s.points_per_lobe = prm.get_integer("outline points per lobe");
   prm.leave_subsection();
 }
 } // namespace
@@ -71,6 +74,11 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
   // The disc is thin (15 mm against a 190 mm diameter): plane stress of the disc width.
   prm.set("Planar model", "plane stress");
   prm.set("Element degree", std::to_string(stiffness::default_cycloid_elasticity().degree));
+  prm.leave_subsection();
+  prm.enter_subsection("Contact");
+  // stiffness::default_cycloid_contact(): 5 µm (m → mm).
+  prm.set("Overlap tolerance",
+          format_number(stiffness::default_cycloid_contact().overlap_tolerance / mm, 6));
   prm.leave_subsection();
 
   prm.enter_subsection("Cycloid loads");

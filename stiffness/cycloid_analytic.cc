@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 namespace gearstiff::stiffness
 {
@@ -94,6 +95,31 @@ double line_contact_approach(double force, double length, double r1, double r2, 
   return force / (M_PI * length) *
          (c1 * (2. * std::log(4. * std::abs(r1) / a) - 1.) +
           c2 * (2. * std::log(4. * std::abs(r2) / a) - 1.));
+}
+
+namespace
+{
+Eigen::Vector2d disc_centre(const geometry::CycloidSceneSpec& scene)
+{
+  const double angle = -double(scene.ring.rollers - 1) * scene.disc_rotation;
+  return -scene.ring.eccentricity * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+}
+} // namespace
+
+double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign, double overlap)
+{
+  const geometry::CycloidDiscSpec disc = scene.disc.rollers == 0 ? scene.ring : scene.disc;
+  const Eigen::Vector2d centre = disc_centre(scene);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& c : geometry::roller_contacts(scene.ring, disc, scene.disc_rotation))
+  {
+    const double lever = torque_sign * cross(c.point - centre, c.normal);
+    if (lever > 0.)
+      smallest = std::min(smallest, (std::max(c.clearance, 0.) + overlap) / lever);
+  }
+  if (!std::isfinite(smallest))
+    throw SolverFailure("cycloid closing rotation", "no roller closes in that sense");
+  return smallest;
 }
 
 CycloidAnalyticResult analytic_cycloid_loads(const geometry::CycloidSceneSpec& scene,

@@ -50,6 +50,13 @@ struct CycloidAnalyticResult
 double line_contact_approach(double force, double length, double r1, double r2, double e1,
                              double nu1, double e2, double nu2);
 
+// The smallest rigid rotation of the disc about its centre (rad, ≥ 0; in the sense of the
+// torque's sign) that closes a roller's clearance: the backlash a corrected profile has to turn
+// through before it carries load (0 for the nominal profile), plus `overlap` (m) of closure at
+// that roller.
+double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign,
+                        double overlap = 0.);
+
 // The analytic distribution for the scene's geometry (ring, disc profile, crank position, output
 // pins) under the output torque `output_torque` (N·m, counter-clockwise on the output member;
 // either sign). `roller_young_modulus` (Pa; ≤ 0: the scene's) lets the rollers be softer than

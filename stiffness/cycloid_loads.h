@@ -54,6 +54,8 @@ geometry::CycloidSceneSpec default_cycloid_load_scene();
 // Plane stress (the disc is thin), Q1, thickness = disc width.
 fem::ElasticityParameters default_cycloid_elasticity();
 
+contact::ContactParameters default_cycloid_contact();
+
 struct CycloidLoadSettings
 {
   // Ring, disc profile (nominal: disc.rollers = 0), bore, pins, widths and mesh sizes (SI);
@@ -63,7 +65,10 @@ struct CycloidLoadSettings
   double output_torque = 440.; // N·m, M_c on the output member (counter-clockwise > 0), ≠ 0
   fem::ElasticityParameters elasticity = default_cycloid_elasticity(); // thickness: disc width
   fem::LinearSolverParameters linear_solver;
-  contact::ContactParameters contact;  // frictionless by default (see the load case)
+  // Frictionless (see the load case); overlap tolerance 5 µm: the closing rotation of a corrected
+  // profile closes its first roller by 1 µm (a fifth of it), more than the outline spline's and
+  // the chords' deviations from the exact curves, so that roller starts in the active set.
+  contact::ContactParameters contact = default_cycloid_contact();
   fem::Material material;              // disc and output pins (steel 210 GPa, 0.3)
   fem::Material roller_material;       // rollers (the same steel by default)
   std::string scene_file;              // path of the .msh to write
@@ -102,11 +107,15 @@ struct CycloidLoadResult
   double disc_force_balance = 0.;    // -, |R_on_disc − Σ contact forces| / R
   double disc_moment_balance = 0.;   // -, |moments about C of P_i and Q_j| / M_c
   double output_moment_balance = 0.; // -, |Σ c_j × Q_j − M_c| / M_c (lines through pin centres)
-  double output_rotation = 0.;       // rad, θ of the output member under M_c
-  double disc_rotation_load = 0.;    // rad, β of the disc about its bearing
-  double max_contact_pressure = 0.;  // Pa
-  double disc_von_mises = 0.;        // Pa, largest von Mises stress in the disc
-  CycloidAnalyticResult analytic;    // the rigid-disc estimate at the same position
+  // rad, rigid rotation of disc and output member that closes the first roller clearance before
+  // any load (the corrected profile's backlash in the torque's sense; 0 for nominal): the solve
+  // starts from there, so that a roller touches, and it is part of the rotations below.
+  double closing_rotation = 0.;
+  double output_rotation = 0.;      // rad, θ of the output member under M_c
+  double disc_rotation_load = 0.;   // rad, β of the disc about its bearing
+  double max_contact_pressure = 0.; // Pa
+  double disc_von_mises = 0.;       // Pa, largest von Mises stress in the disc
+  CycloidAnalyticResult analytic;   // the rigid-disc estimate at the same position
   // Model and cost.
   unsigned int n_cells = 0, n_dofs = 0, active_set_iterations = 0;
   double contact_size = 0.;                                                  // m
@@ -134,6 +143,9 @@ private:
   void evaluate();
 
   CycloidLoadSettings settings;
+  // The scene solved: settings.scene turned rigidly (disc profile and pins) by the closing
+  // rotation.
+  geometry::CycloidSceneSpec closed_scene;
   std::unique_ptr<contact::ContactProblem<dim>> problem;
   std::vector<unsigned int> roller_pairs, pin_pairs; // contact pair index of each roller / pin
   CycloidLoadResult result;

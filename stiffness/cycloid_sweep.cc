@@ -215,8 +215,11 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
       std::copy(row.begin(), row.end(), rows.begin() + k * length);
       if (progress && rank == 0)
         progress("case " + std::to_string(k + 1) + "/" + std::to_string(cases.size()) +
-                 ": P_max = " + std::to_string(r.max_roller_force) + " N in " +
-                 std::to_string(r.total_time) + " s");
+                 ": P_max = " + std::to_string(r.max_roller_force) + " N, " +
+                 std::to_string(r.n_dofs) + " DoFs, " + std::to_string(r.total_time) +
+                 " s (scene " + std::to_string(r.scene_time) + " s, setup " +
+                 std::to_string(r.setup_time) + " s, solve " + std::to_string(r.solve_time) +
+                 " s)");
     }
     catch (const InputError& e)
     {
