@@ -70,7 +70,7 @@ TEST(TrainModel, LinParkerPlanetModes)
     ASSERT_EQ(torsional.n_dofs(), 3 + n);
     const ModeShapes modes = torsional.mode_shapes();
     std::vector<unsigned int> central = dofs_of(model, "s");
-    for (const std::string& name : {"c", "r"})
+    for (const char* name : {"c", "r"})
       central.push_back(dofs_of(model, name).front());
     // The planet-mode frequency: the one shared by N − 1 modes.
     unsigned int found = 0;

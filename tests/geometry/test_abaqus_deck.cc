@@ -72,7 +72,7 @@ Deck coarse_slice_deck(const std::string& base, unsigned int dimension = 2)
   deck.spec.wheel_teeth_modelled = 3;
   deck.spec.mesh.contact_size = 0.1e-3; // coarse: ccx solves it in seconds
   deck.spec.mesh.body_size = 1.5e-3;
-  deck.info = write_gear_pair_scene(deck.spec, work_file(base + ".msh"));
+  deck.info = write_gear_pair_scene(deck.spec, work_file(base + ".msh")).info;
   deck.mesh = read_scene_mesh(deck.info.file, dimension);
   deck.file = work_file(base + ".inp");
   write_abaqus_deck(deck.info, gear_pair_deck_spec(deck.spec, deck.info, 0.01, 50.), deck.file);

@@ -43,7 +43,9 @@ TEST(CycloidAnalytic, BalancesTheTorque)
   // rollers on the line of centres have levers of round-off size and forces to match).
   for (unsigned int i = 0; i < r.roller_forces.size(); ++i)
     if (r.roller_levers[i] < 0.)
+    {
       EXPECT_LT(r.roller_forces[i], 1e-9 * r.max_roller_force);
+    }
 }
 
 // With equal linear springs on zero gaps, pin forces follow Q_j ∝ w_j, so Q_max = 4 M_c/(n R_w)

@@ -73,12 +73,16 @@ TEST(CycloidLoads, NominalLoadsOneSide)
   const CycloidLoadResult& r = solved(440.);
   for (const auto& roller : r.rollers)
     if (roller.index > 10)
+    {
       EXPECT_LT(roller.force, 1e-9 * r.max_roller_force) << "roller " << roller.index;
+    }
   // Pins: loaded only where their lever w_j = (c_j × u)·z about the ring centre is positive,
   // u = −x here: pins with y > 0.
   for (const auto& pin : r.pins)
     if (std::sin(pin.angle) < -1e-9)
+    {
       EXPECT_LT(pin.force, 1e-9 * r.max_pin_force) << "pin " << pin.index;
+    }
   EXPECT_GE(r.loaded_rollers, 9u);
   EXPECT_LE(r.loaded_rollers, 11u);
 }
