@@ -153,12 +153,7 @@ void ContactProblem<dim>::setup_system()
   // A slave node whose normal DoF is held by a support keeps the support and is not coupled;
   // a component held by a roller stays held in the contact constraints too.
   AffineConstraints<double> held;
-  for (const auto& support : supports)
-    if (support.hub)
-      support.hub->add_constraints(held);
-    else
-      fem::add_prescribed_displacement(support.nodes, support.displacement, held,
-                                       support.components);
+  add_support_constraints(held, 1.);
   for (auto& pair : pairs)
   {
     // A surface paired with itself closes onto its own nodes: every node would be constrained
@@ -258,15 +253,22 @@ double ContactProblem<dim>::round_off_gap() const
 }
 
 template <int dim>
-AffineConstraints<double> ContactProblem<dim>::make_support_constraints(double load_factor) const
+void ContactProblem<dim>::add_support_constraints(AffineConstraints<double>& constraints,
+                                                  double load_factor) const
 {
-  AffineConstraints<double> constraints;
   for (const auto& support : supports)
     if (support.hub)
       support.hub->add_constraints(constraints, load_factor);
     else
       fem::add_prescribed_displacement(support.nodes, load_factor * support.displacement,
                                        constraints, support.components);
+}
+
+template <int dim>
+AffineConstraints<double> ContactProblem<dim>::make_support_constraints(double load_factor) const
+{
+  AffineConstraints<double> constraints;
+  add_support_constraints(constraints, load_factor);
   constraints.close();
   return constraints;
 }
@@ -275,12 +277,7 @@ template <int dim>
 AffineConstraints<double> ContactProblem<dim>::make_constraints(double load_factor) const
 {
   AffineConstraints<double> constraints;
-  for (const auto& support : supports)
-    if (support.hub)
-      support.hub->add_constraints(constraints, load_factor);
-    else
-      fem::add_prescribed_displacement(support.nodes, load_factor * support.displacement,
-                                       constraints, support.components);
+  add_support_constraints(constraints, load_factor);
 
   for (const auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)

@@ -197,6 +197,8 @@ private:
   struct Condensed; // the factorization, column cache and contact DoFs of the Schur method
 
   dealii::AffineConstraints<double> make_constraints(double load_factor) const;
+  void add_support_constraints(dealii::AffineConstraints<double>& constraints,
+                               double load_factor) const;
   // Supports only (hubs, prescribed displacements) at the given load factor.
   dealii::AffineConstraints<double> make_support_constraints(double load_factor) const;
   // One iteration: `displacement` and the contact forces `residual` (r = K u − f), by
