@@ -8,8 +8,8 @@
 #include "app/command.h"
 #include "app/geometry_parameters.h"
 #include "app/units.h"
-#include "geometry/cycloid_disc.h"
 #include "errors/errors.h"
+#include "geometry/cycloid_disc.h"
 
 #include <chrono>
 #include <cmath>

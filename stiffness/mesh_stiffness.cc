@@ -1,10 +1,9 @@
 #include "stiffness/mesh_stiffness.h"
 
+#include "errors/errors.h"
 #include "fem/mesh.h"
 #include "fem/parallel.h"
 #include "fem/small_strain.h"
-#include "errors/errors.h"
-#include "fem/mesh.h"
 
 #include <algorithm>
 #include <boost/serialization/vector.hpp>
@@ -118,18 +117,18 @@ void GearMeshStiffness<dim>::make_scene()
 {
   // Rank 0 writes the scene; every rank receives its numbers: ℓ_ref, h_c, the scene time and
   // the pairs j in contact (which are also modelled: the scene's windows cover them).
-  const std::vector<double> scene =
-      fem::run_on_root(mpi_communicator,
-                  [this]()
-                  {
-                    const geometry::GearPairScene written =
-                        geometry::write_gear_pair_scene(settings.scene, settings.scene_file);
-                    std::vector<double> values{written.reference_position,
-                                               written.info.contact_size, written.info.time_total};
-                    for (const int j : written.contact_pairs)
-                      values.push_back(j);
-                    return values;
-                  });
+  const std::vector<double> scene = fem::run_on_root(
+      mpi_communicator,
+      [this]()
+      {
+        const geometry::GearPairScene written =
+            geometry::write_gear_pair_scene(settings.scene, settings.scene_file);
+        std::vector<double> values{written.reference_position, written.info.contact_size,
+                                   written.info.time_total};
+        for (const int j : written.contact_pairs)
+          values.push_back(j);
+        return values;
+      });
   result.reference_position = scene[0];
   result.contact_size = scene[1];
   result.scene_time = scene[2];

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash .ci/install-deps
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-# (format check enabled with the formatting commit: bash tools/check_format.sh)
+bash tools/check_format.sh
 cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug -DGEARSTIFF_WERROR=ON >/dev/null
 cmake --build build-debug -j"$(nproc)" --target gearstiff_plain_tests
 ctest --test-dir build-debug --output-on-failure -j"$(nproc)" -L plain

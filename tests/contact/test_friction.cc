@@ -3,8 +3,8 @@
 // |λ_τ| = μ λ_n); under a tangential load below μ·N it sticks and carries the load; above μ·N no
 // equilibrium exists and the solver must say so instead of returning a number.
 #include "contact/contact_problem.h"
-#include "fem/mesh.h"
 #include "errors/errors.h"
+#include "fem/mesh.h"
 
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>

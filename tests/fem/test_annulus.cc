@@ -4,9 +4,9 @@
 // (Timoshenko & Goodier, Theory of Elasticity, 3rd ed., §33 "rotating disc"/§41 torsion of a ring
 // by shear on the circles; it follows from τ_rθ = −2μB/r² and T = 2π r² t τ_rθ). It depends on μ
 // only, so plane strain and plane stress must agree.
+#include "errors/errors.h"
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
-#include "errors/errors.h"
 
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>

@@ -2,8 +2,8 @@
 // planetary gear (CYCLO) including modification of equidistant"): nominal equidistant of the
 // shortened epicycloid, the Levenberg–Marquardt correction against the published ε = 0.27
 // column, roller clearances, and the rejection of impossible discs.
-#include "geometry/cycloid_disc.h"
 #include "errors/errors.h"
+#include "geometry/cycloid_disc.h"
 
 #include <Eigen/Geometry>
 #include <cmath>

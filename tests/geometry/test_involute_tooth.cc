@@ -5,8 +5,8 @@
 // Gear data: the split-path pair of ../shared/reference/gear-data.md §1 (Reszuta & Drewniak
 // 2015: z 21/57, m 2.5 mm, α 20°, x ±0.29) and the rings of §2 (Drewniak et al. 2016: z 69, 72).
 // Formulas: DIN 3960 / ISO 21771 (tooth thickness, root circle, undercut limit).
-#include "geometry/involute_tooth.h"
 #include "errors/errors.h"
+#include "geometry/involute_tooth.h"
 
 #include <Eigen/Geometry>
 #include <chrono>

@@ -1,7 +1,7 @@
 // The cycloid (Cyclo) scene of gear-data.md §4 (Chmurawa & Łokiec): nominal disc r = 96 mm,
 // e = 3 mm, q = 8.5 mm, z_k = 20, read back with deal.II's GridIn.
-#include "geometry/scene_cycloid.h"
 #include "errors/errors.h"
+#include "geometry/scene_cycloid.h"
 #include "tests/geometry/scene_test_support.h"
 
 #include <cmath>

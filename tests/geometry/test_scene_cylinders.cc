@@ -1,7 +1,7 @@
 // The two-cylinder Hertz scene, read back with deal.II's GridIn: ids, contact size, and the
 // half-width estimate against Johnson, Contact Mechanics (1985) eq. 4.43 evaluated by hand.
-#include "geometry/scene_cylinders.h"
 #include "errors/errors.h"
+#include "geometry/scene_cylinders.h"
 #include "tests/geometry/scene_test_support.h"
 
 #include <cmath>

@@ -4,8 +4,8 @@
 // of the flanks, the line of action, which is tangent to both base circles, so the wheel bore
 // carries |T_wheel| = |T1|·r_b2/r_b1 whatever the deformation (the position's load sharing,
 // tooth bending and contact flattening all cancel out of the ratio).
-#include "stiffness/mesh_stiffness_sweep.h"
 #include "errors/errors.h"
+#include "stiffness/mesh_stiffness_sweep.h"
 #include "tests/stiffness/work_file.h"
 
 #include <cmath>
