@@ -54,7 +54,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   // are determined only with at least that many positions.
   const unsigned int unknowns = fit_shape ? 3 : 1;
   if (p.sweep.positions < unknowns)
-    throw InputError(stiffness::stiffness_parameter::positions,
+    throw InputError("Stiffness/sweep positions",
                      "must be at least " + std::to_string(unknowns) + " for the Cai fit" +
                          (fit_shape ? " of the shape (Cai calibration/fit shape = true)" : ""));
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);

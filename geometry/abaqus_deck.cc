@@ -367,7 +367,11 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const SceneInf
   // A stick slope as stiff as the normal penalty keeps the elastic slip of sticking points
   // as small as the penetration.
   deck.stick_slope = deck.penalty;
-  deck.contact_pairs = {{scene_ids::pinion_flanks, scene_ids::wheel_flanks}};
+  // One contact pair per modelled tooth pair j, as the stiffness analysis pairs them.
+  for (int j = -max_pair_index; j <= max_pair_index; ++j)
+    if (info.boundary_names.count(pinion_flank_id(j)) &&
+        info.boundary_names.count(wheel_flank_id(j)))
+      deck.contact_pairs.emplace_back(pinion_flank_id(j), wheel_flank_id(j));
   deck.driven_bore = scene_ids::pinion_bore;
   deck.driven_centre = info.first_centre;
   deck.torque = spec.pinion_torque;

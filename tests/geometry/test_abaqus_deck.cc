@@ -111,8 +111,11 @@ TEST(AbaqusDeck, SliceOfTheGearPair)
   EXPECT_EQ(nodes, 2 * n + 2); // both layers, REF NODE and ROT NODE
   EXPECT_EQ(elements, deck.info.mesh.n_cells);
   EXPECT_EQ(element_sets, (std::set<std::string>{"PINION_BODY", "WHEEL_BODY"}));
-  EXPECT_EQ(surfaces, (std::set<std::string>{"PINION_BORE", "WHEEL_BORE", "PINION_CANDIDATE_FLANKS",
-                                             "WHEEL_CANDIDATE_FLANKS"}));
+  // One surface per modelled flank (geometry/scene_gear_pair.h: pinion tooth j, wheel tooth −j,
+  // three teeth per gear in the default scene), each tooth pair its own contact pair.
+  EXPECT_EQ(surfaces, (std::set<std::string>{"PINION_BORE", "WHEEL_BORE", "PINION_FLANK_-1",
+                                             "PINION_FLANK_0", "PINION_FLANK_1", "WHEEL_FLANK_-1",
+                                             "WHEEL_FLANK_0", "WHEEL_FLANK_1"}));
   EXPECT_GT(bore_nodes, 0u);
   EXPECT_EQ(plane_strain, 2 * n - bore_nodes);
   EXPECT_EQ(rigid_body, "*RIGID BODY, NSET=PINION_BORE_NODES, REF NODE=" +
