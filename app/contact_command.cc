@@ -14,6 +14,7 @@
 #include "fem/abaqus_reader.h"
 #include "fem/mesh.h"
 #include "fem/small_strain.h"
+#include "kinematics/hertz.h"
 
 #include <cmath>
 #include <deal.II/base/utilities.h>
@@ -392,7 +393,7 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
     double inverse_modulus = 0;
     for (const auto& [id, m] : materials)
       inverse_modulus += (1. - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
-    const contact::HertzLineContact hertz = contact::hertz_line_contact(
+    const kinematics::HertzLineContact hertz = kinematics::hertz_line_contact(
         load, geometry.upper_radius, geometry.lower_radius, 1. / inverse_modulus);
     const auto& pair = result.pairs.front();
     report.add_value("load_per_length", load * 1e-3, "N/mm", "Hertz load P");

@@ -113,7 +113,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_value("iso_C_R", iso.blank_factor, "-", "ISO C_R");
   report.add_value("iso_C_B", iso.basic_rack_factor, "-", "ISO C_B (basic rack)");
   report.add_value("iso_single_stiffness", iso.single * 1e-9, "N/(mm·µm)", "ISO c'");
-  value("iso_single_stiffness_times_width", iso.single_per_width * 1e-6, 327.2, "N/µm", "ISO c'·b",
+  value("iso_single_stiffness_times_width", iso.single_per_width * 1e-6,
+        kinematics::split_path_published::single_pair_stiffness * 1e-6, "N/µm", "ISO c'·b",
         "ANSYS single-pair k'_j, " + split_path_source);
   if (options.specific_load > 0.)
   {

@@ -176,10 +176,9 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   p.published_reference = prm.get_bool("published reference");
   prm.leave_subsection();
 
-  if (positions <= 0)
-    throw InputError("Stiffness/sweep positions",
-                     "must be at least 1 (a sweep with zero positions computes nothing)");
-  p.sweep.positions = static_cast<unsigned int>(std::min<long>(positions, UINT_MAX));
+  // A count below one becomes 0, which the sweep's own check (stiffness::sweep_positions)
+  // refuses in mode sweep; the other modes do not use it.
+  p.sweep.positions = static_cast<unsigned int>(std::clamp<long>(positions, 0, UINT_MAX));
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(s.scene.pair);
   if (start >= 0.)
     p.sweep.start_position = start * degree * 0.5 * pair.pinion.base_diameter;

@@ -179,14 +179,21 @@ def calculix_position(gearstiff, position, settings, friction, factor, work, env
             "time": wall, "memory": memory, "dofs": 3 * len(nodes)}
 
 
+def append_csv(path, header):
+    """`path` opened for appending rows; a new file starts with the `header` line."""
+    new = not os.path.exists(path)
+    out = open(path, "a")
+    if new:
+        out.write(header + "\n")
+    return out
+
+
 def write_accuracy_rows(args, rows):
     """The single-pair CalculiX point (penalty-corrected; its cost: both penalty solves) and the
     gearstiff point of the same run, in bench/accuracy_results.csv's columns."""
-    new = not os.path.exists(args.accuracy_csv)
-    with open(args.accuracy_csv, "a") as out:
-        if new:
-            out.write("variant,teeth,degree,model,size_factor,stiffness,iso,dofs,solve_time,"
-                      "wall_time,error_own_converged,error_reference,error_ansys\n")
+    with append_csv(args.accuracy_csv,
+                    "variant,teeth,degree,model,size_factor,stiffness,iso,dofs,solve_time,"
+                    "wall_time,error_own_converged,error_reference,error_ansys") as out:
         for position, g, runs, ks, k_inf in rows:
             if position != "single":
                 continue
@@ -259,11 +266,8 @@ def main():
         if headline is None:
             headline = (g["k"], k_inf)
     if args.csv:
-        new = not os.path.exists(args.csv)
-        with open(args.csv, "a") as out:
-            if new:
-                out.write("position,size_scale,cells,solver,penalty_factor,k_N_per_um,"
-                          "wall_s,memory_MB\n")
+        with append_csv(args.csv, "position,size_scale,cells,solver,penalty_factor,"
+                        "k_N_per_um,wall_s,memory_MB") as out:
             for position, g, runs, ks, k_inf in rows:
                 out.write(f"{position},{args.size_scale},{g['cells']:.0f},gearstiff,,"
                           f"{g['k']:.6g},{g['time']:.3f},{g['memory']:.0f}\n")

@@ -145,16 +145,6 @@ void make_cylinder_pair(const CylinderPairGeometry& geometry, Triangulation<dim>
   fem::join_bodies<dim>({&upper, &lower}, tria);
 }
 
-HertzLineContact hertz_line_contact(double load_per_length, double upper_radius,
-                                    double lower_radius, double effective_modulus)
-{
-  const double radius = 1. / (1. / upper_radius + 1. / lower_radius);
-  HertzLineContact hertz;
-  hertz.half_width = std::sqrt(4. * load_per_length * radius / (M_PI * effective_modulus));
-  hertz.peak_pressure = 2. * load_per_length / (M_PI * hertz.half_width);
-  return hertz;
-}
-
 HertzLineContact fit_hertz_profile(const std::vector<double>& x, const std::vector<double>& p)
 {
   double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;

@@ -6,8 +6,7 @@
 //
 // Ids: material 1 upper body, 2 lower body; boundary 1 upper contact arc, 2 upper flat top,
 // 3 lower contact arc, 4 lower flat bottom, 5 the z faces (3D), 0 the rest (free).
-// Hertz (K.L. Johnson, Contact Mechanics, 1985, §4.3, eq. 4.43–4.45): for a load P per unit
-// length, a = sqrt(4 P R / (π E*)), p0 = 2P/(π a), 1/R = 1/R1 + 1/R2, 1/E* = Σ (1 − ν²)/E.
+// The Hertz solution it is compared with (Johnson 1985, §4.3) is kinematics/hertz.h.
 #pragma once
 
 #include <deal.II/grid/tria.h>
@@ -54,8 +53,4 @@ struct HertzLineContact
 // Least-squares fit of the Hertz profile p² = p0² (1 − x²/a²) to nodal pressures (x measured
 // from the first contact point, m; p in Pa): resolves a finer than the node spacing.
 HertzLineContact fit_hertz_profile(const std::vector<double>& x, const std::vector<double>& p);
-
-// load per unit length (N/m), radii (m), effective modulus E* (Pa).
-HertzLineContact hertz_line_contact(double load_per_length, double upper_radius,
-                                    double lower_radius, double effective_modulus);
 } // namespace gearstiff::contact

@@ -1,6 +1,7 @@
 // VTU/PVTU output of ElasticSystem: displacement, von Mises stress, material id, MPI subdomain
 // and analysis-specific nodal scalars.
 #include "fem/elastic_system.h"
+#include "fem/stress.h"
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -33,31 +34,13 @@ public:
   {
     const auto cell = inputs.template get_cell<dim>();
     const Material& m = system.material(cell->material_id());
-    const double mu = m.lame_mu();
-    double lambda = m.lame_lambda();
-    const bool plane_stress =
-        dim == 2 && system.get_parameters().model == PlanarModel::plane_stress;
-    if (plane_stress)
-      lambda = 2. * lambda * mu / (lambda + 2. * mu);
+    const PlanarModel model = system.get_parameters().model;
     for (unsigned int p = 0; p < computed.size(); ++p)
     {
-      double strain[3][3] = {};
+      Tensor<2, dim> gradient;
       for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          strain[i][j] =
-              0.5 * (inputs.solution_gradients[p][i][j] + inputs.solution_gradients[p][j][i]);
-      const double trace = strain[0][0] + strain[1][1] + strain[2][2];
-      double stress[3][3] = {};
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          stress[i][j] = 2. * mu * strain[i][j] + (i == j ? lambda * trace : 0.);
-      if (dim == 2 && plane_stress)
-        stress[2][2] = 0.;
-      const double s11 = stress[0][0], s22 = stress[1][1], s33 = stress[2][2];
-      computed[p](0) = std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) +
-                                        (s33 - s11) * (s33 - s11)) +
-                                 3. * (stress[0][1] * stress[0][1] + stress[1][2] * stress[1][2] +
-                                       stress[0][2] * stress[0][2]));
+        gradient[i] = inputs.solution_gradients[p][i];
+      computed[p](0) = von_mises_stress(m, model, gradient);
     }
   }
 

@@ -60,16 +60,6 @@ std::vector<Node<dim>> boundary_nodes(const DoFHandler<dim>& dof_handler,
   return result;
 }
 
-double Material::lame_lambda() const
-{
-  return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
-}
-
-double Material::lame_mu() const
-{
-  return youngs_modulus / (2. * (1. + poisson_ratio));
-}
-
 template <int dim>
 struct ElasticSystem<dim>::Implementation
 {
@@ -91,15 +81,6 @@ struct ElasticSystem<dim>::Implementation
 
 namespace
 {
-// λ of the 2D law: plane stress replaces the 3D λ by 2λμ/(λ+2μ) (σ_zz = 0 eliminated).
-double effective_lambda(const Material& material, int dim, PlanarModel model)
-{
-  const double lambda = material.lame_lambda(), mu = material.lame_mu();
-  if (dim == 2 && model == PlanarModel::plane_stress)
-    return 2. * lambda * mu / (lambda + 2. * mu);
-  return lambda;
-}
-
 // Cell stiffness of isotropic elasticity, ∫ (λ div v div u + 2μ ε(v):ε(u)) · depth.
 template <int dim>
 void cell_stiffness(const FEValues<dim>& fe_values, double lambda, double mu, double depth,
@@ -151,8 +132,8 @@ void ElasticSystem<dim>::Implementation::assemble(const ElasticSystem<dim>& syst
     {
       fe_values.reinit(cell);
       const Material& m = system.material(cell->material_id());
-      cell_stiffness(fe_values, effective_lambda(m, dim, system.elasticity.model), m.lame_mu(),
-                     depth, cell_matrix);
+      cell_stiffness(fe_values, m.lame_lambda(dim, system.elasticity.model), m.lame_mu(), depth,
+                     cell_matrix);
       cell_rhs = 0;
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())

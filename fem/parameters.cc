@@ -6,6 +6,24 @@ using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
 
+double Material::lame_lambda() const
+{
+  return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+}
+
+double Material::lame_mu() const
+{
+  return youngs_modulus / (2. * (1. + poisson_ratio));
+}
+
+double Material::lame_lambda(const int dim, const PlanarModel model) const
+{
+  const double lambda = lame_lambda(), mu = lame_mu();
+  if (dim == 2 && model == PlanarModel::plane_stress)
+    return 2. * lambda * mu / (lambda + 2. * mu);
+  return lambda;
+}
+
 void ElasticityParameters::declare_parameters(dealii::ParameterHandler& prm)
 {
   prm.declare_entry("Planar model", "plane strain", Selection("plane strain|plane stress"),

@@ -24,6 +24,10 @@ struct Material
   // Lamé constants of the 3D law, Pa.
   double lame_lambda() const;
   double lame_mu() const;
+
+  // Pa, λ of the law a `dim`-dimensional model uses: plane stress (2D only) eliminates σ_zz = 0
+  // and replaces λ by 2λμ/(λ + 2μ); plane strain and 3D keep the 3D λ.
+  double lame_lambda(int dim, PlanarModel model) const;
 };
 
 // Subsection "Finite elements". The space dimension comes from the mesh; `model` and

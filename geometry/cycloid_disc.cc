@@ -127,21 +127,10 @@ void check_disc(const CycloidDiscSpec& spec)
                          format_mm(smallest_radius) + "): the disc profile would loop");
 }
 
-// Arc length between two generating angles (Gauss–Legendre, 5 points on 4 pieces).
+// Arc length between two generating angles (geometry::arc_length, tooth_profile.h).
 double arc_length(const Equidistant& curve, double a, double b)
 {
-  static const double nodes[5] = {-0.9061798459386640, -0.5384693101056831, 0., 0.5384693101056831,
-                                  0.9061798459386640};
-  static const double weights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                    0.4786286704993665, 0.2369268850561891};
-  const int pieces = 4;
-  const double h = (b - a) / pieces;
-  double length = 0.;
-  for (int p = 0; p < pieces; ++p)
-    for (int k = 0; k < 5; ++k)
-      length +=
-          0.5 * h * weights[k] * curve.point_rate(a + (p + 0.5) * h + 0.5 * h * nodes[k]).norm();
-  return std::abs(length);
+  return geometry::arc_length([&curve](double t) { return curve.point_rate(t).norm(); }, a, b);
 }
 
 // The correction residuals (lengths in mm so that all residuals are of order one).

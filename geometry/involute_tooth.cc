@@ -428,6 +428,7 @@ InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double t
   spec.tip_diameter = tip_diameter;
   spec.internal = gear.internal;
   spec.cutter_addendum = gear.dedendum_coefficient;
+  spec.cutter_dedendum = gear.addendum_coefficient;
   spec.cutter_tip_radius = gear.root_radius_coefficient;
   spec.gear_addendum = gear.addendum_coefficient;
   return spec;

@@ -57,7 +57,8 @@ double tip_diameter(const InvoluteToothSpec& spec);
 
 // The tooth of one gear of kinematics' pair (spur gears; a helical gear is rejected: its
 // transverse profile needs the transverse module and pressure angle, not done here). The
-// cutter is the gear's basic rack (h_fP*, ρ_fP*); tip diameter as the pair uses it.
+// cutter is the gear's basic rack (addendum h_fP*, dedendum h_aP*, tip round ρ_fP*); tip
+// diameter as the pair uses it.
 // `required_form_diameter` is left 0 (kinematics checks the form circle against its mate).
 InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double tip_diameter);
 

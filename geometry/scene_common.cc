@@ -1,6 +1,7 @@
 #include "geometry/scene_common.h"
 
 #include "errors/errors.h"
+#include "kinematics/hertz.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,10 +20,11 @@ double hertz_half_width(const double force_per_length, const double radius_1, co
                                          "(relative curvature not positive)");
   if (!(force_per_length > 0.))
     throw InputError("load", "the contact force must be positive for the Hertz estimate");
-  const double effective_modulus =
-      1. / ((1. - poisson_ratio_1 * poisson_ratio_1) / young_modulus_1 +
-            (1. - poisson_ratio_2 * poisson_ratio_2) / young_modulus_2);
-  return std::sqrt(4. * force_per_length / (M_PI * effective_modulus * inverse_radius));
+  return kinematics::hertz_line_contact(
+             force_per_length, radius_1, radius_2,
+             kinematics::effective_modulus(young_modulus_1, poisson_ratio_1, young_modulus_2,
+                                           poisson_ratio_2))
+      .half_width;
 }
 
 SizeGrading

@@ -128,8 +128,8 @@ struct SceneInfo
   double time_total = 0.; // s, scene construction + meshing + writing
 };
 
-// Plane-strain Hertz contact half-width of two parallel cylinders (Johnson, Contact Mechanics,
-// 1985, eq. 4.43): a = sqrt(4·F'·R / (π·E*)), 1/R = 1/R1 + 1/R2, 1/E* = Σ (1 − ν²)/E.
+// Plane-strain Hertz contact half-width of two parallel cylinders (kinematics/hertz.h), after
+// checking that the load and the relative curvature are positive (InputError otherwise).
 // force_per_length in N/m, radii in m (a flat: infinity; concave: negative), moduli in Pa.
 double hertz_half_width(double force_per_length, double radius_1, double radius_2,
                         double young_modulus_1, double poisson_ratio_1, double young_modulus_2,

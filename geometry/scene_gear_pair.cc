@@ -23,17 +23,7 @@ constexpr double path_tolerance = 1e-9;
 InvoluteToothSpec tooth_spec(const kinematics::GearSpec& gear,
                              const kinematics::GearGeometry& derived)
 {
-  InvoluteToothSpec spec;
-  spec.teeth = gear.teeth;
-  spec.module = gear.normal_module;
-  spec.pressure_angle = gear.pressure_angle;
-  spec.profile_shift = gear.profile_shift;
-  spec.tip_diameter = derived.tip_diameter;
-  spec.internal = gear.internal;
-  spec.cutter_addendum = gear.dedendum_coefficient;
-  spec.cutter_dedendum = gear.addendum_coefficient;
-  spec.cutter_tip_radius = gear.root_radius_coefficient;
-  spec.gear_addendum = gear.addendum_coefficient;
+  InvoluteToothSpec spec = involute_tooth_spec(gear, derived.tip_diameter);
   spec.required_form_diameter = derived.active_profile_start;
   return spec;
 }

@@ -1,6 +1,7 @@
 #include "stiffness/cycloid_analytic.h"
 
 #include "errors/errors.h"
+#include "kinematics/hertz.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,8 +91,8 @@ double line_contact_approach(double force, double length, double r1, double r2, 
   if (!(force > 0.))
     return 0.;
   const double c1 = (1. - nu1 * nu1) / e1, c2 = (1. - nu2 * nu2) / e2;
-  const double radius = 1. / (1. / r1 + 1. / r2);
-  const double a = std::sqrt(4. * force / length * radius / (M_PI / (c1 + c2)));
+  const double a =
+      kinematics::hertz_line_contact(force / length, r1, r2, 1. / (c1 + c2)).half_width;
   return force / (M_PI * length) *
          (c1 * (2. * std::log(4. * std::abs(r1) / a) - 1.) +
           c2 * (2. * std::log(4. * std::abs(r2) / a) - 1.));

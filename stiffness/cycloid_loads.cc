@@ -2,6 +2,8 @@
 
 #include "errors/errors.h"
 #include "fem/mesh.h"
+#include "fem/stress.h"
+#include "stiffness/contact_solve.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,13 +88,8 @@ double max_von_mises(const fem::ElasticSystem<dim>& system, const Vector<double>
   const QGauss<dim> quadrature(fe.degree + 1);
   FEValues<dim> fe_values(system.get_mapping(), fe, quadrature, update_gradients);
   std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-  const bool plane_stress =
-      dim == 2 && system.get_parameters().model == fem::PlanarModel::plane_stress;
+  const fem::PlanarModel model = system.get_parameters().model;
   const fem::Material& m = system.material(material);
-  const double mu = m.lame_mu();
-  double lambda = m.lame_lambda();
-  if (plane_stress)
-    lambda = 2. * lambda * mu / (lambda + 2. * mu);
   double largest = 0.;
   for (const auto& cell : system.get_dof_handler().active_cell_iterators())
   {
@@ -108,17 +105,7 @@ double max_von_mises(const fem::ElasticSystem<dim>& system, const Vector<double>
         const unsigned int c = fe.system_to_component_index(i).first;
         gradient[c] += u[dofs[i]] * fe_values.shape_grad_component(i, q, c);
       }
-      const SymmetricTensor<2, dim> strain = symmetrize(gradient);
-      const SymmetricTensor<2, dim> stress =
-          lambda * trace(strain) * unit_symmetric_tensor<dim>() + 2. * mu * strain;
-      SymmetricTensor<2, 3> full;
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = a; b < dim; ++b)
-          full[a][b] = stress[a][b];
-      if (dim == 2 && !plane_stress)
-        full[2][2] = m.poisson_ratio * (stress[0][0] + stress[1][1]);
-      const SymmetricTensor<2, 3> deviator = full - trace(full) / 3. * unit_symmetric_tensor<3>();
-      largest = std::max(largest, std::sqrt(1.5 * scalar_product(deviator, deviator)));
+      largest = std::max(largest, fem::von_mises_stress(m, model, gradient));
     }
   }
   return largest;
@@ -340,12 +327,7 @@ void CycloidLoads<dim>::setup_problem()
 template <int dim>
 void CycloidLoads<dim>::solve()
 {
-  problem->setup_system();
-  const contact::ContactResults<dim>& contact = problem->solve();
-  result.n_dofs = contact.n_dofs;
-  result.active_set_iterations = contact.active_set_iterations;
-  result.setup_time = contact.setup_time;
-  result.solve_time = contact.assembly_time + contact.solve_time;
+  solve_contact_problem(*problem, result);
 }
 
 template <int dim>

@@ -4,6 +4,8 @@
 #include "fem/mesh.h"
 #include "fem/parallel.h"
 #include "fem/small_strain.h"
+#include "fem/stress.h"
+#include "stiffness/contact_solve.h"
 
 #include <algorithm>
 #include <boost/serialization/vector.hpp>
@@ -185,12 +187,7 @@ void GearMeshStiffness<dim>::setup_problem()
 template <int dim>
 void GearMeshStiffness<dim>::solve()
 {
-  problem->setup_system();
-  const contact::ContactResults<dim>& contact = problem->solve();
-  result.n_dofs = contact.n_dofs;
-  result.active_set_iterations = contact.active_set_iterations;
-  result.setup_time = contact.setup_time;
-  result.solve_time = contact.assembly_time + contact.solve_time;
+  solve_contact_problem(*problem, result);
 }
 
 template <int dim>
@@ -261,11 +258,6 @@ void GearMeshStiffness<dim>::evaluate()
   const double wheel_root = 0.5 * pair.wheel.root_diameter;
   const double pinion_form = 0.5 * pair.pinion.form_diameter;
   const double wheel_form = 0.5 * pair.wheel.form_diameter;
-  const bool plane_stress = dim == 2 && settings.elasticity.model == fem::PlanarModel::plane_stress;
-  const double mu = settings.material.lame_mu();
-  double lambda = settings.material.lame_lambda();
-  if (plane_stress)
-    lambda = 2. * lambda * mu / (lambda + 2. * mu);
   for (const auto& cell : system.get_dof_handler().active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
     {
@@ -298,10 +290,8 @@ void GearMeshStiffness<dim>::evaluate()
           const unsigned int c = fe.system_to_component_index(i).first;
           gradient[c] += u[dofs[i]] * fe_face.shape_grad_component(i, q, c);
         }
-        const SymmetricTensor<2, dim> strain = symmetrize(gradient);
-        const SymmetricTensor<2, dim> stress =
-            lambda * trace(strain) * unit_symmetric_tensor<dim>() + 2. * mu * strain;
-        const double largest = eigenvalues(stress)[0];
+        const double largest =
+            eigenvalues(fem::stress(settings.material, settings.elasticity.model, gradient))[0];
         double& target = pinion ? result.pinion_root_stress : result.wheel_root_stress;
         target = std::max(target, largest);
       }

@@ -38,6 +38,14 @@ def shade_window(ax, window):
     ax.axvspan(start, end, color="0.9", zorder=0, label="steady-state window")
 
 
+def finish(fig, ax, png, legend_loc="best", legend_size=8):
+    """Grid, legend and layout of every chart of this script, written to `png`."""
+    ax.grid(True, lw=0.3)
+    ax.legend(loc=legend_loc, fontsize=legend_size)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
 def time_series(kind, path, window, png):
     header, c = read(path)
     t = c[header[0]]
@@ -55,10 +63,7 @@ def time_series(kind, path, window, png):
         # Stiffness repeats every mesh period: show the last few periods of the window.
         start, end = (float(x) for x in window.split(","))
         ax.set_xlim(max(start, end - (end - start) / 8), end)
-    ax.legend(loc="best", fontsize=8)
-    ax.grid(True, lw=0.3)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    finish(fig, ax, png)
 
 
 def resonance(path, png):
@@ -89,10 +94,7 @@ def resonance(path, png):
                     label="K_v max beyond the scale")
     ax.set_xlabel("input speed n1 [rpm]")
     ax.set_ylabel("dynamic factor K_v [-]")
-    ax.grid(True, lw=0.3)
-    ax.legend(loc="best", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    finish(fig, ax, png)
 
 
 def campbell(path, modes_path, speeds, png):
@@ -119,10 +121,7 @@ def campbell(path, modes_path, speeds, png):
     ax.set_xlabel("input speed [rpm]")
     ax.set_ylabel("frequency [Hz]")
     ax.set_title("Campbell chart: mesh orders 1 (solid), 2 (dashed), 3 (dotted); modes (grey)")
-    ax.grid(True, lw=0.3)
-    ax.legend(loc="upper left", fontsize=7)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    finish(fig, ax, png, legend_loc="upper left", legend_size=7)
 
 
 def main(argv):

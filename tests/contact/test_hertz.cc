@@ -3,6 +3,7 @@
 // from the computed reaction. A refinement study of the mesh at the contact: the half-width and
 // peak pressure must approach Hertz and be within 2 % at the finest level.
 #include "contact/cylinder_pair.h"
+#include "kinematics/hertz.h"
 #include "tests/contact/hertz_cylinders.h"
 
 #include <cmath>
@@ -49,14 +50,14 @@ TEST(Hertz, PlaneStrainCylindersRefinementStudy)
   const double effective_modulus = steel.youngs_modulus / (2. * (1. - 0.3 * 0.3));
   const double approach = 4e-6; // m, gives P ≈ 129 N/mm and a ≈ 0.1 mm (a/R = 0.017)
   HertzRun run;
-  HertzLineContact hertz;
+  kinematics::HertzLineContact hertz;
   double fine_size = 0;
   // Cell size at the contact a/8, a/16, a/32.
   for (const double h : {12.5e-6, 6.25e-6, 3.125e-6})
   {
     fine_size = h;
     run = run_hertz(fine_size, approach);
-    hertz = hertz_line_contact(run.load_per_length, 10e-3, 15e-3, effective_modulus);
+    hertz = kinematics::hertz_line_contact(run.load_per_length, 10e-3, 15e-3, effective_modulus);
     std::cout << "h = " << fine_size * 1e6 << " um, DoFs " << run.n_dofs << ", iterations "
               << run.iterations << ", P = " << run.load_per_length * 1e-3
               << " N/mm, a_fit/a_Hertz - 1 = " << run.fitted_half_width / hertz.half_width - 1.

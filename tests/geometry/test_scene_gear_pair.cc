@@ -115,6 +115,20 @@ constexpr double touching_tolerance = 0.5e-6;
 // pitch; 50 µm separates "touching" from "not touching" by two orders of magnitude.
 constexpr double apart_tolerance = 50e-6;
 
+// The contacts of a scene: `pairs` tooth pairs touch, every other crossing of the line of action
+// is clearly apart, and the cells at each contact point have edges no longer than its h_c.
+void expect_touching_and_resolved(const dealii::Triangulation<2>& triangulation,
+                                  const SceneInfo& info, unsigned int pairs)
+{
+  std::vector<double> gaps;
+  EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance, &gaps), pairs);
+  for (const double gap : gaps)
+    EXPECT_TRUE(gap < touching_tolerance || gap > apart_tolerance) << "gap " << gap;
+  for (const auto& contact : info.contacts)
+    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * contact.contact_size),
+              contact.contact_size);
+}
+
 TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
 {
   const SceneInfo info = scene("single", "single.msh");
@@ -141,15 +155,7 @@ TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
   EXPECT_NEAR(info.contacts[0].hertz_half_width, 0.08e-3, 0.008e-3);
   EXPECT_NEAR(info.contact_size, 0.1 * info.contacts[0].hertz_half_width, 1e-12);
 
-  std::vector<double> gaps;
-  EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance, &gaps), 1u);
-  for (const double gap : gaps)
-    EXPECT_TRUE(gap < touching_tolerance || gap > apart_tolerance) << "gap " << gap;
-
-  // Element size at the contact point: every cell touching it has edges no longer than h_c.
-  for (const auto& contact : info.contacts)
-    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * contact.contact_size),
-              contact.contact_size);
+  expect_touching_and_resolved(triangulation, info, 1);
 
   EXPECT_GT(info.mesh.min_scaled_jacobian, 0.2); // the checker already rejects <= 0
 }
@@ -163,13 +169,7 @@ TEST(GearPairScene, DoublePairPositionHasTwoTouchingPairs)
   // The two contacts are one transverse base pitch apart: p_et = 7.380 mm (gear-data.md §1,
   // printed to 1 µm).
   EXPECT_NEAR((info.contacts[1].point - info.contacts[0].point).norm(), 7.380e-3, 1e-6);
-  std::vector<double> gaps;
-  EXPECT_EQ(touching_pairs(triangulation, info, touching_tolerance, &gaps), 2u);
-  for (const double gap : gaps)
-    EXPECT_TRUE(gap < touching_tolerance || gap > apart_tolerance) << "gap " << gap;
-  for (const auto& contact : info.contacts)
-    EXPECT_LE(largest_edge_near(triangulation, contact.point, 0.5 * contact.contact_size),
-              contact.contact_size);
+  expect_touching_and_resolved(triangulation, info, 2);
 }
 
 TEST(GearPairScene, FullRimHasBoresAndNoCuts)

@@ -24,6 +24,19 @@ GearPairSpec standard_tips(GearPairSpec spec)
   spec.wheel.tip_diameter = 0.;
   return spec;
 }
+
+// An internal pair 24/69 with the tooling of the split-path pair, no profile shift and the
+// standard tips (the ring's digs into the pinion fillet).
+GearPairSpec internal_24_69_pair()
+{
+  GearPairSpec spec = standard_tips(split_path_pair());
+  spec.pinion.teeth = 24;
+  spec.wheel.teeth = 69;
+  spec.wheel.internal = true;
+  spec.pinion.profile_shift = 0.;
+  spec.wheel.profile_shift = 0.;
+  return spec;
+}
 } // namespace
 
 TEST(GearPair, InverseInvoluteRoundTrips)
@@ -128,12 +141,7 @@ TEST(GearPair, ShiftedWorkingPressureAngle)
 // clears it.
 TEST(GearPair, InternalPair)
 {
-  GearPairSpec spec = standard_tips(split_path_pair());
-  spec.pinion.teeth = 24;
-  spec.wheel.teeth = 69;
-  spec.wheel.internal = true;
-  spec.pinion.profile_shift = 0.;
-  spec.wheel.profile_shift = 0.;
+  GearPairSpec spec = internal_24_69_pair();
   EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
             "Gear pair/Wheel/tip diameter");
   spec.wheel.tip_diameter = (69. * 2.5 - 2. * 2.5 * 0.5) * mm; // addendum 0.5·m
@@ -150,12 +158,7 @@ TEST(GearPair, InternalPair)
 // 170 mm tip above (addendum 0.5·m) is valid, so the automatic one is no larger.
 TEST(GearPair, ClearingRingTip)
 {
-  GearPairSpec spec = standard_tips(split_path_pair());
-  spec.pinion.teeth = 24;
-  spec.wheel.teeth = 69;
-  spec.wheel.internal = true;
-  spec.pinion.profile_shift = 0.;
-  spec.wheel.profile_shift = 0.;
+  GearPairSpec spec = internal_24_69_pair();
   const double margin = 0.05 * mm;
   const double tip = clearing_ring_tip_diameter(spec, margin);
   EXPECT_LE(tip, 170. * mm);

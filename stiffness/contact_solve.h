@@ -1,0 +1,21 @@
+// The solve step every stiffness analysis shares: set up and solve its contact problem, then
+// record the problem's size, active-set iterations and times in the analysis' result.
+#pragma once
+
+#include "contact/contact_problem.h"
+
+namespace gearstiff::stiffness
+{
+// `Result` has the members n_dofs, active_set_iterations, setup_time and solve_time (s, wall;
+// the solve time counts the contact assembly and the linear solves).
+template <int dim, typename Result>
+void solve_contact_problem(contact::ContactProblem<dim>& problem, Result& result)
+{
+  problem.setup_system();
+  const contact::ContactResults<dim>& contact = problem.solve();
+  result.n_dofs = contact.n_dofs;
+  result.active_set_iterations = contact.active_set_iterations;
+  result.setup_time = contact.setup_time;
+  result.solve_time = contact.assembly_time + contact.solve_time;
+}
+} // namespace gearstiff::stiffness
