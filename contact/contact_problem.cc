@@ -1,6 +1,7 @@
 #include "contact/contact_problem.h"
 
 #include "errors/errors.h"
+#include "fem/parallel.h"
 #include "fem/stiffness_factorization.h"
 
 #include <Eigen/Dense>
@@ -860,6 +861,7 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
     unsigned int last_changes = 0;
     for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
     {
+      fem::interruption_point(); // another MPI rank of a sweep failed: stop here
       IterationRecord record;
       record.load_step = step;
       record.iteration = iteration;

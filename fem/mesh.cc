@@ -1,6 +1,7 @@
 #include "fem/mesh.h"
 
 #include "errors/errors.h"
+#include "fem/parallel.h"
 
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
@@ -50,6 +51,7 @@ template <int dim>
 PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation<dim>& tria,
                        const std::string& parameter)
 {
+  interruption_point(); // between meshing and assembly: another rank of a sweep may have failed
   if (!std::filesystem::is_regular_file(file_name))
     throw InputError(parameter, "mesh file '" + file_name + "' does not exist");
   Triangulation<dim> serial;

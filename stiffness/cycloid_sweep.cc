@@ -1,6 +1,7 @@
 #include "stiffness/cycloid_sweep.h"
 
 #include "errors/errors.h"
+#include "fem/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -192,7 +193,6 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
                     const std::function<void(const std::string&)>& progress)
 {
   const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-  const unsigned int ranks = Utilities::MPI::n_mpi_processes(communicator);
   if (cases.empty())
     return {};
   const unsigned int rollers = cases[0].scene.ring.rollers, pins = cases[0].scene.output_pins;
@@ -201,53 +201,29 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
     if (c.scene.ring.rollers != rollers || c.scene.output_pins != pins)
       throw InputError("Cycloid disc/rollers", "every case of a sweep needs the same drive");
   std::vector<double> rows(length * cases.size(), 0.);
-  // 0 ok, 1 InputError, 2 SolverFailure, 3 other: the smallest failing case's outcome wins.
-  int status = 0;
-  std::string first, second;
-  for (unsigned int k = rank; k < cases.size() && status == 0; k += ranks)
-  {
-    CycloidLoadSettings settings = cases[k];
-    settings.scene_file = scene_file_stem + "_" + std::to_string(k) + ".msh";
-    try
-    {
-      const CycloidLoadResult r = solve_cycloid_case(settings);
-      const std::vector<double> row = pack(r, length);
-      std::copy(row.begin(), row.end(), rows.begin() + k * length);
-      if (progress && rank == 0)
-        progress("case " + std::to_string(k + 1) + "/" + std::to_string(cases.size()) +
-                 ": P_max = " + std::to_string(r.max_roller_force) + " N, " +
-                 std::to_string(r.n_dofs) + " DoFs, " + std::to_string(r.total_time) +
-                 " s (scene " + std::to_string(r.scene_time) + " s, setup " +
-                 std::to_string(r.setup_time) + " s, solve " + std::to_string(r.solve_time) +
-                 " s)");
-    }
-    catch (const InputError& e)
-    {
-      status = 1, first = e.parameter(), second = e.reason();
-    }
-    catch (const SolverFailure& e)
-    {
-      status = 2, first = e.method(), second = e.reason();
-    }
-    catch (const std::exception& e)
-    {
-      status = 3, second = e.what();
-    }
-    std::filesystem::remove(settings.scene_file);
-  }
-  // The lowest failing rank's exception is thrown on every rank.
-  const int failing = Utilities::MPI::min(status != 0 ? int(rank) : int(ranks), communicator);
-  if (failing < int(ranks))
-  {
-    status = Utilities::MPI::broadcast(communicator, status, failing);
-    first = Utilities::MPI::broadcast(communicator, first, failing);
-    second = Utilities::MPI::broadcast(communicator, second, failing);
-    if (status == 1)
-      throw InputError(first, second);
-    if (status == 2)
-      throw SolverFailure(first, second);
-    throw std::runtime_error(second);
-  }
+  // A failure stops every rank soon (fem::distribute_items); the first failing case's error
+  // is thrown on every rank.
+  fem::distribute_items(
+      communicator, cases.size(),
+      [&](const unsigned int k)
+      {
+        CycloidLoadSettings settings = cases[k];
+        settings.scene_file = scene_file_stem + "_" + std::to_string(k) + ".msh";
+        CycloidLoadResult r;
+        const fem::Failure failure =
+            fem::catch_failure([&]() { r = solve_cycloid_case(settings); });
+        std::filesystem::remove(settings.scene_file);
+        failure.rethrow();
+        const std::vector<double> row = pack(r, length);
+        std::copy(row.begin(), row.end(), rows.begin() + k * length);
+        if (progress && rank == 0)
+          progress("case " + std::to_string(k + 1) + "/" + std::to_string(cases.size()) +
+                   ": P_max = " + std::to_string(r.max_roller_force) + " N, " +
+                   std::to_string(r.n_dofs) + " DoFs, " + std::to_string(r.total_time) +
+                   " s (scene " + std::to_string(r.scene_time) + " s, setup " +
+                   std::to_string(r.setup_time) + " s, solve " + std::to_string(r.solve_time) +
+                   " s)");
+      });
   Utilities::MPI::sum(rows, communicator, rows);
   std::vector<CycloidLoadResult> results;
   for (unsigned int k = 0; k < cases.size(); ++k)

@@ -60,11 +60,13 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
   return positions;
 }
 
-// One position of the sweep, solved serially; its scene file is removed whatever happens.
+// One position of the sweep, solved serially; its scene file is removed whatever happens, and
+// a failure's reason starts with `context`.
 template <int dim>
 GearMeshStiffnessResult solve_position(const GearMeshStiffnessSettings& settings,
                                        const double roll_angle, const std::string& suffix,
-                                       const std::string& scene_file_stem)
+                                       const std::string& scene_file_stem,
+                                       const std::string& context)
 {
   GearMeshStiffnessSettings local = settings;
   local.scene.position = geometry::PairPosition::roll_angle;
@@ -79,7 +81,7 @@ GearMeshStiffnessResult solve_position(const GearMeshStiffnessSettings& settings
         result = analysis.run();
       });
   std::filesystem::remove(local.scene_file);
-  failure.rethrow();
+  failure.rethrow(context);
   return result;
 }
 
@@ -97,36 +99,28 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
 
-  // Round-robin in rounds of one position per rank: neighbouring positions cost about the
-  // same, so each rank gets a fair share, and after every round the ranks agree whether one
-  // of them failed, so all stop within one position's time of the first failure (the first
-  // failing position, lowest index, decides the exception every rank throws).
+  // Positions round-robin over the ranks (neighbouring positions cost about the same, so each
+  // rank gets a fair share); a failure stops every rank within about one contact iteration
+  // (fem::distribute_items), and the first failing position decides what every rank throws.
   std::vector<std::pair<unsigned int, GearMeshStiffnessResult>> mine;
-  const unsigned int rounds = (n + n_ranks - 1) / n_ranks;
-  for (unsigned int round = 0; round < rounds; ++round)
-  {
-    const unsigned int i = round * n_ranks + rank;
-    fem::Failure failure;
-    if (i < n)
-      failure = fem::catch_failure(
-          [&]()
-          {
-            const GearMeshStiffnessResult r = solve_position<dim>(
-                settings, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem);
-            mine.emplace_back(i, r);
-            if (progress)
-              progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) +
-                       " (roll angle " + format(r.pinion_roll_angle * 180. / M_PI, 5) +
-                       "°): k = " + format(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
-                       std::to_string(r.loaded_pairs) + " pair(s), " + format(r.total_time, 3) +
-                       " s [rank 0: " + std::to_string(round + 1) + "/" +
-                       std::to_string((n - rank + n_ranks - 1) / n_ranks) + "]");
-          });
-    if (failure.failed())
-      failure.reason = "sweep position " + std::to_string(i + 1) + " (roll angle " +
-                       format(positions[i] / r_b1 * 180. / M_PI, 5) + "°): " + failure.reason;
-    fem::first_failure(mpi_communicator, failure, static_cast<int>(i)).rethrow();
-  }
+  const unsigned int my_share = (n - std::min(rank, n) + n_ranks - 1) / n_ranks;
+  fem::distribute_items(
+      mpi_communicator, n,
+      [&](const unsigned int i)
+      {
+        const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
+                                  format(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
+        const GearMeshStiffnessResult r = solve_position<dim>(
+            settings, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
+        mine.emplace_back(i, r);
+        if (progress)
+          progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
+                   format(r.pinion_roll_angle * 180. / M_PI, 5) +
+                   "°): k = " + format(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
+                   std::to_string(r.loaded_pairs) + " pair(s), " + format(r.total_time, 3) +
+                   " s [rank 0: " + std::to_string(mine.size()) + "/" + std::to_string(my_share) +
+                   "]");
+      });
 
   // Every rank receives every position's result.
   StiffnessSweepResult result;

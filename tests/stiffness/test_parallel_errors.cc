@@ -1,7 +1,9 @@
 // Errors and results across MPI ranks (fem/parallel.h), on 2 ranks: a failure of one rank is
 // thrown on every rank with its type, parameter or method and reason; the first failure by
 // order wins; results cross ranks through their `serialize` functions with every field intact;
-// a sweep whose positions are all refused stops every rank with the first position's error.
+// a sweep whose positions are all refused stops every rank with the first position's error;
+// in a distributed loop (fem::distribute_items) a rank that fails stops the others at their
+// next interruption point, and no notice is left over for the next loop.
 // Exact oracles: the values and texts put in on one rank must come out on the other.
 #include "errors/errors.h"
 #include "fem/parallel.h"
@@ -10,9 +12,11 @@
 
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
+#include <chrono>
 #include <deal.II/base/utilities.h>
 #include <gtest/gtest.h>
 #include <mpi.h>
+#include <thread>
 
 using namespace gearstiff;
 
@@ -21,6 +25,26 @@ namespace
 unsigned int rank()
 {
   return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+}
+
+// Long work that only an interruption point ends: polls for up to 120 s (a bound against a
+// hang, far beyond the notice's delivery; no timing is asserted), returns true when stopped.
+bool poll_until_stopped()
+{
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (std::chrono::steady_clock::now() < end)
+  {
+    try
+    {
+      fem::interruption_point();
+    }
+    catch (const fem::Stopped&)
+    {
+      return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
 }
 } // namespace
 
@@ -119,5 +143,87 @@ TEST(ParallelErrors, RefusedSweepStopsEveryRankWithTheFirstPosition)
     EXPECT_EQ(e.parameter(), "Mesh/contact size");
     EXPECT_NE(e.reason().find("sweep position 1 "), std::string::npos) << e.what();
     EXPECT_NE(e.reason().find("cells"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ParallelStop, FailureOfOneRankStopsTheOtherAtItsNextInterruptionPoint)
+{
+  // Six items: rank 0 takes 0, 2, 4 and rank 1 takes 1, 3, 5. Item 1 fails at once; item 0
+  // runs until it is told to stop. Nobody starts another item, and both ranks throw item 1's
+  // failure (the only real one: a stopped item is not a failure).
+  std::vector<unsigned int> started;
+  bool stopped = false;
+  try
+  {
+    fem::distribute_items(MPI_COMM_WORLD, 6,
+                          [&](const unsigned int i)
+                          {
+                            started.push_back(i);
+                            if (i == 1)
+                              throw SolverFailure("contact active set", "no convergence");
+                            stopped = poll_until_stopped();
+                            if (stopped)
+                              throw fem::Stopped();
+                          });
+    FAIL() << "no exception on rank " << rank();
+  }
+  catch (const SolverFailure& e)
+  {
+    EXPECT_EQ(e.method(), "contact active set");
+    EXPECT_EQ(e.reason(), "no convergence");
+  }
+  EXPECT_EQ(started, std::vector<unsigned int>{rank()});
+  EXPECT_EQ(stopped, rank() == 0);
+}
+
+TEST(ParallelStop, LowestFailingItemWinsAndTheNextLoopStartsClean)
+{
+  // Both ranks fail at once, so both post notices; the lower item (0, an InputError) wins.
+  EXPECT_THROW(fem::distribute_items(MPI_COMM_WORLD, 2,
+                                     [](const unsigned int i)
+                                     {
+                                       if (i == 0)
+                                         throw InputError("Stiffness/pinion torque", "first");
+                                       throw SolverFailure("contact active set", "second");
+                                     }),
+               InputError);
+  // Every notice was received in the loop above: the next loop sees none and runs every item,
+  // its interruption points included.
+  std::vector<unsigned int> done;
+  fem::distribute_items(MPI_COMM_WORLD, 5,
+                        [&](const unsigned int i)
+                        {
+                          fem::interruption_point();
+                          done.push_back(i);
+                        });
+  const auto all = dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, done);
+  EXPECT_EQ(all[0], (std::vector<unsigned int>{0, 2, 4}));
+  EXPECT_EQ(all[1], (std::vector<unsigned int>{1, 3}));
+}
+
+TEST(ParallelStop, InterruptionPointOutsideALoopDoesNothing)
+{
+  EXPECT_NO_THROW(fem::interruption_point());
+}
+
+TEST(ParallelStop, FailingSweepThrowsTheFirstFailingPositionOnEveryRank)
+{
+  // One active-set iteration cannot converge (the first one always changes the closed set):
+  // every position fails in its contact solve, rank 0 with position 1, rank 1 with position 2,
+  // and every rank throws position 1's SolverFailure (the command exits 3 with that one line).
+  stiffness::GearMeshStiffnessSettings settings;
+  settings.contact.max_iterations = 1;
+  stiffness::StiffnessSweepSpec spec;
+  spec.positions = 4;
+  try
+  {
+    stiffness::stiffness_sweep<2>(MPI_COMM_WORLD, settings, spec, stiffness_work_stem("stop"));
+    FAIL() << "no exception on rank " << rank();
+  }
+  catch (const SolverFailure& e)
+  {
+    EXPECT_EQ(e.method(), "contact active set");
+    EXPECT_EQ(e.reason().rfind("sweep position 1 (roll angle ", 0), 0u) << e.what();
+    EXPECT_NE(e.reason().find("no convergence within 1 iterations"), std::string::npos) << e.what();
   }
 }
