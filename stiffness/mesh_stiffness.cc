@@ -186,7 +186,12 @@ template <int dim>
 void GearMeshStiffness<dim>::solve()
 {
   problem->setup_system();
+  const bool warm = settings.warm_start && settings.contact.warm_start;
+  if (warm && !settings.warm_start->empty())
+    problem->start_from(*settings.warm_start);
   const contact::ContactResults<dim>& contact = problem->solve();
+  if (warm)
+    *settings.warm_start = problem->converged_zones();
   result.n_dofs = contact.n_dofs;
   result.active_set_iterations = contact.active_set_iterations;
   result.setup_time = contact.setup_time;

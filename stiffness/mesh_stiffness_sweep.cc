@@ -96,6 +96,9 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  // Each rank's positions start from the contact zone of its previous one.
+  GearMeshStiffnessSettings warm = settings;
+  warm.warm_start = std::make_shared<std::vector<contact::ContactZone>>();
 
   // Round-robin in rounds of one position per rank: neighbouring positions cost about the
   // same, so each rank gets a fair share, and after every round the ranks agree whether one
@@ -112,7 +115,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
           [&]()
           {
             const GearMeshStiffnessResult r = solve_position<dim>(
-                settings, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem);
+                warm, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem);
             mine.emplace_back(i, r);
             if (progress)
               progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) +
