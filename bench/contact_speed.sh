@@ -10,7 +10,11 @@
 #   gearstiff run (the whole chain) on 1 rank
 #   3D, Q1, 8 layers (187k DoFs) on 2 ranks: wall time and peak memory per rank
 #
+#   warm start (Contact/Warm start): active-set iterations summed over the 32-position sweep,
+#   each position started from its neighbour's zone against every position started cold
+#
 # usage: bench/contact_speed.sh [path/to/gearstiff] [--quick]   (--quick: one run each, no 3D)
+# Results with before/after figures: bench/contact_speed.md.
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
 quick=${2:-}
@@ -56,6 +60,34 @@ echo "| 32-position sweep, 2 ranks [s] | $s32_2 | (was 105-130) | |"
 echo "| 32-position sweep, 1 rank [s]; 2-rank speed-up | $s32_1 | | $(echo "scale=2; $s32_1 / $s32_2" | bc) |"
 echo "| 128-position sweep, 2 ranks [s]; cost / 32 positions | $s128_2 | | $(echo "scale=2; $s128_2 / $s32_2" | bc) |"
 echo "| gearstiff run, 1 rank [s] | $(median_seconds "$gearstiff" run) | (was 94) | |"
+
+# Σ of the per-position active-set iterations of a 32-position sweep (the JSON report's sweep
+# table, column "iterations").
+sweep_iterations() {
+  sweep 2 32 --json "$@" 2>/dev/null | python3 -c '
+import json, sys
+def find(node):
+    if isinstance(node, dict):
+        for value in node.values():
+            found = find(value)
+            if found is not None:
+                return found
+        if "columns" in node and "rows" in node:
+            columns = [c if isinstance(c, str) else c.get("name", "") for c in node["columns"]]
+            for k, name in enumerate(columns):
+                if "iteration" in name:
+                    return sum(row[k] for row in node["rows"])
+    elif isinstance(node, list):
+        for value in node:
+            found = find(value)
+            if found is not None:
+                return found
+    return None
+print(int(find(json.load(sys.stdin))))'
+}
+warm=$(sweep_iterations --set "Contact/Warm start=true")
+cold=$(sweep_iterations --set "Contact/Warm start=false")
+echo "| 32-position sweep, active-set iterations (Σ over positions), one run | $warm (warm start) | $cold (cold start) | $(echo "scale=2; $cold / $warm" | bc) |"
 
 if [ "$quick" != "--quick" ]; then
   log=$(mktemp)

@@ -32,6 +32,11 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
                     "mm, an initial overlap of the bodies beyond this is an input error");
   prm.declare_entry("Friction tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
                     "-, convergence of the slip forces relative to the largest normal force");
+  prm.declare_entry("Warm start", "true", Patterns::Bool(),
+                    "true: in a sweep, each position's active-set iteration starts from the "
+                    "contact zone its neighbour converged to (mapped by initial gap, as the "
+                    "meshes differ), and from the usual cold start should that fail; false: "
+                    "every position starts cold (same results, more iterations)");
   prm.declare_entry("Iteration solves", "auto",
                     Patterns::Selection("auto|Schur complement|full re-solve"),
                     "how each active-set iteration is solved: 'Schur complement' factorizes the "
@@ -48,6 +53,7 @@ void ContactParameters::parse_parameters(ParameterHandler& prm)
   search_distance = prm.get_double("Search distance") * 1e-3;
   overlap_tolerance = prm.get_double("Overlap tolerance") * 1e-3;
   friction_tolerance = prm.get_double("Friction tolerance");
+  warm_start = prm.get_bool("Warm start");
   const std::string solves = prm.get("Iteration solves");
   iteration_solves = solves == "Schur complement" ? IterationSolves::schur_complement
                      : solves == "full re-solve"  ? IterationSolves::full_resolve
@@ -198,13 +204,18 @@ void ContactProblem<dim>::setup_system()
     for (const auto& node : pair.nodes)
       smallest_gap = std::min(smallest_gap, node.initial_gap);
   const double closing_gap = std::max(touching, smallest_gap + touching);
+  cold_start.clear();
   for (auto& pair : pairs)
   {
     pair.memory.assign(pair.nodes.size(), NodeMemory<dim>());
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
       if (pair.nodes[k].initial_gap <= closing_gap)
         pair.memory[k].state = NodeState::slip;
+    cold_start.emplace_back();
+    for (const auto& memory : pair.memory)
+      cold_start.back().push_back(memory.state);
   }
+  warm_started = false;
   displacement.reinit(dof_handler.n_dofs());
   step_start.reinit(dof_handler.n_dofs());
   result = ContactResults<dim>();
@@ -426,121 +437,128 @@ void ContactProblem<dim>::complete_solution(Vector<double>& residual)
   result.right_hand_sides = c.factorization->n_solves();
 }
 
+// One term of a contact row or friction load: `coefficient` times the relative displacement
+// R_c of a node in component c (a row), or the force F_c on it (a friction load).
 template <int dim>
-void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRecord& record,
-                                                 Vector<double>& residual)
+struct ContactProblem<dim>::ContactTerm
 {
-  Timer timer(mpi_communicator, true);
+  unsigned int pair, node, component;
+  double coefficient;
+};
+
+// One closed-contact constraint row of the Schur complement: Σ terms = value.
+template <int dim>
+struct ContactProblem<dim>::ContactRow
+{
+  std::vector<ContactTerm> terms;
+  double value; // m
+};
+
+template <int dim>
+void ContactProblem<dim>::build_condensed(double load_factor)
+{
+  // Once: supports at unit load factor, hub torques as unit point loads, one factorization.
   const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
-  if (!condensed)
-  {
-    // Once: supports at unit load factor, hub torques as unit point loads, one factorization.
-    condensed = std::make_unique<Condensed>();
-    Condensed& c = *condensed;
-    c.supports = make_support_constraints(1.);
-    Vector<double> unit_loads(n_dofs);
-    for (const auto& support : supports)
-      if (support.hub)
-        support.hub->add_loads(unit_loads, 1.);
-    for (const auto& pair : pairs)
-      for (const auto& node : pair.nodes)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          c.dofs.push_back(node.node.dofs[d]);
-        for (const auto& master : node.masters)
-          for (unsigned int d = 0; d < dim; ++d)
-            c.dofs.push_back(master.node.dofs[d]);
-      }
-    std::sort(c.dofs.begin(), c.dofs.end());
-    c.dofs.erase(std::unique(c.dofs.begin(), c.dofs.end()), c.dofs.end());
-    const double step_factor = load_factor;
-    elastic.set_load_factor(1.);
-    c.factorization =
-        std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads, c.dofs);
-    // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
-    const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
-    elastic.set_load_factor(step_factor);
-    for (const auto& pair : pairs)
-    {
-      c.functionals.emplace_back();
-      for (const auto& node : pair.nodes)
-      {
-        std::array<typename Condensed::Functional, dim> functional;
-        for (unsigned int d = 0; d < dim; ++d)
-        {
-          functional[d].terms.emplace_back(c.position(node.node.dofs[d]), 1.);
-          for (const auto& master : node.masters)
-            functional[d].terms.emplace_back(c.position(master.node.dofs[d]), -master.weight);
-        }
-        c.functionals.back().push_back(functional);
-      }
-      c.slot.emplace_back(pair.nodes.size(), -1);
-    }
-    c.particular = c.at_dofs(c.factorization->particular_solution());
-    std::vector<bool> held(n_dofs, false);
-    for (const auto& line : c.supports.get_lines())
-    {
-      held[line.index] = true;
-      for (const auto& [master, weight] : line.entries)
-        held[master] = true;
-    }
-    for (const auto& pair : pairs)
-      for (const auto& node : pair.nodes)
-        for (unsigned int d = 0; d < dim; ++d)
-          c.slave_forces_exact = c.slave_forces_exact && !held[node.node.dofs[d]];
-    for (const auto& mode : c.factorization->free_modes())
-    {
-      c.modes.push_back(c.at_dofs(mode));
-      c.mode_loads.push_back(-(mode * unit_residual) + mode * unit_loads);
-    }
-    result.assembly_time += c.factorization->factorization_time();
-    result.schur_complement = true;
-  }
+  condensed = std::make_unique<Condensed>();
   Condensed& c = *condensed;
-
-  // Columns for the nodes closed for the first time, in one block of right-hand sides.
-  {
-    std::vector<fem::SparseLoad> loads;
-    std::vector<std::pair<unsigned int, unsigned int>> new_nodes;
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-      for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
-        if (pairs[p].memory[k].state != NodeState::open && c.slot[p][k] < 0)
-        {
-          new_nodes.emplace_back(p, k);
-          const SlaveNode<dim>& node = pairs[p].nodes[k];
-          for (unsigned int d = 0; d < dim; ++d)
-          {
-            fem::SparseLoad load{{node.node.dofs[d], 1.}};
-            for (const auto& master : node.masters)
-              load.emplace_back(master.node.dofs[d], -master.weight);
-            loads.push_back(std::move(load));
-          }
-        }
-    if (!loads.empty())
+  c.supports = make_support_constraints(1.);
+  Vector<double> unit_loads(n_dofs);
+  for (const auto& support : supports)
+    if (support.hub)
+      support.hub->add_loads(unit_loads, 1.);
+  for (const auto& pair : pairs)
+    for (const auto& node : pair.nodes)
     {
-      std::vector<std::vector<double>> columns = c.factorization->responses(loads, c.dofs);
-      for (unsigned int j = 0; j < new_nodes.size(); ++j)
-        c.slot[new_nodes[j].first][new_nodes[j].second] = c.columns.size() + j * dim;
-      for (auto& column : columns)
-        c.columns.push_back(std::move(column));
+      for (unsigned int d = 0; d < dim; ++d)
+        c.dofs.push_back(node.node.dofs[d]);
+      for (const auto& master : node.masters)
+        for (unsigned int d = 0; d < dim; ++d)
+          c.dofs.push_back(master.node.dofs[d]);
     }
+  std::sort(c.dofs.begin(), c.dofs.end());
+  c.dofs.erase(std::unique(c.dofs.begin(), c.dofs.end()), c.dofs.end());
+  elastic.set_load_factor(1.);
+  c.factorization =
+      std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads, c.dofs);
+  // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
+  const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
+  elastic.set_load_factor(load_factor);
+  for (const auto& pair : pairs)
+  {
+    c.functionals.emplace_back();
+    for (const auto& node : pair.nodes)
+    {
+      std::array<typename Condensed::Functional, dim> functional;
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        functional[d].terms.emplace_back(c.position(node.node.dofs[d]), 1.);
+        for (const auto& master : node.masters)
+          functional[d].terms.emplace_back(c.position(master.node.dofs[d]), -master.weight);
+      }
+      c.functionals.back().push_back(functional);
+    }
+    c.slot.emplace_back(pair.nodes.size(), -1);
   }
+  c.particular = c.at_dofs(c.factorization->particular_solution());
+  std::vector<bool> held(n_dofs, false);
+  for (const auto& line : c.supports.get_lines())
+  {
+    held[line.index] = true;
+    for (const auto& [master, weight] : line.entries)
+      held[master] = true;
+  }
+  for (const auto& pair : pairs)
+    for (const auto& node : pair.nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        c.slave_forces_exact = c.slave_forces_exact && !held[node.node.dofs[d]];
+  for (const auto& mode : c.factorization->free_modes())
+  {
+    c.modes.push_back(c.at_dofs(mode));
+    c.mode_loads.push_back(-(mode * unit_residual) + mode * unit_loads);
+  }
+  result.assembly_time += c.factorization->factorization_time();
+  result.schur_complement = true;
+}
 
+template <int dim>
+void ContactProblem<dim>::add_new_columns()
+{
+  // Columns for the nodes closed for the first time, in one block of right-hand sides.
+  Condensed& c = *condensed;
+  std::vector<fem::SparseLoad> loads;
+  std::vector<std::pair<unsigned int, unsigned int>> new_nodes;
+  for (unsigned int p = 0; p < pairs.size(); ++p)
+    for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+      if (pairs[p].memory[k].state != NodeState::open && c.slot[p][k] < 0)
+      {
+        new_nodes.emplace_back(p, k);
+        const SlaveNode<dim>& node = pairs[p].nodes[k];
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          fem::SparseLoad load{{node.node.dofs[d], 1.}};
+          for (const auto& master : node.masters)
+            load.emplace_back(master.node.dofs[d], -master.weight);
+          loads.push_back(std::move(load));
+        }
+      }
+  if (loads.empty())
+    return;
+  std::vector<std::vector<double>> columns = c.factorization->responses(loads, c.dofs);
+  for (unsigned int j = 0; j < new_nodes.size(); ++j)
+    c.slot[new_nodes[j].first][new_nodes[j].second] = c.columns.size() + j * dim;
+  for (auto& column : columns)
+    c.columns.push_back(std::move(column));
+}
+
+template <int dim>
+std::vector<typename ContactProblem<dim>::ContactRow> ContactProblem<dim>::contact_rows() const
+{
   // The contact rows G of this iteration as combinations of node columns, with their
   // right-hand sides; a DoF already held (by a support or an earlier row) keeps that hold, as in
   // make_constraints.
-  struct Term
-  {
-    unsigned int pair, node, component;
-    double coefficient;
-  };
-  struct Row
-  {
-    std::vector<Term> terms;
-    double value; // m
-  };
-  std::vector<Row> rows;
-  std::vector<bool> used(n_dofs, false);
+  const Condensed& c = *condensed;
+  std::vector<ContactRow> rows;
+  std::vector<bool> used(elastic.get_dof_handler().n_dofs(), false);
   for (unsigned int p = 0; p < pairs.size(); ++p)
     for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
     {
@@ -567,16 +585,21 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
         if (used[dof])
           continue;
         used[dof] = true;
-        Row row{{}, node.initial_gap};
+        ContactRow row{{}, node.initial_gap};
         for (unsigned int d = 0; d < dim; ++d)
           if (n[d] != 0.)
             row.terms.push_back({p, k, d, n[d]});
         rows.push_back(std::move(row));
       }
     }
+  return rows;
+}
 
+template <int dim>
+std::vector<typename ContactProblem<dim>::ContactTerm> ContactProblem<dim>::friction_terms() const
+{
   // Friction loads of the slipping nodes: F_c R_cᵀ, F = μ λ_n along the friction direction.
-  std::vector<Term> friction_terms;
+  std::vector<ContactTerm> terms;
   if (friction > 0.)
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
@@ -586,19 +609,30 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
                                        pairs[p].memory[k].friction_direction;
           for (unsigned int d = 0; d < dim; ++d)
             if (force[d] != 0.)
-              friction_terms.push_back({p, k, d, force[d]});
+              terms.push_back({p, k, d, force[d]});
         }
+  return terms;
+}
 
-  auto column = [&](const Term& t) -> const std::vector<double>&
+template <int dim>
+void ContactProblem<dim>::solve_contact_system(const std::vector<ContactRow>& rows,
+                                               const std::vector<ContactTerm>& friction_loads,
+                                               double load_factor,
+                                               std::vector<double>& multipliers_out,
+                                               std::vector<double>& amplitudes_out,
+                                               std::vector<double>& base) const
+{
+  const Condensed& c = *condensed;
+  auto column = [&](const ContactTerm& t) -> const std::vector<double>&
   { return c.columns[c.slot[t.pair][t.node] + t.component]; };
-  auto functional = [&](const Term& t) -> const typename Condensed::Functional&
+  auto functional = [&](const ContactTerm& t) -> const typename Condensed::Functional&
   { return c.functionals[t.pair][t.node][t.component]; };
 
   // u_base = s·u_p + P f_friction at the contact DoFs; Rᵀ f of the same loads.
-  std::vector<double> base = c.particular;
+  base = c.particular;
   for (double& v : base)
     v *= load_factor;
-  for (const Term& t : friction_terms)
+  for (const ContactTerm& t : friction_loads)
   {
     const std::vector<double>& y = column(t);
     for (unsigned int i = 0; i < base.size(); ++i)
@@ -609,7 +643,7 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
   for (unsigned int j = 0; j < n_modes; ++j)
   {
     mode_load[j] = load_factor * c.mode_loads[j];
-    for (const Term& t : friction_terms)
+    for (const ContactTerm& t : friction_loads)
       mode_load[j] += t.coefficient * functional(t)(c.modes[j]);
   }
 
@@ -621,18 +655,18 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
     for (unsigned int j = 0; j <= i; ++j)
     {
       double value = 0.;
-      for (const Term& a : rows[i].terms)
-        for (const Term& b : rows[j].terms)
+      for (const ContactTerm& a : rows[i].terms)
+        for (const ContactTerm& b : rows[j].terms)
           value += a.coefficient * b.coefficient * functional(a)(column(b));
       schur(i, j) = schur(j, i) = value;
     }
     rhs[i] = -rows[i].value;
-    for (const Term& a : rows[i].terms)
+    for (const ContactTerm& a : rows[i].terms)
       rhs[i] += a.coefficient * functional(a)(base);
     for (unsigned int j = 0; j < n_modes; ++j)
     {
       coupling(i, j) = 0.;
-      for (const Term& a : rows[i].terms)
+      for (const ContactTerm& a : rows[i].terms)
         coupling(i, j) += a.coefficient * functional(a)(c.modes[j]);
     }
   }
@@ -674,58 +708,82 @@ void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRe
   }
   else if (m > 0)
     multipliers = schur_factor.solve(rhs);
+  multipliers_out.assign(multipliers.data(), multipliers.data() + m);
+  amplitudes_out.assign(amplitudes.data(), amplitudes.data() + n_modes);
+}
 
+template <int dim>
+void ContactProblem<dim>::apply_contact_solution(const std::vector<ContactRow>& rows,
+                                                 const std::vector<ContactTerm>& friction_loads,
+                                                 const std::vector<double>& multipliers,
+                                                 const std::vector<double>& amplitudes,
+                                                 const std::vector<double>& base,
+                                                 double load_factor, Vector<double>& residual)
+{
+  Condensed& c = *condensed;
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
   // The contact loads f_friction − Gᵀλ (N) at the contact DoFs.
   Vector<double> load(n_dofs);
-  auto add_node_load = [&](const Term& t, double force)
+  auto add_node_load = [&](const ContactTerm& t, double force)
   {
     const SlaveNode<dim>& node = pairs[t.pair].nodes[t.node];
     load[node.node.dofs[t.component]] += force;
     for (const auto& master : node.masters)
       load[master.node.dofs[t.component]] -= master.weight * force;
   };
-  for (const Term& t : friction_terms)
+  for (const ContactTerm& t : friction_loads)
     add_node_load(t, t.coefficient);
-  for (unsigned int i = 0; i < m; ++i)
-    for (const Term& t : rows[i].terms)
+  for (unsigned int i = 0; i < rows.size(); ++i)
+    for (const ContactTerm& t : rows[i].terms)
       add_node_load(t, -multipliers[i] * t.coefficient);
   c.contact_load = load;
   c.load_factor = load_factor;
-  c.amplitudes.assign(amplitudes.data(), amplitudes.data() + n_modes);
-
-  if (c.slave_forces_exact)
+  c.amplitudes = amplitudes;
+  c.partial = true;
+  if (!c.slave_forces_exact)
   {
-    // The states need only the displacements at the contact DoFs, u_C = u_base − Σ λ_i P g_iᵀ +
-    // R α, and the forces at the slave DoFs, r = K u − f = f_friction − Gᵀλ there (stationarity
-    // of the Lagrangian at a DoF no support touches). The full field waits for convergence.
-    std::vector<double> contact_displacement = base;
-    for (unsigned int i = 0; i < m; ++i)
-      for (const Term& t : rows[i].terms)
-      {
-        const std::vector<double>& y = column(t);
-        const double factor = -multipliers[i] * t.coefficient;
-        for (unsigned int k = 0; k < y.size(); ++k)
-          contact_displacement[k] += factor * y[k];
-      }
-    for (unsigned int j = 0; j < n_modes; ++j)
-      for (unsigned int k = 0; k < c.dofs.size(); ++k)
-        contact_displacement[k] += amplitudes[j] * c.modes[j][k];
-    displacement.reinit(n_dofs);
-    for (unsigned int k = 0; k < c.dofs.size(); ++k)
-      displacement[c.dofs[k]] = contact_displacement[k];
-    residual = load;
-    c.partial = true;
-  }
-  else
-  {
-    c.partial = true;
     complete_solution(residual);
+    return;
   }
+  // The states need only the displacements at the contact DoFs, u_C = u_base − Σ λ_i P g_iᵀ +
+  // R α, and the forces at the slave DoFs, r = K u − f = f_friction − Gᵀλ there (stationarity
+  // of the Lagrangian at a DoF no support touches). The full field waits for convergence.
+  std::vector<double> contact_displacement = base;
+  for (unsigned int i = 0; i < rows.size(); ++i)
+    for (const ContactTerm& t : rows[i].terms)
+    {
+      const std::vector<double>& y = c.columns[c.slot[t.pair][t.node] + t.component];
+      const double factor = -multipliers[i] * t.coefficient;
+      for (unsigned int k = 0; k < y.size(); ++k)
+        contact_displacement[k] += factor * y[k];
+    }
+  for (unsigned int j = 0; j < amplitudes.size(); ++j)
+    for (unsigned int k = 0; k < c.dofs.size(); ++k)
+      contact_displacement[k] += amplitudes[j] * c.modes[j][k];
+  displacement.reinit(n_dofs);
+  for (unsigned int k = 0; k < c.dofs.size(); ++k)
+    displacement[c.dofs[k]] = contact_displacement[k];
+  residual = load;
+}
 
-  record.n_rows = m;
+template <int dim>
+void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRecord& record,
+                                                 Vector<double>& residual)
+{
+  Timer timer(mpi_communicator, true);
+  if (!condensed)
+    build_condensed(load_factor);
+  add_new_columns();
+  const std::vector<ContactRow> rows = contact_rows();
+  const std::vector<ContactTerm> friction_loads = friction_terms();
+  std::vector<double> multipliers, amplitudes, base;
+  solve_contact_system(rows, friction_loads, load_factor, multipliers, amplitudes, base);
+  apply_contact_solution(rows, friction_loads, multipliers, amplitudes, base, load_factor,
+                         residual);
+  record.n_rows = rows.size();
   record.time = timer.wall_time();
   result.solve_time += record.time;
-  result.right_hand_sides = c.factorization->n_solves();
+  result.right_hand_sides = condensed->factorization->n_solves();
 }
 
 template <int dim>
@@ -828,13 +886,90 @@ void ContactProblem<dim>::start_friction(const Vector<double>& residual)
 }
 
 template <int dim>
+void ContactProblem<dim>::start_from(const std::vector<ContactZone>& zones)
+{
+  for (auto& pair : pairs)
+  {
+    const auto zone = std::find_if(zones.begin(), zones.end(),
+                                   [&](const ContactZone& z) { return z.pair == pair.name; });
+    if (zone == zones.end())
+      continue;
+    double smallest_gap = std::numeric_limits<double>::max();
+    for (const auto& node : pair.nodes)
+      smallest_gap = std::min(smallest_gap, node.initial_gap);
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      pair.memory[k].state = pair.nodes[k].initial_gap - smallest_gap <= zone->gap_range
+                                 ? NodeState::slip
+                                 : NodeState::open;
+  }
+  warm_started = true;
+}
+
+template <int dim>
+std::vector<ContactZone> ContactProblem<dim>::converged_zones() const
+{
+  std::vector<ContactZone> zones;
+  for (const auto& pair : pairs)
+  {
+    double smallest_gap = std::numeric_limits<double>::max(), range = -1.;
+    for (const auto& node : pair.nodes)
+      smallest_gap = std::min(smallest_gap, node.initial_gap);
+    for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      if (pair.memory[k].state != NodeState::open)
+        range = std::max(range, pair.nodes[k].initial_gap - smallest_gap);
+    if (range >= 0.)
+      zones.push_back({pair.name, range});
+  }
+  return zones;
+}
+
+template <int dim>
+void ContactProblem<dim>::restore_cold_start()
+{
+  for (unsigned int p = 0; p < pairs.size(); ++p)
+    for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+    {
+      pairs[p].memory[k] = NodeMemory<dim>();
+      pairs[p].memory[k].state = cold_start[p][k];
+    }
+  displacement = 0.;
+  step_start = 0.;
+  warm_started = false;
+}
+
+template <int dim>
 const ContactResults<dim>& ContactProblem<dim>::solve()
 {
   Timer total(mpi_communicator, true);
+  Vector<double> residual;
+  // A warm start that fails (cycling, no convergence, a body left free) is no answer yet: the
+  // cold start follows, reusing the factorization and the columns computed so far.
+  result.warm_start = warm_started;
+  if (warm_started)
+    try
+    {
+      solve_load_steps(residual);
+    }
+    catch (const SolverFailure&)
+    {
+      result.warm_start = false;
+      restore_cold_start();
+      solve_load_steps(residual);
+    }
+  else
+    solve_load_steps(residual);
+  complete_solution(residual);
+  collect_results(residual);
+  result.total_time = total.wall_time() + result.setup_time;
+  return result;
+}
+
+template <int dim>
+void ContactProblem<dim>::solve_load_steps(Vector<double>& residual)
+{
   result.history.clear();
   result.active_set_iterations = 0;
   result.load_steps = parameters.load_steps;
-  const double mu = parameters.friction_coefficient;
   // With friction, the first load step starts frictionless: its converged contact zone and slip
   // give the frictional iteration a start close to its answer (at the gears' μ = 0.01 the slip
   // directions and zone hardly change), where starting every closed node in stick made the
@@ -848,87 +983,86 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
     for (const auto& memory : pair.memory)
       initial_states.back().push_back(memory.state);
   }
-  Vector<double> residual;
   for (unsigned int step = 1; step <= parameters.load_steps; ++step)
   {
-    const double load_factor = static_cast<double>(step) / parameters.load_steps;
-    elastic.set_load_factor(load_factor);
-    for (auto& pair : pairs)
-      for (auto& memory : pair.memory)
-        memory.reversals = 0;
-    CycleDetector visited;
-    bool converged = false;
-    unsigned int last_changes = 0;
-    for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
-    {
-      fem::interruption_point(); // another MPI rank of a sweep failed: stop here
-      IterationRecord record;
-      record.load_step = step;
-      record.iteration = iteration;
-      try
-      {
-        solve_iteration(load_factor, record, residual);
-      }
-      catch (const SolverFailure&)
-      {
-        if (friction > 0. || mu == 0.)
-          throw;
-        friction = mu;
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
-            pairs[p].memory[k].state =
-                initial_states[p][k] == NodeState::open ? NodeState::open : NodeState::stick;
-        visited.clear();
-        continue;
-      }
-      unsigned int changes = update_states(residual);
-      if (changes == 0 && friction == 0. && mu > 0.)
-      {
-        start_friction(residual);
-        changes = 1; // a new problem: not converged
-        visited.clear();
-      }
-      // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
-      const double friction_change =
-          changes == 0 ? std::max(update_friction_bounds(residual), direction_change) : 1.;
-      ++result.active_set_iterations;
-      record.n_changed = changes;
-      record.friction_change = changes == 0 ? friction_change : 0.;
-      std::vector<signed char> active_set;
-      for (const auto& pair : pairs)
-        for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-        {
-          record.n_closed += pair.memory[k].state != NodeState::open;
-          record.n_stick += pair.memory[k].state == NodeState::stick;
-          record.n_slip += pair.memory[k].state == NodeState::slip;
-          active_set.push_back(state_key(pair.memory[k], pair.nodes[k].tangents[0]));
-        }
-      result.history.push_back(record);
-      last_changes = changes;
-      if (changes == 0 && friction_change <= parameters.friction_tolerance)
-      {
-        converged = true;
-        break;
-      }
-      if (changes == 0) // new bounds: a new Tresca problem
-        visited.clear();
-      else if (visited.visit(active_set) >= 3)
-        throw SolverFailure("contact active set",
-                            "cycling: the same contact state recurred three times (load step " +
-                                std::to_string(step) + ", iteration " + std::to_string(iteration) +
-                                ", " + std::to_string(changes) + " nodes changing)");
-    }
-    if (!converged)
-      throw SolverFailure("contact active set",
-                          "no convergence within " + std::to_string(parameters.max_iterations) +
-                              " iterations at load step " + std::to_string(step) + " (" +
-                              std::to_string(last_changes) + " nodes still changing state)");
+    solve_load_step(step, initial_states, residual);
     step_start = displacement;
   }
-  complete_solution(residual);
-  collect_results(residual);
-  result.total_time = total.wall_time() + result.setup_time;
-  return result;
+}
+
+template <int dim>
+void ContactProblem<dim>::solve_load_step(unsigned int step,
+                                          const std::vector<std::vector<NodeState>>& initial_states,
+                                          Vector<double>& residual)
+{
+  const double mu = parameters.friction_coefficient;
+  const double load_factor = static_cast<double>(step) / parameters.load_steps;
+  elastic.set_load_factor(load_factor);
+  for (auto& pair : pairs)
+    for (auto& memory : pair.memory)
+      memory.reversals = 0;
+  CycleDetector visited;
+  unsigned int last_changes = 0;
+  for (unsigned int iteration = 1; iteration <= parameters.max_iterations; ++iteration)
+  {
+    fem::interruption_point(); // another MPI rank of a sweep failed: stop here
+    IterationRecord record;
+    record.load_step = step;
+    record.iteration = iteration;
+    try
+    {
+      solve_iteration(load_factor, record, residual);
+    }
+    catch (const SolverFailure&)
+    {
+      if (friction > 0. || mu == 0.)
+        throw;
+      friction = mu;
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+          pairs[p].memory[k].state =
+              initial_states[p][k] == NodeState::open ? NodeState::open : NodeState::stick;
+      visited.clear();
+      continue;
+    }
+    unsigned int changes = update_states(residual);
+    if (changes == 0 && friction == 0. && mu > 0.)
+    {
+      start_friction(residual);
+      changes = 1; // a new problem: not converged
+      visited.clear();
+    }
+    // Once the states of the Tresca problem settle, the bounds follow the new λ_n.
+    const double friction_change =
+        changes == 0 ? std::max(update_friction_bounds(residual), direction_change) : 1.;
+    ++result.active_set_iterations;
+    record.n_changed = changes;
+    record.friction_change = changes == 0 ? friction_change : 0.;
+    std::vector<signed char> active_set;
+    for (const auto& pair : pairs)
+      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      {
+        record.n_closed += pair.memory[k].state != NodeState::open;
+        record.n_stick += pair.memory[k].state == NodeState::stick;
+        record.n_slip += pair.memory[k].state == NodeState::slip;
+        active_set.push_back(state_key(pair.memory[k], pair.nodes[k].tangents[0]));
+      }
+    result.history.push_back(record);
+    last_changes = changes;
+    if (changes == 0 && friction_change <= parameters.friction_tolerance)
+      return;
+    if (changes == 0) // new bounds: a new Tresca problem
+      visited.clear();
+    else if (visited.visit(active_set) >= 3)
+      throw SolverFailure("contact active set",
+                          "cycling: the same contact state recurred three times (load step " +
+                              std::to_string(step) + ", iteration " + std::to_string(iteration) +
+                              ", " + std::to_string(changes) + " nodes changing)");
+  }
+  throw SolverFailure("contact active set",
+                      "no convergence within " + std::to_string(parameters.max_iterations) +
+                          " iterations at load step " + std::to_string(step) + " (" +
+                          std::to_string(last_changes) + " nodes still changing state)");
 }
 
 template <int dim>

@@ -65,6 +65,7 @@ struct ContactParameters
   double search_distance = 1e-3;    // m, slave points farther from the master are not paired
   double overlap_tolerance = 1e-6;  // m, initial overlap beyond this is an input error
   double friction_tolerance = 1e-8; // -, friction-force change relative to the normal force
+  bool warm_start = true; // analyses of similar scenes (sweeps) start from their neighbour's zone
 
   static void declare_parameters(dealii::ParameterHandler& prm);
   void parse_parameters(dealii::ParameterHandler& prm);
@@ -132,7 +133,20 @@ struct ContactResults
   double solve_time = 0.;            // s, summed over iterations
   double total_time = 0.;            // s
   bool schur_complement = false;     // the iterations solved the contact Schur complement
+  bool warm_start = false;           // started from a given zone (false: cold, or it failed)
   unsigned int right_hand_sides = 0; // -, solves with the factorization (Schur complement)
+};
+
+// A converged contact zone to start another analysis of a similar scene from (the
+// neighbouring position of a sweep). The meshes of such scenes differ, so the zone is kept by
+// geometry, not by node: per pair (by name), the largest initial gap of its closed nodes above
+// the pair's smallest initial gap. Near a smooth first touch the closed zone is where the
+// initial gap stays below a level (exactly so for Hertz's parabolic gap), and that level moves
+// little between neighbouring positions even where the zone itself moves along the surface.
+struct ContactZone
+{
+  std::string pair;
+  double gap_range = 0.; // m, closed nodes: initial gap − smallest initial gap of the pair
 };
 
 template <int dim>
@@ -161,8 +175,13 @@ public:
   // DoFs, stiffness, supports and the mortar coupling; InputError when a pair has no
   // candidates or the bodies overlap beyond the tolerance.
   void setup_system();
+  // After setup_system(): the pairs named in `zones` start with the nodes within their gap
+  // range closed (others as usual). Should the warm start fail, solve() starts cold.
+  void start_from(const std::vector<ContactZone>& zones);
   // The load steps with their active-set iterations.
   const ContactResults<dim>& solve();
+  // The converged zone of every pair with closed nodes, to start a neighbouring analysis from.
+  std::vector<ContactZone> converged_zones() const;
   // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
   // state. Returns the file names written into `directory`.
   std::vector<std::string> output_results(const std::string& directory,
@@ -196,6 +215,13 @@ private:
 
   struct Condensed; // the factorization, column cache and contact DoFs of the Schur method
 
+  // The load steps from the current states; SolverFailure when one does not converge.
+  void solve_load_steps(dealii::Vector<double>& residual);
+  void solve_load_step(unsigned int step, const std::vector<std::vector<NodeState>>& initial_states,
+                       dealii::Vector<double>& residual);
+  // Back to the states of setup_system(), no displacement, no friction history.
+  void restore_cold_start();
+
   dealii::AffineConstraints<double> make_constraints(double load_factor) const;
   void add_support_constraints(dealii::AffineConstraints<double>& constraints,
                                double load_factor) const;
@@ -207,6 +233,28 @@ private:
   void solve_iteration(double load_factor, IterationRecord& record,
                        dealii::Vector<double>& residual);
   void solve_schur_complement(double load_factor, IterationRecord& record,
+                              dealii::Vector<double>& residual);
+  // The steps of solve_schur_complement.
+  struct ContactTerm; // coefficient × a node's relative displacement (row) or force (friction)
+  struct ContactRow;  // one closed-contact constraint row
+  // Once per solve(): supports, the one factorization, the contact DoFs and functionals.
+  void build_condensed(double load_factor);
+  // The columns P R_cᵀ of the nodes closed for the first time.
+  void add_new_columns();
+  std::vector<ContactRow> contact_rows() const;
+  std::vector<ContactTerm> friction_terms() const;
+  // The multipliers λ (N) of `rows` and the rigid amplitudes α, and u_base (m) at the contact
+  // DoFs: SolverFailure when the rows are dependent or leave a body free.
+  void solve_contact_system(const std::vector<ContactRow>& rows,
+                            const std::vector<ContactTerm>& friction_loads, double load_factor,
+                            std::vector<double>& multipliers, std::vector<double>& amplitudes,
+                            std::vector<double>& base) const;
+  // `displacement` (at the contact DoFs, or complete) and `residual` from λ and α.
+  void apply_contact_solution(const std::vector<ContactRow>& rows,
+                              const std::vector<ContactTerm>& friction_loads,
+                              const std::vector<double>& multipliers,
+                              const std::vector<double>& amplitudes,
+                              const std::vector<double>& base, double load_factor,
                               dealii::Vector<double>& residual);
   // The whole displacement field and residual of the converged iteration.
   void complete_solution(dealii::Vector<double>& residual);
@@ -247,6 +295,8 @@ private:
   // force (3D: slip directions converge as a fixed point with the bounds).
   double direction_change = 0.;
   ContactResults<dim> result;
-  std::unique_ptr<Condensed> condensed; // owned; built by the first Schur iteration
+  std::vector<std::vector<NodeState>> cold_start; // [pair][node], the initial states
+  bool warm_started = false;                      // start_from() set the states
+  std::unique_ptr<Condensed> condensed;           // owned; built by the first Schur iteration
 };
 } // namespace gearstiff::contact

@@ -243,56 +243,95 @@ struct NodeAccumulator
   std::vector<double> normal;                        // ∫ N_s n
   std::map<types::global_dof_index, double> masters; // ∫ Φ_s N_m
 };
-} // namespace
 
+// The master faces near a slave face: the faces are sorted along the coordinate axis in which
+// their centres spread most, so a slave face's candidates lie in one window of that order
+// (binary search), and only the faces in it are tested by their bounding spheres. Candidates
+// come out in the master faces' own order, as a brute-force test would list them.
 template <int dim>
-std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
-                                            const std::vector<types::boundary_id>& slave_ids,
-                                            const std::vector<types::boundary_id>& master_ids,
-                                            double search_distance, double depth)
+class MasterSearch
 {
-  const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const FiniteElement<dim>& base = fe.base_element(0);
-  const MappingQ<dim> mapping(1);
-  const std::vector<SurfaceFace<dim>> slaves = collect_faces(dof_handler, slave_ids);
-  const std::vector<SurfaceFace<dim>> masters = collect_faces(dof_handler, master_ids);
-
-  // A face-boundary part used by one master face only is an end (2D) or rim (3D) of the
-  // master surface: a projection clamped there falls beyond the surface.
-  std::map<std::vector<unsigned int>, unsigned int> part_count;
-  for (const auto& m : masters)
-    for (const auto& part : face_boundary_parts(m))
-      ++part_count[part];
-
-  std::map<types::global_dof_index, NodeAccumulator> accumulators;
-  std::map<types::global_dof_index, fem::Node<dim>> nodes;
-  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-  std::vector<unsigned int> clamped;
-
-  for (const auto& slave : slaves)
+public:
+  MasterSearch(const std::vector<SurfaceFace<dim>>& masters, double search_distance)
+      : masters(masters), search_distance(search_distance)
   {
-    std::vector<unsigned int> candidates;
+    if (masters.empty())
+      return;
+    Point<dim> low = masters.front().centre, high = low;
+    for (const auto& face : masters)
+    {
+      largest_radius = std::max(largest_radius, face.radius);
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        low[c] = std::min(low[c], face.centre[c]);
+        high[c] = std::max(high[c], face.centre[c]);
+      }
+    }
+    for (unsigned int c = 1; c < dim; ++c)
+      if (high[c] - low[c] > high[axis] - low[axis])
+        axis = c;
     for (unsigned int m = 0; m < masters.size(); ++m)
-      if (slave.centre.distance(masters[m].centre) <=
-          slave.radius + masters[m].radius + search_distance)
-        candidates.push_back(m);
+      order.emplace_back(masters[m].centre[axis], m);
+    std::sort(order.begin(), order.end());
+  }
 
-    const Quadrature<dim - 1> quadrature =
-        slave_face_quadrature(slave, masters, candidates, fe.degree);
-    slave.cell->get_dof_indices(dofs);
-    std::vector<unsigned int> face_nodes; // base-element indices
-    for (unsigned int i = 0; i < base.n_dofs_per_cell(); ++i)
-      if (base.has_support_on_face(i, slave.face_no))
-        face_nodes.push_back(i);
-    const unsigned int n = face_nodes.size();
+  std::vector<unsigned int> candidates(const SurfaceFace<dim>& slave) const
+  {
+    const double reach = slave.radius + largest_radius + search_distance;
+    const auto first = std::lower_bound(order.begin(), order.end(),
+                                        std::make_pair(slave.centre[axis] - reach, 0u));
+    std::vector<unsigned int> found;
+    for (auto it = first; it != order.end() && it->first <= slave.centre[axis] + reach; ++it)
+      if (slave.centre.distance(masters[it->second].centre) <=
+          slave.radius + masters[it->second].radius + search_distance)
+        found.push_back(it->second);
+    std::sort(found.begin(), found.end());
+    return found;
+  }
 
-    // Slave shape values at the quadrature points, the face mass matrix and D.
-    std::vector<std::vector<double>> shape(quadrature.size(), std::vector<double>(n));
-    std::vector<double> JxW(quadrature.size());
-    std::vector<Tensor<1, dim>> normals(quadrature.size());
-    std::vector<Point<dim>> positions(quadrature.size());
-    FullMatrix<double> mass(n, n), dual(n, n);
-    std::vector<double> shape_integral(n, 0.);
+private:
+  const std::vector<SurfaceFace<dim>>& masters;
+  double search_distance;                             // m
+  double largest_radius = 0.;                         // m, of the master faces' bounding spheres
+  unsigned int axis = 0;                              // sorting coordinate
+  std::vector<std::pair<double, unsigned int>> order; // (centre coordinate, face)
+};
+
+// Base-element indices of the nodes on a face.
+template <int dim>
+std::vector<unsigned int> face_node_indices(const FiniteElement<dim>& base, unsigned int face_no)
+{
+  std::vector<unsigned int> indices;
+  for (unsigned int i = 0; i < base.n_dofs_per_cell(); ++i)
+    if (base.has_support_on_face(i, face_no))
+      indices.push_back(i);
+  return indices;
+}
+
+// A slave face at its quadrature points: the shape values of its nodes, the surface measure,
+// normal and position, and the dual basis coefficients (Φ_i = Σ_j dual(i,j) N_j).
+template <int dim>
+struct SlaveFaceValues
+{
+  std::vector<unsigned int> node_indices; // base-element indices of the face's nodes
+  std::vector<std::vector<double>> shape;
+  std::vector<double> JxW;
+  std::vector<Tensor<1, dim>> normals;
+  std::vector<Point<dim>> positions;  // m
+  std::vector<double> shape_integral; // ∫ N_i
+  FullMatrix<double> dual;
+
+  SlaveFaceValues(const SurfaceFace<dim>& slave, const FiniteElement<dim>& base,
+                  const Quadrature<dim - 1>& quadrature)
+  {
+    node_indices = face_node_indices(base, slave.face_no);
+    const unsigned int n = node_indices.size();
+    shape.assign(quadrature.size(), std::vector<double>(n));
+    JxW.resize(quadrature.size());
+    normals.resize(quadrature.size());
+    positions.resize(quadrature.size());
+    shape_integral.assign(n, 0.);
+    FullMatrix<double> mass(n, n);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
     {
       const auto [measure, normal] = face_measure(slave, quadrature.point(q));
@@ -301,7 +340,7 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
       positions[q] = interpolate<dim>(slave.vertices, quadrature.point(q));
       const Point<dim> unit = interpolate<dim>(slave.unit_vertices, quadrature.point(q));
       for (unsigned int i = 0; i < n; ++i)
-        shape[q][i] = base.shape_value(face_nodes[i], unit);
+        shape[q][i] = base.shape_value(node_indices[i], unit);
       for (unsigned int i = 0; i < n; ++i)
       {
         shape_integral[i] += shape[q][i] * JxW[q];
@@ -312,126 +351,225 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
     // Dual basis Φ_i = Σ_j A_ij N_j with A = D M⁻¹ (biorthogonality ∫Φ_i N_j = δ_ij ∫N_i).
     FullMatrix<double> inverse(n, n);
     inverse.invert(mass);
+    dual.reinit(n, n);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         dual(i, j) = shape_integral[i] * inverse(i, j);
+  }
 
-    std::vector<types::global_dof_index> face_node_dof(n);
-    for (unsigned int i = 0; i < n; ++i)
+  // Φ_i at quadrature point q.
+  std::vector<double> dual_values(unsigned int q) const
+  {
+    std::vector<double> phi(node_indices.size(), 0.);
+    for (unsigned int i = 0; i < phi.size(); ++i)
+      for (unsigned int j = 0; j < phi.size(); ++j)
+        phi[i] += dual(i, j) * shape[q][j];
+    return phi;
+  }
+};
+
+// The closest point to p on the candidate master faces; `beyond_surface` when it was clamped to
+// an end (2D) or rim (3D) of the master surface, i.e. to a face-boundary part that only one
+// master face uses (`part_count`).
+template <int dim>
+Projection project(const Point<dim>& p, const std::vector<SurfaceFace<dim>>& masters,
+                   const std::vector<unsigned int>& candidates,
+                   const std::map<std::vector<unsigned int>, unsigned int>& part_count,
+                   Point<dim>& best_point)
+{
+  Projection best;
+  std::vector<unsigned int> clamped;
+  for (const unsigned int m : candidates)
+  {
+    const Point<dim - 1> xi = closest_point(masters[m], p, clamped);
+    const Point<dim> x = interpolate<dim>(masters[m].vertices, xi);
+    const double distance = x.distance(p);
+    if (distance < best.distance)
     {
-      fem::Node<dim> node;
-      for (unsigned int c = 0; c < dim; ++c)
-        node.dofs[c] = dofs[fe.component_to_system_index(c, face_nodes[i])];
-      node.position = mapping.transform_unit_to_real_cell(
-          slave.cell, base.get_unit_support_points()[face_nodes[i]]);
-      face_node_dof[i] = node.dofs[0];
-      nodes.emplace(node.dofs[0], node);
-      auto& acc = accumulators[node.dofs[0]];
-      acc.offset.resize(dim, 0.);
-      acc.normal.resize(dim, 0.);
-      acc.full_weight += shape_integral[i];
+      best.found = true;
+      best.face = m;
+      best.distance = distance;
+      best_point = x;
+      best.beyond_surface = false;
+      const auto parts = face_boundary_parts(masters[m]);
+      for (const unsigned int k : clamped)
+        if (part_count.at(parts[k]) == 1)
+          best.beyond_surface = true;
     }
+  }
+  return best;
+}
 
-    std::vector<types::global_dof_index> master_dofs(fe.n_dofs_per_cell());
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
+// The nodes of a face (base-element indices `indices`), with their positions.
+template <int dim>
+std::vector<fem::Node<dim>> face_nodes(const SurfaceFace<dim>& face,
+                                       const std::vector<unsigned int>& indices,
+                                       const Mapping<dim>& mapping)
+{
+  const FiniteElement<dim>& fe = face.cell->get_fe();
+  const FiniteElement<dim>& base = fe.base_element(0);
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  face.cell->get_dof_indices(dofs);
+  std::vector<fem::Node<dim>> nodes;
+  for (const unsigned int k : indices)
+  {
+    fem::Node<dim> node;
+    for (unsigned int c = 0; c < dim; ++c)
+      node.dofs[c] = dofs[fe.component_to_system_index(c, k)];
+    node.position =
+        mapping.transform_unit_to_real_cell(face.cell, base.get_unit_support_points()[k]);
+    nodes.push_back(node);
+  }
+  return nodes;
+}
+
+// What the mortar integrals accumulate, per slave node, over every slave face.
+template <int dim>
+struct MortarIntegrals
+{
+  explicit MortarIntegrals(const std::vector<SurfaceFace<dim>>& masters)
+      : masters(masters), master_nodes(masters.size())
+  {
+  }
+
+  const MappingQ<dim> mapping{1};
+  const std::vector<SurfaceFace<dim>>& masters;
+  std::map<types::global_dof_index, NodeAccumulator> accumulators; // by the node's x DoF
+  std::map<types::global_dof_index, fem::Node<dim>> nodes;         // slave and master nodes
+  // Per master face, once paired: its base-element node indices and nodes.
+  std::vector<std::pair<std::vector<unsigned int>, std::vector<fem::Node<dim>>>> master_nodes;
+
+  // The accumulator of a slave node (created empty).
+  NodeAccumulator& node(const fem::Node<dim>& node)
+  {
+    nodes.emplace(node.dofs[0], node);
+    NodeAccumulator& acc = accumulators[node.dofs[0]];
+    acc.offset.resize(dim, 0.);
+    acc.normal.resize(dim, 0.);
+    return acc;
+  }
+
+  // One slave quadrature point paired with the master point x̄ on master face `m`: D, the
+  // offset and M_sm of every slave node of the face.
+  void add_pairing(const std::vector<fem::Node<dim>>& slave_nodes, const std::vector<double>& phi,
+                   double JxW, const Point<dim>& position, unsigned int m,
+                   const Point<dim>& master_point)
+  {
+    const SurfaceFace<dim>& master = masters[m];
+    const FiniteElement<dim>& base = master.cell->get_fe().base_element(0);
+    const Point<dim> unit = mapping.transform_real_to_unit_cell(master.cell, master_point);
+    for (unsigned int i = 0; i < slave_nodes.size(); ++i)
     {
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int c = 0; c < dim; ++c)
-          accumulators[face_node_dof[i]].normal[c] += shape[q][i] * normals[q][c] * JxW[q];
+      NodeAccumulator& acc = accumulators[slave_nodes[i].dofs[0]];
+      acc.paired_weight += phi[i] * JxW;
+      for (unsigned int c = 0; c < dim; ++c)
+        acc.offset[c] += phi[i] * (master_point[c] - position[c]) * JxW;
+    }
+    auto& [indices, face] = master_nodes[m];
+    if (face.empty())
+    {
+      indices = face_node_indices(base, master.face_no);
+      face = face_nodes(master, indices, mapping);
+      for (const auto& node : face)
+        nodes.emplace(node.dofs[0], node);
+    }
+    for (unsigned int k = 0; k < face.size(); ++k)
+    {
+      const double value = base.shape_value(indices[k], unit);
+      for (unsigned int i = 0; i < slave_nodes.size(); ++i)
+        accumulators[slave_nodes[i].dofs[0]].masters[face[k].dofs[0]] += phi[i] * value * JxW;
+    }
+  }
+};
 
-      Projection best;
-      Point<dim> best_point;
-      for (const unsigned int m : candidates)
-      {
-        const Point<dim - 1> xi = closest_point(masters[m], positions[q], clamped);
-        const Point<dim> x = interpolate<dim>(masters[m].vertices, xi);
-        const double distance = x.distance(positions[q]);
-        if (distance < best.distance)
-        {
-          best.found = true;
-          best.face = m;
-          best.distance = distance;
-          best_point = x;
-          best.beyond_surface = false;
-          const auto parts = face_boundary_parts(masters[m]);
-          for (const unsigned int k : clamped)
-            if (part_count[parts[k]] == 1)
-              best.beyond_surface = true;
-        }
-      }
+// The slave node's constraint data from its accumulated integrals.
+template <int dim>
+SlaveNode<dim> make_slave_node(const fem::Node<dim>& node, const NodeAccumulator& acc,
+                               const std::map<types::global_dof_index, fem::Node<dim>>& nodes,
+                               double depth)
+{
+  SlaveNode<dim> slave;
+  slave.node = node;
+  for (unsigned int c = 0; c < dim; ++c)
+  {
+    slave.normal[c] = acc.normal[c];
+    slave.initial_offset[c] = acc.offset[c] / acc.paired_weight;
+  }
+  slave.normal /= slave.normal.norm();
+  if constexpr (dim == 2)
+    slave.tangents = {Tensor<1, 2>({-slave.normal[1], slave.normal[0]})};
+  else
+  {
+    unsigned int least = 0;
+    for (unsigned int c = 1; c < 3; ++c)
+      if (std::abs(slave.normal[c]) < std::abs(slave.normal[least]))
+        least = c;
+    Tensor<1, 3> axis;
+    axis[least] = 1.;
+    Tensor<1, 3> t1 = cross_product_3d(axis, slave.normal);
+    t1 /= t1.norm();
+    slave.tangents = {t1, cross_product_3d(slave.normal, t1)};
+  }
+  slave.area = acc.paired_weight * depth;
+  slave.initial_gap = slave.normal * slave.initial_offset;
+  for (const auto& [master_dof, weight] : acc.masters)
+    if (weight != 0.)
+      slave.masters.push_back({nodes.at(master_dof), weight / acc.paired_weight});
+  return slave;
+}
+} // namespace
+
+template <int dim>
+std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
+                                            const std::vector<types::boundary_id>& slave_ids,
+                                            const std::vector<types::boundary_id>& master_ids,
+                                            double search_distance, double depth)
+{
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  const std::vector<SurfaceFace<dim>> slaves = collect_faces(dof_handler, slave_ids);
+  const std::vector<SurfaceFace<dim>> masters = collect_faces(dof_handler, master_ids);
+  const MasterSearch<dim> search(masters, search_distance);
+
+  // A face-boundary part used by one master face only is an end (2D) or rim (3D) of the
+  // master surface: a projection clamped there falls beyond the surface.
+  std::map<std::vector<unsigned int>, unsigned int> part_count;
+  for (const auto& m : masters)
+    for (const auto& part : face_boundary_parts(m))
+      ++part_count[part];
+
+  MortarIntegrals<dim> integrals(masters);
+  for (const auto& slave : slaves)
+  {
+    const std::vector<unsigned int> candidates = search.candidates(slave);
+    const SlaveFaceValues<dim> values(slave, fe.base_element(0),
+                                      slave_face_quadrature(slave, masters, candidates, fe.degree));
+    const std::vector<fem::Node<dim>> nodes =
+        face_nodes(slave, values.node_indices, integrals.mapping);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      integrals.node(nodes[i]).full_weight += values.shape_integral[i];
+
+    for (unsigned int q = 0; q < values.JxW.size(); ++q)
+    {
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        for (unsigned int c = 0; c < dim; ++c)
+          integrals.accumulators[nodes[i].dofs[0]].normal[c] +=
+              values.shape[q][i] * values.normals[q][c] * values.JxW[q];
+      Point<dim> master_point;
+      const Projection best =
+          project(values.positions[q], masters, candidates, part_count, master_point);
       if (!best.found || best.beyond_surface || best.distance > search_distance)
         continue;
-
-      const SurfaceFace<dim>& master = masters[best.face];
-      const Point<dim> unit = mapping.transform_real_to_unit_cell(master.cell, best_point);
-      master.cell->get_dof_indices(master_dofs);
-      std::vector<double> phi(n, 0.);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < n; ++j)
-          phi[i] += dual(i, j) * shape[q][j];
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        auto& acc = accumulators[face_node_dof[i]];
-        acc.paired_weight += phi[i] * JxW[q];
-        for (unsigned int c = 0; c < dim; ++c)
-          acc.offset[c] += phi[i] * (best_point[c] - positions[q][c]) * JxW[q];
-      }
-      for (unsigned int k = 0; k < base.n_dofs_per_cell(); ++k)
-      {
-        if (!base.has_support_on_face(k, master.face_no))
-          continue;
-        const double value = base.shape_value(k, unit);
-        fem::Node<dim> node;
-        for (unsigned int c = 0; c < dim; ++c)
-          node.dofs[c] = master_dofs[fe.component_to_system_index(c, k)];
-        if (nodes.count(node.dofs[0]) == 0)
-        {
-          node.position =
-              mapping.transform_unit_to_real_cell(master.cell, base.get_unit_support_points()[k]);
-          nodes.emplace(node.dofs[0], node);
-        }
-        for (unsigned int i = 0; i < n; ++i)
-          accumulators[face_node_dof[i]].masters[node.dofs[0]] += phi[i] * value * JxW[q];
-      }
+      integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q], values.positions[q],
+                            best.face, master_point);
     }
   }
 
   std::vector<SlaveNode<dim>> result;
-  for (const auto& [dof, acc] : accumulators)
-  {
+  for (const auto& [dof, acc] : integrals.accumulators)
     // A node whose dual support is less than half paired lies at or beyond the end of the
     // master surface; its weights M/D would be ill-conditioned, so it is not coupled.
-    if (acc.paired_weight < 0.5 * acc.full_weight)
-      continue;
-    SlaveNode<dim> slave;
-    slave.node = nodes.at(dof);
-    for (unsigned int c = 0; c < dim; ++c)
-    {
-      slave.normal[c] = acc.normal[c];
-      slave.initial_offset[c] = acc.offset[c] / acc.paired_weight;
-    }
-    slave.normal /= slave.normal.norm();
-    if constexpr (dim == 2)
-      slave.tangents = {Tensor<1, 2>({-slave.normal[1], slave.normal[0]})};
-    else
-    {
-      unsigned int least = 0;
-      for (unsigned int c = 1; c < 3; ++c)
-        if (std::abs(slave.normal[c]) < std::abs(slave.normal[least]))
-          least = c;
-      Tensor<1, 3> axis;
-      axis[least] = 1.;
-      Tensor<1, 3> t1 = cross_product_3d(axis, slave.normal);
-      t1 /= t1.norm();
-      slave.tangents = {t1, cross_product_3d(slave.normal, t1)};
-    }
-    slave.area = acc.paired_weight * depth;
-    slave.initial_gap = slave.normal * slave.initial_offset;
-    for (const auto& [master_dof, weight] : acc.masters)
-      if (weight != 0.)
-        slave.masters.push_back({nodes.at(master_dof), weight / acc.paired_weight});
-    result.push_back(slave);
-  }
+    if (acc.paired_weight >= 0.5 * acc.full_weight)
+      result.push_back(make_slave_node(integrals.nodes.at(dof), acc, integrals.nodes, depth));
   return result;
 }
 

@@ -68,14 +68,22 @@ struct ElasticSystem<dim>::Implementation
   FESystem<dim> fe;
   MappingQ<dim> mapping;
   IndexSet locally_owned;
-  PETScWrappers::MPI::SparseMatrix unconstrained_matrix; // K
-  PETScWrappers::MPI::Vector unconstrained_rhs;          // f
-  std::vector<types::material_id> dof_body;              // material id of each DoF's body
-  std::vector<unsigned int> dof_component;               // 0..dim-1
+  std::vector<types::material_id> dof_body; // material id of each DoF's body
+  std::vector<unsigned int> dof_component;  // 0..dim-1
 
-  // Cell stiffness and traction loads of the locally owned cells, condensed with
-  // `constraints` into matrix and rhs (not compressed).
-  void assemble(const ElasticSystem<dim>& system, const AffineConstraints<double>& constraints,
+  // The element work, done once by setup_system(): for every locally owned cell (in the
+  // iteration order of the DoF handler) its DoF indices, its stiffness matrix (N/m, row-major)
+  // and its traction load at unit load factor (N). Every condensed system and every residual
+  // is built from these, so no cell is integrated twice.
+  std::vector<types::global_dof_index> cell_dofs;
+  std::vector<double> cell_matrices;
+  std::vector<double> cell_loads;
+
+  // Integrates the stiffness and tractions of the locally owned cells into the cache.
+  void integrate_cells(const ElasticSystem<dim>& system);
+  // The cached cells condensed with `constraints` into matrix and rhs (loads times
+  // `load_factor`; not compressed).
+  void assemble(const AffineConstraints<double>& constraints, double load_factor,
                 PETScWrappers::MPI::SparseMatrix& matrix, PETScWrappers::MPI::Vector& rhs) const;
 };
 
@@ -114,19 +122,19 @@ void cell_stiffness(const FEValues<dim>& fe_values, double lambda, double mu, do
 } // namespace
 
 template <int dim>
-void ElasticSystem<dim>::Implementation::assemble(const ElasticSystem<dim>& system,
-                                                  const AffineConstraints<double>& constraints,
-                                                  PETScWrappers::MPI::SparseMatrix& matrix,
-                                                  PETScWrappers::MPI::Vector& rhs) const
+void ElasticSystem<dim>::Implementation::integrate_cells(const ElasticSystem<dim>& system)
 {
   const QGauss<dim> quadrature(fe.degree + 1);
   const QGauss<dim - 1> face_quadrature(fe.degree + 1);
   FEValues<dim> fe_values(mapping, fe, quadrature, update_gradients | update_JxW_values);
   FEFaceValues<dim> fe_face_values(mapping, fe, face_quadrature, update_values | update_JxW_values);
-  FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
-  Vector<double> cell_rhs(fe.n_dofs_per_cell());
-  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  const unsigned int n = fe.n_dofs_per_cell();
+  FullMatrix<double> cell_matrix(n, n);
+  std::vector<types::global_dof_index> dofs(n);
   const double depth = system.depth();
+  cell_dofs.clear();
+  cell_matrices.clear();
+  cell_loads.clear();
   for (const auto& cell : system.dof_handler.active_cell_iterators())
     if (cell->is_locally_owned())
     {
@@ -134,7 +142,9 @@ void ElasticSystem<dim>::Implementation::assemble(const ElasticSystem<dim>& syst
       const Material& m = system.material(cell->material_id());
       cell_stiffness(fe_values, m.lame_lambda(dim, system.elasticity.model), m.lame_mu(), depth,
                      cell_matrix);
-      cell_rhs = 0;
+      cell_matrices.insert(cell_matrices.end(), &cell_matrix(0, 0), &cell_matrix(0, 0) + n * n);
+      const std::size_t load = cell_loads.size();
+      cell_loads.resize(load + n, 0.);
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           for (const auto& [boundary, traction] : system.tractions)
@@ -142,14 +152,34 @@ void ElasticSystem<dim>::Implementation::assemble(const ElasticSystem<dim>& syst
             {
               fe_face_values.reinit(cell, f);
               for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  cell_rhs(i) += fe_face_values.shape_value(i, q) *
-                                 traction[fe.system_to_component_index(i).first] *
-                                 fe_face_values.JxW(q) * depth * system.load_factor;
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_loads[load + i] += fe_face_values.shape_value(i, q) *
+                                          traction[fe.system_to_component_index(i).first] *
+                                          fe_face_values.JxW(q) * depth;
             }
       cell->get_dof_indices(dofs);
-      constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix, rhs);
+      cell_dofs.insert(cell_dofs.end(), dofs.begin(), dofs.end());
     }
+}
+
+template <int dim>
+void ElasticSystem<dim>::Implementation::assemble(const AffineConstraints<double>& constraints,
+                                                  double load_factor,
+                                                  PETScWrappers::MPI::SparseMatrix& matrix,
+                                                  PETScWrappers::MPI::Vector& rhs) const
+{
+  const unsigned int n = fe.n_dofs_per_cell();
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> cell_rhs(n);
+  std::vector<types::global_dof_index> dofs(n);
+  for (std::size_t cell = 0; cell * n < cell_dofs.size(); ++cell)
+  {
+    std::copy_n(cell_matrices.begin() + cell * n * n, n * n, &cell_matrix(0, 0));
+    for (unsigned int i = 0; i < n; ++i)
+      cell_rhs[i] = load_factor * cell_loads[cell * n + i];
+    std::copy_n(cell_dofs.begin() + cell * n, n, dofs.begin());
+    constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix, rhs);
+  }
 }
 
 template <int dim>
@@ -270,29 +300,8 @@ void ElasticSystem<dim>::setup_system()
     }
   }
 
-  // The unconstrained K and f, kept for the residual.
-  // All cells, not only owned ones: rows of DoFs on partition boundaries receive entries from
-  // cells of both ranks.
-  DynamicSparsityPattern dsp(n_dofs, n_dofs);
-  for (const auto& cell : dof_handler.active_cell_iterators())
-  {
-    cell->get_dof_indices(dofs);
-    for (const auto i : dofs)
-      for (const auto j : dofs)
-        dsp.add(i, j);
-  }
-  impl->unconstrained_matrix.reinit(impl->locally_owned, impl->locally_owned, dsp,
-                                    mpi_communicator);
-  impl->unconstrained_rhs.reinit(impl->locally_owned, mpi_communicator);
-
-  // f is kept for unit load factor; residual() scales it.
-  const double factor = load_factor;
-  load_factor = 1.;
-  impl->assemble(*this, AffineConstraints<double>(), impl->unconstrained_matrix,
-                 impl->unconstrained_rhs);
-  load_factor = factor;
-  impl->unconstrained_matrix.compress(VectorOperation::add);
-  impl->unconstrained_rhs.compress(VectorOperation::add);
+  // The element work, once: every later system and residual reuses it.
+  impl->integrate_cells(*this);
 }
 
 template <int dim>
@@ -322,7 +331,7 @@ void ElasticSystem<dim>::condensed_system(const AffineConstraints<double>& const
   matrix.reinit(impl->locally_owned, impl->locally_owned, dsp, mpi_communicator);
   rhs.reinit(impl->locally_owned, mpi_communicator);
 
-  impl->assemble(*this, constraints, matrix, rhs);
+  impl->assemble(constraints, load_factor, matrix, rhs);
   // Point loads enter once (on rank 0); loads on constrained DoFs are passed to their masters
   // as virtual work requires.
   if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && point_loads.size() > 0)
@@ -365,14 +374,29 @@ Vector<double> ElasticSystem<dim>::solve(const AffineConstraints<double>& constr
 template <int dim>
 Vector<double> ElasticSystem<dim>::residual(const Vector<double>& solution) const
 {
-  PETScWrappers::MPI::Vector u(impl->locally_owned, mpi_communicator);
-  for (const auto i : impl->locally_owned)
-    u[i] = solution[i];
-  u.compress(VectorOperation::insert);
-  PETScWrappers::MPI::Vector r(impl->locally_owned, mpi_communicator);
-  impl->unconstrained_matrix.vmult(r, u);
-  r.add(-load_factor, impl->unconstrained_rhs);
-  return Vector<double>(r);
+  // Cell by cell from the cached element matrices (no global K is kept); each rank sums its
+  // own cells, the ranks then add up the complete vector.
+  const unsigned int n = impl->fe.n_dofs_per_cell();
+  Vector<double> r(dof_handler.n_dofs());
+  std::vector<double> local(n);
+  for (std::size_t cell = 0; cell * n < impl->cell_dofs.size(); ++cell)
+  {
+    const types::global_dof_index* dofs = &impl->cell_dofs[cell * n];
+    const double* matrix = &impl->cell_matrices[cell * n * n];
+    for (unsigned int i = 0; i < n; ++i)
+      local[i] = solution[dofs[i]];
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      double value = -load_factor * impl->cell_loads[cell * n + i];
+      for (unsigned int j = 0; j < n; ++j)
+        value += matrix[i * n + j] * local[j];
+      r[dofs[i]] += value;
+    }
+  }
+  if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+    Utilities::MPI::sum(ArrayView<const double>(r.begin(), r.size()), mpi_communicator,
+                        make_array_view(r));
+  return r;
 }
 
 template <int dim>

@@ -3,10 +3,11 @@
 // of degree 1 or 2 and PETSc linear algebra on a parallel::shared::Triangulation partitioned by
 // METIS.
 //
-// The class keeps the unconstrained stiffness K and load f (tractions) so that any analysis can
-// impose its own AffineConstraints (supports, rigid hubs, closed contacts) per solve and obtain
-// the reactions consistently as the residual r = K u − f: the nodal force the constraints exert,
-// rather than a value recovered from stresses.
+// The class integrates every cell once (setup_system) and keeps the element stiffness matrices
+// and traction loads, so that any analysis can impose its own AffineConstraints (supports, rigid
+// hubs, closed contacts) per solve without integrating again, and obtain the reactions
+// consistently as the residual r = K u − f, evaluated cell by cell: the nodal force the
+// constraints exert, rather than a value recovered from stresses.
 //
 // Every rank holds the whole mesh, so DoF-level data (support points, constraints, the returned
 // solution and residual) are complete on every rank; only assembly and the solve are distributed.
@@ -93,7 +94,7 @@ public:
   // Scales the tractions (dead loads) in every later solve and residual; for load stepping.
   void set_load_factor(double factor) { load_factor = factor; }
 
-  // Distributes DoFs and assembles the unconstrained K and f.
+  // Distributes DoFs and integrates the element stiffness matrices and loads (once).
   void setup_system();
 
   // Solves the system condensed with `constraints` (closed, identical on every rank), with

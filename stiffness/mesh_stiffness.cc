@@ -187,7 +187,8 @@ void GearMeshStiffness<dim>::setup_problem()
 template <int dim>
 void GearMeshStiffness<dim>::solve()
 {
-  solve_contact_problem(*problem, result);
+  solve_contact_problem(*problem, result,
+                        settings.contact.warm_start ? settings.warm_start.get() : nullptr);
 }
 
 template <int dim>

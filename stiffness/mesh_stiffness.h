@@ -25,6 +25,7 @@
 #include "fem/parameters.h"
 #include "geometry/scene_gear_pair.h"
 
+#include <memory>
 #include <mpi.h>
 #include <string>
 #include <vector>
@@ -50,6 +51,9 @@ struct GearMeshStiffnessSettings
   std::string scene_file;                // path of the .msh to write (rank 0 of the communicator)
   std::string output_directory;          // VTU of the solved position here; empty: none
   std::string output_base = "stiffness"; // VTU base name
+  // Shared by the positions a sweep solves in turn (null: none): each starts from the zone the
+  // previous one converged to (contact.warm_start) and leaves its own for the next.
+  std::shared_ptr<std::vector<contact::ContactZone>> warm_start;
 };
 
 // One tooth pair in the scene and what it carries.

@@ -98,6 +98,9 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  // Each rank's positions start from the contact zone of its previous one.
+  GearMeshStiffnessSettings warm = settings;
+  warm.warm_start = std::make_shared<std::vector<contact::ContactZone>>();
 
   // Positions round-robin over the ranks (neighbouring positions cost about the same, so each
   // rank gets a fair share); a failure stops every rank within about one contact iteration
@@ -111,7 +114,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
         const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
                                   format(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
         const GearMeshStiffnessResult r = solve_position<dim>(
-            settings, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
+            warm, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
         mine.emplace_back(i, r);
         if (progress)
           progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +

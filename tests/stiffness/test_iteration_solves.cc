@@ -6,6 +6,7 @@
 // Same mesh, same constrained minimum: k must agree to 1e-6 relative (the contact-speed issue's
 // requirement); the agreement observed and the speed-up are printed.
 #include "stiffness/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness_sweep.h"
 #include "tests/stiffness/work_file.h"
 
 #include <cmath>
@@ -52,5 +53,46 @@ TEST(IterationSolves, GearPositionsAgreeWithTheFullResolve)
       EXPECT_NEAR(schur.pairs[j].normal_force, full.pairs[j].normal_force,
                   1e-6 * full.pairs[j].normal_force + 1e-9);
     EXPECT_EQ(schur.active_set_iterations, full.active_set_iterations);
+  }
+}
+
+// Warm start (contact/contact_problem.h ContactZone): a sweep position started from its
+// neighbour's converged zone reaches the same constrained minimum on the same mesh as the cold
+// start — the same active set and friction fixed point, so k agrees to 1e-6 relative (the
+// contact-speed issue's requirement for results on the same mesh) — in no more iterations.
+TEST(IterationSolves, WarmStartFromTheNeighbourAgreesWithTheColdStart)
+{
+  GearMeshStiffnessSettings settings;
+  settings.contact.friction_coefficient = 0.01; // gear-data.md §1
+  settings.scene.position = geometry::PairPosition::roll_angle;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
+  const std::vector<double> positions = sweep_positions(pair, StiffnessSweepSpec());
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  std::shared_ptr<std::vector<contact::ContactZone>> zone;
+  auto solve_at = [&](unsigned int i, bool warm)
+  {
+    GearMeshStiffnessSettings local = settings;
+    local.scene.pinion_roll_angle = positions[i] / r_b1;
+    local.scene_file = stiffness_work_stem("warm-" + std::to_string(i)) + ".msh";
+    local.contact.warm_start = warm;
+    local.warm_start = zone;
+    const GearMeshStiffnessResult r = GearMeshStiffness<2>(MPI_COMM_SELF, local).run();
+    std::filesystem::remove(local.scene_file);
+    return r;
+  };
+  // Two steps apart: what each rank of a 2-rank sweep sees.
+  for (const unsigned int i : {10u, 24u})
+  {
+    zone = std::make_shared<std::vector<contact::ContactZone>>();
+    solve_at(i - 2, true); // leaves its zone in `zone`
+    ASSERT_FALSE(zone->empty());
+    const GearMeshStiffnessResult warm = solve_at(i, true);
+    const GearMeshStiffnessResult cold = solve_at(i, false);
+    const double difference = std::abs(warm.mesh_stiffness / cold.mesh_stiffness - 1.);
+    std::cout << "position " << i << ": " << warm.active_set_iterations << " iterations warm, "
+              << cold.active_set_iterations << " cold; relative difference of k " << difference
+              << "\n";
+    EXPECT_LT(difference, 1e-6);
+    EXPECT_LE(warm.active_set_iterations, cold.active_set_iterations);
   }
 }
