@@ -84,6 +84,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   else
     report.add_value("cai_scale", fit.parameters.scale / 1e6, "N/µm",
                      "calibrated Cai scale (one pair's peak stiffness)");
+  add_pair_identity(report, pair);
   report.add_value("cai_c0", fit.parameters.shape[0], "-", "shape c0");
   report.add_value("cai_c1", fit.parameters.shape[1], "-", "shape c1");
   report.add_value("cai_c2", fit.parameters.shape[2], "-", "shape c2");

@@ -148,7 +148,8 @@ void report_iso(Report& report, const std::string& key, const std::string& name,
                                            ", B_k = " + format_number(iso.b_k, 4) + ")");
 }
 
-// Train model: degrees of freedom, assembly notes, J* and the modal energy per body.
+// Train model: degrees of freedom, notes (planet spacing, blank inertias), J* and the modal
+// energy per body.
 void report_train_model(const DynamicsParameters& p, const TorsionalModel& model, Report& report)
 {
   const TrainModel& train = p.train_model;
@@ -157,7 +158,7 @@ void report_train_model(const DynamicsParameters& p, const TorsionalModel& model
     dofs += (dofs.empty() ? "" : ", ") + name;
   report.add_text("degrees of freedom", dofs + " (member#copy; rigid bodies by connections)");
   for (std::size_t i = 0; i < train.notes.size(); ++i)
-    report.add_text("assembly " + std::to_string(i + 1), train.notes[i]);
+    report.add_text("train note " + std::to_string(i + 1), train.notes[i]);
   report.add_value("reduced_inertia", train.reduced_inertia, "kg·m²",
                    "kinematics' J* reduced to the input (the rigid mode's inertia)");
   const Eigen::VectorXd& r = model.rigid_mode();

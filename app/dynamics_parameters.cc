@@ -3,9 +3,11 @@
 #include "app/kinematics_parameters.h"
 #include "app/units.h"
 #include "dynamics/split_path_case.h"
+#include "dynamics/stiffness_file.h"
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -69,13 +71,26 @@ void parse_table(const std::string& text, const std::string& parameter,
 }
 // The entries a mesh needs whatever describes its gears: stiffness source, damping, friction.
 // Shared by "Mesh n" (gears and meshes) and "Train mesh n" (Train description).
+// `train_mesh` adds the source 'file' (a stiffness result of the FE commands): only a Train
+// mesh knows its gears' teeth and modules, which the file must match.
 void declare_mesh_physics(ParameterHandler& prm, double stiffness, double damping, double friction,
-                          double driver_arm, double driven_arm)
+                          double driver_arm, double driven_arm, bool train_mesh)
 {
-  prm.declare_entry("stiffness source", "cai", Selection("cai|constant|table|cai fit"),
-                    "mesh stiffness: 'cai' (Cai curve, peak = stiffness), 'constant', "
-                    "'table' (k(x) table), 'cai fit' (Cai curve least-squares fitted to the "
-                    "table)");
+  prm.declare_entry(
+      "stiffness source", "cai",
+      Selection(train_mesh ? "cai|constant|table|cai fit|file" : "cai|constant|table|cai fit"),
+      std::string("mesh stiffness: 'cai' (Cai curve, peak = stiffness), 'constant', "
+                  "'table' (k(x) table), 'cai fit' (Cai curve least-squares fitted "
+                  "to the table)") +
+          (train_mesh ? ", 'file' (FE k(x) table or calibrated Cai curve of "
+                        "'stiffness file')"
+                      : ""));
+  if (train_mesh)
+    prm.declare_entry("stiffness file", "", Anything(),
+                      "summary.json written by `gearstiff stiffness` (mode sweep: its k(x) "
+                      "table) or `gearstiff cai` (its calibrated Cai curve) with -o, for the "
+                      "same pair (teeth, module, centre distance checked); path relative to the "
+                      "working directory");
   prm.declare_entry("stiffness", format_number(stiffness / newton_per_mm, 10), Double(),
                     "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
   prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
@@ -100,10 +115,11 @@ struct MeshPhysics
 {
   dynamics::MeshStiffness stiffness;
   std::optional<dynamics::CaiFit> fit;
-  double damping = 0.;              // [N·s/m]
-  double friction_coefficient = 0.; // [-]
-  double driver_friction_arm = 0.;  // [m]
-  double driven_friction_arm = 0.;  // [m]
+  double damping = 0.;                         // [N·s/m]
+  double friction_coefficient = 0.;            // [-]
+  double driver_friction_arm = 0.;             // [m]
+  double driven_friction_arm = 0.;             // [m]
+  std::optional<dynamics::StiffnessFile> file; // source 'file': the FE result it came from
 };
 
 // Reads the entries of declare_mesh_physics inside the mesh's subsection `section`.
@@ -147,6 +163,12 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
   else if (source == "table")
     physics.stiffness =
         dynamics::MeshStiffness::table(positions, values, section + "/stiffness table");
+  else if (source == "file")
+  {
+    physics.file =
+        dynamics::read_stiffness_file(prm.get("stiffness file"), section + "/stiffness file");
+    physics.stiffness = physics.file->stiffness;
+  }
   else
   {
     // Validate the samples as a table first so the user gets the table's own message.
@@ -196,13 +218,20 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("suspended members", "", Anything(),
                     "train model: fixed members hung on a torsional spring and damper to the "
                     "housing, 'name: stiffness damping, ...' (N·m/rad, N·m·s/rad)");
+  prm.declare_entry("face widths", "", Anything(),
+                    "train model: gears whose J and mass come from a steel blank where "
+                    "Train/inertias and Train/masses give none, 'name: b, ...' (mm)");
+  prm.declare_entry("bore diameters", "", Anything(),
+                    "train model: bore of those blanks, 'name: d, ...' (mm; none: solid); for an "
+                    "internal gear the rim's outside diameter (required)");
+  prm.declare_entry("density", "7850", Double(0.), "train model: density of the blanks (kg/m³)");
   prm.leave_subsection();
   declare_train_parameters(prm); // gears, modules, ..., inertias, masses, input torque
 
   for (unsigned int m = 0; m < max_train_meshes; ++m)
   {
     prm.enter_subsection(train_mesh_section(m));
-    declare_mesh_physics(prm, data.single_pair_stiffness, data.mesh_damping, 0., 0., 0.);
+    declare_mesh_physics(prm, data.single_pair_stiffness, data.mesh_damping, 0., 0., 0., true);
     prm.leave_subsection();
   }
 
@@ -247,7 +276,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                       "of the same driver (degrees); sets the phase frac(z·theta/360°)");
     declare_mesh_physics(prm, data.single_pair_stiffness, data.mesh_damping,
                          data.friction_coefficient, data.pinion_friction_arm,
-                         data.wheel_friction_arm);
+                         data.wheel_friction_arm, false);
     prm.leave_subsection();
   }
 
@@ -413,11 +442,13 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     p.train.gears[i].torque = torque[i];
 }
 
-// "name: k c, ..." [N·m/rad, N·m·s/rad]: fixed members hung on a spring and damper.
-std::vector<dynamics::TrainSuspension> parse_suspensions(const std::string& text)
+// "name: v1 v2 ..., ..." with `count` non-negative finite numbers per name (`units` for the
+// message): suspensions (stiffness damping), face widths, bore diameters.
+std::vector<std::pair<std::string, std::vector<double>>>
+parse_named_numbers(const std::string& text, unsigned int count, const std::string& parameter,
+                    const std::string& units)
 {
-  const std::string parameter = "Train/suspended members";
-  std::vector<dynamics::TrainSuspension> suspensions;
+  std::vector<std::pair<std::string, std::vector<double>>> entries_read;
   std::istringstream entries(text);
   std::string entry;
   while (std::getline(entries, entry, ','))
@@ -426,21 +457,46 @@ std::vector<dynamics::TrainSuspension> parse_suspensions(const std::string& text
       continue;
     const auto colon = entry.find(':');
     std::istringstream values(colon == std::string::npos ? "" : entry.substr(colon + 1));
-    dynamics::TrainSuspension suspension;
     std::string name = colon == std::string::npos ? "" : entry.substr(0, colon);
     name.erase(0, name.find_first_not_of(" \t"));
     name.erase(name.find_last_not_of(" \t") + 1);
-    suspension.member = name;
+    std::vector<double> numbers(count);
+    bool good = !name.empty();
+    for (double& v : numbers)
+      good = good && (values >> v) && v >= 0. && std::isfinite(v);
     std::string rest;
-    if (!(values >> suspension.stiffness >> suspension.damping) || (values >> rest) ||
-        name.empty() || !(suspension.stiffness >= 0.) || !(suspension.damping >= 0.) ||
-        !std::isfinite(suspension.stiffness + suspension.damping))
-      throw InputError(parameter, "entry '" + entry +
-                                      "' is not 'member: stiffness damping' with non-negative "
-                                      "numbers (N·m/rad, N·m·s/rad)");
-    suspensions.push_back(suspension);
+    if (!good || (values >> rest))
+      throw InputError(parameter, "entry '" + entry + "' is not 'name: " + units +
+                                      "' with non-negative numbers");
+    entries_read.emplace_back(name, numbers);
   }
-  return suspensions;
+  return entries_read;
+}
+
+// The Train entries of the dynamics beyond the kinematics' description.
+void parse_train_extras(ParameterHandler& prm, dynamics::TrainDynamicsInput& input)
+{
+  prm.enter_subsection("Train");
+  input.pressure_angle = prm.get_double("pressure angle") * degree;
+  input.density = prm.get_double("density");
+  const std::string suspended = prm.get("suspended members");
+  const std::string widths = prm.get("face widths");
+  const std::string bores = prm.get("bore diameters");
+  prm.leave_subsection();
+  for (const auto& [name, v] :
+       parse_named_numbers(suspended, 2, "Train/suspended members", "stiffness damping"))
+    input.suspensions.push_back({name, v[0], v[1]});
+  for (const auto& [name, v] : parse_named_numbers(widths, 1, "Train/face widths", "b"))
+    input.blanks.push_back({name, v[0] * mm, 0.});
+  for (const auto& [name, v] : parse_named_numbers(bores, 1, "Train/bore diameters", "d"))
+  {
+    const auto blank =
+        std::find_if(input.blanks.begin(), input.blanks.end(),
+                     [&, n = name](const dynamics::GearBlank& b) { return b.member == n; });
+    if (blank == input.blanks.end())
+      throw InputError("Train/bore diameters", "'" + name + "' has no face width");
+    blank->bore_diameter = v[0] * mm;
+  }
 }
 
 // The kinematics command's "Train" description plus "Train mesh n" sections.
@@ -450,11 +506,7 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
   dynamics::TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(train.text);
   input.input_torque = train.input_torque;
-  prm.enter_subsection("Train");
-  input.pressure_angle = prm.get_double("pressure angle") * degree;
-  const std::string suspended = prm.get("suspended members");
-  prm.leave_subsection();
-  input.suspensions = parse_suspensions(suspended);
+  parse_train_extras(prm, input);
   input.initial_position = p.initial_position;
   if (input.spec.meshes.size() > max_train_meshes)
     throw InputError("Train/meshes", "at most " + std::to_string(max_train_meshes) +
@@ -464,13 +516,19 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
     const std::string section = train_mesh_section(m);
     // The contact ratio of standard teeth, for a Cai fit (the model recomputes it).
     const kinematics::TrainMesh& tm = input.spec.meshes[m];
-    double contact_ratio = 1.5;
+    double contact_ratio = 1.5, module = 0.;
+    int teeth[2] = {0, 0};
     for (const auto& a : input.spec.members)
       for (const auto& b : input.spec.members)
         if (a.name == tm.gear_a && b.name == tm.gear_b && a.module > 0.)
+        {
           contact_ratio =
               dynamics::standard_mesh(a.teeth, b.teeth, a.module, input.pressure_angle, 0)
                   .contact_ratio;
+          module = a.module;
+          teeth[0] = a.teeth;
+          teeth[1] = b.teeth;
+        }
     prm.enter_subsection(section);
     MeshPhysics physics;
     try
@@ -483,10 +541,22 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
       throw;
     }
     prm.leave_subsection();
-    input.meshes.push_back({physics.stiffness, physics.damping, physics.friction_coefficient,
-                            physics.driver_friction_arm, physics.driven_friction_arm});
-    p.stiffness_description.push_back(physics.stiffness.description() +
-                                      (physics.fit ? " (fitted to the table)" : ""));
+    dynamics::TrainMeshDynamics mesh{physics.stiffness,
+                                     physics.damping,
+                                     physics.friction_coefficient,
+                                     physics.driver_friction_arm,
+                                     physics.driven_friction_arm,
+                                     {}};
+    std::string origin = physics.fit ? " (fitted to the table)" : "";
+    if (physics.file)
+    {
+      mesh.stiffness_driver = dynamics::match_stiffness_file(*physics.file, teeth[0], teeth[1],
+                                                             module, section + "/stiffness file");
+      origin =
+          " from `gearstiff " + physics.file->command + "` (" + physics.file->pair.describe() + ")";
+    }
+    input.meshes.push_back(mesh);
+    p.stiffness_description.push_back(physics.stiffness.description() + origin);
     p.cai_fit.push_back(physics.fit);
   }
   p.train_model = dynamics::build_train_model(input);

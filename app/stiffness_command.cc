@@ -115,6 +115,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
   add_stiffness_sweep_table(report, sweep, "stiffness_sweep");
+  add_pair_identity(report, pair);
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
   for (const auto& r : sweep.positions)
   {

@@ -337,6 +337,17 @@ void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnes
   report.add_value(prefix + "time_total", r.total_time, "s", label + ": wall time");
 }
 
+void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair)
+{
+  const double wheel_sign = pair.spec.wheel.internal ? -1. : 1.;
+  report.add_value("pinion_teeth", pair.spec.pinion.teeth, "-", "z1 of the pair (drives)");
+  report.add_value("wheel_teeth", wheel_sign * pair.spec.wheel.teeth, "-",
+                   "z2 of the pair (negative: internal)");
+  report.add_value("transverse_module", pair.transverse_module / mm, "mm", "m_t of the pair");
+  report.add_value("centre_distance", pair.centre_distance / mm, "mm", "a_w of the pair");
+  report.add_value("contact_ratio", pair.transverse_contact_ratio, "-", "ε_α of the pair");
+}
+
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name)
 {

@@ -70,6 +70,11 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
 // error, torque ratio, pairs, pressures, root stresses and cost.
 void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,
                                const std::string& prefix, const std::string& label);
+// The pair a stiffness result belongs to, as report values (pinion_teeth, wheel_teeth — negative
+// for an internal wheel —, transverse_module and centre_distance in mm, contact_ratio): a
+// `gearstiff dynamics` train reads them from the command's summary.json and rejects a table of
+// another pair (app/dynamics_stiffness_file.h).
+void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair);
 // The sweep as a table (one row per position).
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name);

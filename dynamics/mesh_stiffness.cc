@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace gearstiff::dynamics
 {
@@ -113,6 +114,25 @@ MeshStiffnessState MeshStiffness::evaluate(double mesh_position, double contact_
   return state;
 }
 
+double MeshStiffness::stiffness(double mesh_position, double contact_ratio) const
+{
+  const double x = mesh_position - std::floor(mesh_position);
+  if (kind == StiffnessSource::constant)
+    return constant_value;
+  if (kind == StiffnessSource::table)
+    return table_value(x);
+  // Σ over the pairs of scale·(c0 + c1·s + c2·s²), s = p/ε_α ∈ [0, 1): cai_pair_stiffness's
+  // arithmetic in its order, so the value is evaluate()'s to the last bit.
+  const auto& c = cai_curve.shape;
+  double sum = 0.;
+  for (double p = x; p < contact_ratio; p += 1.)
+  {
+    const double s = p / contact_ratio;
+    sum += cai_curve.scale * ((c[2] * s + c[1]) * s + c[0]);
+  }
+  return sum;
+}
+
 double MeshStiffness::mean_stiffness(double contact_ratio) const
 {
   switch (kind)
@@ -159,6 +179,31 @@ double MeshStiffness::mean_friction_direction(double contact_ratio, double appro
   for (unsigned int i = 0; i < period_samples; ++i)
     sum += evaluate((i + 0.5) / period_samples, contact_ratio, approach_ratio).friction_direction;
   return sum / period_samples;
+}
+
+MeshStiffness MeshStiffness::reversed(double contact_ratio) const
+{
+  MeshStiffness mesh = *this;
+  if (kind == StiffnessSource::cai)
+  {
+    // c2(1 − s)² + c1(1 − s) + c0 = c2·s² − (2c2 + c1)·s + (c2 + c1 + c0).
+    const auto& c = cai_curve.shape;
+    mesh.cai_curve.shape = {c[2] + c[1] + c[0], -2. * c[2] - c[1], c[2]};
+  }
+  else if (kind == StiffnessSource::table)
+  {
+    std::vector<std::pair<double, double>> nodes;
+    for (std::size_t i = 0; i < table_positions.size(); ++i)
+    {
+      const double x = contact_ratio - table_positions[i];
+      const double f = x - std::floor(x);
+      nodes.emplace_back(f < 1. ? f : 0., table_stiffness[i]); // f = 1 by round-off is 0
+    }
+    std::sort(nodes.begin(), nodes.end());
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      std::tie(mesh.table_positions[i], mesh.table_stiffness[i]) = nodes[i];
+  }
+  return mesh;
 }
 
 std::string MeshStiffness::description() const

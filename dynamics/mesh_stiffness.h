@@ -47,12 +47,21 @@ public:
 
   MeshStiffnessState evaluate(double mesh_position, double contact_ratio,
                               double approach_ratio) const;
+  // The stiffness alone [N/m], the same value as evaluate(): the integrators' hot path when
+  // there is no friction (no division per pair, no direction).
+  double stiffness(double mesh_position, double contact_ratio) const;
   // Mean over one mesh period [N/m] (exact for each source).
   double mean_stiffness(double contact_ratio) const;
   // Largest value over one mesh period [N/m] (sampled finely, plus the table nodes).
   double max_stiffness(double contact_ratio) const;
   // Mean friction direction over one mesh period [-] (sampled).
   double mean_friction_direction(double contact_ratio, double approach_ratio) const;
+
+  // The same stiffness seen with the other gear driving: contact then runs from the other end of
+  // the path, so a pair at roll position p is at ε_α − p of this one. A table maps
+  // k'(x) = k(frac(ε_α − x)) (the pair that entered last is the one nearest the old end), the
+  // Cai bracket s → 1 − s; a constant stays.
+  MeshStiffness reversed(double contact_ratio) const;
 
   StiffnessSource source() const { return kind; }
   const CaiParameters& cai_parameters() const { return cai_curve; }

@@ -231,8 +231,15 @@ void TorsionalModel::acceleration(double time, const double* angle, const double
   // first: the mesh states of the last time are reused (same time, same values: exact).
   if (!(time == cached_time))
   {
+    // Without friction the direction is not needed (forces only): the stiffness alone.
     for (std::size_t m = 0; m < meshes.size(); ++m)
-      cached_states[m] = mesh_state(meshes[m], time);
+      cached_states[m] =
+          meshes[m].mu == 0.
+              ? MeshStiffnessState{meshes[m].stiffness.stiffness(meshes[m].initial_position +
+                                                                     meshes[m].position_rate * time,
+                                                                 meshes[m].contact_ratio),
+                                   0.}
+              : mesh_state(meshes[m], time);
     cached_time = time;
   }
   for (std::size_t m = 0; m < meshes.size(); ++m)

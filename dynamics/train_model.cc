@@ -217,6 +217,27 @@ std::vector<double> planet_angles(const kinematics::GearTrainSpec& spec,
 }
 } // namespace
 
+BlankInertia blank_inertia(const kinematics::TrainMember& gear, const GearBlank& blank,
+                           double density, const std::string& parameter)
+{
+  const double reference = gear.module * std::abs(gear.teeth);
+  if (gear.teeth == 0 || !(gear.module > 0.))
+    throw InputError(parameter, "'" + gear.name +
+                                    "' needs teeth and a module for its blank (carriers: give "
+                                    "Train/inertias)");
+  const double inner = gear.teeth > 0 ? blank.bore_diameter : reference;
+  const double outer = gear.teeth > 0 ? reference : blank.bore_diameter;
+  if (!(outer > inner) || inner < 0.)
+    throw InputError(parameter, "'" + gear.name + "': " +
+                                    (gear.teeth > 0 ? "the bore must lie inside"
+                                                    : "an internal gear needs an outer "
+                                                      "diameter beyond") +
+                                    " the reference diameter " + format(reference * 1e3) + " mm");
+  const double area = M_PI / 4. * (outer * outer - inner * inner);
+  return {density * blank.face_width * area * (outer * outer + inner * inner) / 8.,
+          density * blank.face_width * area};
+}
+
 StandardMesh standard_mesh(int teeth_a, int teeth_b, double module, double pressure_angle,
                            unsigned int driver)
 {
@@ -240,15 +261,45 @@ StandardMesh standard_mesh(int teeth_a, int teeth_b, double module, double press
   return mesh;
 }
 
+namespace
+{
+// The spec with the blanks' J and mass where Train/inertias and Train/masses give none.
+kinematics::GearTrainSpec with_blank_inertias(const TrainDynamicsInput& input,
+                                              std::vector<std::string>& notes)
+{
+  kinematics::GearTrainSpec spec = input.spec;
+  for (const GearBlank& blank : input.blanks)
+  {
+    const auto member =
+        std::find_if(spec.members.begin(), spec.members.end(),
+                     [&](const kinematics::TrainMember& m) { return m.name == blank.member; });
+    if (member == spec.members.end())
+      throw InputError("Train/face widths", "'" + blank.member + "' is not a gear of the train");
+    const BlankInertia blank_values =
+        blank_inertia(*member, blank, input.density, "Train/bore diameters");
+    const bool given_j = member->moment_of_inertia > 0., given_m = member->mass > 0.;
+    if (!given_j)
+      member->moment_of_inertia = blank_values.moment_of_inertia;
+    if (!given_m)
+      member->mass = blank_values.mass;
+    notes.push_back("blank of " + blank.member + ": J = " + format(member->moment_of_inertia, 6) +
+                    " kg·m²" + (given_j ? " (given)" : "") + ", m = " + format(member->mass, 6) +
+                    " kg" + (given_m ? " (given)" : "") + " (ρ = " + format(input.density, 6) +
+                    " kg/m³, b = " + format(blank.face_width * 1e3) + " mm)");
+  }
+  return spec;
+}
+} // namespace
+
 TrainModel build_train_model(const TrainDynamicsInput& input)
 {
-  const kinematics::GearTrainSpec& spec = input.spec;
+  TrainModel model;
+  const kinematics::GearTrainSpec spec = with_blank_inertias(input, model.notes);
   const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
   if (spec.inputs.size() != 1 || spec.output.empty())
     throw InputError("Train/inputs", "the dynamics needs exactly one input and an output");
   if (input.meshes.size() != spec.meshes.size())
     throw InputError(input.mesh_section, "one set of mesh data per Train mesh is needed");
-  TrainModel model;
   Bodies bodies = find_bodies(spec, solution);
   const std::size_t input_member = solution.index(spec.inputs.front().first);
   const std::size_t input_body = bodies.body_of_member[input_member];
@@ -375,6 +426,15 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       const double relative = solution.speed(tm.gear_a) - solution.speed(tm.frame);
       a_drives[m] = ra * relative >= 0. ? 1 : 0;
     }
+  }
+  // FE stiffness computed with the other gear driving: contact runs the other way.
+  for (std::size_t i = 0; i < train.meshes.size(); ++i)
+  {
+    const std::size_t m = model.spec_mesh[i];
+    const std::optional<unsigned int>& fe_driver = input.meshes[m].stiffness_driver;
+    if (fe_driver && (*fe_driver == 0) != (a_drives[m] == 1))
+      train.meshes[i].stiffness =
+          input.meshes[m].stiffness.reversed(model.spec_mesh_contact_ratio[m]);
   }
   // Approach ratios (the driven gear's tip starts the contact), friction arms, phases.
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)

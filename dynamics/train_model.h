@@ -24,6 +24,7 @@
 #include "dynamics/torsional_model.h"
 #include "kinematics/gear_train.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct TrainMeshDynamics
   double friction_coefficient = 0.; // [-]
   double driver_friction_arm = 0.;  // [m] of the gear that drives in the frame's reference
   double driven_friction_arm = 0.;  // [m]
+  // Which gear drove when `stiffness` was computed (an FE result: 0 gear a, 1 gear b; empty:
+  // none, e.g. a constant). Where the other gear drives in the train, the model uses
+  // stiffness.reversed(ε_α): contact then runs along the path the other way.
+  std::optional<unsigned int> stiffness_driver;
 };
 
 struct TrainSuspension
@@ -47,6 +52,27 @@ struct TrainSuspension
   double damping = 0.;   // [N·m·s/rad]
 };
 
+// A gear blank for its inertia when Train/inertias (masses) do not give it: a steel annulus
+// of the face width between the bore and the reference diameter m·|z| (external gears), or
+// between the reference diameter and the outer diameter (internal gears: `bore_diameter` is the
+// rim's outside diameter then, and must be given).
+struct GearBlank
+{
+  std::string member;
+  double face_width = 0.;    // [m] b
+  double bore_diameter = 0.; // [m] d_i (external; 0: solid), d_o (internal)
+};
+
+struct BlankInertia
+{
+  double moment_of_inertia = 0.; // [kg·m²] ρ·π·b·(d_o⁴ − d_i⁴)/32
+  double mass = 0.;              // [kg] ρ·π·b·(d_o² − d_i²)/4
+};
+// InputError naming `parameter` for an internal gear without outer diameter, or a bore not
+// inside the reference circle.
+BlankInertia blank_inertia(const kinematics::TrainMember& gear, const GearBlank& blank,
+                           double density, const std::string& parameter);
+
 struct TrainDynamicsInput
 {
   kinematics::GearTrainSpec spec; // inertias and masses per member copy inside
@@ -54,6 +80,9 @@ struct TrainDynamicsInput
   double pressure_angle = 20. * M_PI / 180.; // [rad] standard teeth (x = 0, h_a* = 1)
   std::vector<TrainMeshDynamics> meshes;     // one per spec mesh
   std::vector<TrainSuspension> suspensions;
+  // Members whose J (and mass) Train/inertias (masses) leave at 0 take them from their blank.
+  std::vector<GearBlank> blanks;
+  double density = 7850.;       // [kg/m³] of the blanks (steel)
   double initial_position = 0.; // [base pitches] added to every mesh phase
   // Names for error messages: the list parameters of the parameter file.
   std::string mesh_section = "Train mesh"; // + " n" for mesh n

@@ -27,7 +27,7 @@ TrainDynamicsInput planetary(unsigned int planets, double stiffness = 4e8, doubl
   input.input_torque = 100.;
   for (unsigned int m = 0; m < 2; ++m)
     input.meshes.push_back(
-        {MeshStiffness::constant(stiffness, "Train mesh/stiffness"), damping, 0., 0., 0.});
+        {MeshStiffness::constant(stiffness, "Train mesh/stiffness"), damping, 0., 0., 0., {}});
   return input;
 }
 
@@ -41,7 +41,8 @@ TrainDynamicsInput bi_planetary()
   input.spec = kinematics::parse_gear_train(text);
   input.input_torque = 120.2;
   for (unsigned int m = 0; m < 4; ++m)
-    input.meshes.push_back({MeshStiffness::constant(5e8, "Train mesh/stiffness"), 0., 0., 0., 0.});
+    input.meshes.push_back(
+        {MeshStiffness::constant(5e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}});
   return input;
 }
 

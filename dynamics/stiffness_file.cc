@@ -1,0 +1,189 @@
+#include "dynamics/stiffness_file.h"
+
+#include "errors/errors.h"
+
+#include <algorithm>
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+
+namespace gearstiff::dynamics
+{
+namespace
+{
+using boost::property_tree::ptree;
+
+std::string format(double value)
+{
+  std::ostringstream s;
+  s.precision(6);
+  s << value;
+  return s.str();
+}
+
+ptree read_json(const std::string& path, const std::string& parameter)
+{
+  if (path.empty())
+    throw InputError(parameter, "names no file (the summary.json of `gearstiff stiffness` or "
+                                "`gearstiff cai` run with -o)");
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(parameter, "file '" + path + "' does not exist");
+  ptree tree;
+  try
+  {
+    boost::property_tree::read_json(path, tree);
+  }
+  catch (const boost::property_tree::json_parser_error& e)
+  {
+    throw InputError(parameter, "'" + path + "' is not JSON (line " + std::to_string(e.line()) +
+                                    ": " + e.message() + ")");
+  }
+  return tree;
+}
+
+// values/<key>/value as a number, nothing when absent or null.
+std::optional<double> value(const ptree& tree, const std::string& key)
+{
+  const auto node = tree.get_optional<double>(ptree::path_type("values/" + key + "/value", '/'));
+  return node ? std::optional<double>(*node) : std::nullopt;
+}
+
+StiffnessFilePair read_pair(const ptree& tree, const std::string& path,
+                            const std::string& parameter)
+{
+  const auto z1 = value(tree, "pinion_teeth"), z2 = value(tree, "wheel_teeth"),
+             m = value(tree, "transverse_module"), a = value(tree, "centre_distance"),
+             eps = value(tree, "contact_ratio");
+  if (!z1 || !z2 || !m || !a || !eps)
+    throw InputError(parameter, "'" + path +
+                                    "' does not name its gear pair (values pinion_teeth, "
+                                    "wheel_teeth, transverse_module, centre_distance, "
+                                    "contact_ratio of `gearstiff stiffness`/`cai` -o)");
+  return {static_cast<int>(std::lround(*z1)), static_cast<int>(std::lround(*z2)), *m * 1e-3,
+          *a * 1e-3, *eps};
+}
+
+// Column `name` of table `table`, in the unit `unit`; empty when the table is absent.
+std::vector<double> column(const ptree& tree, const std::string& table, const std::string& name,
+                           const std::string& unit, const std::string& parameter)
+{
+  const auto node = tree.get_child_optional(ptree::path_type("tables/" + table, '/'));
+  if (!node)
+    return {};
+  std::vector<std::string> columns, units;
+  for (const auto& c : node->get_child("columns"))
+    columns.push_back(c.second.data());
+  for (const auto& u : node->get_child("units"))
+    units.push_back(u.second.data());
+  const auto found = std::find(columns.begin(), columns.end(), name);
+  const std::size_t index = found - columns.begin();
+  if (found == columns.end() || index >= units.size() || units[index] != unit)
+    throw InputError(parameter, "table " + table + " has no column " + name + " [" + unit + "]");
+  std::vector<double> values;
+  for (const auto& row : node->get_child("rows"))
+  {
+    auto cell = row.second.begin();
+    std::advance(cell, std::min(index, row.second.size()));
+    if (cell == row.second.end())
+      throw InputError(parameter, "table " + table + " has a short row");
+    try
+    {
+      values.push_back(std::stod(cell->second.data()));
+    }
+    catch (const std::exception&)
+    {
+      throw InputError(parameter, "table " + table + ": '" + cell->second.data() + "' in column " +
+                                      name + " is not a number");
+    }
+  }
+  return values;
+}
+
+// The sweep's k(x) with positions modulo one base pitch, checked to cover the cycle.
+MeshStiffness sweep_table(const std::vector<double>& positions,
+                          const std::vector<double>& stiffness, const std::string& parameter)
+{
+  std::vector<std::pair<double, double>> nodes; // x [base pitches], k [N/m]
+  for (std::size_t i = 0; i < positions.size(); ++i)
+  {
+    const double x = positions[i] - std::floor(positions[i]);
+    nodes.emplace_back(x < 1. ? x : 0., stiffness[i] * 1e6);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  std::vector<double> x, k;
+  for (const auto& [xi, ki] : nodes)
+    if (x.empty() || xi - x.back() > 1e-9)
+    {
+      x.push_back(xi);
+      k.push_back(ki);
+    }
+  double widest = x.empty() ? 1. : 1. - x.back() + x.front();
+  for (std::size_t i = 1; i < x.size(); ++i)
+    widest = std::max(widest, x[i] - x[i - 1]);
+  if (x.size() < 3 || widest > 2. / x.size())
+    throw InputError(parameter,
+                     "the table does not cover a mesh cycle: " + std::to_string(x.size()) +
+                         " distinct positions modulo one base pitch, widest gap " + format(widest) +
+                         " base pitches (at most twice the mean " +
+                         "spacing allowed; sweep one full base pitch)");
+  return MeshStiffness::table(x, k, parameter);
+}
+} // namespace
+
+std::string StiffnessFilePair::describe() const
+{
+  return "z " + std::to_string(pinion_teeth) + "/" + std::to_string(wheel_teeth) + ", m_t " +
+         format(module * 1e3) + " mm, a_w " + format(centre_distance * 1e3) + " mm";
+}
+
+StiffnessFile read_stiffness_file(const std::string& path, const std::string& parameter)
+{
+  const ptree tree = read_json(path, parameter);
+  StiffnessFile file;
+  file.command = tree.get<std::string>("command", "");
+  file.pair = read_pair(tree, path, parameter);
+  const std::vector<double> positions =
+      column(tree, "stiffness_sweep", "mesh_position", "-", parameter);
+  if (!positions.empty())
+  {
+    file.stiffness = sweep_table(
+        positions, column(tree, "stiffness_sweep", "stiffness", "N/um", parameter), parameter);
+    return file;
+  }
+  const auto scale = value(tree, "cai_scale");
+  const auto c0 = value(tree, "cai_c0"), c1 = value(tree, "cai_c1"), c2 = value(tree, "cai_c2");
+  if (!scale || !c0 || !c1 || !c2)
+    throw InputError(parameter, "'" + path +
+                                    "' holds no mesh stiffness (the table stiffness_sweep of "
+                                    "`gearstiff stiffness` in mode sweep, or the Cai values of "
+                                    "`gearstiff cai`)");
+  CaiParameters cai;
+  cai.scale = *scale * 1e6;
+  cai.shape = {*c0, *c1, *c2};
+  file.stiffness = MeshStiffness::cai(cai, parameter);
+  return file;
+}
+
+unsigned int match_stiffness_file(const StiffnessFile& file, int teeth_a, int teeth_b,
+                                  double module, const std::string& parameter)
+{
+  const StiffnessFilePair& p = file.pair;
+  const double centre_distance = 0.5 * module * std::abs(teeth_a + teeth_b);
+  const auto close = [](double u, double v) { return std::abs(u - v) <= 1e-6 * std::abs(v); };
+  const bool same_size = close(p.module, module) && close(p.centre_distance, centre_distance);
+  // An external pinion meshes the internal wheel; two external gears in either order.
+  for (unsigned int pinion = 0; pinion < 2; ++pinion)
+  {
+    const int z_pinion = pinion == 0 ? teeth_a : teeth_b;
+    const int z_wheel = pinion == 0 ? teeth_b : teeth_a;
+    if (same_size && z_pinion == p.pinion_teeth && z_wheel == p.wheel_teeth)
+      return pinion;
+  }
+  StiffnessFilePair mesh{teeth_a, teeth_b, module, centre_distance, 0.};
+  throw InputError(parameter, "the table belongs to another pair: file " + p.describe() +
+                                  ", this mesh " + mesh.describe());
+}
+} // namespace gearstiff::dynamics

@@ -1,0 +1,47 @@
+// A mesh stiffness written by the FE commands, read as plain data: the summary that
+// `gearstiff stiffness` (Stiffness/mode = sweep) and `gearstiff cai` write with -o
+// (summary.json; the same object as their --json output). It names the pair it belongs to
+// (values pinion_teeth, wheel_teeth — negative for an internal wheel —, transverse_module and
+// centre_distance in mm, contact_ratio) and carries either the sweep's table stiffness_sweep
+// (columns mesh_position [base pitches] and stiffness [N/um]) or the calibrated Cai curve
+// (cai_scale [N/µm], cai_c0..cai_c2). JSON through boost::property_tree (header-only): no
+// stiffness module, no deal.II.
+#pragma once
+
+#include "dynamics/mesh_stiffness.h"
+
+#include <string>
+
+namespace gearstiff::dynamics
+{
+struct StiffnessFilePair
+{
+  int pinion_teeth = 0;         // [-] the gear that drives in the FE load case
+  int wheel_teeth = 0;          // [-] negative: internal
+  double module = 0.;           // [m] transverse module
+  double centre_distance = 0.;  // [m] working centre distance
+  double contact_ratio = 0.;    // [-] ε_α of the FE pair
+  std::string describe() const; // "z 20/10, m 2 mm, a 30 mm"
+};
+
+struct StiffnessFile
+{
+  std::string command; // "stiffness" or "cai"
+  StiffnessFilePair pair;
+  MeshStiffness stiffness; // k(x) with the pinion driving (x as in mesh_stiffness.h)
+};
+
+// Reads `path`; InputError naming `parameter` for a missing or unreadable file, a summary
+// without the pair values or without a stiffness (neither table nor Cai values), and a table
+// that does not cover one mesh cycle: positions taken modulo one base pitch, at least 3
+// distinct, and no gap between neighbours around the cycle wider than twice the mean spacing
+// (a sweep over part of a base pitch leaves the wrap-around gap open).
+StiffnessFile read_stiffness_file(const std::string& path, const std::string& parameter);
+
+// Whether the file's pair is the mesh of gears a and b (signed teeth, transverse module
+// [m], standard centre distance m·|z_a + z_b|/2 at x = 0): returns 0 when gear a is the FE
+// pinion, 1 when gear b is. InputError naming `parameter` with both descriptions otherwise
+// (teeth, module or centre distance differ: a table of another pair).
+unsigned int match_stiffness_file(const StiffnessFile& file, int teeth_a, int teeth_b,
+                                  double module, const std::string& parameter);
+} // namespace gearstiff::dynamics
