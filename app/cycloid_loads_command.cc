@@ -13,6 +13,7 @@
 // curve (PNG), VTU with "Cycloid loads/write vtu=true".
 #include "app/command.h"
 #include "app/cycloid_loads_parameters.h"
+#include "app/geometry_parameters.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "stiffness/cycloid_sweep.h"
@@ -50,10 +51,29 @@ std::vector<stiffness::CycloidLoadSettings> profile_settings(const CycloidLoadsP
     profiles.push_back(p.settings);
   if (p.corrected)
   {
-    const geometry::CycloidCorrection c = geometry::solve_cycloid_correction(
-        p.settings.scene.ring, p.contact_arc_ratio, p.clearance_limit);
+    // The correction's own names for its inputs are those of `gearstiff cycloid`.
+    const ParameterNames names{
+        {"Cycloid correction/contact arc ratios", stiffness::cycloid_parameter::contact_arc_ratio},
+        {"Cycloid correction/clearance limit", "Cycloid loads/clearance limit"}};
+    const geometry::CycloidCorrection c =
+        with_parameter_names(names,
+                             [&]
+                             {
+                               return geometry::solve_cycloid_correction(
+                                   p.settings.scene.ring, p.contact_arc_ratio, p.clearance_limit);
+                             });
     stiffness::CycloidLoadSettings s = p.settings;
     s.scene.disc = c.corrected_disc(s.scene.ring);
+    try
+    {
+      geometry::roller_clearances(s.scene.ring, s.scene.disc, 0.); // checks the corrected disc
+    }
+    catch (const InputError& e)
+    {
+      throw InputError("Cycloid loads/clearance limit",
+                       "gives an impossible corrected profile (q_k = " +
+                           format_number(c.roller_radius / mm, 6) + " mm): " + e.reason());
+    }
     profiles.push_back(s);
     context.report.add_text("correction",
                             "ε = " + format_number(p.contact_arc_ratio, 4) +
@@ -171,6 +191,29 @@ void add_sweep_table(Report& report, const ProfileCases& pc,
   }
 }
 
+// The ramp −M_c → +M_c → −M_c as solved: each level once (frictionless, so path independent:
+// the unloading branch repeats the loading one), rows in the order of the ramp.
+void add_torsion_table(Report& report, const std::vector<double>& levels,
+                       const std::vector<ProfileCases>& profiles,
+                       const std::vector<stiffness::CycloidLoadResult>& results)
+{
+  std::vector<std::string> columns{"torque", "branch"}, units{"N·m", "-"};
+  for (const auto& pc : profiles)
+    columns.push_back("rotation_" + pc.name), units.push_back("arcmin");
+  ReportTable& table = report.add_table("cycloid_torsion", columns, units);
+  const unsigned int n = levels.size();
+  for (unsigned int step = 0; step + 1 < 2 * n; ++step)
+  {
+    // Loading branch (+1) up to +M_c, then unloading (−1) back down.
+    const bool loading = step < n;
+    const unsigned int k = loading ? step : 2 * n - 2 - step;
+    std::vector<double> row{levels[k], loading ? 1. : -1.};
+    for (const auto& pc : profiles)
+      row.push_back(results[pc.first_level + k].output_rotation / arcmin);
+    table.add_row(row);
+  }
+}
+
 void plot(CommandContext& context, const std::string& table, const std::string& mode,
           const std::string& png, const std::string& description)
 {
@@ -214,11 +257,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   {
     ProfileCases pc;
     pc.name = bases[b].scene.disc.rollers == 0 ? "nominal" : "corrected";
-    // The position is the ramp's +M_c level when there is a ramp.
-    // Torque levels for the nominal profile only: the mirrored (−M_c) solve of a corrected
-    // profile still fails to start with a roller in contact (docs/cycloid.md, open).
-    const std::vector<double> profile_levels =
-        pc.name == "nominal" ? levels : std::vector<double>{};
+    // The position is the ramp's +M_c level when there is a ramp. Each level of either sign
+    // starts from the flank its torque closes (stiffness/cycloid_sweep.h), so a corrected
+    // profile's backlash lies between its −3% and +3% levels.
+    const std::vector<double>& profile_levels = levels;
     pc.first_level = cases.size();
     pc.levels = profile_levels.size();
     pc.position =
@@ -278,24 +320,14 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                        pc.name + ": rotation between ±3% of M_c");
       report.add_value(prefix + "hysteresis", curve.hysteresis / arcmin, "arcmin",
                        pc.name + ": loading/unloading difference (frictionless: 0)");
+      report.add_value(prefix + "backlash", curve.backlash / arcmin, "arcmin",
+                       pc.name + ": rigid rotation between the flanks (closing rotations ±)");
     }
   }
   add_contact_table(report, "cycloid_rollers", profiles, results, true);
   add_contact_table(report, "cycloid_pins", profiles, results, false);
   if (p.torsional)
-  {
-    std::vector<std::string> columns{"torque"}, units{"N·m"};
-    for (const auto& pc : profiles)
-      columns.push_back("rotation_" + pc.name), units.push_back("arcmin");
-    ReportTable& table = report.add_table("cycloid_torsion", columns, units);
-    for (unsigned int k = 0; k < levels.size(); ++k)
-    {
-      std::vector<double> row{levels[k]};
-      for (const auto& pc : profiles)
-        row.push_back(pc.levels > 0 ? results[pc.first_level + k].output_rotation / arcmin : 0.);
-      table.add_row(row);
-    }
-  }
+    add_torsion_table(report, levels, profiles, results);
   if (p.sweep_positions > 0)
     for (const auto& pc : profiles)
       add_sweep_table(report, pc, results);
@@ -324,7 +356,8 @@ const CommandRegistration registration(Command{
     "Reports P_i, Q_j, the bearing force R and its angle, torque balances, loaded counts, peak\n"
     "pressures, disc von Mises stress and output rotation, for the nominal and the corrected\n"
     "profile, beside the analytic rigid-disc model and the paper (P_max 1711 N, Q_max 3776 N);\n"
-    "torsional stiffness and lost motion from torque levels ±3%, ±50%, ±100% M_c; optionally a\n"
+    "torsional stiffness, lost motion and backlash from torque levels ±3%, ±50%, ±100% M_c (the\n"
+    "ramp -M_c -> +M_c -> -M_c, frictionless: no hysteresis); optionally a\n"
     "crank-angle sweep spread over the MPI ranks.",
     declare_cycloid_loads_parameters, run});
 } // namespace

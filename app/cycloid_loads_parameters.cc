@@ -1,5 +1,6 @@
 #include "app/cycloid_loads_parameters.h"
 
+#include "app/cycloid_scene_parameters.h"
 #include "app/fe_contact_parameters.h"
 #include "app/geometry_parameters.h"
 #include "app/units.h"
@@ -16,58 +17,12 @@ using dealii::Patterns::Bool;
 using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::Selection;
-
-void declare_scene(ParameterHandler& prm, const geometry::CycloidSceneSpec& s)
-{
-  const auto in_mm = [](double v) { return format_number(v / mm, 8); };
-  prm.enter_subsection("Cycloid scene");
-  prm.declare_entry("bore radius", in_mm(s.bore_radius), Double(0.),
-                    "radius of the disc's eccentric-bearing bore (mm; not published)");
-  prm.declare_entry("output pins", std::to_string(s.output_pins), Integer(0, 100),
-                    "output pins, one in each hole of the disc (-; not published)");
-  prm.declare_entry("output pin circle radius", in_mm(s.output_pin_circle_radius), Double(0.),
-                    "radius of the circle through the pin centres (mm; not published)");
-  prm.declare_entry("output pin hole radius", in_mm(s.output_pin_hole_radius), Double(0.),
-                    "radius of the holes in the disc (mm; not published)");
-  prm.declare_entry("output pin radius", in_mm(s.output_pin_radius), Double(0.),
-                    "radius of the output pins (with their sleeves); pin + e <= hole, the "
-                    "difference is the play (mm; not published)");
-  prm.declare_entry("output pin bore radius", in_mm(s.output_pin_bore_radius), Double(0.),
-                    "bore of each pin, held by the rigid output member (mm)");
-  prm.declare_entry("roller pin radius", in_mm(s.roller_pin_radius), Double(0.),
-                    "fixed pin inside each roller (mm)");
-  prm.declare_entry("disc width", in_mm(s.disc_width), Double(0.),
-                    "disc thickness: the plane-stress thickness and the 3D extrusion (mm; not "
-                    "published)");
-  prm.declare_entry("contact clearance", in_mm(s.contact_clearance), Double(0.),
-                    "rollers within this clearance of the disc are contact pairs (mm)");
-  prm.declare_entry("outline points per lobe", std::to_string(s.points_per_lobe),
-                    Integer(5, 100000), "points per lobe of the disc outline spline (-)");
-  prm.leave_subsection();
-}
-
-void parse_scene(ParameterHandler& prm, geometry::CycloidSceneSpec& s)
-{
-  prm.enter_subsection("Cycloid scene");
-  s.bore_radius = prm.get_double("bore radius") * mm;
-  s.output_pins = prm.get_integer("output pins");
-  s.output_pin_circle_radius = prm.get_double("output pin circle radius") * mm;
-  s.output_pin_hole_radius = prm.get_double("output pin hole radius") * mm;
-  s.output_pin_radius = prm.get_double("output pin radius") * mm;
-  s.output_pin_bore_radius = prm.get_double("output pin bore radius") * mm;
-  s.roller_pin_radius = prm.get_double("roller pin radius") * mm;
-  s.disc_width = prm.get_double("disc width") * mm;
-  s.contact_clearance = prm.get_double("contact clearance") * mm;
-  s.points_per_lobe = prm.get_integer("outline points per lobe");
-  prm.leave_subsection();
-}
 } // namespace
 
 void declare_cycloid_loads_parameters(ParameterHandler& prm)
 {
   const geometry::CycloidSceneSpec scene = stiffness::default_cycloid_load_scene();
-  declare_cycloid_disc_parameters(prm);
-  declare_scene(prm, scene);
+  declare_cycloid_scene_parameters(prm, scene);
   declare_scene_mesh_parameters(prm, scene.mesh);
   declare_fe_contact_parameters(prm);
   prm.enter_subsection("Finite elements");
@@ -114,8 +69,7 @@ CycloidLoadsParameters parse_cycloid_loads_parameters(ParameterHandler& prm)
   CycloidLoadsParameters p;
   stiffness::CycloidLoadSettings& s = p.settings;
   s.scene = stiffness::default_cycloid_load_scene();
-  s.scene.ring = parse_cycloid_disc_parameters(prm);
-  parse_scene(prm, s.scene);
+  parse_cycloid_scene_parameters(prm, s.scene);
   s.scene.mesh = parse_scene_mesh_parameters(prm);
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 

@@ -13,6 +13,7 @@
 //
 // Without -o the mesh is generated (all checks run, the report is complete) but not kept.
 #include "app/command.h"
+#include "app/cycloid_scene_parameters.h"
 #include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
 #include "app/units.h"
@@ -110,25 +111,14 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
   prm.leave_subsection();
 
-  declare_cycloid_disc_parameters(prm);
+  // The common entries, then this command's own: the disc's position and the Hertz estimate.
+  declare_cycloid_scene_parameters(prm, geometry::CycloidSceneSpec());
   prm.enter_subsection("Cycloid scene");
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
                     "disc rotation ψ about its own centre (degrees); the disc centre follows "
                     "the eccentric with the ring fixed");
-  prm.declare_entry("bore radius", "25", Double(0.),
-                    "radius of the disc's eccentric-bearing bore (mm; not published)");
-  prm.declare_entry("output pins", "8", Integer(0, 100), "holes for the output pins (-)");
-  prm.declare_entry("output pin circle radius", "55", Double(0.),
-                    "radius of the circle through the hole centres (mm; not published)");
-  prm.declare_entry("output pin hole radius", "12", Double(0.),
-                    "hole radius = pin radius + e (mm; not published)");
-  prm.declare_entry("roller pin radius", "4", Double(0.), "pin inside each roller (mm)");
-  prm.declare_entry("contact clearance", "0.01", Double(0.),
-                    "rollers within this clearance of the disc are contacts (mm)");
   prm.declare_entry("roller force", "1711", Double(0.),
                     "roller force for the Hertz estimate of h_c (N; gear-data.md §4 P_max)");
-  prm.declare_entry("disc width", "15", Double(0.),
-                    "disc thickness (mm; not published), the 3D extrusion length");
   prm.declare_entry("Young's modulus", "210", Double(0.), "Young's modulus (GPa)");
   prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio (-)");
   prm.leave_subsection();
@@ -175,17 +165,10 @@ geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
 geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm)
 {
   geometry::CycloidSceneSpec spec;
-  spec.ring = parse_cycloid_disc_parameters(prm);
+  parse_cycloid_scene_parameters(prm, spec);
   prm.enter_subsection("Cycloid scene");
   spec.disc_rotation = prm.get_double("disc rotation") * degree;
-  spec.bore_radius = prm.get_double("bore radius") * mm;
-  spec.output_pins = prm.get_integer("output pins");
-  spec.output_pin_circle_radius = prm.get_double("output pin circle radius") * mm;
-  spec.output_pin_hole_radius = prm.get_double("output pin hole radius") * mm;
-  spec.roller_pin_radius = prm.get_double("roller pin radius") * mm;
-  spec.contact_clearance = prm.get_double("contact clearance") * mm;
   spec.roller_force = prm.get_double("roller force");
-  spec.disc_width = prm.get_double("disc width") * mm;
   spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
   spec.poisson_ratio = prm.get_double("Poisson's ratio");
   prm.leave_subsection();

@@ -109,18 +109,37 @@ Eigen::Vector2d disc_centre(const geometry::CycloidSceneSpec& scene)
 
 double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign, double overlap)
 {
+  // The smallest clearance in the torque's sense, −overlap, after turning the disc profile by
+  // β·torque_sign: each roller's clearance is linear in β only while its closest point stays
+  // put, which it does not over a backlash of several arcminutes (the closest point slides
+  // along the flank). Newton on the exact clearances, the slope being the lever of the roller
+  // that closes first, from the linear estimate.
   const geometry::CycloidDiscSpec disc = scene.disc.rollers == 0 ? scene.ring : scene.disc;
   const Eigen::Vector2d centre = disc_centre(scene);
-  double smallest = std::numeric_limits<double>::infinity();
-  for (const auto& c : geometry::roller_contacts(scene.ring, disc, scene.disc_rotation))
+  const auto first_to_close = [&](double beta, double& lever)
   {
-    const double lever = torque_sign * cross(c.point - centre, c.normal);
-    if (lever > 0.)
-      smallest = std::min(smallest, (std::max(c.clearance, 0.) + overlap) / lever);
+    geometry::CycloidDiscSpec turned = disc;
+    turned.rotation += torque_sign * beta;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto& c : geometry::roller_contacts(scene.ring, turned, scene.disc_rotation))
+    {
+      const double l = torque_sign * cross(c.point - centre, c.normal);
+      if (l > 0. && (c.clearance + overlap) / l < smallest)
+        smallest = (c.clearance + overlap) / l, lever = l;
+    }
+    if (!std::isfinite(smallest))
+      throw SolverFailure("cycloid closing rotation", "no roller closes in that sense");
+    return smallest; // rad, the further rotation that closes the first roller (linearised)
+  };
+  double lever = 0., beta = 0.;
+  for (int it = 0; it < 50; ++it)
+  {
+    const double step = first_to_close(beta, lever);
+    beta += step;
+    if (std::abs(step * lever) < 1e-12)
+      return std::max(beta, 0.);
   }
-  if (!std::isfinite(smallest))
-    throw SolverFailure("cycloid closing rotation", "no roller closes in that sense");
-  return smallest;
+  throw SolverFailure("cycloid closing rotation", "no convergence in 50 Newton steps");
 }
 
 CycloidAnalyticResult analytic_cycloid_loads(const geometry::CycloidSceneSpec& scene,

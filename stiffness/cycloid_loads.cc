@@ -179,12 +179,14 @@ CycloidLoads<dim>::CycloidLoads(const CycloidLoadSettings& given) : settings(giv
     // The closest roller is closed by a fifth of the overlap tolerance beyond touching: the
     // meshed outlines differ from the exact ones by fractions of a micrometre, and a roller left
     // at a tiny positive gap would not be in the solver's initial active set.
-    const double beta = closing_rotation(settings.scene, settings.output_torque > 0. ? 1. : -1.,
-                                         0.2 * settings.contact.overlap_tolerance);
-    const double signed_beta = settings.output_torque > 0. ? beta : -beta;
-    closed_scene.disc.rotation += signed_beta;
-    closed_scene.output_pin_phase += signed_beta;
-    result.closing_rotation = signed_beta;
+    const double sign = settings.output_torque > 0. ? 1. : -1.;
+    scene_rotation =
+        sign * closing_rotation(settings.scene, sign, 0.2 * settings.contact.overlap_tolerance);
+    closed_scene.disc.rotation += scene_rotation;
+    closed_scene.output_pin_phase += scene_rotation;
+    // The backlash in this sense is the rotation to touching, without the pre-closure (which
+    // the solve undoes: the overlap is a gap of −1 µm that the contact pushes open).
+    result.closing_rotation = sign * closing_rotation(settings.scene, sign);
   }
 }
 
@@ -327,7 +329,17 @@ void CycloidLoads<dim>::setup_problem()
 template <int dim>
 void CycloidLoads<dim>::solve()
 {
-  solve_contact_problem(*problem, result);
+  try
+  {
+    solve_contact_problem(*problem, result);
+  }
+  catch (const InputError& e)
+  {
+    // The engine names the pair ("roller 3") of an initial overlap; what the user can change is
+    // the tolerance (or the mesh: the chords of the meshed outlines overlap the other body by
+    // h²/8ρ).
+    throw InputError(cycloid_parameter::overlap_tolerance, e.parameter() + ": " + e.reason());
+  }
 }
 
 template <int dim>
@@ -404,8 +416,8 @@ void CycloidLoads<dim>::evaluate()
   result.disc_force_balance = (support_force + on_disc).norm() / result.bearing_force;
   result.disc_moment_balance = std::abs(disc_moment) / std::abs(torque);
   result.output_moment_balance = std::abs(output_moment + torque) / std::abs(torque);
-  result.output_rotation = result.closing_rotation + output.rotation;
-  result.disc_rotation_load = result.closing_rotation + bearing.rotation;
+  result.output_rotation = scene_rotation + output.rotation;
+  result.disc_rotation_load = scene_rotation + bearing.rotation;
   result.disc_von_mises =
       max_von_mises(problem->system(), problem->solution(), geometry::scene_ids::first_body);
 

@@ -47,6 +47,7 @@ inline const std::string contact_arc_ratio = "Cycloid loads/contact arc ratio";
 inline const std::string crank_angle = "Cycloid loads/crank angle";
 inline const std::string positions = "Cycloid loads/sweep positions";
 inline const std::string load_steps = "Cycloid loads/torque steps";
+inline const std::string overlap_tolerance = "Contact/Overlap tolerance";
 } // namespace cycloid_parameter
 
 // The §4 drive with output pins in their holes and explicit mesh sizes.
@@ -109,7 +110,8 @@ struct CycloidLoadResult
   double output_moment_balance = 0.; // -, |Σ c_j × Q_j − M_c| / M_c (lines through pin centres)
   // rad, rigid rotation of disc and output member that closes the first roller clearance before
   // any load (the corrected profile's backlash in the torque's sense; 0 for nominal): the solve
-  // starts from there, so that a roller touches, and it is part of the rotations below.
+  // starts from there (and 1 µm beyond, so that a roller touches); the rotations below include
+  // it.
   double closing_rotation = 0.;
   double output_rotation = 0.;      // rad, θ of the output member under M_c
   double disc_rotation_load = 0.;   // rad, β of the disc about its bearing
@@ -146,6 +148,7 @@ private:
   // The scene solved: settings.scene turned rigidly (disc profile and pins) by the closing
   // rotation.
   geometry::CycloidSceneSpec closed_scene;
+  double scene_rotation = 0.; // rad, the turn of closed_scene against settings.scene
   std::unique_ptr<contact::ContactProblem<dim>> problem;
   std::vector<unsigned int> roller_pairs, pin_pairs; // contact pair index of each roller / pin
   CycloidLoadResult result;

@@ -16,113 +16,101 @@ using namespace dealii;
 namespace
 {
 // Results cross ranks as fixed-length rows of doubles (zero on the ranks that did not solve a
-// case, so one sum gathers them all).
-constexpr unsigned int scalar_fields = 28;
-constexpr unsigned int contact_fields = 9;
+// case, so one sum gathers them all): a 1 marking the row as filled, the scalar fields, each
+// roller's and pin's fields, the analytic summary. One list of members serves both directions.
+using Result = CycloidLoadResult;
+using Load = CycloidContactLoad;
+const std::vector<double Result::*> result_reals = {&Result::crank_angle,
+                                                    &Result::disc_rotation,
+                                                    &Result::output_torque,
+                                                    &Result::max_roller_force,
+                                                    &Result::max_pin_force,
+                                                    &Result::bearing_force,
+                                                    &Result::bearing_angle,
+                                                    &Result::bearing_force_direction,
+                                                    &Result::input_torque,
+                                                    &Result::input_torque_ratio,
+                                                    &Result::disc_force_balance,
+                                                    &Result::disc_moment_balance,
+                                                    &Result::output_moment_balance,
+                                                    &Result::closing_rotation,
+                                                    &Result::output_rotation,
+                                                    &Result::disc_rotation_load,
+                                                    &Result::max_contact_pressure,
+                                                    &Result::disc_von_mises,
+                                                    &Result::contact_size,
+                                                    &Result::scene_time,
+                                                    &Result::setup_time,
+                                                    &Result::solve_time,
+                                                    &Result::total_time};
+const std::vector<unsigned int Result::*> result_counts = {
+    &Result::loaded_rollers, &Result::loaded_pins, &Result::n_cells, &Result::n_dofs,
+    &Result::active_set_iterations};
+const std::vector<double Load::*> load_reals = {
+    &Load::angle,   &Load::initial_gap,  &Load::force,          &Load::force_x,
+    &Load::force_y, &Load::max_pressure, &Load::contact_length, &Load::analytic_force};
+const std::vector<double CycloidAnalyticResult::*> analytic_reals = {
+    &CycloidAnalyticResult::max_roller_force, &CycloidAnalyticResult::max_pin_force,
+    &CycloidAnalyticResult::disc_rotation, &CycloidAnalyticResult::output_rotation,
+    &CycloidAnalyticResult::input_torque};
+const unsigned int load_fields = load_reals.size() + 2; // + index, candidate
 
-std::vector<double> pack(const CycloidLoadResult& r, unsigned int length)
+unsigned int row_length(unsigned int rollers, unsigned int pins)
 {
-  std::vector<double> row{1., // marks the row as filled
-                          r.crank_angle,
-                          r.disc_rotation,
-                          r.output_torque,
-                          r.max_roller_force,
-                          r.max_pin_force,
-                          double(r.loaded_rollers),
-                          double(r.loaded_pins),
-                          r.bearing_force,
-                          r.bearing_angle,
-                          r.bearing_force_direction,
-                          r.input_torque,
-                          r.input_torque_ratio,
-                          r.disc_force_balance,
-                          r.disc_moment_balance,
-                          r.output_moment_balance,
-                          r.output_rotation,
-                          r.disc_rotation_load,
-                          r.max_contact_pressure,
-                          r.disc_von_mises,
-                          double(r.n_cells),
-                          double(r.n_dofs),
-                          double(r.active_set_iterations),
-                          r.contact_size,
-                          r.scene_time,
-                          r.setup_time,
-                          r.solve_time,
-                          r.total_time};
-  const auto add = [&row](const std::vector<CycloidContactLoad>& loads)
-  {
-    for (const auto& l : loads)
-      row.insert(row.end(), {double(l.index), l.angle, l.initial_gap, l.force, l.force_x, l.force_y,
-                             l.max_pressure, l.analytic_force, double(l.candidate)});
-  };
-  add(r.rollers);
-  add(r.pins);
-  row.push_back(r.analytic.max_roller_force);
-  row.push_back(r.analytic.max_pin_force);
-  row.push_back(r.analytic.bearing_force.norm());
-  row.push_back(r.analytic.output_rotation);
+  return 1 + result_reals.size() + result_counts.size() + load_fields * (rollers + pins) +
+         analytic_reals.size() + 2; // + the bearing force's components
+}
+
+std::vector<double> pack(const Result& r, unsigned int length)
+{
+  std::vector<double> row{1.};
+  for (const auto m : result_reals)
+    row.push_back(r.*m);
+  for (const auto m : result_counts)
+    row.push_back(r.*m);
+  for (const auto* loads : {&r.rollers, &r.pins})
+    for (const Load& l : *loads)
+    {
+      row.push_back(l.index);
+      for (const auto m : load_reals)
+        row.push_back(l.*m);
+      row.push_back(l.candidate);
+    }
+  for (const auto m : analytic_reals)
+    row.push_back(r.analytic.*m);
+  row.push_back(r.analytic.bearing_force.x());
+  row.push_back(r.analytic.bearing_force.y());
   if (row.size() != length)
     throw SolverFailure("cycloid cases", "result row of unexpected length");
   return row;
 }
 
-CycloidLoadResult unpack(const double* row, unsigned int rollers, unsigned int pins)
+Result unpack(const double* row, unsigned int rollers, unsigned int pins)
 {
-  CycloidLoadResult r;
-  unsigned int i = 1;
-  r.crank_angle = row[i++];
-  r.disc_rotation = row[i++];
-  r.output_torque = row[i++];
-  r.max_roller_force = row[i++];
-  r.max_pin_force = row[i++];
-  r.loaded_rollers = std::lround(row[i++]);
-  r.loaded_pins = std::lround(row[i++]);
-  r.bearing_force = row[i++];
-  r.bearing_angle = row[i++];
-  r.bearing_force_direction = row[i++];
-  r.input_torque = row[i++];
-  r.input_torque_ratio = row[i++];
-  r.disc_force_balance = row[i++];
-  r.disc_moment_balance = row[i++];
-  r.output_moment_balance = row[i++];
-  r.output_rotation = row[i++];
-  r.disc_rotation_load = row[i++];
-  r.max_contact_pressure = row[i++];
-  r.disc_von_mises = row[i++];
-  r.n_cells = std::lround(row[i++]);
-  r.n_dofs = std::lround(row[i++]);
-  r.active_set_iterations = std::lround(row[i++]);
-  r.contact_size = row[i++];
-  r.scene_time = row[i++];
-  r.setup_time = row[i++];
-  r.solve_time = row[i++];
-  r.total_time = row[i++];
-  const auto take =
-      [&](std::vector<CycloidContactLoad>& loads, unsigned int n, std::vector<double>& analytic)
-  {
-    for (unsigned int k = 0; k < n; ++k, i += contact_fields)
+  Result r;
+  const double* x = row + 1;
+  for (const auto m : result_reals)
+    r.*m = *x++;
+  for (const auto m : result_counts)
+    r.*m = std::lround(*x++);
+  for (auto [loads, n] : {std::pair(&r.rollers, rollers), std::pair(&r.pins, pins)})
+    for (unsigned int k = 0; k < n; ++k)
     {
-      CycloidContactLoad l;
-      l.index = std::lround(row[i]);
-      l.angle = row[i + 1];
-      l.initial_gap = row[i + 2];
-      l.force = row[i + 3];
-      l.force_x = row[i + 4];
-      l.force_y = row[i + 5];
-      l.max_pressure = row[i + 6];
-      l.analytic_force = row[i + 7];
-      l.candidate = row[i + 8] > 0.5;
-      loads.push_back(l);
-      analytic.push_back(l.analytic_force);
+      Load l;
+      l.index = std::lround(*x++);
+      for (const auto m : load_reals)
+        l.*m = *x++;
+      l.candidate = *x++ > 0.5;
+      loads->push_back(l);
     }
-  };
-  take(r.rollers, rollers, r.analytic.roller_forces);
-  take(r.pins, pins, r.analytic.pin_forces);
-  r.analytic.max_roller_force = row[i++];
-  r.analytic.max_pin_force = row[i++];
-  r.analytic.bearing_force = Eigen::Vector2d(row[i++], 0.);
-  r.analytic.output_rotation = row[i++];
+  for (const auto m : analytic_reals)
+    r.analytic.*m = *x++;
+  r.analytic.bearing_force.x() = *x++;
+  r.analytic.bearing_force.y() = *x++;
+  for (const Load& l : r.rollers)
+    r.analytic.roller_forces.push_back(l.analytic_force);
+  for (const Load& l : r.pins)
+    r.analytic.pin_forces.push_back(l.analytic_force);
   return r;
 }
 
@@ -166,9 +154,11 @@ void mirror_back(CycloidLoadResult& r, const CycloidLoadSettings& original)
   r.output_torque = original.output_torque;
   r.bearing_force_direction = -r.bearing_force_direction;
   r.output_rotation = -r.output_rotation;
+  r.closing_rotation = -r.closing_rotation;
   r.disc_rotation_load = -r.disc_rotation_load;
   r.analytic.output_rotation = -r.analytic.output_rotation;
   r.analytic.disc_rotation = -r.analytic.disc_rotation;
+  r.analytic.bearing_force.y() = -r.analytic.bearing_force.y();
   for (unsigned int i = 0; i < r.rollers.size(); ++i)
     r.analytic.roller_forces[i] = r.rollers[i].analytic_force;
   r.analytic.pin_forces.clear();
@@ -196,7 +186,7 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
   if (cases.empty())
     return {};
   const unsigned int rollers = cases[0].scene.ring.rollers, pins = cases[0].scene.output_pins;
-  const unsigned int length = scalar_fields + contact_fields * (rollers + pins) + 4;
+  const unsigned int length = row_length(rollers, pins);
   for (const auto& c : cases)
     if (c.scene.ring.rollers != rollers || c.scene.output_pins != pins)
       throw InputError("Cycloid disc/rollers", "every case of a sweep needs the same drive");
@@ -270,17 +260,19 @@ TorsionalCurve torsional_curve(double rated_torque, const std::vector<CycloidLoa
     curve.rotations.push_back(theta);
   }
   const double m = std::abs(rated_torque);
-  const auto at = [&rotation, m](double fraction)
+  const auto solved_at = [&results, m](double fraction) -> const CycloidLoadResult&
   {
-    for (const auto& [t, theta] : rotation)
-      if (std::abs(t - fraction * m) < 1e-9 * m)
-        return theta;
+    for (const auto& r : results)
+      if (std::abs(r.output_torque - fraction * m) < 1e-9 * m)
+        return r;
     throw SolverFailure("torsional curve", "no solve at " + std::to_string(fraction * m) + " N·m");
   };
+  const auto at = [&solved_at](double fraction) { return solved_at(fraction).output_rotation; };
   const double positive = 0.5 * m / (at(1.) - at(0.5));
   const double negative = 0.5 * m / (at(-0.5) - at(-1.));
   curve.stiffness = 0.5 * (positive + negative);
   curve.lost_motion = at(0.03) - at(-0.03);
+  curve.backlash = solved_at(0.03).closing_rotation - solved_at(-0.03).closing_rotation;
   curve.hysteresis = 0.; // frictionless: the unloading branch is the loading one
   return curve;
 }

@@ -35,7 +35,8 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
 std::vector<double> crank_angles(double start, double span, unsigned int positions);
 
 // Torsional stiffness and lost motion from θ(T) (robot-reducer catalogue definitions):
-//  - lost motion: the rotation between the two branches' points at ±3% of the rated torque;
+//  - lost motion: the rotation between the two branches' points at ±3% of the rated torque (for
+//    a profile with play it contains the backlash: each sense is solved from its own flank);
 //  - torsional stiffness: the secant slope between 50% and 100% of the rated torque, mean of
 //    both directions.
 struct TorsionalCurve
@@ -45,6 +46,7 @@ struct TorsionalCurve
   double stiffness = 0.;         // N·m/rad
   double lost_motion = 0.;       // rad
   double hysteresis = 0.; // rad, largest |θ_unload − θ_load| at one torque (0: frictionless)
+  double backlash = 0.;   // rad, closing rotation at +3% minus that at −3% (0: no play)
 };
 // The torque levels of a ramp −M → +M in `steps` equal steps (zero left out: nothing is loaded
 // there) plus ±3%, ±50% and ±100% of M, ascending. Without friction each level is one

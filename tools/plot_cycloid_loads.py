@@ -5,7 +5,8 @@ usage: plot_cycloid_loads.py MODE TABLE.csv OUT.png
   rollers  cycloid_rollers table: P_i against the roller angle, FE bars and analytic markers,
            one colour per profile (nominal, corrected)
   pins     cycloid_pins table: Q_j the same way
-  torsion  cycloid_torsion table: output rotation [arcmin] against the output torque [N·m]
+  torsion  cycloid_torsion table: output rotation [arcmin] against the output torque [N·m] along
+           the ramp -M_c -> +M_c -> -M_c (column branch: +1 loading, -1 unloading)
   sweep    cycloid_sweep_<profile> table: P_i(φ_h) and Q_j(φ_h) traces
 """
 import sys
@@ -43,15 +44,20 @@ def distribution(table, index, symbol, png):
 
 
 def torsion(table, png):
+    """The ramp -M_c -> +M_c -> -M_c: loading branch solid, unloading branch dashed (they
+    coincide without friction); a profile with play jumps across zero torque by its backlash."""
     fig, ax = plt.subplots(figsize=(7, 5))
     for n, key in enumerate(k for k in table if k.startswith("rotation_")):
-        ax.plot(table[key], table["torque"], "o-", color=f"C{n}", label=key[len("rotation_"):])
+        for branch, style, label in ((1, "o-", "loading"), (-1, "x--", "unloading")):
+            rows = [i for i, b in enumerate(table["branch"]) if b == branch]
+            ax.plot([table[key][i] for i in rows], [table["torque"][i] for i in rows], style,
+                    color=f"C{n}", label=f"{key[len('rotation_'):]}, {label}")
     ax.axhline(0, color="k", lw=0.5)
     ax.axvline(0, color="k", lw=0.5)
     ax.set_xlabel("output rotation θ [arcmin]")
     ax.set_ylabel("output torque [N·m]")
     ax.grid(alpha=0.3)
-    ax.legend()
+    ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
 
