@@ -141,6 +141,7 @@ auto run_on_root(MPI_Comm communicator, Work work) -> decltype(work())
   if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
     failure = catch_failure([&]() { value = work(); });
   first_failure(communicator, failure).rethrow();
+  failure.rethrow(); // work stopped for another rank's failure (interruption_point): no value
   return dealii::Utilities::MPI::broadcast(communicator, value, 0);
 }
 } // namespace gearstiff::fem

@@ -176,6 +176,29 @@ TEST(ParallelStop, FailureOfOneRankStopsTheOtherAtItsNextInterruptionPoint)
   EXPECT_EQ(stopped, rank() == 0);
 }
 
+TEST(ParallelStop, StoppedWorkOfRunOnRootReturnsNoValue)
+{
+  // A serial solve inside a loop item (run_on_root on MPI_COMM_SELF, as a sweep position's
+  // scene) that is stopped must pass the stop on, not return a default value.
+  bool finished = false;
+  EXPECT_THROW(fem::distribute_items(MPI_COMM_WORLD, 2,
+                                     [&](const unsigned int i)
+                                     {
+                                       if (i == 1)
+                                         throw SolverFailure("contact active set", "cycling");
+                                       fem::run_on_root(MPI_COMM_SELF,
+                                                        []()
+                                                        {
+                                                          if (poll_until_stopped())
+                                                            throw fem::Stopped();
+                                                          return 1;
+                                                        });
+                                       finished = true;
+                                     }),
+               SolverFailure);
+  EXPECT_FALSE(finished);
+}
+
 TEST(ParallelStop, LowestFailingItemWinsAndTheNextLoopStartsClean)
 {
   // Both ranks fail at once, so both post notices; the lower item (0, an InputError) wins.
