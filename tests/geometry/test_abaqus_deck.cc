@@ -116,7 +116,7 @@ TEST(AbaqusDeck, SliceOfTheGearPair)
   EXPECT_EQ(elements, deck.info.mesh.n_cells);
   EXPECT_EQ(element_sets, (std::set<std::string>{"PINION_BODY", "WHEEL_BODY"}));
   // One surface per modelled flank (geometry/scene_gear_pair.h: pinion tooth j, wheel tooth −j,
-  // three teeth per gear in the default scene), each tooth pair its own contact pair.
+  // three teeth per gear in the default scene); only the pairs in contact are contact pairs.
   EXPECT_EQ(surfaces, (std::set<std::string>{"PINION_BORE", "WHEEL_BORE", "PINION_FLANK_-1",
                                              "PINION_FLANK_0", "PINION_FLANK_1", "WHEEL_FLANK_-1",
                                              "WHEEL_FLANK_0", "WHEEL_FLANK_1"}));
@@ -137,11 +137,12 @@ std::vector<std::string> contact_pairs(const std::string& file)
   return pairs;
 }
 
-// Regression (docs/calculix.md, "Same contact model"): the deck pairs the flanks of exactly the
-// tooth pairs `gearstiff stiffness` pairs, those inside the path of contact, not every modelled
-// pair: pairing the neighbours let ccx carry load through a tip corner that the stiffness
-// analysis leaves free (24/69: k +30 % external, +74 % ring). Split-path pair (gear-data.md §1,
-// ε_α < 2): one pair at the single position, two at the double one, three modelled in both.
+// Regression (docs/calculix.md, "Internal and 24/69 pairs: the same contact model"): the deck pairs
+// the flanks of exactly the tooth pairs `gearstiff stiffness` pairs, those inside the path of
+// contact, not every modelled pair: pairing the neighbours let ccx carry load through a tip corner
+// that the stiffness analysis leaves free (24/69: k +30 % external, +74 % ring). Split-path pair
+// (gear-data.md §1, ε_α < 2): one pair at the single position, two at the double one, three
+// modelled in both.
 TEST(AbaqusDeck, PairsTheToothPairsInContactOnly)
 {
   const Deck single = coarse_slice_deck("deck_pairs_single");
