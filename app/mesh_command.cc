@@ -274,11 +274,12 @@ DeckRequest parse_deck_request(ParameterHandler& prm, const std::string& type)
 
 // The deck next to (or instead of) the .msh; without -o it is written to scratch and removed,
 // so every check of the export still runs.
-void write_deck(const geometry::GearPairSceneSpec& spec, const geometry::SceneInfo& info,
+void write_deck(const geometry::GearPairSceneSpec& spec, const geometry::GearPairScene& scene,
                 const DeckRequest& request, const std::string& msh_name, CommandContext& context)
 {
+  const geometry::SceneInfo& info = scene.info;
   geometry::AbaqusDeckSpec deck =
-      geometry::gear_pair_deck_spec(spec, info, request.friction, request.penalty_factor);
+      geometry::gear_pair_deck_spec(spec, scene, request.friction, request.penalty_factor);
   deck.element_2d = request.element_2d;
   const std::string name = std::filesystem::path(msh_name).replace_extension(".inp").string();
   if (context.writes_files())
@@ -339,13 +340,16 @@ void run(ParameterHandler& prm, CommandContext& context)
   geometry::SceneInfo info;
   try
   {
-    info = gear ? with_parameter_names(gear_scene_parameter_names(), [&]
-                                       { return geometry::write_gear_pair_scene(gear_spec, path); })
-                      .info
+    geometry::GearPairScene gear_scene;
+    if (gear)
+      gear_scene =
+          with_parameter_names(gear_scene_parameter_names(),
+                               [&] { return geometry::write_gear_pair_scene(gear_spec, path); });
+    info = gear      ? gear_scene.info
            : cycloid ? geometry::write_cycloid_scene(cycloid_spec, path)
                      : geometry::write_cylinders_scene(cylinder_spec, path);
     if (deck.write)
-      write_deck(gear_spec, info, deck, file_name, context);
+      write_deck(gear_spec, gear_scene, deck, file_name, context);
   }
   catch (...)
   {

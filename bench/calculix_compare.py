@@ -11,7 +11,10 @@ k = T1/(r_b1²·Δφ) (gear-data.md §1), Δφ from the rigid body's rotation no
 one core (one MPI rank; OMP_NUM_THREADS=1). Peak memory is the process's maximum resident set.
 
 usage: calculix_compare.py GEARSTIFF [--size-scale s] [--factors f1,f2] [--work DIR]
-       [--positions single,double] [--csv FILE]
+       [--positions single,double] [--csv FILE] [--internal]
+With --internal the wheel is the ring of gear-data.md §2's planetary stage geometry as
+`gearstiff stiffness` builds it for `Gear pair/Wheel/internal=true` (docs/internal-gears.md): the
+same comparison for a ring–planet pair.
 """
 import argparse
 import json
@@ -33,6 +36,12 @@ LADDER_SIZES = {"Mesh/contact size": 0.04, "Mesh/body size": 1.0, "Mesh/rim size
                 "Mesh/growth rate": 0.5}
 SCENE = ["Gear pair scene/rim=full", "Gear pair scene/pinion teeth modelled=3",
          "Gear pair scene/wheel teeth modelled=3"]
+# tests/stiffness/test_internal_mesh_stiffness.cc's ring-planet pair: planet 24 / ring 69,
+# m = 2.5 mm, ring tip at an addendum of 0.5·m (a standard ring tip interferes), rim 5·m.
+INTERNAL = ["Gear pair/Pinion/teeth=24", "Gear pair/Wheel/teeth=69",
+            "Gear pair/Pinion/tip diameter=0", "Gear pair/Wheel/internal=true",
+            "Gear pair/Wheel/tip diameter=170", "Gear pair/Wheel/bore diameter=0",
+            "Gear pair scene/wheel rim thickness=12.5"]
 ANSYS_SINGLE = 327.222  # N/um, gear-data.md §1 k'_j
 
 
@@ -223,6 +232,10 @@ def main():
     parser.add_argument("--accuracy-csv", default="",
                         help="append the penalty-corrected CalculiX single-pair point in "
                              "bench/accuracy_results.csv's columns to this file")
+    parser.add_argument("--extra", action="append", default=[], metavar="SECTION/KEY=VALUE",
+                        help="a further setting of both solvers' scene (repeatable)")
+    parser.add_argument("--internal", action="store_true",
+                        help="an internal wheel (ring-planet pair, docs/internal-gears.md)")
     parser.add_argument("--reference", type=float, default=0.,
                         help="converged k (N/um) for the accuracy CSV's error_reference")
     args = parser.parse_args()
@@ -231,9 +244,16 @@ def main():
     factors = [float(f) for f in args.factors.split(",")]
     env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
     settings = scene_settings(LADDER_SIZES if args.ladder else SIZES, args.size_scale)
+    if args.internal:
+        settings += INTERNAL
+    settings += args.extra
     os.makedirs(args.work, exist_ok=True)
 
-    pair = json.loads(subprocess.run([args.gearstiff, "gear-pair", "--json"], check=True,
+    pair_command = [args.gearstiff, "gear-pair", "--json"]
+    for s in settings:
+        if s.startswith("Gear pair/"):
+            pair_command += ["--set", s]
+    pair = json.loads(subprocess.run(pair_command, check=True,
                                      capture_output=True, text=True).stdout)["values"]
     r_b1 = 1e-3 * value(pair, "pinion_base_radius")
     root = 0.5e-3 * value(pair, "pinion_root_diameter")

@@ -85,11 +85,13 @@ struct AbaqusDeckSpec
   std::string title;            // *HEADING text
 };
 
-// The deck for the gear-pair scene: pinion flanks (slave) on wheel flanks (master), pinion bore
-// driven by spec.pinion_torque, wheel bore fixed, Young's modulus and Poisson's ratio of `spec`;
+// The deck for the gear-pair scene: pinion flanks (slave) on wheel flanks (master) of the tooth
+// pairs inside the path of contact (scene.contact_pairs, the pairs `gearstiff stiffness` pairs;
+// see gear_pair_deck_spec in the .cc for why not every modelled pair), pinion bore driven by
+// spec.pinion_torque, wheel bore fixed, Young's modulus and Poisson's ratio of `spec`;
 // `penalty_factor` (-) times E/h_c gives the penalty slope, the closing rotation is a tenth of
 // the rotation an ISO-like 14 N/(mm·µm) stiffness would give.
-AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const SceneInfo& info,
+AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPairScene& scene,
                                    double friction, double penalty_factor);
 
 // Writes `inp_file` from the mesh of `info.file`. InputError("Abaqus deck/...") for a spec that

@@ -67,9 +67,10 @@ void expect_same_mesh(const geometry::Element2D element_2d, const std::string& b
   spec.mesh.body_size = 1.5e-3;
   spec.pinion_teeth_modelled = 3;
   spec.wheel_teeth_modelled = 3;
-  const geometry::SceneInfo info =
-      geometry::write_gear_pair_scene(spec, work_file(base + ".msh")).info;
-  geometry::AbaqusDeckSpec deck = geometry::gear_pair_deck_spec(spec, info, 0.01, 50.);
+  const geometry::GearPairScene scene =
+      geometry::write_gear_pair_scene(spec, work_file(base + ".msh"));
+  const geometry::SceneInfo& info = scene.info;
+  geometry::AbaqusDeckSpec deck = geometry::gear_pair_deck_spec(spec, scene, 0.01, 50.);
   deck.element_2d = element_2d;
   geometry::write_abaqus_deck(info, deck, work_file(base + ".inp"));
 
@@ -118,9 +119,9 @@ TEST(AbaqusRoundTrip, SliceIsNotA2DMesh)
   geometry::GearPairSceneSpec spec;
   spec.mesh.contact_size = 0.1e-3;
   spec.mesh.body_size = 1.5e-3;
-  const geometry::SceneInfo info =
-      geometry::write_gear_pair_scene(spec, work_file("slice.msh")).info;
-  geometry::write_abaqus_deck(info, geometry::gear_pair_deck_spec(spec, info, 0.01, 50.),
+  const geometry::GearPairScene scene =
+      geometry::write_gear_pair_scene(spec, work_file("slice.msh"));
+  geometry::write_abaqus_deck(scene.info, geometry::gear_pair_deck_spec(spec, scene, 0.01, 50.),
                               work_file("slice.inp"));
   dealii::Triangulation<2> tria;
   try
