@@ -242,15 +242,20 @@ void TorsionalModel::acceleration(double time, const double* angle, const double
               : mesh_state(meshes[m], time);
     cached_time = time;
   }
+  // Always three terms, without branches: a pair's unused third term has c = arm = 0 on DOF 0,
+  // which adds exact zeros (compile_meshes).
   for (std::size_t m = 0; m < meshes.size(); ++m)
   {
     const CompiledMesh& mesh = meshes[m];
     const MeshStiffnessState& state = cached_states[m];
-    const double force =
-        state.stiffness * deflection(mesh, angle) + mesh.damping * deflection(mesh, velocity);
+    const unsigned int* dof = mesh.dof;
+    const double* c = mesh.c;
+    const double delta = c[0] * angle[dof[0]] + c[1] * angle[dof[1]] + c[2] * angle[dof[2]];
+    const double rate = c[0] * velocity[dof[0]] + c[1] * velocity[dof[1]] + c[2] * velocity[dof[2]];
+    const double force = state.stiffness * delta + mesh.damping * rate;
     const double friction = mesh.mu * state.friction_direction;
-    for (unsigned int i = 0; i < mesh.n_terms; ++i)
-      result[mesh.dof[i]] -= (mesh.c[i] + friction * mesh.arm[i]) * force;
+    for (unsigned int i = 0; i < 3; ++i)
+      result[dof[i]] -= (c[i] + friction * mesh.arm[i]) * force;
   }
   for (unsigned int i = 0; i < n_gears; ++i)
     result[i] *= inverse_inertia[i];

@@ -38,10 +38,12 @@ def shade_window(ax, window):
     ax.axvspan(start, end, color="0.9", zorder=0, label="steady-state window")
 
 
-def finish(fig, ax, png, legend_loc="best", legend_size=8):
-    """Grid, legend and layout of every chart of this script, written to `png`."""
+def finish(fig, ax, xlabel, ylabel, png, legend_at="best", legend_size=8):
+    """Labels, grid and legend of every chart of this script, then the PNG."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
     ax.grid(True, lw=0.3)
-    ax.legend(loc=legend_loc, fontsize=legend_size)
+    ax.legend(loc=legend_at, fontsize=legend_size)
     fig.tight_layout()
     fig.savefig(png, dpi=120)
 
@@ -55,15 +57,14 @@ def time_series(kind, path, window, png):
         if h.startswith(prefix):
             ax.plot(t, c[h], lw=0.7, label=h)
     shade_window(ax, window)
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel({"vibration": "angle relative to nominal rotation [µrad]",
-                   "kv": "K_v = F / F_nominal [-]",
-                   "stiffness": "mesh stiffness [N/µm]"}[kind])
     if kind == "stiffness":
         # Stiffness repeats every mesh period: show the last few periods of the window.
         start, end = (float(x) for x in window.split(","))
         ax.set_xlim(max(start, end - (end - start) / 8), end)
-    finish(fig, ax, png)
+    finish(fig, ax, "time [s]",
+           {"vibration": "angle relative to nominal rotation [µrad]",
+            "kv": "K_v = F / F_nominal [-]",
+            "stiffness": "mesh stiffness [N/µm]"}[kind], png)
 
 
 def resonance(path, png):
@@ -92,9 +93,7 @@ def resonance(path, png):
         if clipped:
             ax.plot(clipped, [top * 0.98] * len(clipped), "^", color="C0",
                     label="K_v max beyond the scale")
-    ax.set_xlabel("input speed n1 [rpm]")
-    ax.set_ylabel("dynamic factor K_v [-]")
-    finish(fig, ax, png)
+    finish(fig, ax, "input speed n1 [rpm]", "dynamic factor K_v [-]", png)
 
 
 def campbell(path, modes_path, speeds, png):
@@ -118,10 +117,8 @@ def campbell(path, modes_path, speeds, png):
         top = 1.1 * max(frequencies)
     ax.set_xlim(low, high)
     ax.set_ylim(0, top)
-    ax.set_xlabel("input speed [rpm]")
-    ax.set_ylabel("frequency [Hz]")
     ax.set_title("Campbell chart: mesh orders 1 (solid), 2 (dashed), 3 (dotted); modes (grey)")
-    finish(fig, ax, png, legend_loc="upper left", legend_size=7)
+    finish(fig, ax, "input speed [rpm]", "frequency [Hz]", png, "upper left", 7)
 
 
 def main(argv):
