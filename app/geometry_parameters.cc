@@ -90,11 +90,11 @@ void declare_gear_scene_parameters(ParameterHandler& prm,
   prm.declare_entry("wheel bore radius", format_number(defaults.wheel_bore_radius / mm, 10),
                     Double(0.),
                     "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
-  prm.declare_entry("wheel rim thickness", format_number(defaults.wheel_rim_thickness / mm, 10),
-                    Double(0.),
-                    "internal wheel (ring): rim thickness under the root circle [mm], the rim's "
-                    "outer circle held fixed; 0 = outer radius from 'wheel bore radius' or Gear "
-                    "pair/Wheel/bore diameter (the ring's outer diameter); at least one module");
+  prm.declare_entry(
+      "wheel rim thickness", format_number(defaults.wheel_rim_thickness / mm, 10), Double(0.),
+      "internal wheel (ring): rim thickness under the root circle [mm], the rim's "
+      "outer circle held (see wheel supports); 0 = outer radius from 'wheel bore radius' or Gear "
+      "pair/Wheel/bore diameter (the ring's outer diameter); at least one module");
   prm.declare_entry("wheel supports", std::to_string(defaults.wheel_supports), Integer(0),
                     "internal wheel with a full rim: 0 = the whole outer circle held; N >= 2 = "
                     "held only on N evenly spaced pads (bolted or splined into a rigid housing), "
