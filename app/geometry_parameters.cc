@@ -90,11 +90,17 @@ void declare_gear_scene_parameters(ParameterHandler& prm,
   prm.declare_entry("wheel bore radius", format_number(defaults.wheel_bore_radius / mm, 10),
                     Double(0.),
                     "wheel bore radius [mm]; 0 = half of Gear pair/Wheel/bore diameter");
-  prm.declare_entry("wheel rim thickness", format_number(defaults.wheel_rim_thickness / mm, 10),
-                    Double(0.),
-                    "internal wheel (ring): rim thickness under the root circle [mm], the rim's "
-                    "outer circle held fixed; 0 = outer radius from 'wheel bore radius' or Gear "
-                    "pair/Wheel/bore diameter (the ring's outer diameter); at least one module");
+  prm.declare_entry(
+      "wheel rim thickness", format_number(defaults.wheel_rim_thickness / mm, 10), Double(0.),
+      "internal wheel (ring): rim thickness under the root circle [mm], the rim's "
+      "outer circle held (see wheel supports); 0 = outer radius from 'wheel bore radius' or Gear "
+      "pair/Wheel/bore diameter (the ring's outer diameter); at least one module");
+  prm.declare_entry("wheel supports", std::to_string(defaults.wheel_supports), Integer(0),
+                    "internal wheel with a full rim: 0 = the whole outer circle held; N >= 2 = "
+                    "held only on N evenly spaced pads (bolted or splined into a rigid housing), "
+                    "the mesh midway between two [-]");
+  prm.declare_entry("wheel support width", format_number(defaults.wheel_support_width / mm, 10),
+                    Double(0.), "arc length of one support pad on the ring's outer circle [mm]");
   prm.declare_entry("rim", defaults.rim == geometry::RimModel::full ? "full" : "sector",
                     Selection("sector|full"),
                     std::string("sector: rim of the modelled teeth only, cut radially (cut faces "
@@ -112,6 +118,8 @@ void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneS
   spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
   spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
   spec.wheel_rim_thickness = prm.get_double("wheel rim thickness") * mm;
+  spec.wheel_supports = prm.get_integer("wheel supports");
+  spec.wheel_support_width = prm.get_double("wheel support width") * mm;
   spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
   prm.leave_subsection();
 }
@@ -127,6 +135,8 @@ ParameterNames gear_scene_parameter_names()
           {field::pinion_bore_radius, section + "pinion bore radius"},
           {field::wheel_bore_radius, section + "wheel bore radius"},
           {field::wheel_rim_thickness, section + "wheel rim thickness"},
+          {field::wheel_supports, section + "wheel supports"},
+          {field::wheel_support_width, section + "wheel support width"},
           {field::both_flanks, section + "both flanks"},
           {field::pinion_torque, section + "pinion torque"},
           {field::young_modulus, section + "Young's modulus"},

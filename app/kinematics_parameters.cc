@@ -1,11 +1,18 @@
 #include "app/kinematics_parameters.h"
 
 #include "app/units.h"
+#include "errors/errors.h"
+
+#include <string>
 
 namespace gearstiff::app
 {
 namespace
 {
+// m, along the line of action: 2% of a 2.5 mm module, well above the bisection's 1e-12 m and
+// below any contact size, so the ring tip ends just outside the planet's fillet.
+constexpr double default_ring_tip_margin = 0.05e-3;
+
 void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gear)
 {
   using dealii::Patterns::Bool;
@@ -23,8 +30,11 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
                     "profile shift coefficient x [-] (DIN 3960: > 0 thickens the tooth)");
   prm.declare_entry("face width", format_number(gear.face_width / mm, 12), Double(0.),
                     "face width b [mm]");
-  prm.declare_entry("tip diameter", format_number(gear.tip_diameter / mm, 12), Double(0.),
-                    "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x)");
+  prm.declare_entry("tip diameter", format_number(gear.tip_diameter / mm, 12),
+                    dealii::Patterns::Anything(),
+                    "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x); auto (internal "
+                    "wheel) = the longest ring teeth that clear the pinion's involute by 'Gear "
+                    "pair/ring tip margin'");
   prm.declare_entry("internal", gear.internal ? "true" : "false", Bool(),
                     "ring gear (teeth inside); only the wheel may be internal");
   prm.declare_entry("addendum coefficient", format_number(gear.addendum_coefficient, 12),
@@ -41,7 +51,30 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
                     "rim thickness s_R under the root [mm] for ISO C_R (webbed blanks)");
 }
 
-kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm)
+// "auto", or a diameter >= 0 in mm (InputError naming the parameter otherwise).
+bool parse_tip_diameter(const std::string& text, bool wheel, kinematics::GearSpec& gear)
+{
+  if (text == "auto")
+    return true;
+  const std::string parameter = kinematics::gear_parameter_name(wheel, "tip diameter");
+  std::size_t used = 0;
+  double value = -1.;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !(value >= 0.))
+    throw InputError(parameter, "'" + text + "' is neither a diameter >= 0 [mm] nor auto");
+  gear.tip_diameter = value * mm;
+  return false;
+}
+
+// `automatic_tip` is set when the tip diameter reads "auto" (resolved once both gears are known).
+kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm, bool wheel, bool& automatic_tip)
 {
   kinematics::GearSpec gear;
   gear.teeth = static_cast<unsigned int>(prm.get_integer("teeth"));
@@ -50,7 +83,7 @@ kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm)
   gear.helix_angle = prm.get_double("helix angle") * degree;
   gear.profile_shift = prm.get_double("profile shift");
   gear.face_width = prm.get_double("face width") * mm;
-  gear.tip_diameter = prm.get_double("tip diameter") * mm;
+  automatic_tip = parse_tip_diameter(prm.get("tip diameter"), wheel, gear);
   gear.internal = prm.get_bool("internal");
   gear.addendum_coefficient = prm.get_double("addendum coefficient");
   gear.dedendum_coefficient = prm.get_double("dedendum coefficient");
@@ -69,6 +102,10 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("centre distance", format_number(pair.centre_distance / mm, 12),
                     dealii::Patterns::Double(0.),
                     "working centre distance a_w [mm]; 0 = zero backlash from the profile shifts");
+  prm.declare_entry("ring tip margin", format_number(default_ring_tip_margin / mm, 12),
+                    dealii::Patterns::Double(0.),
+                    "for Wheel/tip diameter = auto: distance along the line of action from the "
+                    "pinion's form circle to the start of contact A [mm]");
   prm.enter_subsection("Pinion");
   declare_gear(prm, pair.pinion);
   prm.leave_subsection();
@@ -90,13 +127,22 @@ kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& pr
   kinematics::GearPairSpec pair;
   prm.enter_subsection("Gear pair");
   pair.centre_distance = prm.get_double("centre distance") * mm;
+  const double ring_tip_margin = prm.get_double("ring tip margin") * mm;
+  bool automatic_pinion_tip = false, automatic_wheel_tip = false;
   prm.enter_subsection("Pinion");
-  pair.pinion = parse_gear(prm);
+  pair.pinion = parse_gear(prm, false, automatic_pinion_tip);
   prm.leave_subsection();
   prm.enter_subsection("Wheel");
-  pair.wheel = parse_gear(prm);
+  pair.wheel = parse_gear(prm, true, automatic_wheel_tip);
   prm.leave_subsection();
   prm.leave_subsection();
+  if (automatic_pinion_tip)
+    throw InputError(kinematics::gear_parameter_name(false, "tip diameter"),
+                     "auto is offered for an internal wheel only");
+  // The longest ring teeth that keep the margin (kinematics/gear_pair.h); InputError naming
+  // Gear pair/Wheel/tip diameter for an external wheel or when no tip qualifies.
+  if (automatic_wheel_tip)
+    pair.wheel.tip_diameter = kinematics::clearing_ring_tip_diameter(pair, ring_tip_margin);
   return pair;
 }
 

@@ -177,7 +177,42 @@ struct GearBodySpec
   int material_id, bore_id, cut_id;
   std::function<int(int)> flank_id; // of the tooth index in the gear's own frame
   double bore_radius;
+  unsigned int supports = 0; // -, full rim: 0 holds the whole bore circle, else N pads of it
+  double support_width = 0.; // m, arc length of one pad
 };
+
+// Appends `added` to `pieces`, starting it exactly where the last piece ends (angles that
+// should coincide differ in the last bit once computed by two arcs).
+void append_continuous(std::vector<BoundaryPiece>& pieces, std::vector<BoundaryPiece> added)
+{
+  if (!pieces.empty())
+    added.front().points.front() = pieces.back().points.back();
+  pieces.insert(pieces.end(), added.begin(), added.end());
+}
+
+// The bore circle of a full rim: held whole (`bore_id`), or only on N pads of arc length
+// `support_width` centred at polar angles (k + ½)·2π/N about the centre, the arcs between them
+// free. In the scene frame polar angle 0 about a ring's centre points at the pitch point, so the
+// mesh lies midway between two pads: the rim there bends as a curved beam between its supports.
+BoundaryLoop bore_loop(const GearBodySpec& body_spec, const Eigen::Vector2d& centre)
+{
+  if (body_spec.supports == 0)
+    return circle_loop(centre, body_spec.bore_radius, body_spec.bore_id);
+  BoundaryLoop loop;
+  const double half_pad = 0.5 * body_spec.support_width / body_spec.bore_radius;
+  const double spacing = 2. * M_PI / body_spec.supports;
+  for (unsigned int k = 0; k < body_spec.supports; ++k)
+  {
+    const double middle = (k + 0.5) * spacing;
+    append_continuous(loop.pieces, arc_pieces(centre, body_spec.bore_radius, middle - half_pad,
+                                              middle + half_pad, body_spec.bore_id));
+    append_continuous(loop.pieces,
+                      arc_pieces(centre, body_spec.bore_radius, middle + half_pad,
+                                 middle + spacing - half_pad, scene_ids::free_surface));
+  }
+  loop.pieces.back().points.back() = loop.pieces.front().points.front();
+  return loop;
+}
 
 PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
                      const Eigen::Vector2d& centre, double rotation, int first, int last,
@@ -216,7 +251,7 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
       for (auto& piece : arc_pieces(centre, root_radius, end_angle, start_angle + 2. * M_PI,
                                     scene_ids::free_surface))
         body.outer.pieces.push_back(piece);
-    body.holes.push_back(circle_loop(centre, body_spec.bore_radius, body_spec.bore_id));
+    body.holes.push_back(bore_loop(body_spec, centre));
   }
   // A ring's "bore" is its outer boundary, the teeth line the hole it encloses.
   if (tooth.internal && rim == RimModel::full)
@@ -271,6 +306,34 @@ int window_start(const std::vector<int>& contacting, unsigned int count)
   return static_cast<int>(std::floor(centre - 0.5 * (count - 1.) + 1e-9));
 }
 
+// Pads on a ring's outer circle: a full-rim internal wheel, at least two pads, each with a free
+// arc at least as long as itself between it and the next (the outer radius is checked against
+// the pads once it is known, in write_gear_pair_scene).
+void check_wheel_supports(const GearPairSceneSpec& spec)
+{
+  if (spec.wheel_supports == 0)
+    return;
+  if (!spec.pair.wheel.internal || spec.rim != RimModel::full)
+    throw InputError(scene_field::wheel_supports,
+                     "applies to an internal wheel with a full rim only (0 otherwise)");
+  if (spec.wheel_supports < 2)
+    throw InputError(scene_field::wheel_supports,
+                     "must be 0 (whole outer circle held) or at least 2 pads");
+  if (!(spec.wheel_support_width > 0.))
+    throw InputError(scene_field::wheel_support_width, "must be positive");
+}
+
+// The pads and the free arcs between them fit on the ring's outer circle of `radius` (m).
+void check_support_spacing(const GearPairSceneSpec& spec, double radius)
+{
+  if (spec.wheel_supports > 0 &&
+      2. * spec.wheel_supports * spec.wheel_support_width > 2. * M_PI * radius)
+    throw InputError(scene_field::wheel_support_width,
+                     "leaves less free rim than pad between the " +
+                         std::to_string(spec.wheel_supports) + " pads on the outer circle (" +
+                         std::to_string(2. * M_PI * radius * 1e3) + " mm long)");
+}
+
 // The spec's own checks (the pair's are kinematics'): load, material, flank choice.
 void check_scene_spec(const GearPairSceneSpec& spec)
 {
@@ -279,6 +342,7 @@ void check_scene_spec(const GearPairSceneSpec& spec)
   if (spec.wheel_rim_thickness > 0. && !spec.pair.wheel.internal)
     throw InputError(scene_field::wheel_rim_thickness,
                      "applies to an internal wheel only (external gears: bore radius)");
+  check_wheel_supports(spec);
   if (spec.pair.pinion.helix_angle != 0. || spec.pair.wheel.helix_angle != 0.)
     throw InputError(kinematics::gear_parameter_name(false, "helix angle"),
                      "the gear-pair scene models spur gears only (helix angle 0)");
@@ -483,6 +547,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   scene.wheel_bore_radius =
       bore_radius(spec.wheel_bore_radius, spec.wheel_rim_thickness, spec.pair.wheel, true,
                   gears.wheel, scene_field::wheel_bore_radius);
+  check_support_spacing(spec, scene.wheel_bore_radius);
   check_teeth_modelled(spec.pinion_teeth_modelled, spec.pair.pinion.teeth, spec.rim,
                        scene_field::pinion_teeth_modelled);
   check_teeth_modelled(spec.wheel_teeth_modelled, spec.pair.wheel.teeth, spec.rim,
@@ -540,7 +605,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   model.bodies.push_back(
       gear_body({"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
                  [&wheel_tooth](int k) { return wheel_flank_id(mate_tooth(wheel_tooth, k)); },
-                 scene.wheel_bore_radius},
+                 scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width},
                 gears.wheel, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last,
                 spec.rim, spec.both_flanks));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},

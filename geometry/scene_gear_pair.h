@@ -4,8 +4,9 @@
 // mesh, contact points predicted along the line of action.
 //
 // Internal pairs (ring wheel): the ring centre at (−a_w, 0), its rim held on its outer circle
-// (boundary id "wheel bore"), its loaded flank side −1, and pinion tooth j meshes ring tooth +j;
-// T2 lies behind T1 on the line of action.
+// (boundary id "wheel bore") — the whole circle, or N pads of it (a ring bolted or splined into a
+// rigid housing at N points, the mesh midway between two) — its loaded flank side −1, and pinion
+// tooth j meshes ring tooth +j; T2 lies behind T1 on the line of action.
 //
 // Scene frame: pinion centre at the origin, wheel centre at (a_w, 0); the pinion drives counter-
 // clockwise, so the line of action runs from T1 = r_b1·(cos α_wt, −sin α_wt) on the pinion base
@@ -57,6 +58,11 @@ struct GearPairSceneSpec
   // m, internal wheel: rim thickness under the root circle, which sets its outer radius (held
   // fixed); 0: the outer radius is wheel_bore_radius (or half of pair.wheel.bore_diameter).
   double wheel_rim_thickness = 0.;
+  // -, internal wheel with a full rim: 0 holds its whole outer circle; N ≥ 2 holds it only on N
+  // pads of width wheel_support_width, evenly spaced, the pitch point midway between two (the
+  // rim bends between the pads, as a ring bolted or splined into a rigid housing).
+  unsigned int wheel_supports = 0;
+  double wheel_support_width = 10e-3; // m, arc length of one pad on the outer circle
   RimModel rim = RimModel::sector;
   bool both_flanks = false; // also mark the unloaded flanks as candidate contact surfaces
 
@@ -83,6 +89,8 @@ inline const std::string wheel_teeth_modelled = "scene.wheel_teeth_modelled";
 inline const std::string pinion_bore_radius = "scene.pinion_bore_radius";
 inline const std::string wheel_bore_radius = "scene.wheel_bore_radius";
 inline const std::string wheel_rim_thickness = "scene.wheel_rim_thickness";
+inline const std::string wheel_supports = "scene.wheel_supports";
+inline const std::string wheel_support_width = "scene.wheel_support_width";
 inline const std::string both_flanks = "scene.both_flanks";
 inline const std::string pinion_torque = "scene.pinion_torque";
 inline const std::string young_modulus = "scene.young_modulus";

@@ -39,6 +39,33 @@ double polar_radius(const Point<dim>& p, double centre_x)
 {
   return std::hypot(p[0] - centre_x, p[1]);
 }
+
+// The pair's resultant against the line of action u = (sin α_wt, cos α_wt) (the ring pushes
+// the pinion along −u) and the roll lengths of its closed pinion nodes (the pinion centre is
+// the scene origin), ToothPairLoad.
+template <int dim>
+void locate_load(const contact::PairResult<dim>& contact, double working_pressure_angle,
+                 double pinion_base_radius, ToothPairLoad& load)
+{
+  const double along = -(contact.force_on_slave[0] * std::sin(working_pressure_angle) +
+                         contact.force_on_slave[1] * std::cos(working_pressure_angle));
+  const double across = -(contact.force_on_slave[1] * std::sin(working_pressure_angle) -
+                          contact.force_on_slave[0] * std::cos(working_pressure_angle));
+  load.resultant = std::hypot(along, across);
+  load.force_deviation = std::atan2(across, along);
+  load.closed_roll_min = std::numeric_limits<double>::max();
+  load.closed_roll_max = 0.;
+  for (const auto& point : contact.points)
+    if (point.state != contact::NodeState::open)
+    {
+      const double r = polar_radius(point.position, 0.);
+      const double roll = std::sqrt(std::max(0., r * r - pinion_base_radius * pinion_base_radius));
+      load.closed_roll_min = std::min(load.closed_roll_min, roll);
+      load.closed_roll_max = std::max(load.closed_roll_max, roll);
+    }
+  if (load.closed_roll_min > load.closed_roll_max)
+    load.closed_roll_min = load.closed_roll_max = load.position; // no closed node
+}
 } // namespace
 
 geometry::GearPairSceneSpec default_stiffness_scene()
@@ -240,6 +267,7 @@ void GearMeshStiffness<dim>::evaluate()
     load.max_pressure = pair_result.max_pressure;
     load.contact_length = pair_result.contact_length;
     load.closed_nodes = pair_result.n_closed;
+    locate_load(pair_result, pair.working_pressure_angle, result.pinion_base_radius, load);
     result.loaded_pairs += load.load_share > 1e-6;
     result.max_contact_pressure = std::max(result.max_contact_pressure, load.max_pressure);
   }

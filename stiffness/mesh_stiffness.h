@@ -66,12 +66,21 @@ struct ToothPairLoad
   double max_pressure = 0.;  // Pa
   double contact_length = 0; // m, extent of the closed nodes (2D: across the profile)
   unsigned int closed_nodes = 0;
+  // Where the load acts. The FE contact forces act along the pinion flank's normals at the
+  // closed nodes; the normal at roll length ℓ_i is the line of action turned by −(ℓ_i − ℓ)/r_b1
+  // about the pinion axis, so the pair's resultant leaves the line of action when the loaded
+  // zone is not centred on the kinematic point ℓ (tooth deflection, a zone cut off at a tip).
+  double resultant = 0.;       // N, magnitude of the pair's contact force on the pinion
+  double force_deviation = 0.; // rad, CCW angle of that force from −u
+  double closed_roll_min = 0.; // m, smallest roll length √(r² − r_b1²) of a closed pinion node
+  double closed_roll_max = 0.; // m, largest
 
   // Every field, for boost-style serialisation (results cross MPI ranks, fem/parallel.h).
   template <class Archive>
   void serialize(Archive& archive, const unsigned int /*version*/)
   {
     archive& pair& position& normal_force& load_share& max_pressure& contact_length& closed_nodes;
+    archive& resultant& force_deviation& closed_roll_min& closed_roll_max;
   }
 };
 
@@ -92,7 +101,8 @@ struct GearMeshStiffnessResult
   double mesh_stiffness = 0.;     // N/m, T1/(r_b1²·Δφ)
   double transmission_error = 0.; // m, r_b1·Δφ: the loaded transmission error (wheel fixed)
   double wheel_torque = 0.;       // N·m, reaction of the fixed wheel bore about its axis
-  double torque_ratio = 0.;       // -, |T_wheel / T1| (= r_b2/r_b1 without friction)
+  double torque_ratio = 0.;       // -, |T_wheel / T1| (= r_b2/r_b1 without friction, for
+                                  //    forces on the line of action: ToothPairLoad)
   double pinion_hub_torque = 0.;  // N·m, reaction at the pinion hub (−T1 to solver precision)
   // Contact and root.
   std::vector<ToothPairLoad> pairs; // modelled pairs with contact candidates, by j
