@@ -1,17 +1,8 @@
 #include "app/units.h"
 
-#include <sstream>
 
 namespace gearstiff::app
 {
-std::string format_number(double value, int precision)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
-}
-
 std::string shortened(const std::string& text, const unsigned int length)
 {
   if (text.size() <= length)

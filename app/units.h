@@ -1,8 +1,9 @@
 // Units of the parameter files and reports (mm, degrees, rpm) in SI, the units every module
 // computes in, and the text form of numbers in parameter defaults, report texts and the
-// parameter files the commands write.
+// parameter files the commands write (gearstiff::format_number, errors/format.h).
 #pragma once
 
+#include "errors/format.h"
 #include "errors/limits.h"
 
 #include <cmath>
@@ -13,9 +14,6 @@ namespace gearstiff::app
 constexpr double mm = 1e-3;            // m
 constexpr double degree = M_PI / 180.; // rad
 constexpr double rpm = M_PI / 30.;     // rad/s
-
-// `value` with `precision` significant digits, in the default notation of std::ostream.
-std::string format_number(double value, int precision);
 
 // A user's text as echoed in a message: at most `length` characters, longer text cut with "…"
 // and its size, so that a 200 kB value does not become a 200 kB error line.

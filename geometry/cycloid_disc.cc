@@ -10,6 +10,7 @@
 #include "geometry/cycloid_disc.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -31,14 +32,6 @@ Vector unit(double angle)
 }
 
 const std::string parameter_prefix = "Cycloid disc/";
-
-std::string format_mm(double length)
-{
-  std::ostringstream out;
-  out.precision(6);
-  out << length * 1e3 << " mm";
-  return out.str();
-}
 
 // The shortened epicycloid of the roller centres and its equidistant, for one disc spec.
 struct Equidistant

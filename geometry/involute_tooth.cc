@@ -26,6 +26,7 @@
 #include "geometry/involute_tooth.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -43,14 +44,6 @@ const char* const spec_name = "Involute tooth/";
 std::string parameter(const std::string& key)
 {
   return spec_name + key;
-}
-
-std::string format_mm(double length)
-{
-  std::ostringstream out;
-  out.precision(6);
-  out << length * 1e3 << " mm";
-  return out.str();
 }
 
 Vector polar(double radius, double angle)

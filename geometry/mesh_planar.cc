@@ -1,6 +1,7 @@
 #include "geometry/mesh_planar.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "errors/limits.h"
 
 #include <Eigen/Geometry>
@@ -67,14 +68,6 @@ double focus_cells(double size, double radius, double rate, double coarse)
       2. * M_PI / rate *
       ((radius - size / rate) * (1. / size - 1. / coarse) + std::log(coarse / size) / rate);
   return disc + std::max(0., annulus);
-}
-
-std::string format_number(double value, int precision = 2)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
 }
 
 std::vector<BoundaryPiece> counter_clockwise(const BoundaryLoop& loop)
@@ -376,16 +369,16 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
     fine_radius = std::max(fine_radius, focus.radius);
   const std::string kind = options.dimension == 3 ? "hexahedra" : "cells";
   const std::string reason =
-      "the mesh would have about " + format_number(estimate.cells) + " " + kind + " (limit " +
-      format_number(limit) + ", docs/limits.md): " + format_number(estimate.fine_cells) +
+      "the mesh would have about " + format_number(estimate.cells, 2) + " " + kind + " (limit " +
+      format_number(limit, 2) + ", docs/limits.md): " + format_number(estimate.fine_cells, 2) +
       " at the contact size " + format_number(grading.smallest_size() * 1e3, 3) +
       " mm within the fine radius " + format_number(fine_radius * 1e3, 3) +
       " mm (0: 1.5 Hertz half-widths of the load), " +
-      format_number(estimate.graded_cells + estimate.body_cells) + " elsewhere (body size " +
+      format_number(estimate.graded_cells + estimate.body_cells, 2) + " elsewhere (body size " +
       format_number(grading.body_size * 1e3, 3) + " mm" +
       (options.dimension == 3 ? ", " + std::to_string(options.layers) + " layers" : "") + ")" +
       (options.dimension == 2
-           ? ", about " + format_number(estimate.cells * limits::solve_bytes_per_cell_2d / 1e9) +
+           ? ", about " + format_number(estimate.cells * limits::solve_bytes_per_cell_2d / 1e9, 2) +
                  " GB for a Q2 contact solve"
            : "") +
       "; meshing and solving it could not finish";

@@ -1,6 +1,7 @@
 #include "kinematics/gear_pair.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,17 +13,9 @@ namespace
 {
 constexpr double pi = 3.14159265358979323846;
 
-std::string format(double value, int digits = 4)
-{
-  std::ostringstream s;
-  s.precision(digits);
-  s << value;
-  return s.str();
-}
-
 std::string millimetres(double metres)
 {
-  return format(metres * 1e3) + " mm";
+  return format_number(metres * 1e3, 4) + " mm";
 }
 
 void check_gear(const GearSpec& gear, bool wheel)
@@ -76,11 +69,12 @@ void check_contact_ratio(const GearPairGeometry& result)
   const double ratio = result.transverse_contact_ratio;
   if (ratio >= 1.)
     return;
-  const std::string path = result.path_of_contact > 0.
-                               ? "transverse contact ratio ε_α = " + format(ratio) + " < 1"
-                               : "the tips do not reach each other's flanks along the line of "
-                                 "action (no path of "
-                                 "contact)";
+  const std::string path =
+      result.path_of_contact > 0.
+          ? "transverse contact ratio ε_α = " + format_number(ratio, 4) + " < 1"
+          : "the tips do not reach each other's flanks along the line of "
+            "action (no path of "
+            "contact)";
   if (result.spec.centre_distance > 0. && result.backlash > 0.)
     throw InputError("Gear pair/centre distance", millimetres(result.centre_distance) +
                                                       " exceeds the zero-backlash distance "
@@ -121,7 +115,8 @@ double involute(double angle)
 double inverse_involute(double value)
 {
   if (!(value >= 0.) || !(value < 10.))
-    throw SolverFailure("inverse involute", "argument " + format(value) + " out of range");
+    throw SolverFailure("inverse involute",
+                        "argument " + format_number(value, 4) + " out of range");
   // inv α ≈ α³/3 near 0 gives a start on the convex side, from which Newton
   // converges monotonically (inv is convex on [0, π/2)).
   double angle = std::min(std::cbrt(3. * value), 1.5);
@@ -133,7 +128,8 @@ double inverse_involute(double value)
     if (std::abs(step) < 1e-15)
       return angle;
   }
-  throw SolverFailure("inverse involute", "Newton iteration did not converge for " + format(value));
+  throw SolverFailure("inverse involute",
+                      "Newton iteration did not converge for " + format_number(value, 4));
 }
 
 unsigned int GearPairGeometry::pairs_in_contact(double position) const
@@ -251,7 +247,8 @@ void set_working_pressure_angle(const GearPairSpec& spec, const SignedPair& p,
       involute(p.alpha_t) + 2. * std::tan(p.alpha_n) * p.x_sum / (p.z1 + p.z2);
   if (!(inv_alpha_zero_backlash > 0.))
     throw InputError(gear_parameter_name(true, "profile shift"),
-                     "x1 + x2 = " + format(p.x_sum) + " leaves no working pressure angle");
+                     "x1 + x2 = " + format_number(p.x_sum, 4) +
+                         " leaves no working pressure angle");
   const double reference_centre_distance = 0.5 * (p.d1 + p.d2);
   result.reference_centre_distance = std::abs(reference_centre_distance);
 
@@ -304,10 +301,10 @@ void check_tips_and_bores(const GearPairSpec& spec, const SignedPair& p)
     const bool tip_beyond_root = g.internal ? std::abs(da) >= std::abs(df) : da <= df;
     if (g.tip_diameter > 0. && tip_beyond_root)
       throw InputError(gear_parameter_name(wheel, "module"),
-                       format(g.normal_module * 1e3) + " mm with " + std::to_string(g.teeth) +
-                           " teeth puts the root circle at " + millimetres(std::abs(df)) + ", " +
-                           (g.internal ? "inside" : "outside") + " the given tip diameter " +
-                           millimetres(std::abs(da)) +
+                       format_number(g.normal_module * 1e3, 4) + " mm with " +
+                           std::to_string(g.teeth) + " teeth puts the root circle at " +
+                           millimetres(std::abs(df)) + ", " + (g.internal ? "inside" : "outside") +
+                           " the given tip diameter " + millimetres(std::abs(da)) +
                            " (tip diameter 0 takes the standard tip of this module)");
     // A tip inside the base circle has no involute to run on.
     if (!(std::abs(da) > std::abs(db)))
@@ -368,8 +365,9 @@ std::pair<double, double> check_undercut_and_interference(const GearPairSpec& sp
     (wheel ? result.wheel : result.pinion).minimum_profile_shift = x_min;
     if ((wheel ? form2 : form1) < 0.)
       throw InputError(gear_parameter_name(wheel, "profile shift"),
-                       "x = " + format(g.profile_shift) + " undercuts the tooth (x_min = " +
-                           format(x_min) + " for z = " + std::to_string(g.teeth) + ")");
+                       "x = " + format_number(g.profile_shift, 4) +
+                           " undercuts the tooth (x_min = " + format_number(x_min, 4) +
+                           " for z = " + std::to_string(g.teeth) + ")");
   }
   if (result.contact_start < form1)
     throw InputError(gear_parameter_name(true, "tip diameter"),

@@ -1,6 +1,7 @@
 #include "kinematics/gear_train.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -16,14 +17,6 @@ namespace gearstiff::kinematics
 namespace
 {
 constexpr double rpm = 3.14159265358979323846 / 30.; // rad/s per rpm
-
-std::string format(double value, int digits = 5)
-{
-  std::ostringstream s;
-  s.precision(digits);
-  s << value;
-  return s.str();
-}
 
 std::string trim(const std::string& text)
 {
@@ -277,9 +270,10 @@ void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
     double& known = solution.orbit_radius[solution.index(planet.name)];
     if (known > 0. && std::abs(known - radius) > 1e-9)
       throw InputError("Train/gears", "the train does not close: planet " + planet.name + " sits " +
-                                          format(known * 1e3) + " mm from the axis of " +
-                                          mesh.frame + " by one mesh and " + format(radius * 1e3) +
-                                          " mm by mesh " + mesh.gear_a + "-" + mesh.gear_b);
+                                          format_number(known * 1e3, 5) + " mm from the axis of " +
+                                          mesh.frame + " by one mesh and " +
+                                          format_number(radius * 1e3, 5) + " mm by mesh " +
+                                          mesh.gear_a + "-" + mesh.gear_b);
     known = radius;
   }
   // Members rigid with a planet and riding on the same carrier share its axis.

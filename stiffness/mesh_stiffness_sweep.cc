@@ -1,6 +1,7 @@
 #include "stiffness/mesh_stiffness_sweep.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "fem/parallel.h"
 
 #include <algorithm>
@@ -16,17 +17,6 @@
 namespace gearstiff::stiffness
 {
 using namespace dealii;
-
-namespace
-{
-std::string format(double value, int precision = 4)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << value;
-  return s.str();
-}
-} // namespace
 
 std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
                                     const StiffnessSweepSpec& spec)
@@ -49,13 +39,13 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
     const double r_b1 = 0.5 * pair.pinion.base_diameter;
     throw InputError(stiffness_parameter::pitches,
                      "the sweep runs off the path of contact: it spans roll angles " +
-                         format(positions.front() / r_b1 * 180. / M_PI) + "° to " +
-                         format(positions.back() / r_b1 * 180. / M_PI) +
+                         format_number(positions.front() / r_b1 * 180. / M_PI, 4) + "° to " +
+                         format_number(positions.back() / r_b1 * 180. / M_PI, 4) +
                          "°, the path of "
                          "contact " +
-                         format(pair.contact_start / r_b1 * 180. / M_PI) + "° to " +
-                         format(pair.contact_end / r_b1 * 180. / M_PI) + "° (" +
-                         format(pair.transverse_contact_ratio) + " base pitches)");
+                         format_number(pair.contact_start / r_b1 * 180. / M_PI, 4) + "° to " +
+                         format_number(pair.contact_end / r_b1 * 180. / M_PI, 4) + "° (" +
+                         format_number(pair.transverse_contact_ratio, 4) + " base pitches)");
   }
   return positions;
 }
@@ -112,15 +102,15 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
       [&](const unsigned int i)
       {
         const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
-                                  format(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
+                                  format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
         const GearMeshStiffnessResult r = solve_position<dim>(
             warm, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
         mine.emplace_back(i, r);
         if (progress)
           progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
-                   format(r.pinion_roll_angle * 180. / M_PI, 5) +
-                   "°): k = " + format(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
-                   std::to_string(r.loaded_pairs) + " pair(s), " + format(r.total_time, 3) +
+                   format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
+                   "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
+                   std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
                    " s [rank 0: " + std::to_string(mine.size()) + "/" + std::to_string(my_share) +
                    "]");
       });
@@ -180,7 +170,7 @@ RichardsonEstimate richardson_estimate(const std::vector<RefinementLevel>& level
   if (!estimate.monotone || std::abs(d2) >= std::abs(d1))
     throw SolverFailure("Richardson extrapolation",
                         "the three finest levels are not in the asymptotic range (differences " +
-                            format(d1) + ", " + format(d2) + " N/m)");
+                            format_number(d1, 4) + ", " + format_number(d2, 4) + " N/m)");
   const double ratio = levels[n - 2].size_factor / levels[n - 1].size_factor;
   estimate.observed_order = std::log(d1 / d2) / std::log(ratio);
   estimate.extrapolated = k2 + d2 / (std::pow(ratio, estimate.observed_order) - 1.);
