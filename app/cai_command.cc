@@ -11,6 +11,7 @@
 // Writes cai_calibrated.prm, which `gearstiff dynamics cai_calibrated.prm` reads (Mesh 1, Mesh 2:
 // stiffness source cai, stiffness = fitted scale, cai shape = fitted shape).
 #include "app/command.h"
+#include "app/parameter_patterns.h"
 #include "app/stiffness_parameters.h"
 #include "app/units.h"
 #include "dynamics/cai_stiffness.h"
@@ -18,7 +19,6 @@
 #include "errors/errors.h"
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 
 namespace
@@ -35,7 +35,7 @@ void declare_parameters(dealii::ParameterHandler& prm)
   // One base pitch from A holds every engagement position once (pairs at p and p + 1).
   declare_stiffness_sweep_parameters(prm, 16);
   prm.enter_subsection("Cai calibration");
-  prm.declare_entry("fit shape", "false", dealii::Patterns::Bool(),
+  prm.declare_entry("fit shape", "false", Bool(),
                     "also fit the shape coefficients c0, c1, c2 (else only the scale, the "
                     "published shape 0.55, 1.8, -1.8 kept)");
   prm.leave_subsection();
@@ -133,12 +133,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
         << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n"
         << dynamics_cai_input(fit.parameters);
     out.close();
-    const std::string sample_csv = temporary_csv(report, "cai_samples");
-    const std::string curve_csv = temporary_csv(report, "cai_curves");
-    context.plot("plot_cai.py", {sample_csv, curve_csv}, "cai_calibration.png",
+    const TemporaryCsv sample_csv(report, "cai_samples");
+    const TemporaryCsv curve_csv(report, "cai_curves");
+    context.plot("plot_cai.py", {sample_csv.path(), curve_csv.path()}, "cai_calibration.png",
                  "FE pair stiffness, calibrated and paper-scaled Cai curves");
-    std::filesystem::remove(sample_csv);
-    std::filesystem::remove(curve_csv);
   }
 }
 

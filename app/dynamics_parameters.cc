@@ -1,6 +1,7 @@
 #include "app/dynamics_parameters.h"
 
 #include "app/kinematics_parameters.h"
+#include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "dynamics/split_path_case.h"
 #include "dynamics/stiffness_file.h"
@@ -15,13 +16,6 @@ namespace gearstiff::app
 {
 namespace
 {
-using dealii::ParameterHandler;
-using dealii::Patterns::Anything;
-using dealii::Patterns::Bool;
-using dealii::Patterns::Double;
-using dealii::Patterns::Integer;
-using dealii::Patterns::Selection;
-
 constexpr double micrometre = 1e-6;
 constexpr double newton_per_mm = 1e3;            // N/mm → N/m
 constexpr double newton_per_mm_micrometre = 1e9; // N/(mm·µm) → N/m²

@@ -1,17 +1,10 @@
 #include "app/geometry_parameters.h"
 
+#include "app/parameter_patterns.h"
 #include "app/units.h"
 
 namespace gearstiff::app
 {
-namespace
-{
-using dealii::ParameterHandler;
-using dealii::Patterns::Double;
-using dealii::Patterns::Integer;
-using dealii::Patterns::Selection;
-} // namespace
-
 void declare_cycloid_disc_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Cycloid disc");

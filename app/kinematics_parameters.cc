@@ -1,5 +1,6 @@
 #include "app/kinematics_parameters.h"
 
+#include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
 
@@ -15,9 +16,6 @@ constexpr double default_ring_tip_margin = 0.05e-3;
 
 void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gear)
 {
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Integer;
   prm.declare_entry("teeth", std::to_string(gear.teeth), Integer(1),
                     "number of teeth [-], positive also for an internal gear");
   prm.declare_entry("module", format_number(gear.normal_module / mm, 12), Double(0.),
@@ -30,8 +28,7 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
                     "profile shift coefficient x [-] (DIN 3960: > 0 thickens the tooth)");
   prm.declare_entry("face width", format_number(gear.face_width / mm, 12), Double(0.),
                     "face width b [mm]");
-  prm.declare_entry("tip diameter", format_number(gear.tip_diameter / mm, 12),
-                    dealii::Patterns::Anything(),
+  prm.declare_entry("tip diameter", format_number(gear.tip_diameter / mm, 12), Anything(),
                     "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x); auto (internal "
                     "wheel) = the longest ring teeth that clear the pinion's involute by 'Gear "
                     "pair/ring tip margin'");
@@ -99,11 +96,9 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
 {
   const kinematics::GearPairSpec pair = kinematics::split_path_pair();
   prm.enter_subsection("Gear pair");
-  prm.declare_entry("centre distance", format_number(pair.centre_distance / mm, 12),
-                    dealii::Patterns::Double(0.),
+  prm.declare_entry("centre distance", format_number(pair.centre_distance / mm, 12), Double(0.),
                     "working centre distance a_w [mm]; 0 = zero backlash from the profile shifts");
-  prm.declare_entry("ring tip margin", format_number(default_ring_tip_margin / mm, 12),
-                    dealii::Patterns::Double(0.),
+  prm.declare_entry("ring tip margin", format_number(default_ring_tip_margin / mm, 12), Double(0.),
                     "for Wheel/tip diameter = auto: distance along the line of action from the "
                     "pinion's form circle to the start of contact A [mm]");
   prm.enter_subsection("Pinion");
@@ -115,9 +110,9 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
 
   prm.enter_subsection("ISO 6336");
-  prm.declare_entry("C_M", "0.8", dealii::Patterns::Double(0., 2.),
+  prm.declare_entry("C_M", "0.8", Double(0., 2.),
                     "theoretical correction factor C_M [-] (0.8 for solid discs)");
-  prm.declare_entry("specific load", "0", dealii::Patterns::Double(0.),
+  prm.declare_entry("specific load", "0", Double(0.),
                     "F_t·K_A/b [N/mm] for the ISO load factor; 0 = not given");
   prm.leave_subsection();
 }
@@ -159,7 +154,6 @@ kinematics::IsoStiffnessOptions parse_iso_parameters(dealii::ParameterHandler& p
 void declare_train_parameters(dealii::ParameterHandler& prm)
 {
   const kinematics::GearTrainText train = kinematics::builtin_train("bi-planetary");
-  using dealii::Patterns::Anything;
   prm.enter_subsection("Train");
   prm.declare_entry("gears", train.gears, Anything(),
                     "toothed members, 'name: teeth, ...' [-]; negative teeth = internal gear");
@@ -179,9 +173,9 @@ void declare_train_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry("inputs", train.inputs, Anything(),
                     "driven members and their speeds, 'name: speed, ...' [rpm]");
   prm.declare_entry("output", train.output, Anything(), "output member (ratio, statics)");
-  prm.declare_entry("input torque", "120.2", dealii::Patterns::Double(),
+  prm.declare_entry("input torque", "120.2", Double(),
                     "torque on the first input [N·m] (gear-data.md §2: 120.2); 0 = no statics");
-  prm.declare_entry("tooth friction coefficient", "0.08", dealii::Patterns::Double(0., 0.5),
+  prm.declare_entry("tooth friction coefficient", "0.08", Double(0., 0.5),
                     "μ_z for the pair efficiencies [-] (gear-data.md §2: 0.08)");
   prm.declare_entry("inertias", "", Anything(),
                     "'name: J, ...' [kg·m²], one copy about its own axis (optional)");

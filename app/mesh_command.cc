@@ -16,6 +16,7 @@
 #include "app/cycloid_scene_parameters.h"
 #include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
+#include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "geometry/abaqus_deck.h"
@@ -32,11 +33,6 @@ namespace
 {
 using namespace gearstiff;
 using namespace gearstiff::app;
-using dealii::ParameterHandler;
-using dealii::Patterns::Bool;
-using dealii::Patterns::Double;
-using dealii::Patterns::Integer;
-using dealii::Patterns::Selection;
 
 const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
 
@@ -67,7 +63,7 @@ void declare_parameters(ParameterHandler& prm)
                     "what to mesh: a spur gear pair at one position (subsections Gear pair, Gear "
                     "pair scene), two cylinders in line contact (Cylinders) or a cycloid disc "
                     "with its rollers (Cycloid disc, Cycloid scene)");
-  prm.declare_entry("mesh file", "scene.msh", dealii::Patterns::Anything(),
+  prm.declare_entry("mesh file", "scene.msh", Anything(),
                     "name of the .msh file written into the -o folder");
   prm.leave_subsection();
 

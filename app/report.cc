@@ -286,4 +286,15 @@ std::string temporary_csv(const Report& report, const std::string& table_name)
       report.write_table_csv(table, out);
   return path;
 }
+
+TemporaryCsv::TemporaryCsv(const Report& report, const std::string& table_name)
+    : file(temporary_csv(report, table_name))
+{
+}
+
+TemporaryCsv::~TemporaryCsv()
+{
+  std::error_code ignored; // a leftover temporary file is no reason to fail a command
+  std::filesystem::remove(file, ignored);
+}
 } // namespace gearstiff::app

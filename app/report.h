@@ -69,6 +69,21 @@ private:
 // By name: references into the report's tables do not survive a later add_table.
 std::string temporary_csv(const Report& report, const std::string& table_name);
 
+// The same temporary CSV, removed when this goes out of scope: the plot step of a command is
+// `const TemporaryCsv csv(report, "table"); context.plot(script, {csv.path(), ...}, ...);`.
+class TemporaryCsv
+{
+public:
+  TemporaryCsv(const Report& report, const std::string& table_name);
+  ~TemporaryCsv();
+  TemporaryCsv(const TemporaryCsv&) = delete;
+  TemporaryCsv& operator=(const TemporaryCsv&) = delete;
+  const std::string& path() const { return file; }
+
+private:
+  std::string file;
+};
+
 // JSON string escaping and number formatting shared by every writer in app/.
 std::string json_escape(const std::string& text);
 std::string json_number(double value);

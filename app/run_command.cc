@@ -22,7 +22,6 @@
 
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -193,13 +192,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     std::ofstream(
         context.output_file("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`"))
         << dynamics_table_input(sweep);
-    const std::string csv = temporary_csv(report, "run_sweep");
+    const TemporaryCsv csv(report, "run_sweep");
     context.plot("plot_stiffness.py",
-                 {csv, format_number(ansys::single_pair_stiffness / 1e6, 8),
+                 {csv.path(), format_number(ansys::single_pair_stiffness / 1e6, 8),
                   format_number(ansys::double_pair_stiffness / 1e6, 8),
                   format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
                  "run_stiffness.png", "k(θ) with ANSYS and ISO 6336 values");
-    std::filesystem::remove(csv);
   }
 }
 

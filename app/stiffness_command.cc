@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 
 namespace
@@ -159,15 +158,14 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
           << "# Use: gearstiff dynamics stiffness_table.prm\n"
           << dynamics_table_input(sweep);
     }
-    const std::string csv = temporary_csv(report, "stiffness_sweep");
+    const TemporaryCsv csv(report, "stiffness_sweep");
     context.plot("plot_stiffness.py",
-                 {csv,
+                 {csv.path(),
                   format_number(p.published_reference ? ansys::single_pair_stiffness / 1e6 : 0., 8),
                   format_number(p.published_reference ? ansys::double_pair_stiffness / 1e6 : 0., 8),
                   format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
                  "stiffness_sweep.png",
                  "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean");
-    std::filesystem::remove(csv);
   }
 }
 

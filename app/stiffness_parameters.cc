@@ -3,6 +3,7 @@
 #include "app/fe_contact_parameters.h"
 #include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
+#include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
 
@@ -16,15 +17,6 @@
 
 namespace gearstiff::app
 {
-namespace
-{
-using dealii::ParameterHandler;
-using dealii::Patterns::Bool;
-using dealii::Patterns::Double;
-using dealii::Patterns::Integer;
-using dealii::Patterns::Selection;
-} // namespace
-
 void declare_stiffness_parameters(ParameterHandler& prm)
 {
   declare_gear_pair_parameters(prm);

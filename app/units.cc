@@ -1,6 +1,5 @@
 #include "app/units.h"
 
-
 namespace gearstiff::app
 {
 std::string shortened(const std::string& text, const unsigned int length)
