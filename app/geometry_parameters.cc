@@ -117,6 +117,20 @@ void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneS
   prm.leave_subsection();
 }
 
+void declare_elastic_constants(ParameterHandler& prm, const std::string& bodies)
+{
+  prm.declare_entry("Young's modulus", "210", Double(0.),
+                    "Young's modulus of " + bodies + " [GPa] (default: steel)");
+  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5),
+                    "Poisson's ratio of " + bodies + " [-] (default: steel)");
+}
+
+void parse_elastic_constants(ParameterHandler& prm, double& young_modulus, double& poisson_ratio)
+{
+  young_modulus = prm.get_double("Young's modulus") * 1e9;
+  poisson_ratio = prm.get_double("Poisson's ratio");
+}
+
 ParameterNames gear_scene_parameter_names()
 {
   namespace field = geometry::scene_field;

@@ -34,6 +34,13 @@ void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
 // Fills pinion/wheel_teeth_modelled, pinion/wheel_bore_radius and rim.
 void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
 
+// "Young's modulus" [GPa] and "Poisson's ratio" [-] of `bodies` ("both gears") in the current
+// subsection; steel by default (gear-data.md publishes neither). parse_ returns them in SI
+// (E in Pa, ν).
+void declare_elastic_constants(dealii::ParameterHandler& prm, const std::string& bodies);
+void parse_elastic_constants(dealii::ParameterHandler& prm, double& young_modulus,
+                             double& poisson_ratio);
+
 // The libraries name the fields of their specs in an InputError ("scene.pinion_bore_radius",
 // geometry::scene_field); a command names the parameter the user writes. Library field ->
 // parameter path of one command.

@@ -86,9 +86,7 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("pinion torque", "49.4", Double(0.),
                     "pinion torque T1 for the Hertz estimate of the contact size [N·m] "
                     "(gear-data.md §1: 7.5 kW at 1450 rpm)");
-  prm.declare_entry("Young's modulus", "210", Double(0.),
-                    "Young's modulus of both gears [GPa] (steel; not published)");
-  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
+  declare_elastic_constants(prm, "both gears");
   prm.leave_subsection();
 
   const geometry::CylindersSceneSpec cylinders;
@@ -103,8 +101,7 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("force per length", "1e5", Double(0.),
                     "normal line load for the Hertz estimate [N/m]");
   prm.declare_entry("length", "10", Double(0.), "cylinder length (3D extrusion) [mm]");
-  prm.declare_entry("Young's modulus", "210", Double(0.), "Young's modulus of both [GPa]");
-  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio [-]");
+  declare_elastic_constants(prm, "both cylinders");
   prm.leave_subsection();
 
   // The common entries, then this command's own: the disc's position and the Hertz estimate.
@@ -115,8 +112,7 @@ void declare_parameters(ParameterHandler& prm)
                     "the eccentric with the ring fixed");
   prm.declare_entry("roller force", "1711", Double(0.),
                     "roller force for the Hertz estimate of h_c (N; gear-data.md §4 P_max)");
-  prm.declare_entry("Young's modulus", "210", Double(0.), "Young's modulus (GPa)");
-  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "Poisson's ratio (-)");
+  declare_elastic_constants(prm, "the disc and the rollers");
   prm.leave_subsection();
 
   // The mesh sizes of all three scene types.
@@ -135,8 +131,7 @@ geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
   spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
   spec.both_flanks = prm.get_bool("both flanks");
   spec.pinion_torque = prm.get_double("pinion torque");
-  spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
-  spec.poisson_ratio = prm.get_double("Poisson's ratio");
+  parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
   return spec;
 }
@@ -151,8 +146,7 @@ geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
   spec.bore_radius_2 = prm.get_double("bore radius 2") * mm;
   spec.force_per_length = prm.get_double("force per length");
   spec.length = prm.get_double("length") * mm;
-  spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
-  spec.poisson_ratio = prm.get_double("Poisson's ratio");
+  parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
   spec.mesh = parse_scene_mesh_parameters(prm);
   return spec;
@@ -165,8 +159,7 @@ geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm)
   prm.enter_subsection("Cycloid scene");
   spec.disc_rotation = prm.get_double("disc rotation") * degree;
   spec.roller_force = prm.get_double("roller force");
-  spec.young_modulus = prm.get_double("Young's modulus") * 1e9;
-  spec.poisson_ratio = prm.get_double("Poisson's ratio");
+  parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
   spec.mesh = parse_scene_mesh_parameters(prm);
   return spec;

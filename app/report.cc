@@ -21,12 +21,7 @@ void ReportTable::add_row(const std::vector<double>& row)
 void Report::add_value(const std::string& key, double value, const std::string& unit,
                        const std::string& description)
 {
-  ReportValue v;
-  v.key = key;
-  v.value = value;
-  v.unit = unit;
-  v.description = description;
-  value_list.push_back(v);
+  value_list.push_back({key, value, unit, description}); // no published reference
 }
 
 void Report::add_compared_value(const std::string& key, double value, double reference,

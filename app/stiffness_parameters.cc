@@ -47,9 +47,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry("pinion torque", "49.4", Double(),
                     "T1 on the pinion [N·m], > 0 (drives the loaded flanks into contact); "
                     "gear-data.md §1: 7.5 kW at 1450 rpm");
-  prm.declare_entry("Young's modulus", "210", Double(0.),
-                    "E of both gears [GPa] (steel; not published in gear-data.md §1)");
-  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "ν of both gears [-]");
+  declare_elastic_constants(prm, "both gears");
   prm.declare_entry("sweep start", "-1", Double(),
                     "pinion roll angle of the first sweep interval's start [deg]; negative: "
                     "the start of active contact A");
@@ -159,8 +157,7 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   p.mode = parse_mode(prm.get("mode"));
   s.scene.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
   s.pinion_torque = prm.get_double("pinion torque");
-  s.material.youngs_modulus = prm.get_double("Young's modulus") * 1e9;
-  s.material.poisson_ratio = prm.get_double("Poisson's ratio");
+  parse_elastic_constants(prm, s.material.youngs_modulus, s.material.poisson_ratio);
   const double start = prm.get_double("sweep start");
   p.sweep.base_pitches = prm.get_double("sweep base pitches");
   const long positions = prm.get_integer("sweep positions");
