@@ -46,12 +46,17 @@ def staging_left(folder):
 def signal_case(binary, work, sig):
     folder = fresh(work, f"signal{int(sig)}")
     out = os.path.join(folder, "out")
-    # The default stiffness position runs for several seconds; the signal comes after 1.5 s,
-    # while the staging folder exists.
-    proc = subprocess.Popen([binary, "stiffness", "-o", out], cwd=folder,
+    # An 8-position sweep runs for several seconds on one rank (a single position now takes
+    # about 1.6 s, too close to a fixed delay); the signal comes as soon as the staging folder
+    # exists, so the test does not depend on the machine's speed.
+    proc = subprocess.Popen([binary, "stiffness", "--set", "Stiffness/mode=sweep",
+                             "--set", "Stiffness/sweep positions=8", "-o", out], cwd=folder,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                             preexec_fn=lambda: signal.signal(sig, signal.SIG_DFL))
-    time.sleep(1.5)
+    deadline = time.monotonic() + 20
+    while not staging_left(folder) and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.2)
     had_staging = bool(staging_left(folder))
     proc.send_signal(sig)
     try:
