@@ -60,6 +60,15 @@ def run_stiffness(binary, settings, ranks=1):
             "solve_time": values["time_total"]["value"]}
 
 
+def gearstiff_parser(doc):
+    """The command-line parser of the internal_* benches with its --gearstiff option."""
+    parser = argparse.ArgumentParser(description=doc,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser.add_argument("--gearstiff", default=os.path.join(here, "..", "build", "app", "gearstiff"))
+    return parser
+
+
 def sized(factor):
     return {key: value * factor for key, value in DEFAULT_SIZES.items()}
 
@@ -77,11 +86,8 @@ def richardson(levels):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    here = os.path.dirname(os.path.abspath(__file__))
-    parser.add_argument("--gearstiff", default=os.path.join(here, "..", "build", "app", "gearstiff"))
-    parser.add_argument("--out", default=here)
+    parser = gearstiff_parser(__doc__)
+    parser.add_argument("--out", default=os.path.dirname(os.path.abspath(__file__)))
     parser.add_argument("--no-3d", action="store_true")
     options = parser.parse_args()
 

@@ -12,20 +12,16 @@ command reports it) and the ratio of the medians.
 
 usage: bench/internal_speed.py [--gearstiff build/app/gearstiff] [--runs 3]
 """
-import argparse
 import os
 import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from internal_refinement import PLANET_RING, run_stiffness  # noqa: E402
+from internal_refinement import PLANET_RING, gearstiff_parser, run_stiffness  # noqa: E402
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    here = os.path.dirname(os.path.abspath(__file__))
-    parser.add_argument("--gearstiff", default=os.path.join(here, "..", "build", "app", "gearstiff"))
+    parser = gearstiff_parser(__doc__)
     parser.add_argument("--runs", type=int, default=3)
     options = parser.parse_args()
 
