@@ -71,11 +71,13 @@ TEST(InternalRefinement, DefaultWithinStatedErrorOfFinerLevel)
 
 // Three ways of holding a ring with a rim of s_R = 5·m (outer radius 101.875 mm): its whole outer
 // circle clamped, 6 pads of 10 mm on that circle, or 6 bolt holes of 6.6 mm on the rim's middle
-// circle (radius 95.6 mm), all with the mesh midway between two supports. Held on the whole
-// circle the rim cannot bend, so that value bounds the others from above; the bolts hold the
-// rim nearer the teeth than the pads and over a larger part of its section (the hole's
-// circumference, 20.7 mm, against a 10 mm pad), so the bolted ring is stiffer than the padded
-// one. More bolts shorten the free span of the rim between them: k rises with their number.
+// circle (radius 95.6 mm), pads and holes at the same polar angles, the mesh midway between two.
+// 1. What governs is the free span of rim between two supports, not the kind of support: the
+//    bolted ring lies within 5% of the padded one (measured +1.5%; with 4.5 mm holes −0.9%,
+//    bench/internal_rim_study.py), between it and the whole circle for these holes.
+// 2. Twelve bolts halve the span of curved beam the tooth load bends: k rises (measured +31%).
+// 3. Held along its whole outer circle the rim cannot bend at all: that value stays above the
+//    bolted ones (measured 7.7% above twelve bolts).
 TEST(InternalRefinement, BoltedRingBetweenPadsAndWholeCircle)
 {
   GearMeshStiffnessSettings settings = planet_ring(5.);
@@ -88,7 +90,8 @@ TEST(InternalRefinement, BoltedRingBetweenPadsAndWholeCircle)
   const double bolts = stiffness(settings, "6 bolt holes of 6.6 mm");
   settings.scene.wheel_bolt_holes = 12;
   const double more_bolts = stiffness(settings, "12 bolt holes of 6.6 mm");
-  EXPECT_LT(pads, bolts);
+  EXPECT_NEAR(bolts / pads, 1., 0.05);
+  EXPECT_GT(bolts, pads);
   EXPECT_LT(bolts, more_bolts);
   EXPECT_LT(more_bolts, whole);
 }
