@@ -94,6 +94,18 @@ void declare_gear_scene_parameters(ParameterHandler& prm,
                     "the mesh midway between two [-]");
   prm.declare_entry("wheel support width", format_number(defaults.wheel_support_width / mm, 10),
                     Double(0.), "arc length of one support pad on the ring's outer circle [mm]");
+  prm.declare_entry("wheel bolt holes", std::to_string(defaults.wheel_bolt_holes), Integer(0),
+                    "internal wheel with a full rim: 0 = no holes; N >= 2 = the ring bolted at N "
+                    "evenly spaced holes in its rim (the holes clamped, the outer circle free; "
+                    "instead of wheel supports), the mesh midway between two [-]");
+  prm.declare_entry("bolt hole diameter", format_number(defaults.wheel_bolt_hole_diameter / mm, 10),
+                    Double(0.),
+                    "diameter of one bolt hole in the ring's rim [mm]; each hole keeps one module "
+                    "of material to the root circle, the outer circle and its neighbours");
+  prm.declare_entry("bolt circle diameter",
+                    format_number(defaults.wheel_bolt_circle_diameter / mm, 10), Double(0.),
+                    "diameter of the circle of the bolt-hole centres [mm]; 0 = the middle of the "
+                    "rim");
   prm.declare_entry("rim", defaults.rim == geometry::RimModel::full ? "full" : "sector",
                     Selection("sector|full"),
                     std::string("sector: rim of the modelled teeth only, cut radially (cut faces "
@@ -113,6 +125,9 @@ void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneS
   spec.wheel_rim_thickness = prm.get_double("wheel rim thickness") * mm;
   spec.wheel_supports = prm.get_integer("wheel supports");
   spec.wheel_support_width = prm.get_double("wheel support width") * mm;
+  spec.wheel_bolt_holes = prm.get_integer("wheel bolt holes");
+  spec.wheel_bolt_hole_diameter = prm.get_double("bolt hole diameter") * mm;
+  spec.wheel_bolt_circle_diameter = prm.get_double("bolt circle diameter") * mm;
   spec.rim = geometry::parse_rim_model(prm.get("rim"), "Gear pair scene/rim");
   prm.leave_subsection();
 }
@@ -144,6 +159,9 @@ ParameterNames gear_scene_parameter_names()
           {field::wheel_rim_thickness, section + "wheel rim thickness"},
           {field::wheel_supports, section + "wheel supports"},
           {field::wheel_support_width, section + "wheel support width"},
+          {field::wheel_bolt_holes, section + "wheel bolt holes"},
+          {field::wheel_bolt_hole_diameter, section + "bolt hole diameter"},
+          {field::wheel_bolt_circle_diameter, section + "bolt circle diameter"},
           {field::both_flanks, section + "both flanks"},
           {field::pinion_torque, section + "pinion torque"},
           {field::young_modulus, section + "Young's modulus"},

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <gmsh.h>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -435,15 +436,16 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     surfaces.emplace_back(gmsh::model::geo::addPlaneSurface(loops), body.material_id);
   }
 
-  // 3D: extrude each surface; gmsh returns, per surface, the top surface, the volume and one
-  // lateral surface per boundary curve in the order of the surface's curve loops, which is the
-  // order in which add_loop created the curves.
+  // 3D: extrude each surface; gmsh returns, per surface, the top surface, the volume and the
+  // lateral surfaces. Their order follows gmsh's own walk of the curve loops, which reverses a
+  // hole's curves (harmless for a bore of one id, wrong for a ring whose teeth line its hole),
+  // so each lateral surface takes the id of the base curve it was swept from (its boundary).
   std::vector<std::pair<int, int>> volumes;               // (volume tag, material id)
   std::map<int, std::vector<int>> lateral_surfaces_by_id; // boundary id -> surfaces
   std::vector<int> side_faces;                            // z = 0 and z = face width
+  std::vector<int> lateral_surfaces;
   if (options.dimension == 3)
   {
-    std::size_t curve_index = 0;
     for (const auto& [surface, material_id] : surfaces)
     {
       gmsh::vectorpair extruded;
@@ -455,19 +457,31 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
       side_faces.push_back(surface);
       side_faces.push_back(extruded[0].second);
       volumes.emplace_back(extruded[1].second, material_id);
-      for (std::size_t i = 2; i < extruded.size(); ++i, ++curve_index)
-      {
-        if (curve_index >= curve_ids.size())
-          throw SolverFailure("gmsh extrusion", "more lateral surfaces than curves");
-        const int id = curve_ids[curve_index].second;
-        if (id != 0)
-          lateral_surfaces_by_id[id].push_back(extruded[i].second);
-      }
+      for (std::size_t i = 2; i < extruded.size(); ++i)
+        lateral_surfaces.push_back(extruded[i].second);
     }
-    if (curve_index != curve_ids.size())
+    if (lateral_surfaces.size() != curve_ids.size())
       throw SolverFailure("gmsh extrusion", "lateral surfaces do not match the curves");
   }
   gmsh::model::geo::synchronize();
+  if (options.dimension == 3)
+  {
+    const std::map<int, int> id_of_curve(curve_ids.begin(), curve_ids.end());
+    for (const int lateral : lateral_surfaces)
+    {
+      gmsh::vectorpair edges;
+      gmsh::model::getBoundary({{2, lateral}}, edges, false, false, false);
+      std::optional<int> id;
+      for (const auto& [edge_dim, edge] : edges)
+        if (const auto found = id_of_curve.find(std::abs(edge)); found != id_of_curve.end())
+          id = found->second;
+      if (!id)
+        throw SolverFailure("gmsh extrusion",
+                            "lateral surface " + std::to_string(lateral) + " has no base curve");
+      if (*id != 0)
+        lateral_surfaces_by_id[*id].push_back(lateral);
+    }
+  }
 
   const auto name_of_boundary = [&](const int id)
   {

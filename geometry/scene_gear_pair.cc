@@ -177,9 +177,19 @@ struct GearBodySpec
   int material_id, bore_id, cut_id;
   std::function<int(int)> flank_id; // of the tooth index in the gear's own frame
   double bore_radius;
-  unsigned int supports = 0; // -, full rim: 0 holds the whole bore circle, else N pads of it
-  double support_width = 0.; // m, arc length of one pad
+  unsigned int supports = 0;      // -, full rim: 0 holds the whole bore circle, else N pads of it
+  double support_width = 0.;      // m, arc length of one pad
+  unsigned int bolt_holes = 0;    // -, ring: N clamped holes in the rim, the bore circle free
+  double bolt_hole_radius = 0.;   // m
+  double bolt_circle_radius = 0.; // m, of the hole centres
 };
+
+// Polar angle (about the gear's centre) of pad or bolt hole k of N: (k + ½)·2π/N, so that the
+// pitch point (polar angle 0 about a ring's centre) lies midway between two.
+double support_angle(unsigned int k, unsigned int count)
+{
+  return (k + 0.5) * 2. * M_PI / count;
+}
 
 // Appends `added` to `pieces`, starting it exactly where the last piece ends (angles that
 // should coincide differ in the last bit once computed by two arcs).
@@ -196,6 +206,8 @@ void append_continuous(std::vector<BoundaryPiece>& pieces, std::vector<BoundaryP
 // mesh lies midway between two pads: the rim there bends as a curved beam between its supports.
 BoundaryLoop bore_loop(const GearBodySpec& body_spec, const Eigen::Vector2d& centre)
 {
+  if (body_spec.bolt_holes > 0) // bolted at holes in the rim: the outer circle is free
+    return circle_loop(centre, body_spec.bore_radius, scene_ids::free_surface);
   if (body_spec.supports == 0)
     return circle_loop(centre, body_spec.bore_radius, body_spec.bore_id);
   BoundaryLoop loop;
@@ -203,7 +215,7 @@ BoundaryLoop bore_loop(const GearBodySpec& body_spec, const Eigen::Vector2d& cen
   const double spacing = 2. * M_PI / body_spec.supports;
   for (unsigned int k = 0; k < body_spec.supports; ++k)
   {
-    const double middle = (k + 0.5) * spacing;
+    const double middle = support_angle(k, body_spec.supports);
     append_continuous(loop.pieces, arc_pieces(centre, body_spec.bore_radius, middle - half_pad,
                                               middle + half_pad, body_spec.bore_id));
     append_continuous(loop.pieces,
@@ -253,11 +265,19 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
         body.outer.pieces.push_back(piece);
     body.holes.push_back(bore_loop(body_spec, centre));
   }
-  // A ring's "bore" is its outer boundary, the teeth line the hole it encloses.
+  // A ring's "bore" is its outer boundary, the teeth line the hole it encloses; its bolt holes
+  // (clamped: the hub) are further holes.
   if (tooth.internal && rim == RimModel::full)
   {
     body.outer.pieces.back().points.back() = outline_start;
     std::swap(body.outer, body.holes.front());
+    for (unsigned int k = 0; k < body_spec.bolt_holes; ++k)
+    {
+      const double angle = support_angle(k, body_spec.bolt_holes);
+      body.holes.push_back(circle_loop(
+          centre + body_spec.bolt_circle_radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)),
+          body_spec.bolt_hole_radius, body_spec.bore_id));
+    }
     return body;
   }
   // The loop closes on the first point exactly (rotations by 2π are not bit-exact).
@@ -323,6 +343,62 @@ void check_wheel_supports(const GearPairSceneSpec& spec)
     throw InputError(scene_field::wheel_support_width, "must be positive");
 }
 
+// Bolt holes in a ring's rim: a full-rim internal wheel, at least two holes, not with pads (the
+// holes' fit in the rim is checked once the rim is known, in bolt_circle_radius).
+void check_wheel_bolt_holes(const GearPairSceneSpec& spec)
+{
+  if (spec.wheel_bolt_holes == 0)
+    return;
+  if (!spec.pair.wheel.internal || spec.rim != RimModel::full)
+    throw InputError(scene_field::wheel_bolt_holes,
+                     "applies to an internal wheel with a full rim only (0 otherwise)");
+  if (spec.wheel_bolt_holes < 2)
+    throw InputError(scene_field::wheel_bolt_holes,
+                     "must be 0 (no holes) or at least 2 bolt holes");
+  if (spec.wheel_supports > 0)
+    throw InputError(scene_field::wheel_bolt_holes,
+                     "a ring is held either at pads (wheel supports) or at bolt holes, not both");
+  if (!(spec.wheel_bolt_hole_diameter > 0.))
+    throw InputError(scene_field::wheel_bolt_hole_diameter, "must be positive");
+  if (!(spec.wheel_bolt_circle_diameter >= 0.))
+    throw InputError(scene_field::wheel_bolt_circle_diameter, "must be 0 or positive");
+}
+
+// Radius of the bolt-hole centres (m; 0 without holes) in the ring's rim between its root
+// circle and its outer circle. Every hole keeps at least one module of material towards the
+// root circle (the fillets and the tooth roots lie inside it: as the rim rule of bore_radius),
+// towards the outer circle and towards its neighbours.
+double bolt_circle_radius(const GearPairSceneSpec& spec, double root_radius, double outer_radius)
+{
+  if (spec.wheel_bolt_holes == 0)
+    return 0.;
+  const double ligament = spec.pair.wheel.normal_module;
+  const double hole_radius = 0.5 * spec.wheel_bolt_hole_diameter;
+  const double radius = spec.wheel_bolt_circle_diameter > 0. ? 0.5 * spec.wheel_bolt_circle_diameter
+                                                             : 0.5 * (root_radius + outer_radius);
+  const auto mm = [](double length) { return std::to_string(length * 1e3) + " mm"; };
+  if (radius - hole_radius < root_radius + ligament)
+    throw InputError(spec.wheel_bolt_circle_diameter > 0. ? scene_field::wheel_bolt_circle_diameter
+                                                          : scene_field::wheel_bolt_hole_diameter,
+                     "the holes (radius " + mm(hole_radius) + " on a " + mm(radius) +
+                         " circle) reach within one module (" + mm(ligament) +
+                         ") of the ring's root circle (radius " + mm(root_radius) +
+                         "): they would cut the teeth");
+  if (radius + hole_radius > outer_radius - ligament)
+    throw InputError(spec.wheel_bolt_circle_diameter > 0. ? scene_field::wheel_bolt_circle_diameter
+                                                          : scene_field::wheel_bolt_hole_diameter,
+                     "the holes (radius " + mm(hole_radius) + " on a " + mm(radius) +
+                         " circle) break out of the rim: they must end one module (" +
+                         mm(ligament) + ") inside its outer circle (radius " + mm(outer_radius) +
+                         ")");
+  if (2. * radius * std::sin(M_PI / spec.wheel_bolt_holes) < 2. * hole_radius + ligament)
+    throw InputError(scene_field::wheel_bolt_holes,
+                     std::to_string(spec.wheel_bolt_holes) + " holes of " + mm(2. * hole_radius) +
+                         " on a " + mm(radius) +
+                         " circle overlap or leave less than one module between neighbours");
+  return radius;
+}
+
 // The pads and the free arcs between them fit on the ring's outer circle of `radius` (m).
 void check_support_spacing(const GearPairSceneSpec& spec, double radius)
 {
@@ -343,6 +419,7 @@ void check_scene_spec(const GearPairSceneSpec& spec)
     throw InputError(scene_field::wheel_rim_thickness,
                      "applies to an internal wheel only (external gears: bore radius)");
   check_wheel_supports(spec);
+  check_wheel_bolt_holes(spec);
   if (spec.pair.pinion.helix_angle != 0. || spec.pair.wheel.helix_angle != 0.)
     throw InputError(kinematics::gear_parameter_name(false, "helix angle"),
                      "the gear-pair scene models spur gears only (helix angle 0)");
@@ -548,6 +625,8 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
       bore_radius(spec.wheel_bore_radius, spec.wheel_rim_thickness, spec.pair.wheel, true,
                   gears.wheel, scene_field::wheel_bore_radius);
   check_support_spacing(spec, scene.wheel_bore_radius);
+  scene.wheel_bolt_circle_radius =
+      bolt_circle_radius(spec, outline_root_radius(gears.wheel), scene.wheel_bore_radius);
   check_teeth_modelled(spec.pinion_teeth_modelled, spec.pair.pinion.teeth, spec.rim,
                        scene_field::pinion_teeth_modelled);
   check_teeth_modelled(spec.wheel_teeth_modelled, spec.pair.wheel.teeth, spec.rim,
@@ -602,12 +681,13 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
       std::min(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
   const int wheel_last =
       std::max(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
-  model.bodies.push_back(
-      gear_body({"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
-                 [&wheel_tooth](int k) { return wheel_flank_id(mate_tooth(wheel_tooth, k)); },
-                 scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width},
-                gears.wheel, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last,
-                spec.rim, spec.both_flanks));
+  model.bodies.push_back(gear_body(
+      {"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
+       [&wheel_tooth](int k) { return wheel_flank_id(mate_tooth(wheel_tooth, k)); },
+       scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width,
+       spec.wheel_bolt_holes, 0.5 * spec.wheel_bolt_hole_diameter, scene.wheel_bolt_circle_radius},
+      gears.wheel, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last, spec.rim,
+      spec.both_flanks));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},
                           {scene_ids::wheel_bore, "wheel bore"}};
   for (int j = pinion_first; j <= pinion_last; ++j)

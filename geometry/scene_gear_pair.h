@@ -3,9 +3,10 @@
 // the other teeth removed, as in the ANSYS model of Reszuta & Drewniak 2015), the wheel placed in
 // mesh, contact points predicted along the line of action.
 //
-// Internal pairs (ring wheel): the ring centre at (−a_w, 0), its rim held on its outer circle
-// (boundary id "wheel bore") — the whole circle, or N pads of it (a ring bolted or splined into a
-// rigid housing at N points, the mesh midway between two) — its loaded flank side −1, and pinion
+// Internal pairs (ring wheel): the ring centre at (−a_w, 0), its rim held (boundary id "wheel
+// bore") on its outer circle — the whole circle, or N pads of it (a ring splined into a rigid
+// housing at N points) — or at N bolt holes in the rim, the outer circle free (the mesh midway
+// between two pads or holes), its loaded flank side −1, and pinion
 // tooth j meshes ring tooth +j; T2 lies behind T1 on the line of action.
 //
 // Scene frame: pinion centre at the origin, wheel centre at (a_w, 0); the pinion drives counter-
@@ -63,6 +64,12 @@ struct GearPairSceneSpec
   // rim bends between the pads, as a ring bolted or splined into a rigid housing).
   unsigned int wheel_supports = 0;
   double wheel_support_width = 10e-3; // m, arc length of one pad on the outer circle
+  // -, internal wheel with a full rim: N ≥ 2 bolts the ring at N circular holes in its rim
+  // instead (the holes clamped, the outer circle free), evenly spaced at polar angles
+  // (k + ½)·360°/N, the mesh midway between two; 0: no holes (wheel_supports applies).
+  unsigned int wheel_bolt_holes = 0;
+  double wheel_bolt_hole_diameter = 6.6e-3; // m, diameter of one hole (M6 clearance, ISO 273)
+  double wheel_bolt_circle_diameter = 0.;   // m, of the hole centres; 0: the rim's middle
   RimModel rim = RimModel::sector;
   bool both_flanks = false; // also mark the unloaded flanks as candidate contact surfaces
 
@@ -91,6 +98,9 @@ inline const std::string wheel_bore_radius = "scene.wheel_bore_radius";
 inline const std::string wheel_rim_thickness = "scene.wheel_rim_thickness";
 inline const std::string wheel_supports = "scene.wheel_supports";
 inline const std::string wheel_support_width = "scene.wheel_support_width";
+inline const std::string wheel_bolt_holes = "scene.wheel_bolt_holes";
+inline const std::string wheel_bolt_hole_diameter = "scene.wheel_bolt_hole_diameter";
+inline const std::string wheel_bolt_circle_diameter = "scene.wheel_bolt_circle_diameter";
 inline const std::string both_flanks = "scene.both_flanks";
 inline const std::string pinion_torque = "scene.pinion_torque";
 inline const std::string young_modulus = "scene.young_modulus";
@@ -107,19 +117,20 @@ int wheel_flank_id(int pair);
 // A written gear-pair scene: the common SceneInfo and what this scene adds, by name.
 struct GearPairScene
 {
-  SceneInfo info;                  // mesh, ids, predicted contacts (one per pair in contact)
-  double reference_position = 0.;  // m, ℓ_ref of pair 0 along the line of action from T1
-  double pinion_roll_angle = 0.;   // rad, ℓ_ref/r_b1
-  std::vector<int> contact_pairs;  // -, j of the pairs inside the path of contact (A, E)
-  std::vector<int> modelled_pairs; // -, j whose pinion and wheel teeth are both in the scene
-  double pinion_bore_radius = 0.;  // m
-  double wheel_bore_radius = 0.;   // m
-  double pinion_root_radius = 0.;  // m, of the meshed profile
-  double wheel_root_radius = 0.;   // m
-  double pinion_tip_radius = 0.;   // m
-  double wheel_tip_radius = 0.;    // m
-  double pinion_sector_angle = 0.; // rad, angle spanned by the pinion body (full rim: 2π)
-  double wheel_sector_angle = 0.;  // rad
+  SceneInfo info;                       // mesh, ids, predicted contacts (one per pair in contact)
+  double reference_position = 0.;       // m, ℓ_ref of pair 0 along the line of action from T1
+  double pinion_roll_angle = 0.;        // rad, ℓ_ref/r_b1
+  std::vector<int> contact_pairs;       // -, j of the pairs inside the path of contact (A, E)
+  std::vector<int> modelled_pairs;      // -, j whose pinion and wheel teeth are both in the scene
+  double pinion_bore_radius = 0.;       // m
+  double wheel_bore_radius = 0.;        // m
+  double wheel_bolt_circle_radius = 0.; // m, of the ring's bolt-hole centres (0: no holes)
+  double pinion_root_radius = 0.;       // m, of the meshed profile
+  double wheel_root_radius = 0.;        // m
+  double pinion_tip_radius = 0.;        // m
+  double wheel_tip_radius = 0.;         // m
+  double pinion_sector_angle = 0.;      // rad, angle spanned by the pinion body (full rim: 2π)
+  double wheel_sector_angle = 0.;       // rad
 };
 
 // Checks the spec (InputError naming the field; all before gmsh runs), builds the scene,
