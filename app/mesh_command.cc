@@ -296,7 +296,7 @@ void write_deck(const geometry::SceneInfo& info, geometry::AbaqusDeckSpec deck,
     for (const auto& body : deck.rigid_bodies)
       context.report.add_value("deck_closing_rotation_" + body.name, body.closing_rotation * 1e6,
                                "µrad",
-                               "rotation of " + body.name + " prescribed in the deck's first step");
+                               "rotation prescribed in the deck's first step (" + body.name + ")");
     return;
   }
   const std::filesystem::path scratch = std::filesystem::temp_directory_path() /

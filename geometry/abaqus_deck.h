@@ -1,8 +1,9 @@
 // A written scene as a CalculiX/Abaqus input deck (.inp), so that `ccx -i scene` solves the same
 // mesh and load case as gearstiff with no editing: nodes, elements, one element set per body, an
 // element-face surface and a node set per boundary group, the material, the candidate contact
-// pairs (penalty face-to-face contact, Coulomb friction), one bore driven as a rigid body whose
-// rotation node carries the torque, the other bore fixed, and the output requests.
+// pairs (penalty face-to-face contact, Coulomb friction), bores as rigid bodies whose rotation
+// nodes carry the torques (gear pair: the pinion bore; cycloid: the disc bearing, torque-free,
+// and the output member over every pin bore), bores held fixed, and the output requests.
 //
 // Element choice. 3D scenes are written as C3D8 (fully integrated, the same trilinear element as
 // deal.II's FE_Q(1) hexahedron). 2D scenes are written by default as a one-element-thick C3D8
