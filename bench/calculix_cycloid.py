@@ -112,7 +112,7 @@ def calculix_loads(gearstiff, crank, factor, work, env):
     psi = (180. - crank) / (ROLLERS - 1)
     command = [gearstiff, "mesh", "-o", folder, "--set", "Scene/type=cycloid",
                "--set", "Mesh/format=inp", "--set", f"Abaqus deck/penalty factor={factor:g}",
-               "--set", f"Cycloid scene/disc rotation={psi:.15g}"]
+               "--set", f"Cycloid scene/disc rotation={psi:.17g}"]
     for key, v in SCENE.items():
         command += ["--set", f"{key}={v}"]
     subprocess.run(command, check=True, capture_output=True)
