@@ -57,16 +57,16 @@ def scene_settings(sizes, scale):
 
 
 def run_timed(command, cwd=None, env=None):
-    """Runs `command` under GNU time: (stdout, wall s, peak resident MB)."""
+    """Runs `command` under GNU time: (stdout, wall s, peak resident MB, stderr)."""
     marker = "@@calculix_compare"
     full = ["/usr/bin/time", "-f", f"{marker} %e %M"] + command
     process = subprocess.run(full, cwd=cwd, env=env, capture_output=True, text=True)
     if process.returncode != 0:
-        sys.exit(f"calculix_compare: {' '.join(command)} failed ({process.returncode}):\n"
+        sys.exit(f"{os.path.basename(sys.argv[0])}: {' '.join(command)} failed ({process.returncode}):\n"
                  + process.stderr[-2000:] + process.stdout[-2000:])
     line = [l for l in process.stderr.splitlines() if l.startswith(marker)][-1]
     wall, kbytes = line.split()[1:3]
-    return process.stdout, float(wall), float(kbytes) / 1024.
+    return process.stdout, float(wall), float(kbytes) / 1024., process.stderr
 
 
 def value(summary, key):
@@ -80,7 +80,7 @@ def gearstiff_position(gearstiff, position, settings, friction, env):
                "--set", f"Contact/Friction coefficient={friction:g}"]
     for s in settings:
         command += ["--set", s]
-    stdout, wall, memory = run_timed(command, env=env)
+    stdout, wall, memory, _ = run_timed(command, env=env)
     summary = json.loads(stdout[stdout.index("{"):])
     values = summary.get("values", summary)
     return {
@@ -182,7 +182,7 @@ def calculix_position(gearstiff, position, settings, friction, factor, work, env
     for s in settings:
         command += ["--set", s]
     subprocess.run(command, check=True, capture_output=True)
-    stdout, wall, memory = run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
+    stdout, wall, memory, _ = run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
     own = [l for l in stdout.splitlines() if l.startswith("Total CalculiX Time:")]
     nodes, sets, rot = read_deck(os.path.join(folder, "scene.inp"))
     rotation = last_rotation(os.path.join(folder, "scene.dat"), rot)

@@ -24,6 +24,8 @@ import re
 import subprocess
 import sys
 
+from calculix_compare import run_timed, value
+
 # mm: stiffness::default_cycloid_load_scene() (cycloid-loads' defaults), which `gearstiff mesh`
 # does not share: passed explicitly so both mesh the same scene.
 SCENE = {
@@ -39,24 +41,6 @@ ROLLERS = 20  # z_k, gear-data.md §4
 ARCMIN = math.pi / (180. * 60.)
 
 
-def run_timed(command, cwd=None, env=None):
-    """Runs `command` under GNU time: (stdout, stderr, wall s, peak resident MB)."""
-    marker = "@@calculix_cycloid"
-    full = ["/usr/bin/time", "-f", f"{marker} %e %M"] + command
-    process = subprocess.run(full, cwd=cwd, env=env, capture_output=True, text=True)
-    if process.returncode != 0:
-        sys.exit(f"calculix_cycloid: {' '.join(command)} failed ({process.returncode}):\n"
-                 + process.stderr[-2000:] + process.stdout[-2000:])
-    line = [l for l in process.stderr.splitlines() if l.startswith(marker)][-1]
-    wall, kbytes = line.split()[1:3]
-    return process.stdout, process.stderr, float(wall), float(kbytes) / 1024.
-
-
-def value(values, key):
-    entry = values[key]
-    return entry["value"] if isinstance(entry, dict) else entry
-
-
 def table_column(table, column):
     index = table["columns"].index(column)
     return [row[index] for row in table["rows"]]
@@ -68,7 +52,7 @@ def gearstiff_loads(gearstiff, crank, env):
                "--set", f"Cycloid loads/crank angle={crank:.12g}"]
     for key, v in SCENE.items():
         command += ["--set", f"{key}={v}"]
-    stdout, stderr, wall, memory = run_timed(command, env=env)
+    stdout, wall, memory, stderr = run_timed(command, env=env)
     summary = json.loads(stdout[stdout.index("{"):])
     values, tables = summary["values"], summary["tables"]
     # "case 1/1: ..., 46556 DoFs, 11.9 s (scene 6.4 s, setup 0.087 s, solve 5.2 s)"
@@ -116,7 +100,7 @@ def calculix_loads(gearstiff, crank, factor, work, env):
     for key, v in SCENE.items():
         command += ["--set", f"{key}={v}"]
     subprocess.run(command, check=True, capture_output=True)
-    stdout, _, wall, memory = run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
+    stdout, wall, memory, _ = run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
     own = re.search(r"Total CalculiX Time:\s*([0-9.eE+-]+)", stdout)
     rotations, reactions, pairs = read_dat(os.path.join(folder, "scene.dat"))
     with open(os.path.join(folder, "scene.sta")) as f:
