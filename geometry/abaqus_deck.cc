@@ -345,6 +345,7 @@ void write_model(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info
   write_material(out, mesh, info, spec, layout);
   write_contact(out, info, spec);
   write_rigid_bodies(out, mesh, info, spec, layout);
+  // The supports are written per step with the group names; a bad id stops here, named.
   for (const int id : spec.fixed_bores)
     boundary_name(info, id, "Abaqus deck/fixed bores");
 }
