@@ -518,6 +518,9 @@ AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& 
   if (!spec.output_pin_bodies || spec.output_pins == 0)
     throw InputError("Cycloid scene/output pin bodies",
                      "the deck ties the output pins to the output member: mesh them");
+  if (!(std::abs(output_torque) > 0.) || !std::isfinite(output_torque))
+    throw InputError("Abaqus deck/output torque",
+                     "must not be zero: without a torque nothing is loaded (N·m)");
   // Frictionless, plane stress: the load case of stiffness/cycloid_loads.h.
   AbaqusDeckSpec deck =
       common_deck_spec(info, spec.young_modulus, spec.poisson_ratio, 0., penalty_factor);

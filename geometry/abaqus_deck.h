@@ -126,7 +126,8 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPair
 // rigid output member about the ring centre carrying `output_torque` (N·m, counter-clockwise > 0);
 // one contact pair per roller within the scene's contact clearance (roller surface on the lobe
 // faces nearest to it) and per output pin (pin surface on its hole), frictionless; plane stress
-// of the disc width. InputError("Cycloid scene/output pin bodies") without meshed pins.
+// of the disc width. InputError("Cycloid scene/output pin bodies") without meshed pins,
+// InputError("Abaqus deck/output torque") for a zero torque.
 AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& info,
                                  double output_torque, double penalty_factor);
 

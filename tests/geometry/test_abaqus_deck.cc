@@ -349,10 +349,12 @@ TEST(AbaqusDeck, CycloidSceneWithOutputMember)
   }
 }
 
-TEST(AbaqusDeck, CycloidDeckNeedsTheOutputPins)
+TEST(AbaqusDeck, CycloidDeckRejectsBadInput)
 {
   CycloidSceneSpec spec = coarse_cycloid_spec();
   spec.output_pin_bodies = false;
   EXPECT_THROW(cycloid_deck_spec(spec, SceneInfo(), 440., 50.), InputError); // before any mesh
+  spec.output_pin_bodies = true; // a zero torque loads nothing
+  EXPECT_THROW(cycloid_deck_spec(spec, SceneInfo(), 0., 50.), InputError);
 }
 } // namespace
