@@ -42,15 +42,20 @@ void declare_deck_parameters(ParameterHandler& prm)
   prm.enter_subsection("Mesh");
   prm.declare_entry("format", "msh", Selection("msh|inp|msh and inp"),
                     "msh: the gmsh mesh (Scene/mesh file); inp: a CalculiX/Abaqus input deck of "
-                    "the gear-pair scene of the same name ending in .inp, solvable by `ccx -i` "
-                    "as it is (docs/calculix.md); msh and inp: both");
+                    "the gear-pair or cycloid scene (the latter with its output pins meshed) of "
+                    "the same name ending in .inp, solvable by `ccx -i` as it is "
+                    "(docs/calculix.md); msh and inp: both");
   prm.leave_subsection();
   prm.enter_subsection("Abaqus deck");
   prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
   prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks [-] (gear-data.md §1: 0.01)");
+                    "Coulomb μ between the flanks [-] (gear-data.md §1: 0.01; the cycloid deck "
+                    "is frictionless, as cycloid-loads)");
+  prm.declare_entry("output torque", "440", Double(),
+                    "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
+                    "(gear-data.md §4: 440)");
   prm.declare_entry("penalty factor", "50", Double(1e-3),
                     "contact penalty slope K = factor · E / h_c [-]");
   prm.leave_subsection();
@@ -240,6 +245,7 @@ struct DeckRequest
   geometry::Element2D element_2d = geometry::Element2D::slice;
   double friction = 0.;       // -
   double penalty_factor = 0.; // -
+  double output_torque = 0.;  // N·m, cycloid: M_c
 };
 
 DeckRequest parse_deck_request(ParameterHandler& prm, const std::string& type)
@@ -250,25 +256,24 @@ DeckRequest parse_deck_request(ParameterHandler& prm, const std::string& type)
   prm.leave_subsection();
   request.write = format != "msh";
   request.keep_msh = format != "inp";
-  if (request.write && type != "gear pair")
-    throw InputError("Mesh/format", "the inp deck is written for the gear-pair scene only");
+  if (request.write && type == "cylinders")
+    throw InputError("Mesh/format",
+                     "the inp deck is written for the gear-pair and cycloid scenes only");
   prm.enter_subsection("Abaqus deck");
   request.element_2d =
       geometry::parse_element_2d(prm.get("2D elements"), "Abaqus deck/2D elements");
   request.friction = prm.get_double("friction coefficient");
   request.penalty_factor = prm.get_double("penalty factor");
+  request.output_torque = prm.get_double("output torque");
   prm.leave_subsection();
   return request;
 }
 
 // The deck next to (or instead of) the .msh; without -o it is written to scratch and removed,
 // so every check of the export still runs.
-void write_deck(const geometry::GearPairSceneSpec& spec, const geometry::GearPairScene& scene,
+void write_deck(const geometry::SceneInfo& info, geometry::AbaqusDeckSpec deck,
                 const DeckRequest& request, const std::string& msh_name, CommandContext& context)
 {
-  const geometry::SceneInfo& info = scene.info;
-  geometry::AbaqusDeckSpec deck =
-      geometry::gear_pair_deck_spec(spec, scene, request.friction, request.penalty_factor);
   deck.element_2d = request.element_2d;
   const std::string name = std::filesystem::path(msh_name).replace_extension(".inp").string();
   if (context.writes_files())
@@ -277,8 +282,10 @@ void write_deck(const geometry::GearPairSceneSpec& spec, const geometry::GearPai
                                 context.output_file(name, "CalculiX/Abaqus input deck (ccx -i)"));
     context.report.add_value("deck_penalty", deck.penalty, "Pa/m",
                              "contact penalty slope of the deck");
-    context.report.add_value("deck_closing_rotation", deck.closing_rotation * 1e6, "µrad",
-                             "rotation prescribed in the deck's first step");
+    for (const auto& body : deck.rigid_bodies)
+      context.report.add_value("deck_closing_rotation_" + body.name, body.closing_rotation * 1e6,
+                               "µrad",
+                               "rotation prescribed in the deck's first step (" + body.name + ")");
     return;
   }
   const std::filesystem::path scratch = std::filesystem::temp_directory_path() /
@@ -313,8 +320,10 @@ void run(ParameterHandler& prm, CommandContext& context)
   const bool cycloid = type == "cycloid";
   const geometry::CylindersSceneSpec cylinder_spec =
       type == "cylinders" ? parse_cylinders(prm) : geometry::CylindersSceneSpec();
-  const geometry::CycloidSceneSpec cycloid_spec =
+  geometry::CycloidSceneSpec cycloid_spec =
       cycloid ? parse_cycloid(prm) : geometry::CycloidSceneSpec();
+  // The cycloid deck ties the output pins to the output member: mesh them in their holes.
+  cycloid_spec.output_pin_bodies = cycloid_spec.output_pin_bodies || deck.write;
 
   std::string path;
   std::filesystem::path scratch;
@@ -338,7 +347,12 @@ void run(ParameterHandler& prm, CommandContext& context)
            : cycloid ? geometry::write_cycloid_scene(cycloid_spec, path)
                      : geometry::write_cylinders_scene(cylinder_spec, path);
     if (deck.write)
-      write_deck(gear_spec, gear_scene, deck, file_name, context);
+      write_deck(info,
+                 gear ? geometry::gear_pair_deck_spec(gear_spec, gear_scene, deck.friction,
+                                                      deck.penalty_factor)
+                      : geometry::cycloid_deck_spec(cycloid_spec, info, deck.output_torque,
+                                                    deck.penalty_factor),
+                 deck, file_name, context);
   }
   catch (...)
   {

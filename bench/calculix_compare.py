@@ -9,6 +9,10 @@ For the single- and double-pair positions of the split-path pair (gear-data.md �
     penalty-free value is k_inf = (f1·k1 − f2·k2)/(f1 − f2).
 k = T1/(r_b1²·Δφ) (gear-data.md §1), Δφ from the rigid body's rotation node. Both solvers run on
 one core (one MPI rank; OMP_NUM_THREADS=1). Peak memory is the process's maximum resident set.
+Time ratio R (last line) = one ccx process (mean of the penalties) / the gearstiff process
+without its meshing (process wall time − its in-process meshing time): both from a finished
+mesh. Printed beside it: against the whole gearstiff process, and against gearstiff's FE time on
+the mesh (reading, setup, contact solve; in-process timers).
 
 usage: calculix_compare.py GEARSTIFF [--size-scale s] [--factors f1,f2] [--work DIR]
        [--positions single,double] [--csv FILE] [--internal]
@@ -53,16 +57,16 @@ def scene_settings(sizes, scale):
 
 
 def run_timed(command, cwd=None, env=None):
-    """Runs `command` under GNU time: (stdout, wall s, peak resident MB)."""
+    """Runs `command` under GNU time: (stdout, wall s, peak resident MB, stderr)."""
     marker = "@@calculix_compare"
     full = ["/usr/bin/time", "-f", f"{marker} %e %M"] + command
     process = subprocess.run(full, cwd=cwd, env=env, capture_output=True, text=True)
     if process.returncode != 0:
-        sys.exit(f"calculix_compare: {' '.join(command)} failed ({process.returncode}):\n"
+        sys.exit(f"{os.path.basename(sys.argv[0])}: {' '.join(command)} failed ({process.returncode}):\n"
                  + process.stderr[-2000:] + process.stdout[-2000:])
     line = [l for l in process.stderr.splitlines() if l.startswith(marker)][-1]
     wall, kbytes = line.split()[1:3]
-    return process.stdout, float(wall), float(kbytes) / 1024.
+    return process.stdout, float(wall), float(kbytes) / 1024., process.stderr
 
 
 def value(summary, key):
@@ -76,7 +80,7 @@ def gearstiff_position(gearstiff, position, settings, friction, env):
                "--set", f"Contact/Friction coefficient={friction:g}"]
     for s in settings:
         command += ["--set", s]
-    stdout, wall, memory = run_timed(command, env=env)
+    stdout, wall, memory, _ = run_timed(command, env=env)
     summary = json.loads(stdout[stdout.index("{"):])
     values = summary.get("values", summary)
     return {
@@ -86,6 +90,10 @@ def gearstiff_position(gearstiff, position, settings, friction, env):
         "root": value(values, "pinion_root_stress"),          # MPa
         "cells": value(values, "cells"),
         "dofs": value(values, "dofs"),
+        # In-process timers: meshing (gmsh, writing the .msh), and the FE work on the finished
+        # mesh (reading it, DoFs, stiffness, mortar coupling, contact iterations).
+        "scene": value(values, "time_scene"),
+        "fe": value(values, "time_setup") + value(values, "time_solve"),
         "time": wall, "memory": memory,
     }
 
@@ -174,7 +182,8 @@ def calculix_position(gearstiff, position, settings, friction, factor, work, env
     for s in settings:
         command += ["--set", s]
     subprocess.run(command, check=True, capture_output=True)
-    _, wall, memory = run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
+    stdout, wall, memory, _ = run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
+    own = [l for l in stdout.splitlines() if l.startswith("Total CalculiX Time:")]
     nodes, sets, rot = read_deck(os.path.join(folder, "scene.inp"))
     rotation = last_rotation(os.path.join(folder, "scene.dat"), rot)
     blocks = frd_blocks(os.path.join(folder, "scene.frd"), {"STRESS", "CONTACT"})
@@ -185,7 +194,8 @@ def calculix_position(gearstiff, position, settings, friction, factor, work, env
         sxx, syy, _, sxy = blocks["STRESS"][n][:4]
         root_stress = max(root_stress, 0.5 * (sxx + syy) + math.hypot(0.5 * (sxx - syy), sxy))
     return {"rotation": rotation, "pressure": pressure / 1e6, "root": root_stress / 1e6,
-            "time": wall, "memory": memory, "dofs": 3 * len(nodes)}
+            "time": wall, "memory": memory, "dofs": 3 * len(nodes),
+            "own_time": float(own[-1].split(":")[1]) if own else float("nan")}
 
 
 def append_csv(path, header):
@@ -261,7 +271,7 @@ def main():
     torque = 49.4  # N·m, the default T1 of both commands (gear-data.md §1)
 
     rows, headline = [], None
-    times = {"gearstiff": 0., "ccx": 0.}
+    times = {"gearstiff": 0., "gearstiff_scene": 0., "gearstiff_fe": 0., "ccx": 0., "ccx_own": 0.}
     for position in args.positions.split(","):
         g = gearstiff_position(args.gearstiff, position, settings, args.friction, env)
         runs = [calculix_position(args.gearstiff, position, settings, args.friction, f,
@@ -280,8 +290,15 @@ def main():
                   f" {run['memory']:8.0f}")
         print(f"  {'ccx, K -> infinity':24s} {k_inf:9.3f} {torque / (r_b1**2 * k_inf * 1e6) * 1e6:10.3f}")
         print(f"  gearstiff / ccx(K->inf) - 1 = {(g['k'] / k_inf - 1) * 100:+.2f} %")
+        print(f"  times: gearstiff process {g['time']:.2f} s = meshing {g['scene']:.2f} s"
+              f" + FE on the mesh (read, setup, contact solve) {g['fe']:.2f} s"
+              f" + start-up and output {g['time'] - g['scene'] - g['fe']:.2f} s; ccx process"
+              + "".join(f" {run['time']:.2f} s (own {run['own_time']:.2f} s)" for run in runs))
         times["gearstiff"] += g["time"]
+        times["gearstiff_scene"] += g["scene"]
+        times["gearstiff_fe"] += g["fe"]
         times["ccx"] += sum(run["time"] for run in runs) / len(runs)
+        times["ccx_own"] += sum(run["own_time"] for run in runs) / len(runs)
         rows.append((position, g, runs, ks, k_inf))
         if headline is None:
             headline = (g["k"], k_inf)
@@ -298,8 +315,18 @@ def main():
     if args.accuracy_csv:
         write_accuracy_rows(args, rows)
     x, y = headline
-    ratio = times["ccx"] / times["gearstiff"]
-    print(f"time ratio: one ccx solve / one gearstiff solve, summed over the positions")
+    # Both from a finished mesh: the ccx process (reads the deck, solves, writes) against the
+    # gearstiff process without its meshing (start-up, reading the .msh, solve, output) — ccx
+    # gets its mesh from the deck, gearstiff meshes in-process. The other two ratios beside it.
+    finished = times["gearstiff"] - times["gearstiff_scene"]
+    ratio = times["ccx"] / finished
+    print(f"time ratio (one ccx solve, mean of the penalties, summed over the positions):")
+    print(f"  ccx process {times['ccx']:.2f} s / gearstiff process without meshing "
+          f"{finished:.2f} s = {ratio:.1f}x (headline)")
+    print(f"  ccx process / gearstiff whole process {times['gearstiff']:.2f} s = "
+          f"{times['ccx'] / times['gearstiff']:.1f}x")
+    print(f"  ccx process / gearstiff FE on the mesh {times['gearstiff_fe']:.2f} s = "
+          f"{times['ccx'] / times['gearstiff_fe']:.1f}x (ccx's own total {times['ccx_own']:.2f} s)")
     print(f"calculix_compare: k gearstiff {x:.3f} N/um, CalculiX {y:.3f} N/um "
           f"({(x / y - 1) * 100:+.2f} %), time ratio {ratio:.1f}x")
 

@@ -5,7 +5,8 @@
 # 1/K). Prints k, rotation, peak contact pressure, root stress, wall time and peak memory of
 # both; the last line is
 #   calculix_compare: k gearstiff X N/um, CalculiX Y N/um (Z %), time ratio Rx
-# (single pair; Y penalty-corrected, Z = X/Y - 1, R = CalculiX time / gearstiff time).
+# (single pair; Y penalty-corrected, Z = X/Y - 1, R = CalculiX time / gearstiff time: one ccx
+# process against the gearstiff process without its meshing, both from a finished mesh).
 # Installs Debian's calculix-ccx if ccx is missing. Not run by CI (minutes).
 # usage: bench/calculix_compare.sh [path/to/gearstiff] [calculix_compare.py options]
 set -euo pipefail

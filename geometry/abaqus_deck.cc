@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <gmsh.h>
 #include <iomanip>
 #include <map>
@@ -16,6 +17,10 @@ namespace gearstiff::geometry
 {
 namespace
 {
+// N/m², c' = 14 N/(mm·µm): the order of a steel spur pair's single stiffness (ISO 6336-1), for
+// the closing rotations of step 1 (a tenth of an estimate of the loaded rotation).
+constexpr double single_pair_stiffness = 14e9;
+
 // gmsh is a process-wide singleton: one session per read, finalised even when reading throws.
 class GmshReadSession
 {
@@ -75,8 +80,17 @@ std::vector<unsigned int> sorted(std::vector<unsigned int> nodes)
   return nodes;
 }
 
-// For every labelled facet: (cell index, 0-based face number in cell_faces order).
-std::multimap<int, std::pair<std::size_t, unsigned int>> facet_faces(const SceneMesh& mesh)
+// A labelled facet as a cell face: cell index, 0-based face number in cell_faces order, and the
+// facet's index in SceneMesh::facets.
+struct CellFace
+{
+  std::size_t cell = 0;
+  unsigned int face = 0;
+  std::size_t facet = 0;
+};
+
+// For every labelled facet, by boundary id.
+std::multimap<int, CellFace> facet_faces(const SceneMesh& mesh)
 {
   std::map<std::vector<unsigned int>, std::pair<std::size_t, unsigned int>> faces;
   const auto& local = cell_faces(mesh.dimension);
@@ -88,15 +102,16 @@ std::multimap<int, std::pair<std::size_t, unsigned int>> facet_faces(const Scene
         nodes.push_back(mesh.cells[c].nodes[i]);
       faces[sorted(nodes)] = {c, f};
     }
-  std::multimap<int, std::pair<std::size_t, unsigned int>> result;
-  for (const auto& facet : mesh.facets)
+  std::multimap<int, CellFace> result;
+  for (std::size_t i = 0; i < mesh.facets.size(); ++i)
   {
+    const auto& facet = mesh.facets[i];
     const auto found = faces.find(sorted(facet.nodes));
     if (found == faces.end())
       throw SolverFailure("writing the Abaqus deck", "a facet of boundary id " +
                                                          std::to_string(facet.boundary_id) +
                                                          " is not the face of any cell");
-    result.emplace(facet.boundary_id, found->second);
+    result.emplace(facet.boundary_id, CellFace{found->second.first, found->second.second, i});
   }
   return result;
 }
@@ -190,10 +205,31 @@ std::vector<std::size_t> boundary_nodes(const SceneMesh& mesh, const DeckLayout&
   return {nodes.begin(), nodes.end()};
 }
 
+// Index of the point of `centres` nearest to the centroid of `facet` (in the plane).
+unsigned int nearest_centre(const SceneMesh& mesh, const SceneMesh::Facet& facet,
+                            const std::vector<Eigen::Vector2d>& centres)
+{
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (const unsigned int n : facet.nodes)
+    centroid += mesh.nodes[n].head<2>() / double(facet.nodes.size());
+  unsigned int best = 0;
+  for (unsigned int k = 1; k < centres.size(); ++k)
+    if ((centres[k] - centroid).norm() < (centres[best] - centroid).norm())
+      best = k;
+  return best;
+}
+
 void write_groups(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info,
-                  const DeckLayout& layout)
+                  const AbaqusDeckSpec& spec, const DeckLayout& layout)
 {
   const auto faces = facet_faces(mesh);
+  const auto write_faces = [&](int id, const std::function<bool(const CellFace&)>& take)
+  {
+    const auto [first, last] = faces.equal_range(id);
+    for (auto it = first; it != last; ++it)
+      if (take(it->second))
+        out << it->second.cell + 1 << ", " << layout.face_label(it->second.face) << "\n";
+  };
   for (const auto& [id, name] : info.boundary_names)
   {
     if (faces.count(id) == 0)
@@ -201,9 +237,16 @@ void write_groups(std::ostream& out, const SceneMesh& mesh, const SceneInfo& inf
     out << "*NSET, NSET=" << abaqus_name(name) << "_NODES\n";
     write_list(out, boundary_nodes(mesh, layout, id));
     out << "*SURFACE, NAME=" << abaqus_name(name) << ", TYPE=ELEMENT\n";
-    const auto [first, last] = faces.equal_range(id);
-    for (auto it = first; it != last; ++it)
-      out << it->second.first + 1 << ", " << layout.face_label(it->second.second) << "\n";
+    write_faces(id, [](const CellFace&) { return true; });
+  }
+  for (const AbaqusSurfacePart& part : spec.surface_parts)
+  {
+    if (part.index >= part.centres.size())
+      throw InputError("Abaqus deck/surface parts",
+                       part.name + ": no centre " + std::to_string(part.index));
+    out << "*SURFACE, NAME=" << part.name << ", TYPE=ELEMENT\n";
+    write_faces(part.boundary_id, [&](const CellFace& f)
+                { return nearest_centre(mesh, mesh.facets[f.facet], part.centres) == part.index; });
   }
 }
 
@@ -215,17 +258,42 @@ std::string boundary_name(const SceneInfo& info, int id, const std::string& para
   return abaqus_name(found->second);
 }
 
-void write_model(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info,
-                 const AbaqusDeckSpec& spec, const DeckLayout& layout)
+// The material; a plane-stress slice takes the constants whose plane-strain response is the
+// plane-stress one of (E, ν): E' = E(1 + 2ν)/(1 + ν)², ν' = ν/(1 + ν) (in-plane stresses and
+// strains exactly; the slice's σ_zz is then not the plane-stress zero).
+void write_material(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info,
+                    const AbaqusDeckSpec& spec, const DeckLayout& layout)
 {
-  out << "*MATERIAL, NAME=STEEL\n*ELASTIC\n"
-      << spec.young_modulus << ", " << spec.poisson_ratio << "\n";
+  double e = spec.young_modulus, nu = spec.poisson_ratio;
+  if (layout.slice && spec.plane_stress)
+  {
+    out << "** plane stress of E = " << e << ", nu = " << nu
+        << " as plane strain of the equivalent constants\n";
+    e = spec.young_modulus * (1. + 2. * nu) / ((1. + nu) * (1. + nu));
+    nu = spec.poisson_ratio / (1. + spec.poisson_ratio);
+  }
+  out << "*MATERIAL, NAME=STEEL\n*ELASTIC\n" << e << ", " << nu << "\n";
   for (const auto& [id, name] : info.material_names)
   {
     out << "*SOLID SECTION, ELSET=" << abaqus_name(name) << ", MATERIAL=STEEL\n";
     if (mesh.dimension == 2 && !layout.slice)
       out << spec.slice_thickness << "\n";
   }
+}
+
+void write_contact(std::ostream& out, const SceneInfo& info, const AbaqusDeckSpec& spec)
+{
+  std::set<std::string> surfaces;
+  for (const auto& [id, name] : info.boundary_names)
+    surfaces.insert(abaqus_name(name));
+  for (const auto& part : spec.surface_parts)
+    surfaces.insert(part.name);
+  const auto surface = [&](const std::string& name) -> const std::string&
+  {
+    if (surfaces.count(name) == 0)
+      throw InputError("Abaqus deck/contact pairs", "no surface named " + name);
+    return name;
+  };
   out << "*SURFACE INTERACTION, NAME=CONTACT\n"
       << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
       << spec.penalty << "\n";
@@ -233,44 +301,66 @@ void write_model(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info
     out << "*FRICTION\n" << spec.friction << ", " << spec.stick_slope << "\n";
   for (const auto& [slave, master] : spec.contact_pairs)
     out << "*CONTACT PAIR, INTERACTION=CONTACT, TYPE=SURFACE TO SURFACE\n"
-        << boundary_name(info, slave, "Abaqus deck/contact pairs") << ", "
-        << boundary_name(info, master, "Abaqus deck/contact pairs") << "\n";
+        << surface(slave) << ", " << surface(master) << "\n";
+}
 
-  // The driven bore: a rigid body about its centre, REF NODE and ROT NODE after all mesh nodes.
-  const std::size_t ref = mesh.nodes.size() * (layout.slice ? 2 : 1) + 1, rot = ref + 1;
-  out << "** REF NODE " << ref << " (axis of the driven bore), ROT NODE " << rot
-      << " (its displacements are the rotations about x, y, z)\n"
-      << "*NODE, NSET=DRIVEN_REF\n"
-      << ref << ", " << spec.driven_centre.x() << ", " << spec.driven_centre.y() << ", 0\n"
-      << "*NODE, NSET=DRIVEN_ROT\n"
-      << rot << ", " << spec.driven_centre.x() << ", " << spec.driven_centre.y() << ", 0\n";
-  const std::string driven = boundary_name(info, spec.driven_bore, "Abaqus deck/driven bore");
-  const std::string fixed = boundary_name(info, spec.fixed_bore, "Abaqus deck/fixed bore");
-  out << "*RIGID BODY, NSET=" << driven << "_NODES, REF NODE=" << ref << ", ROT NODE=" << rot
-      << "\n";
+// The rigid bodies, REF NODE and ROT NODE of each after all mesh nodes, and (slice) the set of
+// the nodes held in plane strain.
+void write_rigid_bodies(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info,
+                        const AbaqusDeckSpec& spec, const DeckLayout& layout)
+{
+  std::size_t next = mesh.nodes.size() * (layout.slice ? 2 : 1) + 1;
+  std::set<std::size_t> rigid_nodes;
+  for (const AbaqusRigidBody& body : spec.rigid_bodies)
+  {
+    const std::size_t ref = next++, rot = next++;
+    const Eigen::Vector2d& c = body.centre;
+    out << "** " << body.name << ": REF NODE " << ref << " (axis), ROT NODE " << rot
+        << " (its displacements are the rotations about x, y, z)\n"
+        << "*NODE, NSET=" << body.name << "_REF\n"
+        << ref << ", " << c.x() << ", " << c.y() << ", 0\n"
+        << "*NODE, NSET=" << body.name << "_ROT\n"
+        << rot << ", " << c.x() << ", " << c.y() << ", 0\n"
+        << "*RIGID BODY, NSET=" << boundary_name(info, body.boundary_id, "Abaqus deck/rigid bodies")
+        << "_NODES, REF NODE=" << ref << ", ROT NODE=" << rot << "\n";
+    const auto nodes = boundary_nodes(mesh, layout, body.boundary_id);
+    rigid_nodes.insert(nodes.begin(), nodes.end());
+  }
   if (layout.slice)
   {
-    // Plane strain: u_z = 0 everywhere but on the rigid bore, whose u_z follows from the
-    // reference node (fixed below) and the rotations about x and y (fixed below).
-    const auto driven_nodes = boundary_nodes(mesh, layout, spec.driven_bore);
+    // Plane strain: u_z = 0 everywhere but on the rigid bores, whose u_z follows from their
+    // reference nodes (fixed below) and the rotations about x and y (fixed below).
     std::vector<std::size_t> plane;
     for (std::size_t n = 1; n <= 2 * mesh.nodes.size(); ++n)
-      if (!std::binary_search(driven_nodes.begin(), driven_nodes.end(), n))
+      if (rigid_nodes.count(n) == 0)
         plane.push_back(n);
     out << "*NSET, NSET=PLANE_STRAIN\n";
     write_list(out, plane);
   }
 }
 
-// The supports of both steps: the fixed bore, the reference node, the out-of-plane rotations.
+void write_model(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info,
+                 const AbaqusDeckSpec& spec, const DeckLayout& layout)
+{
+  write_material(out, mesh, info, spec, layout);
+  write_contact(out, info, spec);
+  write_rigid_bodies(out, mesh, info, spec, layout);
+  // The supports are written per step with the group names; a bad id stops here, named.
+  for (const int id : spec.fixed_bores)
+    boundary_name(info, id, "Abaqus deck/fixed bores");
+}
+
+// The supports of both steps: the fixed bores, the reference nodes, the out-of-plane rotations.
 void write_supports(std::ostream& out, const SceneInfo& info, const AbaqusDeckSpec& spec,
                     const DeckLayout& layout, const std::string& parameters)
 {
   const unsigned int in_plane_dofs = layout.slice || info.dimension == 3 ? 3 : 2;
-  out << "*BOUNDARY" << parameters << "\n"
-      << boundary_name(info, spec.fixed_bore, "") << "_NODES, 1, " << in_plane_dofs << "\n"
-      << "DRIVEN_REF, 1, " << in_plane_dofs << "\n"
-      << "DRIVEN_ROT, 1, 2\n"; // ccx's rigid bodies are 3D, also over CPE4/CPS4
+  out << "*BOUNDARY" << parameters << "\n";
+  for (const int id : spec.fixed_bores)
+    out << boundary_name(info, id, "") << "_NODES, 1, " << in_plane_dofs << "\n";
+  for (const AbaqusRigidBody& body : spec.rigid_bodies)
+    out << body.name << "_REF, 1, " << in_plane_dofs << "\n"
+        << body.name << "_ROT, 1, 2\n"; // ccx's rigid bodies are 3D, also over CPE4/CPS4
   if (layout.slice)
     out << "PLANE_STRAIN, 3, 3\n";
 }
@@ -279,18 +369,30 @@ void write_steps(std::ostream& out, const SceneInfo& info, const AbaqusDeckSpec&
                  const DeckLayout& layout)
 {
   write_supports(out, info, spec, layout, "");
-  out << "** Step 1: a prescribed rotation closes the contacts that will carry load.\n"
-      << "*STEP\n*STATIC\n1., 1.\n*BOUNDARY\nDRIVEN_ROT, 3, 3, " << spec.closing_rotation
-      << "\n*END STEP\n";
+  out << "** Step 1: prescribed rotations close the contacts that will carry load.\n"
+      << "*STEP\n*STATIC\n1., 1.\n*BOUNDARY\n";
+  for (const AbaqusRigidBody& body : spec.rigid_bodies)
+    out << body.name << "_ROT, 3, 3, " << body.closing_rotation << "\n";
+  out << "*END STEP\n";
   // One increment: the problem is linear but for the contact, whose active set ccx's Newton
   // iteration settles within the increment (split into four, it took 32 iterations, not 14).
-  out << "** Step 2: the rotation is released and the torque applied.\n"
+  out << "** Step 2: the rotations are released and the torques applied.\n"
       << "*STEP, INC=1000\n*STATIC\n1., 1.\n";
   write_supports(out, info, spec, layout, ", OP=NEW");
-  out << "*CLOAD\nDRIVEN_ROT, 3, " << spec.torque << "\n"
-      << "*NODE PRINT, NSET=DRIVEN_ROT\nU\n"
-      << "*NODE PRINT, NSET=DRIVEN_REF\nRF\n"
-      << "*NODE FILE\nU\n*EL FILE\nS\n*CONTACT FILE\nCSTR, CDIS\n*END STEP\n";
+  out << "*CLOAD\n";
+  for (const AbaqusRigidBody& body : spec.rigid_bodies)
+    if (body.torque != 0.)
+      out << body.name << "_ROT, 3, " << body.torque << "\n";
+  for (const AbaqusRigidBody& body : spec.rigid_bodies)
+    out << "*NODE PRINT, NSET=" << body.name << "_ROT\nU\n"
+        << "*NODE PRINT, NSET=" << body.name << "_REF\nRF\n";
+  out << "*NODE FILE\nU\n*EL FILE\nS\n*CONTACT FILE\nCSTR, CDIS\n";
+  // Per contact pair (ccx: CF needs its SLAVE and MASTER) the total force on its slave surface:
+  // the roller and pin forces.
+  if (!spec.surface_parts.empty())
+    for (const auto& [slave, master] : spec.contact_pairs)
+      out << "*CONTACT PRINT, SLAVE=" << slave << ", MASTER=" << master << "\nCF\n";
+  out << "*END STEP\n";
 }
 } // namespace
 
@@ -352,22 +454,34 @@ SceneMesh read_scene_mesh(const std::string& msh_file, const unsigned int dimens
   return mesh;
 }
 
-AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPairScene& scene,
-                                   const double friction, const double penalty_factor)
+namespace
 {
-  const SceneInfo& info = scene.info;
+// The settings every scene's deck shares: thickness, material, penalty, friction.
+AbaqusDeckSpec common_deck_spec(const SceneInfo& info, double young_modulus, double poisson_ratio,
+                                double friction, double penalty_factor)
+{
   AbaqusDeckSpec deck;
   deck.slice_thickness = info.face_width;
-  deck.young_modulus = spec.young_modulus;
-  deck.poisson_ratio = spec.poisson_ratio;
+  deck.young_modulus = young_modulus;
+  deck.poisson_ratio = poisson_ratio;
   deck.friction = friction;
   // A contact pressure p closes the penalty law by p/K; with K = f·E/h_c that is a fraction
   // p/(f·E) of a contact cell, ~1e-4 of h_c at f = 50 and 1 GPa: far below the Hertz
   // approach, so the penalty bias is small and is extrapolated away by the bench.
-  deck.penalty = penalty_factor * spec.young_modulus / info.contact_size;
+  deck.penalty = penalty_factor * young_modulus / info.contact_size;
   // A stick slope as stiff as the normal penalty keeps the elastic slip of sticking points
   // as small as the penetration.
   deck.stick_slope = deck.penalty;
+  return deck;
+}
+} // namespace
+
+AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPairScene& scene,
+                                   const double friction, const double penalty_factor)
+{
+  const SceneInfo& info = scene.info;
+  AbaqusDeckSpec deck =
+      common_deck_spec(info, spec.young_modulus, spec.poisson_ratio, friction, penalty_factor);
   // One contact pair per tooth pair inside the path of contact, exactly the pairs the stiffness
   // analysis (stiffness/mesh_stiffness.cc) pairs; the other modelled pairs stay free surfaces.
   // Pairing them too changes the model, not only the solver: next to an end of the single-pair
@@ -378,18 +492,93 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPair
   // one-pair model (docs/calculix.md).
   // (write_gear_pair_scene models every pair in contact.)
   for (const int j : scene.contact_pairs)
-    deck.contact_pairs.emplace_back(pinion_flank_id(j), wheel_flank_id(j));
-  deck.driven_bore = scene_ids::pinion_bore;
-  deck.driven_centre = info.first_centre;
-  deck.torque = spec.pinion_torque;
-  deck.fixed_bore = scene_ids::wheel_bore;
+    deck.contact_pairs.emplace_back(abaqus_name(info.boundary_names.at(pinion_flank_id(j))),
+                                    abaqus_name(info.boundary_names.at(wheel_flank_id(j))));
+  AbaqusRigidBody pinion;
+  pinion.name = "DRIVEN";
+  pinion.boundary_id = scene_ids::pinion_bore;
+  pinion.centre = info.first_centre;
+  pinion.torque = spec.pinion_torque;
+  deck.fixed_bores = {scene_ids::wheel_bore};
   // Δφ ≈ T/(c'·b·r_b1²) with c' = 14 N/(mm·µm), the order of a steel spur pair's single stiffness
   // (ISO 6336-1); a tenth of it closes the loaded contacts without passing the loaded state.
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
   const double base_radius = 0.5 * pair.pinion.base_diameter;
-  deck.closing_rotation =
-      0.1 * spec.pinion_torque / (14e9 * info.face_width * base_radius * base_radius);
+  pinion.closing_rotation = 0.1 * spec.pinion_torque /
+                            (single_pair_stiffness * info.face_width * base_radius * base_radius);
+  deck.rigid_bodies = {pinion};
   deck.title = "gearstiff gear pair scene (" + to_string(spec.position) + " position), " +
+               std::to_string(info.mesh.n_cells) + " cells";
+  return deck;
+}
+
+AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& info,
+                                 const double output_torque, const double penalty_factor)
+{
+  if (!spec.output_pin_bodies || spec.output_pins == 0)
+    throw InputError("Cycloid scene/output pin bodies",
+                     "the deck ties the output pins to the output member: mesh them");
+  if (!(std::abs(output_torque) > 0.) || !std::isfinite(output_torque))
+    throw InputError("Abaqus deck/output torque",
+                     "must not be zero: without a torque nothing is loaded (N·m)");
+  // Frictionless, plane stress: the load case of stiffness/cycloid_loads.h.
+  AbaqusDeckSpec deck =
+      common_deck_spec(info, spec.young_modulus, spec.poisson_ratio, 0., penalty_factor);
+  deck.plane_stress = true;
+
+  // Surfaces per roller and per pin: the roller's surface on the lobe faces nearest to it, the
+  // pin's surface on its hole. The rollers paired are those the scene meshed finely (clearance
+  // within Cycloid scene/contact clearance), as cycloid-loads pairs them.
+  const CycloidDiscSpec& ring = spec.ring;
+  const CycloidDiscSpec disc = spec.disc.rollers == 0 ? ring : spec.disc;
+  const std::vector<double> clearances = roller_clearances(ring, disc, spec.disc_rotation);
+  std::vector<Eigen::Vector2d> rollers, pins, holes;
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+    rollers.push_back(ring.roller_circle_radius *
+                      Eigen::Vector2d(std::cos(2. * M_PI * i / ring.rollers),
+                                      std::sin(2. * M_PI * i / ring.rollers)));
+  for (unsigned int j = 0; j < spec.output_pins; ++j)
+  {
+    pins.push_back(output_pin_centre(spec, j));
+    holes.push_back(info.first_centre + pins.back());
+  }
+  const auto add_pair =
+      [&deck](const std::string& slave, int slave_id,
+              const std::vector<Eigen::Vector2d>& slave_centres, const std::string& master,
+              int master_id, const std::vector<Eigen::Vector2d>& master_centres, unsigned int index)
+  {
+    deck.surface_parts.push_back({slave, slave_id, slave_centres, index});
+    deck.surface_parts.push_back({master, master_id, master_centres, index});
+    deck.contact_pairs.emplace_back(slave, master);
+  };
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+    if (clearances[i] <= spec.contact_clearance)
+      add_pair("ROLLER_" + std::to_string(i), scene_ids::second_contact, rollers,
+               "LOBES_" + std::to_string(i), scene_ids::first_contact, rollers, i);
+  for (unsigned int j = 0; j < spec.output_pins; ++j)
+    add_pair("PIN_" + std::to_string(j), cycloid_ids::output_pin_surfaces, pins,
+             "HOLE_" + std::to_string(j), scene_ids::output_pin_holes, holes, j);
+
+  // The output member turns by θ ≈ M_c/(c'·b·r²) with c' of a steel spur pair and r the roller
+  // circle (the §4 drive: 2.3e-4 rad against cycloid-loads' 2.4e-4); step 1 turns it by a tenth
+  // of that and the disc by half as much, which closes the loaded rollers and pins alike (the
+  // disc and the member turning together close no pin).
+  const double r = ring.roller_circle_radius;
+  const double theta = output_torque / (single_pair_stiffness * spec.disc_width * r * r);
+  AbaqusRigidBody output;
+  output.name = "OUTPUT";
+  output.boundary_id = cycloid_ids::output_pin_bores;
+  output.torque = output_torque;
+  output.closing_rotation = 0.1 * theta;
+  AbaqusRigidBody bearing;
+  bearing.name = "DISC_BEARING";
+  bearing.boundary_id = scene_ids::first_bore;
+  bearing.centre = info.first_centre;
+  bearing.closing_rotation = 0.05 * theta;
+  deck.rigid_bodies = {output, bearing};
+  deck.fixed_bores = {scene_ids::second_bore};
+  deck.title = "gearstiff cycloid scene (disc rotation " + std::to_string(spec.disc_rotation) +
+               " rad, output torque " + std::to_string(output_torque) + " N m), " +
                std::to_string(info.mesh.n_cells) + " cells";
   return deck;
 }
@@ -409,7 +598,7 @@ void write_abaqus_deck(const SceneInfo& info, const AbaqusDeckSpec& spec,
   out << "** Written by gearstiff (geometry/abaqus_deck.h). Units: m, N, Pa.\n";
   write_nodes(out, mesh, layout, spec.slice_thickness);
   write_elements(out, mesh, info, layout);
-  write_groups(out, mesh, info, layout);
+  write_groups(out, mesh, info, spec, layout);
   write_model(out, mesh, info, spec, layout);
   write_steps(out, info, spec, layout);
   if (!out)

@@ -1,8 +1,9 @@
 // A written scene as a CalculiX/Abaqus input deck (.inp), so that `ccx -i scene` solves the same
 // mesh and load case as gearstiff with no editing: nodes, elements, one element set per body, an
 // element-face surface and a node set per boundary group, the material, the candidate contact
-// pairs (penalty face-to-face contact, Coulomb friction), one bore driven as a rigid body whose
-// rotation node carries the torque, the other bore fixed, and the output requests.
+// pairs (penalty face-to-face contact, Coulomb friction), bores as rigid bodies whose rotation
+// nodes carry the torques (gear pair: the pinion bore; cycloid: the disc bearing, torque-free,
+// and the output member over every pin bore), bores held fixed, and the output requests.
 //
 // Element choice. 3D scenes are written as C3D8 (fully integrated, the same trilinear element as
 // deal.II's FE_Q(1) hexahedron). 2D scenes are written by default as a one-element-thick C3D8
@@ -18,12 +19,14 @@
 // fem/abaqus_reader.h maps them back. Units: those of the mesh (SI: m, N, Pa, N·m).
 //
 // Load case (ccx needs a closed contact before a torque-only rigid body is statically
-// determined): step 1 turns the driven rotation node by `closing_rotation` (a fraction of the
-// expected deflection, so every contact that carries load is closed); step 2 releases it and
-// applies `torque`. The rotation of the rotation node at the end of step 2 is Δφ.
+// determined): step 1 turns every rigid body's rotation node by its `closing_rotation` (a
+// fraction of the expected deflection, so every contact that carries load is closed); step 2
+// releases them and applies the torques. The rotation of a rotation node at the end of step 2 is
+// its body's Δφ.
 #pragma once
 
 #include "geometry/scene_common.h"
+#include "geometry/scene_cycloid.h"
 #include "geometry/scene_gear_pair.h"
 
 #include <Eigen/Core>
@@ -67,22 +70,45 @@ enum class Element2D
 // Parses "slice", "CPE4" or "CPS4" (InputError naming `parameter` otherwise).
 Element2D parse_element_2d(const std::string& text, const std::string& parameter);
 
+// A rigid body over the nodes of one boundary group (a bore): its REF NODE at `centre` is held
+// in translation, its ROT NODE's u_1, u_2 (rotations about x, y) are held, and its rotation about
+// z is prescribed to `closing_rotation` in step 1 and free under `torque` in step 2 (torque 0: a
+// bearing, free to turn). Its node sets are NAME_REF and NAME_ROT.
+struct AbaqusRigidBody
+{
+  std::string name;                                 // deck prefix, e.g. DRIVEN
+  int boundary_id = 0;                              // the group whose nodes it holds
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero(); // m, its axis (z direction)
+  double torque = 0.;                               // N·m about +z in step 2
+  double closing_rotation = 0.;                     // rad, prescribed in step 1
+};
+
+// A part of a boundary group written as a surface of its own: the facets of `boundary_id` whose
+// centroid lies nearer to centres[index] than to any other of `centres` (one roller of the
+// group of all roller surfaces, the lobe faces facing it), so that each has its contact pair.
+struct AbaqusSurfacePart
+{
+  std::string name; // deck surface name
+  int boundary_id = 0;
+  std::vector<Eigen::Vector2d> centres; // m
+  unsigned int index = 0;
+};
+
 struct AbaqusDeckSpec
 {
   Element2D element_2d = Element2D::slice;
   double slice_thickness = 0.;  // m, 2D: thickness of the slice / of CPE4, CPS4 (face width)
+  bool plane_stress = false;    // slice: plane stress through plane-strain-equivalent constants
   double young_modulus = 210e9; // Pa, every body
   double poisson_ratio = 0.3;   // -
   double friction = 0.;         // -, Coulomb μ between the contact surfaces (0: none)
   double penalty = 0.;          // Pa/m, slope of the linear pressure-overclosure law
   double stick_slope = 0.;      // Pa/m, tangential penalty of friction (used when μ > 0)
-  std::vector<std::pair<int, int>> contact_pairs; // (slave, master) boundary ids
-  int driven_bore = 0;                            // boundary id of the rigid, torque-driven bore
-  Eigen::Vector2d driven_centre = Eigen::Vector2d::Zero(); // m, its rotation axis (z direction)
-  double torque = 0.;                                      // N·m about +z on the driven bore
-  double closing_rotation = 0.; // rad, prescribed in step 1 (see the header comment)
-  int fixed_bore = 0;           // boundary id of the bore held fixed
-  std::string title;            // *HEADING text
+  std::vector<AbaqusSurfacePart> surface_parts;                   // surfaces beyond the groups
+  std::vector<std::pair<std::string, std::string>> contact_pairs; // (slave, master) surfaces
+  std::vector<AbaqusRigidBody> rigid_bodies; // the first one's ROT NODE is printed as Δφ
+  std::vector<int> fixed_bores;              // boundary ids of the groups held fixed
+  std::string title;                         // *HEADING text
 };
 
 // The deck for the gear-pair scene: pinion flanks (slave) on wheel flanks (master) of the tooth
@@ -93,6 +119,17 @@ struct AbaqusDeckSpec
 // the rotation an ISO-like 14 N/(mm·µm) stiffness would give.
 AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPairScene& scene,
                                    double friction, double penalty_factor);
+
+// The deck for the cycloid scene (geometry/scene_cycloid.h, with its output pins meshed), the
+// load case of stiffness/cycloid_loads.h: the disc bore a rigid body whose centre is held and
+// which turns freely (the eccentric bearing), the roller pins fixed, every output-pin bore on one
+// rigid output member about the ring centre carrying `output_torque` (N·m, counter-clockwise > 0);
+// one contact pair per roller within the scene's contact clearance (roller surface on the lobe
+// faces nearest to it) and per output pin (pin surface on its hole), frictionless; plane stress
+// of the disc width. InputError("Cycloid scene/output pin bodies") without meshed pins,
+// InputError("Abaqus deck/output torque") for a zero torque.
+AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& info,
+                                 double output_torque, double penalty_factor);
 
 // Writes `inp_file` from the mesh of `info.file`. InputError("Abaqus deck/...") for a spec that
 // names ids the mesh lacks.

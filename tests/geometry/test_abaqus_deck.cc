@@ -3,7 +3,9 @@
 // node and layer plus the rigid body's two nodes, one element per cell, one element set per
 // body, an element-face surface and a node set per boundary group, the rigid pinion bore carrying
 // the torque, the fixed wheel bore, and plane strain on every node but the rigid bore's.
-// When `ccx` is installed the deck is also solved, as it is.
+// When `ccx` is installed the deck is also solved, as it is. The cycloid deck (the load case of
+// stiffness/cycloid_loads.h) is checked for its sets, surfaces, pairs and rigid bodies.
+#include "errors/errors.h"
 #include "geometry/abaqus_deck.h"
 #include "geometry/scene_gear_pair.h"
 
@@ -200,8 +202,8 @@ TEST(AbaqusDeck, CalculixSolvesTheSlice)
   const Deck deck = coarse_slice_deck("deck_ccx");
   const double rotation = calculix_rotation(deck);
   const AbaqusDeckSpec spec = gear_pair_deck_spec(deck.spec, deck.scene, 0.01, 50.);
-  EXPECT_GT(rotation, spec.closing_rotation);
-  EXPECT_LT(rotation, 30. * spec.closing_rotation);
+  EXPECT_GT(rotation, spec.rigid_bodies.at(0).closing_rotation);
+  EXPECT_LT(rotation, 30. * spec.rigid_bodies.at(0).closing_rotation);
 }
 
 // The 3D deck (C3D8 over the face width, two layers) solves too, and a plane-strain slice and
@@ -215,5 +217,144 @@ TEST(AbaqusDeck, CalculixSolves3D)
   const double solid = calculix_rotation(coarse_slice_deck("deck_ccx_3d", 3));
   EXPECT_GT(solid, slice);       // free side faces: softer than plane strain
   EXPECT_LT(solid, 1.2 * slice); // plane stress is ~ (1 − ν²)⁻¹ ≈ 10% softer
+}
+
+// A coarse cycloid scene (gear-data.md §4 drive, nominal disc) with its output pins meshed.
+CycloidSceneSpec coarse_cycloid_spec()
+{
+  CycloidSceneSpec spec;
+  spec.output_pin_bodies = true;
+  spec.disc_rotation = M_PI / 19.; // crank angle 0 (disc_rotation_at_crank_angle)
+  spec.contact_clearance = 0.1e-3; // as cycloid-loads: every roller of the nominal disc
+  spec.points_per_lobe = 21;
+  spec.mesh.contact_size = 0.2e-3; // coarse: the structure is checked, not solved
+  spec.mesh.fine_radius = 0.4e-3;
+  spec.mesh.body_size = 3e-3;
+  spec.mesh.rim_size = 8e-3;
+  spec.mesh.growth_rate = 0.4;
+  return spec;
+}
+
+// Faces (data lines) of every *SURFACE, by name.
+std::map<std::string, std::size_t> surface_faces(const std::string& file)
+{
+  std::map<std::string, std::size_t> faces;
+  for (const auto& [keyword, lines] : blocks(file))
+    if (keyword.rfind("*SURFACE, NAME=", 0) == 0)
+      faces[keyword.substr(15, keyword.find(',', 15) - 15)] = lines.size();
+  return faces;
+}
+
+// The deck of the cycloid scene: one contact pair per roller (its surface on the lobe faces
+// nearest to it) and per output pin (on its hole), the parts splitting each boundary group
+// exactly; the disc bore a rigid body about the disc centre with no torque (the bearing), the
+// output-pin bores one rigid body about the ring centre carrying M_c, the roller pins fixed;
+// plane stress through the plane-strain-equivalent constants; contact forces printed per pair.
+TEST(AbaqusDeck, CycloidSceneWithOutputMember)
+{
+  const CycloidSceneSpec spec = coarse_cycloid_spec();
+  const SceneInfo info = write_cycloid_scene(spec, work_file("deck_cycloid.msh"));
+  const SceneMesh mesh = read_scene_mesh(info.file, 2);
+  const std::string file = work_file("deck_cycloid.inp");
+  const double torque = 440.; // N·m, gear-data.md §4 M_c
+  write_abaqus_deck(info, cycloid_deck_spec(spec, info, torque, 50.), file);
+  const std::size_t n = mesh.nodes.size();
+
+  std::vector<std::string> expected_pairs;
+  for (unsigned int i = 0; i < 20; ++i)
+    expected_pairs.push_back("ROLLER_" + std::to_string(i) + ", LOBES_" + std::to_string(i));
+  for (unsigned int j = 0; j < 8; ++j)
+    expected_pairs.push_back("PIN_" + std::to_string(j) + ", HOLE_" + std::to_string(j));
+  EXPECT_EQ(contact_pairs(file), expected_pairs);
+
+  // Every part is a non-empty piece, and the parts of a group are the group (each facet in
+  // exactly one part).
+  const auto faces = surface_faces(file);
+  const auto parts_of = [&faces](const std::string& prefix, unsigned int count)
+  {
+    std::size_t total = 0;
+    for (unsigned int k = 0; k < count; ++k)
+    {
+      const std::size_t part = faces.at(prefix + std::to_string(k));
+      EXPECT_GT(part, 0u) << prefix << k;
+      total += part;
+    }
+    return total;
+  };
+  EXPECT_EQ(parts_of("ROLLER_", 20), faces.at("ROLLER_SURFACES"));
+  EXPECT_EQ(parts_of("LOBES_", 20), faces.at("DISC_LOBES"));
+  EXPECT_EQ(parts_of("PIN_", 8), faces.at("OUTPUT_PIN_SURFACES"));
+  EXPECT_EQ(parts_of("HOLE_", 8), faces.at("OUTPUT_PIN_HOLES"));
+
+  std::set<std::string> element_sets, rigid_bodies;
+  std::map<std::string, std::string> node_lines;
+  std::vector<std::string> cloads, supports;
+  std::string elastic;
+  std::vector<std::string> contact_prints;
+  bool friction = false;
+  for (const auto& [keyword, lines] : blocks(file))
+  {
+    if (keyword.rfind("*ELEMENT, TYPE=C3D8, ELSET=", 0) == 0)
+      element_sets.insert(keyword.substr(27));
+    else if (keyword.rfind("*RIGID BODY", 0) == 0)
+      rigid_bodies.insert(keyword);
+    else if (keyword.rfind("*NODE, NSET=", 0) == 0 && keyword != "*NODE, NSET=NALL")
+      node_lines[keyword.substr(12)] = lines.at(0);
+    else if (keyword == "*CLOAD")
+      cloads = lines;
+    else if (keyword == "*BOUNDARY" && supports.empty())
+      supports = lines;
+    else if (keyword == "*ELASTIC")
+      elastic = lines.at(0);
+    friction = friction || keyword == "*FRICTION";
+    if (keyword.rfind("*CONTACT PRINT, SLAVE=", 0) == 0 && lines.at(0) == "CF")
+      contact_prints.push_back(keyword.substr(22));
+  }
+  EXPECT_EQ(element_sets, (std::set<std::string>{"DISC", "ROLLERS", "OUTPUT_PINS"}));
+  const auto id = [](std::size_t k) { return std::to_string(k); };
+  EXPECT_EQ(rigid_bodies,
+            (std::set<std::string>{"*RIGID BODY, NSET=OUTPUT_PIN_BORES_NODES, REF NODE=" +
+                                       id(2 * n + 1) + ", ROT NODE=" + id(2 * n + 2),
+                                   "*RIGID BODY, NSET=DISC_BORE_NODES, REF NODE=" + id(2 * n + 3) +
+                                       ", ROT NODE=" + id(2 * n + 4)}));
+  EXPECT_EQ(node_lines.at("OUTPUT_REF"), id(2 * n + 1) + ", 0, 0, 0"); // the ring centre
+  // The disc centre: e = 3 mm off the ring centre at crank angle 0 (gear-data.md §4).
+  EXPECT_NEAR(info.first_centre.norm(), 3e-3, 1e-12);
+  std::istringstream bearing(node_lines.at("DISC_BEARING_REF"));
+  double x = 0., y = 0.;
+  char comma = 0;
+  long node = 0;
+  bearing >> node >> comma >> x >> comma >> y;
+  EXPECT_NEAR(x, info.first_centre.x(), 1e-12);
+  EXPECT_NEAR(y, info.first_centre.y(), 1e-12);
+  // The torque on the output member only: the bearing is torque-free.
+  EXPECT_EQ(cloads, std::vector<std::string>{"OUTPUT_ROT, 3, 440"});
+  EXPECT_EQ(supports, (std::vector<std::string>{"ROLLER_PINS_NODES, 1, 3", "OUTPUT_REF, 1, 3",
+                                                "OUTPUT_ROT, 1, 2", "DISC_BEARING_REF, 1, 3",
+                                                "DISC_BEARING_ROT, 1, 2", "PLANE_STRAIN, 3, 3"}));
+  // Plane stress of (210 GPa, 0.3) = plane strain of (E(1 + 2ν)/(1 + ν)², ν/(1 + ν)), exact.
+  std::istringstream constants(elastic);
+  double e = 0., nu = 0.;
+  constants >> e >> comma >> nu;
+  EXPECT_NEAR(e, 210e9 * 1.6 / 1.69, 1e-9 * e);
+  EXPECT_NEAR(nu, 0.3 / 1.3, 1e-11);
+  EXPECT_FALSE(friction); // frictionless, as cycloid-loads
+  // The contact force CF of every pair is printed (ccx names the pair by SLAVE and MASTER).
+  ASSERT_EQ(contact_prints.size(), expected_pairs.size());
+  for (std::size_t k = 0; k < expected_pairs.size(); ++k)
+  {
+    const std::string& pair = expected_pairs[k];
+    EXPECT_EQ(contact_prints[k],
+              pair.substr(0, pair.find(',')) + ", MASTER=" + pair.substr(pair.find(", ") + 2));
+  }
+}
+
+TEST(AbaqusDeck, CycloidDeckRejectsBadInput)
+{
+  CycloidSceneSpec spec = coarse_cycloid_spec();
+  spec.output_pin_bodies = false;
+  EXPECT_THROW(cycloid_deck_spec(spec, SceneInfo(), 440., 50.), InputError); // before any mesh
+  spec.output_pin_bodies = true; // a zero torque loads nothing
+  EXPECT_THROW(cycloid_deck_spec(spec, SceneInfo(), 0., 50.), InputError);
 }
 } // namespace
