@@ -21,7 +21,12 @@ void ReportTable::add_row(const std::vector<double>& row)
 void Report::add_value(const std::string& key, double value, const std::string& unit,
                        const std::string& description)
 {
-  value_list.push_back({key, value, unit, description}); // no published reference
+  ReportValue entry; // no published reference: `reference` stays NaN
+  entry.key = key;
+  entry.value = value;
+  entry.unit = unit;
+  entry.description = description;
+  value_list.push_back(entry);
 }
 
 void Report::add_compared_value(const std::string& key, double value, double reference,
