@@ -7,6 +7,7 @@
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -264,4 +265,31 @@ TEST(TrainModel, IsoPairsOfTrainMeshes)
   const double ms = 2e-4 / (rs * rs), mp = 5e-5 / (rp * rp);
   EXPECT_NEAR(stage.spec_mesh_iso[0].reduced_mass, ms * mp / (ms + 3. * mp), 1e-12 * mp);
   EXPECT_NEAR(stage.spec_mesh_iso[1].reduced_mass, mp, 1e-12 * mp);
+}
+
+// Modal kinetic energy per body (the command's dynamics_modal_energy table): each mode's shares
+// are non-negative and sum to 1 (the mass-weighted squares of one mode shape, divided by their
+// sum: round-off only, 1e-12), for the bi-planetary train with ring 7 suspended.
+TEST(TrainModel, ModalEnergySharesSumToOne)
+{
+  TrainDynamicsInput input = bi_planetary();
+  input.suspensions.push_back({"7", 1e6, 0.});
+  const TrainModel model = build_train_model(input);
+  const TorsionalModel torsional(model.train);
+  std::vector<std::string> bodies;
+  std::vector<unsigned int> group;
+  for (const std::string& body : model.dof_body)
+  {
+    const auto found = std::find(bodies.begin(), bodies.end(), body);
+    group.push_back(found - bodies.begin());
+    if (found == bodies.end())
+      bodies.push_back(body);
+  }
+  const Eigen::MatrixXd share = modal_energy_distribution(torsional, group, bodies.size());
+  ASSERT_EQ(share.rows(), static_cast<Eigen::Index>(model.dof_names.size()));
+  for (Eigen::Index k = 0; k < share.rows(); ++k)
+  {
+    EXPECT_NEAR(share.row(k).sum(), 1., 1e-12) << "mode " << k;
+    EXPECT_GE(share.row(k).minCoeff(), 0.);
+  }
 }
