@@ -36,26 +36,32 @@ using namespace gearstiff::dynamics;
 constexpr double published_nominal_force = 1001.27; // [N]
 const std::string published_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
 
-// ISO 6336-1 method B for mesh m at the driver speed `pinion_speed` [rad/s]. The driver's
-// inertia is shared equally among the meshes it drives (see iso6336_dynamic_factor.h).
+// ISO 6336-1 method B for mesh m of `model` (the split path: at the driver's speed, its inertia
+// shared equally among the meshes it drives, see iso6336_dynamic_factor.h; a train: the pair in
+// its frame's rotating reference, train_model.h TrainIsoPair).
 IsoDynamicFactor iso_factor(const TorsionalModel& model, const DynamicsParameters& p,
-                            unsigned int m, double pinion_speed)
+                            unsigned int m)
 {
+  const Mesh& mesh = p.train.meshes[m];
+  IsoDynamicFactorInput in;
   if (p.train_description)
   {
-    // Method B is written for a pinion–wheel pair on fixed axes; not applied to a train.
-    IsoDynamicFactor none;
-    none.kv = none.resonance_ratio = none.resonance_speed = none.subcritical_limit = none.b_p =
-        none.b_f = none.b_k = std::numeric_limits<double>::quiet_NaN();
-    return none;
+    const TrainIsoPair& pair = p.train_model.spec_mesh_iso[p.train_model.spec_mesh[m]];
+    in.pinion_teeth = pair.pinion_teeth;
+    in.pinion_speed = pair.pinion_speed_ratio * std::abs(model.nominal_speeds()[0]);
+    in.reduced_mass = pair.reduced_mass;
   }
-  const Mesh& mesh = p.train.meshes[m];
-  unsigned int shares = 0;
-  for (const Mesh& other : p.train.meshes)
-    shares += other.driver == mesh.driver;
-  IsoDynamicFactorInput in;
-  in.pinion_teeth = mesh.driver_teeth;
-  in.pinion_speed = pinion_speed;
+  else
+  {
+    unsigned int shares = 0;
+    for (const Mesh& other : p.train.meshes)
+      shares += other.driver == mesh.driver;
+    in.pinion_teeth = mesh.driver_teeth;
+    in.pinion_speed = model.nominal_speeds()[mesh.driver];
+    in.reduced_mass =
+        reduced_mass(p.train.gears[mesh.driver].inertia / shares, mesh.driver_base_radius,
+                     p.train.gears[mesh.driven].inertia, mesh.driven_base_radius);
+  }
   in.face_width = p.iso.face_width;
   in.mesh_stiffness = p.iso.mesh_stiffness > 0.
                           ? p.iso.mesh_stiffness
@@ -63,9 +69,6 @@ IsoDynamicFactor iso_factor(const TorsionalModel& model, const DynamicsParameter
   in.single_stiffness = p.iso.single_stiffness > 0.
                             ? p.iso.single_stiffness
                             : in.mesh_stiffness / (0.75 * mesh.contact_ratio + 0.25);
-  in.reduced_mass =
-      reduced_mass(p.train.gears[mesh.driver].inertia / shares, mesh.driver_base_radius,
-                   p.train.gears[mesh.driven].inertia, mesh.driven_base_radius);
   in.tangential_force = std::abs(model.nominal_force(m)) * std::cos(p.iso.pressure_angle);
   in.application_factor = p.iso.application_factor;
   in.total_contact_ratio = mesh.contact_ratio;
@@ -293,10 +296,16 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     report.add_value(key + "kv_periodicity",
                      std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half), "-",
                      mesh.name + " |K_v max 1st half - 2nd half|");
-    const IsoDynamicFactor iso =
-        iso_factor(model, p, m, model.nominal_speeds()[p.train.meshes[m].driver]);
-    if (!p.train_description)
+    const IsoDynamicFactor iso = iso_factor(model, p, m);
+    // A train: once per Train mesh (its copies are the same pair).
+    if (!p.train_description || p.train_model.mesh_copy[m] == 0)
+    {
       report_iso(report, key, mesh.name, iso);
+      const Mesh& data = p.train.meshes[m];
+      report.add_value(key + "mean_stiffness",
+                       data.stiffness.mean_stiffness(data.contact_ratio) * 1e-6, "N/µm",
+                       mesh.name + " mean mesh stiffness over a mesh cycle");
+    }
     meshes.add_row({double(m + 1), mesh.nominal_force, mesh.mean_force, mesh.kv_max,
                     mesh.kv_max_time, mesh.kv_min, iso.kv, iso.resonance_ratio});
     if (mesh.kv_min < 0.)
@@ -317,8 +326,14 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                   "(0.75 eps + 0.25) unless given; f_pb,eff = " +
                       format_number(p.iso.pitch_deviation * 1e6, 4) +
                       " µm, f_f,eff = " + format_number(p.iso.profile_deviation * 1e6, 4) +
-                      " µm, C_a = " + format_number(p.iso.tip_relief * 1e6, 4) +
-                      " µm; m_red with the driver inertia shared among its meshes");
+                      " µm, C_a = " + format_number(p.iso.tip_relief * 1e6, 4) + " µm; " +
+                      (p.train_description
+                           ? "each Train mesh as an isolated pair in its frame (n1 relative to "
+                             "the frame), m_red by ISO 6336-1 6.5.9's planetary rule (a gear's "
+                             "m* = J/r_b² shared among the mesh copies it carries, a fixed gear "
+                             "infinitely heavy); method B ignores the coupling of the meshes "
+                             "and the carriers' motion, which the simulated K_v includes"
+                           : "m_red with the driver inertia shared among its meshes"));
 
   auto& harmonics = report.add_table(
       "dynamics_harmonics", {"harmonic", "frequency", "amplitude_mesh1"}, {"-", "Hz", "N"});
@@ -364,8 +379,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       GearTrain train = p.train;
       train.input_speed = point.input_speed;
       const TorsionalModel point_model(train);
-      const IsoDynamicFactor iso =
-          iso_factor(point_model, p, 0, point_model.nominal_speeds()[p.train.meshes[0].driver]);
+      const IsoDynamicFactor iso = iso_factor(point_model, p, 0);
       // Only valid points show a K_v (issue 11: diverged or contact-loss rows printed as
       // ordinary numbers); the linear model's value stays in its own column for the chart.
       const bool valid = point.status == SweepStatus::valid;

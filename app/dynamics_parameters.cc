@@ -540,12 +540,18 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
                                      physics.friction_coefficient,
                                      physics.driver_friction_arm,
                                      physics.driven_friction_arm,
+                                     {},
+                                     {},
                                      {}};
     std::string origin = physics.fit ? " (fitted to the table)" : "";
     if (physics.file)
     {
       mesh.stiffness_driver = dynamics::match_stiffness_file(*physics.file, teeth[0], teeth[1],
                                                              module, section + "/stiffness file");
+      // The FE pair's path of contact (its tips) sets the cycle the table is measured on.
+      mesh.contact_ratio = physics.file->pair.contact_ratio;
+      if (std::isfinite(physics.file->pair.approach_ratio))
+        mesh.approach_ratio = physics.file->pair.approach_ratio;
       origin =
           " from `gearstiff " + physics.file->command + "` (" + physics.file->pair.describe() + ")";
     }

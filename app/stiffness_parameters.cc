@@ -335,6 +335,10 @@ void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair)
   report.add_value("transverse_module", pair.transverse_module / mm, "mm", "m_t of the pair");
   report.add_value("centre_distance", pair.centre_distance / mm, "mm", "a_w of the pair");
   report.add_value("contact_ratio", pair.transverse_contact_ratio, "-", "ε_α of the pair");
+  // Where the pitch point lies on the path (the train model's mesh phasing needs it).
+  report.add_value("approach_ratio",
+                   (pair.pitch_point - pair.contact_start) / pair.transverse_base_pitch, "-",
+                   "ε_f = AC/p_bt, start of contact to the pitch point (pinion drives)");
 }
 
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,

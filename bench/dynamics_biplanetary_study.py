@@ -5,11 +5,13 @@ a torsional spring and damper (variant II), with the train model of `gearstiff d
     python3 bench/dynamics_biplanetary_study.py [gearstiff] [points]   (defaults: build, 40)
     python3 bench/dynamics_biplanetary_study.py --plot-only     (chart from the CSV again)
 
-Input: bench/dynamics_biplanetary.prm (stated assumptions: steel blanks, Cai stiffness
-280 N/µm per mesh, c_g = 100 N·s/m). For each variant: natural frequencies, K_v max of every
-mesh at 1470 rpm, and a K_v speed sweep; writes docs/biplanetary_dynamics.csv (sweeps),
-docs/biplanetary_resonance.png (the resonance charts side by side) and prints the Markdown
-tables used in docs/biplanetary_dynamics.md. Run it holding the build lock.
+Input: bench/dynamics_biplanetary.prm (stated assumptions: steel blanks, FE k(θ) of every mesh
+from bench/biplanetary_meshes/, c_g = 600 N·s/m). For each variant: natural frequencies, K_v max
+of every mesh at 1470 rpm beside ISO 6336-1 method B, and a K_v speed sweep; the same at 1470 rpm
+with the earlier Cai curves (280 N/µm single-pair peak) for comparison. Writes
+docs/biplanetary_dynamics.csv (sweeps), docs/biplanetary_resonance.png (the resonance charts side
+by side) and prints the Markdown tables used in docs/biplanetary_dynamics.md. Run it holding the
+build lock.
 """
 import csv
 import json
@@ -68,13 +70,34 @@ def run(*settings):
     args = [binary, "dynamics", prm, "--json"]
     for s in settings:
         args += ["--set", s]
-    out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
+    out = subprocess.run(args, check=True, capture_output=True, text=True, cwd=root).stdout
     return json.loads(out[out.index("{"):])
 
 
 def table(result, name):
     t = result["tables"][name]
     return [dict(zip(t["columns"], row)) for row in t["rows"]]
+
+
+meshes = ("1-2", "3-4", "4-5", "6-7")
+cai = [f"Train mesh {n}/stiffness source=cai" for n in range(1, 5)]
+
+
+def by_mesh(result, key):
+    """Per Train mesh: the largest of `key` over its copies (dynamics_meshes table)."""
+    rows = table(result, "dynamics_meshes")
+    names = [t for t in result["text"] if t.endswith(" stiffness")]
+    out = {}
+    for name, row in zip(names, rows):
+        base = name.split("#")[0].replace(" stiffness", "")
+        out[base] = max(out.get(base, 0.0), row[key] or 0.0)
+    return out
+
+
+def mean_stiffness(result):
+    return {m: result["values"][k]["value"] for m in meshes
+            for k in result["values"] if k.endswith("_mean_stiffness")
+            and result["values"][k]["description"].startswith(m + "#1 ")}
 
 
 results = []
@@ -91,24 +114,28 @@ for label, single, _ in results:
     f = [r["frequency"] for r in table(single, "dynamics_modes")]
     print(f"| {label} | " + ", ".join(f"{x:.0f}" for x in f) + " |")
 
+print("\n| variant | stiffness | mean k 1-2 / 3-4 / 4-5 / 6-7 [N/µm] | lowest 4 natural frequencies [Hz] "
+      "| K_v max 1-2 / 3-4 / 4-5 / 6-7 at 1470 rpm |")
+print("|---|---|---|---|---|")
+for (label, k), (_, fe, _) in zip(variants, results):
+    if k not in (None, 1e6):
+        continue
+    extra = [] if k is None else [f"Train/suspended members=7: {k} {damping}"]
+    for source, result in (("Cai 280 N/µm", run(*extra, *cai)), ("FE", fe)):
+        f = [r["frequency"] for r in table(result, "dynamics_modes")][:4]
+        kv, km = by_mesh(result, "kv_max"), mean_stiffness(result)
+        print(f"| {label} | {source} | " + " / ".join(f"{km[m]:.0f}" for m in meshes) + " | "
+              + ", ".join(f"{x:.0f}" for x in f) + " | "
+              + " / ".join(f"{kv[m]:.3f}" for m in meshes) + " |")
+
 print("\n| variant | " + " | ".join(
-    f"K_v max {m}" for m in ("1-2", "3-4", "4-5", "6-7")) + " | sweep: diverged / contact loss / not steady |")
+    f"K_v max {m} (ISO)" for m in meshes) + " | sweep: diverged / contact loss / not steady |")
 print("|---|---|---|---|---|---|")
 for label, single, sweep in results:
-    v = single["values"]
-    kv = {}
-    for key, item in v.items():
-        if key.endswith("_kv_max") and key.startswith("mesh"):
-            pass
-    rows = table(single, "dynamics_meshes")
-    names = [t for t in single["text"] if t.endswith(" stiffness")]
-    by_mesh = {}
-    for name, row in zip(names, rows):
-        base = name.split("#")[0].replace(" stiffness", "")
-        by_mesh[base] = max(by_mesh.get(base, 0.0), row["kv_max"] or 0.0)
+    kv, iso = by_mesh(single, "kv_max"), by_mesh(single, "kv_iso")
     s = sweep["values"]
-    print(f"| {label} | " + " | ".join(f"{by_mesh.get(m, float('nan')):.3f}"
-                                        for m in ("1-2", "3-4", "4-5", "6-7"))
+    print(f"| {label} | " + " | ".join(f"{kv.get(m, float('nan')):.3f} ({iso.get(m, float('nan')):.3f})"
+                                        for m in meshes)
           + f" | {s['sweep_unstable']['value']:.0f} / {s['sweep_contact_loss']['value']:.0f} / "
             f"{s['sweep_not_steady']['value']:.0f} |")
 

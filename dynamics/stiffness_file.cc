@@ -62,8 +62,11 @@ StiffnessFilePair read_pair(const ptree& tree, const std::string& path,
                                     "' does not name its gear pair (values pinion_teeth, "
                                     "wheel_teeth, transverse_module, centre_distance, "
                                     "contact_ratio of `gearstiff stiffness`/`cai` -o)");
-  return {static_cast<int>(std::lround(*z1)), static_cast<int>(std::lround(*z2)), *m * 1e-3,
-          *a * 1e-3, *eps};
+  StiffnessFilePair pair{static_cast<int>(std::lround(*z1)), static_cast<int>(std::lround(*z2)),
+                         *m * 1e-3, *a * 1e-3, *eps};
+  if (const auto approach = value(tree, "approach_ratio"))
+    pair.approach_ratio = *approach;
+  return pair;
 }
 
 // Column `name` of table `table`, in the unit `unit`; empty when the table is absent.

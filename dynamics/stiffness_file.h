@@ -10,17 +10,21 @@
 
 #include "dynamics/mesh_stiffness.h"
 
+#include <limits>
 #include <string>
 
 namespace gearstiff::dynamics
 {
 struct StiffnessFilePair
 {
-  int pinion_teeth = 0;         // [-] the gear that drives in the FE load case
-  int wheel_teeth = 0;          // [-] negative: internal
-  double module = 0.;           // [m] transverse module
-  double centre_distance = 0.;  // [m] working centre distance
-  double contact_ratio = 0.;    // [-] ε_α of the FE pair
+  int pinion_teeth = 0;        // [-] the gear that drives in the FE load case
+  int wheel_teeth = 0;         // [-] negative: internal
+  double module = 0.;          // [m] transverse module
+  double centre_distance = 0.; // [m] working centre distance
+  double contact_ratio = 0.;   // [-] ε_α of the FE pair
+  // [-] ε_f = AC/p_bt of the FE pair (start of contact to the pitch point, pinion driving);
+  // NaN when the file predates it (the train then keeps the standard-tooth value).
+  double approach_ratio = std::numeric_limits<double>::quiet_NaN();
   std::string describe() const; // "z 20/10, m 2 mm, a 30 mm"
 };
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -177,6 +178,38 @@ std::vector<double> dof_inertias(const kinematics::GearTrainSpec& spec,
 double signed_base_radius(const kinematics::TrainMember& gear, double pressure_angle)
 {
   return 0.5 * gear.module * gear.teeth * std::cos(pressure_angle);
+}
+
+// m* = J/r_b² [kg] of the rotation `dof` (one gear's, in one mesh), shared among the copies
+// of the mesh that the same rotation carries (`copy_dofs`: its DOF in every copy); infinite
+// when the gear does not turn (ISO 6336-1 6.5.9 for planetary gears: a fixed ring).
+double shared_mass(int dof, double base_radius, const std::vector<double>& inertia,
+                   const std::vector<int>& copy_dofs)
+{
+  if (dof < 0)
+    return std::numeric_limits<double>::infinity();
+  const auto shares = std::count(copy_dofs.begin(), copy_dofs.end(), dof);
+  return inertia[dof] / (base_radius * base_radius) / static_cast<double>(shares);
+}
+
+TrainIsoPair iso_pair(const kinematics::TrainMember& gear_a, double ra, double rb,
+                      double speed_ratio, const std::vector<double>& inertia,
+                      const std::vector<std::array<int, 3>>& copy_dofs)
+{
+  std::vector<int> dofs_a, dofs_b;
+  for (const auto& dofs : copy_dofs)
+  {
+    dofs_a.push_back(dofs[0]);
+    dofs_b.push_back(dofs[1]);
+  }
+  const double ma = shared_mass(dofs_a.front(), ra, inertia, dofs_a);
+  const double mb = shared_mass(dofs_b.front(), rb, inertia, dofs_b);
+  TrainIsoPair pair;
+  pair.pinion_teeth = static_cast<unsigned int>(std::abs(gear_a.teeth));
+  pair.pinion_speed_ratio = speed_ratio;
+  pair.reduced_mass = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
+  pair.pinion_base_radius = std::abs(ra);
+  return pair;
 }
 
 // Where the copies of a planet member sit around its carrier copy [rad]: equally spaced when the
@@ -366,7 +399,8 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
     const double rb = signed_base_radius(gear_b, input.pressure_angle);
     const StandardMesh geometry =
         standard_mesh(gear_a.teeth, gear_b.teeth, gear_a.module, input.pressure_angle, 0);
-    model.spec_mesh_contact_ratio.push_back(geometry.contact_ratio);
+    const double contact_ratio = input.meshes[m].contact_ratio.value_or(geometry.contact_ratio);
+    model.spec_mesh_contact_ratio.push_back(contact_ratio);
     for (unsigned int j = 0; j < copies; ++j)
     {
       Mesh mesh;
@@ -387,7 +421,7 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       mesh.position_ratio = std::abs(gear_a.teeth) *
                             std::abs(solution.speeds[a] - solution.speeds[c]) /
                             (2. * M_PI * std::abs(input_speed));
-      mesh.contact_ratio = geometry.contact_ratio;
+      mesh.contact_ratio = contact_ratio;
       mesh.stiffness = input.meshes[m].stiffness;
       mesh.damping = input.meshes[m].damping;
       mesh.friction_coefficient = input.meshes[m].friction_coefficient;
@@ -397,6 +431,9 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       model.spec_mesh.push_back(m);
       model.mesh_copy.push_back(j);
     }
+    model.spec_mesh_iso.push_back(iso_pair(
+        gear_a, ra, rb, std::abs(solution.speeds[a] - solution.speeds[c]) / std::abs(input_speed),
+        inertia, {mesh_dofs.end() - copies, mesh_dofs.end()}));
   }
 
   // Load direction: orient every mesh so its static force is positive (K_v = F/F_nominal),
@@ -440,6 +477,17 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
     const kinematics::TrainMesh& tm = spec.meshes[m];
+    const TrainMeshDynamics& data = input.meshes[m];
+    if (data.approach_ratio && data.stiffness_driver)
+    {
+      // The FE pair's own path: driven the other way, contact starts at the other end (E), so
+      // the approach becomes the FE recess ε_α − ε_f.
+      const bool fe_pinion_drives = (*data.stiffness_driver == 0) == (a_drives[m] == 1);
+      model.spec_mesh_approach_ratio.push_back(fe_pinion_drives ? *data.approach_ratio
+                                                                : model.spec_mesh_contact_ratio[m] -
+                                                                      *data.approach_ratio);
+      continue;
+    }
     const auto& gear_a = spec.members[solution.index(tm.gear_a)];
     const auto& gear_b = spec.members[solution.index(tm.gear_b)];
     model.spec_mesh_approach_ratio.push_back(standard_mesh(gear_a.teeth, gear_b.teeth,

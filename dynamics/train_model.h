@@ -43,6 +43,12 @@ struct TrainMeshDynamics
   // none, e.g. a constant). Where the other gear drives in the train, the model uses
   // stiffness.reversed(ε_α): contact then runs along the path the other way.
   std::optional<unsigned int> stiffness_driver;
+  // Path of contact of the FE pair (with its tips, e.g. a shortened ring tip) when the
+  // stiffness came from a file: ε_α and ε_f (its pinion, `stiffness_driver`, driving). The
+  // model then uses them instead of the standard-tooth values for the mesh cycle, the table's
+  // reversal, friction and the sun/ring phasing, so k(x) and the phase share one origin (A).
+  std::optional<double> contact_ratio;  // [-]
+  std::optional<double> approach_ratio; // [-]
 };
 
 struct TrainSuspension
@@ -88,6 +94,22 @@ struct TrainDynamicsInput
   std::string mesh_section = "Train mesh"; // + " n" for mesh n
 };
 
+// One Train mesh as the gear pair of ISO 6336-1:2006 method B (6.5): the pair vibrating alone
+// in its frame's rotating reference. The reduced mass follows 6.5.9's rule for planetary
+// gears, generalised: each gear contributes m* = J/r_b² of its rotation (the DOF's inertia:
+// members rigid with it and planets' orbiting masses included) divided by the number of copies
+// of the mesh it carries (a sun with p planets: m_S/p, so m_red = m_S·m_P/(m_S + p·m_P)); a
+// gear that does not turn (a fixed ring) counts as infinitely heavy (m_red = m_P). The speed is
+// gear a's relative to the frame (ISO's n1 in the carrier frame); the split path's rule — the
+// driver's J shared among its meshes — is the same rule for a train on fixed axes.
+struct TrainIsoPair
+{
+  unsigned int pinion_teeth = 0;  // [-] |z_a|
+  double pinion_speed_ratio = 0.; // [-] |ω_a − ω_c|/ω_input
+  double reduced_mass = 0.;       // [kg] m_red
+  double pinion_base_radius = 0.; // [m] |r_b,a|
+};
+
 struct TrainModel
 {
   GearTrain train;                              // general form, DOF 0 = the input
@@ -99,6 +121,7 @@ struct TrainModel
   std::vector<double> spec_mesh_contact_ratio;  // [-] per Train mesh
   std::vector<double> spec_mesh_approach_ratio; // [-] per Train mesh (driver's side)
   double reduced_inertia = 0.;                  // [kg·m²] kinematics' J* reduced to the input
+  std::vector<TrainIsoPair> spec_mesh_iso;      // per Train mesh
 };
 
 // Builds the model; InputError naming the Train parameter (or "<mesh_section> n/...") for

@@ -6,6 +6,7 @@
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -136,4 +137,38 @@ TEST(StiffnessFile, BlankInertia)
   gear.teeth = -40;
   EXPECT_THROW(blank_inertia(gear, {"r", b, 0.}, rho, "p"), InputError);
   EXPECT_GT(blank_inertia(gear, {"r", b, 0.1}, rho, "p").moment_of_inertia, 0.);
+}
+
+// A file's own path of contact (e.g. a shortened ring tip: ε_α = 1.4, ε_f = 0.3 with its pinion
+// driving) replaces the standard-tooth values of its Train mesh: the mesh cycle and the table's
+// reversal use ε_α, and the approach ratio is ε_f when the FE pinion drives in the train, the
+// FE recess ε_α − ε_f when the other gear does (contact starts at the other end). The two
+// choices of FE pinion must give both, once each; exact arithmetic (1e-15).
+TEST(StiffnessFile, FilePathOfContactReplacesStandardTeeth)
+{
+  kinematics::GearTrainText text = kinematics::builtin_train("planetary");
+  text.inertias = "s: 2e-4, p: 5e-5, c: 4e-3, r: 1e-2";
+  text.masses = "p: 0.4";
+  std::vector<double> approach;
+  for (const unsigned int fe_pinion : {0u, 1u})
+  {
+    TrainDynamicsInput input;
+    input.spec = kinematics::parse_gear_train(text);
+    input.input_torque = 100.;
+    for (unsigned int m = 0; m < 2; ++m)
+      input.meshes.push_back(
+          {MeshStiffness::constant(4e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}});
+    input.meshes[1].stiffness_driver = fe_pinion;
+    input.meshes[1].contact_ratio = 1.4;
+    input.meshes[1].approach_ratio = 0.3;
+    const TrainModel model = build_train_model(input);
+    EXPECT_EQ(model.spec_mesh_contact_ratio[1], 1.4);
+    for (std::size_t i = 0; i < model.train.meshes.size(); ++i)
+      EXPECT_EQ(model.train.meshes[i].contact_ratio,
+                model.spec_mesh[i] == 1 ? 1.4 : model.spec_mesh_contact_ratio[0]);
+    approach.push_back(model.spec_mesh_approach_ratio[1]);
+  }
+  std::sort(approach.begin(), approach.end());
+  EXPECT_NEAR(approach[0], 0.3, 1e-15);
+  EXPECT_NEAR(approach[1], 1.1, 1e-15);
 }

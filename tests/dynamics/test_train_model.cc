@@ -3,9 +3,11 @@
 // reduced inertia J* (gear_train.h) for the rigid mode, kinematics' torque-method statics for the
 // mesh forces, energy conservation without damping and friction, and bad input.
 #include "dynamics/integrators.h"
+#include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -26,8 +28,14 @@ TrainDynamicsInput planetary(unsigned int planets, double stiffness = 4e8, doubl
   input.spec = kinematics::parse_gear_train(text);
   input.input_torque = 100.;
   for (unsigned int m = 0; m < 2; ++m)
-    input.meshes.push_back(
-        {MeshStiffness::constant(stiffness, "Train mesh/stiffness"), damping, 0., 0., 0., {}});
+    input.meshes.push_back({MeshStiffness::constant(stiffness, "Train mesh/stiffness"),
+                            damping,
+                            0.,
+                            0.,
+                            0.,
+                            {},
+                            {},
+                            {}});
   return input;
 }
 
@@ -42,7 +50,7 @@ TrainDynamicsInput bi_planetary()
   input.input_torque = 120.2;
   for (unsigned int m = 0; m < 4; ++m)
     input.meshes.push_back(
-        {MeshStiffness::constant(5e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}});
+        {MeshStiffness::constant(5e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}});
   return input;
 }
 
@@ -206,4 +214,82 @@ TEST(TrainModel, BadInput)
   input = planetary(3);
   input.spec.members[1].module = 0.; // the planet
   EXPECT_THROW(build_train_model(input), InputError);
+}
+
+// ISO 6336-1 method B per Train mesh (train_model.h TrainIsoPair). A one-mesh train on fixed
+// axes is the single pair: m_red = m1·m2/(m1 + m2) with m = J/r_b² (the split path's
+// reduced_mass), the pinion at the input speed, so the same K_v follows; a planetary stage with
+// 3 planets gives 6.5.9's m_red = m_S·m_P/(m_S + 3·m_P) for sun–planet and m_P for the fixed
+// ring. Same arithmetic in a different order: 1e-12 relative.
+TEST(TrainModel, IsoPairsOfTrainMeshes)
+{
+  kinematics::GearTrainText text;
+  text.gears = "1: 21, 2: 57";
+  text.modules = "1: 2.5, 2: 2.5";
+  text.meshes = "1-2";
+  text.inputs = "1: 1450";
+  text.output = "2";
+  text.inertias = "1: 1.47e-4, 2: 7.81e-3";
+  TrainDynamicsInput input;
+  input.spec = kinematics::parse_gear_train(text);
+  input.input_torque = 49.4;
+  input.meshes.push_back({MeshStiffness::constant(4e8, "m"), 100., 0., 0., 0., {}, {}, {}});
+  const TrainModel pair = build_train_model(input);
+  ASSERT_EQ(pair.spec_mesh_iso.size(), 1u);
+  const double r1 = 0.5 * 2.5e-3 * 21 * std::cos(input.pressure_angle);
+  const double r2 = 0.5 * 2.5e-3 * 57 * std::cos(input.pressure_angle);
+  const TrainIsoPair& iso = pair.spec_mesh_iso[0];
+  EXPECT_NEAR(iso.reduced_mass, reduced_mass(1.47e-4, r1, 7.81e-3, r2), 1e-12 * iso.reduced_mass);
+  EXPECT_EQ(iso.pinion_teeth, 21u);
+  EXPECT_NEAR(iso.pinion_speed_ratio, 1., 1e-12);
+
+  IsoDynamicFactorInput in;
+  in.pinion_teeth = 21;
+  in.pinion_speed = 1450. * M_PI / 30.;
+  in.mesh_stiffness = 4e8 / 0.026;
+  in.single_stiffness = in.mesh_stiffness / (0.75 * 1.6 + 0.25);
+  in.face_width = 0.026;
+  in.tangential_force = 2000.;
+  in.total_contact_ratio = 1.6;
+  in.pitch_deviation = in.profile_deviation = 8e-6;
+  in.reduced_mass = reduced_mass(1.47e-4, r1, 7.81e-3, r2);
+  const double split_path = iso6336_dynamic_factor(in).kv;
+  in.reduced_mass = iso.reduced_mass;
+  in.pinion_speed = iso.pinion_speed_ratio * 1450. * M_PI / 30.;
+  EXPECT_NEAR(iso6336_dynamic_factor(in).kv, split_path, 1e-12 * split_path);
+
+  // Planetary 20/10/−40, 3 planets: J_s = 2e-4, J_p = 5e-5 (planet copies turn alone).
+  const TrainModel stage = build_train_model(planetary(3));
+  const double rs = 0.5 * 2e-3 * 20 * std::cos(20. * M_PI / 180.);
+  const double rp = 0.5 * 2e-3 * 10 * std::cos(20. * M_PI / 180.);
+  const double ms = 2e-4 / (rs * rs), mp = 5e-5 / (rp * rp);
+  EXPECT_NEAR(stage.spec_mesh_iso[0].reduced_mass, ms * mp / (ms + 3. * mp), 1e-12 * mp);
+  EXPECT_NEAR(stage.spec_mesh_iso[1].reduced_mass, mp, 1e-12 * mp);
+}
+
+// Modal kinetic energy per body (the command's dynamics_modal_energy table): each mode's shares
+// are non-negative and sum to 1 (the mass-weighted squares of one mode shape, divided by their
+// sum: round-off only, 1e-12), for the bi-planetary train with ring 7 suspended.
+TEST(TrainModel, ModalEnergySharesSumToOne)
+{
+  TrainDynamicsInput input = bi_planetary();
+  input.suspensions.push_back({"7", 1e6, 0.});
+  const TrainModel model = build_train_model(input);
+  const TorsionalModel torsional(model.train);
+  std::vector<std::string> bodies;
+  std::vector<unsigned int> group;
+  for (const std::string& body : model.dof_body)
+  {
+    const auto found = std::find(bodies.begin(), bodies.end(), body);
+    group.push_back(found - bodies.begin());
+    if (found == bodies.end())
+      bodies.push_back(body);
+  }
+  const Eigen::MatrixXd share = modal_energy_distribution(torsional, group, bodies.size());
+  ASSERT_EQ(share.rows(), static_cast<Eigen::Index>(model.dof_names.size()));
+  for (Eigen::Index k = 0; k < share.rows(); ++k)
+  {
+    EXPECT_NEAR(share.row(k).sum(), 1., 1e-12) << "mode " << k;
+    EXPECT_GE(share.row(k).minCoeff(), 0.);
+  }
 }
