@@ -497,13 +497,14 @@ unsigned int CycloidLoads<dim>::loop_iterations() const
 
 namespace
 {
-// θ (rad) of a branch at torque t (N·m): linear between the neighbouring points, extrapolated
-// from the two nearest ends outside.
+// θ (rad) of a branch at torque t (N·m): linear between the neighbouring points of the same
+// sense of torque, extrapolated from the two nearest ends outside. (A profile with play has a
+// jump across zero torque that no interpolation may bridge.)
 double branch_rotation(const std::vector<LoopPoint>& points, int branch, double t)
 {
   std::vector<std::pair<double, double>> curve;
   for (const auto& p : points)
-    if (p.branch == branch)
+    if (p.branch == branch && p.torque * t > 0.)
       curve.emplace_back(p.torque, p.rotation);
   std::sort(curve.begin(), curve.end());
   if (curve.size() < 2)
