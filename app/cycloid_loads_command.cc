@@ -214,6 +214,20 @@ void add_torsion_table(Report& report, const std::vector<double>& levels,
   }
 }
 
+// The loops with friction (stiffness::cycloid_hysteresis), one per profile, in the order solved:
+// column profile (0 nominal, 1 corrected), branch +1 rising, −1 falling, 0 the first loading.
+void add_hysteresis_table(Report& report, const std::vector<ProfileCases>& profiles,
+                          const std::vector<stiffness::CycloidHysteresis>& loops)
+{
+  ReportTable& table =
+      report.add_table("cycloid_hysteresis", {"profile", "torque", "rotation", "branch"},
+                       {"-", "N·m", "arcmin", "-"});
+  for (unsigned int b = 0; b < profiles.size(); ++b)
+    for (const auto& point : loops[b].points)
+      table.add_row({profiles[b].name == "nominal" ? 0. : 1., point.torque, point.rotation / arcmin,
+                     double(point.branch)});
+}
+
 void plot(CommandContext& context, const std::string& table, const std::string& mode,
           const std::string& png, const std::string& description)
 {
@@ -304,22 +318,52 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                          std::abs(bases[0].scene.ring.roller_circle_radius - 96e-3) < 1e-12 &&
                          std::abs(bases[0].scene.ring.eccentricity - 3e-3) < 1e-12 &&
                          std::abs(torque - 440.) < 1e-9;
+  // With friction the ramp is path dependent: each profile's loop runs on one contact problem
+  // that keeps the stick/slip history (serial; every rank solves it, the answer is the same).
+  const bool friction = p.torsional && p.settings.contact.friction_coefficient > 0.;
+  std::vector<stiffness::CycloidHysteresis> loops;
+  if (friction)
+    for (unsigned int b = 0; b < bases.size(); ++b)
+    {
+      stiffness::CycloidLoadSettings s = bases[b];
+      s.scene_file = scratch_stem(context.mpi_communicator) + "_loop_" + profiles[b].name + ".msh";
+      loops.push_back(stiffness::cycloid_hysteresis(s));
+      progress("friction loop, " + profiles[b].name + ": " + std::to_string(loops.back().steps) +
+               " steps, " + std::to_string(loops.back().time) + " s");
+    }
   for (unsigned int b = 0; b < profiles.size(); ++b)
   {
     const ProfileCases& pc = profiles[b];
     const std::string prefix = b == 0 ? "" : pc.name + "_";
     report_position(report, results[pc.position], prefix, pc.name, published && b == 0);
+    if (friction)
+    {
+      const stiffness::CycloidHysteresis& loop = loops[b];
+      report.add_value(prefix + "torsional_stiffness", loop.stiffness * arcmin, "N·m/arcmin",
+                       pc.name + ": friction loop, secant between 50% and 100% of M_c, both "
+                                 "loading branches");
+      report.add_value(prefix + "lost_motion", loop.lost_motion / arcmin, "arcmin",
+                       pc.name + ": friction loop, mid-width rotation between ±3% of M_c");
+      report.add_value(prefix + "hysteresis", loop.hysteresis / arcmin, "arcmin",
+                       pc.name + ": friction loop width at ±3% of M_c (falling − rising)");
+      report.add_value(prefix + "loop_wall_time", loop.time, "s",
+                       pc.name + ": wall time of the friction loop (" + std::to_string(loop.steps) +
+                           " load steps)");
+    }
     if (pc.levels > 0)
     {
       const std::vector<stiffness::CycloidLoadResult> ramp(
           results.begin() + pc.first_level, results.begin() + pc.first_level + pc.levels);
       const stiffness::TorsionalCurve curve = stiffness::torsional_curve(torque, ramp);
-      report.add_value(prefix + "torsional_stiffness", curve.stiffness * arcmin, "N·m/arcmin",
-                       pc.name + ": secant between 50% and 100% of M_c, both directions");
-      report.add_value(prefix + "lost_motion", curve.lost_motion / arcmin, "arcmin",
-                       pc.name + ": rotation between ±3% of M_c");
-      report.add_value(prefix + "hysteresis", curve.hysteresis / arcmin, "arcmin",
-                       pc.name + ": loading/unloading difference (frictionless: 0)");
+      if (!friction)
+      {
+        report.add_value(prefix + "torsional_stiffness", curve.stiffness * arcmin, "N·m/arcmin",
+                         pc.name + ": secant between 50% and 100% of M_c, both directions");
+        report.add_value(prefix + "lost_motion", curve.lost_motion / arcmin, "arcmin",
+                         pc.name + ": rotation between ±3% of M_c");
+        report.add_value(prefix + "hysteresis", curve.hysteresis / arcmin, "arcmin",
+                         pc.name + ": loading/unloading difference (frictionless: 0)");
+      }
       report.add_value(prefix + "backlash", curve.backlash / arcmin, "arcmin",
                        pc.name + ": rigid rotation between the flanks (closing rotations ±)");
     }
@@ -328,6 +372,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   add_contact_table(report, "cycloid_pins", profiles, results, false);
   if (p.torsional)
     add_torsion_table(report, levels, profiles, results);
+  if (friction)
+    add_hysteresis_table(report, profiles, loops);
   if (p.sweep_positions > 0)
     for (const auto& pc : profiles)
       add_sweep_table(report, pc, results);
@@ -340,6 +386,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     if (p.torsional)
       plot(context, "cycloid_torsion", "torsion", "cycloid_torsion.png",
            "output rotation against torque (torsional stiffness, lost motion)");
+    if (friction)
+      plot(context, "cycloid_hysteresis", "hysteresis", "cycloid_hysteresis.png",
+           "hysteresis loop with friction: output rotation against torque, per profile");
     for (const auto& pc : profiles)
       if (p.sweep_positions > 0)
         plot(context, "cycloid_sweep_" + pc.name, "sweep", "cycloid_sweep_" + pc.name + ".png",
@@ -357,7 +406,8 @@ const CommandRegistration registration(Command{
     "pressures, disc von Mises stress and output rotation, for the nominal and the corrected\n"
     "profile, beside the analytic rigid-disc model and the paper (P_max 1711 N, Q_max 3776 N);\n"
     "torsional stiffness, lost motion and backlash from torque levels ±3%, ±50%, ±100% M_c (the\n"
-    "ramp -M_c -> +M_c -> -M_c, frictionless: no hysteresis); optionally a\n"
+    "ramp -M_c -> +M_c -> -M_c; with Contact/Friction coefficient > 0 the loop is traced on one\n"
+    "contact problem keeping the stick/slip history: hysteresis, chart); optionally a\n"
     "crank-angle sweep spread over the MPI ranks.",
     declare_cycloid_loads_parameters, run});
 } // namespace

@@ -374,6 +374,9 @@ struct ContactProblem<dim>::Condensed
   double load_factor = 1.;
   std::vector<double> amplitudes; // m per unit mode
   bool partial = false;
+  // m, complete, at unit load factor: what hub target changes after the factorization added
+  // to the particular solution (empty: none).
+  Vector<double> particular_change;
 
   unsigned int position(types::global_dof_index dof) const
   {
@@ -430,6 +433,8 @@ void ContactProblem<dim>::complete_solution(Vector<double>& residual)
   Condensed& c = *condensed;
   displacement = c.factorization->response(c.contact_load);
   displacement.add(c.load_factor, c.factorization->particular_solution());
+  if (c.particular_change.size() > 0)
+    displacement.add(c.load_factor, c.particular_change);
   for (unsigned int j = 0; j < c.amplitudes.size(); ++j)
     displacement.add(c.amplitudes[j], c.factorization->free_modes()[j]);
   residual = elastic.residual(displacement);
@@ -996,7 +1001,8 @@ void ContactProblem<dim>::solve_load_step(unsigned int step,
                                           Vector<double>& residual)
 {
   const double mu = parameters.friction_coefficient;
-  const double load_factor = static_cast<double>(step) / parameters.load_steps;
+  // Steps after the ramp (solve_next_step) are at full load.
+  const double load_factor = std::min(1., static_cast<double>(step) / parameters.load_steps);
   elastic.set_load_factor(load_factor);
   for (auto& pair : pairs)
     for (auto& memory : pair.memory)
@@ -1063,6 +1069,82 @@ void ContactProblem<dim>::solve_load_step(unsigned int step,
                       "no convergence within " + std::to_string(parameters.max_iterations) +
                           " iterations at load step " + std::to_string(step) + " (" +
                           std::to_string(last_changes) + " nodes still changing state)");
+}
+
+template <int dim>
+void ContactProblem<dim>::set_hub_target(const std::string& name, double value)
+{
+  const auto support =
+      std::find_if(supports.begin(), supports.end(),
+                   [&name](const Support& s) { return s.is_hub && s.name == name; });
+  if (support == supports.end())
+    throw InputError(name, "no rigid hub of this name in the contact problem");
+  const double change = value - support->value;
+  support->value = value;
+  if (!support->hub)
+    return; // setup_system() builds the hub with the new target
+  support->hub = std::make_unique<fem::RigidHub<dim>>(elastic, support->boundary, support->axis,
+                                                      support->control, value, support->name);
+  if (condensed && change != 0.)
+    add_hub_change(*support, change);
+}
+
+template <int dim>
+void ContactProblem<dim>::add_hub_change(const Support& support, double change)
+{
+  // The hub at unit target: its point load (torque control) and prescribed displacement
+  // (rotation control). Its response is u_c + P (f − K u_c): the supports condensed with
+  // homogeneous values, as every other response.
+  Condensed& c = *condensed;
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
+  const fem::RigidHub<dim> unit(elastic, support.boundary, support.axis, support.control, 1.,
+                                support.name);
+  Vector<double> loads(n_dofs), prescribed(n_dofs);
+  unit.add_loads(loads, 1.);
+  AffineConstraints<double> rotation;
+  unit.add_constraints(rotation, 1.);
+  for (const auto& line : rotation.get_lines())
+    if (line.entries.empty())
+      prescribed[line.index] = line.inhomogeneity;
+  elastic.set_load_factor(0.); // K u_c alone, no tractions
+  Vector<double> equivalent = elastic.residual(prescribed);
+  elastic.set_load_factor(c.load_factor);
+  equivalent.sadd(-1., 1., loads);
+  Vector<double> response = c.factorization->response(equivalent);
+  response += prescribed;
+  if (c.particular_change.size() == 0)
+    c.particular_change.reinit(n_dofs);
+  c.particular_change.add(change, response);
+  const std::vector<double> at_dofs = c.at_dofs(response);
+  for (unsigned int i = 0; i < at_dofs.size(); ++i)
+    c.particular[i] += change * at_dofs[i];
+  // Rᵀ f of the free rigid modes: the torque's work (K R = 0 leaves the prescribed part out).
+  for (unsigned int j = 0; j < c.modes.size(); ++j)
+    c.mode_loads[j] += change * (c.factorization->free_modes()[j] * loads);
+  result.right_hand_sides = c.factorization->n_solves();
+}
+
+template <int dim>
+const ContactResults<dim>& ContactProblem<dim>::solve_next_step()
+{
+  if (result.load_steps == 0)
+    throw SolverFailure("contact continuation", "solve() must converge before solve_next_step()");
+  Timer total(mpi_communicator, true);
+  std::vector<std::vector<NodeState>> states;
+  for (const auto& pair : pairs)
+  {
+    states.emplace_back();
+    for (const auto& memory : pair.memory)
+      states.back().push_back(memory.state);
+  }
+  Vector<double> residual;
+  const unsigned int step = ++result.load_steps;
+  solve_load_step(step, states, residual);
+  step_start = displacement;
+  complete_solution(residual);
+  collect_results(residual);
+  result.total_time += total.wall_time();
+  return result;
 }
 
 template <int dim>

@@ -180,6 +180,16 @@ public:
   void start_from(const std::vector<ContactZone>& zones);
   // The load steps with their active-set iterations.
   const ContactResults<dim>& solve();
+  // Continuation — quasi-static incremental friction along a load path. After solve(), a hub's
+  // target (rad for rotation control, N·m for torque control; `name` as given to
+  // add_rigid_hub) may change; solve_next_step() then solves one more load step from the
+  // converged state of the last one, at full load with the new targets. The nodes keep their
+  // stick/slip/open states, friction bounds and slip directions, and stick means no tangential
+  // relative displacement since that state (the return mapping of incremental Coulomb
+  // friction), so loading and unloading follow different paths. The factorization is reused:
+  // a target change adds the hub's unit response once per change (one solve).
+  void set_hub_target(const std::string& name, double value);
+  const ContactResults<dim>& solve_next_step();
   // The converged zone of every pair with closed nodes, to start a neighbouring analysis from.
   std::vector<ContactZone> converged_zones() const;
   // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
@@ -219,6 +229,9 @@ private:
   void solve_load_steps(dealii::Vector<double>& residual);
   void solve_load_step(unsigned int step, const std::vector<std::vector<NodeState>>& initial_states,
                        dealii::Vector<double>& residual);
+  // Schur complement: the particular solution and mode loads follow a hub target changed by
+  // `change` (rad or N·m), by superposition of the hub's unit response.
+  void add_hub_change(const Support& support, double change);
   // Back to the states of setup_system(), no displacement, no friction history.
   void restore_cold_start();
 

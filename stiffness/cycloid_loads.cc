@@ -11,6 +11,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/fe/fe_values.h>
+#include <filesystem>
 #include <limits>
 
 namespace gearstiff::stiffness
@@ -320,9 +321,13 @@ void CycloidLoads<dim>::setup_problem()
   problem->add_rigid_hub(geometry::scene_ids::first_bore, bearing_axis,
                          fem::RigidHub<dim>::Control::torque, 0., "disc bearing");
   problem->add_displacement(geometry::scene_ids::second_bore, Tensor<1, dim>(), "roller pins");
-  problem->add_rigid_hub(geometry::cycloid_ids::output_pin_bores, ring_axis,
-                         fem::RigidHub<dim>::Control::torque, settings.output_torque,
-                         "output member");
+  if (rotation_control)
+    problem->add_rigid_hub(geometry::cycloid_ids::output_pin_bores, ring_axis,
+                           fem::RigidHub<dim>::Control::rotation, start_rotation, "output member");
+  else
+    problem->add_rigid_hub(geometry::cycloid_ids::output_pin_bores, ring_axis,
+                           fem::RigidHub<dim>::Control::torque, settings.output_torque,
+                           "output member");
   result.n_cells = tria.n_active_cells();
 }
 
@@ -429,6 +434,151 @@ void CycloidLoads<dim>::evaluate()
     result.rollers[i].analytic_force = result.analytic.roller_forces[i];
   for (unsigned int j = 0; j < result.pins.size(); ++j)
     result.pins[j].analytic_force = result.analytic.pin_forces[j];
+}
+
+template <int dim>
+std::vector<LoopPoint> CycloidLoads<dim>::trace_loop(const std::vector<LoopTarget>& targets)
+{
+  const double m = std::abs(settings.output_torque);
+  const double sign = settings.output_torque > 0. ? 1. : -1.;
+  // First guess of the stiffness: the nominal rigid-disc model's, stiffer than the FE, so the
+  // first step falls short rather than beyond.
+  geometry::CycloidSceneSpec nominal = settings.scene;
+  nominal.disc.rollers = 0;
+  double stiffness = // N·m/rad
+      m / std::abs(analytic_cycloid_loads(nominal, m, settings.roller_material.youngs_modulus)
+                       .output_rotation);
+  // A profile with play starts closed by the pre-closure (a small torque); the nominal one
+  // touches every roller at no load, so it starts a tenth of M_c into its sense.
+  rotation_control = true;
+  start_rotation = settings.scene.disc.rollers == 0 ? sign * 0.1 * m / stiffness : 0.;
+  make_scene();
+  setup_problem();
+  solve();
+  const auto output_torque = [this]()
+  {
+    for (const auto& support : problem->results().supports)
+      if (support.name == "output member")
+        return support.torque;
+    throw SolverFailure("cycloid loop", "no output member");
+  };
+  double theta = start_rotation, torque = output_torque();
+  std::vector<LoopPoint> points{
+      {torque, scene_rotation + theta, targets.empty() ? 0 : targets[0].branch}};
+  int previous_direction = 0;
+  for (const LoopTarget& target : targets)
+  {
+    const int direction = target.torque > torque ? 1 : -1;
+    // Sticking contacts make the first steps after a reversal stiffer than the secant of the
+    // last branch: half a step first, so it does not overshoot.
+    double scale = previous_direction != 0 && direction != previous_direction ? 0.5 : 1.;
+    previous_direction = direction;
+    for (unsigned int attempt = 0; attempt < 8 && direction * (torque - target.torque) < -0.01 * m;
+         ++attempt)
+    {
+      const double step = scale * (target.torque - torque) / stiffness; // rad
+      scale = 1.;
+      theta += step;
+      problem->set_hub_target("output member", theta);
+      problem->solve_next_step();
+      const double now = output_torque();
+      if ((now - torque) * direction > 0.)
+        stiffness = (now - torque) / step;
+      torque = now;
+      points.push_back({torque, scene_rotation + theta, target.branch});
+    }
+  }
+  return points;
+}
+
+template <int dim>
+unsigned int CycloidLoads<dim>::loop_iterations() const
+{
+  return problem ? problem->results().active_set_iterations : 0;
+}
+
+namespace
+{
+// θ (rad) of a branch at torque t (N·m): linear between the neighbouring points of the same
+// sense of torque, extrapolated from the two nearest ends outside. (A profile with play has a
+// jump across zero torque that no interpolation may bridge.)
+double branch_rotation(const std::vector<LoopPoint>& points, int branch, double t)
+{
+  std::vector<std::pair<double, double>> curve;
+  for (const auto& p : points)
+    if (p.branch == branch && p.torque * t > 0.)
+      curve.emplace_back(p.torque, p.rotation);
+  std::sort(curve.begin(), curve.end());
+  if (curve.size() < 2)
+    throw SolverFailure("cycloid loop", "a branch of the loop has fewer than two points");
+  unsigned int k = 1;
+  while (k + 1 < curve.size() && curve[k].first < t)
+    ++k;
+  const auto& [t0, r0] = curve[k - 1];
+  const auto& [t1, r1] = curve[k];
+  return r0 + (r1 - r0) * (t - t0) / (t1 - t0);
+}
+} // namespace
+
+CycloidHysteresis cycloid_hysteresis(const CycloidLoadSettings& base)
+{
+  Timer timer(MPI_COMM_SELF, true);
+  const double m = std::abs(base.output_torque);
+  const std::vector<double> levels{0.03, 0.25, 0.5, 0.75, 1.};
+  CycloidHysteresis h;
+  const auto trace = [&](double sign, const std::vector<LoopTarget>& targets)
+  {
+    CycloidLoadSettings s = base;
+    s.output_torque = sign * m;
+    CycloidLoads<2> loads(s);
+    const std::vector<LoopPoint> points = loads.trace_loop(targets);
+    std::filesystem::remove(s.scene_file);
+    h.points.insert(h.points.end(), points.begin(), points.end());
+    h.steps += points.size();
+    h.active_set_iterations += loads.loop_iterations();
+  };
+  // Targets from sign_from·M_c down the levels (and up the levels of sign_to when through
+  // zero), the first left out: it is where the previous targets ended.
+  const auto sweep = [&](std::vector<LoopTarget>& targets, double sign_from, double sign_to,
+                         int branch, bool through_zero)
+  {
+    std::vector<double> path;
+    for (auto it = levels.rbegin(); it != levels.rend(); ++it)
+      path.push_back(sign_from * *it);
+    if (through_zero)
+      for (const double l : levels)
+        path.push_back(sign_to * l);
+    for (unsigned int k = 1; k < path.size(); ++k)
+      targets.push_back({path[k] * m, branch});
+  };
+  if (base.scene.disc.rollers == 0)
+  {
+    std::vector<LoopTarget> targets;
+    for (const double l : levels)
+      if (l > 0.1)
+        targets.push_back({-l * m, 0});
+    sweep(targets, -1., 1., 1, true);
+    sweep(targets, 1., -1., -1, true);
+    trace(-1., targets);
+  }
+  else
+    for (const double sign : {1., -1.})
+    {
+      // Loading on this flank is the rising branch for +M_c and the falling one for −M_c.
+      const int loading = sign > 0. ? 1 : -1;
+      std::vector<LoopTarget> targets;
+      for (const double l : levels)
+        targets.push_back({sign * l * m, loading});
+      sweep(targets, sign, sign, -loading, false);
+      trace(sign, targets); // the start point belongs to the first target's branch: loading
+    }
+  const auto up = [&](double f) { return branch_rotation(h.points, 1, f * m); };
+  const auto down = [&](double f) { return branch_rotation(h.points, -1, f * m); };
+  h.stiffness = 0.5 * (0.5 * m / (up(1.) - up(0.5)) + 0.5 * m / (down(-0.5) - down(-1.)));
+  h.lost_motion = 0.5 * (up(0.03) + down(0.03)) - 0.5 * (up(-0.03) + down(-0.03));
+  h.hysteresis = 0.5 * ((down(0.03) - up(0.03)) + (down(-0.03) - up(-0.03)));
+  h.time = timer.wall_time();
+  return h;
 }
 
 template class CycloidLoads<2>;

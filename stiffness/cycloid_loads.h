@@ -125,6 +125,21 @@ struct CycloidLoadResult
   std::vector<std::string> output_files;
 };
 
+// One solved point of a torque loop (cycloid_hysteresis).
+struct LoopPoint
+{
+  double torque = 0.;   // N·m, the output member's torque on the pins (its reaction)
+  double rotation = 0.; // rad, output rotation θ, closing rotation included
+  int branch = 0;       // +1 torque rising, −1 falling, 0 the first loading before the loop
+};
+
+// A torque target of trace_loop and the branch its points belong to.
+struct LoopTarget
+{
+  double torque = 0.; // N·m
+  int branch = 0;
+};
+
 template <int dim>
 class CycloidLoads
 {
@@ -137,6 +152,14 @@ public:
   // Scene, contact solve, evaluation. InputError for an impossible scene, SolverFailure when the
   // contact iteration fails.
   CycloidLoadResult run();
+  // The torque path of a hysteresis loop on ONE contact problem with the friction history
+  // kept (ContactProblem::solve_next_step): the output member is rotation-controlled — its
+  // torque is the reaction — and θ is stepped so that the torque reaches each target in turn
+  // (secant on the measured stiffness, within 1% of M_c; a step may overshoot, never stops
+  // short by more). The start is the flank the sign of settings.output_torque closes. Returns
+  // every solved point; SolverFailure when a step does not converge.
+  std::vector<LoopPoint> trace_loop(const std::vector<LoopTarget>& targets);
+  unsigned int loop_iterations() const; // -, active-set iterations of trace_loop
 
 private:
   void make_scene();
@@ -152,7 +175,31 @@ private:
   std::unique_ptr<contact::ContactProblem<dim>> problem;
   std::vector<unsigned int> roller_pairs, pin_pairs; // contact pair index of each roller / pin
   CycloidLoadResult result;
+  // trace_loop: the output member is rotation-controlled, starting at this rotation (rad,
+  // relative to closed_scene).
+  bool rotation_control = false;
+  double start_rotation = 0.;
 };
+
+// The hysteresis loop −M_c → +M_c → −M_c with the contacts' friction (settings.contact; the
+// robot-reducer catalogue curve) and the figures read from it:
+//  - without play (nominal profile) one problem: a first loading to −M_c, then rising to +M_c
+//    and falling to −M_c, every step from the converged stick/slip state of the last;
+//  - with play (corrected profile) the two flanks separately: crossing the play opens every
+//    roller contact (their friction history ends there) and is a large rigid rotation the
+//    small-sliding contact cannot follow; each flank is loaded from touching to M_c and unloaded
+//    to 3% of M_c, and the loop jumps across the backlash between them.
+// Levels 3%, 25%, 50%, 75%, 100% of M_c in each sense; branches interpolated linearly.
+struct CycloidHysteresis
+{
+  std::vector<LoopPoint> points; // in the order solved (flank by flank with play)
+  double stiffness = 0.;         // N·m/rad, secant 50%–100% of M_c on each loading branch, mean
+  double lost_motion = 0.;       // rad, mid-width rotation at +3% minus that at −3% of M_c
+  double hysteresis = 0.;        // rad, width of the loop (falling − rising) at ±3% of M_c, mean
+  unsigned int steps = 0, active_set_iterations = 0; // -, load steps, all flanks
+  double time = 0.;                                  // s, wall, scene(s) and solves
+};
+CycloidHysteresis cycloid_hysteresis(const CycloidLoadSettings& settings);
 
 // Checks what the scene cannot (torque, materials); throws InputError naming the parameter.
 void check_cycloid_load_settings(const CycloidLoadSettings& settings);

@@ -7,6 +7,8 @@ usage: plot_cycloid_loads.py MODE TABLE.csv OUT.png
   pins     cycloid_pins table: Q_j the same way
   torsion  cycloid_torsion table: output rotation [arcmin] against the output torque [N·m] along
            the ramp -M_c -> +M_c -> -M_c (column branch: +1 loading, -1 unloading)
+  hysteresis  cycloid_hysteresis table: the loops with friction, rotation [arcmin] against
+           torque [N·m], one colour per profile (column profile), rising solid, falling dashed
   sweep    cycloid_sweep_<profile> table: P_i(φ_h) and Q_j(φ_h) traces
 """
 import sys
@@ -62,6 +64,29 @@ def torsion(table, png):
     fig.savefig(png, dpi=110)
 
 
+def hysteresis(table, png):
+    """The loops -M_c -> +M_c -> -M_c with friction: rising branch solid, falling dashed, the
+    first loading dotted; a profile with play jumps across zero torque by its backlash."""
+    fig, ax = plt.subplots(figsize=(7, 5))
+    names = ["nominal", "corrected"]
+    for p in sorted(set(int(v) for v in table["profile"])):
+        for branch, style, label in ((1, "o-", "rising"), (-1, "x--", "falling"), (0, ".:", "first loading")):
+            rows = [i for i in range(len(table["torque"]))
+                    if int(table["profile"][i]) == p and int(table["branch"][i]) == branch]
+            rows.sort(key=lambda i: table["torque"][i])
+            if rows:
+                ax.plot([table["rotation"][i] for i in rows], [table["torque"][i] for i in rows],
+                        style, ms=3, color=f"C{p}", label=f"{names[p] if p < 2 else p}, {label}")
+    ax.axhline(0, color="k", lw=0.5)
+    ax.axvline(0, color="k", lw=0.5)
+    ax.set_xlabel("output rotation θ [arcmin]")
+    ax.set_ylabel("output torque [N·m]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+
+
 def sweep(table, png):
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     angle = table["crank_angle"]
@@ -90,6 +115,8 @@ def main():
         distribution(table, "pin", "pin force Q_j", png)
     elif mode == "torsion":
         torsion(table, png)
+    elif mode == "hysteresis":
+        hysteresis(table, png)
     else:
         sweep(table, png)
 
