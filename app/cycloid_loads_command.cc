@@ -138,6 +138,14 @@ void report_position(Report& report, const stiffness::CycloidLoadResult& r,
   value("n_dofs", r.n_dofs, "-", "DoFs");
   value("active_set_iterations", r.active_set_iterations, "-", "contact active-set iterations");
   value("solve_wall_time", r.total_time, "s", "wall time of the position (scene + solve)");
+  value("scene_time", r.scene_time, "s", "gmsh scene: geometry, meshing, checks, writing");
+  value("meshing_time", r.meshing_time, "s", "gmsh mesh generation (all attempts)");
+  value("meshing_attempts", r.meshing_attempts, "-", "gmsh mesh generations");
+  value("read_time", r.read_time, "s", "reading the mesh, contact pairs, supports");
+  value("setup_time", r.setup_time, "s", "DoFs, stiffness matrix, mortar coupling");
+  value("factorization_time", r.factorization_time, "s", "contact assembly (factorization)");
+  value("iteration_time", r.iteration_time, "s", "active-set iterations (linear solves)");
+  value("evaluate_time", r.evaluate_time, "s", "forces, von Mises, analytic model");
 }
 
 void add_contact_table(Report& report, const std::string& name,

@@ -15,6 +15,11 @@ seconds() { local start=$(date +%s.%N); "$@" >/dev/null 2>&1; echo "$(date +%s.%
 for run in 1 2 3; do
   echo "one position, nominal, 1 rank, run $run: $(seconds "$gearstiff" cycloid-loads "${one[@]}") s"
 done
+profile=(n_dofs max_roller_force max_pin_force solve_wall_time meshing_time meshing_attempts read_time
+  setup_time factorization_time iteration_time evaluate_time active_set_iterations)
+echo "profile of one position (${profile[*]}):"
+"$gearstiff" cycloid-loads "${one[@]}" --json 2>/dev/null |
+  python3 -c "import json,sys; v=json.load(sys.stdin)['values']; print(*(round(v[k]['value'], 4) for k in '${profile[*]}'.split()))"
 echo "refinement (size factor, DoFs, P_max [N], Q_max [N], wall [s]):"
 for f in 2 1 0.5; do
   sizes=$(python3 -c "f=$f; print(' '.join(str(v*f) for v in (0.08, 2, 8)))")

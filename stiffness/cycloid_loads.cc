@@ -205,9 +205,13 @@ CycloidLoadResult CycloidLoads<dim>::run()
   result.disc_rotation = settings.scene.disc_rotation;
   result.output_torque = settings.output_torque;
   make_scene();
+  Timer step(MPI_COMM_SELF, true);
   setup_problem();
+  result.read_time = step.wall_time();
   solve();
+  step.restart();
   evaluate();
+  result.evaluate_time = step.wall_time();
   if (!settings.output_directory.empty())
     result.output_files = problem->output_results(settings.output_directory, settings.output_base);
   result.total_time = timer.wall_time();
@@ -220,6 +224,8 @@ void CycloidLoads<dim>::make_scene()
   const geometry::SceneInfo info = geometry::write_cycloid_scene(closed_scene, settings.scene_file);
   result.contact_size = info.contact_size;
   result.scene_time = info.time_total;
+  result.meshing_time = info.mesh.time_meshing;
+  result.meshing_attempts = info.mesh.meshing_attempts;
 }
 
 template <int dim>
@@ -347,6 +353,8 @@ void CycloidLoads<dim>::solve()
     throw InputError(cycloid_parameter::overlap_tolerance, e.parameter() + ": " + e.reason());
   }
   solve_set_up_contact_problem(*problem, result);
+  result.factorization_time = problem->results().assembly_time;
+  result.iteration_time = problem->results().solve_time;
 }
 
 template <int dim>

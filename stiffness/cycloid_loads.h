@@ -122,6 +122,12 @@ struct CycloidLoadResult
   unsigned int n_cells = 0, n_dofs = 0, active_set_iterations = 0;
   double contact_size = 0.;                                                  // m
   double scene_time = 0., setup_time = 0., solve_time = 0., total_time = 0.; // s, wall
+  // Profile of one position (s, wall): gmsh meshing (all attempts) and its number of attempts,
+  // reading the mesh and labelling the pairs, the factorization (contact assembly) and the
+  // active-set iterations, the evaluation (forces, von Mises, analytic model).
+  double meshing_time = 0., read_time = 0., factorization_time = 0., iteration_time = 0.,
+         evaluate_time = 0.;
+  unsigned int meshing_attempts = 0;
   std::vector<std::string> output_files;
 };
 

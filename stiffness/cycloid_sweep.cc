@@ -42,10 +42,15 @@ const std::vector<double Result::*> result_reals = {&Result::crank_angle,
                                                     &Result::scene_time,
                                                     &Result::setup_time,
                                                     &Result::solve_time,
-                                                    &Result::total_time};
+                                                    &Result::total_time,
+                                                    &Result::meshing_time,
+                                                    &Result::read_time,
+                                                    &Result::factorization_time,
+                                                    &Result::iteration_time,
+                                                    &Result::evaluate_time};
 const std::vector<unsigned int Result::*> result_counts = {
-    &Result::loaded_rollers, &Result::loaded_pins, &Result::n_cells, &Result::n_dofs,
-    &Result::active_set_iterations};
+    &Result::loaded_rollers, &Result::loaded_pins,           &Result::n_cells,
+    &Result::n_dofs,         &Result::active_set_iterations, &Result::meshing_attempts};
 const std::vector<double Load::*> load_reals = {
     &Load::angle,   &Load::initial_gap,  &Load::force,          &Load::force_x,
     &Load::force_y, &Load::max_pressure, &Load::contact_length, &Load::analytic_force};
