@@ -13,7 +13,11 @@
 #   warm start (Contact/Warm start): active-set iterations summed over the 32-position sweep,
 #   each position started from its neighbour's zone against every position started cold
 #
-# usage: bench/contact_speed.sh [path/to/gearstiff] [--quick]   (--quick: one run each, no 3D)
+#   --large: 3D, Q2, 6 layers (~1.0 M DoFs) on 2 ranks, one run, each rank under a 10 GB
+#   address-space limit (prlimit): wall time and peak memory per rank
+#
+# usage: bench/contact_speed.sh [path/to/gearstiff] [--quick|--large]
+#   (--quick: one run each, no 3D; --large: only the ~1 M DoF case)
 # Results with before/after figures: bench/contact_speed.md.
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
@@ -39,6 +43,17 @@ median_seconds() {
 
 # The value of a "<label>   <number>  s" line of a command's text report.
 report_value() { grep -E "$1" | head -1 | awk '{for (i = NF; i > 0; --i) if ($i ~ /^[0-9.]+$/) {print $i; exit}}'; }
+
+if [ "$quick" = "--large" ]; then
+  dir=$(mktemp -d)
+  "${mpi[@]}" -np 2 sh -c '/usr/bin/time -f "%e %M" -o "$0/rank$OMPI_COMM_WORLD_RANK.time" \
+    prlimit --as=10000000000 "$@"' "$dir" "$gearstiff" stiffness --set "Mesh/dimension=3" \
+    --set "Mesh/layers=6" --set "Finite elements/Element degree=2" "${friction[@]}" >"$dir/out"
+  echo "| 3D Q2 6 layers ($(grep -oE '[0-9]+ DoFs' "$dir/out" | head -1)), 2 ranks [s], one run |" \
+    "$(cat "$dir"/rank0.time) / $(cat "$dir"/rank1.time) (s, peak KB of rank 0 / rank 1) | | |"
+  rm -rf "$dir"
+  exit 0
+fi
 
 echo "| case | Schur complement | full re-solve | ratio |"
 echo "|---|---|---|---|"
