@@ -13,8 +13,5 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 gearstiff=${1:-$here/../build/app/gearstiff}
 shift || true
-if ! command -v ccx >/dev/null 2>&1; then
-  echo "calculix_compare: installing calculix-ccx" >&2
-  apt-get install -y calculix-ccx >/dev/null
-fi
+source "$here/ensure_ccx.sh" calculix_compare
 exec python3 "$here/calculix_compare.py" "$(realpath "$gearstiff")" "$@"

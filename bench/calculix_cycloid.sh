@@ -11,8 +11,5 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 gearstiff=${1:-$here/../build/app/gearstiff}
 shift || true
-if ! command -v ccx >/dev/null 2>&1; then
-  echo "calculix_cycloid: installing calculix-ccx" >&2
-  apt-get install -y calculix-ccx >/dev/null
-fi
+source "$here/ensure_ccx.sh" calculix_cycloid
 exec python3 "$here/calculix_cycloid.py" "$(realpath "$gearstiff")" "$@"

@@ -45,6 +45,18 @@ def distribution(table, index, symbol, png):
     fig.savefig(png, dpi=110)
 
 
+def finish_torque_rotation(fig, ax, png):
+    """Axes, grid and legend of a torque-against-rotation chart (ramp and hysteresis loop)."""
+    ax.axhline(0, color="k", lw=0.5)
+    ax.axvline(0, color="k", lw=0.5)
+    ax.set_xlabel("output rotation θ [arcmin]")
+    ax.set_ylabel("output torque [N·m]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+
+
 def torsion(table, png):
     """The ramp -M_c -> +M_c -> -M_c: loading branch solid, unloading branch dashed (they
     coincide without friction); a profile with play jumps across zero torque by its backlash."""
@@ -54,14 +66,7 @@ def torsion(table, png):
             rows = [i for i, b in enumerate(table["branch"]) if b == branch]
             ax.plot([table[key][i] for i in rows], [table["torque"][i] for i in rows], style,
                     color=f"C{n}", label=f"{key[len('rotation_'):]}, {label}")
-    ax.axhline(0, color="k", lw=0.5)
-    ax.axvline(0, color="k", lw=0.5)
-    ax.set_xlabel("output rotation θ [arcmin]")
-    ax.set_ylabel("output torque [N·m]")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
+    finish_torque_rotation(fig, ax, png)
 
 
 def hysteresis(table, png):
@@ -77,14 +82,7 @@ def hysteresis(table, png):
             if rows:
                 ax.plot([table["rotation"][i] for i in rows], [table["torque"][i] for i in rows],
                         style, ms=3, color=f"C{p}", label=f"{names[p] if p < 2 else p}, {label}")
-    ax.axhline(0, color="k", lw=0.5)
-    ax.axvline(0, color="k", lw=0.5)
-    ax.set_xlabel("output rotation θ [arcmin]")
-    ax.set_ylabel("output torque [N·m]")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
+    finish_torque_rotation(fig, ax, png)
 
 
 def sweep(table, png):
