@@ -42,17 +42,16 @@ void declare_deck_parameters(ParameterHandler& prm)
   prm.enter_subsection("Mesh");
   prm.declare_entry("format", "msh", Selection("msh|inp|msh and inp"),
                     "msh: the gmsh mesh (Scene/mesh file); inp: a CalculiX/Abaqus input deck of "
-                    "the gear-pair or cycloid scene (the latter with its output pins meshed) of "
-                    "the same name ending in .inp, solvable by `ccx -i` as it is "
-                    "(docs/calculix.md); msh and inp: both");
+                    "the scene (cycloid: with its output pins meshed) of the same name ending in "
+                    ".inp, solvable by `ccx -i` as it is (docs/calculix.md); msh and inp: both");
   prm.leave_subsection();
   prm.enter_subsection("Abaqus deck");
   prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
   prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks [-] (gear-data.md §1: 0.01; the cycloid deck "
-                    "is frictionless, as cycloid-loads)");
+                    "Coulomb μ between the flanks or the cylinders [-] (gear-data.md §1: 0.01; "
+                    "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
                     "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
                     "(gear-data.md §4: 440)");
@@ -248,7 +247,7 @@ struct DeckRequest
   double output_torque = 0.;  // N·m, cycloid: M_c
 };
 
-DeckRequest parse_deck_request(ParameterHandler& prm, const std::string& type)
+DeckRequest parse_deck_request(ParameterHandler& prm)
 {
   DeckRequest request;
   prm.enter_subsection("Mesh");
@@ -256,9 +255,6 @@ DeckRequest parse_deck_request(ParameterHandler& prm, const std::string& type)
   prm.leave_subsection();
   request.write = format != "msh";
   request.keep_msh = format != "inp";
-  if (request.write && type == "cylinders")
-    throw InputError("Mesh/format",
-                     "the inp deck is written for the gear-pair and cycloid scenes only");
   prm.enter_subsection("Abaqus deck");
   request.element_2d =
       geometry::parse_element_2d(prm.get("2D elements"), "Abaqus deck/2D elements");
@@ -283,9 +279,14 @@ void write_deck(const geometry::SceneInfo& info, geometry::AbaqusDeckSpec deck,
     context.report.add_value("deck_penalty", deck.penalty, "Pa/m",
                              "contact penalty slope of the deck");
     for (const auto& body : deck.rigid_bodies)
-      context.report.add_value("deck_closing_rotation_" + body.name, body.closing_rotation * 1e6,
-                               "µrad",
-                               "rotation prescribed in the deck's first step (" + body.name + ")");
+      if (body.pushed)
+        context.report.add_value(
+            "deck_closing_displacement_" + body.name, body.closing_displacement / mm, "mm",
+            "displacement prescribed in the deck's first step (" + body.name + ")");
+      else
+        context.report.add_value(
+            "deck_closing_rotation_" + body.name, body.closing_rotation * 1e6, "µrad",
+            "rotation prescribed in the deck's first step (" + body.name + ")");
     return;
   }
   const std::filesystem::path scratch = std::filesystem::temp_directory_path() /
@@ -311,7 +312,7 @@ void run(ParameterHandler& prm, CommandContext& context)
   if (file_name.empty() || file_name.find('/') != std::string::npos ||
       std::filesystem::path(file_name).extension() != ".msh")
     throw InputError("Scene/mesh file", "must be a plain file name ending in .msh");
-  const DeckRequest deck = parse_deck_request(prm, type);
+  const DeckRequest deck = parse_deck_request(prm);
 
   // Parse everything first: a bad parameter must stop the command before gmsh runs.
   const bool gear = type == "gear pair";
@@ -348,10 +349,12 @@ void run(ParameterHandler& prm, CommandContext& context)
                      : geometry::write_cylinders_scene(cylinder_spec, path);
     if (deck.write)
       write_deck(info,
-                 gear ? geometry::gear_pair_deck_spec(gear_spec, gear_scene, deck.friction,
-                                                      deck.penalty_factor)
-                      : geometry::cycloid_deck_spec(cycloid_spec, info, deck.output_torque,
-                                                    deck.penalty_factor),
+                 gear      ? geometry::gear_pair_deck_spec(gear_spec, gear_scene, deck.friction,
+                                                           deck.penalty_factor)
+                 : cycloid ? geometry::cycloid_deck_spec(cycloid_spec, info, deck.output_torque,
+                                                         deck.penalty_factor)
+                           : geometry::cylinders_deck_spec(cylinder_spec, info, deck.friction,
+                                                           deck.penalty_factor),
                  deck, file_name, context);
   }
   catch (...)

@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <map>
 #include <set>
+#include <sstream>
 #include <unordered_map>
 
 namespace gearstiff::geometry
@@ -358,9 +359,18 @@ void write_supports(std::ostream& out, const SceneInfo& info, const AbaqusDeckSp
   out << "*BOUNDARY" << parameters << "\n";
   for (const int id : spec.fixed_bores)
     out << boundary_name(info, id, "") << "_NODES, 1, " << in_plane_dofs << "\n";
+  // ccx's rigid bodies are 3D, also over CPE4/CPS4: the rotations about x and y are held.
   for (const AbaqusRigidBody& body : spec.rigid_bodies)
-    out << body.name << "_REF, 1, " << in_plane_dofs << "\n"
-        << body.name << "_ROT, 1, 2\n"; // ccx's rigid bodies are 3D, also over CPE4/CPS4
+    if (body.pushed)
+    {
+      // Free along y only: no sideways sliding, no turning (u_y is set per step).
+      out << body.name << "_REF, 1, 1\n";
+      if (in_plane_dofs == 3)
+        out << body.name << "_REF, 3, 3\n";
+      out << body.name << "_ROT, 1, 3\n";
+    }
+    else
+      out << body.name << "_REF, 1, " << in_plane_dofs << "\n" << body.name << "_ROT, 1, 2\n";
   if (layout.slice)
     out << "PLANE_STRAIN, 3, 3\n";
 }
@@ -369,27 +379,33 @@ void write_steps(std::ostream& out, const SceneInfo& info, const AbaqusDeckSpec&
                  const DeckLayout& layout)
 {
   write_supports(out, info, spec, layout, "");
-  out << "** Step 1: prescribed rotations close the contacts that will carry load.\n"
+  out << "** Step 1: prescribed rigid-body motions close the contacts that will carry load.\n"
       << "*STEP\n*STATIC\n1., 1.\n*BOUNDARY\n";
   for (const AbaqusRigidBody& body : spec.rigid_bodies)
-    out << body.name << "_ROT, 3, 3, " << body.closing_rotation << "\n";
+    if (body.pushed)
+      out << body.name << "_REF, 2, 2, " << body.closing_displacement << "\n";
+    else
+      out << body.name << "_ROT, 3, 3, " << body.closing_rotation << "\n";
   out << "*END STEP\n";
   // One increment: the problem is linear but for the contact, whose active set ccx's Newton
   // iteration settles within the increment (split into four, it took 32 iterations, not 14).
-  out << "** Step 2: the rotations are released and the torques applied.\n"
+  out << "** Step 2: the motions are released and the torques or forces applied.\n"
       << "*STEP, INC=1000\n*STATIC\n1., 1.\n";
   write_supports(out, info, spec, layout, ", OP=NEW");
   out << "*CLOAD\n";
   for (const AbaqusRigidBody& body : spec.rigid_bodies)
-    if (body.torque != 0.)
+    if (body.pushed && body.force != 0.)
+      out << body.name << "_REF, 2, " << body.force << "\n";
+    else if (!body.pushed && body.torque != 0.)
       out << body.name << "_ROT, 3, " << body.torque << "\n";
   for (const AbaqusRigidBody& body : spec.rigid_bodies)
     out << "*NODE PRINT, NSET=" << body.name << "_ROT\nU\n"
-        << "*NODE PRINT, NSET=" << body.name << "_REF\nRF\n";
+        << "*NODE PRINT, NSET=" << body.name << "_REF\n"
+        << (body.pushed ? "U, RF" : "RF") << "\n";
   out << "*NODE FILE\nU\n*EL FILE\nS\n*CONTACT FILE\nCSTR, CDIS\n";
   // Per contact pair (ccx: CF needs its SLAVE and MASTER) the total force on its slave surface:
   // the roller and pin forces.
-  if (!spec.surface_parts.empty())
+  if (spec.print_contact_forces)
     for (const auto& [slave, master] : spec.contact_pairs)
       out << "*CONTACT PRINT, SLAVE=" << slave << ", MASTER=" << master << "\nCF\n";
   out << "*END STEP\n";
@@ -576,10 +592,55 @@ AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& 
   bearing.centre = info.first_centre;
   bearing.closing_rotation = 0.05 * theta;
   deck.rigid_bodies = {output, bearing};
+  deck.print_contact_forces = true;
   deck.fixed_bores = {scene_ids::second_bore};
   deck.title = "gearstiff cycloid scene (disc rotation " + std::to_string(spec.disc_rotation) +
                " rad, output torque " + std::to_string(output_torque) + " N m), " +
                std::to_string(info.mesh.n_cells) + " cells";
+  return deck;
+}
+
+AbaqusDeckSpec cylinders_deck_spec(const CylindersSceneSpec& spec, const SceneInfo& info,
+                                   const double friction, const double penalty_factor)
+{
+  if (info.contacts.size() != 1)
+    throw InputError("Abaqus deck", "the cylinders deck needs the scene's one contact");
+  AbaqusDeckSpec deck =
+      common_deck_spec(info, spec.young_modulus, spec.poisson_ratio, friction, penalty_factor);
+  // The support of each cylinder: its bore, or without one the flat face through its centre.
+  const int lower = spec.bore_radius_1 > 0. ? scene_ids::first_bore : scene_ids::first_cuts;
+  const int upper = spec.bore_radius_2 > 0. ? scene_ids::second_bore : scene_ids::second_cuts;
+  deck.fixed_bores = {lower};
+  // Cylinder 2 on cylinder 1, as gearstiff's built-in case pairs the upper arc (slave) on the
+  // lower one; both arcs are meshed alike in this scene.
+  deck.contact_pairs = {{abaqus_name(info.boundary_names.at(scene_ids::second_contact)),
+                         abaqus_name(info.boundary_names.at(scene_ids::first_contact))}};
+  deck.print_contact_forces = true;
+  // Elastically similar cylinders under a normal load carry no shear (Johnson 1985 §5.1), so the
+  // stick slope only has to hold the surfaces together; as stiff as the normal penalty, ccx's
+  // Newton iteration chattered between stick states at the few nodes closed in step 1 and did
+  // not converge (h_c = 0.02 mm, μ = 0.1 or 0.01); a hundredth of it converges; the elastic
+  // slip of a sticking node, μp/slope, is then 0.002 µm (μ = 0.01, p = 1 GPa, h_c = 0.02 mm).
+  deck.stick_slope = 0.01 * deck.penalty;
+
+  // The overlap of the undeformed profiles over the loaded half-width is a²/(2R*); the loaded
+  // approach adds the bodies' compression (logarithmic in R/a, several times more). A tenth of
+  // a²/R* closes the contact nodes within ~0.45 a and stays far below the loaded state.
+  const SceneContact& contact = info.contacts.front();
+  const double r1 = contact.first_curvature_radius, r2 = contact.second_curvature_radius;
+  const double a = contact.hertz_half_width;
+  AbaqusRigidBody pushed;
+  pushed.name = "UPPER";
+  pushed.boundary_id = upper;
+  pushed.centre = info.second_centre;
+  pushed.pushed = true;
+  pushed.force = -spec.force_per_length * deck.slice_thickness; // towards cylinder 1
+  pushed.closing_displacement = -0.1 * a * a * (r1 + r2) / (r1 * r2);
+  deck.rigid_bodies = {pushed};
+  std::ostringstream title;
+  title << "gearstiff cylinders scene (R1 " << r1 * 1e3 << " mm, R2 " << r2 * 1e3 << " mm, "
+        << spec.force_per_length * 1e-3 << " N/mm), " << info.mesh.n_cells << " cells";
+  deck.title = title.str();
   return deck;
 }
 

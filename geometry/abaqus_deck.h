@@ -27,6 +27,7 @@
 
 #include "geometry/scene_common.h"
 #include "geometry/scene_cycloid.h"
+#include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
 
 #include <Eigen/Core>
@@ -70,10 +71,14 @@ enum class Element2D
 // Parses "slice", "CPE4" or "CPS4" (InputError naming `parameter` otherwise).
 Element2D parse_element_2d(const std::string& text, const std::string& parameter);
 
-// A rigid body over the nodes of one boundary group (a bore): its REF NODE at `centre` is held
-// in translation, its ROT NODE's u_1, u_2 (rotations about x, y) are held, and its rotation about
-// z is prescribed to `closing_rotation` in step 1 and free under `torque` in step 2 (torque 0: a
-// bearing, free to turn). Its node sets are NAME_REF and NAME_ROT.
+// A rigid body over the nodes of one boundary group (a bore or a flat face), its REF NODE at
+// `centre`, its ROT NODE's u_1, u_2 (rotations about x, y) held. Its node sets are NAME_REF and
+// NAME_ROT. Two kinds:
+// - turning (default): the REF NODE is held in translation; the rotation about z is prescribed
+//   to `closing_rotation` in step 1 and free under `torque` in step 2 (torque 0: a bearing);
+// - pushed: the rotation about z and the REF NODE's u_x (and u_z) are held; its u_y is
+//   prescribed to `closing_displacement` in step 1 and free under `force` in step 2 (the
+//   loaded flat face or bore of the cylinders scene). U and RF of its REF NODE are printed.
 struct AbaqusRigidBody
 {
   std::string name;                                 // deck prefix, e.g. DRIVEN
@@ -81,6 +86,9 @@ struct AbaqusRigidBody
   Eigen::Vector2d centre = Eigen::Vector2d::Zero(); // m, its axis (z direction)
   double torque = 0.;                               // N·m about +z in step 2
   double closing_rotation = 0.;                     // rad, prescribed in step 1
+  bool pushed = false;                              // translates along y instead of turning
+  double force = 0.;                                // N along +y in step 2 (pushed)
+  double closing_displacement = 0.;                 // m along +y, prescribed in step 1 (pushed)
 };
 
 // A part of a boundary group written as a surface of its own: the facets of `boundary_id` whose
@@ -107,6 +115,7 @@ struct AbaqusDeckSpec
   std::vector<AbaqusSurfacePart> surface_parts;                   // surfaces beyond the groups
   std::vector<std::pair<std::string, std::string>> contact_pairs; // (slave, master) surfaces
   std::vector<AbaqusRigidBody> rigid_bodies; // the first one's ROT NODE is printed as Δφ
+  bool print_contact_forces = false;         // *CONTACT PRINT CF per contact pair
   std::vector<int> fixed_bores;              // boundary ids of the groups held fixed
   std::string title;                         // *HEADING text
 };
@@ -130,6 +139,16 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPair
 // InputError("Abaqus deck/output torque") for a zero torque.
 AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& info,
                                  double output_torque, double penalty_factor);
+
+// The deck for the cylinders scene (geometry/scene_cylinders.h), the Hertz case of `gearstiff
+// contact` as a load: cylinder 1's flat face (or bore) fixed, cylinder 2's flat face (or bore) a
+// rigid body pushed down by F = spec.force_per_length times the slice thickness (the scene's
+// length), turning and sliding sideways held, as gearstiff's built-in case moves its flat top
+// face rigidly; cylinder 2's surface (slave) on cylinder 1's (master), Coulomb `friction`; the
+// total contact force printed. The closing displacement of step 1 is a tenth of a²/R* (Hertz
+// half-width a, R* = R1·R2/(R1 + R2)): the loaded approach is several times a²/R*.
+AbaqusDeckSpec cylinders_deck_spec(const CylindersSceneSpec& spec, const SceneInfo& info,
+                                   double friction, double penalty_factor);
 
 // Writes `inp_file` from the mesh of `info.file`. InputError("Abaqus deck/...") for a spec that
 // names ids the mesh lacks.

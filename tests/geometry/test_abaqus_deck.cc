@@ -7,9 +7,11 @@
 // stiffness/cycloid_loads.h) is checked for its sets, surfaces, pairs and rigid bodies.
 #include "errors/errors.h"
 #include "geometry/abaqus_deck.h"
+#include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -356,5 +358,151 @@ TEST(AbaqusDeck, CycloidDeckRejectsBadInput)
   EXPECT_THROW(cycloid_deck_spec(spec, SceneInfo(), 440., 50.), InputError); // before any mesh
   spec.output_pin_bodies = true; // a zero torque loads nothing
   EXPECT_THROW(cycloid_deck_spec(spec, SceneInfo(), 0., 50.), InputError);
+}
+// A coarse Hertz cylinders scene (R1 = R2 = 10 mm, F' = 100 N/mm, 10 mm long; h_c = 0.02 mm,
+// coarser than the scene's default a/10: ccx solves it in about a second), half-discs or annuli.
+struct CylindersDeck
+{
+  CylindersSceneSpec spec;
+  SceneInfo info;
+  SceneMesh mesh;
+  std::string file;
+};
+
+CylindersDeck cylinders_deck(const std::string& base, double bore_radius = 0.)
+{
+  CylindersDeck deck;
+  deck.spec.bore_radius_1 = bore_radius;
+  deck.spec.bore_radius_2 = bore_radius;
+  deck.spec.mesh.contact_size = 0.02e-3;
+  deck.spec.mesh.body_size = 1e-3;
+  deck.spec.mesh.rim_size = 1e-3;
+  deck.info = write_cylinders_scene(deck.spec, work_file(base + ".msh"));
+  deck.mesh = read_scene_mesh(deck.info.file, 2);
+  deck.file = work_file(base + ".inp");
+  write_abaqus_deck(deck.info, cylinders_deck_spec(deck.spec, deck.info, 0.1, 50.), deck.file);
+  return deck;
+}
+
+// The cylinders' deck: both bodies, cylinder 2's arc (slave) on cylinder 1's, cylinder 1's flat
+// face fixed, cylinder 2's flat face one rigid body about its centre (0, R2) that only moves
+// along y: closed by a tenth of a²/R* in step 1, then pushed by F = F'·L = 1000 N; plane strain
+// on every other node; Coulomb friction; the contact force printed.
+TEST(AbaqusDeck, CylindersPushedByTheirRigidFlatFace)
+{
+  const CylindersDeck deck = cylinders_deck("deck_cylinders");
+  const std::size_t n = deck.mesh.nodes.size();
+  std::set<std::string> element_sets, rigid_bodies;
+  std::map<std::string, std::string> node_lines;
+  std::vector<std::vector<std::string>> boundaries;
+  std::vector<std::string> cloads, friction, contact_prints;
+  for (const auto& [keyword, lines] : blocks(deck.file))
+  {
+    if (keyword.rfind("*ELEMENT, TYPE=C3D8, ELSET=", 0) == 0)
+      element_sets.insert(keyword.substr(27));
+    else if (keyword.rfind("*RIGID BODY", 0) == 0)
+      rigid_bodies.insert(keyword);
+    else if (keyword.rfind("*NODE, NSET=", 0) == 0 && keyword != "*NODE, NSET=NALL")
+      node_lines[keyword.substr(12)] = lines.at(0);
+    else if (keyword.rfind("*BOUNDARY", 0) == 0)
+      boundaries.push_back(lines);
+    else if (keyword == "*CLOAD")
+      cloads = lines;
+    else if (keyword == "*FRICTION")
+      friction = lines;
+    else if (keyword.rfind("*CONTACT PRINT, SLAVE=", 0) == 0)
+      contact_prints.push_back(keyword.substr(22) + " " + lines.at(0));
+  }
+  EXPECT_EQ(element_sets, (std::set<std::string>{"CYLINDER_1", "CYLINDER_2"}));
+  EXPECT_EQ(contact_pairs(deck.file),
+            std::vector<std::string>{"CYLINDER_2_SURFACE, CYLINDER_1_SURFACE"});
+  const auto id = [](std::size_t k) { return std::to_string(k); };
+  EXPECT_EQ(rigid_bodies,
+            (std::set<std::string>{"*RIGID BODY, NSET=CYLINDER_2_FLAT_FACE_NODES, REF NODE=" +
+                                   id(2 * n + 1) + ", ROT NODE=" + id(2 * n + 2)}));
+  EXPECT_EQ(node_lines.at("UPPER_REF"), id(2 * n + 1) + ", 0, 0.01, 0"); // (0, R2)
+  const std::vector<std::string> supports = {"CYLINDER_1_FLAT_FACE_NODES, 1, 3", "UPPER_REF, 1, 1",
+                                             "UPPER_REF, 3, 3", "UPPER_ROT, 1, 3",
+                                             "PLANE_STRAIN, 3, 3"};
+  ASSERT_EQ(boundaries.size(), 3u); // both steps' supports and step 1's closing displacement
+  EXPECT_EQ(boundaries[0], supports);
+  EXPECT_EQ(boundaries[2], supports);
+  // Step 1: u_y = −a²/(10 R*), a the scene's Hertz half-width, R* = 5 mm (exact arithmetic of
+  // the deck's own formula; 12 printed digits).
+  const double a = deck.info.contacts.at(0).hertz_half_width;
+  ASSERT_EQ(boundaries[1].size(), 1u);
+  EXPECT_EQ(boundaries[1][0].rfind("UPPER_REF, 2, 2, ", 0), 0u);
+  EXPECT_NEAR(std::stod(boundaries[1][0].substr(17)), -0.1 * a * a / 5e-3, 1e-11 * a * a / 5e-3);
+  EXPECT_EQ(cloads, std::vector<std::string>{"UPPER_REF, 2, -1000"}); // F' = 1e5 N/m, L = 10 mm
+  ASSERT_EQ(friction.size(), 1u);
+  EXPECT_EQ(friction[0].substr(0, 5), "0.1, ");
+  EXPECT_EQ(contact_prints,
+            std::vector<std::string>{"CYLINDER_2_SURFACE, MASTER=CYLINDER_1_SURFACE CF"});
+
+  // With bores the bores carry the support and the load (annuli).
+  const CylindersDeck annuli = cylinders_deck("deck_annuli", 4e-3);
+  std::set<std::string> annulus_bodies;
+  std::string first_support;
+  for (const auto& [keyword, lines] : blocks(annuli.file))
+    if (keyword.rfind("*RIGID BODY", 0) == 0)
+      annulus_bodies.insert(keyword.substr(0, keyword.find(',', 12)));
+    else if (keyword == "*BOUNDARY" && first_support.empty())
+      first_support = lines.at(0);
+  EXPECT_EQ(first_support, "CYLINDER_1_BORE_NODES, 1, 3");
+  EXPECT_EQ(annulus_bodies, std::set<std::string>{"*RIGID BODY, NSET=CYLINDER_2_BORE_NODES"});
+}
+
+// ccx solves the cylinders' deck as written: the contact carries the applied 1000 N (its printed
+// total contact force; ccx stops its Newton iteration at 0.5 % of the mean force, *CONTROLS,
+// hence 1 %), and the flat face moves down by more than the closing displacement and by about
+// the approach of two half-discs under line load (Johnson 1985 §5.8, eq. 5.43 per cylinder:
+// F'(1 − ν²)/(πE)·(2 ln(4R/a) − 1) = 1.6 µm, 3.2 µm for both; the flat-face support differs
+// from Johnson's, hence a band of ±30 %). Skipped without ccx.
+TEST(AbaqusDeck, CalculixPushesTheCylinders)
+{
+  if (std::system("command -v ccx > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "ccx is not installed";
+  const CylindersDeck deck = cylinders_deck("deck_cylinders_ccx");
+  const std::string job = deck.file.substr(0, deck.file.size() - 4);
+  const std::string folder = job.substr(0, job.rfind('/'));
+  const std::string name = job.substr(job.rfind('/') + 1);
+  ASSERT_EQ(std::system(("cd " + folder + " && OMP_NUM_THREADS=1 ccx -i " + name + " > " + name +
+                         ".log 2>&1")
+                            .c_str()),
+            0);
+  std::ifstream dat(job + ".dat");
+  std::string line, block;
+  double approach = 0., contact_force = 0.;
+  while (std::getline(dat, line))
+  {
+    if (line.find(" for set ") != std::string::npos ||
+        line.find("total surface force") != std::string::npos)
+      block = line;
+    std::istringstream values(line);
+    if (block.find("displacements") != std::string::npos &&
+        block.find("UPPER_REF") != std::string::npos)
+    {
+      long node = 0;
+      double ux = 0., uy = 0.;
+      if (values >> node >> ux >> uy)
+        approach = -uy;
+    }
+    else if (block.find("total surface force") != std::string::npos)
+    {
+      double fx = 0., fy = 0.;
+      if (values >> fx >> fy)
+      {
+        contact_force = fy; // the first line of numbers: the force (then the moment, ...)
+        block.clear();
+      }
+    }
+  }
+  const double a = deck.info.contacts.at(0).hertz_half_width;
+  const double e = deck.spec.young_modulus, nu = deck.spec.poisson_ratio;
+  const double johnson =
+      2. * 1e5 * (1. - nu * nu) / (M_PI * e) * (2. * std::log(4. * deck.spec.radius_1 / a) - 1.);
+  EXPECT_NEAR(contact_force, 1000., 10.);
+  EXPECT_GT(approach, 0.1 * a * a / 5e-3);
+  EXPECT_NEAR(approach, johnson, 0.3 * johnson);
 }
 } // namespace
