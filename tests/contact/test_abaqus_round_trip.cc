@@ -1,12 +1,13 @@
-// Round trip through a CalculiX/Abaqus deck: a gear-pair scene is meshed (.msh, gmsh) and
-// exported (.inp, geometry/abaqus_deck.h); deal.II reads the .msh (fem::read_msh, the exact
-// oracle) and the deck (fem::read_abaqus). Both must give the same cells, vertices and groups:
-// the same cell count per body, the same boundary faces per group, and the same geometry (sums
-// of cell areas/volumes and of face measures per group).
+// Round trip through a CalculiX/Abaqus deck: a gear-pair (and a cylinders) scene is meshed (.msh,
+// gmsh) and exported (.inp, geometry/abaqus_deck.h); deal.II reads the .msh (fem::read_msh, the
+// exact oracle) and the deck (fem::read_abaqus). Both must give the same cells, vertices and
+// groups: the same cell count per body, the same boundary faces per group, and the same geometry
+// (sums of cell areas/volumes and of face measures per group).
 #include "errors/errors.h"
 #include "fem/abaqus_reader.h"
 #include "fem/mesh.h"
 #include "geometry/abaqus_deck.h"
+#include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
 
 #include <deal.II/grid/tria.h>
@@ -57,6 +58,10 @@ GroupSums group_sums(const dealii::Triangulation<dim>& tria, const fem::Physical
   return sums;
 }
 
+// The .msh and the deck written from it (`base`.msh, `base`.inp) read as the same mesh.
+template <int dim>
+void expect_same_files(const std::string& base, const geometry::SceneInfo& info);
+
 template <int dim>
 void expect_same_mesh(const geometry::Element2D element_2d, const std::string& base)
 {
@@ -73,7 +78,12 @@ void expect_same_mesh(const geometry::Element2D element_2d, const std::string& b
   geometry::AbaqusDeckSpec deck = geometry::gear_pair_deck_spec(spec, scene, 0.01, 50.);
   deck.element_2d = element_2d;
   geometry::write_abaqus_deck(info, deck, work_file(base + ".inp"));
+  expect_same_files<dim>(base, info);
+}
 
+template <int dim>
+void expect_same_files(const std::string& base, const geometry::SceneInfo& info)
+{
   dealii::Triangulation<dim> from_msh, from_inp;
   const fem::PhysicalNames msh_names =
       fem::read_msh(work_file(base + ".msh"), 1., from_msh, "Mesh/File");
@@ -111,6 +121,21 @@ TEST(AbaqusRoundTrip, GearPairPlaneStrainCPE4)
 TEST(AbaqusRoundTrip, GearPair3DC3D8)
 {
   expect_same_mesh<3>(geometry::Element2D::slice, "gear_pair_3d");
+}
+
+// The Hertz cylinders' deck (half-discs: arcs and flat faces; CPE4) reads back as its .msh.
+TEST(AbaqusRoundTrip, CylindersPlaneStrainCPE4)
+{
+  geometry::CylindersSceneSpec spec;
+  spec.mesh.contact_size = 0.02e-3; // coarse: the test is about the file
+  spec.mesh.body_size = 1e-3;
+  spec.mesh.rim_size = 1e-3;
+  const geometry::SceneInfo info =
+      geometry::write_cylinders_scene(spec, work_file("cylinders_2d.msh"));
+  geometry::AbaqusDeckSpec deck = geometry::cylinders_deck_spec(spec, info, 0.01, 50.);
+  deck.element_2d = geometry::Element2D::plane_strain;
+  geometry::write_abaqus_deck(info, deck, work_file("cylinders_2d.inp"));
+  expect_same_files<2>("cylinders_2d", info);
 }
 
 // A slice deck (C3D8) is a 3D mesh: reading it as 2D names the keyword and line.
