@@ -3,7 +3,9 @@
 // element-face surface and a node set per boundary group, the material, the candidate contact
 // pairs (penalty face-to-face contact, Coulomb friction), bores as rigid bodies whose rotation
 // nodes carry the torques (gear pair: the pinion bore; cycloid: the disc bearing, torque-free,
-// and the output member over every pin bore), bores held fixed, and the output requests.
+// and the output member over every pin bore) or, for the Hertz cylinders, a flat face as a
+// rigid body whose reference node carries the force, bores or faces held fixed, and the output
+// requests.
 //
 // Element choice. 3D scenes are written as C3D8 (fully integrated, the same trilinear element as
 // deal.II's FE_Q(1) hexahedron). 2D scenes are written by default as a one-element-thick C3D8
