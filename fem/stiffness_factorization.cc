@@ -1,6 +1,7 @@
 #include "fem/stiffness_factorization.h"
 
 #include "errors/errors.h"
+#include "fem/linear_solver.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -105,6 +106,24 @@ struct StiffnessFactorization<dim>::Implementation
       KSPDestroy(&ksp);
   }
 
+  // A call into MUMPS (a solve) with PETSc's own error message held back: on failure, MUMPS'
+  // INFOG(1) and what it means, in one line.
+  template <typename Call>
+  void call_mumps(const Call& call, const std::string& what) const
+  {
+    PetscErrorCode code;
+    {
+      QuietPetscErrors quiet;
+      code = call();
+    }
+    if (code == 0)
+      return;
+    const std::string failure = mumps_failure(factor, "solve");
+    if (failure.empty())
+      check(code, what);
+    throw SolverFailure("direct solver (MUMPS)", failure);
+  }
+
   // Where a load on `dof` acts after condensation (and what the value at `dof` is made of):
   // the DoF itself, or a constrained DoF's masters with their weights.
   std::vector<std::pair<types::global_dof_index, double>>
@@ -166,14 +185,19 @@ struct StiffnessFactorization<dim>::Implementation
       PetscInt block = 0;
       check(MatMumpsGetIcntl(factor, 27, &block), "MatMumpsGetIcntl");
       check(MatMumpsSetIcntl(factor, 27, 512), "MatMumpsSetIcntl");
-      const PetscErrorCode code = MatMumpsGetInverse(factor, transposed);
-      // Back to the settings of the ordinary solves: no inverse entries; several ranks keep
-      // the solution distributed.
-      MatMumpsSetIcntl(factor, 27, block);
-      MatMumpsSetIcntl(factor, 30, 0);
-      if (!serial)
-        MatMumpsSetIcntl(factor, 21, 1);
-      check(code, "MatMumpsGetInverse");
+      PetscErrorCode code = 0;
+      const auto get_inverse = [&]()
+      {
+        code = MatMumpsGetInverse(factor, transposed);
+        // Back to the settings of the ordinary solves: no inverse entries; several ranks keep
+        // the solution distributed.
+        MatMumpsSetIcntl(factor, 27, block);
+        MatMumpsSetIcntl(factor, 30, 0);
+        if (!serial)
+          MatMumpsSetIcntl(factor, 21, 1);
+        return code;
+      };
+      call_mumps(get_inverse, "MatMumpsGetInverse");
       if (root)
       {
         Mat local = pattern;
@@ -262,14 +286,22 @@ StiffnessFactorization<dim>::StiffnessFactorization(
     check(MatFactorSetSchurIS(impl->factor, is), "MatFactorSetSchurIS");
     ISDestroy(&is);
   }
-  if (KSPSetUp(impl->ksp) != 0)
+  // A failed factorization (out of memory, singular) is no PETSc error: ask MUMPS.
+  PetscErrorCode setup_code;
+  {
+    QuietPetscErrors quiet;
+    setup_code = KSPSetUp(impl->ksp);
+  }
+  if (const std::string failure = mumps_factorization_failure(pc); !failure.empty())
+    throw SolverFailure("direct solver (MUMPS)", failure);
+  if (setup_code != 0)
     throw SolverFailure("direct solver (MUMPS)",
                         "the factorization failed (singular matrix: a body may be free to move)");
   if (!impl->interface.empty())
     factorize_interface();
 
   PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
-  check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
+  impl->call_mumps([&]() { return KSPSolve(impl->ksp, rhs, solution); }, "KSPSolve");
   ++solves;
   particular.reinit(impl->n_dofs);
   particular = Vector<double>(solution);
@@ -323,7 +355,7 @@ Vector<double> StiffnessFactorization<dim>::response(const Vector<double>& load)
   impl->condense(entries, rhs);
   rhs.compress(VectorOperation::add);
   PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
-  check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
+  impl->call_mumps([&]() { return KSPSolve(impl->ksp, rhs, solution); }, "KSPSolve");
   ++solves;
   Vector<double> complete(solution);
   impl->homogeneous.distribute(complete);
