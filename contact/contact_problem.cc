@@ -464,8 +464,9 @@ void ContactProblem<dim>::build_condensed(double load_factor)
 {
   // Once: supports at unit load factor, hub torques as unit point loads, one factorization.
   const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
-  condensed = std::make_unique<Condensed>();
-  Condensed& c = *condensed;
+  // Kept only once complete: a failed factorization must not leave a half-built one behind.
+  auto built = std::make_unique<Condensed>();
+  Condensed& c = *built;
   c.supports = make_support_constraints(1.);
   Vector<double> unit_loads(n_dofs);
   for (const auto& support : supports)
@@ -523,6 +524,7 @@ void ContactProblem<dim>::build_condensed(double load_factor)
   }
   result.assembly_time += c.factorization->factorization_time();
   result.schur_complement = true;
+  condensed = std::move(built);
 }
 
 template <int dim>
@@ -957,6 +959,8 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
     }
     catch (const SolverFailure&)
     {
+      if (use_schur_complement() && !condensed)
+        throw; // the factorization failed: a cold start would fail the same way
       result.warm_start = false;
       restore_cold_start();
       solve_load_steps(residual);
@@ -1021,7 +1025,8 @@ void ContactProblem<dim>::solve_load_step(unsigned int step,
     }
     catch (const SolverFailure&)
     {
-      if (friction > 0. || mu == 0.)
+      // A failed factorization (memory) would only fail again: no restart in stick.
+      if (friction > 0. || mu == 0. || (use_schur_complement() && !condensed))
         throw;
       friction = mu;
       for (unsigned int p = 0; p < pairs.size(); ++p)

@@ -91,7 +91,104 @@ std::string reason_text(KSPConvergedReason reason)
     return "PETSc reason " + std::to_string(static_cast<int>(reason));
   }
 }
+
+PetscInt mumps_value(Mat factor, PetscErrorCode (*get)(Mat, PetscInt, PetscInt*), PetscInt index)
+{
+  PetscInt value = 0;
+  check(get(factor, index, &value), "MatMumpsGet...");
+  return value;
+}
+
+// MB (10^6 bytes, MUMPS' unit) of a size MUMPS gives in INFO(2)/INFOG(2): double entries,
+// a negative value counting millions of them.
+double entries_in_megabytes(PetscInt entries)
+{
+  const double count = entries < 0 ? -1e6 * static_cast<double>(entries) : entries;
+  return count * sizeof(double) / 1e6;
+}
+
+// The meaning of INFOG(1) < 0 (MUMPS 5 users' guide, "Error diagnostics"), with the memory
+// figures where memory was the cause.
+std::string mumps_error_meaning(Mat factor, PetscInt code)
+{
+  const bool out_of_core = mumps_value(factor, MatMumpsGetIcntl, 22) != 0;
+  std::ostringstream estimate;
+  estimate << "MUMPS estimated " << mumps_value(factor, MatMumpsGetInfog, out_of_core ? 26 : 16)
+           << " MB on the largest rank, "
+           << mumps_value(factor, MatMumpsGetInfog, out_of_core ? 27 : 17) << " MB in all ("
+           << (out_of_core ? "out-of-core" : "in-core") << ")";
+  std::ostringstream text;
+  text.precision(3);
+  const double missing = entries_in_megabytes(mumps_value(factor, MatMumpsGetInfog, 2));
+  switch (code)
+  {
+  case -6:
+  case -10:
+    return "singular matrix: a body may be free to move";
+  case -40:
+    return "the matrix is not positive definite";
+  case -5:
+  case -7:
+    return "out of memory in the analysis";
+  case -13:
+    text << "out of memory: an allocation of " << missing << " MB failed; " << estimate.str()
+         << "; out-of-core factors (-mat_mumps_icntl_22 1) need less";
+    return text.str();
+  case -19:
+    text << "working memory above the limit ICNTL(23) = "
+         << mumps_value(factor, MatMumpsGetIcntl, 23) << " MB per rank, " << missing
+         << " MB short; " << estimate.str();
+    return text.str();
+  case -8:
+  case -9:
+  case -11:
+  case -12:
+  case -14:
+  case -15:
+  case -17:
+  case -20:
+    text << "internal workspace too small (" << missing
+         << " MB short with the relaxation ICNTL(14) = "
+         << mumps_value(factor, MatMumpsGetIcntl, 14) << " %; raise -mat_mumps_icntl_14); "
+         << estimate.str();
+    return text.str();
+  default:
+    return "see the error diagnostics of the MUMPS users' guide";
+  }
+}
 } // namespace
+
+std::string mumps_failure(Mat factor, const std::string& phase)
+{
+  const PetscInt code = mumps_value(factor, MatMumpsGetInfog, 1);
+  if (code >= 0)
+    return "";
+  return phase + " failed, INFOG(1) = " + std::to_string(code) + ": " +
+         mumps_error_meaning(factor, code);
+}
+
+std::string mumps_factorization_failure(PC pc)
+{
+  Mat factor;
+  check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
+  MatFactorError error;
+  check(MatFactorGetError(factor, &error), "MatFactorGetError");
+  const std::string failure = mumps_failure(factor, "factorization");
+  if (failure.empty() && error != MAT_FACTOR_NOERROR)
+    return "factorization failed (PETSc MatFactorError " + std::to_string(static_cast<int>(error)) +
+           ")";
+  return failure;
+}
+
+QuietPetscErrors::QuietPetscErrors()
+{
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+}
+
+QuietPetscErrors::~QuietPetscErrors()
+{
+  PetscPopErrorHandler();
+}
 
 template <int dim>
 unsigned int
@@ -143,8 +240,14 @@ solve_linear_system(const PETScWrappers::MPI::SparseMatrix& matrix,
           "KSPSetTolerances");
     check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   }
-  check(KSPSetUp(ksp), "KSPSetUp");
-  const PetscErrorCode solve_code = KSPSolve(ksp, rhs, solution);
+  {
+    QuietPetscErrors quiet; // a failed factorization is reported below, in one line
+    check(KSPSetUp(ksp), "KSPSetUp");
+  }
+  const std::string factor_failure = parameters.method == LinearSolverMethod::direct_mumps
+                                         ? mumps_factorization_failure(pc)
+                                         : std::string();
+  const PetscErrorCode solve_code = factor_failure.empty() ? KSPSolve(ksp, rhs, solution) : 0;
   KSPConvergedReason reason;
   KSPGetConvergedReason(ksp, &reason);
   PetscInt iterations = 0;
@@ -155,6 +258,8 @@ solve_linear_system(const PETScWrappers::MPI::SparseMatrix& matrix,
     MatNullSpaceDestroy(&near_null_space);
   }
   KSPDestroy(&ksp);
+  if (!factor_failure.empty())
+    throw SolverFailure("direct solver (MUMPS)", factor_failure);
   if (solve_code != 0)
     throw SolverFailure(method, "PETSc error " + std::to_string(solve_code) +
                                     " (singular matrix: a body may be free to move)");

@@ -1,6 +1,7 @@
 #include "fem/stiffness_factorization.h"
 
 #include "errors/errors.h"
+#include "fem/linear_solver.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
+#include <map>
+#include <numeric>
 #include <petscksp.h>
 #include <string>
 
@@ -64,6 +67,35 @@ std::vector<types::global_dof_index> fixing_dofs(const std::vector<Vector<double
   }
   return fixed;
 }
+// The connected parts of the graph of K condensed with `constraints`: DoFs joined by a cell or
+// by a constraint share a part (union-find). Every rank holds the whole mesh.
+template <int dim>
+std::vector<unsigned int> connected_parts(const DoFHandler<dim>& dof_handler,
+                                          const AffineConstraints<double>& constraints)
+{
+  std::vector<unsigned int> parent(dof_handler.n_dofs());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto root = [&](unsigned int i)
+  {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  auto join = [&](unsigned int a, unsigned int b) { parent[root(a)] = root(b); };
+  std::vector<types::global_dof_index> dofs(dof_handler.get_fe().n_dofs_per_cell());
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    cell->get_dof_indices(dofs);
+    for (const auto dof : dofs)
+      join(dof, dofs[0]);
+  }
+  for (const auto& line : constraints.get_lines())
+    for (const auto& [master, weight] : line.entries)
+      join(master, line.index);
+  for (unsigned int i = 0; i < parent.size(); ++i)
+    parent[i] = root(i);
+  return parent;
+}
 } // namespace
 
 template <int dim>
@@ -73,6 +105,12 @@ struct StiffnessFactorization<dim>::Implementation
   IndexSet locally_owned;
   types::global_dof_index n_dofs = 0;
   AffineConstraints<double> homogeneous; // supports and fixed DoFs, zero inhomogeneities
+  // The connected part of K (bodies, or bodies tied by constraints) of every DoF. K⁻¹ couples
+  // DoFs of different parts by exact zeros, and these must not be asked of MUMPS: its selected
+  // inverse entries (ICNTL(30)) on several ranks return stale values for them (MUMPS 5.5, 3D Q2
+  // gear pair, 407k DoFs, 2 ranks: 2520 of 288000 entries nonzero where their mirror (K⁻¹)ᵀ entry
+  // is the exact 0, and the contact Schur complement came out singular).
+  std::vector<unsigned int> part;
   PETScWrappers::MPI::SparseMatrix matrix;
   KSP ksp = nullptr;
   Mat factor = nullptr; // owned by the KSP's PC
@@ -105,6 +143,24 @@ struct StiffnessFactorization<dim>::Implementation
       KSPDestroy(&ksp);
   }
 
+  // A call into MUMPS (a solve) with PETSc's own error message held back: on failure, MUMPS'
+  // INFOG(1) and what it means, in one line.
+  template <typename Call>
+  void call_mumps(const Call& call, const std::string& what) const
+  {
+    PetscErrorCode code;
+    {
+      QuietPetscErrors quiet;
+      code = call();
+    }
+    if (code == 0)
+      return;
+    const std::string failure = mumps_failure(factor, "solve");
+    if (failure.empty())
+      check(code, what);
+    throw SolverFailure("direct solver (MUMPS)", failure);
+  }
+
   // Where a load on `dof` acts after condensation (and what the value at `dof` is made of):
   // the DoF itself, or a constrained DoF's masters with their weights.
   std::vector<std::pair<types::global_dof_index, double>>
@@ -131,23 +187,35 @@ struct StiffnessFactorization<dim>::Implementation
       return result;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     const bool serial = Utilities::MPI::n_mpi_processes(mpi_communicator) == 1;
-    // Columns in chunks, so that the pattern stays small for a million DoFs.
-    const std::size_t chunk = std::max<std::size_t>(1, 4'000'000 / rows.size());
-    for (std::size_t first = 0; first < columns.size(); first += chunk)
+    // Only the rows in the column's connected part of K: the others are exact zeros (see
+    // `part`). Columns in chunks, so that the pattern stays small for a million DoFs.
+    std::map<unsigned int, std::vector<unsigned int>> part_rows; // part → positions in rows
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      part_rows[part[rows[i]]].push_back(i);
+    const std::vector<unsigned int> no_rows;
+    auto wanted = [&](types::global_dof_index column) -> const std::vector<unsigned int>&
     {
-      const std::size_t n_columns = std::min(chunk, columns.size() - first);
+      const auto found = part_rows.find(part[column]);
+      return found == part_rows.end() ? no_rows : found->second;
+    };
+    for (std::size_t first = 0, n_columns = 0; first < columns.size(); first += n_columns)
+    {
+      std::size_t n_entries = 0;
+      for (n_columns = 0; first + n_columns < columns.size() && n_entries < 4'000'000; ++n_columns)
+        n_entries += wanted(columns[first + n_columns]).size();
       // The pattern Bᵀ, all on rank 0: row c lists the wanted rows of column c of K⁻¹.
       const PetscInt n = root ? n_dofs : 0;
       std::vector<PetscInt> row_start(n + 1, 0), column_index;
       if (root)
       {
         for (std::size_t j = 0; j < n_columns; ++j)
-          row_start[columns[first + j] + 1] = rows.size();
+          row_start[columns[first + j] + 1] = wanted(columns[first + j]).size();
         for (PetscInt i = 0; i < n; ++i)
           row_start[i + 1] += row_start[i];
-        column_index.reserve(n_columns * rows.size());
+        column_index.reserve(n_entries);
         for (std::size_t j = 0; j < n_columns; ++j)
-          column_index.insert(column_index.end(), rows.begin(), rows.end());
+          for (const unsigned int i : wanted(columns[first + j]))
+            column_index.push_back(rows[i]);
       }
       std::vector<PetscScalar> values(column_index.size(), 0.);
       Mat pattern, transposed;
@@ -166,23 +234,31 @@ struct StiffnessFactorization<dim>::Implementation
       PetscInt block = 0;
       check(MatMumpsGetIcntl(factor, 27, &block), "MatMumpsGetIcntl");
       check(MatMumpsSetIcntl(factor, 27, 512), "MatMumpsSetIcntl");
-      const PetscErrorCode code = MatMumpsGetInverse(factor, transposed);
-      // Back to the settings of the ordinary solves: no inverse entries; several ranks keep
-      // the solution distributed.
-      MatMumpsSetIcntl(factor, 27, block);
-      MatMumpsSetIcntl(factor, 30, 0);
-      if (!serial)
-        MatMumpsSetIcntl(factor, 21, 1);
-      check(code, "MatMumpsGetInverse");
+      PetscErrorCode code = 0;
+      const auto get_inverse = [&]()
+      {
+        code = MatMumpsGetInverse(factor, transposed);
+        // Back to the settings of the ordinary solves: no inverse entries; several ranks keep
+        // the solution distributed.
+        MatMumpsSetIcntl(factor, 27, block);
+        MatMumpsSetIcntl(factor, 30, 0);
+        if (!serial)
+          MatMumpsSetIcntl(factor, 21, 1);
+        return code;
+      };
+      call_mumps(get_inverse, "MatMumpsGetInverse");
       if (root)
       {
         Mat local = pattern;
         if (!serial)
           check(MatMPIAIJGetSeqAIJ(pattern, &local, nullptr, nullptr), "MatMPIAIJGetSeqAIJ");
-        const PetscScalar* entries;
-        check(MatSeqAIJGetArrayRead(local, &entries), "MatSeqAIJGetArrayRead");
-        std::copy(entries, entries + n_columns * rows.size(), &result[first * rows.size()]);
-        check(MatSeqAIJRestoreArrayRead(local, &entries), "MatSeqAIJRestoreArrayRead");
+        const PetscScalar *entries, *start;
+        check(MatSeqAIJGetArrayRead(local, &start), "MatSeqAIJGetArrayRead");
+        entries = start;
+        for (std::size_t j = 0; j < n_columns; ++j)
+          for (const unsigned int i : wanted(columns[first + j]))
+            result[(first + j) * rows.size() + i] = *entries++;
+        check(MatSeqAIJRestoreArrayRead(local, &start), "MatSeqAIJRestoreArrayRead");
       }
       MatDestroy(&transposed);
       MatDestroy(&pattern);
@@ -237,6 +313,7 @@ StiffnessFactorization<dim>::StiffnessFactorization(
     fixed.add_line(dof);
   fixed.close();
   impl->homogeneous = homogeneous_copy(fixed);
+  impl->part = connected_parts(system.get_dof_handler(), fixed);
 
   PETScWrappers::MPI::Vector rhs;
   system.condensed_system(fixed, point_loads, impl->matrix, rhs);
@@ -251,6 +328,13 @@ StiffnessFactorization<dim>::StiffnessFactorization(
   check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
   check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
   check(PCFactorGetMatrix(pc, &impl->factor), "PCFactorGetMatrix");
+  // Factors out of core (MUMPS ICNTL(22) = 1, files in $MUMPS_OOC_TMPDIR, else /tmp) from
+  // `out_of_core_dofs` on: the 3D Q2 pair at 1.06 M DoFs on 2 ranks then peaks at 10.6 GB in all
+  // (MUMPS in core: 11.1 GB for the factors alone on top of ~8 GB), for ~10 % more time at 407k
+  // DoFs (27.0 s against 24.2 s, same k). PETSC_OPTIONS (-mat_mumps_icntl_22) still override.
+  constexpr types::global_dof_index out_of_core_dofs = 500'000;
+  if (impl->n_dofs >= out_of_core_dofs)
+    check(MatMumpsSetIcntl(impl->factor, 22, 1), "MatMumpsSetIcntl");
   const bool serial = Utilities::MPI::n_mpi_processes(impl->mpi_communicator) == 1;
   if (serial && !interface_dofs.empty())
   {
@@ -262,14 +346,22 @@ StiffnessFactorization<dim>::StiffnessFactorization(
     check(MatFactorSetSchurIS(impl->factor, is), "MatFactorSetSchurIS");
     ISDestroy(&is);
   }
-  if (KSPSetUp(impl->ksp) != 0)
+  // A failed factorization (out of memory, singular) is no PETSc error: ask MUMPS.
+  PetscErrorCode setup_code;
+  {
+    QuietPetscErrors quiet;
+    setup_code = KSPSetUp(impl->ksp);
+  }
+  if (const std::string failure = mumps_factorization_failure(pc); !failure.empty())
+    throw SolverFailure("direct solver (MUMPS)", failure);
+  if (setup_code != 0)
     throw SolverFailure("direct solver (MUMPS)",
                         "the factorization failed (singular matrix: a body may be free to move)");
   if (!impl->interface.empty())
     factorize_interface();
 
   PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
-  check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
+  impl->call_mumps([&]() { return KSPSolve(impl->ksp, rhs, solution); }, "KSPSolve");
   ++solves;
   particular.reinit(impl->n_dofs);
   particular = Vector<double>(solution);
@@ -323,7 +415,7 @@ Vector<double> StiffnessFactorization<dim>::response(const Vector<double>& load)
   impl->condense(entries, rhs);
   rhs.compress(VectorOperation::add);
   PETScWrappers::MPI::Vector solution(impl->locally_owned, impl->mpi_communicator);
-  check(KSPSolve(impl->ksp, rhs, solution), "KSPSolve");
+  impl->call_mumps([&]() { return KSPSolve(impl->ksp, rhs, solution); }, "KSPSolve");
   ++solves;
   Vector<double> complete(solution);
   impl->homogeneous.distribute(complete);
