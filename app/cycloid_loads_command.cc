@@ -239,9 +239,8 @@ void add_hysteresis_table(Report& report, const std::vector<ProfileCases>& profi
 void plot(CommandContext& context, const std::string& table, const std::string& mode,
           const std::string& png, const std::string& description)
 {
-  const std::string csv = temporary_csv(context.report, table);
-  context.plot("plot_cycloid_loads.py", {mode, csv}, png, description);
-  std::filesystem::remove(csv);
+  const TemporaryCsv csv(context.report, table);
+  context.plot("plot_cycloid_loads.py", {mode, csv.path()}, png, description);
 }
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)

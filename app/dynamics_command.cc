@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -432,22 +431,19 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       const double high = p.sweep.points > 0
                               ? p.sweep.maximum_speed
                               : 1.1 * trajectory.highest_frequency / (2. * M_PI) / fastest;
-      const std::string campbell = temporary_csv(report, "dynamics_campbell");
-      const std::string modes = temporary_csv(report, "dynamics_modes");
+      const TemporaryCsv campbell(report, "dynamics_campbell");
+      const TemporaryCsv modes(report, "dynamics_modes");
       context.plot("plot_dynamics.py",
-                   {"campbell", campbell, modes,
+                   {"campbell", campbell.path(), modes.path(),
                     format_number(low / rpm, 8) + "," + format_number(high / rpm, 8)},
                    "dynamics_campbell.png",
                    "Campbell chart: mesh orders against natural frequencies");
-      std::filesystem::remove(campbell);
-      std::filesystem::remove(modes);
     }
     if (!sweep.points.empty())
     {
-      const std::string csv = temporary_csv(report, "dynamics_speed_sweep");
-      context.plot("plot_dynamics.py", {"resonance", csv}, "dynamics_resonance.png",
+      const TemporaryCsv csv(report, "dynamics_speed_sweep");
+      context.plot("plot_dynamics.py", {"resonance", csv.path()}, "dynamics_resonance.png",
                    "K_v against input speed (resonance chart)");
-      std::filesystem::remove(csv);
     }
   }
 }

@@ -275,21 +275,15 @@ void Report::write_table_csv(const ReportTable& table, std::ostream& out) const
   }
 }
 
-std::string temporary_csv(const Report& report, const std::string& table_name)
+TemporaryCsv::TemporaryCsv(const Report& report, const std::string& table_name)
+    : file((std::filesystem::temp_directory_path() /
+            ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
+               .string())
 {
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
-                               .string();
-  std::ofstream out(path);
+  std::ofstream out(file);
   for (const auto& table : report.tables())
     if (table.name == table_name)
       report.write_table_csv(table, out);
-  return path;
-}
-
-TemporaryCsv::TemporaryCsv(const Report& report, const std::string& table_name)
-    : file(temporary_csv(report, table_name))
-{
 }
 
 TemporaryCsv::~TemporaryCsv()

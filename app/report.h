@@ -64,13 +64,10 @@ private:
   std::vector<std::pair<std::string, std::string>> output_file_list;
 };
 
-// Writes the report's table `table_name` to a temporary CSV for a plot script (the report's CSV
-// files appear only after the command returns) and returns its path; remove it after plotting.
+// The report's table `table_name` as a temporary CSV for a plot script (the report's CSV files
+// appear only after the command returns), removed when this goes out of scope: the plot step of
+// a command is `const TemporaryCsv csv(report, "table"); context.plot(script, {csv.path()}, ...);`.
 // By name: references into the report's tables do not survive a later add_table.
-std::string temporary_csv(const Report& report, const std::string& table_name);
-
-// The same temporary CSV, removed when this goes out of scope: the plot step of a command is
-// `const TemporaryCsv csv(report, "table"); context.plot(script, {csv.path(), ...}, ...);`.
 class TemporaryCsv
 {
 public:
