@@ -49,11 +49,6 @@ public:
 // but anything visible at the finest mesh sizes (1e-6 m) is a genuine gap.
 constexpr double junction_tolerance = 1e-9;
 
-// The longest edges gmsh leaves at a focus point reach about 1.45 times the requested size
-// (full-quad recombination splits cells of twice the size), so the contact-driven size aims
-// at 0.6·h_c, and if an edge at a contact still exceeds h_c the mesh is regenerated finer.
-constexpr double initial_contact_scale = 0.6;
-
 // -, quadrilaterals per h² of area in gmsh's recombined meshes. With 1 the estimate over actual
 // count was (measured, default sizes) gear pair 1.5, cylinders 0.66, cycloid 1.4, 3D gear pair
 // 1.5, stiffness scene 3.4 (its rims grow coarser than the body size, which the estimate does
@@ -343,7 +338,7 @@ MeshEstimate estimate_mesh(const PlanarModel& model, const SizeGrading& grading,
   estimate.body_cells = cells_per_square * estimate.area / (coarse * coarse);
   for (const auto& focus : grading.foci)
   {
-    const double size = initial_contact_scale * focus.size;
+    const double size = grading.initial_contact_scale * focus.size;
     const double whole = cells_per_square * estimate.area / (size * size);
     const double fine =
         std::min(whole, cells_per_square * M_PI * focus.radius * focus.radius / (size * size));
@@ -550,7 +545,7 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   gmsh::option::setNumber("Mesh.Smoothing", 5);
   gmsh::option::setNumber("Mesh.ElementOrder", 1);
   constexpr unsigned int max_attempts = 3;
-  double contact_scale = initial_contact_scale;
+  double contact_scale = grading.initial_contact_scale;
   for (unsigned int attempt = 1;; ++attempt)
   {
     start = Clock::now();

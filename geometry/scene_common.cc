@@ -55,6 +55,7 @@ contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact
   grading.growth_rate = settings.growth_rate;
   grading.body_size = settings.body_size;
   grading.largest_size = grading.body_size;
+  grading.initial_contact_scale = settings.initial_contact_scale;
   if (depth_below_surface)
   {
     grading.largest_size = settings.rim_size > 0. ? settings.rim_size : 4. * settings.body_size;

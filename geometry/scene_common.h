@@ -69,6 +69,8 @@ struct SceneMeshSettings
   // m, where a scene lets the size keep growing (gear rims below the root circle), it stops at
   // this size; 0: four times the body size.
   double rim_size = 0.;
+  // -, SizeGrading::initial_contact_scale: set by the scene, not a user parameter.
+  double initial_contact_scale = 0.6;
 };
 
 // A predicted contact point (kinematics, before load).
