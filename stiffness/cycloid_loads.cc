@@ -122,8 +122,8 @@ geometry::CycloidSceneSpec default_cycloid_load_scene()
   // the loaded flanks; farther rollers cannot close under M_c (their clearance exceeds the
   // disc's elastic rotation times their lever).
   scene.contact_clearance = 0.1e-3;
-  // Sizes from the refinement study (docs/cycloid.md): P_max within 1% of a mesh with 2.6
-  // times the DoFs, Q_max within 0.1%, one position in seconds.
+  // Sizes from the refinement study (docs/cycloid.md): with Q2 elements P_max within 1 % of the
+  // finest level (all sizes × 0.35), Q_max within 0.1 %, one position in about 5 s.
   scene.points_per_lobe = 61;
   scene.mesh.contact_size = 80e-6;
   scene.mesh.fine_radius = 0.3e-3;
@@ -144,7 +144,11 @@ fem::ElasticityParameters default_cycloid_elasticity()
 {
   fem::ElasticityParameters elasticity;
   elasticity.model = fem::PlanarModel::plane_stress;
-  elasticity.degree = 1;
+  // Q2: P_max is set by the bending of the lobes and of the ring between lobes and bore, which
+  // Q1 cells overstiffen. On the default mesh Q2 gives P_max 0.5 % below the finest level of
+  // the study (Q2, all sizes × 0.35, 1.22 M DoFs) in about 5 s; Q1 needs all sizes × 0.7 for
+  // 0.8 % at about the same cost (docs/cycloid.md, "Speed and discretisation").
+  elasticity.degree = 2;
   return elasticity;
 }
 
