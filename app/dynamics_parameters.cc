@@ -33,16 +33,24 @@ std::string train_mesh_section(unsigned int m)
   return "Train mesh " + std::to_string(m + 1);
 }
 
+// The comma-separated entries of `text` that are not blank.
+std::vector<std::string> comma_entries(const std::string& text)
+{
+  std::vector<std::string> entries;
+  std::istringstream in(text);
+  std::string entry;
+  while (std::getline(in, entry, ','))
+    if (entry.find_first_not_of(" \t") != std::string::npos)
+      entries.push_back(entry);
+  return entries;
+}
+
 // "x:k, x:k, ..." with x in base pitches and k in N/mm.
 void parse_table(const std::string& text, const std::string& parameter,
                  std::vector<double>& positions, std::vector<double>& stiffness)
 {
-  std::istringstream entries(text);
-  std::string entry;
-  while (std::getline(entries, entry, ','))
+  for (const std::string& entry : comma_entries(text))
   {
-    if (entry.find_first_not_of(" \t") == std::string::npos)
-      continue;
     const auto colon = entry.find(':');
     try
     {
@@ -176,6 +184,24 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
         dynamics::MeshStiffness::cai(physics.fit->parameters, section + "/stiffness");
   }
   return physics;
+}
+
+// parse_mesh_physics in the subsection `section`, which is left also when it throws.
+MeshPhysics parse_mesh_physics_section(ParameterHandler& prm, const std::string& section,
+                                       double contact_ratio)
+{
+  prm.enter_subsection(section);
+  try
+  {
+    MeshPhysics physics = parse_mesh_physics(prm, section, contact_ratio);
+    prm.leave_subsection();
+    return physics;
+  }
+  catch (...)
+  {
+    prm.leave_subsection();
+    throw;
+  }
 }
 
 void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
@@ -362,32 +388,20 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     mesh.name = section;
     const unsigned int driver = prm.get_integer("driver gear");
     const unsigned int driven = prm.get_integer("driven gear");
-    if (driver > n_gears || driven > n_gears || driver == driven)
-    {
-      prm.leave_subsection();
-      throw InputError(section + "/driven gear",
-                       "a mesh joins two different gears among the first " +
-                           std::to_string(n_gears));
-    }
-    mesh.driver = driver - 1;
-    mesh.driven = driven - 1;
     mesh.driver_teeth = prm.get_integer("driver teeth");
     mesh.driver_base_radius = prm.get_double("driver base radius") * mm;
     mesh.driven_base_radius = prm.get_double("driven base radius") * mm;
     mesh.contact_ratio = prm.get_double("contact ratio");
     mesh.approach_ratio = prm.get_double("approach ratio");
     p.placement_angle.push_back(prm.get_double("placement angle") * degree);
-    MeshPhysics physics;
-    try
-    {
-      physics = parse_mesh_physics(prm, section, mesh.contact_ratio);
-    }
-    catch (...)
-    {
-      prm.leave_subsection();
-      throw;
-    }
     prm.leave_subsection();
+    if (driver > n_gears || driven > n_gears || driver == driven)
+      throw InputError(section + "/driven gear",
+                       "a mesh joins two different gears among the first " +
+                           std::to_string(n_gears));
+    mesh.driver = driver - 1;
+    mesh.driven = driven - 1;
+    const MeshPhysics physics = parse_mesh_physics_section(prm, section, mesh.contact_ratio);
     apply_mesh_physics(physics, mesh);
     const std::optional<dynamics::CaiFit>& fit = physics.fit;
     p.stiffness_description.push_back(mesh.stiffness.description() +
@@ -443,12 +457,8 @@ parse_named_numbers(const std::string& text, unsigned int count, const std::stri
                     const std::string& units)
 {
   std::vector<std::pair<std::string, std::vector<double>>> entries_read;
-  std::istringstream entries(text);
-  std::string entry;
-  while (std::getline(entries, entry, ','))
+  for (const std::string& entry : comma_entries(text))
   {
-    if (entry.find_first_not_of(" \t") == std::string::npos)
-      continue;
     const auto colon = entry.find(':');
     std::istringstream values(colon == std::string::npos ? "" : entry.substr(colon + 1));
     std::string name = colon == std::string::npos ? "" : entry.substr(0, colon);
@@ -523,18 +533,7 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
           teeth[0] = a.teeth;
           teeth[1] = b.teeth;
         }
-    prm.enter_subsection(section);
-    MeshPhysics physics;
-    try
-    {
-      physics = parse_mesh_physics(prm, section, contact_ratio);
-    }
-    catch (...)
-    {
-      prm.leave_subsection();
-      throw;
-    }
-    prm.leave_subsection();
+    const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
     dynamics::TrainMeshDynamics mesh{physics.stiffness,
                                      physics.damping,
                                      physics.friction_coefficient,
