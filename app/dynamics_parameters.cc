@@ -204,6 +204,33 @@ MeshPhysics parse_mesh_physics_section(ParameterHandler& prm, const std::string&
   }
 }
 
+// The entries of "ISO 6336", one a member of IsoParameters, in the unit the file writes it in
+// (`unit`: its SI value); declared with IsoParameters' default, read back into the member.
+struct IsoEntry
+{
+  const char* name;
+  double IsoParameters::*member;
+  double unit;
+  Double pattern;
+  const char* documentation;
+};
+
+const IsoEntry iso_entries[] = {
+    {"face width", &IsoParameters::face_width, mm, Double(0.), "b, common face width (mm)"},
+    {"transverse pressure angle", &IsoParameters::pressure_angle, degree, Double(0., 45.),
+     "alpha_t: F_t = F_bt·cos alpha_t (degrees)"},
+    {"single stiffness", &IsoParameters::single_stiffness, newton_per_mm_micrometre, Double(0.),
+     "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)"},
+    {"mesh stiffness", &IsoParameters::mesh_stiffness, newton_per_mm_micrometre, Double(0.),
+     "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b"},
+    {"pitch deviation", &IsoParameters::pitch_deviation, micrometre, Double(0.),
+     "f_pb,eff = f_pb - y_p, effective base pitch deviation (µm); the default is ISO 1328 grade "
+     "6 for this size without running-in allowance"},
+    {"profile deviation", &IsoParameters::profile_deviation, micrometre, Double(0.),
+     "f_f,eff = f_f_alpha - y_f, effective profile form deviation (µm)"},
+    {"tip relief", &IsoParameters::tip_relief, micrometre, Double(0.), "C_a (µm); 0: none"},
+    {"application factor", &IsoParameters::application_factor, 1., Double(0.), "K_A (-)"}};
+
 void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
 {
   mesh.stiffness = physics.stiffness;
@@ -338,22 +365,16 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "the step is reduced so each mesh period holds at least this many (-)");
   prm.leave_subsection();
 
+  // The split-path pair's b, α_t = 20°, ISO 1328 grade 6 deviations (iso_entries).
+  IsoParameters iso;
+  iso.face_width = data.face_width;
+  iso.pressure_angle = 20. * degree;
+  iso.pitch_deviation = 8. * micrometre;
+  iso.profile_deviation = 8. * micrometre;
   prm.enter_subsection("ISO 6336");
-  prm.declare_entry("face width", format_number(data.face_width / mm, 10), Double(0.),
-                    "b, common face width (mm)");
-  prm.declare_entry("transverse pressure angle", "20", Double(0., 45.),
-                    "alpha_t: F_t = F_bt·cos alpha_t (degrees)");
-  prm.declare_entry("single stiffness", "0", Double(0.),
-                    "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)");
-  prm.declare_entry("mesh stiffness", "0", Double(0.),
-                    "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b");
-  prm.declare_entry("pitch deviation", "8", Double(0.),
-                    "f_pb,eff = f_pb - y_p, effective base pitch deviation (µm); the default "
-                    "is ISO 1328 grade 6 for this size without running-in allowance");
-  prm.declare_entry("profile deviation", "8", Double(0.),
-                    "f_f,eff = f_f_alpha - y_f, effective profile form deviation (µm)");
-  prm.declare_entry("tip relief", "0", Double(0.), "C_a (µm); 0: none");
-  prm.declare_entry("application factor", "1", Double(0.), "K_A (-)");
+  for (const IsoEntry& entry : iso_entries)
+    prm.declare_entry(entry.name, format_number(iso.*entry.member / entry.unit, 10), entry.pattern,
+                      entry.documentation);
   prm.leave_subsection();
 }
 
@@ -617,14 +638,8 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
     throw InputError("Speed sweep/maximum speed", "needs 0 < minimum speed <= maximum speed");
 
   prm.enter_subsection("ISO 6336");
-  p.iso.face_width = prm.get_double("face width") * mm;
-  p.iso.pressure_angle = prm.get_double("transverse pressure angle") * degree;
-  p.iso.single_stiffness = prm.get_double("single stiffness") * newton_per_mm_micrometre;
-  p.iso.mesh_stiffness = prm.get_double("mesh stiffness") * newton_per_mm_micrometre;
-  p.iso.pitch_deviation = prm.get_double("pitch deviation") * micrometre;
-  p.iso.profile_deviation = prm.get_double("profile deviation") * micrometre;
-  p.iso.tip_relief = prm.get_double("tip relief") * micrometre;
-  p.iso.application_factor = prm.get_double("application factor");
+  for (const IsoEntry& entry : iso_entries)
+    p.iso.*entry.member = prm.get_double(entry.name) * entry.unit;
   prm.leave_subsection();
 
   if (p.train_description)
