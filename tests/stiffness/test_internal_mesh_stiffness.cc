@@ -21,7 +21,8 @@ namespace
 {
 constexpr double mm = 1e-3;
 
-// Frictionless: the torque-ratio oracle below needs it.
+// The pair at `position` (planet_ring_settings is frictionless, as the torque-ratio oracle below
+// needs).
 GearMeshStiffnessSettings internal_case(geometry::PairPosition position, double rim_modules)
 {
   GearMeshStiffnessSettings settings = planet_ring_settings(rim_modules, "internal");
