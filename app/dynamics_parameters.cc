@@ -33,16 +33,24 @@ std::string train_mesh_section(unsigned int m)
   return "Train mesh " + std::to_string(m + 1);
 }
 
+// The comma-separated entries of `text` that are not blank.
+std::vector<std::string> comma_entries(const std::string& text)
+{
+  std::vector<std::string> entries;
+  std::istringstream in(text);
+  std::string entry;
+  while (std::getline(in, entry, ','))
+    if (entry.find_first_not_of(" \t") != std::string::npos)
+      entries.push_back(entry);
+  return entries;
+}
+
 // "x:k, x:k, ..." with x in base pitches and k in N/mm.
 void parse_table(const std::string& text, const std::string& parameter,
                  std::vector<double>& positions, std::vector<double>& stiffness)
 {
-  std::istringstream entries(text);
-  std::string entry;
-  while (std::getline(entries, entry, ','))
+  for (const std::string& entry : comma_entries(text))
   {
-    if (entry.find_first_not_of(" \t") == std::string::npos)
-      continue;
     const auto colon = entry.find(':');
     try
     {
@@ -178,6 +186,51 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
   return physics;
 }
 
+// parse_mesh_physics in the subsection `section`, which is left also when it throws.
+MeshPhysics parse_mesh_physics_section(ParameterHandler& prm, const std::string& section,
+                                       double contact_ratio)
+{
+  prm.enter_subsection(section);
+  try
+  {
+    MeshPhysics physics = parse_mesh_physics(prm, section, contact_ratio);
+    prm.leave_subsection();
+    return physics;
+  }
+  catch (...)
+  {
+    prm.leave_subsection();
+    throw;
+  }
+}
+
+// The entries of "ISO 6336", one a member of IsoParameters, in the unit the file writes it in
+// (`unit`: its SI value); declared with IsoParameters' default, read back into the member.
+struct IsoEntry
+{
+  const char* name;
+  double IsoParameters::*member;
+  double unit;
+  Double pattern;
+  const char* documentation;
+};
+
+const IsoEntry iso_entries[] = {
+    {"face width", &IsoParameters::face_width, mm, Double(0.), "b, common face width (mm)"},
+    {"transverse pressure angle", &IsoParameters::pressure_angle, degree, Double(0., 45.),
+     "alpha_t: F_t = F_bt·cos alpha_t (degrees)"},
+    {"single stiffness", &IsoParameters::single_stiffness, newton_per_mm_micrometre, Double(0.),
+     "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)"},
+    {"mesh stiffness", &IsoParameters::mesh_stiffness, newton_per_mm_micrometre, Double(0.),
+     "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b"},
+    {"pitch deviation", &IsoParameters::pitch_deviation, micrometre, Double(0.),
+     "f_pb,eff = f_pb - y_p, effective base pitch deviation (µm); the default is ISO 1328 grade "
+     "6 for this size without running-in allowance"},
+    {"profile deviation", &IsoParameters::profile_deviation, micrometre, Double(0.),
+     "f_f,eff = f_f_alpha - y_f, effective profile form deviation (µm)"},
+    {"tip relief", &IsoParameters::tip_relief, micrometre, Double(0.), "C_a (µm); 0: none"},
+    {"application factor", &IsoParameters::application_factor, 1., Double(0.), "K_A (-)"}};
+
 void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
 {
   mesh.stiffness = physics.stiffness;
@@ -312,22 +365,16 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "the step is reduced so each mesh period holds at least this many (-)");
   prm.leave_subsection();
 
+  // The split-path pair's b, α_t = 20°, ISO 1328 grade 6 deviations (iso_entries).
+  IsoParameters iso;
+  iso.face_width = data.face_width;
+  iso.pressure_angle = 20. * degree;
+  iso.pitch_deviation = 8. * micrometre;
+  iso.profile_deviation = 8. * micrometre;
   prm.enter_subsection("ISO 6336");
-  prm.declare_entry("face width", format_number(data.face_width / mm, 10), Double(0.),
-                    "b, common face width (mm)");
-  prm.declare_entry("transverse pressure angle", "20", Double(0., 45.),
-                    "alpha_t: F_t = F_bt·cos alpha_t (degrees)");
-  prm.declare_entry("single stiffness", "0", Double(0.),
-                    "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)");
-  prm.declare_entry("mesh stiffness", "0", Double(0.),
-                    "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b");
-  prm.declare_entry("pitch deviation", "8", Double(0.),
-                    "f_pb,eff = f_pb - y_p, effective base pitch deviation (µm); the default "
-                    "is ISO 1328 grade 6 for this size without running-in allowance");
-  prm.declare_entry("profile deviation", "8", Double(0.),
-                    "f_f,eff = f_f_alpha - y_f, effective profile form deviation (µm)");
-  prm.declare_entry("tip relief", "0", Double(0.), "C_a (µm); 0: none");
-  prm.declare_entry("application factor", "1", Double(0.), "K_A (-)");
+  for (const IsoEntry& entry : iso_entries)
+    prm.declare_entry(entry.name, format_number(iso.*entry.member / entry.unit, 10), entry.pattern,
+                      entry.documentation);
   prm.leave_subsection();
 }
 
@@ -362,32 +409,20 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     mesh.name = section;
     const unsigned int driver = prm.get_integer("driver gear");
     const unsigned int driven = prm.get_integer("driven gear");
-    if (driver > n_gears || driven > n_gears || driver == driven)
-    {
-      prm.leave_subsection();
-      throw InputError(section + "/driven gear",
-                       "a mesh joins two different gears among the first " +
-                           std::to_string(n_gears));
-    }
-    mesh.driver = driver - 1;
-    mesh.driven = driven - 1;
     mesh.driver_teeth = prm.get_integer("driver teeth");
     mesh.driver_base_radius = prm.get_double("driver base radius") * mm;
     mesh.driven_base_radius = prm.get_double("driven base radius") * mm;
     mesh.contact_ratio = prm.get_double("contact ratio");
     mesh.approach_ratio = prm.get_double("approach ratio");
     p.placement_angle.push_back(prm.get_double("placement angle") * degree);
-    MeshPhysics physics;
-    try
-    {
-      physics = parse_mesh_physics(prm, section, mesh.contact_ratio);
-    }
-    catch (...)
-    {
-      prm.leave_subsection();
-      throw;
-    }
     prm.leave_subsection();
+    if (driver > n_gears || driven > n_gears || driver == driven)
+      throw InputError(section + "/driven gear",
+                       "a mesh joins two different gears among the first " +
+                           std::to_string(n_gears));
+    mesh.driver = driver - 1;
+    mesh.driven = driven - 1;
+    const MeshPhysics physics = parse_mesh_physics_section(prm, section, mesh.contact_ratio);
     apply_mesh_physics(physics, mesh);
     const std::optional<dynamics::CaiFit>& fit = physics.fit;
     p.stiffness_description.push_back(mesh.stiffness.description() +
@@ -443,12 +478,8 @@ parse_named_numbers(const std::string& text, unsigned int count, const std::stri
                     const std::string& units)
 {
   std::vector<std::pair<std::string, std::vector<double>>> entries_read;
-  std::istringstream entries(text);
-  std::string entry;
-  while (std::getline(entries, entry, ','))
+  for (const std::string& entry : comma_entries(text))
   {
-    if (entry.find_first_not_of(" \t") == std::string::npos)
-      continue;
     const auto colon = entry.find(':');
     std::istringstream values(colon == std::string::npos ? "" : entry.substr(colon + 1));
     std::string name = colon == std::string::npos ? "" : entry.substr(0, colon);
@@ -523,18 +554,7 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
           teeth[0] = a.teeth;
           teeth[1] = b.teeth;
         }
-    prm.enter_subsection(section);
-    MeshPhysics physics;
-    try
-    {
-      physics = parse_mesh_physics(prm, section, contact_ratio);
-    }
-    catch (...)
-    {
-      prm.leave_subsection();
-      throw;
-    }
-    prm.leave_subsection();
+    const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
     dynamics::TrainMeshDynamics mesh{physics.stiffness,
                                      physics.damping,
                                      physics.friction_coefficient,
@@ -618,14 +638,8 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
     throw InputError("Speed sweep/maximum speed", "needs 0 < minimum speed <= maximum speed");
 
   prm.enter_subsection("ISO 6336");
-  p.iso.face_width = prm.get_double("face width") * mm;
-  p.iso.pressure_angle = prm.get_double("transverse pressure angle") * degree;
-  p.iso.single_stiffness = prm.get_double("single stiffness") * newton_per_mm_micrometre;
-  p.iso.mesh_stiffness = prm.get_double("mesh stiffness") * newton_per_mm_micrometre;
-  p.iso.pitch_deviation = prm.get_double("pitch deviation") * micrometre;
-  p.iso.profile_deviation = prm.get_double("profile deviation") * micrometre;
-  p.iso.tip_relief = prm.get_double("tip relief") * micrometre;
-  p.iso.application_factor = prm.get_double("application factor");
+  for (const IsoEntry& entry : iso_entries)
+    p.iso.*entry.member = prm.get_double(entry.name) * entry.unit;
   prm.leave_subsection();
 
   if (p.train_description)

@@ -151,36 +151,53 @@ kinematics::IsoStiffnessOptions parse_iso_parameters(dealii::ParameterHandler& p
   return options;
 }
 
+namespace
+{
+// The Train entries that hold kinematics::GearTrainText, one a member: name, member,
+// documentation. The members and their axes, then (after the torque entries, which keeps the
+// order of the parameter list) their inertias and masses.
+struct TrainTextEntry
+{
+  const char* name;
+  std::string kinematics::GearTrainText::*text;
+  const char* documentation;
+};
+
+using Text = kinematics::GearTrainText;
+const TrainTextEntry train_structure_entries[] = {
+    {"gears", &Text::gears,
+     "toothed members, 'name: teeth, ...' [-]; negative teeth = internal gear"},
+    {"modules", &Text::modules,
+     "'name: module, ...' [mm] (optional: tooth forces, planet orbit radii, the check that a "
+     "planet's meshes agree on its axis)"},
+    {"carriers", &Text::carriers, "toothless members (carriers, shafts), 'name, ...'"},
+    {"planets", &Text::planets,
+     "members whose axis rides on a carrier, 'name: carrier*copies, ...'"},
+    {"meshes", &Text::meshes,
+     "'a-b/frame, ...': gears a and b mesh with both axes on frame (a carrier); 'a-b' alone: "
+     "fixed axes in the housing"},
+    {"connections", &Text::connections, "rigidly joined members, 'a=b, ...'"},
+    {"fixed", &Text::fixed, "members held still, 'name, ...'"},
+    {"inputs", &Text::inputs, "driven members and their speeds, 'name: speed, ...' [rpm]"},
+    {"output", &Text::output, "output member (ratio, statics)"}};
+const TrainTextEntry train_mass_entries[] = {
+    {"inertias", &Text::inertias, "'name: J, ...' [kg·m²], one copy about its own axis (optional)"},
+    {"masses", &Text::masses,
+     "'name: m, ...' [kg], one copy, counts where its axis moves (optional)"}};
+} // namespace
+
 void declare_train_parameters(dealii::ParameterHandler& prm)
 {
   const kinematics::GearTrainText train = kinematics::builtin_train("bi-planetary");
   prm.enter_subsection("Train");
-  prm.declare_entry("gears", train.gears, Anything(),
-                    "toothed members, 'name: teeth, ...' [-]; negative teeth = internal gear");
-  prm.declare_entry("modules", train.modules, Anything(),
-                    "'name: module, ...' [mm] (optional: tooth forces, planet orbit radii, the "
-                    "check that a planet's meshes agree on its axis)");
-  prm.declare_entry("carriers", train.carriers, Anything(),
-                    "toothless members (carriers, shafts), 'name, ...'");
-  prm.declare_entry("planets", train.planets, Anything(),
-                    "members whose axis rides on a carrier, 'name: carrier*copies, ...'");
-  prm.declare_entry("meshes", train.meshes, Anything(),
-                    "'a-b/frame, ...': gears a and b mesh with both axes on frame (a carrier); "
-                    "'a-b' alone: fixed axes in the housing");
-  prm.declare_entry("connections", train.connections, Anything(),
-                    "rigidly joined members, 'a=b, ...'");
-  prm.declare_entry("fixed", train.fixed, Anything(), "members held still, 'name, ...'");
-  prm.declare_entry("inputs", train.inputs, Anything(),
-                    "driven members and their speeds, 'name: speed, ...' [rpm]");
-  prm.declare_entry("output", train.output, Anything(), "output member (ratio, statics)");
+  for (const TrainTextEntry& entry : train_structure_entries)
+    prm.declare_entry(entry.name, train.*entry.text, Anything(), entry.documentation);
   prm.declare_entry("input torque", "120.2", Double(),
                     "torque on the first input [N·m] (gear-data.md §2: 120.2); 0 = no statics");
   prm.declare_entry("tooth friction coefficient", "0.08", Double(0., 0.5),
                     "μ_z for the pair efficiencies [-] (gear-data.md §2: 0.08)");
-  prm.declare_entry("inertias", "", Anything(),
-                    "'name: J, ...' [kg·m²], one copy about its own axis (optional)");
-  prm.declare_entry("masses", "", Anything(),
-                    "'name: m, ...' [kg], one copy, counts where its axis moves (optional)");
+  for (const TrainTextEntry& entry : train_mass_entries)
+    prm.declare_entry(entry.name, train.*entry.text, Anything(), entry.documentation);
   prm.declare_entry("reduce inertia to", "", Anything(),
                     "member the inertia is reduced to; empty = the first input");
   prm.leave_subsection();
@@ -190,17 +207,10 @@ TrainParameters parse_train_parameters(dealii::ParameterHandler& prm)
 {
   TrainParameters p;
   prm.enter_subsection("Train");
-  p.text.gears = prm.get("gears");
-  p.text.modules = prm.get("modules");
-  p.text.carriers = prm.get("carriers");
-  p.text.planets = prm.get("planets");
-  p.text.meshes = prm.get("meshes");
-  p.text.connections = prm.get("connections");
-  p.text.fixed = prm.get("fixed");
-  p.text.inputs = prm.get("inputs");
-  p.text.output = prm.get("output");
-  p.text.inertias = prm.get("inertias");
-  p.text.masses = prm.get("masses");
+  for (const TrainTextEntry& entry : train_structure_entries)
+    p.text.*entry.text = prm.get(entry.name);
+  for (const TrainTextEntry& entry : train_mass_entries)
+    p.text.*entry.text = prm.get(entry.name);
   p.input_torque = prm.get_double("input torque");
   p.tooth_friction = prm.get_double("tooth friction coefficient");
   p.reduce_to = prm.get("reduce inertia to");

@@ -99,7 +99,6 @@ ParameterNames stiffness_parameter_names()
   names[stiffness::stiffness_parameter::torque] = "Stiffness/pinion torque";
   names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
   names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
-  names[stiffness::stiffness_parameter::start] = "Stiffness/sweep start";
   return names;
 }
 

@@ -26,6 +26,22 @@ BoundaryLoop circle_from(const Eigen::Vector2d& centre, double radius, double st
   return loop;
 }
 
+// A contact between two bodies of the scene's material with the surfaces' curvature radii
+// (> 0 convex), carrying `force` (N) over the disc width: its Hertz half-width. The caller
+// places it (point, normal, gap, features).
+SceneContact loaded_contact(const CycloidSceneSpec& spec, double first_curvature_radius,
+                            double second_curvature_radius, double force)
+{
+  SceneContact contact;
+  contact.first_curvature_radius = first_curvature_radius;
+  contact.second_curvature_radius = second_curvature_radius;
+  contact.normal_force = force;
+  contact.hertz_half_width = hertz_half_width(
+      force / spec.disc_width, first_curvature_radius, second_curvature_radius, spec.young_modulus,
+      spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
+  return contact;
+}
+
 // The output pins in their holes (see the header): bodies, and one contact each where the pin
 // meets its hole (on the side away from the disc centre's offset).
 void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_centre,
@@ -45,19 +61,13 @@ void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_c
         circle_loop(centre, spec.output_pin_bore_radius, cycloid_ids::output_pin_bores));
     model.bodies.push_back(pin);
 
-    SceneContact contact;
+    SceneContact contact = loaded_contact(spec, -spec.output_pin_hole_radius, // concave
+                                          spec.output_pin_radius, spec.pin_force);
     contact.point = centre + spec.output_pin_radius * towards;
     contact.normal = -towards; // out of the disc (the hole wall) into the hole
-    contact.first_curvature_radius = -spec.output_pin_hole_radius; // concave
-    contact.second_curvature_radius = spec.output_pin_radius;
-    contact.normal_force = spec.pin_force;
     contact.gap = play;
     contact.first_feature = static_cast<int>(j);
     contact.second_feature = static_cast<int>(j);
-    contact.hertz_half_width =
-        hertz_half_width(spec.pin_force / spec.disc_width, contact.first_curvature_radius,
-                         contact.second_curvature_radius, spec.young_modulus, spec.poisson_ratio,
-                         spec.young_modulus, spec.poisson_ratio);
     contacts.push_back(contact);
   }
 }
@@ -170,19 +180,13 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
     contact_angles[i] = std::atan2((point - roller).y(), (point - roller).x());
     if (clearances[i] > spec.contact_clearance)
       continue;
-    SceneContact contact;
+    SceneContact contact = loaded_contact(spec, cycloid_curvature_radius(disc, alpha),
+                                          ring.roller_radius, spec.roller_force);
     contact.point = point;
     contact.normal = (roller - point).normalized();
-    contact.first_curvature_radius = cycloid_curvature_radius(disc, alpha);
-    contact.second_curvature_radius = ring.roller_radius;
-    contact.normal_force = spec.roller_force;
     contact.gap = clearances[i];
     contact.first_feature = static_cast<int>(std::lround((alpha + psi) / lobe_pitch));
     contact.second_feature = static_cast<int>(i);
-    contact.hertz_half_width =
-        hertz_half_width(spec.roller_force / spec.disc_width, contact.first_curvature_radius,
-                         contact.second_curvature_radius, spec.young_modulus, spec.poisson_ratio,
-                         spec.young_modulus, spec.poisson_ratio);
     contacts.push_back(contact);
   }
   if (contacts.empty())

@@ -44,9 +44,6 @@ namespace cycloid_parameter
 {
 inline const std::string torque = "Cycloid loads/output torque";
 inline const std::string contact_arc_ratio = "Cycloid loads/contact arc ratio";
-inline const std::string crank_angle = "Cycloid loads/crank angle";
-inline const std::string positions = "Cycloid loads/sweep positions";
-inline const std::string load_steps = "Cycloid loads/torque steps";
 inline const std::string overlap_tolerance = "Contact/Overlap tolerance";
 } // namespace cycloid_parameter
 

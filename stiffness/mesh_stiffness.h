@@ -172,7 +172,6 @@ namespace stiffness_parameter
 inline const std::string torque = "stiffness.pinion_torque";
 inline const std::string positions = "sweep.positions";
 inline const std::string pitches = "sweep.base_pitches";
-inline const std::string start = "sweep.start_position";
 inline const std::string scene_file = "stiffness.scene_file";
 } // namespace stiffness_parameter
 

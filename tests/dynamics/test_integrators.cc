@@ -58,6 +58,19 @@ IntegratorSettings settings_for(IntegratorType type, double step, double end_tim
   settings.hht_alpha = 0.;
   return settings;
 }
+
+// Errors at three steps, each half the one before: each observed order log2(e(h)/e(h/2)) lies
+// within `tolerance` of `order`.
+void expect_observed_order(IntegratorType type, const double (&steps)[3], double order,
+                           double tolerance)
+{
+  double errors[3];
+  for (int i = 0; i < 3; ++i)
+    errors[i] = max_error(settings_for(type, steps[i], 2e-3), 100.);
+  for (int i = 0; i < 2; ++i)
+    EXPECT_NEAR(std::log2(errors[i] / errors[i + 1]), order, tolerance)
+        << "errors " << errors[i] << " / " << errors[i + 1];
+}
 } // namespace
 
 TEST(Integrators, Rk4MatchesAnalyticStepResponseAtThePublishedStep)
@@ -73,26 +86,13 @@ TEST(Integrators, Rk4ConvergesAtFourthOrder)
 {
   // Halving the step must divide the error by 2⁴ = 16: observed orders within ±0.2 of 4 (the
   // asymptotic range starts well above these steps, h·ω ≤ 0.17).
-  double errors[3];
-  const double steps[3] = {4e-6, 2e-6, 1e-6};
-  for (int i = 0; i < 3; ++i)
-    errors[i] = max_error(settings_for(IntegratorType::rk4, steps[i], 2e-3), 100.);
-  for (int i = 0; i < 2; ++i)
-  {
-    const double order = std::log2(errors[i] / errors[i + 1]);
-    EXPECT_NEAR(order, 4., 0.2) << "errors " << errors[i] << " / " << errors[i + 1];
-  }
+  expect_observed_order(IntegratorType::rk4, {4e-6, 2e-6, 1e-6}, 4., 0.2);
 }
 
 TEST(Integrators, HhtAlphaIsSecondOrderAndAccurate)
 {
   // HHT-α with α = 0 is the trapezoidal rule: second order (observed within ±0.15 of 2).
-  double errors[3];
-  const double steps[3] = {2e-6, 1e-6, 0.5e-6};
-  for (int i = 0; i < 3; ++i)
-    errors[i] = max_error(settings_for(IntegratorType::hht_alpha, steps[i], 2e-3), 100.);
-  for (int i = 0; i < 2; ++i)
-    EXPECT_NEAR(std::log2(errors[i] / errors[i + 1]), 2., 0.15);
+  expect_observed_order(IntegratorType::hht_alpha, {2e-6, 1e-6, 0.5e-6}, 2., 0.15);
   // α = −0.05 adds numerical damping of high modes but stays accurate at 1 µs: (hω)² ≈ 2e-3
   // phase error per radian, 14 periods → a few per cent at most.
   IntegratorSettings damped = settings_for(IntegratorType::hht_alpha, 1e-6, 2e-3);

@@ -17,6 +17,14 @@ MeshStiffness published_cai(const SplitPathCase& data)
 {
   return MeshStiffness::cai(cai_published_parameters(data.single_pair_stiffness), "k");
 }
+
+// The train of `data` without friction and with a constant mesh stiffness (417 N/µm): no
+// parametric excitation.
+TorsionalModel frictionless_constant_stiffness_train(SplitPathCase data)
+{
+  data.friction_coefficient = 0.;
+  return TorsionalModel(split_path_train(data, MeshStiffness::constant(417e6, "k")));
+}
 } // namespace
 
 TEST(Simulation, SteadyStateMeanMeshForceEqualsNominalForce)
@@ -51,9 +59,7 @@ TEST(Simulation, ConstantStiffnessFromStaticDeflectionStaysAtRest)
 {
   // Without parametric excitation and without friction the static state is an equilibrium:
   // K_v ≡ 1 (to round-off, 1e-9).
-  SplitPathCase data = split_path_case();
-  data.friction_coefficient = 0.;
-  const TorsionalModel model(split_path_train(data, MeshStiffness::constant(417e6, "k")));
+  const TorsionalModel model = frictionless_constant_stiffness_train(split_path_case());
   SimulationSettings settings;
   settings.start = StartState::static_deflection;
   settings.steady_state_start = 0.;
@@ -76,9 +82,8 @@ TEST(Simulation, EnergyBalanceWithoutDampingOnTheThreeDofTrain)
   // c_g = 0, μ = 0, constant stiffness: the trapezoidal rule (HHT α = 0) keeps
   // E = ½φ̇ᵀMφ̇ + Σ½kδ² − Tᵀφ to round-off (1e-9 of the strain energy) from rest over 0.05 s.
   SplitPathCase data = split_path_case();
-  data.friction_coefficient = 0.;
   data.mesh_damping = 0.;
-  const TorsionalModel model(split_path_train(data, MeshStiffness::constant(417e6, "k")));
+  const TorsionalModel model = frictionless_constant_stiffness_train(data);
   IntegratorSettings settings;
   settings.type = IntegratorType::hht_alpha;
   settings.hht_alpha = 0.;

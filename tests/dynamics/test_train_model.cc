@@ -16,18 +16,15 @@ using namespace gearstiff::dynamics;
 
 namespace
 {
-// A single stage: sun s (20 teeth) input, N planets p (10 teeth) on carrier c, ring r (−40)
-// fixed, module 2 mm; inertias and planet masses are round illustrative values.
-TrainDynamicsInput planetary(unsigned int planets, double stiffness = 4e8, double damping = 0.)
+// The train `text` with `input_torque` (N·m) on its first input and every Train mesh at the
+// constant `stiffness` (N/m) with `damping` (N·s/m), without friction.
+TrainDynamicsInput constant_mesh_input(const kinematics::GearTrainText& text, double input_torque,
+                                       double stiffness, double damping)
 {
-  kinematics::GearTrainText text = kinematics::builtin_train("planetary");
-  text.planets = "p: c*" + std::to_string(planets);
-  text.inertias = "s: 2e-4, p: 5e-5, c: 4e-3, r: 1e-2";
-  text.masses = "p: 0.4";
   TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(text);
-  input.input_torque = 100.;
-  for (unsigned int m = 0; m < 2; ++m)
+  input.input_torque = input_torque;
+  for (std::size_t m = 0; m < input.spec.meshes.size(); ++m)
     input.meshes.push_back({MeshStiffness::constant(stiffness, "Train mesh/stiffness"),
                             damping,
                             0.,
@@ -39,19 +36,24 @@ TrainDynamicsInput planetary(unsigned int planets, double stiffness = 4e8, doubl
   return input;
 }
 
+// A single stage: sun s (20 teeth) input, N planets p (10 teeth) on carrier c, ring r (−40)
+// fixed, module 2 mm; inertias and planet masses are round illustrative values.
+TrainDynamicsInput planetary(unsigned int planets, double stiffness = 4e8, double damping = 0.)
+{
+  kinematics::GearTrainText text = kinematics::builtin_train("planetary");
+  text.planets = "p: c*" + std::to_string(planets);
+  text.inertias = "s: 2e-4, p: 5e-5, c: 4e-3, r: 1e-2";
+  text.masses = "p: 0.4";
+  return constant_mesh_input(text, 100., stiffness, damping);
+}
+
 TrainDynamicsInput bi_planetary()
 {
   kinematics::GearTrainText text = kinematics::builtin_train("bi-planetary");
   text.inertias = "1: 1e-4, 2: 2e-2, 3: 1e-4, 4: 3e-4, 5: 5e-3, 6: 1e-3, 7: 4e-2, h: 0.5, H: 2e-3";
   // No mass for ring 5: kinematics knows no orbit radius for it (rigid with h, not a planet).
   text.masses = "2: 3.2, 3: 0.3, 4: 0.4, 6: 0.5, H: 0.6";
-  TrainDynamicsInput input;
-  input.spec = kinematics::parse_gear_train(text);
-  input.input_torque = 120.2;
-  for (unsigned int m = 0; m < 4; ++m)
-    input.meshes.push_back(
-        {MeshStiffness::constant(5e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}});
-  return input;
+  return constant_mesh_input(text, 120.2, 5e8, 0.);
 }
 
 std::vector<unsigned int> dofs_of(const TrainModel& model, const std::string& body)

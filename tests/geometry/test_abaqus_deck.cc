@@ -58,13 +58,60 @@ std::size_t entries(const std::vector<std::string>& lines)
   return count;
 }
 
-struct Deck
+// The Gmsh scene a deck is written from, read back (the exact counts the deck is checked
+// against), and the deck.
+struct SceneDeck
 {
-  GearPairSceneSpec spec;
-  GearPairScene scene;
   SceneInfo info;
   SceneMesh mesh;
   std::string file;
+};
+
+// Reads back the mesh of the scene written to deck.info and writes the deck `base`.inp.
+void write_deck(SceneDeck& deck, unsigned int dimension, const AbaqusDeckSpec& spec,
+                const std::string& base)
+{
+  deck.mesh = read_scene_mesh(deck.info.file, dimension);
+  deck.file = work_file(base + ".inp");
+  write_abaqus_deck(deck.info, spec, deck.file);
+}
+
+// The element sets, rigid bodies and reference nodes of a deck, by keyword.
+struct DeckBodies
+{
+  std::set<std::string> element_sets;            // "*ELEMENT, TYPE=C3D8, ELSET=<set>"
+  std::set<std::string> rigid_bodies;            // the *RIGID BODY keyword lines
+  std::map<std::string, std::string> node_lines; // "*NODE, NSET=<name>" -> its node line
+};
+
+DeckBodies deck_bodies(const std::string& file)
+{
+  DeckBodies bodies;
+  for (const auto& [keyword, lines] : blocks(file))
+    if (keyword.rfind("*ELEMENT, TYPE=C3D8, ELSET=", 0) == 0)
+      bodies.element_sets.insert(keyword.substr(27));
+    else if (keyword.rfind("*RIGID BODY", 0) == 0)
+      bodies.rigid_bodies.insert(keyword);
+    else if (keyword.rfind("*NODE, NSET=", 0) == 0 && keyword != "*NODE, NSET=NALL")
+      bodies.node_lines[keyword.substr(12)] = lines.at(0);
+  return bodies;
+}
+
+// Solves the deck `file` with ccx as it is, in its folder (log: <job>.log); std::system's status.
+int run_calculix(const std::string& file)
+{
+  const std::string job = file.substr(0, file.size() - 4);
+  const std::string folder = job.substr(0, job.rfind('/'));
+  const std::string name = job.substr(job.rfind('/') + 1);
+  return std::system(
+      ("cd " + folder + " && OMP_NUM_THREADS=1 ccx -i " + name + " > " + name + ".log 2>&1")
+          .c_str());
+}
+
+struct Deck : SceneDeck
+{
+  GearPairSceneSpec spec;
+  GearPairScene scene;
 };
 
 Deck coarse_slice_deck(const std::string& base, unsigned int dimension = 2,
@@ -81,9 +128,7 @@ Deck coarse_slice_deck(const std::string& base, unsigned int dimension = 2,
   deck.spec.mesh.body_size = 1.5e-3;
   deck.scene = write_gear_pair_scene(deck.spec, work_file(base + ".msh"));
   deck.info = deck.scene.info;
-  deck.mesh = read_scene_mesh(deck.info.file, dimension);
-  deck.file = work_file(base + ".inp");
-  write_abaqus_deck(deck.info, gear_pair_deck_spec(deck.spec, deck.scene, 0.01, 50.), deck.file);
+  write_deck(deck, dimension, gear_pair_deck_spec(deck.spec, deck.scene, 0.01, 50.), base);
   return deck;
 }
 
@@ -166,13 +211,8 @@ TEST(AbaqusDeck, PairsTheToothPairsInContactOnly)
 // Solves `deck` with ccx as written; returns the rotation of the ROT NODE (rad).
 double calculix_rotation(const Deck& deck)
 {
+  EXPECT_EQ(run_calculix(deck.file), 0);
   const std::string job = deck.file.substr(0, deck.file.size() - 4);
-  const std::string folder = job.substr(0, job.rfind('/'));
-  const std::string name = job.substr(job.rfind('/') + 1);
-  EXPECT_EQ(std::system(("cd " + folder + " && OMP_NUM_THREADS=1 ccx -i " + name + " > " + name +
-                         ".log 2>&1")
-                            .c_str()),
-            0);
   // The last "displacements ... for set DRIVEN_ROT" block of the .dat: id, rx, ry, rz.
   std::ifstream dat(job + ".dat");
   std::string line;
@@ -255,23 +295,22 @@ std::map<std::string, std::size_t> surface_faces(const std::string& file)
 TEST(AbaqusDeck, CycloidSceneWithOutputMember)
 {
   const CycloidSceneSpec spec = coarse_cycloid_spec();
-  const SceneInfo info = write_cycloid_scene(spec, work_file("deck_cycloid.msh"));
-  const SceneMesh mesh = read_scene_mesh(info.file, 2);
-  const std::string file = work_file("deck_cycloid.inp");
+  SceneDeck deck;
+  deck.info = write_cycloid_scene(spec, work_file("deck_cycloid.msh"));
   const double torque = 440.; // N·m, gear-data.md §4 M_c
-  write_abaqus_deck(info, cycloid_deck_spec(spec, info, torque, 50.), file);
-  const std::size_t n = mesh.nodes.size();
+  write_deck(deck, 2, cycloid_deck_spec(spec, deck.info, torque, 50.), "deck_cycloid");
+  const std::size_t n = deck.mesh.nodes.size();
 
   std::vector<std::string> expected_pairs;
   for (unsigned int i = 0; i < 20; ++i)
     expected_pairs.push_back("ROLLER_" + std::to_string(i) + ", LOBES_" + std::to_string(i));
   for (unsigned int j = 0; j < 8; ++j)
     expected_pairs.push_back("PIN_" + std::to_string(j) + ", HOLE_" + std::to_string(j));
-  EXPECT_EQ(contact_pairs(file), expected_pairs);
+  EXPECT_EQ(contact_pairs(deck.file), expected_pairs);
 
   // Every part is a non-empty piece, and the parts of a group are the group (each facet in
   // exactly one part).
-  const auto faces = surface_faces(file);
+  const auto faces = surface_faces(deck.file);
   const auto parts_of = [&faces](const std::string& prefix, unsigned int count)
   {
     std::size_t total = 0;
@@ -288,21 +327,14 @@ TEST(AbaqusDeck, CycloidSceneWithOutputMember)
   EXPECT_EQ(parts_of("PIN_", 8), faces.at("OUTPUT_PIN_SURFACES"));
   EXPECT_EQ(parts_of("HOLE_", 8), faces.at("OUTPUT_PIN_HOLES"));
 
-  std::set<std::string> element_sets, rigid_bodies;
-  std::map<std::string, std::string> node_lines;
+  const auto [element_sets, rigid_bodies, node_lines] = deck_bodies(deck.file);
   std::vector<std::string> cloads, supports;
   std::string elastic;
   std::vector<std::string> contact_prints;
   bool friction = false;
-  for (const auto& [keyword, lines] : blocks(file))
+  for (const auto& [keyword, lines] : blocks(deck.file))
   {
-    if (keyword.rfind("*ELEMENT, TYPE=C3D8, ELSET=", 0) == 0)
-      element_sets.insert(keyword.substr(27));
-    else if (keyword.rfind("*RIGID BODY", 0) == 0)
-      rigid_bodies.insert(keyword);
-    else if (keyword.rfind("*NODE, NSET=", 0) == 0 && keyword != "*NODE, NSET=NALL")
-      node_lines[keyword.substr(12)] = lines.at(0);
-    else if (keyword == "*CLOAD")
+    if (keyword == "*CLOAD")
       cloads = lines;
     else if (keyword == "*BOUNDARY" && supports.empty())
       supports = lines;
@@ -321,14 +353,14 @@ TEST(AbaqusDeck, CycloidSceneWithOutputMember)
                                        ", ROT NODE=" + id(2 * n + 4)}));
   EXPECT_EQ(node_lines.at("OUTPUT_REF"), id(2 * n + 1) + ", 0, 0, 0"); // the ring centre
   // The disc centre: e = 3 mm off the ring centre at crank angle 0 (gear-data.md §4).
-  EXPECT_NEAR(info.first_centre.norm(), 3e-3, 1e-12);
+  EXPECT_NEAR(deck.info.first_centre.norm(), 3e-3, 1e-12);
   std::istringstream bearing(node_lines.at("DISC_BEARING_REF"));
   double x = 0., y = 0.;
   char comma = 0;
   long node = 0;
   bearing >> node >> comma >> x >> comma >> y;
-  EXPECT_NEAR(x, info.first_centre.x(), 1e-12);
-  EXPECT_NEAR(y, info.first_centre.y(), 1e-12);
+  EXPECT_NEAR(x, deck.info.first_centre.x(), 1e-12);
+  EXPECT_NEAR(y, deck.info.first_centre.y(), 1e-12);
   // The torque on the output member only: the bearing is torque-free.
   EXPECT_EQ(cloads, std::vector<std::string>{"OUTPUT_ROT, 3, 440"});
   EXPECT_EQ(supports, (std::vector<std::string>{"ROLLER_PINS_NODES, 1, 3", "OUTPUT_REF, 1, 3",
@@ -361,12 +393,9 @@ TEST(AbaqusDeck, CycloidDeckRejectsBadInput)
 }
 // A coarse Hertz cylinders scene (R1 = R2 = 10 mm, F' = 100 N/mm, 10 mm long; h_c = 0.02 mm,
 // coarser than the scene's default a/10: ccx solves it in about a second), half-discs or annuli.
-struct CylindersDeck
+struct CylindersDeck : SceneDeck
 {
   CylindersSceneSpec spec;
-  SceneInfo info;
-  SceneMesh mesh;
-  std::string file;
 };
 
 CylindersDeck cylinders_deck(const std::string& base, double bore_radius = 0.)
@@ -378,9 +407,7 @@ CylindersDeck cylinders_deck(const std::string& base, double bore_radius = 0.)
   deck.spec.mesh.body_size = 1e-3;
   deck.spec.mesh.rim_size = 1e-3;
   deck.info = write_cylinders_scene(deck.spec, work_file(base + ".msh"));
-  deck.mesh = read_scene_mesh(deck.info.file, 2);
-  deck.file = work_file(base + ".inp");
-  write_abaqus_deck(deck.info, cylinders_deck_spec(deck.spec, deck.info, 0.1, 50.), deck.file);
+  write_deck(deck, 2, cylinders_deck_spec(deck.spec, deck.info, 0.1, 50.), base);
   return deck;
 }
 
@@ -392,19 +419,12 @@ TEST(AbaqusDeck, CylindersPushedByTheirRigidFlatFace)
 {
   const CylindersDeck deck = cylinders_deck("deck_cylinders");
   const std::size_t n = deck.mesh.nodes.size();
-  std::set<std::string> element_sets, rigid_bodies;
-  std::map<std::string, std::string> node_lines;
+  const auto [element_sets, rigid_bodies, node_lines] = deck_bodies(deck.file);
   std::vector<std::vector<std::string>> boundaries;
   std::vector<std::string> cloads, friction, contact_prints;
   for (const auto& [keyword, lines] : blocks(deck.file))
   {
-    if (keyword.rfind("*ELEMENT, TYPE=C3D8, ELSET=", 0) == 0)
-      element_sets.insert(keyword.substr(27));
-    else if (keyword.rfind("*RIGID BODY", 0) == 0)
-      rigid_bodies.insert(keyword);
-    else if (keyword.rfind("*NODE, NSET=", 0) == 0 && keyword != "*NODE, NSET=NALL")
-      node_lines[keyword.substr(12)] = lines.at(0);
-    else if (keyword.rfind("*BOUNDARY", 0) == 0)
+    if (keyword.rfind("*BOUNDARY", 0) == 0)
       boundaries.push_back(lines);
     else if (keyword == "*CLOAD")
       cloads = lines;
@@ -464,13 +484,8 @@ TEST(AbaqusDeck, CalculixPushesTheCylinders)
   if (std::system("command -v ccx > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "ccx is not installed";
   const CylindersDeck deck = cylinders_deck("deck_cylinders_ccx");
+  ASSERT_EQ(run_calculix(deck.file), 0);
   const std::string job = deck.file.substr(0, deck.file.size() - 4);
-  const std::string folder = job.substr(0, job.rfind('/'));
-  const std::string name = job.substr(job.rfind('/') + 1);
-  ASSERT_EQ(std::system(("cd " + folder + " && OMP_NUM_THREADS=1 ccx -i " + name + " > " + name +
-                         ".log 2>&1")
-                            .c_str()),
-            0);
   std::ifstream dat(job + ".dat");
   std::string line, block;
   double approach = 0., contact_force = 0.;

@@ -1,17 +1,10 @@
 // Mesh stiffness of an internal (ring-planet) pair from the FE contact solve of
 // stiffness/mesh_stiffness.h: the planet as the torque-driven pinion, the ring held fixed on the
-// outer circle of its rim.
-//
-// The pair: planet z = 24, ring z = 69 (the inner set of the bi-planetary train, gear-data.md §2),
-// module 2.5 mm, 20°, no profile shift (the paper's modules and shifts of §2 are not in the
-// reference data: stated defaults), face widths 26/24 mm as the split-path pair, the ring tip at
-// an addendum of 0.5·m_n (d_a2 = 170 mm): a standard ring tip interferes with the planet's
-// fillet (tests/kinematics/test_gear_pair.cc, InternalPair). Planet bore 20 mm; the ring's rim
-// under its root circle (d_f2 = 178.75 mm) is a parameter.
+// outer circle of its rim. The pair (planet 24 / ring 69): tests/stiffness/planet_ring.h.
 #include "errors/errors.h"
 #include "kinematics/iso_stiffness.h"
 #include "stiffness/mesh_stiffness.h"
-#include "tests/stiffness/work_file.h"
+#include "tests/stiffness/planet_ring.h"
 
 #include <cmath>
 #include <filesystem>
@@ -28,36 +21,18 @@ namespace
 {
 constexpr double mm = 1e-3;
 
-kinematics::GearPairSpec planet_ring_pair()
-{
-  kinematics::GearPairSpec spec = kinematics::split_path_pair();
-  spec.pinion.teeth = 24;
-  spec.wheel.teeth = 69;
-  spec.wheel.internal = true;
-  spec.pinion.profile_shift = 0.;
-  spec.wheel.profile_shift = 0.;
-  spec.pinion.tip_diameter = 0.;                               // standard
-  spec.wheel.tip_diameter = (69. * 2.5 - 2. * 2.5 * 0.5) * mm; // addendum 0.5·m_n
-  spec.wheel.bore_diameter = 0.;                               // the rim thickness sets it
-  return spec;
-}
-
+// The pair at `position` (planet_ring_settings is frictionless, as the torque-ratio oracle below
+// needs).
 GearMeshStiffnessSettings internal_case(geometry::PairPosition position, double rim_modules)
 {
-  GearMeshStiffnessSettings settings;
-  settings.scene.pair = planet_ring_pair();
+  GearMeshStiffnessSettings settings = planet_ring_settings(rim_modules, "internal");
   settings.scene.position = position;
-  settings.scene.wheel_rim_thickness = rim_modules * 2.5 * mm;
-  settings.contact.friction_coefficient = 0.; // the torque-ratio oracle below is frictionless
-  settings.scene_file = stiffness_work_stem("internal") + ".msh";
   return settings;
 }
 
 GearMeshStiffnessResult solve(const GearMeshStiffnessSettings& settings, const std::string& label)
 {
-  GearMeshStiffness<2> analysis(MPI_COMM_SELF, settings);
-  const GearMeshStiffnessResult r = analysis.run();
-  std::filesystem::remove(settings.scene_file);
+  const GearMeshStiffnessResult r = run_and_remove_scene<2>(settings);
   std::cout << std::setprecision(6) << label << ": roll " << r.pinion_roll_angle * 180. / M_PI
             << " deg, k = " << r.mesh_stiffness / 1e6 << " N/um, |Tr/T1| = " << r.torque_ratio
             << " (r_b2/r_b1 = " << r.wheel_base_radius / r.pinion_base_radius << "), pairs "

@@ -3,9 +3,8 @@
 //
 // The pair of docs/internal-gears.md (and test_internal_mesh_stiffness.cc): planet 24 / ring 69,
 // m = 2.5 mm, x = 0, ring tip 170 mm, widths 26/24 mm, planet bore 20 mm, T1 = 49.4 N·m, μ = 0.
-#include "kinematics/gear_pair.h"
 #include "stiffness/mesh_stiffness.h"
-#include "tests/stiffness/work_file.h"
+#include "tests/stiffness/planet_ring.h"
 
 #include <cmath>
 #include <filesystem>
@@ -23,27 +22,12 @@ constexpr double mm = 1e-3;
 
 GearMeshStiffnessSettings planet_ring(double rim_modules)
 {
-  GearMeshStiffnessSettings settings;
-  kinematics::GearPairSpec& spec = settings.scene.pair;
-  spec.pinion.teeth = 24;
-  spec.wheel.teeth = 69;
-  spec.wheel.internal = true;
-  spec.pinion.profile_shift = 0.;
-  spec.wheel.profile_shift = 0.;
-  spec.pinion.tip_diameter = 0.;       // standard
-  spec.wheel.tip_diameter = 170. * mm; // addendum 0.5·m_n: a standard tip interferes
-  spec.wheel.bore_diameter = 0.;       // the rim thickness sets the outer radius
-  settings.scene.wheel_rim_thickness = rim_modules * 2.5 * mm;
-  settings.contact.friction_coefficient = 0.;
-  settings.scene_file = stiffness_work_stem("internal_refinement") + ".msh";
-  return settings;
+  return planet_ring_settings(rim_modules, "internal_refinement");
 }
 
 double stiffness(const GearMeshStiffnessSettings& settings, const std::string& label)
 {
-  GearMeshStiffness<2> analysis(MPI_COMM_SELF, settings);
-  const GearMeshStiffnessResult r = analysis.run();
-  std::filesystem::remove(settings.scene_file);
+  const GearMeshStiffnessResult r = run_and_remove_scene<2>(settings);
   std::cout << std::setprecision(7) << label << ": k = " << r.mesh_stiffness / 1e6 << " N/um, "
             << r.n_dofs << " DoFs, " << r.total_time << " s\n";
   return r.mesh_stiffness;
@@ -91,9 +75,7 @@ TEST(InternalRefinement, ThreeDimensionalLiesBetweenPlaneStrainAndPlaneStress)
   settings.elasticity.model = fem::PlanarModel::plane_stress;
   const double stress = stiffness(settings, "2D plane stress");
   settings.scene.mesh.dimension = 3;
-  GearMeshStiffness<3> analysis(MPI_COMM_SELF, settings);
-  const GearMeshStiffnessResult solid = analysis.run();
-  std::filesystem::remove(settings.scene_file);
+  const GearMeshStiffnessResult solid = run_and_remove_scene<3>(settings);
   std::cout << "3D: k = " << solid.mesh_stiffness / 1e6 << " N/um, " << solid.n_dofs << " DoFs, "
             << solid.total_time << " s\n";
   EXPECT_EQ(solid.dimension, 3u);
