@@ -49,7 +49,9 @@ def table_column(table, column):
 def gearstiff_loads(gearstiff, crank, env):
     command = [gearstiff, "cycloid-loads", "--json", "--set", "Cycloid loads/profiles=nominal",
                "--set", "Cycloid loads/torsional curve=false",
-               "--set", f"Cycloid loads/crank angle={crank:.12g}"]
+               "--set", f"Cycloid loads/crank angle={crank:.12g}",
+               # the deck's CPS4 elements are bilinear: Q1 here too (cycloid-loads' default is Q2)
+               "--set", "Finite elements/Element degree=1"]
     for key, v in SCENE.items():
         command += ["--set", f"{key}={v}"]
     stdout, wall, memory, stderr = run_timed(command, env=env)

@@ -1,15 +1,16 @@
 // Refinement check of the cycloid drive's load distribution (issue 13): the built-in case
 // (gear-data.md §4: i = 19, r = 96 mm, e = 3 mm, q = 8.5 mm, M_c = 440 N·m per disc), nominal
-// profile, crank angle 0, solved on the default mesh and on the next level of the study in
-// docs/cycloid.md ("Speed and discretisation": h_c 60 µm, body 1.2 mm, growth 0.3, 75k DoFs).
+// profile, crank angle 0, Q2 (the default), solved on the default mesh and on the next level of
+// the study in docs/cycloid.md ("Speed and discretisation"): every size of the size field —
+// contact size, body size, rim size and growth rate — times 0.7.
 //
-// Stated discretisation error of the default (docs/cycloid.md, against the finest level of the
-// ladder, 124k DoFs: P_max 1436.7 N, Q_max 4011.2 N): P_max −1.3 %, Q_max −0.04 %. The ladder is
-// monotone in P_max (1417.6 < 1422.4 < 1436.7 N): refining raises the largest roller force,
-// because the finer disc ring between lobes and bore is softer and the load concentrates. The
-// test asserts that direction and that the finer level moves P_max by less than the stated
-// 1.5 % bound and Q_max by less than 0.1 % (0.04 % stated, plus room for gmsh's mesh-to-mesh
-// scatter, which the study measured at ~0.05 % in Q_max).
+// The study's ladder (factors 1, 0.7, 0.5, 0.35; 180k, 343k, 645k, 1.22 M DoFs) gave P_max
+// 1426.3, 1429.4, 1432.7, 1433.4 N and Q_max 4010.0, 4009.8, 4010.0, 4009.6 N. Stated
+// discretisation error of the default against the finest level: P_max −0.5 %, Q_max +0.01 %.
+// Refining raises P_max (the finer disc ring between lobes and bore is softer and the load
+// concentrates); the test asserts that direction, that the finer level moves P_max by less than
+// the 1 % the issue allows (0.2 % measured) and Q_max by less than 0.1 % (gmsh's mesh-to-mesh
+// scatter in Q_max is ~0.01 %), and that the loaded roller and pin counts stay.
 #include "stiffness/cycloid_loads.h"
 #include "tests/stiffness/work_file.h"
 
@@ -23,15 +24,16 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-CycloidLoadResult solve_level(const std::string& name, double contact_size, double body_size,
-                              double growth_rate)
+CycloidLoadResult solve_level(const std::string& name, double factor)
 {
   CycloidLoadSettings s;
   s.crank_angle = 0.;
   s.output_torque = 440.; // N·m, one disc (gear-data.md §4)
-  s.scene.mesh.contact_size = contact_size;
-  s.scene.mesh.body_size = body_size;
-  s.scene.mesh.growth_rate = growth_rate;
+  auto& mesh = s.scene.mesh;
+  mesh.contact_size *= factor;
+  mesh.body_size *= factor;
+  mesh.rim_size *= factor;
+  mesh.growth_rate *= factor;
   s.scene_file = stiffness_work_stem(name) + ".msh";
   const CycloidLoadResult r = CycloidLoads<2>(s).run();
   std::filesystem::remove(s.scene_file);
@@ -43,15 +45,13 @@ CycloidLoadResult solve_level(const std::string& name, double contact_size, doub
 
 TEST(CycloidRefinement, DefaultWithinStatedErrorOfFinerLevel)
 {
-  const CycloidLoadSettings defaults;
-  const auto& mesh = defaults.scene.mesh;
-  const CycloidLoadResult coarse =
-      solve_level("cycloid-default", mesh.contact_size, mesh.body_size, mesh.growth_rate);
-  const CycloidLoadResult fine = solve_level("cycloid-finer", 60e-6, 1.2e-3, 0.3);
+  ASSERT_EQ(CycloidLoadSettings().elasticity.degree, 2u); // the study is of the Q2 default
+  const CycloidLoadResult coarse = solve_level("cycloid-default", 1.);
+  const CycloidLoadResult fine = solve_level("cycloid-finer", 0.7);
 
-  ASSERT_GT(fine.n_dofs, 1.3 * coarse.n_dofs); // the finer level really is finer
+  ASSERT_GT(fine.n_dofs, 1.5 * coarse.n_dofs); // the finer level really is finer
   EXPECT_GT(fine.max_roller_force, coarse.max_roller_force);
-  EXPECT_LT(std::abs(coarse.max_roller_force / fine.max_roller_force - 1.), 0.015);
+  EXPECT_LT(std::abs(coarse.max_roller_force / fine.max_roller_force - 1.), 0.01);
   EXPECT_LT(std::abs(coarse.max_pin_force / fine.max_pin_force - 1.), 1e-3);
   // Loaded counts are integers the discretisation must not change at this torque.
   EXPECT_EQ(coarse.loaded_rollers, fine.loaded_rollers);
