@@ -61,6 +61,8 @@ fi
 
 echo "| case | Schur complement | full re-solve | ratio |"
 echo "|---|---|---|---|"
+wall=()
+contact=()
 for method in "Schur complement" "full re-solve"; do
   wall[${#wall[@]}]=$(median_seconds "$gearstiff" stiffness "${friction[@]}" \
     --set "Contact/Iteration solves=$method")
