@@ -203,58 +203,57 @@ fem::PhysicalNames read_mesh_file(const std::string& file, double unit, Triangul
   return fem::read_msh(file, unit, tria, "Mesh/File");
 }
 
+// The boundary id of the physical group `name` (a surface in 3D, a curve in 2D).
 template <int dim>
-void run_contact(ParameterHandler& prm, CommandContext& context)
+types::boundary_id face_id(const fem::PhysicalNames& names, const std::string& name,
+                           const std::string& parameter)
+{
+  const auto found = names.faces.find(name);
+  if (found == names.faces.end())
+    throw InputError(parameter, "the mesh has no " + std::to_string(dim - 1) +
+                                    "D physical group named '" + name + "'");
+  return static_cast<types::boundary_id>(found->second);
+}
+
+// The bodies and surfaces: the built-in cylinder pair without Mesh/File, else the named mesh.
+template <int dim>
+fem::PhysicalNames
+make_or_read_mesh(ParameterHandler& prm, const fem::ElasticityParameters& elasticity,
+                  contact::ContactProblem<dim>& problem, contact::CylinderPairGeometry& geometry,
+                  double& unit, std::string& mesh_file)
 {
   prm.enter_subsection("Mesh");
-  const std::string mesh_file = prm.get("File");
-  const double unit = prm.get_double("Length unit");
+  mesh_file = prm.get("File");
+  unit = prm.get_double("Length unit");
   const double fine_size = prm.get_double("Built-in fine size") * 1e-3;
   prm.leave_subsection();
-  fem::ElasticityParameters elasticity;
-  fem::LinearSolverParameters linear_solver;
-  contact::ContactParameters contact_parameters;
-  parse_fe_contact_parameters(prm, elasticity, linear_solver, contact_parameters);
-  prm.enter_subsection("Contact");
-  const auto slave_names = split(prm.get("Slave surfaces"), ',');
-  const auto master_names = split(prm.get("Master surfaces"), ',');
-  prm.leave_subsection();
-
-  contact::ContactProblem<dim> problem(context.mpi_communicator, elasticity, linear_solver,
-                                       contact_parameters);
   fem::PhysicalNames names;
-  const bool built_in = mesh_file.empty();
-  contact::CylinderPairGeometry geometry;
-  if (built_in)
-  {
-    geometry.fine_size = fine_size;
-    if (dim == 3)
-      geometry.depth = elasticity.thickness;
-    check_built_in_size(geometry, dim);
-    contact::make_cylinder_pair(geometry, problem.system().triangulation());
-    names.cells = {{"upper", contact::upper_body}, {"lower", contact::lower_body}};
-    names.faces = {{"upper contact", contact::upper_contact},
-                   {"upper top", contact::upper_top},
-                   {"lower contact", contact::lower_contact},
-                   {"lower bottom", contact::lower_bottom}};
-    if (dim == 3)
-      names.faces["extrusion faces"] = contact::extrusion_faces;
-  }
-  else
+  if (!mesh_file.empty())
   {
     names = read_mesh_file<dim>(mesh_file, unit, problem.system().triangulation());
     check_mesh_extent(problem.system().triangulation(), unit);
+    return names;
   }
+  geometry.fine_size = fine_size;
+  if (dim == 3)
+    geometry.depth = elasticity.thickness;
+  check_built_in_size(geometry, dim);
+  contact::make_cylinder_pair(geometry, problem.system().triangulation());
+  names.cells = {{"upper", contact::upper_body}, {"lower", contact::lower_body}};
+  names.faces = {{"upper contact", contact::upper_contact},
+                 {"upper top", contact::upper_top},
+                 {"lower contact", contact::lower_contact},
+                 {"lower bottom", contact::lower_bottom}};
+  if (dim == 3)
+    names.faces["extrusion faces"] = contact::extrusion_faces;
+  return names;
+}
 
-  auto face_id = [&](const std::string& name, const std::string& parameter)
-  {
-    const auto found = names.faces.find(name);
-    if (found == names.faces.end())
-      throw InputError(parameter, "the mesh has no " + std::to_string(dim - 1) +
-                                      "D physical group named '" + name + "'");
-    return static_cast<types::boundary_id>(found->second);
-  };
-
+// Bodies/: one material per named body, in SI units.
+template <int dim>
+std::map<types::material_id, fem::Material> parse_bodies(ParameterHandler& prm,
+                                                         const fem::PhysicalNames& names)
+{
   prm.enter_subsection("Bodies");
   const auto body_names = split(prm.get("Names"), ',');
   const auto moduli = numbers(prm.get("Young's moduli"), "Bodies/Young's moduli");
@@ -277,11 +276,18 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
       throw InputError("Bodies/Poisson ratios", "must lie in (-1, 0.5)");
     materials[found->second] = fem::Material{moduli[b] * 1e9, ratios[b]};
   }
-  problem.system().set_materials(materials, "Bodies/Names");
+  return materials;
+}
 
+// Supports/: fixed faces, prescribed displacements [mm], tractions [MPa], rigid hubs turned by
+// an angle [°] or loaded by a torque [N·m] about an axis [mm].
+template <int dim>
+void add_supports(ParameterHandler& prm, const fem::PhysicalNames& names,
+                  contact::ContactProblem<dim>& problem)
+{
   prm.enter_subsection("Supports");
   for (const auto& name : split(prm.get("Fixed"), ','))
-    problem.add_displacement(face_id(name, "Supports/Fixed"), Tensor<1, dim>(), name);
+    problem.add_displacement(face_id<dim>(names, name, "Supports/Fixed"), Tensor<1, dim>(), name);
   for (const auto& [name, values] :
        named_vectors(prm.get("Displacements"), "Supports/Displacements"))
   {
@@ -291,7 +297,7 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
     Tensor<1, dim> u;
     for (unsigned int c = 0; c < dim; ++c)
       u[c] = values[c] * 1e-3;
-    problem.add_displacement(face_id(name, "Supports/Displacements"), u, name);
+    problem.add_displacement(face_id<dim>(names, name, "Supports/Displacements"), u, name);
   }
   for (const auto& [name, values] : named_vectors(prm.get("Tractions"), "Supports/Tractions"))
   {
@@ -301,7 +307,7 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
     Tensor<1, dim> t;
     for (unsigned int c = 0; c < dim; ++c)
       t[c] = values[c] * 1e6;
-    problem.system().add_traction(face_id(name, "Supports/Tractions"), t);
+    problem.system().add_traction(face_id<dim>(names, name, "Supports/Tractions"), t);
   }
   for (const auto& [key, control, scale] :
        {std::tuple{"Hub rotations", fem::RigidHub<dim>::Control::rotation, M_PI / 180.},
@@ -315,16 +321,27 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
       Point<dim> axis;
       axis[0] = values[1] * 1e-3;
       axis[1] = values[2] * 1e-3;
-      problem.add_rigid_hub(face_id(name, parameter), axis, control, values[0] * scale, name);
+      problem.add_rigid_hub(face_id<dim>(names, name, parameter), axis, control, values[0] * scale,
+                            name);
     }
   }
   prm.leave_subsection();
+}
 
+// Contact/: one pair of the named slave and master surfaces.
+template <int dim>
+void add_contact_pair(ParameterHandler& prm, const fem::PhysicalNames& names,
+                      contact::ContactProblem<dim>& problem)
+{
+  prm.enter_subsection("Contact");
+  const auto slave_names = split(prm.get("Slave surfaces"), ',');
+  const auto master_names = split(prm.get("Master surfaces"), ',');
+  prm.leave_subsection();
   std::vector<types::boundary_id> slave, master;
   for (const auto& name : slave_names)
-    slave.push_back(face_id(name, "Contact/Slave surfaces"));
+    slave.push_back(face_id<dim>(names, name, "Contact/Slave surfaces"));
   for (const auto& name : master_names)
-    master.push_back(face_id(name, "Contact/Master surfaces"));
+    master.push_back(face_id<dim>(names, name, "Contact/Master surfaces"));
   if (slave.empty() || master.empty())
     throw InputError("Contact/Slave surfaces", "name at least one slave and one master surface");
   auto joined = [](const std::vector<std::string>& parts)
@@ -334,19 +351,46 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
       text += (text.empty() ? "" : ",") + part;
     return text;
   };
-  const std::string pair_name = joined(slave_names) + " on " + joined(master_names);
-  problem.add_contact_pair(slave, master, pair_name);
+  problem.add_contact_pair(slave, master, joined(slave_names) + " on " + joined(master_names));
+}
 
-  context.pcout << "contact: " << (built_in ? "built-in Hertz case" : mesh_file) << ", " << dim
-                << "D, FE_Q(" << elasticity.degree << "), "
-                << Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)\n";
-  const contact::ContactResults<dim>& result =
-      built_in ? problem.run() : run_with_unit_hint(problem, unit);
-  // A load far beyond the linear model still returns numbers; refuse them.
-  fem::check_small_strain(problem.system().get_dof_handler(), problem.solution(),
-                          "Supports (the loads)");
+// The built-in 2D case against Hertz with the computed load per length (Johnson 1985, eq.
+// 4.43-4.45).
+template <int dim>
+void report_hertz(Report& report, const contact::ContactResults<dim>& result,
+                  const contact::CylinderPairGeometry& geometry,
+                  const std::map<types::material_id, fem::Material>& materials, double thickness)
+{
+  const double load = std::abs(result.supports.back().force[1]) / thickness;
+  double inverse_modulus = 0;
+  for (const auto& [id, m] : materials)
+    inverse_modulus += (1. - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
+  const kinematics::HertzLineContact hertz = kinematics::hertz_line_contact(
+      load, geometry.upper_radius, geometry.lower_radius, 1. / inverse_modulus);
+  const auto& pair = result.pairs.front();
+  report.add_value("load_per_length", load * 1e-3, "N/mm", "Hertz load P");
+  std::vector<double> x, p;
+  for (const auto& point : pair.points)
+    if (point.state != contact::NodeState::open)
+    {
+      x.push_back(point.position[0]);
+      p.push_back(point.pressure);
+    }
+  const contact::HertzLineContact fitted = contact::fit_hertz_profile(x, p);
+  report.add_value("closed_half_extent", 0.5 * pair.contact_length * 1e3, "mm",
+                   "half the extent of the closed nodes");
+  report.add_compared_value("half_width", fitted.half_width * 1e3, hertz.half_width * 1e3, "mm",
+                            "contact half-width (fit of the Hertz profile)",
+                            "Hertz, Johnson 1985 eq. 4.43");
+  report.add_compared_value("peak_pressure", pair.max_pressure * 1e-6, hertz.peak_pressure * 1e-6,
+                            "MPa", "peak pressure", "Hertz, Johnson 1985 eq. 4.45");
+}
 
-  Report& report = context.report;
+// Cost, pairs, supports and the active-set history of a solved problem.
+template <int dim>
+void report_contact(Report& report, const contact::ContactResults<dim>& result,
+                    const fem::LinearSolverParameters& linear_solver)
+{
   report.add_text("method", "dual mortar, primal-dual active set, Coulomb as successive "
                             "Tresca problems; " +
                                 fem::to_string(linear_solver.method));
@@ -386,37 +430,18 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
       report.add_value(key + "_rotation", support.rotation * 1e6, "µrad",
                        support.name + ": hub rotation");
   }
-  if (built_in && dim == 2)
-  {
-    // Hertz with the computed load per length (Johnson 1985, eq. 4.43-4.45).
-    const double load = std::abs(result.supports.back().force[1]) / elasticity.thickness;
-    double inverse_modulus = 0;
-    for (const auto& [id, m] : materials)
-      inverse_modulus += (1. - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
-    const kinematics::HertzLineContact hertz = kinematics::hertz_line_contact(
-        load, geometry.upper_radius, geometry.lower_radius, 1. / inverse_modulus);
-    const auto& pair = result.pairs.front();
-    report.add_value("load_per_length", load * 1e-3, "N/mm", "Hertz load P");
-    std::vector<double> x, p;
-    for (const auto& point : pair.points)
-      if (point.state != contact::NodeState::open)
-      {
-        x.push_back(point.position[0]);
-        p.push_back(point.pressure);
-      }
-    const contact::HertzLineContact fitted = contact::fit_hertz_profile(x, p);
-    report.add_value("closed_half_extent", 0.5 * pair.contact_length * 1e3, "mm",
-                     "half the extent of the closed nodes");
-    report.add_compared_value("half_width", fitted.half_width * 1e3, hertz.half_width * 1e3, "mm",
-                              "contact half-width (fit of the Hertz profile)",
-                              "Hertz, Johnson 1985 eq. 4.43");
-    report.add_compared_value("peak_pressure", pair.max_pressure * 1e-6, hertz.peak_pressure * 1e-6,
-                              "MPa", "peak pressure", "Hertz, Johnson 1985 eq. 4.45");
-  }
-  ReportTable& history =
-      report.add_table("active_set_history",
-                       {"load_step", "iteration", "closed", "stick", "slip", "changed", "time"},
-                       {"-", "-", "-", "-", "-", "-", "s"});
+}
+
+// The active-set history table, and with -o the surface CSV, the VTU fields and the chart.
+template <int dim>
+void write_contact_outputs(ParameterHandler& prm, CommandContext& context,
+                           const contact::ContactProblem<dim>& problem,
+                           const contact::ContactResults<dim>& result)
+{
+  ReportTable& history = context.report.add_table(
+      "active_set_history",
+      {"load_step", "iteration", "closed", "stick", "slip", "changed", "time"},
+      {"-", "-", "-", "-", "-", "-", "s"});
   for (const auto& record : result.history)
     history.add_row({double(record.load_step), double(record.iteration), double(record.n_closed),
                      double(record.n_stick), double(record.n_slip), double(record.n_changed),
@@ -453,6 +478,41 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
   if (context.is_root())
     context.plot("plot_contact.py", {csv}, "contact_pressure.png",
                  "contact pressure along the surface");
+}
+
+template <int dim>
+void run_contact(ParameterHandler& prm, CommandContext& context)
+{
+  fem::ElasticityParameters elasticity;
+  fem::LinearSolverParameters linear_solver;
+  contact::ContactParameters contact_parameters;
+  parse_fe_contact_parameters(prm, elasticity, linear_solver, contact_parameters);
+  contact::ContactProblem<dim> problem(context.mpi_communicator, elasticity, linear_solver,
+                                       contact_parameters);
+  contact::CylinderPairGeometry geometry;
+  double unit = 1.;
+  std::string mesh_file;
+  const fem::PhysicalNames names =
+      make_or_read_mesh(prm, elasticity, problem, geometry, unit, mesh_file);
+  const bool built_in = mesh_file.empty();
+  const auto materials = parse_bodies<dim>(prm, names);
+  problem.system().set_materials(materials, "Bodies/Names");
+  add_supports(prm, names, problem);
+  add_contact_pair(prm, names, problem);
+
+  context.pcout << "contact: " << (built_in ? "built-in Hertz case" : mesh_file) << ", " << dim
+                << "D, FE_Q(" << elasticity.degree << "), "
+                << Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)\n";
+  const contact::ContactResults<dim>& result =
+      built_in ? problem.run() : run_with_unit_hint(problem, unit);
+  // A load far beyond the linear model still returns numbers; refuse them.
+  fem::check_small_strain(problem.system().get_dof_handler(), problem.solution(),
+                          "Supports (the loads)");
+
+  report_contact(context.report, result, linear_solver);
+  if (built_in && dim == 2)
+    report_hertz(context.report, result, geometry, materials, elasticity.thickness);
+  write_contact_outputs(prm, context, problem, result);
 }
 
 void run(ParameterHandler& prm, CommandContext& context)
