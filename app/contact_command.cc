@@ -215,38 +215,44 @@ types::boundary_id face_id(const fem::PhysicalNames& names, const std::string& n
   return static_cast<types::boundary_id>(found->second);
 }
 
+// The mesh of the problem and what the rest of the command needs to know about it.
+struct ContactMesh
+{
+  fem::PhysicalNames names;
+  std::string file;                       // Mesh/File; empty: the built-in cylinder pair
+  double unit = 1.;                       // m per mesh length unit
+  contact::CylinderPairGeometry geometry; // the built-in pair's (for the Hertz comparison)
+};
+
 // The bodies and surfaces: the built-in cylinder pair without Mesh/File, else the named mesh.
 template <int dim>
-fem::PhysicalNames
-make_or_read_mesh(ParameterHandler& prm, const fem::ElasticityParameters& elasticity,
-                  contact::ContactProblem<dim>& problem, contact::CylinderPairGeometry& geometry,
-                  double& unit, std::string& mesh_file)
+ContactMesh make_or_read_mesh(ParameterHandler& prm, const fem::ElasticityParameters& elasticity,
+                              contact::ContactProblem<dim>& problem)
 {
+  ContactMesh mesh;
   prm.enter_subsection("Mesh");
-  mesh_file = prm.get("File");
-  unit = prm.get_double("Length unit");
-  const double fine_size = prm.get_double("Built-in fine size") * 1e-3;
+  mesh.file = prm.get("File");
+  mesh.unit = prm.get_double("Length unit");
+  mesh.geometry.fine_size = prm.get_double("Built-in fine size") * 1e-3;
   prm.leave_subsection();
-  fem::PhysicalNames names;
-  if (!mesh_file.empty())
+  if (!mesh.file.empty())
   {
-    names = read_mesh_file<dim>(mesh_file, unit, problem.system().triangulation());
-    check_mesh_extent(problem.system().triangulation(), unit);
-    return names;
+    mesh.names = read_mesh_file<dim>(mesh.file, mesh.unit, problem.system().triangulation());
+    check_mesh_extent(problem.system().triangulation(), mesh.unit);
+    return mesh;
   }
-  geometry.fine_size = fine_size;
   if (dim == 3)
-    geometry.depth = elasticity.thickness;
-  check_built_in_size(geometry, dim);
-  contact::make_cylinder_pair(geometry, problem.system().triangulation());
-  names.cells = {{"upper", contact::upper_body}, {"lower", contact::lower_body}};
-  names.faces = {{"upper contact", contact::upper_contact},
-                 {"upper top", contact::upper_top},
-                 {"lower contact", contact::lower_contact},
-                 {"lower bottom", contact::lower_bottom}};
+    mesh.geometry.depth = elasticity.thickness;
+  check_built_in_size(mesh.geometry, dim);
+  contact::make_cylinder_pair(mesh.geometry, problem.system().triangulation());
+  mesh.names.cells = {{"upper", contact::upper_body}, {"lower", contact::lower_body}};
+  mesh.names.faces = {{"upper contact", contact::upper_contact},
+                      {"upper top", contact::upper_top},
+                      {"lower contact", contact::lower_contact},
+                      {"lower bottom", contact::lower_bottom}};
   if (dim == 3)
-    names.faces["extrusion faces"] = contact::extrusion_faces;
-  return names;
+    mesh.names.faces["extrusion faces"] = contact::extrusion_faces;
+  return mesh;
 }
 
 // Bodies/: one material per named body, in SI units.
@@ -489,29 +495,25 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
   parse_fe_contact_parameters(prm, elasticity, linear_solver, contact_parameters);
   contact::ContactProblem<dim> problem(context.mpi_communicator, elasticity, linear_solver,
                                        contact_parameters);
-  contact::CylinderPairGeometry geometry;
-  double unit = 1.;
-  std::string mesh_file;
-  const fem::PhysicalNames names =
-      make_or_read_mesh(prm, elasticity, problem, geometry, unit, mesh_file);
-  const bool built_in = mesh_file.empty();
-  const auto materials = parse_bodies<dim>(prm, names);
+  const ContactMesh mesh = make_or_read_mesh(prm, elasticity, problem);
+  const bool built_in = mesh.file.empty();
+  const auto materials = parse_bodies<dim>(prm, mesh.names);
   problem.system().set_materials(materials, "Bodies/Names");
-  add_supports(prm, names, problem);
-  add_contact_pair(prm, names, problem);
+  add_supports(prm, mesh.names, problem);
+  add_contact_pair(prm, mesh.names, problem);
 
-  context.pcout << "contact: " << (built_in ? "built-in Hertz case" : mesh_file) << ", " << dim
+  context.pcout << "contact: " << (built_in ? "built-in Hertz case" : mesh.file) << ", " << dim
                 << "D, FE_Q(" << elasticity.degree << "), "
                 << Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)\n";
   const contact::ContactResults<dim>& result =
-      built_in ? problem.run() : run_with_unit_hint(problem, unit);
+      built_in ? problem.run() : run_with_unit_hint(problem, mesh.unit);
   // A load far beyond the linear model still returns numbers; refuse them.
   fem::check_small_strain(problem.system().get_dof_handler(), problem.solution(),
                           "Supports (the loads)");
 
   report_contact(context.report, result, linear_solver);
   if (built_in && dim == 2)
-    report_hertz(context.report, result, geometry, materials, elasticity.thickness);
+    report_hertz(context.report, result, mesh.geometry, materials, elasticity.thickness);
   write_contact_outputs(prm, context, problem, result);
 }
 
