@@ -123,11 +123,13 @@ private:
 // stopped at different points and leave a collective call waiting.
 void interruption_point();
 
-// Collective: item(i) for i = 0 ... n − 1, rank r taking r, r + ranks, ... (neighbouring items
-// cost about the same). When an item fails, every rank stops at its next interruption point or
-// item, and every rank throws the failure of the lowest item index among those that failed
-// (items stopped early do not count); returns only when every item succeeded. item(i) may
-// throw any exception of the error contract; results cross ranks afterwards (all_gather).
+// Collective: item(i) for i = 0 ... n − 1, each item on one rank: the ranks take items in
+// increasing order from a shared counter as they become free (which rank solves which item
+// varies from run to run; items that cost more than others do not leave a rank idle). When an item
+// fails, every rank stops at its next interruption point or item, and every rank throws the failure
+// of the lowest item index among those that failed (items stopped early do not count); returns only
+// when every item succeeded. item(i) may throw any exception of the error contract; results cross
+// ranks afterwards (all_gather).
 void distribute_items(MPI_Comm communicator, unsigned int n,
                       const std::function<void(unsigned int)>& item);
 

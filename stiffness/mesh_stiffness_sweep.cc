@@ -92,11 +92,10 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   GearMeshStiffnessSettings warm = settings;
   warm.warm_start = std::make_shared<std::vector<contact::ContactZone>>();
 
-  // Positions round-robin over the ranks (neighbouring positions cost about the same, so each
-  // rank gets a fair share); a failure stops every rank within about one contact iteration
-  // (fem::distribute_items), and the first failing position decides what every rank throws.
+  // Each rank takes the next unsolved position as soon as it is free (fem::distribute_items);
+  // a failure stops every rank within about one contact iteration, and the first failing
+  // position decides what every rank throws.
   std::vector<std::pair<unsigned int, GearMeshStiffnessResult>> mine;
-  const unsigned int my_share = (n - std::min(rank, n) + n_ranks - 1) / n_ranks;
   fem::distribute_items(
       mpi_communicator, n,
       [&](const unsigned int i)
@@ -111,8 +110,8 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                    format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
                    "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
                    std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
-                   " s [rank 0: " + std::to_string(mine.size()) + "/" + std::to_string(my_share) +
-                   "]");
+                   " s [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) +
+                   " solved]");
       });
 
   // Every rank receives every position's result.

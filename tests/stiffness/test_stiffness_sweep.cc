@@ -51,8 +51,12 @@ TEST(StiffnessSweep, FrictionlessTorqueRatioIsTheBaseRadiusRatio)
     EXPECT_NEAR(r.torque_ratio, expected, 5e-4 * expected);
     on_rank_1 += sweep.rank_of_position[i] == 1;
   }
-  // Both ranks solved a share of the positions.
-  EXPECT_EQ(on_rank_1, 3u);
+  // Both ranks solved a share of the positions (which share varies: free ranks take the next).
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 2)
+  {
+    EXPECT_GE(on_rank_1, 1u);
+    EXPECT_LE(on_rank_1, 5u);
+  }
 }
 
 // One position solved by both ranks together (METIS partition of the scene, distributed PETSc
