@@ -32,6 +32,9 @@ mpi=(mpirun --allow-run-as-root --oversubscribe)
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 friction=(--set "Contact/Friction coefficient=0.01")
 
+# The median of its arguments.
+median() { printf '%s\n' "$@" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+
 # Median wall time (s) of `runs` runs of a command.
 median_seconds() {
   local times=()
@@ -42,7 +45,7 @@ median_seconds() {
     end=$(date +%s.%N)
     times+=("$(echo "$end - $start" | bc)")
   done
-  printf '%s\n' "${times[@]}" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'
+  median "${times[@]}"
 }
 
 # The value of a "<label>   <number>  s" line of a command's text report.
@@ -75,7 +78,6 @@ echo "| single pair 2D, contact solve [s] (one run) | ${contact[0]} | ${contact[
 
 sweep() { "${mpi[@]}" -np "$1" "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
   --set "Stiffness/sweep positions=$2" "${friction[@]}" "${@:3}"; }
-median() { printf '%s\n' "$@" | sort -n | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 # 1 rank and 2 ranks alternately, `runs` rounds: medians of the process wall time and of the
 # sweep's own wall time (the report's "wall time of the sweep": first position to the results
 # gathered on every rank, without the process start-up (mpirun, ~200 shared libraries, MPI) and

@@ -237,7 +237,8 @@ TEST(ParallelStop, LowestFailingItemWinsAndTheNextLoopStartsClean)
 
 TEST(DistributedLoop, AFreeRankTakesTheItemsOfABusyOne)
 {
-  // Item 0 is slow: while its rank works on it, the other rank takes every other item, where a
+  // Item 0 is slow (2 s, far beyond the few milliseconds the other rank needs, even on a loaded
+  // machine): while its rank works on it, the other rank takes all the other items, where a
   // fixed round-robin share would have left it idle after items 1, 3, 5, 7.
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 2)
     GTEST_SKIP() << "needs 2 ranks";
@@ -249,7 +250,6 @@ TEST(DistributedLoop, AFreeRankTakesTheItemsOfABusyOne)
                             std::this_thread::sleep_for(std::chrono::seconds(2));
                           done.push_back(i);
                         });
-  // (2 s: far beyond the few milliseconds the other rank needs, even on a loaded machine.)
   const auto all = dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, done);
   const unsigned int slow = (!all[0].empty() && all[0].front() == 0) ? 0 : 1;
   EXPECT_EQ(all[slow], std::vector<unsigned int>{0});
@@ -265,8 +265,8 @@ TEST(ParallelStop, FailingSweepThrowsTheFirstFailingPositionOnEveryRank)
 {
   // One active-set iteration cannot converge (the first one always changes the closed set):
   // every position fails in its contact solve, one rank with position 1, the other with
-  // position 2, and every rank throws position 1's SolverFailure (the command exits 3 with that one
-  // line).
+  // position 2, and every rank throws position 1's SolverFailure (the command exits 3 with that
+  // one line).
   stiffness::GearMeshStiffnessSettings settings;
   settings.contact.max_iterations = 1;
   stiffness::StiffnessSweepSpec spec;
