@@ -1,4 +1,4 @@
-// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair (gear-data.md
+// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair (docs/references.md
 // §1; dynamics/cai_stiffness.h) to FE contact results over the whole engagement A..E.
 //
 //   gearstiff cai -o out                                   scale only, published shape kept
@@ -27,8 +27,8 @@ namespace ansys = gearstiff::kinematics::split_path_published; // the published 
 using namespace gearstiff;
 using namespace gearstiff::app;
 
-// gear-data.md §1: the paper scales the Cai curve so one pair's peak equals k'_j (ANSYS).
-const std::string paper_source = "gear-data.md §1 (Reszuta & Drewniak 2015: Cai peak = k'_j)";
+// docs/references.md §1: the paper scales the Cai curve so one pair's peak equals k'_j (ANSYS).
+const std::string paper_source = "docs/references.md §1 (Reszuta & Drewniak 2015: Cai peak = k'_j)";
 
 void declare_parameters(dealii::ParameterHandler& prm)
 {
@@ -144,7 +144,7 @@ const CommandRegistration registration(Command{
     "cai", "calibrate the Cai pair-stiffness curve to FE contact results (writes dynamics input)",
     "Runs an FE stiffness sweep over one base pitch (see `gearstiff stiffness`), splits the mesh\n"
     "stiffness into the pairs' stiffnesses by their load shares (one deflection, so k_j =\n"
-    "share_j·k), and fits the Cai curve of gear-data.md §1 (scale, optionally its shape) by\n"
+    "share_j·k), and fits the Cai curve of docs/references.md §1 (scale, optionally its shape) by\n"
     "least squares (dynamics module). Writes cai_calibrated.prm for `gearstiff dynamics` and a\n"
     "chart of FE points, calibrated and paper-scaled Cai curves.",
     declare_parameters, run});

@@ -1,5 +1,5 @@
 // `gearstiff cycloid`: the corrected equidistant of a cycloid (Cyclo) disc for a list of contact
-// arc ratios ε (gear-data.md §4, Chmurawa & Łokiec), solved with Levenberg–Marquardt, with the
+// arc ratios ε (docs/references.md §4, Chmurawa & Łokiec), solved with Levenberg–Marquardt, with the
 // roller clearances of each corrected disc and the published ε = 0.27 column beside ours.
 //
 //   gearstiff cycloid                                      the published disc, ε = 0.27
@@ -27,7 +27,7 @@ using dealii::Patterns::Double;
 using dealii::Patterns::Integer;
 using dealii::Patterns::List;
 
-// gear-data.md §4: the one published correction column (ε = 0.27, Δr = 0.01 mm).
+// docs/references.md §4: the one published correction column (ε = 0.27, Δr = 0.01 mm).
 struct PublishedColumn
 {
   double alpha_1 = 3.484203, alpha_ok_1 = 3.391341, alpha_2 = 8.599992, alpha_ok_2 = 8.567535; // °
@@ -126,7 +126,7 @@ void run(ParameterHandler& prm, CommandContext& context)
         std::abs(nominal.roller_radius - 8.5 * mm) < 1e-12;
     if (published_case)
     {
-      const std::string source = "gear-data.md §4 (Chmurawa & Łokiec), ε = 0.27";
+      const std::string source = "docs/references.md §4 (Chmurawa & Łokiec), ε = 0.27";
       report.add_compared_value("alpha_1", c.alpha_1 / degree, published.alpha_1, "deg", "α1",
                                 source);
       report.add_compared_value("alpha_ok_1", c.alpha_ok_1 / degree, published.alpha_ok_1, "deg",
@@ -175,7 +175,7 @@ void run(ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(
     {"cycloid", "cycloid disc: corrected equidistant (Levenberg-Marquardt), roller clearances",
      "Computes the correction (r_k, q_k, delta and the contact-arc angles) of a cycloid disc's\n"
-     "equidistant for each contact arc ratio epsilon, after Chmurawa & Lokiec (gear-data.md §4),\n"
+     "equidistant for each contact arc ratio epsilon, after Chmurawa & Lokiec (docs/references.md §4),\n"
      "with the roller clearances of each corrected disc. The built-in case is the published disc\n"
      "(r = 96 mm, e = 3 mm, q = 8.5 mm, z_k = 20) whose epsilon = 0.27 column is compared.\n"
      "With -o: disc outlines (points, outward normals, arc length) as CSV.",

@@ -2,7 +2,7 @@
 // FE contact solver — roller forces P_i, output-pin forces Q_j, eccentric-bearing force R, torque
 // balances, loaded counts, contact pressures, disc stress, output rotation — for the nominal and
 // the corrected disc profile, beside the analytic rigid-disc estimate and the published values of
-// gear-data.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque ramp;
+// docs/references.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque ramp;
 // optionally a crank-angle sweep. Load case and its static equivalence: stiffness/cycloid_loads.h.
 //
 //   gearstiff cycloid-loads                                  §4 drive, nominal + ε = 0.27
@@ -28,8 +28,8 @@ namespace
 using namespace gearstiff;
 using namespace gearstiff::app;
 
-const std::string paper = "gear-data.md §4 (Chmurawa & Łokiec, analytic)";
-// gear-data.md §4: analytic P_max = 1711 N, Q_max = 3776 N, eccentric reaction R = 10.3 kN;
+const std::string paper = "docs/references.md §4 (Chmurawa & Łokiec, analytic)";
+// docs/references.md §4: analytic P_max = 1711 N, Q_max = 3776 N, eccentric reaction R = 10.3 kN;
 // rigid-body ADAMS ≈ 2200 N and ≈ 3800 N.
 constexpr double paper_max_roller_force = 1711.; // N
 constexpr double paper_max_pin_force = 3776.;    // N
@@ -109,7 +109,7 @@ void report_position(Report& report, const stiffness::CycloidLoadResult& r,
     report.add_compared_value(prefix + "max_pin_force", r.max_pin_force, paper_max_pin_force, "N",
                               label + ": Q_max (FE)", paper);
     report.add_compared_value(prefix + "bearing_force", r.bearing_force, paper_bearing_force, "N",
-                              label + ": eccentric-bearing force R (FE)", "gear-data.md §4");
+                              label + ": eccentric-bearing force R (FE)", "docs/references.md §4");
   }
   else
   {
@@ -406,7 +406,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(Command{
     "cycloid-loads",
     "cycloid drive under load (FE contact): roller and pin forces, bearing force, stiffness",
-    "Solves the cycloid (Cyclo) drive of gear-data.md §4 at one crank angle with the FE contact\n"
+    "Solves the cycloid (Cyclo) drive of docs/references.md §4 at one crank angle with the FE contact\n"
     "solver: disc on its eccentric bearing (free to turn), rollers on fixed pins, output pins\n"
     "tied to one rigid output member carrying M_c; one contact pair per roller and per pin.\n"
     "Reports P_i, Q_j, the bearing force R and its angle, torque balances, loaded counts, peak\n"

@@ -38,7 +38,7 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
 
   prm.enter_subsection("Cycloid loads");
   prm.declare_entry("output torque", "440", Double(),
-                    "M_c on the output member per disc (N·m), > 0; gear-data.md §4: 880 N·m "
+                    "M_c on the output member per disc (N·m), > 0; docs/references.md §4: 880 N·m "
                     "shared by two discs");
   prm.declare_entry("crank angle", "0", Double(-360., 360.),
                     "phi_h, direction of the eccentric: disc centre at e(cos phi_h, sin phi_h) "

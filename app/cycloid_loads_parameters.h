@@ -2,7 +2,7 @@
 // for `gearstiff cycloid-loads`: the ring ("Cycloid disc"), the disc's bore, output pins and
 // width ("Cycloid scene", mm), the mesh ("Mesh"), the FE model ("Finite elements", "Linear
 // solver", "Contact") and the load case, profiles, sweep and torque ramp ("Cycloid loads").
-// Defaults: the drive of gear-data.md §4 (Chmurawa & Łokiec) with M_c = 440 N·m per disc,
+// Defaults: the drive of docs/references.md §4 (Chmurawa & Łokiec) with M_c = 440 N·m per disc,
 // plane stress, frictionless, nominal and ε = 0.27 corrected profiles.
 #pragma once
 

@@ -12,7 +12,7 @@
 
 namespace gearstiff::app
 {
-// Entries with the defaults of `defaults` (SI; the ring's defaults are gear-data.md §4).
+// Entries with the defaults of `defaults` (SI; the ring's defaults are docs/references.md §4).
 void declare_cycloid_scene_parameters(dealii::ParameterHandler& prm,
                                       const geometry::CycloidSceneSpec& defaults);
 // Sets the ring and the declared members of `spec` (SI); leaves the others as they are.

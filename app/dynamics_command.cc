@@ -2,7 +2,7 @@
 // the dynamic factor K_v (simulated, and ISO 6336-1 method B beside it), the mesh-force spectrum
 // and the K_v resonance chart over input speed.
 //
-//   gearstiff dynamics                 the built-in split-path gearbox of gear-data.md §1
+//   gearstiff dynamics                 the built-in split-path gearbox of docs/references.md §1
 //                                      (Reszuta & Drewniak 2015): T1 = 49.4 N·m at 1450 rpm
 //   gearstiff dynamics case.prm        any tree-shaped train (Train, Gear n, Mesh n sections)
 //   gearstiff dynamics --set "Simulation/integrator=HHT-alpha" --set "Speed sweep/points=0"
@@ -31,9 +31,9 @@ using namespace gearstiff;
 using namespace gearstiff::app;
 using namespace gearstiff::dynamics;
 
-// gear-data.md §1: nominal force per mesh F_cn = 0.5·T1/(r1·cos α_t) = 1001.27 N.
+// docs/references.md §1: nominal force per mesh F_cn = 0.5·T1/(r1·cos α_t) = 1001.27 N.
 constexpr double published_nominal_force = 1001.27; // [N]
-const std::string published_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
+const std::string published_source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
 
 // ISO 6336-1 method B for mesh m of `model` (the split path: at the driver's speed, its inertia
 // shared equally among the meshes it drives, see iso6336_dynamic_factor.h; a train: the pair in
@@ -457,6 +457,6 @@ const CommandRegistration registration(Command{
     "method), adaptive Dormand-Prince 5(4), implicit HHT-alpha. Reports K_v = F/F_nominal over a\n"
     "steady-state window (with the window, phase and start), the mesh-force spectrum, a K_v\n"
     "speed sweep, and ISO 6336-1 method B K_v beside it. Built-in case: the split-path gearbox\n"
-    "of Reszuta & Drewniak 2015 (gear-data.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° apart.",
+    "of Reszuta & Drewniak 2015 (docs/references.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° apart.",
     declare_dynamics_parameters, run});
 } // namespace

@@ -253,7 +253,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("input speed", format_number(data.input_speed_rpm, 10), Double(0.),
                     "n1, nominal speed of gear 1 (rpm); the others follow from the base radii");
   prm.declare_entry("published reference", "true", Bool(),
-                    "print the published split-path values (gear-data.md §1, Reszuta & "
+                    "print the published split-path values (docs/references.md §1, Reszuta & "
                     "Drewniak 2015) beside ours; set false for other trains");
   prm.declare_entry("model", "gears and meshes", Selection("gears and meshes|train"),
                     "'gears and meshes': the sections Gear n / Mesh n (a tree, default: the "

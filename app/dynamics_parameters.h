@@ -50,7 +50,7 @@ struct DynamicsParameters
   dynamics::SimulationSettings simulation;
   double output_interval = 0.;     // [s] spacing of the time-series CSV rows
   double initial_position = 0.;    // [base pitches] mesh 1 at t = 0
-  bool published_reference = true; // compare with gear-data.md §1
+  bool published_reference = true; // compare with docs/references.md §1
   SweepParameters sweep;
   IsoParameters iso;
 };

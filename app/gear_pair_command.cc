@@ -1,5 +1,5 @@
 // `gearstiff gear-pair [pair.prm]`: involute pair geometry (ISO 21771) and ISO 6336-1 method B
-// stiffness. Default: the split-path pair of gear-data.md §1, reported beside the published
+// stiffness. Default: the split-path pair of docs/references.md §1, reported beside the published
 // values.
 //
 //   gearstiff gear-pair
@@ -18,7 +18,7 @@ namespace gearstiff::app
 {
 namespace
 {
-const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
+const std::string split_path_source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
 
 bool same_gear(const kinematics::GearSpec& a, const kinematics::GearSpec& b)
 {
@@ -94,7 +94,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                    "wheel tip to pinion root clearance");
   if (published)
     report.add_text("tip_diameters", "built-in case: both standard tip radii reduced by the same "
-                                     "amount so that ε_α = 1.500 (gear-data.md §1 note)");
+                                     "amount so that ε_α = 1.500 (docs/references.md §1 note)");
   for (std::size_t i = 0; i < pair.warnings.size(); ++i)
     report.add_text("warning_" + std::to_string(i + 1), pair.warnings[i]);
 
@@ -150,7 +150,7 @@ const CommandRegistration registration(Command{
     "single/double contact zones along the line of action, tip thickness, undercut and\n"
     "interference checks; then ISO 6336-1 method B stiffness c', c_γα, c_γβ with C_M, C_R, C_B "
     "and\n"
-    "the validity ranges. Default: the split-path pair of gear-data.md §1 (Reszuta & Drewniak\n"
+    "the validity ranges. Default: the split-path pair of docs/references.md §1 (Reszuta & Drewniak\n"
     "2015), compared with the published values.",
     declare_gear_pair_parameters, run});
 } // namespace

@@ -14,7 +14,7 @@
 
 namespace gearstiff::app
 {
-// Subsection "Cycloid disc": z_k, r, e, q of gear-data.md §4 (Chmurawa & Łokiec) by default.
+// Subsection "Cycloid disc": z_k, r, e, q of docs/references.md §4 (Chmurawa & Łokiec) by default.
 void declare_cycloid_disc_parameters(dealii::ParameterHandler& prm);
 geometry::CycloidDiscSpec parse_cycloid_disc_parameters(dealii::ParameterHandler& prm);
 
@@ -35,7 +35,7 @@ void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
 void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
 
 // "Young's modulus" [GPa] and "Poisson's ratio" [-] of `bodies` ("both gears") in the current
-// subsection; steel by default (gear-data.md publishes neither). parse_ returns them in SI
+// subsection; steel by default (docs/references.md publishes neither). parse_ returns them in SI
 // (E in Pa, ν).
 void declare_elastic_constants(dealii::ParameterHandler& prm, const std::string& bodies);
 void parse_elastic_constants(dealii::ParameterHandler& prm, double& young_modulus,

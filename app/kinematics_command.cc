@@ -1,6 +1,6 @@
 // `gearstiff kinematics [train.prm]`: speeds of every member of a gear train from its Willis
 // equations, efficiency and statics by the torque method, forces on planet axes, reduced
-// inertia. Default: the bi-planetary train of gear-data.md §2, reported beside the published
+// inertia. Default: the bi-planetary train of docs/references.md §2, reported beside the published
 // values.
 //
 //   gearstiff kinematics
@@ -21,7 +21,7 @@ namespace gearstiff::app
 {
 namespace
 {
-const std::string source = "gear-data.md §2 (Drewniak, Garlicka, Kolber 2016)";
+const std::string source = "docs/references.md §2 (Drewniak, Garlicka, Kolber 2016)";
 
 bool same_text(const kinematics::GearTrainText& a, const kinematics::GearTrainText& b)
 {
@@ -123,7 +123,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                         : "");
     if (published)
       report.add_text("planet_6_force",
-                      "gear-data.md §2: the paper's printed formula for the "
+                      "docs/references.md §2: the paper's printed formula for the "
                       "force on planet 6 does not give its printed value; the "
                       "value above follows from the torque balance (m_67 = 4 mm)");
     if (published)
@@ -181,7 +181,7 @@ const CommandRegistration registration(Command{
     "member's speed (under- or over-constrained trains are rejected with the reason). With one\n"
     "input and an output: statics by the torque method with pair efficiencies from μ_z, train\n"
     "efficiency, tooth forces and forces on planet axes; reduced inertia when inertias/masses\n"
-    "are given. Default: the bi-planetary train of gear-data.md §2 (Drewniak et al. 2016),\n"
+    "are given. Default: the bi-planetary train of docs/references.md §2 (Drewniak et al. 2016),\n"
     "compared with the published values.",
     declare_train_parameters, run});
 } // namespace

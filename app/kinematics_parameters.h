@@ -12,7 +12,7 @@
 
 namespace gearstiff::app
 {
-// Defaults: the split-path pair of gear-data.md §1 (kinematics::split_path_pair()).
+// Defaults: the split-path pair of docs/references.md §1 (kinematics::split_path_pair()).
 void declare_gear_pair_parameters(dealii::ParameterHandler& prm);
 // Converts to SI; the checks that need the whole pair are in kinematics::compute_gear_pair.
 kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm);
@@ -26,7 +26,7 @@ struct TrainParameters
   double tooth_friction = 0.; // -, μ_z for the pair efficiencies
   std::string reduce_to;      // member the inertia is reduced to ("": the first input)
 };
-// Defaults: the bi-planetary train of gear-data.md §2.
+// Defaults: the bi-planetary train of docs/references.md §2.
 void declare_train_parameters(dealii::ParameterHandler& prm);
 TrainParameters parse_train_parameters(dealii::ParameterHandler& prm);
 } // namespace gearstiff::app

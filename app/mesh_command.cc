@@ -1,6 +1,6 @@
 // `gearstiff mesh [scene.prm]`: writes the FE mesh of one scene (ASCII .msh 4.1, all quadrilateral
 // in 2D, hexahedra extruded over the face width in 3D) and reports its ids, extent, predicted
-// contacts, cell counts, quality and timings. Default: the split-path pair of gear-data.md §1 at
+// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1 at
 // the single-pair position (pitch point).
 //
 //   gearstiff mesh -o out                                        out/scene.msh, 2D, single pair
@@ -34,7 +34,7 @@ namespace
 using namespace gearstiff;
 using namespace gearstiff::app;
 
-const std::string split_path_source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
+const std::string split_path_source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
 
 // The file format and the CalculiX/Abaqus deck's own choices (the scene supplies the rest).
 void declare_deck_parameters(ParameterHandler& prm)
@@ -50,11 +50,11 @@ void declare_deck_parameters(ParameterHandler& prm)
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
   prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks or the cylinders [-] (gear-data.md §1: 0.01; "
+                    "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
                     "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
                     "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
-                    "(gear-data.md §4: 440)");
+                    "(docs/references.md §4: 440)");
   prm.declare_entry("penalty factor", "50", Double(1e-3),
                     "contact penalty slope K = factor · E / h_c [-]");
   prm.leave_subsection();
@@ -89,7 +89,7 @@ void declare_parameters(ParameterHandler& prm)
                     "also mark the unloaded flanks as candidate contact surfaces");
   prm.declare_entry("pinion torque", "49.4", Double(0.),
                     "pinion torque T1 for the Hertz estimate of the contact size [N·m] "
-                    "(gear-data.md §1: 7.5 kW at 1450 rpm)");
+                    "(docs/references.md §1: 7.5 kW at 1450 rpm)");
   declare_elastic_constants(prm, "both gears");
   prm.leave_subsection();
 
@@ -115,7 +115,7 @@ void declare_parameters(ParameterHandler& prm)
                     "disc rotation ψ about its own centre (degrees); the disc centre follows "
                     "the eccentric with the ring fixed");
   prm.declare_entry("roller force", "1711", Double(0.),
-                    "roller force for the Hertz estimate of h_c (N; gear-data.md §4 P_max)");
+                    "roller force for the Hertz estimate of h_c (N; docs/references.md §4 P_max)");
   declare_elastic_constants(prm, "the disc and the rollers");
   prm.leave_subsection();
 

@@ -1,4 +1,4 @@
-// `gearstiff run`: the whole chain on the built-in split-path gearbox of gear-data.md §1
+// `gearstiff run`: the whole chain on the built-in split-path gearbox of docs/references.md §1
 // (Reszuta & Drewniak 2015), no input file needed:
 //
 //   gear geometry (kinematics) → ISO 6336-1 stiffness → scene meshes and frictional contact
@@ -31,8 +31,8 @@ namespace ansys = gearstiff::kinematics::split_path_published; // the published 
 using namespace gearstiff;
 using namespace gearstiff::app;
 
-const std::string source = "gear-data.md §1 (Reszuta & Drewniak 2015)";
-const std::string iso_source = "gear-data.md §5 (ISO 6336-1 method B, ≈ 330 N/µm)";
+const std::string source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
+const std::string iso_source = "docs/references.md §5 (ISO 6336-1 method B, ≈ 330 N/µm)";
 constexpr double published_mean = 449.9e6; // N/m, k_γ = k'_j·(0.75·ε_α + 0.25)
 
 void declare_parameters(dealii::ParameterHandler& prm)
@@ -204,7 +204,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(Command{
     "run",
     "the whole chain on the split-path gearbox: geometry, FE stiffness, Cai, K_v, vs published",
-    "The main job, no input file needed: the built-in split-path pair of gear-data.md §1\n"
+    "The main job, no input file needed: the built-in split-path pair of docs/references.md §1\n"
     "(Reszuta & Drewniak 2015): gear geometry, ISO 6336-1 stiffness, FE contact solves for the\n"
     "single- and double-pair stiffness, a k(θ) sweep over one base pitch (positions over the\n"
     "MPI ranks), the Cai calibration and the K_v of both meshes from the calibrated Cai curve,\n"

@@ -1,5 +1,5 @@
 // `gearstiff stiffness [case.prm]`: gear mesh stiffness from a frictional FE contact solve under
-// the published load case of gear-data.md §1 (Reszuta & Drewniak 2015): torque T1 on the pinion,
+// the published load case of docs/references.md §1 (Reszuta & Drewniak 2015): torque T1 on the pinion,
 // pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly T1.
 //
 //   gearstiff stiffness                                       single-pair position (pitch point)
@@ -63,7 +63,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                       " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
                       "wheel bore fixed, friction μ = " +
                       format_number(p.settings.contact.friction_coefficient, 4) +
-                      "; k = T1/(r_b1²·Δφ) (gear-data.md §1)");
+                      "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");
   const bool planar = p.settings.scene.mesh.dimension == 2;
   report.add_text("model",
                   std::string(planar ? fem::to_string(p.settings.elasticity.model) + " 2D"
@@ -80,9 +80,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                       (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") +
                       " rims");
   report.add_value("pinion_base_radius", 0.5 * pair.pinion.base_diameter * 1e3, "mm",
-                   "r_b1 (gear-data.md §1 states 24.667 mm)");
+                   "r_b1 (docs/references.md §1 states 24.667 mm)");
   report.add_value("iso_single_stiffness", iso.single_per_width / 1e6, "N/µm",
-                   "ISO 6336-1 method B c'·b (gear-data.md §5: ≈ 330 N/µm)");
+                   "ISO 6336-1 method B c'·b (docs/references.md §5: ≈ 330 N/µm)");
   report.add_value("iso_mesh_stiffness", iso.mesh_alpha_per_width / 1e6, "N/µm",
                    "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
 
@@ -173,7 +173,7 @@ const CommandRegistration registration(Command{
     "stiffness",
     "gear mesh stiffness from frictional FE contact: single, double, roll angle or k(θ) sweep",
     "Builds the gear-pair scene (geometry module), solves the frictional contact (dual mortar,\n"
-    "active set) with the published load case of gear-data.md §1: torque T1 on the pinion\n"
+    "active set) with the published load case of docs/references.md §1: torque T1 on the pinion\n"
     "(bore free only to rotate), wheel bore fixed, μ = 0.01, and reports the mesh stiffness\n"
     "k = T1/(r_b1²·Δφ) at exactly T1 (torque-controlled), the transmission error, the load\n"
     "share of every tooth pair, the largest contact pressure and root stress, and the cost.\n"

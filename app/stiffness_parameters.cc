@@ -31,7 +31,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.set("Element degree", std::to_string(stiffness::default_stiffness_elasticity().degree));
   prm.leave_subsection();
   prm.enter_subsection("Contact");
-  // gear-data.md §1: the ANSYS model used μ = 0.01 between the teeth.
+  // docs/references.md §1: the ANSYS model used μ = 0.01 between the teeth.
   prm.set("Friction coefficient", "0.01");
   prm.leave_subsection();
 
@@ -46,7 +46,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
                     "T1 along the line of action [deg]; must lie on the path of contact");
   prm.declare_entry("pinion torque", "49.4", Double(),
                     "T1 on the pinion [N·m], > 0 (drives the loaded flanks into contact); "
-                    "gear-data.md §1: 7.5 kW at 1450 rpm");
+                    "docs/references.md §1: 7.5 kW at 1450 rpm");
   declare_elastic_constants(prm, "both gears");
   prm.declare_entry("sweep start", "-1", Double(),
                     "pinion roll angle of the first sweep interval's start [deg]; negative: "
@@ -58,7 +58,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
-                    "print the ANSYS values of gear-data.md §1 (Reszuta & Drewniak 2015) "
+                    "print the ANSYS values of docs/references.md §1 (Reszuta & Drewniak 2015) "
                     "beside ours; set false for other pairs");
   prm.leave_subsection();
 }

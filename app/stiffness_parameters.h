@@ -3,7 +3,7 @@
 // (subsections "Gear pair scene" and "Mesh" of app/geometry_parameters.h, mm and degrees), the FE
 // model ("Finite elements", "Linear solver", "Contact" of app/fe_contact_parameters.h) and the
 // load case and sweep ("Stiffness").
-// Defaults: the split-path pair of gear-data.md §1 under its published load case (T1 = 49.4 N·m,
+// Defaults: the split-path pair of docs/references.md §1 under its published load case (T1 = 49.4 N·m,
 // μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
 // accuracy-versus-cost study (docs/accuracy.md).
 #pragma once
@@ -35,7 +35,7 @@ struct StiffnessParameters
   StiffnessMode mode = StiffnessMode::single;
   stiffness::StiffnessSweepSpec sweep;
   bool write_vtu = false;
-  bool published_reference = true; // compare with gear-data.md §1 (split-path pair only)
+  bool published_reference = true; // compare with docs/references.md §1 (split-path pair only)
 };
 
 // Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".

@@ -2,7 +2,7 @@
 """Accuracy against cost of the single-pair mesh stiffness of the split-path pair.
 
 What it runs (each FE point is one `gearstiff stiffness --json` on one rank, default load case of
-../shared/reference/gear-data.md §1: T1 = 49.4 N·m, μ = 0.01, pinion bore free to rotate, wheel bore
+docs/references.md §1: T1 = 49.4 N·m, μ = 0.01, pinion bore free to rotate, wheel bore
 fixed, single-pair position = pitch point):
   - ISO 6336-1 method B c'·b (analytic, microseconds);
   - FE at four refinement levels (the default scene's size field times 1, 1/√2, 1/2, 1/(2√2):
@@ -29,7 +29,7 @@ import subprocess
 import sys
 import time
 
-ANSYS_SINGLE = 327.222  # N/um, gear-data.md §1 k'_j
+ANSYS_SINGLE = 327.222  # N/um, docs/references.md §1 k'_j
 # The cost of a point is the solve's own wall time (scene, setup, contact iterations) as the
 # command reports it, on one rank; process start-up is excluded.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# FE stiffness of the four meshes of the bi-planetary train (gear-data.md §2; issue 14's last
+# FE stiffness of the four meshes of the bi-planetary train (docs/references.md §2; issue 14's last
 # deliverable, the inputs of docs/biplanetary_dynamics.md): for each mesh 1-2, 3-4, 4-5, 6-7 the
 # k(θ) sweep over one base pitch (24 positions), the single- and double-contact positions, all
 # with bench/biplanetary_meshes/<pair>.prm (assumptions stated there), on 2 ranks.

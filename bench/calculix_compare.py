@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """gearstiff against CalculiX on the same mesh (issue 16); run through bench/calculix_compare.sh.
 
-For the single- and double-pair positions of the split-path pair (gear-data.md §1) the scene of
+For the single- and double-pair positions of the split-path pair (docs/references.md §1) the scene of
 `gearstiff stiffness` (full rims, three teeth per gear, its explicit sizes) is solved
   - by `gearstiff stiffness` with FE_Q(1) (the element ccx's C3D8 slice reproduces exactly), and
   - by `ccx` on the deck `gearstiff mesh --set "Mesh/format=inp"` writes from the same mesh
     (docs/calculix.md), at two contact penalties K = f·E/h_c; k(K) = k_inf + a/K, so the
     penalty-free value is k_inf = (f1·k1 − f2·k2)/(f1 − f2).
-k = T1/(r_b1²·Δφ) (gear-data.md §1), Δφ from the rigid body's rotation node. Both solvers run on
+k = T1/(r_b1²·Δφ) (docs/references.md §1), Δφ from the rigid body's rotation node. Both solvers run on
 one core (one MPI rank; OMP_NUM_THREADS=1). Peak memory is the process's maximum resident set.
 Time ratio R (last line) = one ccx process (mean of the penalties) / the gearstiff process
 without its meshing (process wall time − its in-process meshing time): both from a finished
@@ -16,7 +16,7 @@ the mesh (reading, setup, contact solve; in-process timers).
 
 usage: calculix_compare.py GEARSTIFF [--size-scale s] [--factors f1,f2] [--work DIR]
        [--positions single,double] [--csv FILE] [--internal]
-With --internal the wheel is the ring of gear-data.md §2's planetary stage geometry as
+With --internal the wheel is the ring of docs/references.md §2's planetary stage geometry as
 `gearstiff stiffness` builds it for `Gear pair/Wheel/internal=true` (docs/internal-gears.md): the
 same comparison for a ring–planet pair.
 """
@@ -46,7 +46,7 @@ INTERNAL = ["Gear pair/Pinion/teeth=24", "Gear pair/Wheel/teeth=69",
             "Gear pair/Pinion/tip diameter=0", "Gear pair/Wheel/internal=true",
             "Gear pair/Wheel/tip diameter=170", "Gear pair/Wheel/bore diameter=0",
             "Gear pair scene/wheel rim thickness=12.5"]
-ANSYS_SINGLE = 327.222  # N/um, gear-data.md §1 k'_j
+ANSYS_SINGLE = 327.222  # N/um, docs/references.md §1 k'_j
 
 
 def scene_settings(sizes, scale):
@@ -235,7 +235,7 @@ def main():
     parser.add_argument("--positions", default="single,double")
     parser.add_argument("--work", default="calculix-work")
     parser.add_argument("--friction", type=float, default=0.01,
-                        help="Coulomb μ of both solvers (gear-data.md §1: 0.01)")
+                        help="Coulomb μ of both solvers (docs/references.md §1: 0.01)")
     parser.add_argument("--csv", default="", help="append one row per position to this CSV")
     parser.add_argument("--ladder", action="store_true",
                         help="bench/accuracy_cost.py's size field (scaled by --size-scale), μ = 0")
@@ -268,7 +268,7 @@ def main():
     r_b1 = 1e-3 * value(pair, "pinion_base_radius")
     root = 0.5e-3 * value(pair, "pinion_root_diameter")
     form = 0.5e-3 * value(pair, "pinion_form_diameter")
-    torque = 49.4  # N·m, the default T1 of both commands (gear-data.md §1)
+    torque = 49.4  # N·m, the default T1 of both commands (docs/references.md §1)
 
     rows, headline = [], None
     times = {"gearstiff": 0., "gearstiff_scene": 0., "gearstiff_fe": 0., "ccx": 0., "ccx_own": 0.}

@@ -2,7 +2,7 @@
 """gearstiff cycloid-loads against CalculiX on the same mesh (issue 16); run through
 bench/calculix_cycloid.sh.
 
-The nominal Cyclo drive of gear-data.md §4 (M_c = 440 N·m) at one crank angle:
+The nominal Cyclo drive of docs/references.md §4 (M_c = 440 N·m) at one crank angle:
   - `gearstiff cycloid-loads` (frictionless dual mortar contact, plane stress Q1, its default
     mesh sizes), and
   - `ccx` on the deck `gearstiff mesh --set "Scene/type=cycloid" --set "Mesh/format=inp"` writes
@@ -37,7 +37,7 @@ SCENE = {
     "Cycloid scene/contact clearance": "0.1",
     "Cycloid scene/outline points per lobe": "61",
 }
-ROLLERS = 20  # z_k, gear-data.md §4
+ROLLERS = 20  # z_k, docs/references.md §4
 ARCMIN = math.pi / (180. * 60.)
 
 
@@ -155,7 +155,7 @@ def main():
         return extrapolate(factors, pick(runs[0]), pick(runs[1]))
 
     head = "".join(f" {'ccx f=%g' % f:>10s}" for f in factors)
-    print(f"cycloid drive (gear-data.md §4, nominal), crank angle {args.crank_angle:g} deg, "
+    print(f"cycloid drive (docs/references.md §4, nominal), crank angle {args.crank_angle:g} deg, "
           f"M_c = 440 N·m, {g['dofs']:.0f} DoFs (2D), plane stress Q1 / C3D8 slice")
     print(f"  {'':10s} {'gearstiff':>10s}{head} {'ccx K->inf':>10s} {'diff %':>8s}")
 

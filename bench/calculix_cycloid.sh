@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # gearstiff cycloid-loads against CalculiX on the same mesh (issue 16, docs/calculix.md): the
-# nominal Cyclo drive of gear-data.md §4 at one crank angle, by `gearstiff cycloid-loads` and by
+# nominal Cyclo drive of docs/references.md §4 at one crank angle, by `gearstiff cycloid-loads` and by
 # `ccx` on the deck `gearstiff mesh --set "Scene/type=cycloid" --set "Mesh/format=inp"` writes
 # (two contact penalties, extrapolated). Prints every roller force P_i, pin force Q_j, the
 # bearing force, the output rotation, wall times and peak memory of both; the last line is

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Speed of the contact solver (issue 12): the Schur complement on the contact unknowns with one
 # factorization (default) against the full re-solve of every active-set iteration (the reference,
-# `Contact/Iteration solves=full re-solve`), on the split-path pair of gear-data.md §1 with the
+# `Contact/Iteration solves=full re-solve`), on the split-path pair of docs/references.md §1 with the
 # published μ = 0.01. Every figure is a median of three runs unless marked; the ratios compare
 # runs taken in this one invocation (the machine is shared).
 #

@@ -4,7 +4,7 @@
 Both at the default stiffness scene (Q2, contact size 0.03 mm, 3 teeth per gear, full rims, one
 rank), which puts each within 0.3% of its own converged value (docs/accuracy.md for the external
 split-path pair, bench/internal_refinement.py for the ring): the same accuracy. External: the
-published load case of gear-data.md §1 (`gearstiff stiffness` with its defaults, μ = 0.01).
+published load case of docs/references.md §1 (`gearstiff stiffness` with its defaults, μ = 0.01).
 Internal: planet 24 / ring 69 of docs/internal-gears.md (rim 5·m held on its whole outer circle),
 T1 = 49.4 N·m, the same μ = 0.01. The runs alternate (external, internal) three times; the
 figure is the median of each model's solve time (scene, mesh, setup, contact iterations, as the

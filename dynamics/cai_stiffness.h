@@ -2,7 +2,7 @@
 //
 // Source: Cai Y., "Simulation on the rotational vibration of helical gears in consideration of
 // the tooth separation phenomenon", ASME J. Mech. Des. 117 (1995) 460, as used by Reszuta &
-// Drewniak 2015 (docs: ../shared/reference/gear-data.md §1):
+// Drewniak 2015 (docs: docs/references.md §1):
 //
 //   K(t) = 1/(0.85·ε_α) · ( −1.8/(t_z·ε_α)²·t² + 1.8/(t_z·ε_α)·t + 0.55 ),  0 ≤ t ≤ ε_α·t_z.
 //

@@ -1,5 +1,5 @@
 // The stiffness of one gear mesh as a function of the mesh position, from one of three sources:
-// a constant, the Cai curve (gear-data.md §1) with published or calibrated parameters, or a
+// a constant, the Cai curve (docs/references.md §1) with published or calibrated parameters, or a
 // k(x) table (e.g. from FE). Besides the stiffness it returns the direction of the tooth
 // friction, which reverses where a pair passes the pitch point.
 //

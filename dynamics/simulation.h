@@ -1,5 +1,5 @@
 // A dynamic run of a gear train and what it yields: mesh forces, the dynamic factor
-// K_v(t) = F(t)/F_nominal (gear-data.md §1: K_v = F_c/F_cn), K_v max over a steady-state window,
+// K_v(t) = F(t)/F_nominal (docs/references.md §1: K_v = F_c/F_cn), K_v max over a steady-state window,
 // the mesh-force spectrum, and a speed sweep (K_v max against input speed).
 //
 // Results depend on the start (from rest or from the static deflection), on the mesh phase and

@@ -1,7 +1,7 @@
 // Lumped-parameter torsional model of a gear train: one rotational degree of freedom per gear,
 // gears coupled by meshes with time-varying stiffness, damping and tooth friction.
 //
-// Implementation of the 3-DOF equations of Reszuta & Drewniak 2015 (gear-data.md §1),
+// Implementation of the 3-DOF equations of Reszuta & Drewniak 2015 (docs/references.md §1),
 // generalised to any tree-shaped train. Every gear's angle φ_i is measured in its own running
 // direction and relative to the nominal rigid rotation (φ_i = 0, φ̇_i = 0 is "turning at the
 // nominal speed, teeth unloaded"); the parametric excitation runs on nominal time, as in the
@@ -104,7 +104,7 @@ struct GearTrain
 // Phase of a mesh relative to another mesh of the same driver [base pitches, in [0, 1)], from
 // where the driven wheel sits: θ [rad] is the angle between the two wheel centres seen from
 // the driver's axis, measured against the driver's rotation, z the driver's tooth count.
-// gear-data.md §1: phase = frac(z1·θ/2π); the built-in case θ = π, z1 = 21 gives 0.5.
+// docs/references.md §1: phase = frac(z1·θ/2π); the built-in case θ = π, z1 = 21 gives 0.5.
 double mesh_phase_from_placement(unsigned int driver_teeth, double placement_angle);
 
 // What one mesh carries at one instant.
@@ -171,7 +171,7 @@ public:
   const Eigen::VectorXd& inertias() const { return inertia; }
 
   // Nominal mesh force [N]: the static force from the torques alone, friction excluded
-  // (gear-data.md §1: F_cn = 0.5·T1/(r1·cos α_t) = T1/(2·r_b1) for the split path).
+  // (docs/references.md §1: F_cn = 0.5·T1/(r1·cos α_t) = T1/(2·r_b1) for the split path).
   double nominal_force(unsigned int m) const { return nominal_forces[m]; }
   // Static deflection under mean stiffness (and mean friction direction).
   StaticState static_state(bool include_friction = true) const;

@@ -556,7 +556,7 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
     }
 
     // Copy phase: planet copy at angle ψ on its carrier, central gear g turning at ω_g − ω_c
-    // in the frame: x = x_0 − sign(ω_g − ω_c)·|z_g|·ψ/2π (gear-data.md §1's placement rule).
+    // in the frame: x = x_0 − sign(ω_g − ω_c)·|z_g|·ψ/2π (docs/references.md §1's placement rule).
     double phase = base_phase[m];
     for (const std::string& planet_name : {tm.gear_a, tm.gear_b})
     {

@@ -1,4 +1,4 @@
-// Cycloid disc profile, its correction and roller clearances (gear-data.md §4, after Chmurawa &
+// Cycloid disc profile, its correction and roller clearances (docs/references.md §4, after Chmurawa &
 // Łokiec). The correction system as printed has one equation fewer than unknowns; with the
 // tangency at S read as "equal slopes" it is square:
 //   unknowns  α1, α_ok1, α2, α_ok2, α_S, α_okS, q_k, δ   (r_k = r + C·(q_k − q))
@@ -338,7 +338,7 @@ CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, doubl
   CorrectionResiduals residuals;
   residuals.nominal = nominal;
   residuals.clearance = clearance_limit;
-  // gear-data.md §4: r_k = C·(q_k − q) + e·z_k/m.
+  // docs/references.md §4: r_k = C·(q_k − q) + e·z_k/m.
   residuals.slope_c = (std::sqrt(1. + m * m) - 1.) / (1. - std::sqrt(1. - m * m));
 
   // Far from ε ≈ 0.3 the correction is no longer small and the first-order start can miss:

@@ -1,6 +1,6 @@
 // The disc of a cycloidal (Cyclo) planetary gear: equidistant of a shortened epicycloid,
 // nominal and corrected (Chmurawa & Łokiec, "Distribution of loads in cycloidal planetary gear
-// (CYCLO) including modification of equidistant"; ../shared/reference/gear-data.md §4).
+// (CYCLO) including modification of equidistant"; docs/references.md §4).
 //
 //   x = r·cos α + e·cos(z_k·α) − q·cos(α + γ),   y = r·sin α + e·sin(z_k·α) − q·sin(α + γ)
 //   γ = atan( sin(z_s·α) / (1/m + cos(z_s·α)) ),  m = e·z_k / r,  z_s = z_k − 1.

@@ -74,7 +74,7 @@ struct GearPairSceneSpec
   bool both_flanks = false; // also mark the unloaded flanks as candidate contact surfaces
 
   // The load and material only set the Hertz estimate of the default contact size.
-  double pinion_torque = 49.4;  // N·m, T1 (gear-data.md §1: 7.5 kW at 1450 rpm)
+  double pinion_torque = 49.4;  // N·m, T1 (docs/references.md §1: 7.5 kW at 1450 rpm)
   double young_modulus = 210e9; // Pa, both gears (steel; not published)
   double poisson_ratio = 0.3;   // -, both gears
 

@@ -142,19 +142,19 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin);
 double involute(double angle);
 double inverse_involute(double value);
 
-// The built-in case of gear-data.md §1 (Reszuta & Drewniak 2015): z 21/57, m_n 2.5 mm, 20°,
+// The built-in case of docs/references.md §1 (Reszuta & Drewniak 2015): z 21/57, m_n 2.5 mm, 20°,
 // x ±0.29, b 26/24 mm, spur. The paper's ε_α = 1.500 (g_α = 1.5·p_et) cannot come from
 // standard tips (they give ε_α ≈ 1.618); both tip radii are reduced by the same amount,
 // solved so that ε_α = 1.500 exactly. Bores (not published): pinion 20 mm, wheel 40 mm.
 GearPairSpec split_path_pair();
 
-// What Reszuta & Drewniak 2015 report for that pair from their ANSYS model (gear-data.md §1,
+// What Reszuta & Drewniak 2015 report for that pair from their ANSYS model (docs/references.md §1,
 // printed in N/mm and rad): the one place these reference values live.
 namespace split_path_published
 {
 constexpr double single_pair_stiffness = 327.222e6; // N/m, k'_j = 327 222 N/mm
 constexpr double double_pair_stiffness = 497.521e6; // N/m, k'_d = 497 521 N/mm
 constexpr double single_pair_rotation = 2.481e-4;   // rad, Δφ of the single-pair position
-inline const std::string source = "gear-data.md §1 (Reszuta & Drewniak 2015, ANSYS)";
+inline const std::string source = "docs/references.md §1 (Reszuta & Drewniak 2015, ANSYS)";
 } // namespace split_path_published
 } // namespace gearstiff::kinematics

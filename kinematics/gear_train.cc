@@ -787,7 +787,7 @@ GearTrainText builtin_train(const std::string& name)
   GearTrainText text;
   if (name == "bi-planetary")
   {
-    // Drewniak, Garlicka, Kolber 2016 (gear-data.md §2). Each of the three planets 2 carries
+    // Drewniak, Garlicka, Kolber 2016 (docs/references.md §2). Each of the three planets 2 carries
     // an inner set: sun 3 on planet 2's axis, three planets 4 on inner carrier H, ring 5
     // fixed to carrier h; H drives planet 6, which runs in the fixed ring 7. Modules are not
     // published: 2 mm for 1-2 and the inner set reproduce the printed forces (1907.94 N =
@@ -816,7 +816,7 @@ GearTrainText builtin_train(const std::string& name)
   }
   else if (name == "split-path")
   {
-    // Reszuta & Drewniak 2015 (gear-data.md §1): pinion 1 drives wheels 2 and 3.
+    // Reszuta & Drewniak 2015 (docs/references.md §1): pinion 1 drives wheels 2 and 3.
     text.gears = "1: 21, 2: 57, 3: 57";
     text.modules = "1: 2.5, 2: 2.5, 3: 2.5";
     text.meshes = "1-2, 1-3";
@@ -825,7 +825,7 @@ GearTrainText builtin_train(const std::string& name)
   }
   else if (name == "cycloidal")
   {
-    // Chmurawa & Łokiec (gear-data.md §4): disc s (19 lobes) on the eccentric e rolls in the
+    // Chmurawa & Łokiec (docs/references.md §4): disc s (19 lobes) on the eccentric e rolls in the
     // fixed ring of 20 rollers k; the pin coupling passes the disc's rotation to `out`. The
     // rolling lobe pair obeys the same Willis relation as a tooth pair.
     text.gears = "s: 19, k: -20";

@@ -71,7 +71,7 @@ struct TrainSolution
 // Cost: one dense LU of size (members + 1), microseconds.
 TrainSolution solve_train_kinematics(const GearTrainSpec& spec);
 
-// Pair efficiency relative to the frame (gear-data.md §2, Drewniak et al. 2016):
+// Pair efficiency relative to the frame (docs/references.md §2, Drewniak et al. 2016):
 // η = 1 − 2.3·μ_z·(u ± 1)/(u·z_1) for the pinion z_1, external (+) or internal (−), which with
 // signed tooth counts is the one expression 1 − 2.3·μ_z·|1/z_a + 1/z_b|.
 double pair_efficiency(int teeth_a, int teeth_b, double tooth_friction);
@@ -140,7 +140,7 @@ double reduced_moment_of_inertia(const std::vector<InertiaTerm>& terms); // kg·
 std::vector<InertiaTerm> inertia_terms(const GearTrainSpec& spec, const TrainSolution& solution,
                                        const std::string& member);
 
-// The planetary J* of Milev et al. 2025 (gear-data.md §3) as printed, in units of ρ·π·h
+// The planetary J* of Milev et al. 2025 (docs/references.md §3) as printed, in units of ρ·π·h
 // (radii normalised by the ring radius R_b = R_a + 2·R_c = 1): sun R_a, N planets R_c, carrier
 // disc of thickness h/k. Term by term it is Σ J·(ω/ω_a)² + m·(v/ω_a)² with planet spin
 // R_a/R_c, planet centre speed R_a·(R_a + R_c)/(2·R_c) and carrier (ω_h/ω_a)² = R_a²/(2·R_c²)
@@ -168,7 +168,7 @@ struct GearTrainText
 // solve_train_kinematics.
 GearTrainSpec parse_gear_train(const GearTrainText& text);
 
-// Built-in trains in the same text form: "bi-planetary" (gear-data.md §2, modules 2/2/4 mm
+// Built-in trains in the same text form: "bi-planetary" (docs/references.md §2, modules 2/2/4 mm
 // inferred from the published forces and coaxiality), "planetary" (sun 20, 3 planets 10,
 // ring 40, m 2 mm), "split-path" (§1), "cycloidal" (§4: z_s 19, z_k 20, eccentric input).
 GearTrainText builtin_train(const std::string& name);

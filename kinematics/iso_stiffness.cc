@@ -48,7 +48,7 @@ IsoStiffness iso_mesh_stiffness(const GearPairGeometry& pair, const IsoStiffness
   const double x1 = g1.profile_shift;
   const double x2 = g2.profile_shift;
 
-  // ISO 6336-1 eq. (B.?) / gear-data.md §5: q' in mm·µm/N.
+  // ISO 6336-1 eq. (B.?) / docs/references.md §5: q' in mm·µm/N.
   const double q = 0.04723 + 0.15551 / zn1 + 0.25791 * inverse_zn2 - 0.00635 * x1 -
                    0.11654 * x1 / zn1 - 0.00193 * x2 - 0.24188 * x2 * inverse_zn2 +
                    0.00529 * x1 * x1 + 0.00182 * x2 * x2;

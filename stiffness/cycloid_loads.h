@@ -1,6 +1,6 @@
 // Load distribution of a cycloid (Cyclo) drive at one crank angle from a frictional FE contact
 // solve: the roller forces P_i, the output-pin forces Q_j and the eccentric-bearing force R of
-// the drive of Chmurawa & Łokiec (../shared/reference/gear-data.md §4), nominal or corrected
+// the drive of Chmurawa & Łokiec (docs/references.md §4), nominal or corrected
 // disc profile.
 //
 // Load case — statically equivalent to the running drive at crank angle φ_h. In steady running

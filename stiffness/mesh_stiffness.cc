@@ -72,7 +72,7 @@ geometry::GearPairSceneSpec default_stiffness_scene()
 {
   geometry::GearPairSceneSpec scene;
   // The ANSYS model removed the teeth that do not affect the stiffness but kept the gear
-  // bodies (gear-data.md §1): full rims, three teeth per gear (one pair on either side of the
+  // bodies (docs/references.md §1): full rims, three teeth per gear (one pair on either side of the
   // loaded ones). The sizes are explicit so that a refinement study scales one size field; with
   // Q2 elements (default_stiffness_elasticity) they are the cheapest scene within 1% of the
   // converged single-pair stiffness that meshes at every position of a sweep (docs/accuracy.md:

@@ -1,9 +1,9 @@
 // Mesh stiffness of a spur gear pair from a frictional FE contact solve, after the load case of
-// Reszuta & Drewniak 2015 (../shared/reference/gear-data.md §1): a torque T1 on the pinion whose
+// Reszuta & Drewniak 2015 (docs/references.md §1): a torque T1 on the pinion whose
 // bore is free only to rotate (a rigid hub, torque-controlled), the wheel bore held fixed, tooth
 // friction μ; the measured pinion rotation Δφ gives
 //
-//     k = T1 / (r_b1² · Δφ)                                     (gear-data.md §1, k'_j, k'_d)
+//     k = T1 / (r_b1² · Δφ)                                     (docs/references.md §1, k'_j, k'_d)
 //
 // at exactly the applied torque: the rotation is the unknown of the solve, not a guess that is
 // scaled afterwards. One GearMeshStiffness is one pinion position (one scene); sweeps over

@@ -24,7 +24,7 @@ def main():
         with open(path, newline="") as f:
             rows += list(csv.DictReader(f))
     reference = float(sys.argv[-2])
-    ansys = 327.222  # N/um, gear-data.md §1 k'_j
+    ansys = 327.222  # N/um, docs/references.md §1 k'_j
     for r in rows:
         k = float(r["stiffness"])
         r["error_reference"] = abs(k / reference - 1)

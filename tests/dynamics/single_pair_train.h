@@ -1,4 +1,4 @@
-// The split-path pinion and one wheel (gear-data.md §1 dynamic parameters) as a train of one
+// The split-path pinion and one wheel (docs/references.md §1 dynamic parameters) as a train of one
 // pair with constant mesh stiffness, shared by the model and integrator tests: gear 1 drives
 // gear 2, whose load T1·r2/r1 balances the input torque T1.
 #pragma once
@@ -9,7 +9,7 @@
 
 namespace gearstiff::test_support
 {
-// Inertias J [kg·m²], base radii r [m] and input torque T1 [N·m] of gear-data.md §1.
+// Inertias J [kg·m²], base radii r [m] and input torque T1 [N·m] of docs/references.md §1.
 constexpr double J1 = 1.47e-4, J2 = 7.81e-3, r1 = 24.7e-3, r2 = 67.0e-3, T1 = 49.4;
 
 inline dynamics::GearTrain single_pair_train(double stiffness, double damping)

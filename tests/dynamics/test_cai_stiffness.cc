@@ -1,4 +1,4 @@
-// The Cai stiffness curve and its calibration (gear-data.md §1, Cai 1995 as used by Reszuta &
+// The Cai stiffness curve and its calibration (docs/references.md §1, Cai 1995 as used by Reszuta &
 // Drewniak 2015).
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/mesh_stiffness.h"
@@ -13,16 +13,16 @@ using namespace gearstiff::dynamics;
 
 namespace
 {
-// gear-data.md §1: k'_j = T1/(r_b1²·Δφ) = 49.4e3 N·mm / (24.667² mm² · 2.481e-4 rad),
+// docs/references.md §1: k'_j = T1/(r_b1²·Δφ) = 49.4e3 N·mm / (24.667² mm² · 2.481e-4 rad),
 // printed as 327 222 N/mm; the unrounded inputs give 327.24e6 N/m.
 constexpr double single_pair_ansys = 327.2e6; // [N/m]
-constexpr double contact_ratio = 1.5;         // gear-data.md §1: ε_α = 1.500
+constexpr double contact_ratio = 1.5;         // docs/references.md §1: ε_α = 1.500
 } // namespace
 
 TEST(CaiStiffness, PublishedShapePeaksAtOneAtMidEngagement)
 {
   // The bracket −1.8 s² + 1.8 s + 0.55 has its vertex at s = 1/2 with value exactly 1 and is
-  // 0.55 at engagement start and end (gear-data.md §1). Exact arithmetic: 1e-15 round-off.
+  // 0.55 at engagement start and end (docs/references.md §1). Exact arithmetic: 1e-15 round-off.
   const CaiParameters cai = cai_published_parameters(1.);
   EXPECT_NEAR(cai_pair_stiffness(cai, 0.5), 1.0, 1e-15);
   EXPECT_NEAR(cai_pair_stiffness(cai, 0.0), 0.55, 1e-15);
@@ -59,7 +59,7 @@ TEST(CaiStiffness, MeshStiffnessRangesAndMean)
 
 TEST(CaiStiffness, PaperForceCheckValuesLieOnTheScaledCurve)
 {
-  // gear-data.md §1: with the bracket scaled so one pair's peak equals k'_j, the paper's force
+  // docs/references.md §1: with the bracket scaled so one pair's peak equals k'_j, the paper's force
   // check used 520.58e6 N/m (double contact) and 321.10e6 N/m (single contact). The paper does
   // not print the instants; we identify them by solving k(x) = value on the scaled curve and
   // check that the solutions are where the paper's wording puts them (double resp. single
@@ -80,7 +80,7 @@ TEST(CaiStiffness, PaperForceCheckValuesLieOnTheScaledCurve)
   const double x_single = solve(321.10e6, 0.5, 0.75); // rising part of the single-contact zone
   EXPECT_NEAR(cai_mesh_stiffness(cai, x_double, contact_ratio), 520.58e6, 1.);
   EXPECT_NEAR(cai_mesh_stiffness(cai, x_single, contact_ratio), 321.10e6, 1.);
-  // The identified instants after a pair's entry, with t_z = 1.970e-3 s (gear-data.md §1):
+  // The identified instants after a pair's entry, with t_z = 1.970e-3 s (docs/references.md §1):
   // about 0.344 ms and 1.176 ms (or their mirror images 0.641 ms / 1.779 ms). They are not
   // round numbers, so the paper's instants stay unconfirmed; the values are consistent with
   // the stated scaling to within the 4-digit rounding of k'_j.

@@ -75,7 +75,7 @@ void expect_observed_order(IntegratorType type, const double (&steps)[3], double
 
 TEST(Integrators, Rk4MatchesAnalyticStepResponseAtThePublishedStep)
 {
-  // The published step 5 µs (gear-data.md §1) resolves the 6.9 kHz pair mode with h·ω = 0.22;
+  // The published step 5 µs (docs/references.md §1) resolves the 6.9 kHz pair mode with h·ω = 0.22;
   // RK4's phase error after 2 ms (ωt = 87 rad) is then about (hω)⁴/120·ωt ≈ 1.6e-3 of the
   // amplitude (= the static deflection for a step response), so 2e-3 bounds it.
   const double error = max_error(settings_for(IntegratorType::rk4, 5e-6, 2e-3), 100.);

@@ -10,7 +10,7 @@ using namespace gearstiff::dynamics;
 
 namespace
 {
-// The split-path pair (gear-data.md §1 dynamic parameters, §5 stiffness): c' = 13.8
+// The split-path pair (docs/references.md §1 dynamic parameters, §5 stiffness): c' = 13.8
 // N/(mm·µm), c_γα = c'·(0.75·ε_α + 0.25) = 18.975 N/(mm·µm), b = 24 mm, F_t = 1001.27 N,
 // z1 = 21, 1450 rpm, m_red from J1/2 (the pinion is shared by two meshes) and J2:
 // m1* = 7.35e-5/0.0247² = 0.12047 kg, m2* = 7.81e-3/0.067² = 1.73981 kg, m_red = 0.112672 kg.

@@ -1,4 +1,4 @@
-// Dynamic runs of the split-path case (gear-data.md §1): mean mesh force, K_v, spectrum,
+// Dynamic runs of the split-path case (docs/references.md §1): mean mesh force, K_v, spectrum,
 // energy balance, speed sweep.
 #include "dynamics/simulation.h"
 #include "dynamics/split_path_case.h"
@@ -40,7 +40,7 @@ TEST(Simulation, SteadyStateMeanMeshForceEqualsNominalForce)
   const SimulationResult result = simulate(model, settings);
   for (const MeshResult& mesh : result.meshes)
     EXPECT_NEAR(mesh.mean_force / mesh.nominal_force, 1., 1e-3) << mesh.name;
-  // The nominal force per mesh: T1/(2·r_b1) = 49.4/(2·0.0247) = 1000.0 N (gear-data.md §1
+  // The nominal force per mesh: T1/(2·r_b1) = 49.4/(2·0.0247) = 1000.0 N (docs/references.md §1
   // prints 1001.27 N for r_b1 = r1·cos α_t = 24.667 mm; the dynamic table rounds to 24.7 mm).
   EXPECT_NEAR(result.meshes[0].nominal_force, 1000.0, 1e-9);
   EXPECT_GT(result.window_start, 0.);

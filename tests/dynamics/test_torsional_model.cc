@@ -13,7 +13,7 @@ using namespace gearstiff::test_support;
 
 TEST(TorsionalModel, StaticDeflectionEqualsTorqueOverStiffnessTimesBaseRadiusSquared)
 {
-  // gear-data.md §1: k' = T1/(r_b1²·Δφ), so the pinion's rotation relative to a held wheel is
+  // docs/references.md §1: k' = T1/(r_b1²·Δφ), so the pinion's rotation relative to a held wheel is
   // Δφ = T1/(k·r_b1²). Here Δφ = φ1 − φ2·r_b2/r_b1 (the rigid rotation removed); the static
   // solve is a 2x2 LU, so the agreement is to round-off (1e-12 relative).
   const double k = 327.2e6, T1 = 49.4, r1 = 24.7e-3, r2 = 67.0e-3;
@@ -23,14 +23,14 @@ TEST(TorsionalModel, StaticDeflectionEqualsTorqueOverStiffnessTimesBaseRadiusSqu
   EXPECT_NEAR(relative_rotation / (T1 / (k * r1 * r1)), 1., 1e-12);
   EXPECT_NEAR(state.rigid_acceleration, 0., 1e-9);
   // The paper's ANSYS single-pair value: Δφ = 2.481e-4 rad at k'_j = 327 222 N/mm with
-  // r_b1 = 24.667 mm (gear-data.md §1); our formula with those inputs gives it to the printed
+  // r_b1 = 24.667 mm (docs/references.md §1); our formula with those inputs gives it to the printed
   // 4 digits (5e-4 relative).
   EXPECT_NEAR(T1 / (327.222e6 * 24.667e-3 * 24.667e-3), 2.481e-4, 2.481e-4 * 5e-4);
 }
 
 TEST(TorsionalModel, SplitPathNominalForceMatchesPublished)
 {
-  // gear-data.md §1: F_cn = 0.5·T1/(r1·cos α_t) = 0.5·49.397e3/(26.25·cos 20°) = 1001.27 N.
+  // docs/references.md §1: F_cn = 0.5·T1/(r1·cos α_t) = 0.5·49.397e3/(26.25·cos 20°) = 1001.27 N.
   // With r_b1 = r1·cos α_t = 24.667 mm and T1 = 49.397 N·m the model's static force per mesh
   // must reproduce it to the printed 0.01 N (plus 0.01 N for the paper's rounding of T1).
   SplitPathCase data = split_path_case();
@@ -59,7 +59,7 @@ TEST(TorsionalModel, SplitPathStaticDeflectionPerMesh)
 
 TEST(TorsionalModel, MeshPhaseFollowsFromWheelPlacement)
 {
-  // gear-data.md §1: phase = frac(z1·θ/2π); θ = 180°, z1 = 21 → 0.5 of a mesh period.
+  // docs/references.md §1: phase = frac(z1·θ/2π); θ = 180°, z1 = 21 → 0.5 of a mesh period.
   EXPECT_NEAR(mesh_phase_from_placement(21, M_PI), 0.5, 1e-14);
   EXPECT_NEAR(mesh_phase_from_placement(21, 120. * M_PI / 180.), 0.0, 1e-12);
   EXPECT_NEAR(mesh_phase_from_placement(20, 100. * M_PI / 180.), 5.555555555555556 - 5., 1e-12);
@@ -67,7 +67,7 @@ TEST(TorsionalModel, MeshPhaseFollowsFromWheelPlacement)
 
 TEST(TorsionalModel, SplitPathGeometryFromKinematics)
 {
-  // gear-data.md §1: p_et = 7.380 mm and ε_α = 1.500 (the kinematics module reduces the tips so
+  // docs/references.md §1: p_et = 7.380 mm and ε_α = 1.500 (the kinematics module reduces the tips so
   // ε_α is exactly 1.5). The pitch point lies 4.28 mm into the 11.07 mm path of contact for the
   // tips reduced by ~0.2 mm (independent hand calculation, ±0.05 mm for the exact tip radii).
   const SplitPathCase data = split_path_case();

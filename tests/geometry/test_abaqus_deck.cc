@@ -173,7 +173,7 @@ TEST(AbaqusDeck, SliceOfTheGearPair)
   EXPECT_EQ(plane_strain, 2 * n - bore_nodes);
   EXPECT_EQ(rigid_body, "*RIGID BODY, NSET=PINION_BORE_NODES, REF NODE=" +
                             std::to_string(2 * n + 1) + ", ROT NODE=" + std::to_string(2 * n + 2));
-  EXPECT_EQ(cload, "DRIVEN_ROT, 3, 49.4"); // gear-data.md §1: T1 = 49.4 N·m
+  EXPECT_EQ(cload, "DRIVEN_ROT, 3, 49.4"); // docs/references.md §1: T1 = 49.4 N·m
 }
 
 // The *CONTACT PAIR lines of a deck, "slave, master".
@@ -190,7 +190,7 @@ std::vector<std::string> contact_pairs(const std::string& file)
 // the flanks of exactly the tooth pairs `gearstiff stiffness` pairs, those inside the path of
 // contact, not every modelled pair: pairing the neighbours let ccx carry load through a tip corner
 // that the stiffness analysis leaves free (24/69: k +30 % external, +74 % ring). Split-path pair
-// (gear-data.md §1, ε_α < 2): one pair at the single position, two at the double one, three
+// (docs/references.md §1, ε_α < 2): one pair at the single position, two at the double one, three
 // modelled in both.
 TEST(AbaqusDeck, PairsTheToothPairsInContactOnly)
 {
@@ -261,7 +261,7 @@ TEST(AbaqusDeck, CalculixSolves3D)
   EXPECT_LT(solid, 1.2 * slice); // plane stress is ~ (1 − ν²)⁻¹ ≈ 10% softer
 }
 
-// A coarse cycloid scene (gear-data.md §4 drive, nominal disc) with its output pins meshed.
+// A coarse cycloid scene (docs/references.md §4 drive, nominal disc) with its output pins meshed.
 CycloidSceneSpec coarse_cycloid_spec()
 {
   CycloidSceneSpec spec;
@@ -297,7 +297,7 @@ TEST(AbaqusDeck, CycloidSceneWithOutputMember)
   const CycloidSceneSpec spec = coarse_cycloid_spec();
   SceneDeck deck;
   deck.info = write_cycloid_scene(spec, work_file("deck_cycloid.msh"));
-  const double torque = 440.; // N·m, gear-data.md §4 M_c
+  const double torque = 440.; // N·m, docs/references.md §4 M_c
   write_deck(deck, 2, cycloid_deck_spec(spec, deck.info, torque, 50.), "deck_cycloid");
   const std::size_t n = deck.mesh.nodes.size();
 
@@ -352,7 +352,7 @@ TEST(AbaqusDeck, CycloidSceneWithOutputMember)
                                    "*RIGID BODY, NSET=DISC_BORE_NODES, REF NODE=" + id(2 * n + 3) +
                                        ", ROT NODE=" + id(2 * n + 4)}));
   EXPECT_EQ(node_lines.at("OUTPUT_REF"), id(2 * n + 1) + ", 0, 0, 0"); // the ring centre
-  // The disc centre: e = 3 mm off the ring centre at crank angle 0 (gear-data.md §4).
+  // The disc centre: e = 3 mm off the ring centre at crank angle 0 (docs/references.md §4).
   EXPECT_NEAR(deck.info.first_centre.norm(), 3e-3, 1e-12);
   std::istringstream bearing(node_lines.at("DISC_BEARING_REF"));
   double x = 0., y = 0.;

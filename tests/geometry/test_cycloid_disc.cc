@@ -1,4 +1,4 @@
-// Cycloid disc (gear-data.md §4, Chmurawa & Łokiec, "Distribution of loads in cycloidal
+// Cycloid disc (docs/references.md §4, Chmurawa & Łokiec, "Distribution of loads in cycloidal
 // planetary gear (CYCLO) including modification of equidistant"): nominal equidistant of the
 // shortened epicycloid, the Levenberg–Marquardt correction against the published ε = 0.27
 // column, roller clearances, and the rejection of impossible discs.
@@ -16,7 +16,7 @@ namespace
 {
 const double degree = M_PI / 180.;
 
-// gear-data.md §4 nominal case: r = 96 mm, e = 3 mm, q = 8.5 mm, z_k = 20 (m = 0.625).
+// docs/references.md §4 nominal case: r = 96 mm, e = 3 mm, q = 8.5 mm, z_k = 20 (m = 0.625).
 CycloidDiscSpec published_disc()
 {
   CycloidDiscSpec spec;
@@ -55,7 +55,7 @@ double clearance_at(const CycloidDiscSpec& nominal, const CycloidDiscSpec& corre
 TEST(CycloidDisc, NominalOutline)
 {
   const CycloidDiscSpec spec = published_disc();
-  EXPECT_DOUBLE_EQ(shortening_coefficient(spec), 0.625); // gear-data.md §4: m = 0.625
+  EXPECT_DOUBLE_EQ(shortening_coefficient(spec), 0.625); // docs/references.md §4: m = 0.625
   const ToothProfile lobe = generate_cycloid_disc(spec, 401);
   EXPECT_EQ(lobe.teeth, 19);
   // Lobe tip r + e − q = 90.5 mm at α = 0 on +x, valleys r − e − q = 84.5 mm at ±π/19 (the
@@ -94,7 +94,7 @@ TEST(CycloidDisc, NominalOutline)
 
 TEST(CycloidDisc, PublishedCorrectionColumn)
 {
-  // gear-data.md §4, ε = 0.27, Δr = 0.01 mm: α1 = 3.484203°, α_ok1 = 3.391341°,
+  // docs/references.md §4, ε = 0.27, Δr = 0.01 mm: α1 = 3.484203°, α_ok1 = 3.391341°,
   // α2 = 8.599992°, α_ok2 = 8.567535°, r_k = 96.44742 mm, q_k = 9.047590 mm, δ = 0.197962°,
   // m_k = 0.622101. Issue 3 tolerance: 0.005 mm / 0.002°. The printed solution is not quite
   // tangent (its gap dips to −0.08 µm); ours touches exactly, 2.5–3 µm away in r_k, q_k.

@@ -2,7 +2,7 @@
 // the published tooth thickness, the fillet is the envelope of the cutter tip round, the two
 // join with a continuous tangent, undercut and impossible teeth are detected.
 //
-// Gear data: the split-path pair of ../shared/reference/gear-data.md §1 (Reszuta & Drewniak
+// Gear data: the split-path pair of docs/references.md §1 (Reszuta & Drewniak
 // 2015: z 21/57, m 2.5 mm, α 20°, x ±0.29) and the rings of §2 (Drewniak et al. 2016: z 69, 72).
 // Formulas: DIN 3960 / ISO 21771 (tooth thickness, root circle, undercut limit).
 #include "errors/errors.h"
@@ -313,7 +313,7 @@ TEST(InvoluteTooth, RejectsImpossibleTeeth)
 
 TEST(InvoluteTooth, InternalRingCutByPinionTypeCutter)
 {
-  // Ring 7 of the bi-planetary train (gear-data.md §2: z = 72, m = 2.5 mm assumed, 20°), cut by
+  // Ring 7 of the bi-planetary train (docs/references.md §2: z = 72, m = 2.5 mm assumed, 20°), cut by
   // a 25-tooth shaper cutter with h_a0 = 1.25 m (the real process).
   for (const double x : {0., 0.3})
   {
@@ -432,7 +432,7 @@ TEST(InvoluteTooth, FullOutlineAndSpeed)
 
 TEST(InvoluteTooth, RadiiEqualKinematics)
 {
-  // The split-path pair of gear-data.md §1 as kinematics builds it (tips reduced so that
+  // The split-path pair of docs/references.md §1 as kinematics builds it (tips reduced so that
   // ε_α = 1.500): every radius the generator reports must equal kinematics' ISO 21771 values,
   // and the form circle of the generated fillet must equal kinematics' closed-form d_Ff
   // (DIN 3960 rack tip-round formula) — two independent routes, equal to rounding (1e-12 m).

@@ -1,4 +1,4 @@
-// The cycloid (Cyclo) scene of gear-data.md §4 (Chmurawa & Łokiec): nominal disc r = 96 mm,
+// The cycloid (Cyclo) scene of docs/references.md §4 (Chmurawa & Łokiec): nominal disc r = 96 mm,
 // e = 3 mm, q = 8.5 mm, z_k = 20, read back with deal.II's GridIn.
 #include "errors/errors.h"
 #include "geometry/scene_cycloid.h"

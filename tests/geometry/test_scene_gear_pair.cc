@@ -1,4 +1,4 @@
-// The gear-pair scene of the split-path gearbox (../shared/reference/gear-data.md §1, Reszuta &
+// The gear-pair scene of the split-path gearbox (docs/references.md §1, Reszuta &
 // Drewniak 2015): every mesh is read back with deal.II's GridIn::read_msh and checked for its ids,
 // its cell size at the predicted contacts and the gaps along the line of action, measured on the
 // boundary faces deal.II sees (not on the outlines the scene was built from).
@@ -108,7 +108,7 @@ SceneInfo scene(const std::string& position, const std::string& name, unsigned i
 // remains is the spline through the profile points and the chord between boundary nodes:
 // with h_c ≈ 5-8 µm and a flank curvature radius ≥ 5 mm the chord sag is below 1e-11 m, the
 // spline error below 1e-7 m. 0.5 µm is still 12x smaller than the tooth-pair deflection at the
-// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, gear-data.md §1), so a pair that is
+// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, docs/references.md §1), so a pair that is
 // "near-zero" here is in contact for any FE analysis at that load.
 constexpr double touching_tolerance = 0.5e-6;
 // The gap to the next pair outside the path of contact is a sizeable fraction of the base
@@ -145,12 +145,12 @@ TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
   EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
 
-  // The split-path pair (ε_α = 1.5, gear-data.md §1) has its pitch point in the single-contact
+  // The split-path pair (ε_α = 1.5, docs/references.md §1) has its pitch point in the single-contact
   // zone, so "single" puts the one contact at the pitch point C: ℓ = r_b1·tan α_wt with
   // r_b1 = 24.667 mm and α_wt = 20° → 8.978 mm, 26.25 mm from the pinion axis (r_w1 = r1).
   ASSERT_EQ(info.contacts.size(), 1u);
   EXPECT_NEAR(info.contacts[0].point.norm(), 26.25e-3, 1e-6); // 1 µm: r_b1 is given to 1 µm
-  // Hertz half-width at the pitch point ≈ 0.08 mm (contact-notes: 2.0 kN over 24 mm); the
+  // Hertz half-width at the pitch point ≈ 0.08 mm (docs/references.md §6: 2.0 kN over 24 mm); the
   // estimate is printed to one significant figure, so ±10 %.
   EXPECT_NEAR(info.contacts[0].hertz_half_width, 0.08e-3, 0.008e-3);
   EXPECT_NEAR(info.contact_size, 0.1 * info.contacts[0].hertz_half_width, 1e-12);
@@ -166,7 +166,7 @@ TEST(GearPairScene, DoublePairPositionHasTwoTouchingPairs)
   dealii::Triangulation<2> triangulation;
   read_mesh(triangulation, info.file);
   ASSERT_EQ(info.contacts.size(), 2u);
-  // The two contacts are one transverse base pitch apart: p_et = 7.380 mm (gear-data.md §1,
+  // The two contacts are one transverse base pitch apart: p_et = 7.380 mm (docs/references.md §1,
   // printed to 1 µm).
   EXPECT_NEAR((info.contacts[1].point - info.contacts[0].point).norm(), 7.380e-3, 1e-6);
   expect_touching_and_resolved(triangulation, info, 2);
@@ -198,7 +198,7 @@ TEST(GearPairScene, ExtrudedSceneIsHexahedralWithSideFaces)
   expected.merge(flank_ids(true, -2, 2));
   EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
-  // Face width of the split-path pair: the common width min(26, 24) mm (gear-data.md §1).
+  // Face width of the split-path pair: the common width min(26, 24) mm (docs/references.md §1).
   EXPECT_DOUBLE_EQ(info.face_width, 24e-3);
   // The extrusion copies the 2D mesh into `layers` layers.
   const SceneInfo flat = scene("single", "single_for_3d.msh");

@@ -1,4 +1,4 @@
-// Gear pair geometry against gear-data.md §1 (Reszuta & Drewniak, Mechanik 7/2015) and against
+// Gear pair geometry against docs/references.md §1 (Reszuta & Drewniak, Mechanik 7/2015) and against
 // closed-form ISO 21771 relations that the implementation does not use directly.
 #include "errors/errors.h"
 #include "kinematics/gear_pair.h"
@@ -45,7 +45,7 @@ TEST(GearPair, InverseInvoluteRoundTrips)
     EXPECT_NEAR(inverse_involute(involute(angle)), angle, 1e-13);
 }
 
-// gear-data.md §1: r_b1 = 24.667 mm and p_et = 7.380 mm, printed to 1 µm: tolerance half a
+// docs/references.md §1: r_b1 = 24.667 mm and p_et = 7.380 mm, printed to 1 µm: tolerance half a
 // unit of the last printed digit.
 TEST(GearPair, SplitPathBaseRadiusAndPitch)
 {
@@ -57,7 +57,7 @@ TEST(GearPair, SplitPathBaseRadiusAndPitch)
   EXPECT_NEAR(pair.centre_distance, 97.5 * mm, 1e-12);
 }
 
-// gear-data.md §1 note: standard tip diameters d_a = d + 2m(1 + x) give ε_α ≈ 1.618 (3 digits:
+// docs/references.md §1 note: standard tip diameters d_a = d + 2m(1 + x) give ε_α ≈ 1.618 (3 digits:
 // tolerance 0.0005).
 TEST(GearPair, SplitPathStandardTipsContactRatio)
 {
@@ -67,7 +67,7 @@ TEST(GearPair, SplitPathStandardTipsContactRatio)
   EXPECT_NEAR(pair.transverse_contact_ratio, 1.618, 0.0005);
 }
 
-// The built-in case: both tip radii reduced equally so that ε_α = 1.500 (gear-data.md §1). The
+// The built-in case: both tip radii reduced equally so that ε_α = 1.500 (docs/references.md §1). The
 // paper prints g_α = 11.068 mm, which is 1.4997·p_et: its own 1.5·p_et = 11.0705 mm. We keep
 // ε_α = 1.500 exactly, so g_α differs from the print by 2.5 µm (0.02 %); tolerance 3 µm.
 TEST(GearPair, SplitPathBuiltInContactRatio)
@@ -181,7 +181,7 @@ TEST(GearPair, ClearingRingTip)
 TEST(GearPair, NamesTheParameterToFix)
 {
   GearPairSpec spec = split_path_pair();
-  spec.centre_distance = 99. * mm; // zero-backlash 97.5 mm (gear-data.md §1)
+  spec.centre_distance = 99. * mm; // zero-backlash 97.5 mm (docs/references.md §1)
   EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/centre distance");
   spec = split_path_pair();
   spec.pinion.bore_diameter = 100. * mm;

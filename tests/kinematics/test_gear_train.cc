@@ -1,5 +1,5 @@
 // Gear-train kinematics, statics, efficiency and reduced inertia. Published values:
-// gear-data.md §2 (Drewniak, Garlicka, Kolber 2016, bi-planetary train), §3 (Milev et al. 2025,
+// docs/references.md §2 (Drewniak, Garlicka, Kolber 2016, bi-planetary train), §3 (Milev et al. 2025,
 // planetary J*), §4 (Chmurawa & Łokiec, cycloidal ratio). Printed values are compared with a
 // tolerance of half a unit of their last printed digit unless stated.
 #include "errors/errors.h"
@@ -81,7 +81,7 @@ TEST(GearTrain, BiPlanetaryTorquesAndForces)
   }
   const MeshTorques& m45 = s.meshes[mesh_index(t.spec, "4", "5")];
   EXPECT_NEAR(m45.tangential_force, 2453.06, 0.005);
-  // Planet 6: gear-data.md §2 records that the paper's printed formula for this force does
+  // Planet 6: docs/references.md §2 records that the paper's printed formula for this force does
   // not give its printed value (the value itself is not reproduced there). From the torque
   // balance it is T_6/(3·r_6) = 15769.7 N with r_6 = 42 mm; both gears of mesh 6-7 must carry
   // the same tooth force, which checks the statics independently of the paper.

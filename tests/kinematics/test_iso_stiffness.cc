@@ -1,4 +1,4 @@
-// ISO 6336-1 method B stiffness of the split-path pair (gear-data.md §5 and §1).
+// ISO 6336-1 method B stiffness of the split-path pair (docs/references.md §5 and §1).
 #include "kinematics/gear_pair.h"
 #include "kinematics/iso_stiffness.h"
 
@@ -41,7 +41,7 @@ TEST(IsoStiffness, SplitPathPaperAssumption)
 }
 
 // With the ISO 53 profile A rack of the built-in pair (h_fP = 1.25·m_n) ISO gives C_B = 0.975,
-// c'·b = 322.2 N/µm, against ANSYS's 327.2 N/µm (gear-data.md §1, single pair, nonlinear FE).
+// c'·b = 322.2 N/µm, against ANSYS's 327.2 N/µm (docs/references.md §1, single pair, nonlinear FE).
 // ISO method B is an empirical fit; a 1.5 % agreement is what the two methods can be expected
 // to share, the test allows 3 %.
 TEST(IsoStiffness, SplitPathAgainstAnsys)

@@ -1,5 +1,5 @@
 // The internal (ring-planet) pair of the stiffness tests, planet z = 24 in ring z = 69 (the inner
-// set of the bi-planetary train, gear-data.md §2): module 2.5 mm, 20°, no profile shift (the
+// set of the bi-planetary train, docs/references.md §2): module 2.5 mm, 20°, no profile shift (the
 // paper's modules and shifts of §2 are not in the reference data: stated defaults), face widths
 // 26/24 mm and planet bore 20 mm as the split-path pair, the ring tip at an addendum of 0.5·m_n
 // (d_a2 = 170 mm): a standard ring tip interferes with the planet's fillet

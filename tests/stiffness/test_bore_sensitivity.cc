@@ -1,5 +1,5 @@
 // Sensitivity of the split-path pair's mesh stiffness to the pinion bore, against the independent
-// plane-strain FE model quoted in ../shared/reference/gear-data.md §1: enlarging the pinion bore
+// plane-strain FE model quoted in docs/references.md §1: enlarging the pinion bore
 // radius from 10 to 15 mm raised the single-pair stiffness by about 7% and the double-pair
 // stiffness by about 10%. The bore is not published for the ANSYS model, so this sensitivity is
 // what bounds any comparison with it (tests/stiffness/test_mesh_stiffness.cc); here it is
@@ -26,7 +26,7 @@ double pair_stiffness(const std::string& position, double pinion_bore_radius)
   GearMeshStiffnessSettings settings;
   settings.scene.position = geometry::parse_pair_position(position, "position");
   settings.scene.pinion_bore_radius = pinion_bore_radius; // m
-  settings.contact.friction_coefficient = 0.01;           // gear-data.md §1
+  settings.contact.friction_coefficient = 0.01;           // docs/references.md §1
   settings.scene_file = stiffness_work_stem("bore") + ".msh";
   GearMeshStiffness<2> analysis(MPI_COMM_SELF, settings);
   const GearMeshStiffnessResult r = analysis.run();

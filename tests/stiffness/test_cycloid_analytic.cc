@@ -1,5 +1,5 @@
 // The analytic rigid-disc load distribution of a cycloid drive (stiffness/cycloid_analytic.h)
-// for the drive of ../shared/reference/gear-data.md §4, and the FE solve
+// for the drive of docs/references.md §4, and the FE solve
 // (stiffness/cycloid_loads.h) against it in the limit where the analytic model's assumption
 // holds: rollers 100 times softer than the disc (E_roller = 2.1 GPa), so that the disc and the
 // pins are rigid next to the roller compliance.
@@ -50,7 +50,7 @@ TEST(CycloidAnalytic, BalancesTheTorque)
 
 // With equal linear springs on zero gaps, pin forces follow Q_j ∝ w_j, so Q_max = 4 M_c/(n R_w)
 // for n pins on the circle R_w when n/2 pins carry sin-distributed loads (the textbook formula;
-// gear-data.md §4's 3776 N implies n·R_w = 466 mm). The line-contact springs are slightly
+// docs/references.md §4's 3776 N implies n·R_w = 466 mm). The line-contact springs are slightly
 // stiffening (the log term), which concentrates the load a little more on the largest lever:
 // 2% covers that at these loads.
 TEST(CycloidAnalytic, PinForcesFollowTheTextbook)
@@ -92,7 +92,7 @@ TEST(CycloidAnalytic, FeMatchesInTheRigidDiscLimit)
             std::abs(equal.max_roller_force / equal.analytic.max_roller_force - 1.));
 }
 
-// The closing rotation of a corrected profile (ε = 0.27, gear-data.md §4) is exact, not the
+// The closing rotation of a corrected profile (ε = 0.27, docs/references.md §4) is exact, not the
 // linear estimate: after turning the profile by it the first roller in that sense touches
 // (clearance 0 within 1e-10 m: the Newton stop is 1e-12 m, the closest-point iteration 1e-9 of
 // r on the tangential residual), and no roller overlaps. Between the two senses the disc turns

@@ -1,4 +1,4 @@
-// The torque loop −M_c → +M_c → −M_c of the §4 cycloid drive (../shared/reference/gear-data.md
+// The torque loop −M_c → +M_c → −M_c of the §4 cycloid drive (docs/references.md
 // §4, nominal profile, crank angle 0) with friction in every contact (stiffness::
 // cycloid_hysteresis, one contact problem whose stick/slip history runs along the loop). Without
 // friction the loop has no width; with friction it opens, and wider for a larger μ.

@@ -1,4 +1,4 @@
-// The cycloid drive of ../shared/reference/gear-data.md §4 (Chmurawa & Łokiec: z_k = 20, r = 96
+// The cycloid drive of docs/references.md §4 (Chmurawa & Łokiec: z_k = 20, r = 96
 // mm, e = 3 mm, q = 8.5 mm, M_c = 440 N·m per disc) under load through the FE contact solver
 // (stiffness/cycloid_loads.h), nominal profile at crank angle 0 (eccentric along +x), the output
 // pins placed mirror-symmetrically about the line of centres (the x axis) so that the whole

@@ -1,5 +1,5 @@
 // Refinement check of the cycloid drive's load distribution (issue 13): the built-in case
-// (gear-data.md §4: i = 19, r = 96 mm, e = 3 mm, q = 8.5 mm, M_c = 440 N·m per disc), nominal
+// (docs/references.md §4: i = 19, r = 96 mm, e = 3 mm, q = 8.5 mm, M_c = 440 N·m per disc), nominal
 // profile, crank angle 0, Q2 (the default), solved on the default mesh and on the next level of
 // the study in docs/cycloid.md ("Speed and discretisation"): every size of the size field —
 // contact size, body size, rim size and growth rate — times 0.7.
@@ -28,7 +28,7 @@ CycloidLoadResult solve_level(const std::string& name, double factor)
 {
   CycloidLoadSettings s;
   s.crank_angle = 0.;
-  s.output_torque = 440.; // N·m, one disc (gear-data.md §4)
+  s.output_torque = 440.; // N·m, one disc (docs/references.md §4)
   auto& mesh = s.scene.mesh;
   mesh.contact_size *= factor;
   mesh.body_size *= factor;

@@ -1,4 +1,4 @@
-// A crank sweep of the cycloid drive of ../shared/reference/gear-data.md §4 on the default scene,
+// A crank sweep of the cycloid drive of docs/references.md §4 on the default scene,
 // its cases spread over two MPI ranks (solve_cycloid_cases: case k on rank k mod 2, results
 // gathered on every rank), against the same cases solved serially (solve_cycloid_case): the
 // distribution over ranks must change no number. Each rank re-solves the other rank's cases, so

@@ -1,6 +1,6 @@
 // The gear stiffness of one position through both iteration methods of contact/contact_problem.h:
 // the Schur complement on the contact rows with one factorization (default) and the reference
-// that re-assembles and re-solves every iteration. The published load case (gear-data.md §1:
+// that re-assembles and re-solves every iteration. The published load case (docs/references.md §1:
 // T1 = 49.4 N·m, μ = 0.01) exercises the torque-driven pinion held only through the contact (a
 // free rigid-body mode the Schur method carries as an extra unknown) and the Coulomb iteration.
 // Same mesh, same constrained minimum: k must agree to 1e-6 relative (the contact-speed issue's
@@ -24,7 +24,7 @@ GearMeshStiffnessResult solve(const std::string& position, contact::IterationSol
 {
   GearMeshStiffnessSettings settings;
   settings.scene.position = geometry::parse_pair_position(position, "position");
-  settings.contact.friction_coefficient = 0.01; // gear-data.md §1
+  settings.contact.friction_coefficient = 0.01; // docs/references.md §1
   settings.contact.iteration_solves = method;
   settings.scene_file = stiffness_work_stem("solves-" + position) + ".msh";
   const GearMeshStiffnessResult r = GearMeshStiffness<2>(MPI_COMM_SELF, settings).run();
@@ -63,7 +63,7 @@ TEST(IterationSolves, GearPositionsAgreeWithTheFullResolve)
 TEST(IterationSolves, WarmStartFromTheNeighbourAgreesWithTheColdStart)
 {
   GearMeshStiffnessSettings settings;
-  settings.contact.friction_coefficient = 0.01; // gear-data.md §1
+  settings.contact.friction_coefficient = 0.01; // docs/references.md §1
   settings.scene.position = geometry::PairPosition::roll_angle;
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
   const std::vector<double> positions = sweep_positions(pair, StiffnessSweepSpec());

@@ -1,4 +1,4 @@
-// Mesh stiffness of the split-path pair (../shared/reference/gear-data.md §1, Reszuta & Drewniak
+// Mesh stiffness of the split-path pair (docs/references.md §1, Reszuta & Drewniak
 // 2015) from the frictional FE contact solve of stiffness/mesh_stiffness.h under the published load
 // case (T1 = 49.4 N·m on the pinion, pinion bore free only to rotate, wheel bore fixed, μ = 0.01),
 // against the stiffness the paper's ANSYS model reported, k'_j = 327.2·10⁶ N/m (single pair) and
@@ -35,7 +35,7 @@ GearMeshStiffnessSettings published_case(const std::string& position)
 {
   GearMeshStiffnessSettings settings;
   settings.scene.position = geometry::parse_pair_position(position, "position");
-  settings.contact.friction_coefficient = 0.01; // gear-data.md §1
+  settings.contact.friction_coefficient = 0.01; // docs/references.md §1
   settings.scene_file = stiffness_work_stem(position) + ".msh";
   return settings;
 }
@@ -143,7 +143,7 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   EXPECT_EQ(s.single_strain.loaded_pairs, 1u);
   EXPECT_EQ(s.double_strain.loaded_pairs, 2u);
   // The tolerance is the modelling difference, not the discretization (< 1%, test above):
-  //  - gear-data.md §1: an independent plane-strain model with this 10 mm pinion bore radius came
+  //  - docs/references.md §1: an independent plane-strain model with this 10 mm pinion bore radius came
   //    ~10% below ANSYS; the bore is not published, and 10 → 15 mm raised the single-pair value
   //    by ~7% (double ~10%), so the ANSYS bore alone can explain several percent either way;
   //  - ANSYS was 3D with a 26 mm pinion on a 24 mm wheel, this model is 2D with 24 mm throughout;
@@ -155,13 +155,13 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   // 0.90·0.91 ≈ 0.82 ± 0.05 (measured 0.81); the 3D value lies between the two planar ones.
   EXPECT_NEAR(s.single_stress.mesh_stiffness / ansys::single_pair_stiffness, 0.82, 0.05);
   EXPECT_LT(s.single_stress.mesh_stiffness, s.single_strain.mesh_stiffness);
-  // The double pair is more sensitive to the bore (10% against 7% per 5 mm, gear-data.md §1),
+  // The double pair is more sensitive to the bore (10% against 7% per 5 mm, docs/references.md §1),
   // so with the same small bore it sits ~3% further below ANSYS than the single pair does
   // (measured above: 0.86): 0.86 − 0.03 ≈ 0.83, ± 0.05 for the same modelling differences
   // (measured 0.80, near the lower edge; its position within the double zone is not
   // published, k varies ~2% across the zone).
   EXPECT_NEAR(s.double_strain.mesh_stiffness / ansys::double_pair_stiffness, 0.83, 0.05);
-  // The published Δφ (gear-data.md §1: 2.481e-4 and 1.632e-4 rad) follow with the same ratios.
+  // The published Δφ (docs/references.md §1: 2.481e-4 and 1.632e-4 rad) follow with the same ratios.
   EXPECT_NEAR(2.481e-4 / s.single_strain.pinion_rotation, 0.90, 0.05);
 }
 
@@ -174,7 +174,7 @@ TEST(MeshStiffness, IsoStiffnessBesideTheFeValue)
   std::cout << "ISO 6336-1 c'b = " << iso.single_per_width / 1e6 << " N/um; FE single pair "
             << (s.single_strain.mesh_stiffness / iso.single_per_width - 1) * 100
             << " % from it; ISO c_gamma_alpha b = " << iso.mesh_alpha_per_width / 1e6 << " N/um\n";
-  // gear-data.md §5: c'·b ≈ 330 N/µm for this pair (the value is rounded: 3%).
+  // docs/references.md §5: c'·b ≈ 330 N/µm for this pair (the value is rounded: 3%).
   EXPECT_NEAR(iso.single_per_width, 330e6, 0.03 * 330e6);
   // Method B is an empirical fit (q' polynomial of solid steel gears, times C_M = 0.8 for the
   // measured-to-theoretical ratio); FE models of one pair commonly land within ±15% of it

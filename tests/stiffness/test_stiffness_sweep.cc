@@ -1,4 +1,4 @@
-// A k(θ) sweep of the split-path pair (../shared/reference/gear-data.md §1) over one base pitch,
+// A k(θ) sweep of the split-path pair (docs/references.md §1) over one base pitch,
 // its positions distributed over two MPI ranks, checked at every position against an exact
 // oracle: without friction every contact force of an involute pair acts along the common normal
 // of the flanks, the line of action, which is tangent to both base circles, so the wheel bore
@@ -63,7 +63,7 @@ TEST(StiffnessSweep, FrictionlessTorqueRatioIsTheBaseRadiusRatio)
 // matrices and MUMPS) must reproduce the serial solve of rank 0: the active-set decisions are
 // taken on data every rank holds identically, so the two runs meet the same contact states and
 // differ only by the round-off of the linear solver. The published load case with friction
-// μ = 0.01 (gear-data.md §1) at the single-pair position exercises stick, slip and the
+// μ = 0.01 (docs/references.md §1) at the single-pair position exercises stick, slip and the
 // torque-driven hub together.
 TEST(StiffnessSweep, DistributedPositionEqualsSerial)
 {
