@@ -1,5 +1,6 @@
-// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair (docs/references.md
-// §1; dynamics/cai_stiffness.h) to FE contact results over the whole engagement A..E.
+// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair
+// (docs/references.md §1; dynamics/cai_stiffness.h) to FE contact results over the whole engagement
+// A..E.
 //
 //   gearstiff cai -o out                                   scale only, published shape kept
 //   gearstiff cai --set "Cai calibration/fit shape=true"    the shape coefficients too

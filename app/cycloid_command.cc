@@ -1,6 +1,6 @@
 // `gearstiff cycloid`: the corrected equidistant of a cycloid (Cyclo) disc for a list of contact
-// arc ratios ε (docs/references.md §4, Chmurawa & Łokiec), solved with Levenberg–Marquardt, with the
-// roller clearances of each corrected disc and the published ε = 0.27 column beside ours.
+// arc ratios ε (docs/references.md §4, Chmurawa & Łokiec), solved with Levenberg–Marquardt, with
+// the roller clearances of each corrected disc and the published ε = 0.27 column beside ours.
 //
 //   gearstiff cycloid                                      the published disc, ε = 0.27
 //   gearstiff cycloid --set "Cycloid correction/contact arc ratios=0.2, 0.27, 0.35"
@@ -175,7 +175,8 @@ void run(ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(
     {"cycloid", "cycloid disc: corrected equidistant (Levenberg-Marquardt), roller clearances",
      "Computes the correction (r_k, q_k, delta and the contact-arc angles) of a cycloid disc's\n"
-     "equidistant for each contact arc ratio epsilon, after Chmurawa & Lokiec (docs/references.md §4),\n"
+     "equidistant for each contact arc ratio epsilon, after Chmurawa & Lokiec (docs/references.md "
+     "§4),\n"
      "with the roller clearances of each corrected disc. The built-in case is the published disc\n"
      "(r = 96 mm, e = 3 mm, q = 8.5 mm, z_k = 20) whose epsilon = 0.27 column is compared.\n"
      "With -o: disc outlines (points, outward normals, arc length) as CSV.",

@@ -2,8 +2,9 @@
 // FE contact solver — roller forces P_i, output-pin forces Q_j, eccentric-bearing force R, torque
 // balances, loaded counts, contact pressures, disc stress, output rotation — for the nominal and
 // the corrected disc profile, beside the analytic rigid-disc estimate and the published values of
-// docs/references.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque ramp;
-// optionally a crank-angle sweep. Load case and its static equivalence: stiffness/cycloid_loads.h.
+// docs/references.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque
+// ramp; optionally a crank-angle sweep. Load case and its static equivalence:
+// stiffness/cycloid_loads.h.
 //
 //   gearstiff cycloid-loads                                  §4 drive, nominal + ε = 0.27
 //   gearstiff cycloid-loads --json                           the figures as JSON
@@ -406,7 +407,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(Command{
     "cycloid-loads",
     "cycloid drive under load (FE contact): roller and pin forces, bearing force, stiffness",
-    "Solves the cycloid (Cyclo) drive of docs/references.md §4 at one crank angle with the FE contact\n"
+    "Solves the cycloid (Cyclo) drive of docs/references.md §4 at one crank angle with the FE "
+    "contact\n"
     "solver: disc on its eccentric bearing (free to turn), rollers on fixed pins, output pins\n"
     "tied to one rigid output member carrying M_c; one contact pair per roller and per pin.\n"
     "Reports P_i, Q_j, the bearing force R and its angle, torque balances, loaded counts, peak\n"

@@ -457,6 +457,7 @@ const CommandRegistration registration(Command{
     "method), adaptive Dormand-Prince 5(4), implicit HHT-alpha. Reports K_v = F/F_nominal over a\n"
     "steady-state window (with the window, phase and start), the mesh-force spectrum, a K_v\n"
     "speed sweep, and ISO 6336-1 method B K_v beside it. Built-in case: the split-path gearbox\n"
-    "of Reszuta & Drewniak 2015 (docs/references.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° apart.",
+    "of Reszuta & Drewniak 2015 (docs/references.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° "
+    "apart.",
     declare_dynamics_parameters, run});
 } // namespace

@@ -150,7 +150,8 @@ const CommandRegistration registration(Command{
     "single/double contact zones along the line of action, tip thickness, undercut and\n"
     "interference checks; then ISO 6336-1 method B stiffness c', c_γα, c_γβ with C_M, C_R, C_B "
     "and\n"
-    "the validity ranges. Default: the split-path pair of docs/references.md §1 (Reszuta & Drewniak\n"
+    "the validity ranges. Default: the split-path pair of docs/references.md §1 (Reszuta & "
+    "Drewniak\n"
     "2015), compared with the published values.",
     declare_gear_pair_parameters, run});
 } // namespace

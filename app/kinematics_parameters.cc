@@ -192,8 +192,9 @@ void declare_train_parameters(dealii::ParameterHandler& prm)
   prm.enter_subsection("Train");
   for (const TrainTextEntry& entry : train_structure_entries)
     prm.declare_entry(entry.name, train.*entry.text, Anything(), entry.documentation);
-  prm.declare_entry("input torque", "120.2", Double(),
-                    "torque on the first input [N·m] (docs/references.md §2: 120.2); 0 = no statics");
+  prm.declare_entry(
+      "input torque", "120.2", Double(),
+      "torque on the first input [N·m] (docs/references.md §2: 120.2); 0 = no statics");
   prm.declare_entry("tooth friction coefficient", "0.08", Double(0., 0.5),
                     "μ_z for the pair efficiencies [-] (docs/references.md §2: 0.08)");
   for (const TrainTextEntry& entry : train_mass_entries)

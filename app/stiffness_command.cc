@@ -1,6 +1,7 @@
 // `gearstiff stiffness [case.prm]`: gear mesh stiffness from a frictional FE contact solve under
-// the published load case of docs/references.md §1 (Reszuta & Drewniak 2015): torque T1 on the pinion,
-// pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly T1.
+// the published load case of docs/references.md §1 (Reszuta & Drewniak 2015): torque T1 on the
+// pinion, pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly
+// T1.
 //
 //   gearstiff stiffness                                       single-pair position (pitch point)
 //   gearstiff stiffness --set "Stiffness/mode=double"          first double-contact zone

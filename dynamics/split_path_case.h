@@ -1,5 +1,5 @@
-// The built-in case: the split-path spur gearbox of Reszuta & Drewniak 2015 (docs/references.md §1),
-// one pinion (gear 1) driving two wheels (gears 2, 3) through meshes 1-2 and 1-3.
+// The built-in case: the split-path spur gearbox of Reszuta & Drewniak 2015 (docs/references.md
+// §1), one pinion (gear 1) driving two wheels (gears 2, 3) through meshes 1-2 and 1-3.
 //
 // Published dynamic parameters: J1 = 1.47e-4, J2 = J3 = 7.81e-3 kg·m²; r_b1/r_b2 = 24.7/67.0 mm;
 // c_g = 100 N·s/m; μ = 0.01 with arms r_f1/r_f2 = 7.47/20.27 mm; T1 = 49.4 N·m at 1450 rpm;

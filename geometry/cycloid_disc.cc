@@ -1,5 +1,5 @@
-// Cycloid disc profile, its correction and roller clearances (docs/references.md §4, after Chmurawa &
-// Łokiec). The correction system as printed has one equation fewer than unknowns; with the
+// Cycloid disc profile, its correction and roller clearances (docs/references.md §4, after Chmurawa
+// & Łokiec). The correction system as printed has one equation fewer than unknowns; with the
 // tangency at S read as "equal slopes" it is square:
 //   unknowns  α1, α_ok1, α2, α_ok2, α_S, α_okS, q_k, δ   (r_k = r + C·(q_k − q))
 //   K(α_ok1) = N(α1) − Δr·n(α1),  K(α_ok2) = N(α2) − Δr·n(α2)   (clearance Δr at the arc ends)

@@ -1,8 +1,8 @@
 // The classic analytic load distribution of a cycloid (Cyclo) drive at one crank angle, the
-// estimate Chmurawa & Łokiec (docs/references.md §4) and the textbooks compare with: the disc is rigid
-// and turns by a small angle β about its centre C (held by the eccentric bearing); each roller i
-// is pressed along the disc normal n_i at its contact point x_i (the normal runs through the
-// roller centre and, for the nominal profile, through the pitch point), so it closes by
+// estimate Chmurawa & Łokiec (docs/references.md §4) and the textbooks compare with: the disc is
+// rigid and turns by a small angle β about its centre C (held by the eccentric bearing); each
+// roller i is pressed along the disc normal n_i at its contact point x_i (the normal runs through
+// the roller centre and, for the nominal profile, through the pitch point), so it closes by
 //
 //     δ_i = β·l_i − Δr_i,        l_i = ((x_i − C) × n_i)·z  (lever about C)
 //

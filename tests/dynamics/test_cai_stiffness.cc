@@ -59,9 +59,9 @@ TEST(CaiStiffness, MeshStiffnessRangesAndMean)
 
 TEST(CaiStiffness, PaperForceCheckValuesLieOnTheScaledCurve)
 {
-  // docs/references.md §1: with the bracket scaled so one pair's peak equals k'_j, the paper's force
-  // check used 520.58e6 N/m (double contact) and 321.10e6 N/m (single contact). The paper does
-  // not print the instants; we identify them by solving k(x) = value on the scaled curve and
+  // docs/references.md §1: with the bracket scaled so one pair's peak equals k'_j, the paper's
+  // force check used 520.58e6 N/m (double contact) and 321.10e6 N/m (single contact). The paper
+  // does not print the instants; we identify them by solving k(x) = value on the scaled curve and
   // check that the solutions are where the paper's wording puts them (double resp. single
   // contact). Bisection to 1e-12 of a period, so the curve reproduces the values to 1e-9.
   const CaiParameters cai = cai_published_parameters(single_pair_ansys);

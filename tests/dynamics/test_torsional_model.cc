@@ -67,8 +67,8 @@ TEST(TorsionalModel, MeshPhaseFollowsFromWheelPlacement)
 
 TEST(TorsionalModel, SplitPathGeometryFromKinematics)
 {
-  // docs/references.md §1: p_et = 7.380 mm and ε_α = 1.500 (the kinematics module reduces the tips so
-  // ε_α is exactly 1.5). The pitch point lies 4.28 mm into the 11.07 mm path of contact for the
+  // docs/references.md §1: p_et = 7.380 mm and ε_α = 1.500 (the kinematics module reduces the tips
+  // so ε_α is exactly 1.5). The pitch point lies 4.28 mm into the 11.07 mm path of contact for the
   // tips reduced by ~0.2 mm (independent hand calculation, ±0.05 mm for the exact tip radii).
   const SplitPathCase data = split_path_case();
   EXPECT_NEAR(data.base_pitch, 7.380e-3, 0.0005e-3);

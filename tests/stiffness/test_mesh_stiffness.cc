@@ -143,7 +143,8 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   EXPECT_EQ(s.single_strain.loaded_pairs, 1u);
   EXPECT_EQ(s.double_strain.loaded_pairs, 2u);
   // The tolerance is the modelling difference, not the discretization (< 1%, test above):
-  //  - docs/references.md §1: an independent plane-strain model with this 10 mm pinion bore radius came
+  //  - docs/references.md §1: an independent plane-strain model with this 10 mm pinion bore radius
+  //  came
   //    ~10% below ANSYS; the bore is not published, and 10 → 15 mm raised the single-pair value
   //    by ~7% (double ~10%), so the ANSYS bore alone can explain several percent either way;
   //  - ANSYS was 3D with a 26 mm pinion on a 24 mm wheel, this model is 2D with 24 mm throughout;
@@ -161,7 +162,8 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   // (measured 0.80, near the lower edge; its position within the double zone is not
   // published, k varies ~2% across the zone).
   EXPECT_NEAR(s.double_strain.mesh_stiffness / ansys::double_pair_stiffness, 0.83, 0.05);
-  // The published Δφ (docs/references.md §1: 2.481e-4 and 1.632e-4 rad) follow with the same ratios.
+  // The published Δφ (docs/references.md §1: 2.481e-4 and 1.632e-4 rad) follow with the same
+  // ratios.
   EXPECT_NEAR(2.481e-4 / s.single_strain.pinion_rotation, 0.90, 0.05);
 }
 
