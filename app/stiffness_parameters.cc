@@ -6,6 +6,8 @@
 #include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/format.h"
+#include "kinematics/gear_pair.h"
 
 #include <algorithm>
 #include <climits>
@@ -32,7 +34,8 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.leave_subsection();
   prm.enter_subsection("Contact");
   // docs/references.md §1: the ANSYS model used μ = 0.01 between the teeth.
-  prm.set("Friction coefficient", "0.01");
+  prm.set("Friction coefficient",
+          format_number(kinematics::split_path_published::tooth_friction, 10));
   prm.leave_subsection();
 
   prm.enter_subsection("Stiffness");

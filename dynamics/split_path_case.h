@@ -12,6 +12,7 @@
 #pragma once
 
 #include "dynamics/torsional_model.h"
+#include "kinematics/gear_pair.h"
 
 namespace gearstiff::dynamics
 {
@@ -27,14 +28,14 @@ struct SplitPathCase
   double wheel_base_radius = 67.0e-3;     // [m] r_b2 = r_b3
   double single_pair_stiffness = 327.2e6; // [N/m] k'_j (ANSYS), the Cai peak
   double mesh_damping = 100.;             // [N·s/m] c_g
-  double friction_coefficient = 0.01;     // [-] μ
-  double pinion_friction_arm = 7.47e-3;   // [m] r_f1
-  double wheel_friction_arm = 20.27e-3;   // [m] r_f2 = r_f3
-  double wheel_placement_angle = M_PI;    // [rad] θ between the wheel centres
-  double face_width = 24e-3;              // [m] b of the wheels (common face width)
-  double base_pitch = 0.;                 // [m] p_et, from kinematics
-  double contact_ratio = 0.;              // [-] ε_α, from kinematics
-  double approach_ratio = 0.;             // [-] ε_f, from kinematics
+  double friction_coefficient = kinematics::split_path_published::tooth_friction; // [-] μ
+  double pinion_friction_arm = 7.47e-3;                                           // [m] r_f1
+  double wheel_friction_arm = 20.27e-3;                                           // [m] r_f2 = r_f3
+  double wheel_placement_angle = M_PI; // [rad] θ between the wheel centres
+  double face_width = 24e-3;           // [m] b of the wheels (common face width)
+  double base_pitch = 0.;              // [m] p_et, from kinematics
+  double contact_ratio = 0.;           // [-] ε_α, from kinematics
+  double approach_ratio = 0.;          // [-] ε_f, from kinematics
 };
 
 // The published case with the kinematic quantities filled in from kinematics::split_path_pair().
