@@ -30,6 +30,10 @@ IGNORED_TEXT = re.compile(r"(^|_)(time|timing|timings|path|directory|file|host|d
 # Fields whose scatter is larger than round-off, with the reason. Key: "values/<key>" or
 # "tables/<table>/<column>"; value: (rtol, atol).
 TOLERANCES = {
+    # Active-set iterations of a sweep position on 2 ranks depend on which position the rank
+    # solved before it (warm start; positions go to whichever rank is free, fem::distribute_items):
+    # the count differs by one between runs, the converged k does not (to 1e-6).
+    "tables/stiffness_sweep/iterations": (math.inf, math.inf),
 }
 
 
