@@ -225,6 +225,15 @@ private:
 
   struct Condensed; // the factorization, column cache and contact DoFs of the Schur method
 
+  // The steps of setup_system(): m, diagonal of the mesh's bounding box; the supports' nodes
+  // and hubs; the mortar coupling of every pair (InputError: no candidates, overlap); the
+  // initial active set.
+  double mesh_diameter() const;
+  void resolve_supports();
+  void couple_pairs();
+  void check_candidates(const Pair& pair) const;
+  void set_cold_start();
+
   // The load steps from the current states; SolverFailure when one does not converge.
   void solve_load_steps(dealii::Vector<double>& residual);
   void solve_load_step(unsigned int step, const std::vector<std::vector<NodeState>>& initial_states,
@@ -283,6 +292,7 @@ private:
   // frictionless slip (stick where it vanishes), bounded by μ λ_n of that solution.
   void start_friction(const dealii::Vector<double>& residual);
   void collect_results(const dealii::Vector<double>& residual);
+  PairResult<dim> pair_result(const Pair& pair, const dealii::Vector<double>& residual) const;
   // Contact force on a slave node from a residual r = K u − f, N.
   dealii::Tensor<1, dim> nodal_force(const SlaveNode<dim>& node,
                                      const dealii::Vector<double>& residual) const;
