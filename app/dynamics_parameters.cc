@@ -105,8 +105,8 @@ void declare_mesh_physics(ParameterHandler& prm, double stiffness, double dampin
                     "cai fit: fit the three shape coefficients too, not only the scale");
   prm.declare_entry("damping", format_number(damping, 10), Double(),
                     "c_g, mesh damping along the line of action (N·s/m)");
-  prm.declare_entry("friction coefficient", format_number(friction, 10), Double(0., 0.99),
-                    "mu, tooth friction (-)");
+  prm.declare_entry("friction coefficient", format_number(friction, 10),
+                    friction_coefficient_pattern(), "mu, tooth friction (-)");
   prm.declare_entry("driver friction arm", format_number(driver_arm / mm, 10), Double(0.),
                     "r_f of the driver (mm)");
   prm.declare_entry("driven friction arm", format_number(driven_arm / mm, 10), Double(0.),

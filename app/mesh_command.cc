@@ -48,7 +48,7 @@ void declare_deck_parameters(ParameterHandler& prm)
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
   prm.declare_entry(
       "friction coefficient", format_number(kinematics::split_path_published::tooth_friction, 10),
-      Double(0., 1.),
+      friction_coefficient_pattern(),
       "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
       "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),

@@ -14,49 +14,6 @@ namespace gearstiff::contact
 {
 using namespace dealii;
 
-void ContactParameters::declare_parameters(ParameterHandler& prm)
-{
-  prm.declare_entry("Friction coefficient", "0", Patterns::Double(0., 2.),
-                    "-, Coulomb friction coefficient μ between the surfaces (0: frictionless)");
-  prm.declare_entry("Max iterations", "40", Patterns::Integer(1, 1000),
-                    "-, active-set iterations per load step; reaching it is a solver failure");
-  prm.declare_entry("Load steps", "1", Patterns::Integer(1, 1000),
-                    "-, equal load increments (friction is path dependent)");
-  prm.declare_entry("Search distance", "1", Patterns::Double(0.),
-                    "mm, slave points farther than this from the master surface are never "
-                    "paired (small sliding: pairing is frozen in the reference configuration)");
-  prm.declare_entry("Overlap tolerance", "1e-3", Patterns::Double(0.),
-                    "mm, an initial overlap of the bodies beyond this is an input error");
-  prm.declare_entry("Friction tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
-                    "-, convergence of the slip forces relative to the largest normal force");
-  prm.declare_entry("Warm start", "true", Patterns::Bool(),
-                    "true: in a sweep, each position's active-set iteration starts from the "
-                    "contact zone its neighbour converged to (mapped by initial gap, as the "
-                    "meshes differ), and from the usual cold start should that fail; false: "
-                    "every position starts cold (same results, more iterations)");
-  prm.declare_entry("Iteration solves", "auto",
-                    Patterns::Selection("auto|Schur complement|full re-solve"),
-                    "how each active-set iteration is solved: 'Schur complement' factorizes the "
-                    "stiffness once and solves for the contact forces only (needs the direct "
-                    "solver); 'full re-solve' re-assembles and re-solves everything (the "
-                    "reference); 'auto' takes the Schur complement with the direct solver");
-}
-
-void ContactParameters::parse_parameters(ParameterHandler& prm)
-{
-  friction_coefficient = prm.get_double("Friction coefficient");
-  max_iterations = prm.get_integer("Max iterations");
-  load_steps = prm.get_integer("Load steps");
-  search_distance = prm.get_double("Search distance") * 1e-3;
-  overlap_tolerance = prm.get_double("Overlap tolerance") * 1e-3;
-  friction_tolerance = prm.get_double("Friction tolerance");
-  warm_start = prm.get_bool("Warm start");
-  const std::string solves = prm.get("Iteration solves");
-  iteration_solves = solves == "Schur complement" ? IterationSolves::schur_complement
-                     : solves == "full re-solve"  ? IterationSolves::full_resolve
-                                                  : IterationSolves::automatic;
-}
-
 template <int dim>
 ContactProblem<dim>::ContactProblem(MPI_Comm mpi_communicator,
                                     const fem::ElasticityParameters& elasticity,

@@ -37,7 +37,6 @@
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
@@ -55,7 +54,8 @@ enum class IterationSolves
   full_resolve      // re-assemble and re-solve the condensed system every iteration (reference)
 };
 
-// Subsection "Contact".
+// The contact controls (their parameter-file form, subsection "Contact", is declared in
+// app/fe_contact_parameters.cc).
 struct ContactParameters
 {
   IterationSolves iteration_solves = IterationSolves::automatic;
@@ -66,9 +66,6 @@ struct ContactParameters
   double overlap_tolerance = 1e-6;  // m, initial overlap beyond this is an input error
   double friction_tolerance = 1e-8; // -, friction-force change relative to the normal force
   bool warm_start = true; // analyses of similar scenes (sweeps) start from their neighbour's zone
-
-  static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm);
 };
 
 // One slave node of a contact pair in the result.

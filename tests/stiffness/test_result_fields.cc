@@ -19,15 +19,36 @@ using namespace gearstiff;
 
 namespace
 {
+struct IgnoreField
+{
+  template <class Field>
+  void operator()(const char*, Field&) const
+  {
+  }
+};
+
 template <class T, class = void>
 struct has_fields : std::false_type
 {
 };
 template <class T>
-struct has_fields<
-    T, std::void_t<decltype(T::for_each_field(std::declval<T&>(), [](const char*, auto&) {}))>>
+struct has_fields<T, std::void_t<decltype(T::for_each_field(std::declval<T&>(), IgnoreField()))>>
     : std::true_type
 {
+};
+
+// A struct whose list forgets a member.
+struct Partial
+{
+  double listed = 0.;
+  double forgotten = 0.;
+  unsigned int last = 0;
+  template <class Self, class Visit>
+  static void for_each_field(Self& self, Visit&& visit)
+  {
+    visit("listed", self.listed);
+    visit("last", self.last);
+  }
 };
 
 // Gives every member of `object` (recursively, two entries per vector) a distinct value
