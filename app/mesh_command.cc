@@ -1,7 +1,7 @@
 // `gearstiff mesh [scene.prm]`: writes the FE mesh of one scene (ASCII .msh 4.1, all quadrilateral
 // in 2D, hexahedra extruded over the face width in 3D) and reports its ids, extent, predicted
-// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1 at
-// the single-pair position (pitch point).
+// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1
+// at the single-pair position (pitch point).
 //
 //   gearstiff mesh -o out                                        out/scene.msh, 2D, single pair
 //   gearstiff mesh --set "Gear pair scene/position=double" -o out
@@ -23,8 +23,10 @@
 #include "geometry/scene_cycloid.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
+#include "stiffness/cycloid_analytic.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <unistd.h>
@@ -49,9 +51,10 @@ void declare_deck_parameters(ParameterHandler& prm)
   prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
-  prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
-                    "the cycloid deck is frictionless, as cycloid-loads)");
+  prm.declare_entry(
+      "friction coefficient", "0.01", Double(0., 1.),
+      "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
+      "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
                     "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
                     "(docs/references.md §4: 440)");
@@ -114,8 +117,10 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
                     "disc rotation ψ about its own centre (degrees); the disc centre follows "
                     "the eccentric with the ring fixed");
-  prm.declare_entry("roller force", "1711", Double(0.),
-                    "roller force for the Hertz estimate of h_c (N; docs/references.md §4 P_max)");
+  prm.declare_entry("roller force", "auto", Anything(),
+                    "roller force for the Hertz estimate of automatic contact cells (N), or auto: "
+                    "P_max and Q_max of the rigid-disc load model (stiffness/cycloid_analytic.h) "
+                    "under Abaqus deck/output torque");
   declare_elastic_constants(prm, "the disc and the rollers");
   prm.leave_subsection();
 
@@ -156,16 +161,36 @@ geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
   return spec;
 }
 
-geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm)
+geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm, const double output_torque)
 {
   geometry::CycloidSceneSpec spec;
   parse_cycloid_scene_parameters(prm, spec);
   prm.enter_subsection("Cycloid scene");
   spec.disc_rotation = prm.get_double("disc rotation") * degree;
-  spec.roller_force = prm.get_double("roller force");
+  const std::string roller_force = prm.get("roller force");
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
   spec.mesh = parse_scene_mesh_parameters(prm);
+  if (roller_force == "auto")
+  {
+    if (!(std::abs(output_torque) > 0.))
+      throw InputError("Cycloid scene/roller force",
+                       "auto estimates the forces under Abaqus deck/output torque, which is 0: "
+                       "give a force (N) or a torque");
+    // The case's own load, as `cycloid-loads` sizes its cells (stiffness/cycloid_loads.cc).
+    const stiffness::CycloidAnalyticResult estimate =
+        stiffness::analytic_cycloid_loads(spec, output_torque);
+    spec.roller_force = estimate.max_roller_force;
+    spec.pin_force = estimate.max_pin_force;
+  }
+  else
+  {
+    char* end = nullptr;
+    spec.roller_force = std::strtod(roller_force.c_str(), &end);
+    if (end == roller_force.c_str() || *end != '\0' || !(spec.roller_force > 0.))
+      throw InputError("Cycloid scene/roller force",
+                       "'" + roller_force + "' is neither auto nor a positive force (N)");
+  }
   return spec;
 }
 
@@ -322,7 +347,7 @@ void run(ParameterHandler& prm, CommandContext& context)
   const geometry::CylindersSceneSpec cylinder_spec =
       type == "cylinders" ? parse_cylinders(prm) : geometry::CylindersSceneSpec();
   geometry::CycloidSceneSpec cycloid_spec =
-      cycloid ? parse_cycloid(prm) : geometry::CycloidSceneSpec();
+      cycloid ? parse_cycloid(prm, deck.output_torque) : geometry::CycloidSceneSpec();
   // The cycloid deck ties the output pins to the output member: mesh them in their holes.
   cycloid_spec.output_pin_bodies = cycloid_spec.output_pin_bodies || deck.write;
 
