@@ -2,8 +2,9 @@
 // FE contact solver — roller forces P_i, output-pin forces Q_j, eccentric-bearing force R, torque
 // balances, loaded counts, contact pressures, disc stress, output rotation — for the nominal and
 // the corrected disc profile, beside the analytic rigid-disc estimate and the published values of
-// docs/references.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque ramp;
-// optionally a crank-angle sweep. Load case and its static equivalence: stiffness/cycloid_loads.h.
+// docs/references.md §4 (Chmurawa & Łokiec); torsional stiffness and lost motion from a torque
+// ramp; optionally a crank-angle sweep. Load case and its static equivalence:
+// stiffness/cycloid_loads.h.
 //
 //   gearstiff cycloid-loads                                  §4 drive, nominal + ε = 0.27
 //   gearstiff cycloid-loads --json                           the figures as JSON
@@ -121,6 +122,8 @@ void report_position(Report& report, const stiffness::CycloidLoadResult& r,
         "P_max, rigid disc + line-contact compliance");
   value("analytic_max_pin_force", r.analytic.max_pin_force, "N", "Q_max, the same model");
   value("analytic_bearing_force", r.analytic.bearing_force.norm(), "N", "R, the same model");
+  value("analytic_output_rotation", r.analytic.output_rotation / arcmin, "arcmin",
+        "output rotation θ, the same model (rigid bodies: a lower bound of the FE's)");
   value("bearing_angle", r.bearing_angle / degree, "deg", "α_R in M_h = R·e·cos α_R");
   value("bearing_force_direction", r.bearing_force_direction / degree, "deg",
         "polar angle of R (force on the eccentric)");
@@ -406,7 +409,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(Command{
     "cycloid-loads",
     "cycloid drive under load (FE contact): roller and pin forces, bearing force, stiffness",
-    "Solves the cycloid (Cyclo) drive of docs/references.md §4 at one crank angle with the FE contact\n"
+    "Solves the cycloid (Cyclo) drive of docs/references.md §4 at one crank angle with the FE "
+    "contact\n"
     "solver: disc on its eccentric bearing (free to turn), rollers on fixed pins, output pins\n"
     "tied to one rigid output member carrying M_c; one contact pair per roller and per pin.\n"
     "Reports P_i, Q_j, the bearing force R and its angle, torque balances, loaded counts, peak\n"
