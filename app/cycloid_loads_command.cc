@@ -122,6 +122,8 @@ void report_position(Report& report, const stiffness::CycloidLoadResult& r,
         "P_max, rigid disc + line-contact compliance");
   value("analytic_max_pin_force", r.analytic.max_pin_force, "N", "Q_max, the same model");
   value("analytic_bearing_force", r.analytic.bearing_force.norm(), "N", "R, the same model");
+  value("analytic_output_rotation", r.analytic.output_rotation / arcmin, "arcmin",
+        "output rotation θ, the same model (rigid bodies: a lower bound of the FE's)");
   value("bearing_angle", r.bearing_angle / degree, "deg", "α_R in M_h = R·e·cos α_R");
   value("bearing_force_direction", r.bearing_force_direction / degree, "deg",
         "polar angle of R (force on the eccentric)");

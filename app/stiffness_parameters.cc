@@ -310,6 +310,18 @@ void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnes
             format_number(pair.position * 1e3, 5) + " mm from T1)");
   report.add_value(prefix + "max_contact_pressure", r.max_contact_pressure / 1e6, "MPa",
                    label + ": largest nodal contact pressure (Q2: an estimate, docs/accuracy.md)");
+  if (!r.pairs.empty())
+  {
+    // The most loaded pair's closed zone: its width across the profile is 2a of Hertz's line
+    // contact to within one contact cell (the edge lies between a closed and an open node).
+    const auto loaded =
+        std::max_element(r.pairs.begin(), r.pairs.end(),
+                         [](auto& a, auto& b) { return a.normal_force < b.normal_force; });
+    report.add_value(prefix + "contact_width", loaded->contact_length * 1e3, "mm",
+                     label + ": extent of the closed nodes of the most loaded pair");
+    report.add_value(prefix + "contact_normal_force", loaded->normal_force, "N",
+                     label + ": normal force of the most loaded pair");
+  }
   report.add_value(prefix + "pinion_root_stress", r.pinion_root_stress / 1e6, "MPa",
                    label + ": largest first principal stress on the pinion fillets");
   report.add_value(prefix + "wheel_root_stress", r.wheel_root_stress / 1e6, "MPa",

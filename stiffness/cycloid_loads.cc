@@ -174,6 +174,13 @@ CycloidLoads<dim>::CycloidLoads(const CycloidLoadSettings& given) : settings(giv
   settings.scene.young_modulus = settings.material.youngs_modulus;
   settings.scene.poisson_ratio = settings.material.poisson_ratio;
   settings.elasticity.thickness = settings.scene.disc_width;
+  // The Hertz estimate that sizes automatic contact cells (Mesh/contact size or fine radius 0)
+  // takes the case's own forces: P_max and Q_max of the rigid-disc model under this torque
+  // (cycloid_analytic.h), not the published case's.
+  const CycloidAnalyticResult estimate = analytic_cycloid_loads(
+      settings.scene, settings.output_torque, settings.roller_material.youngs_modulus);
+  settings.scene.roller_force = estimate.max_roller_force;
+  settings.scene.pin_force = estimate.max_pin_force;
   // A corrected profile touches no roller at the nominal placement, and the contact solve
   // starts from the touching nodes (the pins'): the disc would be free to turn. Turning disc and
   // output member rigidly through the clearance first is the same rigid motion the drive makes

@@ -66,9 +66,10 @@ TEST(Hertz, PlaneStrainCylindersRefinementStudy)
     // Few active-set steps: the set grows from the single touching node to ~60 nodes.
     EXPECT_LE(run.iterations, 12u);
   }
-  // Finest level (observed: a −0.07 %, p0 −0.002 %): the 2 % bound.
-  EXPECT_NEAR(run.fitted_half_width / hertz.half_width, 1., 0.02);
-  EXPECT_NEAR(run.peak_pressure / hertz.peak_pressure, 1., 0.02);
+  // Finest level, measured 2026-11-26: a −0.073 %, p_max −0.0021 %; tolerances about three times
+  // those (the 12.5 and 6.25 µm levels: a −0.84 %, +0.20 %; p_max −0.10 %, +0.016 %).
+  EXPECT_NEAR(run.fitted_half_width / hertz.half_width, 1., 0.0025);
+  EXPECT_NEAR(run.peak_pressure / hertz.peak_pressure, 1., 7e-5);
   // The last closed node lies within about one (lower, 1.3× coarser) cell of the Hertz edge.
   EXPECT_NEAR(run.closed_extent, hertz.half_width, 2. * fine_size);
 }

@@ -1,7 +1,7 @@
 // The Hertz case extruded into hexahedra (one cell through the 1 mm depth, u_z = 0 on both z
 // faces: plane strain) must reproduce the 2D plane-strain result. The 3D mortar integrates the
 // slave faces with an iterated Gauss rule instead of the exact 2D segmentation, so the two
-// agree to that quadrature error; the issue asks for 2 %.
+// agree to that quadrature error (tolerances below: three times the measured deviations).
 #include "contact/cylinder_pair.h"
 #include "tests/contact/hertz_cylinders.h"
 
@@ -44,8 +44,10 @@ TEST(Hertz3d, ExtrudedHexahedraAgreeWithPlaneStrain)
             << " iterations\n3D: P = " << solid.load << " N, a = " << solid.half_width * 1e3
             << " mm, p_max = " << solid.peak * 1e-6 << " MPa, " << solid.iterations
             << " iterations\n";
-  // Observed: P equal to 1e-6, a to 2e-5, p_max to 2e-4 (quadrature of the 3D mortar).
-  EXPECT_NEAR(solid.load / planar.load, 1., 0.02);
-  EXPECT_NEAR(solid.half_width / planar.half_width, 1., 0.02);
-  EXPECT_NEAR(solid.peak / planar.peak, 1., 0.02);
+  // With u_z = 0 on both z faces and one cell through the depth the 3D problem is plane strain
+  // exactly, so the two agree up to the quadrature of the 3D mortar. Measured 2026-11-26: P equal
+  // to 1e-6, a to 2e-5, p_max to 2e-4; tolerances three times those.
+  EXPECT_NEAR(solid.load / planar.load, 1., 3e-6);
+  EXPECT_NEAR(solid.half_width / planar.half_width, 1., 6e-5);
+  EXPECT_NEAR(solid.peak / planar.peak, 1., 6e-4);
 }

