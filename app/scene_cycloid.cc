@@ -7,6 +7,11 @@
 #include "app/parameter_patterns.h"
 #include "app/scene.h"
 #include "app/units.h"
+#include "errors/errors.h"
+#include "stiffness/cycloid_analytic.h"
+
+#include <cmath>
+#include <cstdlib>
 
 namespace
 {
@@ -21,8 +26,10 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
                     "disc rotation ψ about its own centre (degrees); the disc centre follows "
                     "the eccentric with the ring fixed");
-  prm.declare_entry("roller force", "1711", Double(0.),
-                    "roller force for the Hertz estimate of h_c (N; docs/references.md §4 P_max)");
+  prm.declare_entry("roller force", "auto", Anything(),
+                    "roller force for the Hertz estimate of automatic contact cells (N), or auto: "
+                    "P_max and Q_max of the rigid-disc load model (stiffness/cycloid_analytic.h) "
+                    "under Abaqus deck/output torque");
   declare_elastic_constants(prm, "the disc and the rollers");
   prm.leave_subsection();
 }
@@ -50,16 +57,44 @@ private:
   geometry::CycloidSceneSpec spec;
 };
 
+// The roller and pin forces the contact cells are sized for: given, or the case's own load as
+// `cycloid-loads` sizes its cells (stiffness/cycloid_loads.cc), under the deck's output torque.
+void set_sizing_forces(const std::string& roller_force, const double output_torque,
+                       geometry::CycloidSceneSpec& spec)
+{
+  if (roller_force == "auto")
+  {
+    if (!(std::abs(output_torque) > 0.))
+      throw InputError("Cycloid scene/roller force",
+                       "auto estimates the forces under Abaqus deck/output torque, which is 0: "
+                       "give a force (N) or a torque");
+    const stiffness::CycloidAnalyticResult estimate =
+        stiffness::analytic_cycloid_loads(spec, output_torque);
+    spec.roller_force = estimate.max_roller_force;
+    spec.pin_force = estimate.max_pin_force;
+    return;
+  }
+  char* end = nullptr;
+  spec.roller_force = std::strtod(roller_force.c_str(), &end);
+  if (end == roller_force.c_str() || *end != '\0' || !(spec.roller_force > 0.))
+    throw InputError("Cycloid scene/roller force",
+                     "'" + roller_force + "' is neither auto nor a positive force (N)");
+}
+
 std::unique_ptr<Scene> parse(ParameterHandler& prm)
 {
   geometry::CycloidSceneSpec spec;
   parse_cycloid_scene_parameters(prm, spec);
   prm.enter_subsection("Cycloid scene");
   spec.disc_rotation = prm.get_double("disc rotation") * degree;
-  spec.roller_force = prm.get_double("roller force");
+  const std::string roller_force = prm.get("roller force");
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
   spec.mesh = parse_scene_mesh_parameters(prm);
+  prm.enter_subsection("Abaqus deck");
+  const double output_torque = prm.get_double("output torque");
+  prm.leave_subsection();
+  set_sizing_forces(roller_force, output_torque, spec);
   return std::make_unique<CycloidMeshScene>(spec);
 }
 
