@@ -4,7 +4,7 @@
     plot_deformed.py POSITION.vtu [POSITION_2.vtu ...] OUT.png
 
 The VTU files are what `gearstiff stiffness` writes for a position (one per rank, deal.II
-DataOut: points, cells, point data `displacement`, `von_mises`, `contact_pressure`; ASCII or
+DataOut: points, cells, point data `displacement`, `von_mises_stress`, `contact_pressure`; ASCII or
 zlib-compressed base64 binary). Left: the deformed bodies, displacement magnified so that the
 largest one shows as 2 % of the scene, coloured by von Mises stress. Right: a zoom on the
 contact with the largest pressure, the contact pressure at the closed nodes as coloured dots
@@ -89,7 +89,7 @@ def main():
             xyz = [points[3 * i:3 * i + 3] for i in range(len(points) // 3)]
             ncomp, u = data["displacement"]
             disp = [u[ncomp * i:ncomp * i + 2] for i in range(len(xyz))]
-            mises = data.get("von_mises", (1, [0.] * len(xyz)))[1]
+            mises = data.get("von_mises_stress", data.get("von_mises", (1, [0.] * len(xyz))))[1]
             pressure = data.get("contact_pressure", (1, [0.] * len(xyz)))[1]
             start = 0
             for end in cells["offsets"]:
@@ -110,8 +110,10 @@ def main():
     fig, (whole, zoom) = plt.subplots(1, 2, figsize=(13, 5.5))
     for ax, factor in ((whole, scale), (zoom, 1.)):
         shapes = [[(x + factor * dx, y + factor * dy) for x, y, dx, dy in cell] for cell in base]
-        collection = PolyCollection(shapes, array=stress, cmap="viridis", edgecolor="k",
-                                    linewidth=0.05)
+        # Cell edges only where the cells are large enough on the page to be seen.
+        collection = PolyCollection(shapes, array=stress, cmap="viridis",
+                                    edgecolor="face" if ax is whole else "0.3",
+                                    linewidth=0.2 if ax is whole else 0.1)
         ax.add_collection(collection)
         ax.set_aspect("equal")
         ax.autoscale_view()
@@ -121,7 +123,8 @@ def main():
     whole.set_title(f"deformed shape, displacement ×{scale:.3g}", fontsize=10)
     if contact:
         peak = max(contact, key=lambda c: c[2])
-        half = 0.02 * extent
+        # A few tenths of a millimetre: the loaded zone of a tooth contact and its cells.
+        half = 0.004 * extent
         zoom.set_xlim(peak[0] - half, peak[0] + half)
         zoom.set_ylim(peak[1] - half, peak[1] + half)
         dots = zoom.scatter([c[0] for c in contact], [c[1] for c in contact],
