@@ -1,7 +1,7 @@
 // `gearstiff mesh [scene.prm]`: writes the FE mesh of one scene (ASCII .msh 4.1, all quadrilateral
 // in 2D, hexahedra extruded over the face width in 3D) and reports its ids, extent, predicted
-// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1 at
-// the single-pair position (pitch point).
+// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1
+// at the single-pair position (pitch point).
 //
 //   gearstiff mesh -o out                                        out/scene.msh, 2D, single pair
 //   gearstiff mesh --set "Gear pair scene/position=double" -o out
@@ -23,6 +23,7 @@
 #include "geometry/scene_cycloid.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
+#include "stiffness/mesh_stiffness.h"
 
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
@@ -49,9 +50,10 @@ void declare_deck_parameters(ParameterHandler& prm)
   prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
-  prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
-                    "the cycloid deck is frictionless, as cycloid-loads)");
+  prm.declare_entry(
+      "friction coefficient", "0.01", Double(0., 1.),
+      "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
+      "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
                     "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
                     "(docs/references.md §4: 440)");
@@ -69,6 +71,12 @@ void declare_parameters(ParameterHandler& prm)
                     "with its rollers (Cycloid disc, Cycloid scene)");
   prm.declare_entry("mesh file", "scene.msh", Anything(),
                     "name of the .msh file written into the -o folder");
+  prm.declare_entry("gear pair defaults", "mesh", Selection("mesh|stiffness"),
+                    "mesh: this command's gear-pair scene defaults (sector rims, sizes from the "
+                    "Hertz half-width); stiffness: the scene `gearstiff stiffness` solves (full "
+                    "rims, three teeth per gear, its mesh sizes) for every one of those entries "
+                    "left at this command's default: with Mesh/format = inp, the CalculiX deck of "
+                    "the stiffness scene (docs/calculix.md)");
   prm.leave_subsection();
 
   declare_gear_pair_parameters(prm);
@@ -124,10 +132,42 @@ void declare_parameters(ParameterHandler& prm)
   declare_deck_parameters(prm);
 }
 
-geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
+// Scene/gear pair defaults = stiffness: the entries of the scene that still hold this command's
+// defaults take those of stiffness::default_stiffness_scene().
+void apply_stiffness_scene_defaults(ParameterHandler& prm)
+{
+  const geometry::GearPairSceneSpec mesh_scene;
+  const geometry::GearPairSceneSpec stiffness_scene = stiffness::default_stiffness_scene();
+  const auto replace = [&](const std::string& key, const std::string& from, const std::string& to)
+  {
+    if (prm.get(key) == from)
+      prm.set(key, to);
+  };
+  const auto rim_name = [](geometry::RimModel rim)
+  { return std::string(rim == geometry::RimModel::full ? "full" : "sector"); };
+  prm.enter_subsection("Gear pair scene");
+  replace("rim", rim_name(mesh_scene.rim), rim_name(stiffness_scene.rim));
+  replace("pinion teeth modelled", std::to_string(mesh_scene.pinion_teeth_modelled),
+          std::to_string(stiffness_scene.pinion_teeth_modelled));
+  replace("wheel teeth modelled", std::to_string(mesh_scene.wheel_teeth_modelled),
+          std::to_string(stiffness_scene.wheel_teeth_modelled));
+  prm.leave_subsection();
+  prm.enter_subsection("Mesh");
+  const auto size = [&](const std::string& key, double from, double to, double unit)
+  { replace(key, format_number(from / unit, 10), format_number(to / unit, 10)); };
+  size("contact size", mesh_scene.mesh.contact_size, stiffness_scene.mesh.contact_size, mm);
+  size("fine radius", mesh_scene.mesh.fine_radius, stiffness_scene.mesh.fine_radius, mm);
+  size("growth rate", mesh_scene.mesh.growth_rate, stiffness_scene.mesh.growth_rate, 1.);
+  size("body size", mesh_scene.mesh.body_size, stiffness_scene.mesh.body_size, mm);
+  size("rim size", mesh_scene.mesh.rim_size, stiffness_scene.mesh.rim_size, mm);
+  prm.leave_subsection();
+}
+
+geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm,
+                                             std::vector<kinematics::DerivedSize>& derived)
 {
   geometry::GearPairSceneSpec spec;
-  spec.pair = parse_gear_pair_parameters(prm);
+  spec.pair = parse_gear_pair_parameters(prm, derived);
   parse_gear_scene_parameters(prm, spec);
   spec.mesh = parse_scene_mesh_parameters(prm);
   prm.enter_subsection("Gear pair scene");
@@ -308,7 +348,10 @@ void run(ParameterHandler& prm, CommandContext& context)
   prm.enter_subsection("Scene");
   const std::string type = prm.get("type");
   const std::string file_name = prm.get("mesh file");
+  const bool stiffness_scene = prm.get("gear pair defaults") == "stiffness";
   prm.leave_subsection();
+  if (stiffness_scene)
+    apply_stiffness_scene_defaults(prm);
   if (file_name.empty() || file_name.find('/') != std::string::npos ||
       std::filesystem::path(file_name).extension() != ".msh")
     throw InputError("Scene/mesh file", "must be a plain file name ending in .msh");
@@ -316,8 +359,11 @@ void run(ParameterHandler& prm, CommandContext& context)
 
   // Parse everything first: a bad parameter must stop the command before gmsh runs.
   const bool gear = type == "gear pair";
+  std::vector<kinematics::DerivedSize> derived;
   const geometry::GearPairSceneSpec gear_spec =
-      gear ? parse_gear_scene(prm) : geometry::GearPairSceneSpec();
+      gear ? parse_gear_scene(prm, derived) : geometry::GearPairSceneSpec();
+  if (!derived.empty())
+    context.report.add_text("derived sizes", kinematics::derived_sizes_text(derived));
   const bool cycloid = type == "cycloid";
   const geometry::CylindersSceneSpec cylinder_spec =
       type == "cylinders" ? parse_cylinders(prm) : geometry::CylindersSceneSpec();
@@ -356,6 +402,10 @@ void run(ParameterHandler& prm, CommandContext& context)
                            : geometry::cylinders_deck_spec(cylinder_spec, info, deck.friction,
                                                            deck.penalty_factor),
                  deck, file_name, context);
+    // The geometry and mesh as a picture (from the .msh, before a scratch copy is removed).
+    if (context.writes_files() && context.is_root())
+      context.plot("plot_mesh.py", {path}, "scene_mesh.png",
+                   "the scene's geometry and mesh, with a zoom on the contact zones");
   }
   catch (...)
   {
@@ -369,6 +419,16 @@ void run(ParameterHandler& prm, CommandContext& context)
   context.pcout << "mesh: " << info.kind << ", " << info.mesh.n_cells << " cells in "
                 << info.time_total << " s" << std::endl;
   report_scene(info, type, context.report);
+  if (gear)
+  {
+    // What k = T1/(r_b1²·Δφ) needs from a solver's rotation of this scene's deck
+    // (tools/calculix_stiffness.py).
+    const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(gear_spec.pair);
+    context.report.add_value("pinion_base_radius", 0.5 * pair.pinion.base_diameter / mm, "mm",
+                             "r_b1, pinion base radius");
+    context.report.add_value("pinion_torque", gear_spec.pinion_torque, "N·m",
+                             "T1, the torque on the pinion (the deck's load)");
+  }
 }
 
 const CommandRegistration registration(
