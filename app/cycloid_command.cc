@@ -167,6 +167,11 @@ void run(ParameterHandler& prm, CommandContext& context)
                 "equations: clearance Delta r at both arc ends, touching with equal slopes at S, "
                 "arc length epsilon*360deg/z_s; r_k = C(q_k - q) + r. Clearances: distance from "
                 "each roller centre to the corrected profile minus q, disc at nominal kinematics.");
+  report.add_text("roller clearances",
+                  "Δr_i at disc rotation ψ = " + format_number(disc_rotation / degree, 6) +
+                      "° (Cycloid correction/disc rotation); `gearstiff cycloid-loads` reports the "
+                      "same clearance (column gap_*) at the disc rotation of its crank angle, so "
+                      "the two agree when ψ does");
   if (context.writes_files())
     write_outline(context.output_file("disc_outline_nominal.csv", "nominal disc outline"),
                   nominal_lobe);

@@ -241,6 +241,10 @@ void run(ParameterHandler& prm, CommandContext& context)
     info = scene->write_mesh(path);
     if (deck.write)
       write_deck(info, scene->deck_spec(info, deck.options), deck, file_name, context);
+    // The geometry and mesh as a picture (from the .msh, before a scratch copy is removed).
+    if (context.writes_files() && context.is_root())
+      context.plot("plot_mesh.py", {path}, "scene_mesh.png",
+                   "the scene's geometry and mesh, with a zoom on the contact zones");
   }
   catch (...)
   {

@@ -272,6 +272,10 @@ struct CycloidHysteresis
   double stiffness = 0.;         // N·m/rad, secant 50%–100% of M_c on each loading branch, mean
   double lost_motion = 0.;       // rad, mid-width rotation at +3% minus that at −3% of M_c
   double hysteresis = 0.;        // rad, width of the loop (falling − rising) at ±3% of M_c, mean
+  // rad, what the width is known to: half the difference of its two estimates (at +3% and −3%
+  // of M_c), at least 1e-9·(rotation span of the loop); a width below it (or below zero, which
+  // friction cannot give) is no measurable loop.
+  double hysteresis_resolution = 0.;
   unsigned int steps = 0, active_set_iterations = 0; // -, load steps, all flanks
   double time = 0.;                                  // s, wall, scene(s) and solves
 };

@@ -86,7 +86,6 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
                     const std::string& scene_file_stem,
                     const std::function<void(const std::string&)>& progress)
 {
-  const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
   if (cases.empty())
     return {};
   const unsigned int rollers = cases[0].scene.ring.rollers, pins = cases[0].scene.output_pins;
@@ -108,7 +107,7 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
         std::filesystem::remove(settings.scene_file);
         failure.rethrow();
         mine.emplace_back(k, r);
-        if (progress && rank == 0)
+        if (progress) // on the rank that solved the case
           progress("case " + std::to_string(k + 1) + "/" + std::to_string(cases.size()) +
                    ": P_max = " + std::to_string(r.max_roller_force) + " N, " +
                    std::to_string(r.n_dofs) + " DoFs, " + std::to_string(r.total_time) +

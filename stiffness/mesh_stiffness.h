@@ -26,6 +26,7 @@
 #include "fem/parameters.h"
 #include "geometry/scene_gear_pair.h"
 
+#include <functional>
 #include <memory>
 #include <mpi.h>
 #include <string>
@@ -55,6 +56,9 @@ struct GearMeshStiffnessSettings
   // Shared by the positions a sweep solves in turn (null: none): each starts from the zone the
   // previous one converged to (contact.warm_start) and leaves its own for the next.
   std::shared_ptr<std::vector<contact::ContactZone>> warm_start;
+  // Called with one line per stage of run() (scene, setup, solve; with the elapsed time) on
+  // rank 0 of the analysis' communicator; empty: silent.
+  std::function<void(const std::string&)> progress;
 };
 
 // One tooth pair in the scene and what it carries.
