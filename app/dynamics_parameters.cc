@@ -130,6 +130,13 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
 {
   MeshPhysics physics;
   physics.damping = prm.get_double("damping");
+  // Without damping the start-up transient never decays: there is no steady state, and the
+  // figures read from the window (DTE, K_v) depend on where the window starts.
+  if (!(physics.damping > 0.) || !std::isfinite(physics.damping))
+    throw InputError(section + "/damping",
+                     "must be positive and finite (N·s/m): without mesh damping the start-up "
+                     "transient never decays (decay time infinite), so there is no steady state "
+                     "to report");
   physics.friction_coefficient = prm.get_double("friction coefficient");
   physics.driver_friction_arm = prm.get_double("driver friction arm") * mm;
   physics.driven_friction_arm = prm.get_double("driven friction arm") * mm;
@@ -530,6 +537,28 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
   const TrainParameters train = parse_train_parameters(prm);
   dynamics::TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(train.text);
+  // 'Train/input speed' belongs to the 'gears and meshes' model; the train model's speeds come
+  // from Train/inputs. A value set to something else would be ignored: refuse the conflict.
+  prm.enter_subsection("Train");
+  const double input_speed = prm.get_double("input speed");
+  prm.leave_subsection();
+  const double default_speed = dynamics::split_path_case().input_speed_rpm;
+  if (std::abs(input_speed - default_speed) > 1e-9 * default_speed)
+  {
+    const bool same = input.spec.inputs.size() == 1 &&
+                      std::abs(input_speed * rpm - input.spec.inputs.front().second) <=
+                          1e-9 * std::abs(input.spec.inputs.front().second);
+    if (!same)
+      throw InputError("Train/input speed",
+                       "is not used by Train/model = train, whose speeds come from Train/inputs "
+                       "(" +
+                           (input.spec.inputs.empty()
+                                ? std::string("none given")
+                                : input.spec.inputs.front().first + " at " +
+                                      format_number(input.spec.inputs.front().second / rpm, 6) +
+                                      " rpm") +
+                           "): give the speed there and leave 'input speed' at its default");
+  }
   input.input_torque = train.input_torque;
   parse_train_extras(prm, input);
   input.initial_position = p.initial_position;
