@@ -7,6 +7,7 @@
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else. Errors go to stderr as one line.
 #include "app/command.h"
+#include "app/parameter_file_check.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "fem/mpi_start.h"
@@ -171,6 +172,7 @@ void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
     throw InputError(name, "is not a regular file (a parameter file .prm or .json is expected)");
   if (access(file.c_str(), R_OK) != 0)
     throw InputError(name, "parameter file cannot be read (permissions)");
+  check_json_parameter_file(file);
   try
   {
     prm.parse_input(file, "", false, true);

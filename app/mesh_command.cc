@@ -1,7 +1,7 @@
 // `gearstiff mesh [scene.prm]`: writes the FE mesh of one scene (ASCII .msh 4.1, all quadrilateral
 // in 2D, hexahedra extruded over the face width in 3D) and reports its ids, extent, predicted
-// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1 at
-// the single-pair position (pitch point).
+// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1
+// at the single-pair position (pitch point).
 //
 //   gearstiff mesh -o out                                        out/scene.msh, 2D, single pair
 //   gearstiff mesh --set "Gear pair scene/position=double" -o out
@@ -49,9 +49,10 @@ void declare_deck_parameters(ParameterHandler& prm)
   prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
-  prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
-                    "the cycloid deck is frictionless, as cycloid-loads)");
+  prm.declare_entry(
+      "friction coefficient", "0.01", Double(0., 1.),
+      "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
+      "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
                     "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
                     "(docs/references.md §4: 440)");
@@ -289,8 +290,7 @@ void write_deck(const geometry::SceneInfo& info, geometry::AbaqusDeckSpec deck,
             "rotation prescribed in the deck's first step (" + body.name + ")");
     return;
   }
-  const std::filesystem::path scratch = std::filesystem::temp_directory_path() /
-                                        ("gearstiff-deck-" + std::to_string(getpid()) + ".inp");
+  const std::filesystem::path scratch = std::filesystem::path(scratch_directory()) / "deck.inp";
   try
   {
     geometry::write_abaqus_deck(info, deck, scratch.string());
@@ -332,8 +332,7 @@ void run(ParameterHandler& prm, CommandContext& context)
     path = context.output_file(file_name, "scene mesh (ASCII .msh 4.1, ids in summary.json)");
   else
   {
-    scratch = std::filesystem::temp_directory_path() /
-              ("gearstiff-mesh-" + std::to_string(getpid()) + ".msh");
+    scratch = std::filesystem::path(scratch_directory()) / "mesh.msh";
     path = scratch.string();
   }
   geometry::SceneInfo info;
