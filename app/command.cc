@@ -41,6 +41,21 @@ const std::string staging_prefix = ".gearstiff-staging-";
 // The staging folder the signal thread removes (empty: none); guarded by the mutex.
 std::mutex staging_mutex;
 std::string staging_to_remove;
+// The scratch folder (scratch_directory()), removed at exit and by the signal thread.
+std::string scratch_to_remove;
+const std::string scratch_prefix = "gearstiff-scratch-";
+
+struct ScratchRemoval
+{
+  ~ScratchRemoval()
+  {
+    const std::lock_guard<std::mutex> lock(staging_mutex);
+    std::error_code error;
+    if (!scratch_to_remove.empty())
+      fs::remove_all(scratch_to_remove, error);
+    scratch_to_remove.clear();
+  }
+};
 
 void set_staging_to_remove(const std::string& path)
 {
@@ -57,9 +72,9 @@ fs::path existing_ancestor(const fs::path& path)
   return candidate.empty() ? fs::current_path() : candidate;
 }
 
-// Staging folders in `folder` of processes that no longer run (killed by SIGKILL, or a
-// crash): nothing will ever move or remove them.
-void remove_stale_staging(const fs::path& folder)
+// Staging (or scratch) folders in `folder` of processes that no longer run (killed by SIGKILL, or
+// a crash): nothing will ever move or remove them.
+void remove_stale_staging(const fs::path& folder, const std::string& prefix = staging_prefix)
 {
   std::error_code error;
   if (!fs::is_directory(folder, error))
@@ -67,9 +82,9 @@ void remove_stale_staging(const fs::path& folder)
   for (const auto& entry : fs::directory_iterator(folder, error))
   {
     const std::string name = entry.path().filename().string();
-    if (name.rfind(staging_prefix, 0) != 0)
+    if (name.rfind(prefix, 0) != 0)
       continue;
-    const std::string digits = name.substr(staging_prefix.size());
+    const std::string digits = name.substr(prefix.size());
     if (digits.empty() || digits.size() > 9 ||
         digits.find_first_not_of("0123456789") != std::string::npos)
       continue;
@@ -90,6 +105,8 @@ void wait_for_signals(sigset_t signals)
     // Twice: the main thread may still be creating a file while the first pass runs.
     for (int pass = 0; pass < 2 && !staging_to_remove.empty(); ++pass)
       fs::remove_all(staging_to_remove, error);
+    for (int pass = 0; pass < 2 && !scratch_to_remove.empty(); ++pass)
+      fs::remove_all(scratch_to_remove, error);
   }
   std::signal(signal_number, SIG_DFL);
   pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
@@ -198,6 +215,35 @@ void StagedOutput::commit()
   }
   committed = true;
   set_staging_to_remove("");
+}
+
+std::string scratch_directory()
+{
+  static ScratchRemoval removal; // constructed before the path is set: destroyed after use
+  const std::lock_guard<std::mutex> lock(staging_mutex);
+  if (scratch_to_remove.empty())
+  {
+    std::error_code error;
+    const fs::path temporary = fs::temp_directory_path(error);
+    remove_stale_staging(temporary, scratch_prefix);
+    const fs::path folder = temporary / (scratch_prefix + std::to_string(getpid()));
+    fs::create_directories(folder, error);
+    if (error)
+      throw InputError("TMPDIR", "cannot create the scratch folder '" + folder.string() +
+                                     "': " + error.message());
+    scratch_to_remove = folder.string();
+  }
+  return scratch_to_remove;
+}
+
+std::string shared_scratch_directory(MPI_Comm communicator)
+{
+  std::string folder = scratch_directory();
+  int length = static_cast<int>(folder.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, communicator);
+  folder.resize(length);
+  MPI_Bcast(folder.data(), length, MPI_CHAR, 0, communicator);
+  return folder;
 }
 
 std::string tools_directory()

@@ -184,7 +184,13 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
   MeshPhysics physics;
   const std::string damping = prm.get("damping");
   if (damping == "auto")
+  {
     physics.damping_ratio = prm.get_double("damping ratio");
+    if (!(physics.damping_ratio > 0.))
+      throw InputError(section + "/damping ratio",
+                       "must be positive: without mesh damping the start-up transient never "
+                       "decays, so there is no steady state to report");
+  }
   else
   {
     std::size_t used = 0;
@@ -200,6 +206,13 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
         !std::isfinite(physics.damping))
       throw InputError(section + "/damping",
                        "'" + damping + "' is neither a damping (N·s/m) nor auto");
+    // Without damping the start-up transient never decays: there is no steady state, and the
+    // figures read from the window (DTE, K_v) depend on where the window starts.
+    if (!(physics.damping > 0.))
+      throw InputError(section + "/damping",
+                       "must be positive and finite (N·s/m): without mesh damping the start-up "
+                       "transient never decays (decay time infinite), so there is no steady "
+                       "state to report");
   }
   physics.friction_coefficient = prm.get_double("friction coefficient");
   physics.driver_friction_arm = prm.get_double("driver friction arm") * mm;
@@ -662,6 +675,28 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
   prm.leave_subsection();
   dynamics::TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(train.text);
+  // 'Train/input speed' belongs to the 'gears and meshes' model; the train model's speeds come
+  // from Train/inputs. A value set to something else would be ignored: refuse the conflict.
+  prm.enter_subsection("Train");
+  const double input_speed = prm.get_double("input speed");
+  prm.leave_subsection();
+  const double default_speed = dynamics::split_path_case().input_speed_rpm;
+  if (std::abs(input_speed - default_speed) > 1e-9 * default_speed)
+  {
+    const bool same = input.spec.inputs.size() == 1 &&
+                      std::abs(input_speed * rpm - input.spec.inputs.front().second) <=
+                          1e-9 * std::abs(input.spec.inputs.front().second);
+    if (!same)
+      throw InputError("Train/input speed",
+                       "is not used by Train/model = train, whose speeds come from Train/inputs "
+                       "(" +
+                           (input.spec.inputs.empty()
+                                ? std::string("none given")
+                                : input.spec.inputs.front().first + " at " +
+                                      format_number(input.spec.inputs.front().second / rpm, 6) +
+                                      " rpm") +
+                           "): give the speed there and leave 'input speed' at its default");
+  }
   input.input_torque = train.input_torque;
   parse_train_extras(prm, input);
   input.initial_position = p.initial_position;

@@ -7,6 +7,7 @@
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else. Errors go to stderr as one line.
 #include "app/command.h"
+#include "app/parameter_file_check.h"
 #include "app/parameter_names.h"
 #include "app/units.h"
 #include "errors/errors.h"
@@ -179,6 +180,7 @@ void read_parameter_file(dealii::ParameterHandler& prm, const DeclaredSection& d
     throw InputError(name, "parameter file cannot be read (permissions)");
   // Misspelt names first: the section and the nearest declared names, not deal.II's message.
   check_parameter_file(declared, file);
+  check_json_parameter_file(file);
   try
   {
     prm.parse_input(file, "", false, true);

@@ -195,8 +195,7 @@ void write_deck(const geometry::SceneInfo& info, geometry::AbaqusDeckSpec deck,
             "rotation prescribed in the deck's first step (" + body.name + ")");
     return;
   }
-  const std::filesystem::path scratch = std::filesystem::temp_directory_path() /
-                                        ("gearstiff-deck-" + std::to_string(getpid()) + ".inp");
+  const std::filesystem::path scratch = std::filesystem::path(scratch_directory()) / "deck.inp";
   try
   {
     geometry::write_abaqus_deck(info, deck, scratch.string());
@@ -231,8 +230,7 @@ void run(ParameterHandler& prm, CommandContext& context)
     path = context.output_file(file_name, "scene mesh (ASCII .msh 4.1, ids in summary.json)");
   else
   {
-    scratch = std::filesystem::temp_directory_path() /
-              ("gearstiff-mesh-" + std::to_string(getpid()) + ".msh");
+    scratch = std::filesystem::path(scratch_directory()) / "mesh.msh";
     path = scratch.string();
   }
   geometry::SceneInfo info;

@@ -1,5 +1,7 @@
 #include "app/report.h"
 
+#include "app/command.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -276,9 +278,7 @@ void Report::write_table_csv(const ReportTable& table, std::ostream& out) const
 }
 
 TemporaryCsv::TemporaryCsv(const Report& report, const std::string& table_name)
-    : file((std::filesystem::temp_directory_path() /
-            ("gearstiff-" + table_name + "-" + std::to_string(getpid()) + ".csv"))
-               .string())
+    : file((std::filesystem::path(scratch_directory()) / (table_name + ".csv")).string())
 {
   std::ofstream out(file);
   for (const auto& table : report.tables())

@@ -7,11 +7,13 @@
 #include "app/units.h"
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "errors/limits.h"
 #include "kinematics/gear_pair.h"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <sstream>
@@ -123,10 +125,9 @@ StiffnessMode parse_mode(const std::string& text)
 
 // The checks the analysis makes before it meshes, run at parse time: the library's own (one
 // copy each), their field names mapped to the parameters by the caller.
-void check_stiffness_parameters(const StiffnessParameters& p,
-                                const kinematics::GearPairGeometry& pair)
+void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPairGeometry& pair)
 {
-  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  stiffness::GearMeshStiffnessSettings& s = p.settings;
   stiffness::check_stiffness_settings(s);
   // The pattern admits the closed interval; ν = 0.5 makes λ infinite (incompressible) and
   // E = 0 no material at all.
@@ -135,9 +136,37 @@ void check_stiffness_parameters(const StiffnessParameters& p,
   if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
     throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
   if (p.mode == StiffnessMode::sweep)
+  {
+    // The work before the positions are allocated: a 32-position sweep of the default scene
+    // takes 18.7 s on one rank (bench/contact_speed.md), 0.58 s a position; finer meshes take
+    // longer, so this is a lower bound. Refused above limits::max_run_seconds (2·10⁹ positions
+    // were allocated before).
+    constexpr double seconds_per_position = 18.7 / 32.;
+    const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const double seconds = std::ceil(double(p.sweep.positions) / ranks) * seconds_per_position;
+    if (seconds > limits::max_run_seconds)
+      throw InputError(stiffness::stiffness_parameter::positions,
+                       std::to_string(p.sweep.positions) + " positions would take at least " +
+                           format_number(seconds / 3600., 3) + " h on " + std::to_string(ranks) +
+                           " rank(s) at " + format_number(seconds_per_position, 2) +
+                           " s a position (limit " +
+                           format_number(limits::max_run_seconds / 3600., 2) +
+                           " h, docs/limits.md): use fewer positions or more MPI ranks");
     stiffness::sweep_positions(pair, p.sweep);
+  }
   // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  // The ends as printed below (6 decimals of a degree) must be accepted: a roll angle within
+  // half a unit of the last printed digit of an end is that end.
+  const double printed = 0.5e-6 * degree;
+  const double start_angle = pair.contact_start / r_b1, end_angle = pair.contact_end / r_b1;
+  if (p.mode == StiffnessMode::roll_angle)
+  {
+    if (std::abs(s.scene.pinion_roll_angle - start_angle) <= printed)
+      s.scene.pinion_roll_angle = start_angle;
+    if (std::abs(s.scene.pinion_roll_angle - end_angle) <= printed)
+      s.scene.pinion_roll_angle = end_angle;
+  }
   const double position = s.scene.pinion_roll_angle * r_b1;
   if (p.mode == StiffnessMode::roll_angle &&
       (position < pair.contact_start - 1e-12 || position > pair.contact_end + 1e-12))
@@ -203,11 +232,9 @@ namespace
 // distributed solve reads one file), otherwise each rank its own.
 std::string scratch_stem(MPI_Comm communicator, const std::string& name, bool shared)
 {
-  long id = static_cast<long>(getpid());
-  if (shared)
-    MPI_Bcast(&id, 1, MPI_LONG, 0, communicator);
-  return (std::filesystem::temp_directory_path() / ("gearstiff-" + name + "-" + std::to_string(id)))
-      .string();
+  // In the process's scratch folder (removed at exit and on signals); shared: rank 0's.
+  const std::string folder = shared ? shared_scratch_directory(communicator) : scratch_directory();
+  return (std::filesystem::path(folder) / name).string();
 }
 
 // VTU files go straight into vtu/ of the staging folder; registering each position's PVTU

@@ -1,6 +1,7 @@
 #include "dynamics/mesh_stiffness.h"
 
 #include "errors/errors.h"
+#include "errors/limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,11 +16,36 @@ namespace
 constexpr unsigned int period_samples = 4096;
 } // namespace
 
-MeshStiffness MeshStiffness::constant(double stiffness, const std::string& parameter)
+namespace
+{
+// "4.2e+08 N/m (420 N/µm)"
+std::string format_stiffness(double k)
+{
+  std::ostringstream text;
+  text.precision(3);
+  text << k << " N/m (" << k * 1e-6 << " N/µm)";
+  return text.str();
+}
+
+// A mesh stiffness in the range of real gears (errors/limits.h); outside it the value is a unit
+// mistake. `what` names it in the message.
+void check_plausible(double stiffness, const std::string& parameter, const std::string& what)
 {
   if (!(stiffness > 0.) || !std::isfinite(stiffness))
-    throw InputError(parameter, "mesh stiffness must be positive and finite, got " +
-                                    std::to_string(stiffness) + " N/m");
+    throw InputError(parameter,
+                     what + " must be positive and finite, got " + format_stiffness(stiffness));
+  if (stiffness < limits::min_mesh_stiffness || stiffness > limits::max_mesh_stiffness)
+    throw InputError(parameter, what + " " + format_stiffness(stiffness) +
+                                    " is outside the range of real gear meshes (" +
+                                    format_stiffness(limits::min_mesh_stiffness) + " to " +
+                                    format_stiffness(limits::max_mesh_stiffness) +
+                                    ", docs/limits.md): check the value and its unit");
+}
+} // namespace
+
+MeshStiffness MeshStiffness::constant(double stiffness, const std::string& parameter)
+{
+  check_plausible(stiffness, parameter, "mesh stiffness");
   MeshStiffness mesh;
   mesh.kind = StiffnessSource::constant;
   mesh.constant_value = stiffness;
@@ -28,9 +54,7 @@ MeshStiffness MeshStiffness::constant(double stiffness, const std::string& param
 
 MeshStiffness MeshStiffness::cai(const CaiParameters& parameters, const std::string& parameter)
 {
-  if (!(parameters.scale > 0.) || !std::isfinite(parameters.scale))
-    throw InputError(parameter, "Cai scale (single-pair peak stiffness) must be positive, got " +
-                                    std::to_string(parameters.scale) + " N/m");
+  check_plausible(parameters.scale, parameter, "Cai scale (single-pair peak stiffness)");
   for (const double s : {0., 0.5, 1.})
     if (!(cai_pair_stiffness(parameters, s) > 0.))
       throw InputError(parameter, "Cai shape gives a non-positive pair stiffness at engagement "
@@ -59,10 +83,8 @@ MeshStiffness MeshStiffness::table(const std::vector<double>& positions,
       throw InputError(parameter, "positions must increase strictly (entry " +
                                       std::to_string(i + 1) + ": " + std::to_string(positions[i]) +
                                       " after " + std::to_string(positions[i - 1]) + ")");
-    if (!(stiffness[i] > 0.) || !std::isfinite(stiffness[i]))
-      throw InputError(parameter, "stiffness must be positive, got " +
-                                      std::to_string(stiffness[i]) + " N/m at position " +
-                                      std::to_string(positions[i]));
+    check_plausible(stiffness[i], parameter,
+                    "stiffness at position " + std::to_string(positions[i]));
   }
   MeshStiffness mesh;
   mesh.kind = StiffnessSource::table;

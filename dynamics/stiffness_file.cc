@@ -29,6 +29,8 @@ ptree read_json(const std::string& path, const std::string& parameter)
   if (path.empty())
     throw InputError(parameter, "names no file (the summary.json of `gearstiff stiffness` or "
                                 "`gearstiff cai` run with -o)");
+  if (std::filesystem::is_directory(path))
+    throw InputError(parameter, "'" + path + "' is a folder, not a file (the summary.json in it?)");
   if (!std::filesystem::is_regular_file(path))
     throw InputError(parameter, "file '" + path + "' does not exist");
   ptree tree;
@@ -62,6 +64,12 @@ StiffnessFilePair read_pair(const ptree& tree, const std::string& path,
                                     "' does not name its gear pair (values pinion_teeth, "
                                     "wheel_teeth, transverse_module, centre_distance, "
                                     "contact_ratio of `gearstiff stiffness`/`cai` -o)");
+  for (const auto& [key, v] : {std::pair{"pinion_teeth", *z1}, std::pair{"wheel_teeth", *z2},
+                               std::pair{"transverse_module", *m}, std::pair{"centre_distance", *a},
+                               std::pair{"contact_ratio", *eps}})
+    if (!std::isfinite(v) || !(std::abs(v) > 0.) || std::abs(v) > 1e6)
+      throw InputError(parameter, "'" + path + "': value " + key + " = " + format(v) +
+                                      " is not a finite non-zero number of a gear pair");
   StiffnessFilePair pair{static_cast<int>(std::lround(*z1)), static_cast<int>(std::lround(*z2)),
                          *m * 1e-3, *a * 1e-3, *eps};
   if (const auto approach = value(tree, "approach_ratio"))
@@ -101,6 +109,10 @@ std::vector<double> column(const ptree& tree, const std::string& table, const st
       throw InputError(parameter, "table " + table + ": '" + cell->second.data() + "' in column " +
                                       name + " is not a number");
     }
+    // NaN or inf anywhere in the table is no measurement (a NaN position was wrapped to 0).
+    if (!std::isfinite(values.back()))
+      throw InputError(parameter, "table " + table + ": '" + cell->second.data() + "' in column " +
+                                      name + " is not a finite number");
   }
   return values;
 }

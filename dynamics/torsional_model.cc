@@ -57,7 +57,7 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
                 std::to_string(train.meshes.size()) +
                 " (closed loops need the general form: a Train description)");
   require(train.input_speed > 0. && std::isfinite(train.input_speed), "input speed",
-          "must be positive, got " + std::to_string(train.input_speed) + " rad/s");
+          "must be positive, got " + std::to_string(train.input_speed * 30. / M_PI) + " rpm");
 
   inertia.resize(n_gears);
   torques.resize(n_gears);

@@ -105,6 +105,9 @@ void number_dofs(Bodies& bodies, const kinematics::TrainSolution& solution,
   std::vector<bool> suspended(bodies.copies.size(), false);
   for (const TrainSuspension& s : suspensions)
   {
+    if (std::find(solution.names.begin(), solution.names.end(), s.member) == solution.names.end())
+      throw InputError("Train/suspended members",
+                       "unknown member '" + s.member + "' (declare it in gears or carriers)");
     const std::size_t body = bodies.body_of_member[solution.index(s.member)];
     if (!bodies.fixed[body] || s.member == kinematics::housing_name)
       throw InputError("Train/suspended members", "'" + s.member + "' is not a fixed member");

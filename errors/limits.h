@@ -27,6 +27,51 @@ constexpr double solve_bytes_per_cell_2d = 32e3;
 // 3·10⁻⁵ (measured 519 at 10⁹ N·m, scaled linearly).
 constexpr double small_strain = 1e-2;
 
+// Abaqus/CalculiX decks (fem/abaqus_reader.cc). *INCLUDE expansions of one deck in all: a deck
+// that includes 10 files per level over 8 levels expands to 10⁸ files and never finished; real
+// decks include a handful (mesh, sets, materials). Nesting deeper than max_deck_include_depth is
+// taken for a cycle.
+constexpr unsigned int max_deck_includes = 1000;
+constexpr unsigned int max_deck_include_depth = 20;
+// -, elements of a deck: the most any contact solve of gearstiff can hold (max_cells_2d); a set
+// (*ELSET, GENERATE) can list no more than the deck defines. Both are checked before a member is
+// stored: GENERATE 1, 4e18 asked for 4·10¹⁸ ids (3·10¹⁹ bytes).
+constexpr double max_deck_elements = max_cells_2d;
+// m, |coordinate| of a deck node after Mesh/Length unit: beyond a kilometre no gear drive; the
+// squares of larger values (1e300) overflow in deal.II's cell measures.
+constexpr double max_deck_coordinate = 1e3;
+
+// The work of one run of a sweep command (cycloid-loads: torque levels and crank angles of every
+// profile), estimated before the first solve: solves × the measured time of one solve, divided by
+// the ranks. Measured: the default cycloid-loads position (Q2, 12 solves) takes 38.5 s on one rank,
+// 3.2 s per solve (docs/cycloid.md). An estimate above an hour is refused: 10000 sweep positions
+// (2·10⁴ solves, ~18 h) or 1000 torque steps (2000 solves, ~1.8 h) ran without end.
+constexpr double max_run_seconds = 3600.;
+
+// -, members of a gear train (copies of a planet and all): each is a degree of freedom of the
+// torsional model, integrated over every time step; a planetary stage has a few (3 to 8)
+// planets. 2·10⁹ copies were allocated (the kernel killed the run at 24 GB).
+constexpr unsigned int max_train_members = 1000;
+
+// -, the largest cell edge at a contact point over the contact size that a mesh may keep after
+// gmsh's retries (geometry::mesh_planar_model): gmsh follows the size field only roughly, and
+// 128- and 256-position sweeps on a coarse scene failed on cells 1.0006 to 1.05 times the size.
+// The contact size is a target the user chose for resolution, not an accuracy guarantee.
+constexpr double contact_size_overshoot = 1.10;
+
+// m, the smallest hole, pad or width a scene draws (bolt holes, support pads): the mesher joins
+// outline points closer than 1 nm, and a 10⁻⁶ mm hole failed as "boundary piece 0 repeats a point"
+// naming no parameter. 0.01 mm is far below any drawn feature of a gear body.
+constexpr double min_feature_size = 1e-5;
+
+// N/m, the mesh stiffness of a gear pair (dynamics: constant, Cai, tables, stiffness files).
+// Steel teeth have c' ≈ 14 N/(mm·µm) per mm of face width (ISO 6336-1, docs/references.md §5): face
+// widths of 1 mm to 1 m give 1.4·10⁷ to 1.4·10¹⁰ N/m, plastic teeth (E ~100× lower) ~10⁵ N/m.
+// Outside [10³, 10¹²] N/m (10⁻³ to 10⁶ N/µm) a value is a unit mistake: k = 10⁻¹² N/µm gave a
+// dynamic factor of 1 (no gear at all), 10³⁰⁰ N/µm overflowed the modal analysis.
+constexpr double min_mesh_stiffness = 1e3;
+constexpr double max_mesh_stiffness = 1e12;
+
 // characters of a user's value echoed back in an error message; longer values are cut.
 constexpr unsigned int echoed_value_length = 80;
 } // namespace gearstiff::limits

@@ -1,10 +1,13 @@
 #include "fem/abaqus_reader.h"
 
 #include "errors/errors.h"
+#include "errors/limits.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
 #include <fstream>
@@ -18,8 +21,10 @@ using namespace dealii;
 
 namespace
 {
-// *INCLUDE chains deeper than this are taken for a cycle.
-constexpr unsigned int max_include_depth = 20;
+// *INCLUDE chains deeper than this are taken for a cycle; more expansions than this in one deck
+// could not finish (errors/limits.h).
+constexpr unsigned int max_include_depth = limits::max_deck_include_depth;
+constexpr unsigned int max_includes = limits::max_deck_includes;
 
 // One logical line of the deck (continuation lines joined), with where it came from.
 struct DeckLine
@@ -98,7 +103,7 @@ Keyword parse_keyword(const DeckLine& line)
 // The deck's lines with *INCLUDEs expanded, comments and blank lines dropped, and data lines that
 // end in a comma joined with the next one.
 void read_lines(const std::string& file, const std::string& parameter, unsigned int depth,
-                std::vector<DeckLine>& lines)
+                std::vector<DeckLine>& lines, unsigned int& includes)
 {
   std::ifstream in(file);
   std::string text;
@@ -127,7 +132,13 @@ void read_lines(const std::string& file, const std::string& parameter, unsigned 
         if (depth >= max_include_depth)
           throw InputError(parameter, include.describe() + ": nested more than " +
                                           std::to_string(max_include_depth) + " deep (a cycle?)");
-        read_lines(target.string(), parameter, depth + 1, lines);
+        // The fan-out, not only the depth: 10 includes per level over 8 levels are 10⁸ files.
+        if (++includes > max_includes)
+          throw InputError(parameter, include.describe() + ": the deck expands to more than " +
+                                          std::to_string(max_includes) +
+                                          " included files (limit, docs/limits.md); a deck "
+                                          "includes a handful");
+        read_lines(target.string(), parameter, depth + 1, lines, includes);
         continued = false;
         continue;
       }
@@ -208,6 +219,21 @@ struct Group
   std::string name;
   std::vector<long> elements;                       // element sets
   std::vector<std::pair<long, unsigned int>> faces; // surfaces: element, 0-based face
+  // What is listed already: a member listed again is not stored again, so a group never holds
+  // more than the deck's elements (faces) however often a line repeats a set.
+  std::set<long> listed_elements;
+  std::set<std::pair<long, unsigned int>> listed_faces;
+
+  void add_element(long id)
+  {
+    if (listed_elements.insert(id).second)
+      elements.push_back(id);
+  }
+  void add_face(long id, unsigned int face)
+  {
+    if (listed_faces.emplace(id, face).second)
+      faces.emplace_back(id, face);
+  }
 };
 
 // Everything the reader keeps of a deck.
@@ -223,7 +249,7 @@ struct Deck
   {
     const auto [found, added] = index.emplace(upper(name), groups.size());
     if (added)
-      groups.push_back({name, {}, {}});
+      groups.push_back({name, {}, {}, {}, {}});
     return groups[found->second];
   }
   const Group* element_set(const std::string& name) const
@@ -237,7 +263,7 @@ template <int dim>
 class DeckParser
 {
 public:
-  explicit DeckParser(const std::string& parameter) : parameter(parameter) {}
+  DeckParser(const std::string& parameter, double scale) : parameter(parameter), scale(scale) {}
 
   Deck parse(const std::vector<DeckLine>& lines)
   {
@@ -308,8 +334,23 @@ private:
       fail(keyword, line, "a node needs an id and " + std::to_string(dim) + " coordinates");
     std::array<double, 3> x{};
     for (unsigned int c = 0; c < dim; ++c)
+    {
       x[c] = to_double(parts[1 + c], keyword, line, parameter);
-    deck.nodes[to_integer(parts[0], keyword, line, parameter)] = x;
+      if (!std::isfinite(x[c]))
+        fail(keyword, line, "coordinate '" + parts[1 + c] + "' is not a finite number");
+      if (!(std::abs(x[c] * scale) <= limits::max_deck_coordinate))
+        fail(keyword, line,
+             "coordinate " + parts[1 + c] + " lies beyond " +
+                 std::to_string(int(limits::max_deck_coordinate)) +
+                 " m after Mesh/Length unit (no gear drive; check the length unit)");
+    }
+    const long id = to_integer(parts[0], keyword, line, parameter);
+    const auto [found, added] = node_lines.emplace(id, line);
+    if (!added)
+      fail(keyword, line,
+           "node " + std::to_string(id) + " is defined twice (first at " + found->second.where() +
+               ")");
+    deck.nodes[id] = x;
   }
 
   void element(const Keyword& keyword, const DeckLine& line)
@@ -325,10 +366,23 @@ private:
     for (unsigned int n = 0; n < element_nodes; ++n)
       element.nodes.push_back(to_integer(parts[1 + n], keyword, line, parameter));
     const long id = to_integer(parts[0], keyword, line, parameter);
-    deck.elements[id] = element;
+    const auto [found, added] = deck.elements.emplace(id, element);
+    if (!added)
+      fail(keyword, line,
+           "element " + std::to_string(id) + " is defined twice (first at " +
+               found->second.line.where() + ")");
+    for (unsigned int a = 0; a < element_nodes; ++a)
+      for (unsigned int b = a + 1; b < element_nodes; ++b)
+        if (element.nodes[a] == element.nodes[b])
+          fail(keyword, line,
+               "element " + std::to_string(id) + " lists node " + std::to_string(element.nodes[a]) +
+                   " twice (a degenerate element)");
+    if (double(deck.elements.size()) > limits::max_deck_elements)
+      fail(keyword, line,
+           "the deck defines more than " + std::to_string(long(limits::max_deck_elements)) +
+               " elements, more than a contact solve can hold (limit, docs/limits.md)");
     if (!keyword.get("ELSET").empty())
-      deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET"))
-          .elements.push_back(id);
+      deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET")).add_element(id);
   }
 
   void element_set(const Keyword& keyword, const DeckLine& line)
@@ -344,16 +398,34 @@ private:
       const long step = parts.size() == 3 ? to_integer(parts[2], keyword, line, parameter) : 1;
       if (step < 1 || last < first)
         fail(keyword, line, "GENERATE needs first <= last and a positive step");
-      for (long id = first; id <= last; id += step)
-        members.push_back(id);
+      // The count before a member is stored (4·10¹⁸ ids were asked for), without overflow:
+      // every member must be an element the deck defines.
+      const unsigned long count =
+          (static_cast<unsigned long>(last) - static_cast<unsigned long>(first)) /
+              static_cast<unsigned long>(step) +
+          1;
+      if (count > deck.elements.size())
+        fail(keyword, line,
+             "GENERATE " + parts[0] + ", " + parts[1] + (parts.size() == 3 ? ", " + parts[2] : "") +
+                 " lists " + std::to_string(count) + " elements, the deck defines " +
+                 std::to_string(deck.elements.size()) +
+                 " so far (elements are defined before "
+                 "the sets that list them)");
+      for (unsigned long k = 0; k < count; ++k)
+        members.push_back(first + static_cast<long>(k * static_cast<unsigned long>(step)));
     }
-    else
+    std::set<std::string> sets_listed;
+    if (!keyword.parameters.count("GENERATE"))
       for (const auto& part : parts)
       {
         if (!part.empty() && (std::isdigit(static_cast<unsigned char>(part[0])) || part[0] == '-'))
           members.push_back(to_integer(part, keyword, line, parameter));
         else if (const Group* set = deck.element_set(part))
-          members.insert(members.end(), set->elements.begin(), set->elements.end());
+        {
+          // A set named again on the line adds nothing (a line of 10⁵ names of one set).
+          if (sets_listed.insert(upper(part)).second)
+            members.insert(members.end(), set->elements.begin(), set->elements.end());
+        }
         else
           fail(keyword, line, "element set '" + part + "' is not defined");
       }
@@ -361,7 +433,8 @@ private:
       if (deck.elements.count(id) == 0)
         fail(keyword, line, "element " + std::to_string(id) + " is not defined");
     auto& group = deck.group(deck.element_sets, deck.element_set_index, keyword.get("ELSET"));
-    group.elements.insert(group.elements.end(), members.begin(), members.end());
+    for (const long id : members)
+      group.add_element(id);
   }
 
   void surface(const Keyword& keyword, const DeckLine& line)
@@ -389,13 +462,15 @@ private:
     {
       if (deck.elements.count(id) == 0)
         fail(keyword, line, "element " + std::to_string(id) + " is not defined");
-      group.faces.emplace_back(id, face);
+      group.add_face(id, face);
     }
   }
 
   std::string parameter;
+  double scale; // m per deck length unit (Mesh/Length unit)
   unsigned int element_nodes = 0;
   Deck deck;
+  std::map<long, DeckLine> node_lines; // where each node was defined
 };
 
 // Abaqus corner order (counter-clockwise; hexahedron bottom then top) to deal.II's
@@ -405,6 +480,42 @@ std::vector<unsigned int> lexicographic(unsigned int dim)
   if (dim == 2)
     return {0, 1, 3, 2};
   return {0, 1, 3, 2, 4, 5, 7, 6};
+}
+
+// True when the corner Jacobians of an element (Abaqus corner order: quadrilateral
+// counter-clockwise or clockwise; hexahedron bottom 1-4 then top 5-8) are all non-zero and of one
+// sign: each corner's edges to its neighbours, crossed (2D) or as a triple product (3D), divided
+// by the product of their lengths (the scaled Jacobian) must exceed 1e-8 in size.
+template <int dim>
+bool corners_span_a_cell(const std::vector<Eigen::Vector3d>& x)
+{
+  // Neighbours of each corner, in the order that gives a positive Jacobian for a cell listed
+  // counter-clockwise (bottom face counter-clockwise seen from the top in 3D).
+  static const std::vector<std::vector<unsigned int>> quad = {{1, 3}, {2, 0}, {3, 1}, {0, 2}};
+  static const std::vector<std::vector<unsigned int>> hex = {
+      {1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+  const auto& neighbours = dim == 2 ? quad : hex;
+  int sign = 0;
+  for (unsigned int i = 0; i < neighbours.size(); ++i)
+  {
+    const Eigen::Vector3d e1 = x[neighbours[i][0]] - x[i], e2 = x[neighbours[i][1]] - x[i];
+    double jacobian = 0., lengths = e1.norm() * e2.norm();
+    if constexpr (dim == 2)
+      jacobian = e1.x() * e2.y() - e1.y() * e2.x();
+    else
+    {
+      const Eigen::Vector3d e3 = x[neighbours[i][2]] - x[i];
+      jacobian = e1.cross(e2).dot(e3);
+      lengths *= e3.norm();
+    }
+    if (!(std::abs(jacobian) > 1e-8 * lengths))
+      return false;
+    const int s = jacobian > 0. ? 1 : -1;
+    if (sign != 0 && s != sign)
+      return false;
+    sign = s;
+  }
+  return true;
 }
 
 template <int dim>
@@ -468,10 +579,66 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
         faces.boundary_quads.push_back(data);
     }
   }
+  // Faces of a surface must lie on the boundary: a face two elements share is interior.
+  std::map<std::vector<unsigned int>, unsigned int> face_uses; // sorted vertices -> elements
+  for (const auto& cell : cells)
+    for (const auto& corners : element_faces(dim))
+    {
+      std::vector<unsigned int> key;
+      for (const unsigned int c : corners)
+        key.push_back(cell.vertices[order[c]]);
+      std::sort(key.begin(), key.end());
+      ++face_uses[key];
+    }
+  for (const auto& surface : deck.surfaces)
+    for (const auto& [id, face] : surface.faces)
+    {
+      const Element& element = deck.elements.at(id);
+      std::vector<unsigned int> key;
+      for (const unsigned int c : element_faces(dim)[face])
+        key.push_back(vertex_of_node.at(element.nodes[c]));
+      std::sort(key.begin(), key.end());
+      if (face_uses[key] > 1)
+        throw InputError(parameter, "*SURFACE NAME=" + surface.name + ": face S" +
+                                        std::to_string(face + 1) + " of element " +
+                                        std::to_string(id) +
+                                        " is shared by two elements (an interior face; a "
+                                        "surface lies on the boundary)");
+    }
+
+  // Each element's corners must span a cell: the Jacobian at every corner non-zero and of one
+  // sign (a degenerate element made the factorization fail with "PETSc error code 81").
+  for (const auto& [id, element] : deck.elements)
+  {
+    std::vector<Eigen::Vector3d> corners;
+    for (const long node : element.nodes)
+    {
+      const auto& x = deck.nodes.at(node);
+      corners.emplace_back(x[0], x[1], x[2]);
+    }
+    if (!corners_span_a_cell<dim>(corners))
+      throw InputError(parameter,
+                       element.line.where() + ": *ELEMENT: element " + std::to_string(id) +
+                           " is degenerate or twisted (its corners, in the Abaqus order, do not "
+                           "span a cell of positive size)");
+  }
+
   GridTools::invert_all_negative_measure_cells(vertices, cells);
   GridTools::consistently_order_cells(cells);
   Triangulation<dim> serial;
-  serial.create_triangulation(vertices, cells, faces);
+  try
+  {
+    serial.create_triangulation(vertices, cells, faces);
+  }
+  catch (const ExceptionBase& e)
+  {
+    // What the checks above do not catch is still the deck's fault, not a failed method.
+    std::ostringstream text;
+    e.print_info(text);
+    std::string reason = text.str();
+    std::replace(reason.begin(), reason.end(), '\n', ' ');
+    throw InputError(parameter, "the deck's elements do not form a valid mesh: " + reason);
+  }
   join_bodies<dim>({&serial}, tria);
 }
 } // namespace
@@ -488,11 +655,14 @@ template <int dim>
 PhysicalNames read_abaqus(const std::string& file_name, const double scale,
                           Triangulation<dim>& tria, const std::string& parameter)
 {
+  if (std::filesystem::is_directory(file_name))
+    throw InputError(parameter, "'" + file_name + "' is a folder, not a mesh file");
   if (!std::filesystem::is_regular_file(file_name))
     throw InputError(parameter, "mesh file '" + file_name + "' does not exist");
   std::vector<DeckLine> lines;
-  read_lines(file_name, parameter, 0, lines);
-  const Deck deck = DeckParser<dim>(parameter).parse(lines);
+  unsigned int includes = 0;
+  read_lines(file_name, parameter, 0, lines, includes);
+  const Deck deck = DeckParser<dim>(parameter, scale).parse(lines);
   if (deck.elements.empty())
     throw InputError(parameter, file_name + ": *ELEMENT: the deck defines no elements");
   PhysicalNames names;

@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "fem/parallel.h"
 
+#include <cmath>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
@@ -53,7 +54,9 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
 {
   interruption_point(); // between meshing and assembly: another rank of a sweep may have failed
   if (!std::filesystem::is_regular_file(file_name))
-    throw InputError(parameter, "mesh file '" + file_name + "' does not exist");
+    throw InputError(parameter, std::filesystem::is_directory(file_name)
+                                    ? "'" + file_name + "' is a folder, not a mesh file"
+                                    : "mesh file '" + file_name + "' does not exist");
   Triangulation<dim> serial;
   try
   {
@@ -72,6 +75,12 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
     throw InputError(parameter, "cannot read '" + file_name + "' as a " + std::to_string(dim) +
                                     "D quadrilateral/hexahedral gmsh mesh: " + text);
   }
+  // A NaN or inf coordinate was reported as an overlap or blamed on the length unit.
+  for (unsigned int v = 0; v < serial.n_vertices(); ++v)
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!std::isfinite(serial.get_vertices()[v][c]))
+        throw InputError(parameter, "'" + file_name + "': a node (vertex " + std::to_string(v) +
+                                        ") has a coordinate that is not a finite number");
   GridTools::scale(scale, serial);
   join_bodies<dim>({&serial}, tria);
   return read_physical_names(file_name, dim);

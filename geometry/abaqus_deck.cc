@@ -531,7 +531,10 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPair
 AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& info,
                                  const double output_torque, const double penalty_factor)
 {
-  if (!spec.output_pin_bodies || spec.output_pins == 0)
+  if (spec.output_pins == 0)
+    throw InputError("Cycloid scene/output pins",
+                     "the deck ties the output pins to the output member: at least one is needed");
+  if (!spec.output_pin_bodies)
     throw InputError("Cycloid scene/output pin bodies",
                      "the deck ties the output pins to the output member: mesh them");
   if (!(std::abs(output_torque) > 0.) || !std::isfinite(output_torque))

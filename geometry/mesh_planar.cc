@@ -570,13 +570,21 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     statistics.meshing_attempts = attempt;
     if (statistics.largest_edge_ratio_at_focus <= 1.)
       break;
+    // gmsh's cells at a focus follow the size field only roughly: after the retries a cell up to
+    // limits::contact_size_overshoot times the contact size is accepted (the mesh command reports
+    // the ratio) — 128-position sweeps failed on cells 1.0006 to 1.05 times the size.
+    if (attempt == max_attempts &&
+        statistics.largest_edge_ratio_at_focus <= limits::contact_size_overshoot)
+      break;
     if (attempt == max_attempts)
       throw SolverFailure("gmsh mesh generation",
                           "the cells at the contact points stay larger than the contact size (" +
                               std::to_string(statistics.largest_edge_ratio_at_focus) +
-                              " times the requested size) after " + std::to_string(max_attempts) +
-                              " attempts");
-    contact_scale *= 0.95 / statistics.largest_edge_ratio_at_focus;
+                              " times the requested size, " +
+                              format_number(limits::contact_size_overshoot, 3) +
+                              " accepted) after " + std::to_string(max_attempts) + " attempts");
+    // Each retry aims further below the size: the overshoot varies between generations.
+    contact_scale *= (attempt == 1 ? 0.95 : 0.9) / statistics.largest_edge_ratio_at_focus;
   }
 
   start = Clock::now();

@@ -47,8 +47,24 @@ contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact
       contact.fine_radius =
           have_width ? 1.5 * contact.hertz_half_width : 10. * contact.contact_size;
     grading.foci.push_back({contact.point, contact.contact_size, contact.fine_radius});
+    if (!(settings.body_size > 0.) || !std::isfinite(settings.body_size))
+      throw InputError("Mesh/body size", "must be a positive number (mm)");
+    if (!std::isfinite(contact.contact_size) || !std::isfinite(contact.fine_radius))
+      throw InputError("Mesh/contact size", "must be a finite number (mm)");
+    // The parameter the user set is the one named: a given contact size larger than the body
+    // size, or the automatic one (a tenth of the Hertz half-width) at a large load.
     if (!(settings.body_size >= contact.contact_size))
-      throw InputError("Mesh/body size", "must not be smaller than the contact size");
+    {
+      const std::string sizes = "contact size " + std::to_string(contact.contact_size * 1e3) +
+                                " mm, body size " + std::to_string(settings.body_size * 1e3) +
+                                " mm";
+      if (settings.contact_size > 0.)
+        throw InputError("Mesh/contact size", "must not exceed the body size (" + sizes + ")");
+      throw InputError("Mesh/body size", "must not be smaller than the automatic contact size, a "
+                                         "tenth of the Hertz half-width at this load (" +
+                                             sizes +
+                                             "): give a larger body size or a contact size");
+    }
   }
   if (!(settings.growth_rate > 0.))
     throw InputError("Mesh/growth rate", "must be positive");
@@ -96,6 +112,52 @@ BoundaryLoop circle_loop(const Eigen::Vector2d& centre, const double radius, con
   return loop;
 }
 
+namespace
+{
+// m, the mean thickness of the thinnest body: area / perimeter (half a ring's rim width, half a
+// disc's radius), the perimeter along the pieces' points (arcs by their chords).
+double thinnest_body(const PlanarModel& model)
+{
+  double thinnest = std::numeric_limits<double>::infinity();
+  const auto length = [](const BoundaryLoop& loop)
+  {
+    double sum = 0.;
+    for (const auto& piece : loop.pieces)
+      for (std::size_t i = 1; i < piece.points.size(); ++i)
+        sum += (piece.points[i] - piece.points[i - 1]).norm();
+    return sum;
+  };
+  for (const auto& body : model.bodies)
+  {
+    double area = std::abs(body.outer.signed_area()), perimeter = length(body.outer);
+    for (const auto& hole : body.holes)
+    {
+      area -= std::abs(hole.signed_area());
+      perimeter += length(hole);
+    }
+    if (area > 0. && perimeter > 0.)
+      thinnest = std::min(thinnest, area / perimeter);
+  }
+  return thinnest;
+}
+
+SceneMeshSettings clamped_to_bodies(SceneMeshSettings settings, const PlanarModel& model)
+{
+  // Sizes beyond the bodies' own thickness leave gmsh a handful of triangles it cannot recombine
+  // (100 mm sizes: "4 leftover Triangle 3 cells", exit 3): no size exceeds the thinnest body's
+  // area/perimeter (a few cells across it); the sizes used are reported with the scene.
+  const double largest = thinnest_body(model);
+  if (!std::isfinite(largest))
+    return settings;
+  settings.body_size = std::min(settings.body_size, largest);
+  if (settings.rim_size > 0.)
+    settings.rim_size = std::min(settings.rim_size, 4. * largest);
+  if (settings.contact_size > 0.)
+    settings.contact_size = std::min(settings.contact_size, largest);
+  return settings;
+}
+} // namespace
+
 SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contacts,
                      const SceneMeshSettings& settings, const double face_width,
                      const std::string& file,
@@ -103,7 +165,8 @@ SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contact
 {
   const auto start = std::chrono::steady_clock::now();
   SceneInfo info;
-  const SizeGrading grading = contact_size_grading(settings, contacts, depth_below_surface);
+  const SizeGrading grading =
+      contact_size_grading(clamped_to_bodies(settings, model), contacts, depth_below_surface);
   MeshOptions options;
   options.dimension = settings.dimension;
   options.layers = settings.layers;

@@ -109,8 +109,10 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
     if (inner < spec.bore_radius + web)
       throw InputError(section + "output pin circle radius",
                        "the holes must stay 1 mm clear of the bore");
-    if (2. * spec.output_pin_circle_radius * std::sin(M_PI / spec.output_pins) <
-        2. * spec.output_pin_hole_radius + web)
+    // A single pin has no neighbour.
+    if (spec.output_pins > 1 &&
+        2. * spec.output_pin_circle_radius * std::sin(M_PI / spec.output_pins) <
+            2. * spec.output_pin_hole_radius + web)
       throw InputError(section + "output pins", "neighbouring holes overlap");
   }
   else if (spec.bore_radius > lobe_root - 1e-3)

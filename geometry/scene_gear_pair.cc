@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "errors/limits.h"
 #include "geometry/involute_tooth.h"
 
 #include <Eigen/Geometry>
@@ -340,8 +341,9 @@ void check_wheel_supports(const GearPairSceneSpec& spec)
   if (spec.wheel_supports < 2)
     throw InputError(scene_field::wheel_supports,
                      "must be 0 (whole outer circle held) or at least 2 pads");
-  if (!(spec.wheel_support_width > 0.))
-    throw InputError(scene_field::wheel_support_width, "must be positive");
+  // Features below limits::min_feature_size cannot be drawn (their outline repeats a point).
+  if (!(spec.wheel_support_width >= limits::min_feature_size))
+    throw InputError(scene_field::wheel_support_width, "must be at least 0.01 mm");
 }
 
 // Bolt holes in a ring's rim: a full-rim internal wheel, at least two holes, not with pads (the
@@ -359,8 +361,8 @@ void check_wheel_bolt_holes(const GearPairSceneSpec& spec)
   if (spec.wheel_supports > 0)
     throw InputError(scene_field::wheel_bolt_holes,
                      "a ring is held either at pads (wheel supports) or at bolt holes, not both");
-  if (!(spec.wheel_bolt_hole_diameter > 0.))
-    throw InputError(scene_field::wheel_bolt_hole_diameter, "must be positive");
+  if (!(spec.wheel_bolt_hole_diameter >= limits::min_feature_size))
+    throw InputError(scene_field::wheel_bolt_hole_diameter, "must be at least 0.01 mm");
   if (!(spec.wheel_bolt_circle_diameter >= 0.))
     throw InputError(scene_field::wheel_bolt_circle_diameter, "must be 0 or positive");
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace gearstiff::kinematics
@@ -413,6 +414,53 @@ void check_tip_clearances(const GearPairSpec& spec, const SignedPair& p, GearPai
                          millimetres(result.tip_clearance_wheel) + ")");
 }
 
+// Tip/tip (trochoid) interference of an internal pair over the whole circle (KHK Gear Technical
+// Reference, internal gears, docs/references.md §11): leaving the mesh, the pinion tip runs on a
+// trochoid relative to the ring and must pass the ring's tip corner where the two tip circles
+// cross. With the crossing at angle θ1 on the pinion and θ2 on the ring (from the centre line),
+//   θ1·z1/z2 + inv α_w − inv α_a2 − θ2 ≥ 0,
+//   cos θ1 = (r_a2² − r_a1² − a²)/(2·a·r_a1),  θ1 += inv α_a1 − inv α_w,
+//   cos θ2 = (a² + r_a2² − r_a1²)/(2·a·r_a2).
+// When the pinion's tip circle encloses the ring's (r_a1 − a ≥ r_a2) the teeth overlap all around
+// and the pair cannot turn at all: the tooth difference is too small for these tips.
+void check_internal_tip_interference(const GearPairSpec& spec, const SignedPair& p,
+                                     const GearPairGeometry& result)
+{
+  if (!spec.wheel.internal)
+    return;
+  const double ra1 = 0.5 * std::abs(p.da1), ra2 = 0.5 * std::abs(p.da2);
+  const double rb1 = 0.5 * std::abs(p.db1), rb2 = 0.5 * std::abs(p.db2);
+  const double a = result.centre_distance;
+  const int difference = spec.wheel.teeth - spec.pinion.teeth;
+  if (ra1 - a >= ra2)
+    throw InputError(gear_parameter_name(true, "teeth"),
+                     "a tooth difference of " + std::to_string(difference) +
+                         " is too small for these tips: the pinion's tip circle (d_a1 = " +
+                         millimetres(2. * ra1) + " at a = " + millimetres(a) +
+                         ") encloses the ring's (d_a2 = " + millimetres(2. * ra2) +
+                         "), so the teeth overlap all around and the pair cannot turn");
+  const double c1 = (ra2 * ra2 - ra1 * ra1 - a * a) / (2. * a * ra1);
+  const double c2 = (a * a + ra2 * ra2 - ra1 * ra1) / (2. * a * ra2);
+  if (!(c1 > -1. && c1 < 1. && c2 > -1. && c2 < 1.))
+    return; // the tip circles do not cross: no tip meets a tip away from the mesh
+  const auto inv = [](double alpha) { return involute(alpha); };
+  const double alpha_w = result.working_pressure_angle;
+  const double alpha_a1 = std::acos(std::min(1., rb1 / ra1));
+  const double alpha_a2 = std::acos(std::min(1., rb2 / ra2));
+  const double theta1 = std::acos(c1) + inv(alpha_a1) - inv(alpha_w);
+  const double theta2 = std::acos(c2);
+  const double margin =
+      theta1 * spec.pinion.teeth / spec.wheel.teeth + inv(alpha_w) - inv(alpha_a2) - theta2;
+  if (margin < 0.)
+    throw InputError(
+        gear_parameter_name(true, "teeth"),
+        "a tooth difference of " + std::to_string(difference) +
+            " gives tip interference away from the mesh: the ring's tips cut the "
+            "pinion's tips as they leave (trochoid interference, margin " +
+            format_number(margin * 180. / pi, 3) +
+            "°); use more ring teeth, a shorter ring or pinion tip or a profile shift");
+}
+
 // Per-gear diameters and the tip thickness s_at = d_a·(s_t/d + inv α_t − inv
 // α_at) (ISO 21771); for an internal gear the tooth narrows towards its (inner)
 // tip, which the DIN signs of d and d_a take care of.
@@ -506,6 +554,7 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
   set_line_of_action(p, result);
   const std::pair<double, double> form_rolls = check_undercut_and_interference(spec, p, result);
   check_tip_clearances(spec, p, result);
+  check_internal_tip_interference(spec, p, result);
   set_gear_geometry(spec, p, form_rolls, result);
 
   result.transverse_base_pitch = pi * p.m_t * std::cos(p.alpha_t);
@@ -531,6 +580,8 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
   const double m_n = spec.wheel.normal_module;
   const double reference = spec.wheel.teeth * m_n / std::cos(spec.wheel.helix_angle);
   const double base = reference * std::cos(spec.wheel.pressure_angle);
+  check_pair_spec(spec);
+  std::optional<InputError> tooth_difference; // the pair's own reason, if no tip can help
   const auto clears = [&](double tip)
   {
     GearPairSpec trial = spec;
@@ -543,8 +594,13 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
           std::max(0., 0.25 * pair.pinion.form_diameter * pair.pinion.form_diameter - rb1 * rb1));
       return pair.contact_start - form_roll >= margin;
     }
-    catch (const InputError&)
+    catch (const InputError& e)
     {
+      // A failure that names another parameter than the ring's tip (a pointed pinion, a bore,
+      // the tooth difference) is the pair's own: no tip can mend it.
+      if (e.parameter() != parameter &&
+          e.parameter() != gear_parameter_name(false, "tip diameter") && !tooth_difference)
+        tooth_difference = e;
       return false;
     }
   };
@@ -555,6 +611,8 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
   const auto at = [&](int i) { return reference - i * (reference - base) / steps; };
   while (step < steps && !clears(at(step)))
     ++step;
+  if (step == steps && tooth_difference)
+    throw *tooth_difference;
   if (step == steps)
     throw InputError(parameter, "no ring tip between the base and reference circles clears the "
                                 "pinion's involute with a margin of " +

@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "errors/limits.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -713,6 +714,13 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
       const double copies = parse_number(trim(value.substr(star + 1)), "Train/planets");
       if (!(copies >= 1.) || copies != std::round(copies))
         throw InputError("Train/planets", "copies of '" + name + "' must be a whole number ≥ 1");
+      // Before any member is allocated per copy (2·10⁹ copies filled 24 GB).
+      if (copies > limits::max_train_members)
+        throw InputError("Train/planets",
+                         "'" + name + "' has " + trim(value.substr(star + 1)) +
+                             " copies, more than the " + std::to_string(limits::max_train_members) +
+                             " members a train model holds (limit, docs/limits.md; a planetary "
+                             "stage has 3 to 8 planets)");
       planet.copies = static_cast<unsigned int>(copies);
     }
   }

@@ -161,6 +161,22 @@ void check_cycloid_load_settings(const CycloidLoadSettings& s)
     throw InputError("Cycloid scene/output pins", "the output torque needs at least one pin");
   if (s.scene_file.empty())
     throw InputError("scene file", "no path given for the scene mesh");
+  // Material constants before any solver: E = 0 or ν = 0.5 reached MUMPS as a singular matrix
+  // ("INFOG(1) = -10", exit 3), a failure of the input, not of the method.
+  for (const auto& [material, name] :
+       {std::pair{&s.material, std::string("Cycloid loads/Young's modulus")},
+        std::pair{&s.roller_material, std::string("Cycloid loads/roller Young's modulus")}})
+  {
+    if (!(material->youngs_modulus > 0.) || !std::isfinite(material->youngs_modulus))
+      throw InputError(name, "must be positive and finite (GPa): E = 0 leaves the bodies "
+                             "without stiffness");
+    const double nu = material->poisson_ratio;
+    if (!(nu >= 0. && nu < 0.5))
+      throw InputError("Cycloid loads/Poisson's ratio",
+                       "must lie in [0, 0.5) (-): at 0.5 the material is incompressible, "
+                       "λ = Eν/((1+ν)(1−2ν)) is infinite and the displacement model has no "
+                       "solution");
+  }
 }
 
 template <int dim>

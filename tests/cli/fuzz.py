@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""Fuzz test of the gearstiff command-line contract (issue 11).
+"""Fuzz test of the gearstiff command-line contract (issues 11 and 26).
 
     fuzz.py GEARSTIFF WORKDIR [--seed N] [--budget SECONDS] [--cases-per-command N]
 
 For every parameter of the fast commands (listed by `gearstiff <cmd> --print-parameters --json`)
-and a few FE commands on a coarse scene, it runs the command with seeded random values at the
+and a few FE commands on a coarse scene (cycloid-loads and the train model of the dynamics
+included), plus Abaqus decks mutated by the seed (duplicated, deleted, swapped lines, hostile
+numbers, huge GENERATE sets, self-includes) read by `contact`, it runs the command with seeded random values at the
 edges and beyond (0, negative, NaN, inf, huge, tiny, wrong types, empty, a 120 kB string) and
 asserts only the contract, never a number:
 
@@ -41,9 +43,83 @@ COMMANDS = [
     ("mesh", COARSE_SCENE, 30, 0.6),
     ("stiffness", COARSE_FE + ["Stiffness/published reference=false"], 40, 0.25),
     ("contact", ["Mesh/Built-in fine size=0.05"], 40, 0.25),
+    # issue 26: the newer paths. cycloid-loads with one profile and no torque ramp on Q1 (one solve,
+    # ~3 s); the train model of the dynamics; Abaqus decks (DECK below, mutated by seed).
+    ("cycloid-loads", ["Cycloid loads/profiles=nominal", "Cycloid loads/torsional curve=false",
+                       "Finite elements/Element degree=1"], 40, 0.25),
+    ("dynamics", ["Train/model=train", "Simulation/simulated time=0.02"] + TRAIN, 20, 0.5),
 ]
 
 HUGE_TEXT = "9" * 120_000  # one argument may hold at most 128 kB
+
+# A single planetary stage in the kinematics command's Train form (tests/dynamics/cli).
+TRAIN = ["Train/gears=s: 20, p: 10, r: -40", "Train/modules=s: 2, p: 2, r: 2", "Train/carriers=c",
+         "Train/planets=p: c*3", "Train/meshes=s-p/c, p-r/c", "Train/fixed=r", "Train/inputs=s: 1470",
+         "Train/output=c", "Train/inertias=s: 2e-4, p: 5e-5, c: 4e-3, r: 1e-2", "Train/masses=p: 0.4"]
+
+# Two touching one-cell squares (tests/contact/data/touching_mesh.inp, nodes inline): the deck
+# the reader cases mutate, one hostile edit or more per case (deck_mutation).
+DECK = """*HEADING
+two touching unit squares
+*NODE
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+5, 0, 1.0
+6, 1, 1.0
+7, 1, 2.0
+8, 0, 2.0
+*ELEMENT, TYPE=CPE4, ELSET=LOWER
+1, 1, 2, 3, 4
+*ELEMENT, TYPE=CPE4
+2, 5, 6, 7, 8
+*ELSET, ELSET=UPPER
+2
+*SURFACE, NAME=LOWER_CONTACT, TYPE=ELEMENT
+1, S3
+*SURFACE, NAME=LOWER_BOTTOM
+LOWER, S1
+*SURFACE, NAME=UPPER_CONTACT
+2, S1
+*SURFACE, NAME=UPPER_TOP
+UPPER, S3
+"""
+HOSTILE_NUMBERS = ["nan", "inf", "-inf", "1e300", "-1e300", "0", "-1", "1e-300", "2.5", "abc", "",
+                   "9223372036854775807", "-9223372036854775808", "99999999999999999999"]
+
+
+def deck_mutation(rng, deck_path):
+    """A mutated DECK: duplicated, deleted or swapped lines, hostile numbers, huge GENERATE sets,
+    self-includes and fan-out, unknown keywords."""
+    lines = DECK.splitlines()
+    for _ in range(rng.choice((1, 1, 2, 3))):
+        kind = rng.randrange(8)
+        i = rng.randrange(len(lines))
+        if kind == 0:
+            lines.insert(i, lines[i])
+        elif kind == 1:
+            del lines[i]
+        elif kind == 2 and not lines[i].startswith("*"):
+            parts = lines[i].split(",")
+            parts[rng.randrange(len(parts))] = " " + rng.choice(HOSTILE_NUMBERS)
+            lines[i] = ",".join(parts)
+        elif kind == 3:
+            first = rng.choice(["1", "-5", "0", "2"])
+            last = rng.choice(["4000000000000000000", "9223372036854775807", "2", "1", "-3"])
+            step = rng.choice(["", ", 1000000000000000000", ", 1", ", 0", ", -1"])
+            lines.insert(i, f"*ELSET, ELSET=G, GENERATE\n{first}, {last}{step}")
+        elif kind == 4:
+            lines.insert(i, "*INCLUDE, INPUT=" + os.path.basename(deck_path))
+        elif kind == 5:
+            j = rng.randrange(len(lines))
+            lines[i], lines[j] = lines[j], lines[i]
+        elif kind == 6:
+            lines.insert(i, rng.choice(["*ELEMENT, TYPE=CPE8", "*SURFACE, NAME=X", "*ELSET",
+                                        "*NODE", "UPPER, S9", "*ELSET, ELSET=UPPER\nUPPER, UPPER"]))
+        else:
+            lines.insert(i, ",".join(["1"] * rng.choice((1, 5, 50, 5000))))
+    return "\n".join(lines) + "\n"
 
 
 def unmangle(name):
@@ -95,10 +171,16 @@ def candidate_values(entry, rng):
                       "x: 1e308, -1e308, 0", default.replace(",", ";")]
 
 
-def run_case(binary, command, overrides, timeout, work):
+def run_case(binary, command, overrides, timeout, work, deck=None):
     out_dir = os.path.join(work, "out")
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
+    if deck is not None:
+        # The deck lives beside the case folder: files in the folder count as left behind.
+        path, text = deck
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(text)
     args = [binary, command]
     for o in overrides:
         args += ["--set", o]
@@ -155,19 +237,25 @@ def main():
             chosen = rng.sample(entries, k=min(len(entries), rng.choice((1, 1, 2, 3))))
             overrides = list(base) + [f"{path}={rng.choice(candidate_values(entry, rng))}"
                                       for path, entry in chosen]
-            cases.append((command, overrides, timeout))
+            cases.append((command, overrides, timeout, None))
         per_command.append(cases)
+    # Abaqus decks (issue 26), mutated by the seed, read by `contact` (serial).
+    decks = []
+    for k in range(max(1, options.cases_per_command)):
+        path = os.path.join(options.work, "decks", f"deck{k}.inp")
+        decks.append(("contact", [f"Mesh/File={path}"], 30, (path, deck_mutation(rng, path))))
+    per_command.append(decks)
     # Round-robin over the commands, so that a short budget still reaches every one.
     plan = [case for batch in zip_longest(*per_command) for case in batch if case]
 
     failures, run, codes = [], 0, {}
-    for i, (command, overrides, timeout) in enumerate(plan):
+    for i, (command, overrides, timeout, deck) in enumerate(plan):
         remaining = deadline - time.monotonic()
         if remaining < 2:
             break
         args, problem, result = run_case(options.binary, command, overrides,
                                          min(timeout, max(remaining, 5)),
-                                         os.path.join(options.work, f"case{i}"))
+                                         os.path.join(options.work, f"case{i}"), deck)
         run += 1
         if result:
             codes[result[0].returncode] = codes.get(result[0].returncode, 0) + 1
@@ -179,7 +267,7 @@ def main():
     print(f"fuzz: seed {options.seed}, {run} of {len(plan)} cases run, exit codes {codes}")
     for f in failures:
         print(f)
-    if run < len(COMMANDS):
+    if run < len(COMMANDS) + 1:
         print("fuzz: the budget allowed too few cases")
         return 1
     return 1 if failures else 0

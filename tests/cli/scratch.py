@@ -1,0 +1,65 @@
+#!/usr/bin/python3
+"""Scratch files of a run do not outlive it (issue 26).
+
+    scratch.py GEARSTIFF WORKDIR
+
+Runs `gearstiff cycloid-loads` (one profile, one position) with TMPDIR set to an empty folder,
+waits until its first scene mesh appears in the process's scratch folder, stops it by SIGTERM
+and, in a second run, by SIGINT, and asserts that nothing is left in TMPDIR and the process ended
+by the signal. A third run, `gearstiff gear-pair`, ends normally with nothing left. Before, the
+meshes were left in /tmp as gearstiff-cycloid-PID-*.msh (1.9 MB each).
+"""
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+
+def run_and_stop(binary, tmp, sig):
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    env = dict(os.environ, TMPDIR=tmp)
+    proc = subprocess.Popen([binary, "cycloid-loads", "--set", "Cycloid loads/profiles=nominal",
+                             "--set", "Cycloid loads/torsional curve=false"],
+                            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    folder = os.path.join(tmp, f"gearstiff-scratch-{proc.pid}")
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None:
+        if os.path.isdir(folder) and any(n.endswith(".msh") for n in os.listdir(folder)):
+            break
+        time.sleep(0.05)
+    else:
+        proc.kill()
+        return f"{signal.Signals(sig).name}: no scene mesh appeared in {folder}"
+    proc.send_signal(sig)
+    code = proc.wait(timeout=30)
+    problems = []
+    if code != -sig:
+        problems.append(f"ended with {code}, not by the signal ({-sig})")
+    left = os.listdir(tmp)
+    if left:
+        problems.append(f"left {left} in TMPDIR")
+    return f"{signal.Signals(sig).name}: " + "; ".join(problems) if problems else ""
+
+
+def main():
+    binary, work = sys.argv[1], sys.argv[2]
+    failures = [p for p in (run_and_stop(binary, os.path.join(work, name), sig)
+                            for name, sig in (("term", signal.SIGTERM), ("int", signal.SIGINT)))
+                if p]
+    tmp = os.path.join(work, "normal")
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    out = subprocess.run([binary, "gear-pair", "-o", os.path.join(work, "normal-out")],
+                         env=dict(os.environ, TMPDIR=tmp), capture_output=True, text=True)
+    if out.returncode != 0 or os.listdir(tmp):
+        failures.append(f"gear-pair: exit {out.returncode}, left {os.listdir(tmp)} in TMPDIR")
+    for f in failures:
+        print("FAIL", f)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
