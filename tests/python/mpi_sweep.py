@@ -26,6 +26,8 @@ def settings(tree, prefix=""):
     for key, value in tree.items():
         if isinstance(value, dict):
             yield from settings(value, prefix + key + "/")
+        elif isinstance(value, bool):
+            yield f"{prefix}{key}={'true' if value else 'false'}"
         else:
             yield f"{prefix}{key}={value}"
 
