@@ -7,8 +7,7 @@
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else. Errors go to stderr as one line.
 #include "app/command.h"
-#include "app/parameter_file_check.h"
-#include "app/parameter_names.h"
+#include "app/invoke.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "fem/mpi_start.h"
@@ -16,12 +15,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <memory>
-#include <sstream>
-#include <unistd.h>
 
 namespace
 {
@@ -111,140 +105,6 @@ CommandLine parse_command_line(int argc, char** argv)
   return line;
 }
 
-// An error message as one line of reasonable length: newlines become spaces, and a message
-// beyond a few hundred characters is cut.
-std::string one_line(const std::string& text)
-{
-  // Words (runs without white space) are shortened one by one, so a huge value quoted inside
-  // a parser's message does not push the rest of the message out; runs of spaces collapse.
-  std::string line, word;
-  const auto flush = [&]()
-  {
-    if (word.empty())
-      return;
-    line += (line.empty() ? "" : " ") + shortened(word, 2 * limits::echoed_value_length);
-    word.clear();
-  };
-  for (const char c : text)
-    if (c == ' ' || c == '\n' || c == '\r' || c == '\t')
-      flush();
-    else
-      word += c;
-  flush();
-  return shortened(line, 600);
-}
-
-// deal.II's exceptions carry file/line context meant for developers; users get the message.
-std::string deal_ii_message(const dealii::ExceptionBase& e)
-{
-  std::ostringstream s;
-  e.print_info(s);
-  std::string text = s.str();
-  for (auto& c : text)
-    if (c == '\n')
-      c = ' ';
-  while (!text.empty() && (text.back() == ' '))
-    text.pop_back();
-  while (!text.empty() && (text.front() == ' '))
-    text.erase(text.begin());
-  return text;
-}
-
-// `message` with every copy of the user's `value` in it shortened (deal.II repeats the
-// offending value in its pattern messages).
-std::string shortened_in(std::string message, const std::string& value)
-{
-  const std::string replacement = shortened(value);
-  if (value.size() <= replacement.size())
-    return message;
-  for (std::size_t at = message.find(value); at != std::string::npos;
-       at = message.find(value, at + replacement.size()))
-    message.replace(at, value.size(), replacement);
-  return message;
-}
-
-// Reads the parameter file; InputError naming the file for a missing file, a folder or a
-// parse error.
-void read_parameter_file(dealii::ParameterHandler& prm, const DeclaredSection& declared,
-                         const std::string& file)
-{
-  const std::string name = shortened(file);
-  std::error_code error;
-  if (std::filesystem::is_directory(file, error))
-    throw InputError(name, "is a folder, not a parameter file (.prm or .json)");
-  if (!std::filesystem::exists(file, error))
-    throw InputError(name, "parameter file does not exist");
-  if (!std::filesystem::is_regular_file(file, error))
-    throw InputError(name, "is not a regular file (a parameter file .prm or .json is expected)");
-  if (access(file.c_str(), R_OK) != 0)
-    throw InputError(name, "parameter file cannot be read (permissions)");
-  // Misspelt names first: the section and the nearest declared names, not deal.II's message.
-  check_parameter_file(declared, file);
-  check_json_parameter_file(file);
-  try
-  {
-    prm.parse_input(file, "", false, true);
-  }
-  catch (const dealii::ExceptionBase& e)
-  {
-    throw InputError(name, one_line(deal_ii_message(e)));
-  }
-}
-
-void apply_override(dealii::ParameterHandler& prm, const DeclaredSection& declared,
-                    const std::string& path, const std::string& value)
-{
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1)
-    parts.push_back(path.substr(start, slash - start));
-  const std::string key = path.substr(start);
-  check_parameter_name(declared, parts, key, path);
-  unsigned int entered = 0;
-  try
-  {
-    for (const auto& section : parts)
-    {
-      prm.enter_subsection(section);
-      ++entered;
-    }
-    // deal.II declares missing subsections on enter, so check the key explicitly.
-    prm.get(key);
-    prm.set(key, value);
-  }
-  catch (const dealii::ExceptionBase& e)
-  {
-    for (; entered > 0; --entered)
-      prm.leave_subsection();
-    throw InputError(path, "cannot set to '" + shortened(value) +
-                               "': " + shortened_in(deal_ii_message(e), value));
-  }
-  for (; entered > 0; --entered)
-    prm.leave_subsection();
-}
-
-// The parameters used and the report's tables and summary, into the staging folder (rank 0).
-void write_results(CommandContext& context, const dealii::ParameterHandler& prm,
-                   const std::string& command_name)
-{
-  {
-    std::ofstream out(context.output_file("parameters.prm", "parameters actually used"));
-    prm.print_parameters(out, dealii::ParameterHandler::ShortPRM);
-  }
-  {
-    std::ofstream out(context.output_file("parameters.json", "the same, as JSON"));
-    prm.print_parameters(out, dealii::ParameterHandler::ShortJSON);
-  }
-  for (const auto& table : context.report.tables())
-  {
-    std::ofstream out(context.output_file(table.name + ".csv", "table " + table.name));
-    context.report.write_table_csv(table, out);
-  }
-  const std::string summary = context.output_file("summary.json", "all results as JSON");
-  std::ofstream out(summary);
-  context.report.print_json(out, command_name);
-}
-
 int run(int argc, char** argv, MPI_Comm comm)
 {
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
@@ -259,13 +119,7 @@ int run(int argc, char** argv, MPI_Comm comm)
       print_usage(std::cout);
     return 0;
   }
-  const auto found = command_registry().find(line.command);
-  if (found == command_registry().end())
-    throw InputError(line.command, "unknown command (see gearstiff --help)");
-  const Command& command = found->second;
-
-  dealii::ParameterHandler prm;
-  command.declare_parameters(prm);
+  const Command& command = find_command(line.command);
 
   if (line.help)
   {
@@ -278,11 +132,9 @@ int run(int argc, char** argv, MPI_Comm comm)
     return 0;
   }
 
-  const DeclaredSection declared = declared_parameters(prm);
-  if (!line.parameter_file.empty())
-    read_parameter_file(prm, declared, line.parameter_file);
-  for (const auto& [path, value] : line.overrides)
-    apply_override(prm, declared, path, value);
+  dealii::ParameterHandler prm;
+  load_parameters(command, Invocation{line.parameter_file, line.overrides, line.output_directory},
+                  prm);
 
   if (line.print_parameters)
   {
@@ -292,31 +144,16 @@ int run(int argc, char** argv, MPI_Comm comm)
     return 0;
   }
 
-  // Output folder (checked before any work; created only on success).
-  std::unique_ptr<StagedOutput> output;
-  if (!line.output_directory.empty())
-    output = std::make_unique<StagedOutput>(line.output_directory, comm);
-
-  // Progress and diagnostics go to stderr with --json (stdout holds the one JSON object) and
-  // nowhere with --quiet.
-  dealii::ConditionalOStream pcout(line.json ? std::cerr : std::cout, root && !line.quiet);
-  CommandContext context(comm, pcout, output ? output->staging_directory() : "",
-                         line.json || line.quiet, !line.quiet);
-  command.run(prm, context);
-
-  if (output)
-  {
-    if (root)
-      write_results(context, prm, command.name);
-    output->commit();
-  }
-
+  // With --json, progress goes to stderr so that stdout holds the JSON only; --quiet: nowhere.
+  const Report report =
+      run_loaded_command(command, prm, line.output_directory, comm,
+                         line.json ? std::cerr : std::cout, !line.quiet, line.json || line.quiet);
   if (root)
   {
     if (line.json)
-      context.report.print_json(std::cout, command.name);
+      report.print_json(std::cout, command.name);
     else
-      context.report.print_text(std::cout);
+      report.print_text(std::cout);
   }
   return 0;
 }

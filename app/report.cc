@@ -131,8 +131,7 @@ void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
           << format_number(v.value) << "  " << pad(v.unit, 12);
       if (!std::isnan(v.reference))
       {
-        const double deviation =
-            v.reference != 0. ? (v.value - v.reference) / std::abs(v.reference) : v.value;
+        const double deviation = v.relative_deviation();
         std::ostringstream d;
         d << std::showpos << std::fixed << std::setprecision(2) << 100. * deviation << " %";
         out << std::right << std::setw(14) << format_number(v.reference) << std::setw(11) << d.str()
@@ -232,9 +231,8 @@ void Report::print_json(std::ostream& out, const std::string& command) const
         << ": {\"value\": " << json_number(v.value) << ", \"unit\": " << json_escape(v.unit)
         << ", \"description\": " << json_escape(v.description);
     if (!std::isnan(v.reference))
-      out << ", \"published\": " << json_number(v.reference) << ", \"relative_deviation\": "
-          << json_number(v.reference != 0. ? (v.value - v.reference) / std::abs(v.reference)
-                                           : v.value)
+      out << ", \"published\": " << json_number(v.reference)
+          << ", \"relative_deviation\": " << json_number(v.relative_deviation())
           << ", \"source\": " << json_escape(v.reference_source);
     out << "}";
   }

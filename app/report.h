@@ -4,6 +4,7 @@
 // per table. Plain C++ so every command can fill it without further dependencies.
 #pragma once
 
+#include <cmath>
 #include <deque>
 #include <limits>
 #include <map>
@@ -22,6 +23,11 @@ struct ReportValue
   // Optional published reference value to print beside the computed one (NaN: none).
   double reference = std::numeric_limits<double>::quiet_NaN();
   std::string reference_source;
+  // (value - reference)/|reference|; the value itself when the reference is 0.
+  double relative_deviation() const
+  {
+    return reference != 0. ? (value - reference) / std::abs(reference) : value;
+  }
 };
 
 struct ReportTable
@@ -54,6 +60,11 @@ public:
 
   const std::vector<ReportValue>& values() const { return value_list; }
   const std::deque<ReportTable>& tables() const { return table_list; }
+  const std::vector<std::pair<std::string, std::string>>& texts() const { return text_list; }
+  const std::vector<std::pair<std::string, std::string>>& output_files() const
+  {
+    return output_file_list;
+  }
   const ReportValue* find_value(const std::string& key) const;
 
 private:

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""Design study: the tip relief that minimises the transmission error's peak-to-peak at a design torque.
+
+Tip relief C_a (the same linear relief on pinion and wheel tips) shortens the load's entry and exit
+of a tooth pair: too little and the pair takes its load abruptly, too much and the single-pair zone
+carries alone for longer — the peak-to-peak transmission error (TE) has a minimum between, at a
+relief that depends on the torque. This finds it with scipy.optimize.minimize_scalar (bounded) on
+FE k(θ) sweeps of `gearstiff.stiffness`, and draws TE peak-to-peak against C_a.
+
+    PYTHONPATH=build/python /usr/bin/python3 examples/optimise_tip_relief.py [--torque 400] [--chart te.png]
+
+NEEDS the tip relief parameters of issue 27 (`Gear pair/Pinion/tip relief` [µm], `Stiffness/torques`,
+table `te_map`, column `te_peak_to_peak`): the script checks for them and stops with a message if
+this build does not have them. examples/design_pinion_bore.py is a design study of the same kind
+that runs on every build (the pinion bore that keeps a target single-pair stiffness).
+
+Every evaluation is one in-process sweep (positions over a base pitch); under `mpirun -np N` every
+rank runs the script and each sweep's positions are shared by the ranks (only rank 0 prints).
+"""
+import argparse
+import sys
+
+import gearstiff
+from scipy.optimize import minimize_scalar
+
+parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+parser.add_argument("--torque", type=float, default=400.0, help="design pinion torque [N·m]")
+parser.add_argument("--max-relief", type=float, default=40.0, help="upper bound of C_a [µm]")
+parser.add_argument("--positions", type=int, default=8, help="sweep positions per evaluation")
+parser.add_argument("--chart", default="tip_relief.png", help="PNG of TE peak-to-peak against C_a")
+arguments = parser.parse_args()
+root = gearstiff.mpi_rank() == 0
+
+declared = gearstiff.print_parameters("stiffness")
+if "tip relief" not in declared["Gear pair"]["Pinion"] or "torques" not in declared["Stiffness"]:
+    sys.exit("this build has no 'Gear pair/Pinion/tip relief' or 'Stiffness/torques' (issue 27); "
+             "see examples/design_pinion_bore.py for a study that runs today")
+
+evaluations = []  # (C_a [µm], TE peak-to-peak [µm])
+
+
+def te_peak_to_peak(relief):
+    params = {
+        "Gear pair": {"Pinion": {"tip relief": relief}, "Wheel": {"tip relief": relief}},
+        "Stiffness": {"mode": "sweep", "sweep positions": arguments.positions,
+                      "torques": [arguments.torque], "published reference": False},
+    }
+    te = gearstiff.stiffness(params)["tables"]["te_map"]
+    value = float(te["data"]["te_peak_to_peak"][0])
+    evaluations.append((relief, value))
+    if root:
+        print(f"  C_a = {relief:6.2f} µm: TE peak-to-peak {value:.4f} {te['units']['te_peak_to_peak']}",
+              flush=True)
+    return value
+
+
+best = minimize_scalar(te_peak_to_peak, bounds=(0.0, arguments.max_relief), method="bounded",
+                       options={"xatol": 0.5})
+if root:
+    print(f"tip relief minimising TE peak-to-peak at {arguments.torque:g} N·m: C_a = {best.x:.1f} µm "
+          f"(TE p-p {best.fun:.4f} µm; without relief {te_peak_to_peak(0.0):.4f} µm), "
+          f"{len(evaluations)} FE sweeps")
+
+if root and arguments.chart:
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        sys.exit("matplotlib missing: no chart")
+    points = sorted(evaluations)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot([p[0] for p in points], [p[1] for p in points], "o-")
+    ax.axvline(best.x, color="C3", ls=":", label=f"optimum C_a = {best.x:.1f} µm")
+    ax.set_xlabel("tip relief C_a [µm]")
+    ax.set_ylabel("TE peak-to-peak [µm]")
+    ax.set_title(f"Split-path pair at {arguments.torque:g} N·m")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(arguments.chart, dpi=120)
+    print(f"chart: {arguments.chart}")
