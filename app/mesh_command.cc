@@ -1,7 +1,7 @@
 // `gearstiff mesh [scene.prm]`: writes the FE mesh of one scene (ASCII .msh 4.1, all quadrilateral
 // in 2D, hexahedra extruded over the face width in 3D) and reports its ids, extent, predicted
-// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1 at
-// the single-pair position (pitch point).
+// contacts, cell counts, quality and timings. Default: the split-path pair of docs/references.md §1
+// at the single-pair position (pitch point).
 //
 //   gearstiff mesh -o out                                        out/scene.msh, 2D, single pair
 //   gearstiff mesh --set "Gear pair scene/position=double" -o out
@@ -17,6 +17,7 @@
 #include "app/geometry_parameters.h"
 #include "app/kinematics_parameters.h"
 #include "app/parameter_patterns.h"
+#include "app/tooth_modification_parameters.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "geometry/abaqus_deck.h"
@@ -49,9 +50,10 @@ void declare_deck_parameters(ParameterHandler& prm)
   prm.declare_entry("2D elements", "slice", Selection("slice|CPE4|CPS4"),
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
-  prm.declare_entry("friction coefficient", "0.01", Double(0., 1.),
-                    "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
-                    "the cycloid deck is frictionless, as cycloid-loads)");
+  prm.declare_entry(
+      "friction coefficient", "0.01", Double(0., 1.),
+      "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
+      "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
                     "cycloid scene: M_c on the rigid output member, counter-clockwise > 0 [N·m] "
                     "(docs/references.md §4: 440)");
@@ -72,6 +74,7 @@ void declare_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 
   declare_gear_pair_parameters(prm);
+  declare_tooth_modification_parameters(prm);
 
   const geometry::GearPairSceneSpec gear;
   prm.enter_subsection("Gear pair scene");
@@ -137,6 +140,13 @@ geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
   spec.pinion_torque = prm.get_double("pinion torque");
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
+  // The micro-geometry, built into the outlines (and so into the CalculiX deck).
+  const PairModificationText modifications = read_tooth_modification_text(prm);
+  spec.pinion_modifications =
+      parse_gear_modifications(modifications.pinion, false, spec.mesh.dimension);
+  spec.wheel_modifications =
+      parse_gear_modifications(modifications.wheel, true, spec.mesh.dimension);
+  geometry::check_tooth_modifications(spec);
   return spec;
 }
 
@@ -319,6 +329,15 @@ void run(ParameterHandler& prm, CommandContext& context)
   const geometry::GearPairSceneSpec gear_spec =
       gear ? parse_gear_scene(prm) : geometry::GearPairSceneSpec();
   const bool cycloid = type == "cycloid";
+  if (!gear)
+  {
+    // Micro-geometry is defined on involute flanks: refuse it on other scene types.
+    const std::string modified = first_modified_entry(read_tooth_modification_text(prm));
+    if (!modified.empty())
+      throw InputError(modified, "tooth modifications apply to the involute teeth of the "
+                                 "gear-pair scene only, not to a " +
+                                     type + " scene (set it to 0)");
+  }
   const geometry::CylindersSceneSpec cylinder_spec =
       type == "cylinders" ? parse_cylinders(prm) : geometry::CylindersSceneSpec();
   geometry::CycloidSceneSpec cycloid_spec =

@@ -3,12 +3,13 @@
 // (subsections "Gear pair scene" and "Mesh" of app/geometry_parameters.h, mm and degrees), the FE
 // model ("Finite elements", "Linear solver", "Contact" of app/fe_contact_parameters.h) and the
 // load case and sweep ("Stiffness").
-// Defaults: the split-path pair of docs/references.md §1 under its published load case (T1 = 49.4 N·m,
-// μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
+// Defaults: the split-path pair of docs/references.md §1 under its published load case (T1 = 49.4
+// N·m, μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
 // accuracy-versus-cost study (docs/accuracy.md).
 #pragma once
 
 #include "app/geometry_parameters.h"
+#include "app/tooth_modification_parameters.h"
 #include "dynamics/cai_stiffness.h"
 #include "stiffness/mesh_stiffness.h"
 #include "stiffness/mesh_stiffness_sweep.h"
@@ -29,6 +30,13 @@ enum class StiffnessMode
 // The parameter-file spelling: "single", "double", "roll angle", "sweep".
 std::string mode_name(StiffnessMode mode);
 
+// One modification set of `Stiffness/variants` (the micro-geometry of both gears).
+struct StiffnessVariant
+{
+  std::string label; // as written, e.g. "tip relief = 10"
+  geometry::GearModifications pinion, wheel;
+};
+
 struct StiffnessParameters
 {
   stiffness::GearMeshStiffnessSettings settings; // SI, scene_file left empty
@@ -36,6 +44,8 @@ struct StiffnessParameters
   stiffness::StiffnessSweepSpec sweep;
   bool write_vtu = false;
   bool published_reference = true; // compare with docs/references.md §1 (split-path pair only)
+  // `Stiffness/variants`: further modification sets, each swept like the base one.
+  std::vector<StiffnessVariant> variants;
 };
 
 // Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".
@@ -78,6 +88,11 @@ void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair)
 // The sweep as a table (one row per position).
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name);
+// With a torque list: TE(θ), k(θ), load sharing and pressure per torque (table `name`, one row
+// per torque and position) and the Harris-map table `map_name` (one row per torque: torque,
+// te_peak_to_peak, te_mean, te_harmonic_1..3 [µm], stiffness_mean [N/µm], max_pressure [MPa]).
+void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                       const std::string& name, const std::string& map_name);
 
 // The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions

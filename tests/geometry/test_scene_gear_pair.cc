@@ -28,32 +28,6 @@ std::set<int> flank_ids(bool wheel, int first, int last)
   return ids;
 }
 
-// Distances along the line of action (from T1) where it crosses boundary faces with an id of
-// `ids`.
-std::vector<double> crossings(const dealii::Triangulation<2>& triangulation,
-                              const std::set<int>& ids, const Eigen::Vector2d& t1,
-                              const Eigen::Vector2d& t2)
-{
-  const Eigen::Vector2d u = (t2 - t1).normalized();
-  const double length = (t2 - t1).norm();
-  std::vector<double> result;
-  for (const auto& cell : triangulation.active_cell_iterators())
-    for (const auto f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && ids.count(cell->face(f)->boundary_id()) > 0)
-      {
-        const auto v0 = cell->face(f)->vertex(0), v1 = cell->face(f)->vertex(1);
-        const Eigen::Vector2d a(v0[0], v0[1]), b(v1[0], v1[1]);
-        Eigen::Matrix2d m;
-        m << u, a - b;
-        if (std::abs(m.determinant()) < 1e-30)
-          continue;
-        const Eigen::Vector2d ts = m.inverse() * (a - t1);
-        if (ts(1) >= 0. && ts(1) < 1. && ts(0) >= 0. && ts(0) <= length)
-          result.push_back(ts(0));
-      }
-  return result;
-}
-
 // Pinion/wheel flank crossings of the line of action that coincide within `tolerance`.
 unsigned int touching_pairs(const dealii::Triangulation<2>& triangulation, const SceneInfo& info,
                             double tolerance, std::vector<double>* gaps = nullptr)
@@ -108,8 +82,8 @@ SceneInfo scene(const std::string& position, const std::string& name, unsigned i
 // remains is the spline through the profile points and the chord between boundary nodes:
 // with h_c ≈ 5-8 µm and a flank curvature radius ≥ 5 mm the chord sag is below 1e-11 m, the
 // spline error below 1e-7 m. 0.5 µm is still 12x smaller than the tooth-pair deflection at the
-// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, docs/references.md §1), so a pair that is
-// "near-zero" here is in contact for any FE analysis at that load.
+// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, docs/references.md §1), so a pair that
+// is "near-zero" here is in contact for any FE analysis at that load.
 constexpr double touching_tolerance = 0.5e-6;
 // The gap to the next pair outside the path of contact is a sizeable fraction of the base
 // pitch; 50 µm separates "touching" from "not touching" by two orders of magnitude.
@@ -145,9 +119,9 @@ TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
   EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
 
-  // The split-path pair (ε_α = 1.5, docs/references.md §1) has its pitch point in the single-contact
-  // zone, so "single" puts the one contact at the pitch point C: ℓ = r_b1·tan α_wt with
-  // r_b1 = 24.667 mm and α_wt = 20° → 8.978 mm, 26.25 mm from the pinion axis (r_w1 = r1).
+  // The split-path pair (ε_α = 1.5, docs/references.md §1) has its pitch point in the
+  // single-contact zone, so "single" puts the one contact at the pitch point C: ℓ = r_b1·tan α_wt
+  // with r_b1 = 24.667 mm and α_wt = 20° → 8.978 mm, 26.25 mm from the pinion axis (r_w1 = r1).
   ASSERT_EQ(info.contacts.size(), 1u);
   EXPECT_NEAR(info.contacts[0].point.norm(), 26.25e-3, 1e-6); // 1 µm: r_b1 is given to 1 µm
   // Hertz half-width at the pitch point ≈ 0.08 mm (docs/references.md §6: 2.0 kN over 24 mm); the
