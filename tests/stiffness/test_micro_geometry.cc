@@ -130,18 +130,27 @@ TEST(MicroGeometry, ZeroLoadLimitIsTheGeometricError)
   for (const auto& load : r[0].pairs)
   {
     if (load.pair == 0) // the entering pair at s = 0.3 of [A, B]
+    {
       EXPECT_LT(load.load_share, 1e-6);
+    }
   }
   // Loaded at 49.4 N·m the entering pair closes its extra 4 µm and takes a share.
   EXPECT_EQ(r[1].loaded_pairs, 2u);
 }
 
 // Harris map: linear long relief on both gears of C equal to the single-contact deflection at
-// the design torque T_d (the loaded TE of the unmodified pair at mode single, 6.1 µm at 49.4
+// the design torque T_d (the loaded TE of the unmodified pair at mode single, ≈ 7 µm at 49.4
 // N·m). TE peak-to-peak over one mesh cycle (16 positions) against torque: at zero torque it is
-// the geometric tent (C/2 peak), it falls as the load fills the reliefs and rises again past
-// T_d; the minimum lies within [0.75, 1.25]·T_d and is well below the unmodified pair's p-p at
-// T_d (Harris 1958: the relief matched to the deflection of the design load).
+// the geometric tent (C/2 peak), it falls as the load fills the reliefs and rises again beyond
+// the optimum, which is well below the unmodified pair's p-p at T_d (Harris 1958).
+// Where the minimum lies: Harris' model has one pair stiffness c along the path, so the
+// double-zone TE C/2 + F/(2c) equals the single-zone F/c at F/c = C, i.e. at T_d. The FE pair
+// is softer where it touches near a tip (the single-pair stiffness falls towards the ends of
+// the path, the Cai curve of docs/references.md §1): in the middle of the double zone each pair
+// is ≈ 1.5× as compliant as at the pitch point (measured 2026-11-26: TE 8.05 µm there against
+// 6.9–7.2 µm in the single zone at T_d with C = 6 µm), and C/2 + 1.5·F/(2c) = F/c gives
+// F/c = 2C: the minimum moves to ≈ 1.5–2·T_d. Measured: the minimum among 0.25…2·T_d lies at
+// 1.5·T_d (8 torques, 32 positions, C = 6 µm); the band asserted is [1.25, 2]·T_d.
 TEST(MicroGeometry, HarrisMinimumNearTheDesignTorque)
 {
   GearMeshStiffnessSettings single = settings_at(0., "micro_harris_single");
@@ -154,7 +163,7 @@ TEST(MicroGeometry, HarrisMinimumNearTheDesignTorque)
   settings.contact.friction_coefficient = 0.;
   StiffnessSweepSpec spec;
   spec.positions = 16;
-  const std::vector<double> factors{0.25, 0.5, 0.75, 1., 1.25, 1.5, 2.};
+  const std::vector<double> factors{0.25, 0.5, 0.75, 1., 1.25, 1.5, 1.75, 2.};
   for (const double f : factors)
     settings.torques.push_back(f * design_torque);
   const StiffnessSweepResult plain =
@@ -175,8 +184,8 @@ TEST(MicroGeometry, HarrisMinimumNearTheDesignTorque)
               << " µm)\n";
   }
   const std::size_t best = std::min_element(peak.begin(), peak.end()) - peak.begin();
-  EXPECT_GE(factors[best], 0.75);
-  EXPECT_LE(factors[best], 1.25);
+  EXPECT_GE(factors[best], 1.25);
+  EXPECT_LE(factors[best], 2.);
   const auto plain_design = summarize_transmission_error(plain.by_torque[3]);
   EXPECT_LT(peak[3], 0.5 * plain_design.peak_to_peak);
   // Zero-load end: the unloaded TE is the geometric tent, peak C/2 at the middle of each
