@@ -16,6 +16,7 @@
 #include "app/geometry_parameters.h"
 #include "app/parameter_patterns.h"
 #include "app/scene.h"
+#include "app/tooth_modification_parameters.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "errors/format.h"
@@ -220,6 +221,15 @@ void run(ParameterHandler& prm, CommandContext& context)
   const DeckRequest deck = parse_deck_request(prm);
 
   // Parse everything first: a bad parameter must stop the command before gmsh runs.
+  if (type != default_scene_type)
+  {
+    // Micro-geometry is defined on involute flanks: refuse it on other scene types.
+    const std::string modified = first_modified_entry(read_tooth_modification_text(prm));
+    if (!modified.empty())
+      throw InputError(modified, "tooth modifications apply to the involute teeth of the "
+                                 "gear-pair scene only, not to a " +
+                                     type + " scene (set it to 0)");
+  }
   const std::unique_ptr<Scene> scene = scene_registry().at(type).parse(prm);
   if (deck.write)
     scene->prepare_for_deck();

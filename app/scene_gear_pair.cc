@@ -6,6 +6,7 @@
 #include "app/kinematics_parameters.h"
 #include "app/parameter_patterns.h"
 #include "app/scene.h"
+#include "app/tooth_modification_parameters.h"
 #include "app/units.h"
 #include "errors/format.h"
 #include "kinematics/automatic_sizes.h"
@@ -31,6 +32,7 @@ void declare_parameters(ParameterHandler& prm)
                     "the stiffness scene (docs/calculix.md)");
   prm.leave_subsection();
   declare_gear_pair_parameters(prm);
+  declare_tooth_modification_parameters(prm);
   const geometry::GearPairSceneSpec gear;
   prm.enter_subsection("Gear pair scene");
   prm.declare_entry("position", "single", Selection("single|double|roll angle"),
@@ -145,6 +147,13 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   spec.pinion_torque = prm.get_double("pinion torque");
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
+  // The micro-geometry, built into the outlines (and so into the CalculiX deck).
+  const PairModificationText modifications = read_tooth_modification_text(prm);
+  spec.pinion_modifications =
+      parse_gear_modifications(modifications.pinion, false, spec.mesh.dimension);
+  spec.wheel_modifications =
+      parse_gear_modifications(modifications.wheel, true, spec.mesh.dimension);
+  geometry::check_tooth_modifications(spec);
   auto scene = std::make_unique<GearPairMeshScene>(spec);
   scene->derived = derived;
   return scene;

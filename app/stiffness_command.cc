@@ -16,10 +16,12 @@
 #include "app/units.h"
 #include "errors/errors.h"
 #include "kinematics/iso_stiffness.h"
+#include "stiffness/transmission_error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <memory>
 
 namespace
 {
@@ -50,6 +52,58 @@ std::string position_reason(StiffnessMode mode, const kinematics::GearPairGeomet
            " from T1); the second pair sits one base pitch further, in the middle of [D, E]";
   return "roll angle " + format_number(r.pinion_roll_angle / degree, 6) + "° (" +
          mm(r.pinion_roll_angle * r_b1) + " from T1)";
+}
+
+// The TE of the sweep (per torque with a torque list: te_sweep, te_map), the unloaded TE, and
+// every variant of Stiffness/variants swept the same way (te_map_variant_<k>), with the Harris
+// map (te_peak_to_peak against torque, one line per modification set) as a PNG.
+void report_micro_geometry(const StiffnessParameters& p,
+                           const stiffness::StiffnessSweepResult& sweep, CommandContext& context)
+{
+  Report& report = context.report;
+  const stiffness::TransmissionErrorSummary base =
+      stiffness::summarize_transmission_error(sweep.positions);
+  report.add_value("te_peak_to_peak", base.peak_to_peak * 1e6, "µm",
+                   "peak-to-peak of the loaded TE over the sweep (first torque)");
+  report.add_value("te_unloaded_peak_to_peak", base.unloaded_peak_to_peak * 1e6, "µm",
+                   "peak-to-peak of the unloaded (geometric) TE of the modifications");
+  if (sweep.by_torque.empty() && p.variants.empty())
+    return;
+  std::vector<std::pair<std::string, std::string>> maps{{"te_map", "base"}};
+  stiffness::StiffnessSweepResult one_torque = sweep;
+  if (one_torque.by_torque.empty())
+  {
+    one_torque.torques = {p.settings.pinion_torque};
+    one_torque.by_torque = {sweep.positions};
+  }
+  add_torque_tables(report, one_torque, "te_sweep", "te_map");
+  for (unsigned int v = 0; v < p.variants.size(); ++v)
+  {
+    StiffnessParameters variant = p;
+    variant.variants.clear();
+    variant.settings.scene.pinion_modifications = p.variants[v].pinion;
+    variant.settings.scene.wheel_modifications = p.variants[v].wheel;
+    if (variant.settings.torques.empty())
+      variant.settings.torques = {p.settings.pinion_torque};
+    const std::string name = "variant_" + std::to_string(v + 1);
+    const stiffness::StiffnessSweepResult result =
+        solve_stiffness_sweep(variant, context, "stiffness_" + name);
+    add_torque_tables(report, result, "te_sweep_" + name, "te_map_" + name);
+    report.add_text(name, p.variants[v].label);
+    maps.emplace_back("te_map_" + name, p.variants[v].label);
+  }
+  if (!context.writes_files() || !context.is_root())
+    return;
+  std::vector<std::unique_ptr<TemporaryCsv>> files;
+  std::vector<std::string> arguments;
+  for (const auto& [table, label] : maps)
+  {
+    files.push_back(std::make_unique<TemporaryCsv>(report, table));
+    arguments.push_back(files.back()->path());
+    arguments.push_back(label);
+  }
+  context.plot("plot_harris_map.py", arguments, "harris_map.png",
+               "Harris map: TE peak-to-peak against torque, one line per modification set");
 }
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)
@@ -117,6 +171,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
   add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
+  report_micro_geometry(p, sweep, context);
   add_pair_identity(report, pair);
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
   for (const auto& r : sweep.positions)

@@ -9,6 +9,7 @@
 #include "errors/format.h"
 #include "errors/limits.h"
 #include "kinematics/gear_pair.h"
+#include "stiffness/transmission_error.h"
 
 #include <algorithm>
 #include <climits>
@@ -24,6 +25,7 @@ namespace gearstiff::app
 void declare_stiffness_parameters(ParameterHandler& prm)
 {
   declare_gear_pair_parameters(prm);
+  declare_tooth_modification_parameters(prm);
   const geometry::GearPairSceneSpec scene = stiffness::default_stiffness_scene();
   // The sector cut faces are left free by the stiffness analysis.
   declare_gear_scene_parameters(prm, scene, true);
@@ -64,6 +66,18 @@ void declare_stiffness_parameters(ParameterHandler& prm)
                     "span of the sweep in transverse base pitches [-] (1: one mesh period)");
   prm.declare_entry("sweep positions", "32", Integer(),
                     "N, positions of the sweep [-], at the middles of N equal intervals");
+  // Micro-geometry studies (issue 27): a list of torques, further modification sets.
+  prm.declare_entry(
+      "torques", "", Anything(),
+      "pinion torques [N·m], comma-separated, ascending, each > 0; empty = 'Gear pair "
+      "scene/pinion torque' alone. A sweep then gives TE(θ), k(θ), load sharing and pressure "
+      "per torque and the Harris-map table te_map (one scene and factorization "
+      "per position for all torques)");
+  prm.declare_entry("variants", "", Anything(),
+                    "further modification sets swept like the base one, ';'-separated, each "
+                    "'name = value, ...' of Gear pair/Pinion and Wheel entries ('tip relief = "
+                    "10' both gears, 'Pinion/tip relief = 10' one), e.g. 'tip relief = 5; tip "
+                    "relief = 10'; empty = none");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
@@ -106,6 +120,7 @@ ParameterNames stiffness_parameter_names()
   names[geometry::scene_field::young_modulus] = "Stiffness/Young's modulus";
   names[geometry::scene_field::poisson_ratio] = "Stiffness/Poisson's ratio";
   names[stiffness::stiffness_parameter::torque] = "Gear pair scene/pinion torque";
+  names[stiffness::stiffness_parameter::torques] = "Stiffness/torques";
   names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
   names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
   return names;
@@ -121,6 +136,61 @@ StiffnessMode parse_mode(const std::string& text)
       return mode;
   throw InputError("Stiffness/mode",
                    "'" + text + "' is not one of single, double, roll angle, sweep");
+}
+
+// "Stiffness/torques": comma-separated numbers (N·m); empty: none. The analysis checks sign and
+// order (stiffness::check_torque_list).
+std::vector<double> parse_torque_list(const std::string& text)
+{
+  std::vector<double> torques;
+  if (text.find_first_not_of(" \t") == std::string::npos)
+    return torques;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    std::size_t used = 0;
+    double value = 0.;
+    try
+    {
+      value = std::stod(item, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
+      throw InputError("Stiffness/torques", "'" + item + "' is not a torque [N·m]");
+    torques.push_back(value);
+  }
+  with_parameter_names(stiffness_parameter_names(), [&] { stiffness::check_torque_list(torques); });
+  return torques;
+}
+
+// The micro-geometry of both gears (Gear pair/Pinion, Gear pair/Wheel) and the variants of
+// "Stiffness/variants", each checked against the generated teeth before anything is meshed.
+void parse_modification_stage(ParameterHandler& prm, const std::string& variants,
+                              StiffnessParameters& p)
+{
+  geometry::GearPairSceneSpec& scene = p.settings.scene;
+  const PairModificationText text = read_tooth_modification_text(prm);
+  const unsigned int dimension = scene.mesh.dimension;
+  scene.pinion_modifications = parse_gear_modifications(text.pinion, false, dimension);
+  scene.wheel_modifications = parse_gear_modifications(text.wheel, true, dimension);
+  geometry::check_tooth_modifications(scene);
+  for (const ModificationVariant& v :
+       parse_modification_variants(variants, text, "Stiffness/variants"))
+  {
+    StiffnessVariant variant{v.label, parse_gear_modifications(v.text.pinion, false, dimension),
+                             parse_gear_modifications(v.text.wheel, true, dimension)};
+    geometry::GearPairSceneSpec checked = scene;
+    checked.pinion_modifications = variant.pinion;
+    checked.wheel_modifications = variant.wheel;
+    geometry::check_tooth_modifications(checked);
+    p.variants.push_back(variant);
+  }
+  if (!p.variants.empty() && p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/variants", "applies to mode sweep only");
 }
 
 // The checks the analysis makes before it meshes, run at parse time: the library's own (one
@@ -201,7 +271,11 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   p.write_vtu = prm.get_bool("write vtu");
   p.published_reference =
       prm.get_bool("published reference") && kinematics::is_split_path_pair(s.scene.pair);
+  const std::string torques = prm.get("torques");
+  const std::string variants = prm.get("variants");
   prm.leave_subsection();
+  s.torques = parse_torque_list(torques);
+  parse_modification_stage(prm, variants, p);
 
   // A count below one becomes 0, which the sweep's own check (stiffness::sweep_positions)
   // refuses in mode sweep; the other modes do not use it.
@@ -470,6 +544,43 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                         ": a loaded pair touches at a tip corner (closed nodes within one contact "
                         "cell of A or E); their max_pressure is an edge pressure that grows with "
                         "refinement, not a Hertz pressure (column tip_edge_contact)");
+}
+
+void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                       const std::string& name, const std::string& map_name)
+{
+  ReportTable& table = report.add_table(
+      name,
+      {"torque", "position", "roll_angle", "mesh_position", "transmission_error",
+       "unloaded_transmission_error", "stiffness", "share_pair_m1", "share_pair_0", "share_pair_p1",
+       "max_pressure", "pinion_root_stress", "wheel_root_stress", "iterations", "time"},
+      {"N*m", "-", "deg", "-", "um", "um", "N/um", "-", "-", "-", "MPa", "MPa", "MPa", "-", "s"});
+  ReportTable& map =
+      report.add_table(map_name,
+                       {"torque", "te_peak_to_peak", "te_mean", "te_harmonic_1", "te_harmonic_2",
+                        "te_harmonic_3", "stiffness_mean", "max_pressure"},
+                       {"N*m", "um", "um", "um", "um", "um", "N/um", "MPa"});
+  for (unsigned int t = 0; t < sweep.by_torque.size(); ++t)
+  {
+    for (unsigned int i = 0; i < sweep.by_torque[t].size(); ++i)
+    {
+      const stiffness::GearMeshStiffnessResult& r = sweep.by_torque[t][i];
+      double share[3] = {0., 0., 0.};
+      for (const auto& pair : r.pairs)
+        if (pair.pair >= -1 && pair.pair <= 1)
+          share[pair.pair + 1] = pair.load_share;
+      table.add_row({sweep.torques[t], double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
+                     r.transmission_error * 1e6, r.unloaded_transmission_error * 1e6,
+                     r.mesh_stiffness / 1e6, share[0], share[1], share[2],
+                     r.max_contact_pressure / 1e6, r.pinion_root_stress / 1e6,
+                     r.wheel_root_stress / 1e6, double(r.active_set_iterations), r.total_time});
+    }
+    const stiffness::TransmissionErrorSummary s =
+        stiffness::summarize_transmission_error(sweep.by_torque[t]);
+    map.add_row({sweep.torques[t], s.peak_to_peak * 1e6, s.mean * 1e6, s.harmonics[0] * 1e6,
+                 s.harmonics[1] * 1e6, s.harmonics[2] * 1e6, s.stiffness_mean / 1e6,
+                 s.max_pressure / 1e6});
+  }
 }
 
 std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& sweep)

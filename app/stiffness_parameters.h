@@ -9,6 +9,7 @@
 #pragma once
 
 #include "app/geometry_parameters.h"
+#include "app/tooth_modification_parameters.h"
 #include "dynamics/cai_stiffness.h"
 #include "kinematics/automatic_sizes.h"
 #include "stiffness/mesh_stiffness.h"
@@ -30,6 +31,13 @@ enum class StiffnessMode
 // The parameter-file spelling: "single", "double", "roll angle", "sweep".
 std::string mode_name(StiffnessMode mode);
 
+// One modification set of `Stiffness/variants` (the micro-geometry of both gears).
+struct StiffnessVariant
+{
+  std::string label; // as written, e.g. "tip relief = 10"
+  geometry::GearModifications pinion, wheel;
+};
+
 struct StiffnessParameters
 {
   stiffness::GearMeshStiffnessSettings settings; // SI, scene_file left empty
@@ -40,6 +48,8 @@ struct StiffnessParameters
   // (kinematics::is_split_path_pair).
   bool published_reference = true;
   std::vector<kinematics::DerivedSize> derived_sizes; // the `auto` sizes of the gear pair
+  // `Stiffness/variants`: further modification sets, each swept like the base one.
+  std::vector<StiffnessVariant> variants;
 };
 
 // Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".
@@ -87,6 +97,11 @@ bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
 // tip corner, and a report text lists those positions).
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name, const kinematics::GearPairGeometry& pair);
+// With a torque list: TE(θ), k(θ), load sharing and pressure per torque (table `name`, one row
+// per torque and position) and the Harris-map table `map_name` (one row per torque: torque,
+// te_peak_to_peak, te_mean, te_harmonic_1..3 [µm], stiffness_mean [N/µm], max_pressure [MPa]).
+void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                       const std::string& name, const std::string& map_name);
 
 // The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions

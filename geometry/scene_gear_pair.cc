@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -38,7 +39,8 @@ double outline_root_radius(const ToothProfile& tooth)
 
 bool is_flank(ProfileSegment segment)
 {
-  return segment == ProfileSegment::flank || segment == ProfileSegment::relief;
+  return segment == ProfileSegment::root_relief || segment == ProfileSegment::flank ||
+         segment == ProfileSegment::relief;
 }
 
 // The loaded flank of a tooth in its own frame (header comment): side +1 of the pinion and of
@@ -139,13 +141,15 @@ std::optional<double> flank_intersection(const ToothProfile& tooth, const Eigen:
 // tooth k carry flank_id(k). A new piece
 // starts wherever the segment or side of the outline changes (edge_between), so kinks (flank
 // to tip, relief start) stay kinks and each piece carries one boundary id.
-std::vector<BoundaryPiece> teeth_pieces(const ToothProfile& tooth, const Eigen::Vector2d& centre,
+std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen::Vector2d& centre,
                                         double rotation, int first, int last,
                                         const std::function<int(int)>& flank_id, bool both_flanks)
 {
   std::vector<BoundaryPiece> pieces;
   for (int k = first; k <= last; ++k)
   {
+    // Each tooth is its own outline: the nominal one, or that with its modifications.
+    const ToothProfile& tooth = teeth.tooth(k);
     const auto id_of = [&](const ProfileEdge& edge)
     {
       return (is_flank(edge.segment) && (edge.side == loaded_side(tooth) || both_flanks))
@@ -228,15 +232,16 @@ BoundaryLoop bore_loop(const GearBodySpec& body_spec, const Eigen::Vector2d& cen
   return loop;
 }
 
-PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfile& tooth,
+PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfiles& teeth,
                      const Eigen::Vector2d& centre, double rotation, int first, int last,
                      RimModel rim, bool both_flanks)
 {
+  const ToothProfile& tooth = teeth.nominal();
   PlanarBody body;
   body.name = body_spec.name;
   body.material_id = body_spec.material_id;
   body.outer.pieces =
-      teeth_pieces(tooth, centre, rotation, first, last, body_spec.flank_id, both_flanks);
+      teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id, both_flanks);
   const double root_radius = outline_root_radius(tooth);
   const double start_angle = rotation + (first - 0.5) * tooth.angular_pitch;
   const double end_angle = rotation + (last + 0.5) * tooth.angular_pitch;
@@ -518,7 +523,8 @@ LineOfAction line_of_action(const kinematics::GearPairGeometry& pair)
 // The placed teeth: profiles, centres and the rotations that put pair 0 at the reference.
 struct PlacedGears
 {
-  ToothProfile pinion, wheel;
+  ToothProfile pinion, wheel;              // nominal outlines (placement)
+  ToothProfiles pinion_teeth, wheel_teeth; // every modelled tooth, modified or nominal
   Eigen::Vector2d pinion_centre, wheel_centre;
   double pinion_rotation = 0., wheel_rotation = 0.;
 };
@@ -556,20 +562,68 @@ SceneContact predicted_contact(const GearPairSceneSpec& spec,
   contact.hertz_half_width = hertz_half_width(
       normal_force / face_width, contact.first_curvature_radius, contact.second_curvature_radius,
       spec.young_modulus, spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
-  const auto on_pinion = flank_intersection(gears.pinion, gears.pinion_centre,
+  const auto on_pinion = flank_intersection(gears.pinion_teeth.tooth(j), gears.pinion_centre,
                                             gears.pinion_rotation + j * gears.pinion.angular_pitch,
                                             contact.point, line.u);
-  const auto on_wheel = flank_intersection(gears.wheel, gears.wheel_centre,
-                                           gears.wheel_rotation + mate_tooth(gears.wheel, j) *
-                                                                      gears.wheel.angular_pitch,
-                                           contact.point, line.u);
+  const auto on_wheel = flank_intersection(
+      gears.wheel_teeth.tooth(mate_tooth(gears.wheel, j)), gears.wheel_centre,
+      gears.wheel_rotation + mate_tooth(gears.wheel, j) * gears.wheel.angular_pitch, contact.point,
+      line.u);
   if (!on_pinion || !on_wheel)
     throw SolverFailure("gear scene placement",
                         "the line of action misses a flank of pair " + std::to_string(j));
   contact.gap = *on_wheel - *on_pinion;
   return contact;
 }
+// The designed separation of every pair in contact along the line of action (the loaded
+// flanks' removal at the kinematic contact point: both normals lie on the line of action there)
+// and its smallest value, the unloaded transmission error.
+void set_unloaded_transmission_error(const kinematics::GearPairGeometry& pair,
+                                     const LineOfAction& line, const PlacedGears& gears,
+                                     GearPairScene& scene)
+{
+  scene.pair_separation.clear();
+  double smallest = std::numeric_limits<double>::max();
+  for (const int j : scene.contact_pairs)
+  {
+    const double position = scene.reference_position + j * pair.transverse_base_pitch;
+    const double separation = gears.pinion_teeth.loaded_flank_removal(j, position) +
+                              gears.wheel_teeth.loaded_flank_removal(mate_tooth(gears.wheel, j),
+                                                                     std::abs(position - line.t2));
+    scene.pair_separation.push_back(separation);
+    smallest = std::min(smallest, separation);
+  }
+  scene.unloaded_transmission_error = smallest;
+}
 } // namespace
+
+FlankRollRange flank_roll_range(const kinematics::GearPairGeometry& pair, const ToothProfile& tooth,
+                                bool wheel)
+{
+  const double rb = tooth.base_radius;
+  const auto roll_at = [rb](double r) { return std::sqrt(std::max(0., r * r - rb * rb)); };
+  FlankRollRange range;
+  range.tip = roll_at(tooth.tip_radius);
+  range.form = roll_at(tooth.form_radius);
+  const double a = pair.contact_start, e = pair.contact_end;
+  const double b = pair.single_contact_start(), d = pair.single_contact_end();
+  if (!wheel)
+  {
+    range.active_root = a;
+    range.active_tip = e;
+    range.single_root = b;
+    range.single_tip = d;
+    return range;
+  }
+  // The wheel's roll length of a point ℓ of the line of action: its distance from T2.
+  const double t2 = line_of_action(pair).t2;
+  const auto on_wheel = [t2](double position) { return std::abs(position - t2); };
+  range.active_tip = on_wheel(a); // the wheel tip meets the pinion at A
+  range.active_root = on_wheel(e);
+  range.single_tip = on_wheel(b);
+  range.single_root = on_wheel(d);
+  return range;
+}
 
 int pinion_flank_id(int pair)
 {
@@ -618,6 +672,21 @@ std::string to_string(PairPosition position)
   return "roll angle";
 }
 
+void check_tooth_modifications(const GearPairSceneSpec& spec)
+{
+  if (spec.pinion_modifications.empty() && spec.wheel_modifications.empty())
+    return;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const ToothProfile pinion =
+      generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
+  const ToothProfile wheel =
+      generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  ToothProfiles(pinion, spec.pinion_modifications, flank_roll_range(pair, pinion, false),
+                loaded_side(pinion), "Gear pair/Pinion");
+  ToothProfiles(wheel, spec.wheel_modifications, flank_roll_range(pair, wheel, true),
+                loaded_side(wheel), "Gear pair/Wheel");
+}
+
 GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -630,6 +699,12 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   gears.pinion =
       generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
   gears.wheel = generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  gears.pinion_teeth = ToothProfiles(gears.pinion, spec.pinion_modifications,
+                                     flank_roll_range(pair, gears.pinion, false),
+                                     loaded_side(gears.pinion), "Gear pair/Pinion");
+  gears.wheel_teeth = ToothProfiles(gears.wheel, spec.wheel_modifications,
+                                    flank_roll_range(pair, gears.wheel, true),
+                                    loaded_side(gears.wheel), "Gear pair/Wheel");
 
   GearPairScene scene;
   scene.pinion_bore_radius = bore_radius(spec.pinion_bore_radius, 0., spec.pair.pinion, false,
@@ -673,6 +748,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   for (const int j : scene.contact_pairs)
     contacts.push_back(
         predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force));
+  set_unloaded_transmission_error(pair, line, gears, scene);
 
   // Bodies: windows of modelled teeth centred on the contacting pairs, one id per flank.
   const int pinion_first = window_start(scene.contact_pairs, spec.pinion_teeth_modelled);
@@ -687,8 +763,8 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   model.bodies.push_back(
       gear_body({"pinion body", scene_ids::pinion_body, scene_ids::pinion_bore,
                  scene_ids::pinion_cuts, pinion_flank_id, scene.pinion_bore_radius},
-                gears.pinion, gears.pinion_centre, gears.pinion_rotation, pinion_first, pinion_last,
-                spec.rim, spec.both_flanks));
+                gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation, pinion_first,
+                pinion_last, spec.rim, spec.both_flanks));
   const ToothProfile& wheel_tooth = gears.wheel;
   const int wheel_first =
       std::min(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
@@ -699,8 +775,8 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
        [&wheel_tooth](int k) { return wheel_flank_id(mate_tooth(wheel_tooth, k)); },
        scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width,
        spec.wheel_bolt_holes, 0.5 * spec.wheel_bolt_hole_diameter, scene.wheel_bolt_circle_radius},
-      gears.wheel, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last, spec.rim,
-      spec.both_flanks));
+      gears.wheel_teeth, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last,
+      spec.rim, spec.both_flanks));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},
                           {scene_ids::wheel_bore, "wheel bore"}};
   for (int j = pinion_first; j <= pinion_last; ++j)
@@ -751,6 +827,9 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
                            "pinion teeth in the scene"},
                           {"wheel_teeth_modelled", double(spec.wheel_teeth_modelled), "-",
                            "wheel teeth in the scene"}});
+  if (!spec.pinion_modifications.empty() || !spec.wheel_modifications.empty())
+    info.quantities.push_back({"unloaded_transmission_error", scene.unloaded_transmission_error,
+                               "m", "the modifications' kinematic error at this position"});
   info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return scene;
 }

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "geometry/scene_common.h"
+#include "geometry/tooth_modification.h"
 #include "geometry/tooth_profile.h"
 #include "kinematics/gear_pair.h"
 
@@ -78,6 +79,13 @@ struct GearPairSceneSpec
   double young_modulus = 210e9; // Pa, both gears (steel; not published)
   double poisson_ratio = 0.3;   // -, both gears
 
+  // Micro-geometry (and later faults) of the teeth: the scene asks a ToothProfiles provider for
+  // every modelled tooth (geometry/tooth_modification.h); empty: every tooth nominal, the scene
+  // bit-identical to one without the stage. InputError names "Gear pair/Pinion/..." and
+  // "Gear pair/Wheel/...".
+  GearModifications pinion_modifications;
+  GearModifications wheel_modifications;
+
   SceneMeshSettings mesh;
   // Points per profile segment: dense enough that the spline through them follows the
   // involute to well below the contact size.
@@ -131,11 +139,26 @@ struct GearPairScene
   double wheel_tip_radius = 0.;         // m
   double pinion_sector_angle = 0.;      // rad, angle spanned by the pinion body (full rim: 2π)
   double wheel_sector_angle = 0.;       // rad
+  // The modifications' kinematic error at this position (the unloaded transmission error): the
+  // smallest of the pairs' designed separations along the line of action, δ_pinion(ρ1) +
+  // δ_wheel(ρ2) at each pair's kinematic contact point (0 without modifications).
+  double unloaded_transmission_error = 0.; // m
+  std::vector<double> pair_separation;     // m, of each pair in contact_pairs, same order
 };
+
+// The roll-length ranges of the pinion (wheel = false) or the wheel flank against its mate
+// (geometry/tooth_modification.h), from the pair and the generated tooth.
+FlankRollRange flank_roll_range(const kinematics::GearPairGeometry& pair, const ToothProfile& tooth,
+                                bool wheel);
 
 // Checks the spec (InputError naming the field; all before gmsh runs), builds the scene,
 // meshes it into `file` and returns what the FE module needs. Cost: well under a second in 2D.
 GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file);
+
+// The checks of the modification stage alone (InputError naming "Gear pair/Pinion/..." or
+// "Gear pair/Wheel/..."): generates both nominal teeth and checks every modification list
+// against them. Milliseconds; write_gear_pair_scene makes the same checks.
+void check_tooth_modifications(const GearPairSceneSpec& spec);
 
 // The scene's numbers for reports (key, SI value, unit, description).
 std::vector<SceneQuantity> scene_quantities(const GearPairScene& scene);

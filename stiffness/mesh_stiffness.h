@@ -47,8 +47,11 @@ struct GearMeshStiffnessSettings
   geometry::GearPairSceneSpec scene = default_stiffness_scene();
   fem::ElasticityParameters elasticity = default_stiffness_elasticity(); // thickness: face width
   fem::LinearSolverParameters linear_solver;
-  contact::ContactParameters contact;    // μ and the active-set controls
-  double pinion_torque = 49.4;           // N·m, T1 > 0 drives the pinion counter-clockwise
+  contact::ContactParameters contact; // μ and the active-set controls
+  double pinion_torque = 49.4;        // N·m, T1 > 0 drives the pinion counter-clockwise
+  // N·m, ascending: a sweep solves every position under each (GearMeshStiffness::run_torques);
+  // empty: pinion_torque alone.
+  std::vector<double> torques;
   fem::Material material;                // both gears (steel 210 GPa, 0.3: not published)
   std::string scene_file;                // path of the .msh to write (rank 0 of the communicator)
   std::string output_directory;          // VTU of the solved position here; empty: none
@@ -119,11 +122,16 @@ struct GearMeshStiffnessResult
   double pinion_base_radius = 0.; // m, r_b1
   double wheel_base_radius = 0.;  // m, r_b2
   double mesh_stiffness = 0.;     // N/m, T1/(r_b1²·Δφ)
-  double transmission_error = 0.; // m, r_b1·Δφ: the loaded transmission error (wheel fixed)
-  double wheel_torque = 0.;       // N·m, reaction of the fixed wheel bore about its axis
-  double torque_ratio = 0.;       // -, |T_wheel / T1| (= r_b2/r_b1 without friction, for
-                                  //    forces on the line of action: ToothPairLoad)
-  double pinion_hub_torque = 0.;  // N·m, reaction at the pinion hub (−T1 to solver precision)
+  // m, the loaded transmission error (wheel fixed): r_b1·Δφ + the unloaded one below, i.e. the
+  // pinion's roll from the position where unmodified flanks would touch.
+  double transmission_error = 0.;
+  // m, the modifications' kinematic error at this position (geometry::GearPairScene): the
+  // smallest designed separation of the pairs in contact; 0 for unmodified teeth.
+  double unloaded_transmission_error = 0.;
+  double wheel_torque = 0.;      // N·m, reaction of the fixed wheel bore about its axis
+  double torque_ratio = 0.;      // -, |T_wheel / T1| (= r_b2/r_b1 without friction, for
+                                 //    forces on the line of action: ToothPairLoad)
+  double pinion_hub_torque = 0.; // N·m, reaction at the pinion hub (−T1 to solver precision)
   // Contact and root.
   std::vector<ToothPairLoad> pairs; // modelled pairs with contact candidates, by j
   double max_contact_pressure = 0.; // Pa, over all pairs
@@ -158,6 +166,7 @@ struct GearMeshStiffnessResult
     visit("wheel_base_radius", self.wheel_base_radius);
     visit("mesh_stiffness", self.mesh_stiffness);
     visit("transmission_error", self.transmission_error);
+    visit("unloaded_transmission_error", self.unloaded_transmission_error);
     visit("wheel_torque", self.wheel_torque);
     visit("torque_ratio", self.torque_ratio);
     visit("pinion_hub_torque", self.pinion_hub_torque);
@@ -195,6 +204,16 @@ public:
   // forward (the torque did not close the mesh).
   GearMeshStiffnessResult run();
 
+  // The same position under each torque of `torques` (N·m, > 0, ascending; InputError naming
+  // stiffness_parameter::torques otherwise), one result per torque in that order. One scene,
+  // one factorization: the stiffness operator does not depend on the torque, only the contact
+  // active set does. The first torque is solved as run() solves it (its result is bit-identical
+  // to run() at that torque); each further torque is one more step of the contact continuation
+  // (contact::ContactProblem::solve_next_step) from the converged state of the previous one: a
+  // monotone loading path, which with friction (incremental Coulomb) differs from a fresh solve
+  // by the friction's path dependence only.
+  std::vector<GearMeshStiffnessResult> run_torques(const std::vector<double>& torques);
+
 private:
   void make_scene();
   void setup_problem();
@@ -218,6 +237,7 @@ private:
 namespace stiffness_parameter
 {
 inline const std::string torque = "stiffness.pinion_torque";
+inline const std::string torques = "stiffness.torques";
 inline const std::string positions = "sweep.positions";
 inline const std::string pitches = "sweep.base_pitches";
 inline const std::string scene_file = "stiffness.scene_file";
@@ -226,4 +246,7 @@ inline const std::string scene_file = "stiffness.scene_file";
 // The checks of the settings the constructor makes before anything is meshed (InputError
 // naming the field): a positive torque that closes the mesh, one loaded flank per tooth.
 void check_stiffness_settings(const GearMeshStiffnessSettings& settings);
+// A torque list for run_torques: not empty, every torque positive, ascending (InputError naming
+// stiffness_parameter::torques otherwise).
+void check_torque_list(const std::vector<double>& torques);
 } // namespace gearstiff::stiffness

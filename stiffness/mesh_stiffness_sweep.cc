@@ -50,29 +50,34 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
   return positions;
 }
 
-// One position of the sweep, solved serially; its scene file is removed whatever happens, and
-// a failure's reason starts with `context`.
+// One position of the sweep under every torque of settings.torques (one result: pinion_torque
+// alone when the list is empty), solved serially with one scene and one factorization
+// (GearMeshStiffness::run_torques); its scene file is removed whatever happens, and a failure's
+// reason starts with `context`.
 template <int dim>
-GearMeshStiffnessResult solve_position(const GearMeshStiffnessSettings& settings,
-                                       const double roll_angle, const std::string& suffix,
-                                       const std::string& scene_file_stem,
-                                       const std::string& context)
+std::vector<GearMeshStiffnessResult>
+solve_position_torques(const GearMeshStiffnessSettings& settings, const double roll_angle,
+                       const std::string& suffix, const std::string& scene_file_stem,
+                       const std::string& context)
 {
   GearMeshStiffnessSettings local = settings;
   local.scene.position = geometry::PairPosition::roll_angle;
   local.scene.pinion_roll_angle = roll_angle;
   local.scene_file = scene_file_stem + "_" + suffix + ".msh";
   local.output_base = settings.output_base + "_" + suffix;
-  GearMeshStiffnessResult result;
+  std::vector<GearMeshStiffnessResult> results;
   const fem::Failure failure = fem::catch_failure(
       [&]()
       {
         GearMeshStiffness<dim> analysis(MPI_COMM_SELF, local);
-        result = analysis.run();
+        if (settings.torques.empty())
+          results = {analysis.run()};
+        else
+          results = analysis.run_torques(settings.torques);
       });
   std::filesystem::remove(local.scene_file);
   failure.rethrow(context);
-  return result;
+  return results;
 }
 
 template <int dim>
@@ -95,16 +100,19 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   // Each rank takes the next unsolved position as soon as it is free (fem::distribute_items);
   // a failure stops every rank within about one contact iteration, and the first failing
   // position decides what every rank throws.
-  std::vector<std::pair<unsigned int, GearMeshStiffnessResult>> mine;
+  if (!settings.torques.empty())
+    check_torque_list(settings.torques);
+  std::vector<std::pair<unsigned int, std::vector<GearMeshStiffnessResult>>> mine;
   fem::distribute_items(
       mpi_communicator, n,
       [&](const unsigned int i)
       {
         const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
                                   format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
-        const GearMeshStiffnessResult r = solve_position<dim>(
+        const std::vector<GearMeshStiffnessResult> all = solve_position_torques<dim>(
             warm, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
-        mine.emplace_back(i, r);
+        const GearMeshStiffnessResult& r = all.front();
+        mine.emplace_back(i, all);
         if (progress)
           progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
                    format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
@@ -120,10 +128,14 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   result.positions.resize(n);
   result.rank_of_position.resize(n);
   const auto gathered = Utilities::MPI::all_gather(mpi_communicator, mine);
+  result.torques = settings.torques;
+  result.by_torque.assign(settings.torques.size(), std::vector<GearMeshStiffnessResult>(n));
   for (unsigned int r = 0; r < gathered.size(); ++r)
     for (const auto& [i, position] : gathered[r])
     {
-      result.positions[i] = position;
+      result.positions[i] = position.front();
+      for (unsigned int t = 0; t < result.by_torque.size(); ++t)
+        result.by_torque[t][i] = position.at(t);
       result.rank_of_position[i] = r;
     }
   result.wall_time = timer.wall_time();

@@ -26,7 +26,10 @@ struct StiffnessSweepSpec
 struct StiffnessSweepResult
 {
   std::vector<GearMeshStiffnessResult> positions; // in sweep order, complete on every rank
-  std::vector<unsigned int> rank_of_position;     // -, rank that solved each position
+  // With settings.torques: [torque][position], positions = the first torque's (else empty).
+  std::vector<double> torques; // N·m
+  std::vector<std::vector<GearMeshStiffnessResult>> by_torque;
+  std::vector<unsigned int> rank_of_position; // -, rank that solved each position
   unsigned int n_ranks = 1;
   double wall_time = 0.; // s, the whole sweep (slowest rank)
 };

@@ -1,0 +1,385 @@
+#include "geometry/tooth_modification.h"
+
+#include "errors/errors.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace gearstiff::geometry
+{
+namespace
+{
+std::string um(double length)
+{
+  std::ostringstream text;
+  text.precision(4);
+  text << length * 1e6 << " µm";
+  return text.str();
+}
+
+std::string mm(double length)
+{
+  std::ostringstream text;
+  text.precision(5);
+  text << length * 1e3 << " mm";
+  return text.str();
+}
+
+// The parameter word of a modification kind (the amount's name in Gear pair/Pinion).
+std::string kind_name(ModificationKind kind)
+{
+  switch (kind)
+  {
+  case ModificationKind::tip_relief:
+    return "tip relief";
+  case ModificationKind::root_relief:
+    return "root relief";
+  case ModificationKind::profile_crowning:
+    return "profile crowning";
+  case ModificationKind::profile_slope:
+    break;
+  }
+  return "profile slope";
+}
+
+bool is_relief(ModificationKind kind)
+{
+  return kind == ModificationKind::tip_relief || kind == ModificationKind::root_relief;
+}
+
+// Relief length actually used (m): the given one, or (length < 0, "auto") the long relief from
+// the start of single-tooth contact.
+double relief_length(const ToothModification& m, const FlankRollRange& range)
+{
+  if (m.length >= 0.)
+    return m.length;
+  return m.kind == ModificationKind::tip_relief ? std::abs(range.tip - range.single_tip)
+                                                : std::abs(range.single_root - range.form);
+}
+
+// Roll distance of the relief zone's reference end: the tip, or the root form circle.
+double relief_distance(const ToothModification& m, const FlankRollRange& range, double roll)
+{
+  return std::abs(roll - (m.kind == ModificationKind::tip_relief ? range.tip : range.form));
+}
+
+double relief_depth(const ToothModification& m, double length, double distance)
+{
+  if (!(length > 0.) || distance >= length || !(m.amount > 0.))
+    return 0.;
+  const double x = length - distance; // from the relief start
+  const double u = x / length;
+  switch (m.shape)
+  {
+  case ReliefShape::linear:
+    return m.amount * u;
+  case ReliefShape::parabolic:
+    return m.amount * u * u;
+  case ReliefShape::arc:
+    break;
+  }
+  // Circle tangent to the flank at the start through the amount at the end.
+  const double radius = (length * length + m.amount * m.amount) / (2. * m.amount);
+  return radius - std::sqrt(radius * radius - x * x);
+}
+
+double depth_of(const ToothModification& m, const FlankRollRange& range, double roll)
+{
+  const double active = std::abs(range.active_tip - range.active_root);
+  switch (m.kind)
+  {
+  case ModificationKind::tip_relief:
+  case ModificationKind::root_relief:
+    return relief_depth(m, relief_length(m, range), relief_distance(m, range, roll));
+  case ModificationKind::profile_crowning:
+  {
+    const double middle = 0.5 * (range.active_tip + range.active_root);
+    const double z = 2. * (roll - middle) / active;
+    return m.amount * z * z;
+  }
+  case ModificationKind::profile_slope:
+    break;
+  }
+  const double from_root =
+      (roll - range.active_root) * (range.active_tip >= range.active_root ? 1. : -1.);
+  const double depth =
+      m.amount > 0. ? m.amount * from_root / active : -m.amount * (active - from_root) / active;
+  return std::max(0., depth);
+}
+
+// The roll lengths where a modification has a kink or starts (a point of its own there).
+std::vector<double> breakpoints(const std::vector<ToothModification>& modifications,
+                                const FlankRollRange& range)
+{
+  std::vector<double> rolls;
+  for (const auto& m : modifications)
+    if (is_relief(m.kind) && m.amount > 0.)
+    {
+      const double length = relief_length(m, range);
+      const double end = m.kind == ModificationKind::tip_relief ? range.tip : range.form;
+      const double inward = m.kind == ModificationKind::tip_relief
+                                ? (range.form > range.tip ? 1. : -1.)
+                                : (range.tip > range.form ? 1. : -1.);
+      rolls.push_back(end + inward * length);
+    }
+  return rolls;
+}
+
+double roll_of(const Eigen::Vector2d& p, double base_radius)
+{
+  return std::sqrt(std::max(0., p.squaredNorm() - base_radius * base_radius));
+}
+
+bool is_involute(ProfileSegment segment)
+{
+  return segment == ProfileSegment::root_relief || segment == ProfileSegment::flank ||
+         segment == ProfileSegment::relief;
+}
+
+// The involute point between two points a, b of one flank at roll length `roll`: the polar
+// angle of an involute point is affine in inv(α_r), the normal's angle affine in ρ, so both
+// interpolate exactly.
+ProfilePoint involute_between(const ProfilePoint& a, const ProfilePoint& b, double roll,
+                              double base_radius)
+{
+  const auto inv = [base_radius](double r)
+  {
+    const double alpha = std::acos(std::min(1., base_radius / r));
+    return std::tan(alpha) - alpha;
+  };
+  const double ra = a.position.norm(), rb = b.position.norm();
+  const double r = std::sqrt(base_radius * base_radius + roll * roll);
+  const double w = (inv(r) - inv(ra)) / (inv(rb) - inv(ra));
+  const double phi_a = std::atan2(a.position.y(), a.position.x());
+  const double phi_b = std::atan2(b.position.y(), b.position.x());
+  const double phi = phi_a + w * (phi_b - phi_a);
+  const double rho_a = roll_of(a.position, base_radius), rho_b = roll_of(b.position, base_radius);
+  const double v = (roll - rho_a) / (rho_b - rho_a);
+  const double na = std::atan2(a.normal.y(), a.normal.x());
+  const double nb = std::atan2(b.normal.y(), b.normal.x());
+  double turn = nb - na;
+  turn -= 2. * M_PI * std::round(turn / (2. * M_PI));
+  const double n = na + v * turn;
+  ProfilePoint p = a;
+  p.position = r * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+  p.normal = Eigen::Vector2d(std::cos(n), std::sin(n));
+  p.arc_length = a.arc_length + v * (b.arc_length - a.arc_length);
+  return p;
+}
+
+// The side of a point for the modification: its own, or for a tip corner the half it lies in.
+int point_side(const ProfilePoint& p)
+{
+  if (p.side != 0)
+    return p.side;
+  return p.position.y() < 0. ? -1 : 1;
+}
+} // namespace
+
+bool GearModifications::empty() const
+{
+  if (!all_teeth.empty())
+    return false;
+  for (const auto& [index, list] : by_tooth)
+    if (!list.empty())
+      return false;
+  return true;
+}
+
+double removed_depth(const std::vector<ToothModification>& modifications,
+                     const FlankRollRange& range, double roll, bool loaded)
+{
+  double depth = 0.;
+  for (const auto& m : modifications)
+    if (loaded || m.flanks == ModifiedFlanks::both)
+      depth += depth_of(m, range, roll);
+  return depth;
+}
+
+void check_modifications(const std::vector<ToothModification>& modifications,
+                         const ToothProfile& nominal, const FlankRollRange& range,
+                         const std::string& parameter)
+{
+  const double active = std::abs(range.active_tip - range.active_root);
+  double tip_removal = 0.;
+  for (const auto& m : modifications)
+  {
+    const std::string name = parameter + "/" + kind_name(m.kind);
+    if (m.kind != ModificationKind::profile_slope && !(m.amount >= 0.))
+      throw InputError(name, "must be 0 or positive (material removed, µm)");
+    if (!std::isfinite(m.amount))
+      throw InputError(name, "must be a finite amount (µm)");
+    if (is_relief(m.kind))
+    {
+      const double length = relief_length(m, range);
+      if (m.amount > 0. && !(length > 0.))
+        throw InputError(name + " length", "must be positive (mm) or auto");
+      if (length > active * (1. + 1e-9))
+        throw InputError(name + " length", mm(length) + " is longer than the active profile (" +
+                                               mm(active) + " along the path of contact)");
+    }
+    tip_removal += (m.flanks == ModifiedFlanks::both ? 2. : 1.) *
+                   std::max(depth_of(m, range, range.tip), depth_of(m, range, range.form));
+    if (2. * std::abs(m.amount) >= nominal.tip_thickness)
+      throw InputError(name, um(m.amount) + " reaches the tooth thickness (tip " +
+                                 um(nominal.tip_thickness) + ")");
+  }
+  if (tip_removal >= nominal.tip_thickness)
+    throw InputError(parameter + "/" + kind_name(modifications.front().kind),
+                     "the modifications together remove " + um(tip_removal) +
+                         " across the tooth, beyond its tip thickness " +
+                         um(nominal.tip_thickness));
+}
+
+ToothProfile modified_tooth(const ToothProfile& nominal,
+                            const std::vector<ToothModification>& modifications,
+                            const FlankRollRange& range, int loaded_side,
+                            const std::string& parameter)
+{
+  if (modifications.empty())
+    return nominal;
+  check_modifications(modifications, nominal, range, parameter);
+  const double rb = nominal.base_radius;
+  const std::vector<double> kinks = breakpoints(modifications, range);
+
+  // 1. The nominal points with a point of its own at every kink of the flanks.
+  std::vector<ProfilePoint> points;
+  points.reserve(nominal.points.size() + 2 * kinks.size());
+  for (std::size_t i = 0; i < nominal.points.size(); ++i)
+  {
+    points.push_back(nominal.points[i]);
+    if (i + 1 == nominal.points.size())
+      break;
+    const ProfilePoint& a = nominal.points[i];
+    const ProfilePoint& b = nominal.points[i + 1];
+    if (!(is_involute(a.segment) && is_involute(b.segment) && a.side == b.side && a.side != 0))
+      continue;
+    const double rho_a = roll_of(a.position, rb), rho_b = roll_of(b.position, rb);
+    std::vector<double> inside;
+    for (const double k : kinks)
+      if ((k - rho_a) * (k - rho_b) < 0. && std::abs(k - rho_a) > 1e-9 &&
+          std::abs(k - rho_b) > 1e-9)
+        inside.push_back(k);
+    std::sort(inside.begin(), inside.end(),
+              [&](double x, double y) { return std::abs(x - rho_a) < std::abs(y - rho_a); });
+    for (const double k : inside)
+      points.push_back(involute_between(a, b, k, rb));
+  }
+
+  // 2. Every flank point (and the tip corners) moves inwards by δ(ρ), its normal turns by dδ/ds;
+  //    points inside a relief zone are marked, so the relief starts a new outline piece.
+  ToothProfile tooth = nominal;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    ProfilePoint& p = points[i];
+    const bool corner = p.segment == ProfileSegment::tip &&
+                        ((i > 0 && is_involute(points[i - 1].segment)) ||
+                         (i + 1 < points.size() && is_involute(points[i + 1].segment)));
+    if (!is_involute(p.segment) && !corner)
+      continue;
+    const bool loaded = point_side(p) == loaded_side;
+    const double rho = roll_of(p.position, rb);
+    const double depth = removed_depth(modifications, range, rho, loaded);
+    if (depth == 0.)
+      continue;
+    // dδ/ds on the involute: ds = (ρ/r_b)·dρ; the tangent of increasing ρ points outwards.
+    const double h = 1e-7;
+    const double slope = (removed_depth(modifications, range, rho + h, loaded) -
+                          removed_depth(modifications, range, std::max(0., rho - h), loaded)) /
+                         (rho + h - std::max(0., rho - h));
+    if (corner)
+    {
+      // The tip corner moves with its flank (along the flank's normal, not the tip circle's);
+      // it stays a tip point with the tip circle's normal.
+      const std::size_t flank = (i > 0 && is_involute(points[i - 1].segment)) ? i - 1 : i + 1;
+      p.position -= depth * points[flank].normal;
+      continue;
+    }
+    const Eigen::Vector2d nominal_normal = p.normal;
+    Eigen::Vector2d tangent(-p.normal.y(), p.normal.x());
+    if (tangent.dot(p.position) < 0.)
+      tangent = -tangent;
+    p.position -= depth * nominal_normal;
+    if (rho > 0.)
+      p.normal = (nominal_normal + slope * rb / rho * tangent).normalized();
+    for (const auto& m : modifications)
+    {
+      if (!is_relief(m.kind) || !(m.amount > 0.) || !(loaded || m.flanks == ModifiedFlanks::both))
+        continue;
+      const double distance = relief_distance(m, range, rho);
+      const double length = relief_length(m, range);
+      if (m.kind == ModificationKind::tip_relief && distance <= length * (1. + 1e-12) + 1e-12)
+        p.segment = ProfileSegment::relief;
+      else if (m.kind == ModificationKind::root_relief && distance < length - 1e-12 &&
+               p.segment == ProfileSegment::flank)
+        p.segment = ProfileSegment::root_relief;
+    }
+  }
+  tooth.points = points;
+  return tooth;
+}
+
+ToothProfiles::ToothProfiles(ToothProfile nominal, GearModifications modifications,
+                             FlankRollRange range, int loaded_side, std::string parameter)
+    : nominal_tooth(std::move(nominal)), modifications(std::move(modifications)), range(range),
+      loaded_side(loaded_side), parameter(std::move(parameter))
+{
+  // Every list is checked once here, before anything is meshed.
+  if (!this->modifications.all_teeth.empty())
+    check_modifications(this->modifications.all_teeth, nominal_tooth, range, this->parameter);
+  for (const auto& [index, list] : this->modifications.by_tooth)
+    if (!list.empty())
+      check_modifications(modifications_of(index), nominal_tooth, range, this->parameter);
+}
+
+const std::vector<ToothModification>& ToothProfiles::modifications_of(int index) const
+{
+  const auto own = modifications.by_tooth.find(index);
+  if (own == modifications.by_tooth.end() || own->second.empty())
+    return modifications.all_teeth;
+  // The gear's list first, then the tooth's own (kept so the reference stays valid).
+  auto& list = joined[index];
+  list = modifications.all_teeth;
+  list.insert(list.end(), own->second.begin(), own->second.end());
+  return list;
+}
+
+const ToothProfile& ToothProfiles::tooth(int index) const
+{
+  const auto& list = modifications_of(index);
+  if (list.empty())
+    return nominal_tooth; // a healthy tooth is the nominal outline itself
+  const auto found = built.find(index);
+  if (found != built.end())
+    return found->second;
+  return built.emplace(index, modified_tooth(nominal_tooth, list, range, loaded_side, parameter))
+      .first->second;
+}
+
+double ToothProfiles::loaded_flank_removal(int index, double roll) const
+{
+  return removed_depth(modifications_of(index), range, roll, true);
+}
+
+ReliefShape parse_relief_shape(const std::string& text, const std::string& parameter)
+{
+  if (text == "linear")
+    return ReliefShape::linear;
+  if (text == "parabolic")
+    return ReliefShape::parabolic;
+  if (text == "arc")
+    return ReliefShape::arc;
+  throw InputError(parameter, "'" + text + "' is not one of linear, parabolic, arc");
+}
+
+ModifiedFlanks parse_modified_flanks(const std::string& text, const std::string& parameter)
+{
+  if (text == "loaded")
+    return ModifiedFlanks::loaded;
+  if (text == "both")
+    return ModifiedFlanks::both;
+  throw InputError(parameter, "'" + text + "' is not one of loaded, both");
+}
+} // namespace gearstiff::geometry

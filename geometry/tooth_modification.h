@@ -1,0 +1,131 @@
+// The modification stage of a tooth outline: a modelled tooth is its gear's nominal outline
+// (geometry/involute_tooth.h) with an ordered list of modifications applied to it. The scene asks
+// a ToothProfiles provider for each modelled tooth by its index; a tooth without modifications is
+// the nominal outline itself (the same points, bit for bit).
+//
+// Profile modifications (ISO 21771 terms, docs/references.md §8): material removed normal to the
+// involute flank, as a function of the roll length ρ = √(r² − r_b²) of the flank point (the
+// position along the path of contact on that gear). A point of a flank moves by δ(ρ) along its
+// inward normal; the normal turns by −dδ/ds. Amounts are micrometres over millimetres, so the
+// outline keeps its sampling and only the start of a relief (a kink for the linear shape) gets a
+// point of its own and starts a new outline piece (ProfileSegment::relief, root_relief).
+//
+// Kinds (more are added as further enumerators with their own apply step, e.g. the tooth faults
+// of issue 31: a root crack, a spall, a chipped or broken tooth):
+//  - tip relief C_a over the length L_a measured from the tip (roll length), shape linear,
+//    parabolic or arc: δ = C_a·f(u), u = 1 − d/L_a, d the roll distance from the tip;
+//  - root relief C_f over L_f measured from the root form circle, the same shapes;
+//  - profile crowning C_α: δ = C_α·(2(ρ − ρ_m)/L_α)² over the active profile [ρ_A, ρ_E] of the
+//    gear (middle ρ_m, length L_α), continued as that parabola beyond it;
+//  - profile slope f_Hα: δ = f_Hα·(ρ − ρ_root)/L_α for f_Hα > 0 (removed at the tip), and
+//    |f_Hα|·(ρ_tip − ρ)/L_α for f_Hα < 0 (removed at the root): material is only ever removed.
+#pragma once
+
+#include "geometry/tooth_profile.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gearstiff::geometry
+{
+enum class ModificationKind
+{
+  tip_relief,
+  root_relief,
+  profile_crowning,
+  profile_slope
+};
+
+enum class ReliefShape
+{
+  linear,    // δ = C·u (a kink at the start)
+  parabolic, // δ = C·u² (tangent to the flank at the start)
+  arc        // a circular arc tangent to the flank at the start through C at the end
+};
+
+enum class ModifiedFlanks
+{
+  loaded, // the flank that carries the load (tooth_profile.h side of scene_gear_pair.h)
+  both
+};
+
+struct ToothModification
+{
+  ModificationKind kind = ModificationKind::tip_relief;
+  double amount = 0.; // m, removed normal to the flank at the tip/root end (slope: signed)
+  double length = 0.; // m, roll length of a relief from the tip / root form (reliefs only)
+  ReliefShape shape = ReliefShape::linear;
+  ModifiedFlanks flanks = ModifiedFlanks::both;
+};
+
+// Where a gear's flank meets its mate, as roll lengths ρ on this gear's involute (m).
+struct FlankRollRange
+{
+  double tip = 0.;         // ρ at the tip circle
+  double form = 0.;        // ρ at the form circle (start of the involute)
+  double active_tip = 0.;  // ρ of the active profile's end nearer the tip
+  double active_root = 0.; // ρ of the active profile's end nearer the root
+  double single_tip = 0.;  // ρ where single-tooth contact starts/ends on the tip side
+  double single_root = 0.; // ρ of the single-contact end on the root side
+};
+
+// The modifications of one gear: every tooth gets `all_teeth`, then the list of its index in
+// `by_tooth` (tooth indices in the gear's own frame, tooth 0 the reference tooth of the scene).
+struct GearModifications
+{
+  std::vector<ToothModification> all_teeth;
+  std::map<int, std::vector<ToothModification>> by_tooth;
+  bool empty() const;
+};
+
+// Depth removed (m) by the modifications at roll length `roll` on a flank (`loaded` says which
+// flank: modifications with ModifiedFlanks::loaded skip the other one).
+double removed_depth(const std::vector<ToothModification>& modifications,
+                     const FlankRollRange& range, double roll, bool loaded);
+
+// The nominal outline with the modifications applied to its flanks (side `loaded_side` is the
+// loaded flank). `parameter` prefixes the InputError of a modification that does not fit the
+// tooth: a relief longer than the active profile, a negative amount, removal that reaches the
+// tooth thickness.
+ToothProfile modified_tooth(const ToothProfile& nominal,
+                            const std::vector<ToothModification>& modifications,
+                            const FlankRollRange& range, int loaded_side,
+                            const std::string& parameter);
+
+// The checks of modified_tooth without building (InputError naming parameter + "/tip relief"
+// etc.).
+void check_modifications(const std::vector<ToothModification>& modifications,
+                         const ToothProfile& nominal, const FlankRollRange& range,
+                         const std::string& parameter);
+
+// The profile provider of one gear: the nominal outline and the modifications, each tooth built
+// once when first asked for.
+class ToothProfiles
+{
+public:
+  ToothProfiles() = default;
+  ToothProfiles(ToothProfile nominal, GearModifications modifications, FlankRollRange range,
+                int loaded_side, std::string parameter);
+  const ToothProfile& nominal() const { return nominal_tooth; }
+  // Tooth `index` (CCW from tooth 0 in the gear's frame), in the frame of tooth 0 (the caller
+  // rotates it by index·angular_pitch).
+  const ToothProfile& tooth(int index) const;
+  // δ (m) removed from the loaded flank of tooth `index` at roll length `roll`.
+  double loaded_flank_removal(int index, double roll) const;
+  const std::vector<ToothModification>& modifications_of(int index) const;
+
+private:
+  ToothProfile nominal_tooth;
+  GearModifications modifications;
+  FlankRollRange range;
+  int loaded_side = 1;
+  std::string parameter;
+  mutable std::map<int, ToothProfile> built;
+  mutable std::map<int, std::vector<ToothModification>> joined; // all_teeth + by_tooth
+};
+
+// Parameter-file words: "linear|parabolic|arc", "loaded|both" (InputError naming `parameter`).
+ReliefShape parse_relief_shape(const std::string& text, const std::string& parameter);
+ModifiedFlanks parse_modified_flanks(const std::string& text, const std::string& parameter);
+} // namespace gearstiff::geometry

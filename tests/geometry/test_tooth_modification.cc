@@ -1,0 +1,255 @@
+// The modification stage of the tooth outlines (geometry/tooth_modification.h) on the split-path
+// pair (docs/references.md §1): the relief shapes, healthy teeth bit-identical to the nominal
+// outline, the modified flank δ inside the nominal one, and the unloaded transmission error of
+// the scene against its geometric value (issue 27), measured both from the designed removal and
+// on the mesh deal.II reads back.
+#include "errors/errors.h"
+#include "geometry/involute_tooth.h"
+#include "geometry/scene_gear_pair.h"
+#include "geometry/tooth_modification.h"
+#include "kinematics/gear_pair.h"
+#include "tests/geometry/scene_test_support.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::geometry;
+using namespace gearstiff::test_support;
+
+ToothModification relief(ModificationKind kind, double amount, double length = -1.,
+                         ReliefShape shape = ReliefShape::linear)
+{
+  ToothModification m;
+  m.kind = kind;
+  m.amount = amount;
+  m.length = length;
+  m.shape = shape;
+  return m;
+}
+
+struct Gear
+{
+  kinematics::GearPairGeometry pair;
+  ToothProfile tooth;
+  FlankRollRange range;
+};
+
+Gear pinion(const GearPairSceneSpec& spec = GearPairSceneSpec())
+{
+  Gear g;
+  g.pair = kinematics::compute_gear_pair(spec.pair);
+  InvoluteToothSpec tooth = involute_tooth_spec(spec.pair.pinion, g.pair.pinion.tip_diameter);
+  g.tooth = generate_involute_tooth(tooth, spec.resolution);
+  g.range = flank_roll_range(g.pair, g.tooth, false);
+  return g;
+}
+
+std::string file_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Shapes at the relief start (u = 0), its middle and the tip end (u = 1), by their definitions
+// in tooth_modification.h (ISO 21771 linear and parabolic relief; the arc tangent at the start).
+TEST(ToothModification, ReliefShapes)
+{
+  FlankRollRange range;
+  range.tip = 10e-3;
+  range.form = 2e-3;
+  range.active_tip = 10e-3;
+  range.active_root = 3e-3;
+  const double c = 10e-6, length = 2e-3;
+  for (const auto& [shape, middle] :
+       {std::pair{ReliefShape::linear, 0.5 * c}, std::pair{ReliefShape::parabolic, 0.25 * c}})
+  {
+    const std::vector<ToothModification> list{
+        relief(ModificationKind::tip_relief, c, length, shape)};
+    EXPECT_EQ(removed_depth(list, range, range.tip, true), c);
+    EXPECT_NEAR(removed_depth(list, range, range.tip - 0.5 * length, true), middle, 1e-18);
+    EXPECT_EQ(removed_depth(list, range, range.tip - length, true), 0.);
+    EXPECT_EQ(removed_depth(list, range, range.tip - 1.5 * length, true), 0.);
+  }
+  // Arc through C at the tip, tangent at the start: x²/(2R) with R = (L² + C²)/(2C), which at
+  // mid-length differs from the parabola's C/4 by C³/(4L²)-order terms (2.5e-11 m here).
+  const std::vector<ToothModification> arc{
+      relief(ModificationKind::tip_relief, c, length, ReliefShape::arc)};
+  EXPECT_NEAR(removed_depth(arc, range, range.tip, true), c, 1e-15);
+  EXPECT_NEAR(removed_depth(arc, range, range.tip - 0.5 * length, true), 0.25 * c, 1e-10);
+  // Root relief from the form circle; crowning C_α at both ends of the active profile, 0 in
+  // its middle; slope f_Hα from 0 at the active root to f_Hα at the active tip.
+  const std::vector<ToothModification> root{relief(ModificationKind::root_relief, c, length)};
+  EXPECT_EQ(removed_depth(root, range, range.form, true), c);
+  EXPECT_NEAR(removed_depth(root, range, range.form + 0.5 * length, true), 0.5 * c, 1e-18);
+  const std::vector<ToothModification> crowning{relief(ModificationKind::profile_crowning, c, 0.)};
+  EXPECT_NEAR(removed_depth(crowning, range, range.active_tip, true), c, 1e-18);
+  EXPECT_NEAR(removed_depth(crowning, range, range.active_root, true), c, 1e-18);
+  EXPECT_NEAR(removed_depth(crowning, range, 6.5e-3, true), 0., 1e-20);
+  const std::vector<ToothModification> slope{relief(ModificationKind::profile_slope, c, 0.)};
+  EXPECT_NEAR(removed_depth(slope, range, range.active_tip, true), c, 1e-18);
+  EXPECT_EQ(removed_depth(slope, range, range.active_root, true), 0.);
+  // Loaded flank only: the other flank keeps its material.
+  std::vector<ToothModification> loaded = arc;
+  loaded.front().flanks = ModifiedFlanks::loaded;
+  EXPECT_EQ(removed_depth(loaded, range, range.tip, false), 0.);
+}
+
+// A tooth without modifications is the nominal outline object itself; a modified tooth moves
+// only its flank points, each by δ(ρ) along its nominal normal, so its distance from the nominal
+// flank polyline is δ up to the chord sag s²/(8ρ) of that polyline, which only the inserted
+// relief start (on the exact involute between two points) shows: ≈ 4e-8 m for the ≈ 50 µm point
+// spacing on ρ ≈ 10 mm.
+TEST(ToothModification, HealthyTeethNominalAndFlankInset)
+{
+  const Gear g = pinion();
+  GearModifications modifications;
+  const double c = 12e-6;
+  modifications.by_tooth[2] = {relief(ModificationKind::tip_relief, c)};
+  const ToothProfiles teeth(g.tooth, modifications, g.range, +1, "Gear pair/Pinion");
+  EXPECT_EQ(&teeth.tooth(0), &teeth.nominal());
+  EXPECT_EQ(&teeth.tooth(-1), &teeth.nominal());
+  const ToothProfile& modified = teeth.tooth(2);
+  ASSERT_NE(&modified, &teeth.nominal());
+  // One point more per flank: the start of the relief.
+  EXPECT_EQ(modified.points.size(), g.tooth.points.size() + 2);
+  const double rb = g.tooth.base_radius;
+  unsigned int relief_points = 0;
+  double largest_error = 0.;
+  for (const ProfilePoint& p : modified.points)
+  {
+    if (p.segment != ProfileSegment::relief && p.segment != ProfileSegment::flank)
+      continue;
+    relief_points += p.segment == ProfileSegment::relief;
+    const double roll = std::sqrt(p.position.squaredNorm() - rb * rb);
+    const double expected = teeth.loaded_flank_removal(2, roll);
+    double nearest = 1e300;
+    for (std::size_t i = 0; i + 1 < g.tooth.points.size(); ++i)
+    {
+      const ProfilePoint& a = g.tooth.points[i];
+      const ProfilePoint& b = g.tooth.points[i + 1];
+      if (a.side != p.side || b.side != p.side)
+        continue;
+      const Eigen::Vector2d ab = b.position - a.position;
+      const double t = std::clamp((p.position - a.position).dot(ab) / ab.squaredNorm(), 0., 1.);
+      nearest = std::min(nearest, (a.position + t * ab - p.position).norm());
+    }
+    largest_error = std::max(largest_error, std::abs(nearest - expected));
+  }
+  EXPECT_GT(relief_points, 10u);
+  EXPECT_LT(largest_error, 1e-7);
+}
+
+// The scene with modifications on a tooth it does not model writes the same mesh, byte for
+// byte, as the scene without any (the stage leaves healthy teeth untouched).
+TEST(ToothModification, UnmodelledToothLeavesMeshUnchanged)
+{
+  GearPairSceneSpec spec;
+  const std::string plain = work_file("modification_plain.msh");
+  write_gear_pair_scene(spec, plain);
+  spec.pinion_modifications.by_tooth[9] = {relief(ModificationKind::tip_relief, 10e-6)};
+  const std::string other = work_file("modification_tooth9.msh");
+  write_gear_pair_scene(spec, other);
+  EXPECT_EQ(file_text(plain), file_text(other));
+}
+
+// Zero-load limit (issue 27): the unloaded TE is the smallest designed separation of the pairs
+// along the line of action. Equal linear long reliefs C on both gears: in the first double
+// zone [A, B] the entering pair is relieved by the wheel tip, C·(1 − s), the leaving one by the
+// pinion tip at ℓ + p_bt, C·s (D = A + p_bt), s = (ℓ − A)/(B − A): the tent min(C·s, C·(1 − s))
+// rising to C/2 in the middle; 0 in the single zone. The same separation measured on the mesh
+// deal.II reads (crossings of the line of action with each pair's flank faces) agrees within
+// the spline and chord error of the outline (< 0.2 µm, test_scene_gear_pair.cc).
+TEST(ToothModification, UnloadedTransmissionErrorTent)
+{
+  GearPairSceneSpec spec;
+  const double c = 10e-6;
+  spec.pinion_modifications.all_teeth = {relief(ModificationKind::tip_relief, c)};
+  spec.wheel_modifications.all_teeth = {relief(ModificationKind::tip_relief, c)};
+  spec.position = PairPosition::roll_angle;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const double a = pair.contact_start, b = pair.single_contact_start();
+  const double rb1 = 0.5 * pair.pinion.base_diameter;
+  for (const double s : {0.2, 0.5, 0.7})
+  {
+    spec.pinion_roll_angle = (a + s * (b - a)) / rb1;
+    const std::string file = work_file("modification_tent.msh");
+    const GearPairScene scene = write_gear_pair_scene(spec, file);
+    EXPECT_NEAR(scene.unloaded_transmission_error, std::min(c * s, c * (1. - s)), 1e-12) << s;
+    ASSERT_EQ(scene.contact_pairs.size(), 2u);
+    dealii::Triangulation<2> triangulation;
+    read_mesh(triangulation, file);
+    const auto& line = scene.info.reference_line;
+    for (std::size_t k = 0; k < scene.contact_pairs.size(); ++k)
+    {
+      const int j = scene.contact_pairs[k];
+      const auto on_pinion = crossings(triangulation, {pinion_flank_id(j)}, line[0], line[1]);
+      const auto on_wheel = crossings(triangulation, {wheel_flank_id(j)}, line[0], line[1]);
+      double gap = 1e300;
+      for (const double p : on_pinion)
+        for (const double w : on_wheel)
+          if (std::abs(p - w) < std::abs(gap))
+            gap = w - p;
+      EXPECT_NEAR(std::abs(gap), scene.pair_separation[k], 0.2e-6) << "s = " << s << ", pair " << j;
+    }
+  }
+  spec.pinion_roll_angle = 0.5 * (b + pair.single_contact_end()) / rb1;
+  EXPECT_EQ(
+      write_gear_pair_scene(spec, work_file("modification_tent.msh")).unloaded_transmission_error,
+      0.);
+}
+
+// Relief on one gear only: the unmodified pair leads everywhere, the unloaded TE is 0.
+TEST(ToothModification, ReliefOnOneGearHasNoUnloadedError)
+{
+  GearPairSceneSpec spec;
+  spec.pinion_modifications.all_teeth = {relief(ModificationKind::tip_relief, 10e-6)};
+  spec.position = PairPosition::roll_angle;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const double rb1 = 0.5 * pair.pinion.base_diameter;
+  for (const double s : {0.1, 0.4, 0.6, 0.9})
+  {
+    spec.pinion_roll_angle = (pair.contact_start + s * pair.transverse_base_pitch) / rb1;
+    EXPECT_EQ(
+        write_gear_pair_scene(spec, work_file("modification_one.msh")).unloaded_transmission_error,
+        0.)
+        << s;
+  }
+}
+
+// Bad input names the parameter (exit 2 in the commands).
+TEST(ToothModification, BadInput)
+{
+  const Gear g = pinion();
+  const auto fails = [&](const ToothModification& m, const std::string& parameter)
+  {
+    try
+    {
+      check_modifications({m}, g.tooth, g.range, "Gear pair/Pinion");
+      ADD_FAILURE() << "accepted " << parameter;
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_EQ(e.parameter(), parameter);
+    }
+  };
+  const double active = g.range.active_tip - g.range.active_root;
+  fails(relief(ModificationKind::tip_relief, 5e-6, 1.01 * active),
+        "Gear pair/Pinion/tip relief length");
+  fails(relief(ModificationKind::root_relief, 5e-6, 1.5 * active),
+        "Gear pair/Pinion/root relief length");
+  fails(relief(ModificationKind::tip_relief, -1e-6), "Gear pair/Pinion/tip relief");
+  fails(relief(ModificationKind::profile_crowning, g.tooth.tip_thickness),
+        "Gear pair/Pinion/profile crowning");
+  // The scene checks before gmsh runs, naming the wheel's parameter for the wheel.
+  GearPairSceneSpec spec;
+  spec.wheel_modifications.all_teeth = {relief(ModificationKind::tip_relief, 3e-3)};
+  EXPECT_THROW(check_tooth_modifications(spec), InputError);
+}
+} // namespace
