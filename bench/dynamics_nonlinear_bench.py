@@ -28,7 +28,7 @@ def run(*settings):
 
 
 def value(values, key):
-    return values[key]["value"]
+    return values[key]["value"] if key in values else float("nan")
 
 
 # 200 000 steps with switching: the split path with its wheels in phase (placement 120°) at
