@@ -98,7 +98,8 @@ void write_time_series(const std::string& path, const TorsionalModel& model,
   for (const auto& mesh : result.meshes)
   {
     const std::string m = mesh.name.substr(mesh.name.find(' ') + 1);
-    out << ",force_" << m << " [N],kv_" << m << " [-],stiffness_" << m << " [N/um]";
+    out << ",force_" << m << " [N],kv_" << m << " [-],stiffness_" << m << " [N/um],dte_" << m
+        << " [um],te_" << m << " [um]";
   }
   out << '\n' << std::setprecision(10);
   const Trajectory& trajectory = result.trajectory;
@@ -111,9 +112,17 @@ void write_time_series(const std::string& path, const TorsionalModel& model,
     out << trajectory.time[i];
     for (unsigned int d = 0; d < model.n_dofs(); ++d)
       out << ',' << trajectory.angle_at(i)[d] * 1e6;
-    for (const auto& mesh : result.meshes)
+    for (unsigned int m = 0; m < result.meshes.size(); ++m)
+    {
+      const MeshResult& mesh = result.meshes[m];
+      // DTE = δ along the line of action; e the unloaded TE (nonlinear meshes, else 0)
+      const double te = model
+                            .mesh_response(m, trajectory.time[i], trajectory.angle_at(i),
+                                           trajectory.velocity_at(i))
+                            .transmission_error;
       out << ',' << mesh.force[i] << ',' << mesh.force[i] / std::abs(mesh.nominal_force) << ','
-          << mesh.stiffness[i] * 1e-6;
+          << mesh.stiffness[i] * 1e-6 << ',' << mesh.deflection[i] * 1e6 << ',' << te * 1e6;
+    }
     out << '\n';
   }
 }
@@ -203,6 +212,94 @@ void report_train_model(const DynamicsParameters& p, const TorsionalModel& model
     table.add_row(row);
   }
 }
+
+// ---- issue 29: the nonlinear mesh model's results ----
+// Per mesh: DF, separation, impacts, the dynamic TE; the law used.
+void report_nonlinear_meshes(const DynamicsParameters& p, const SimulationResult& result,
+                             Report& report)
+{
+  report.add_text(
+      "mesh model",
+      mesh_model_name(p.mesh_model) +
+          (p.mesh_model == MeshModel::nonlinear
+               ? ": F = k·h(δ − e) + c·(δ̇ − ė)·[in contact]; drive flank for δ − e > 0, "
+                 "separated in the free play, back flank (drive table mirrored) below "
+                 "−2b; switches located by RK4 (dynamics/README.md)"
+               : ": F = k·δ + c·δ̇"));
+  for (unsigned int m = 0; m < result.meshes.size(); ++m)
+  {
+    const MeshResult& mesh = result.meshes[m];
+    const std::string key = "mesh" + std::to_string(m + 1) + "_";
+    report.add_value(key + "mean_dte", mesh.mean_deflection * 1e6, "µm",
+                     mesh.name + " mean dynamic transmission error in the window");
+    report.add_value(key + "dte_rms", mesh.deflection_rms * 1e6, "µm",
+                     mesh.name + " DTE rms about its mean");
+    if (!mesh.nonlinear)
+      continue;
+    const NonlinearMesh& law = *p.train.meshes[m].nonlinear;
+    report.add_text(mesh.name + " nonlinear law",
+                    "backlash 2b = " + format_number(law.backlash * 1e6, 5) + " µm, unloaded TE " +
+                        law.transmission_error.description());
+    report.add_value(key + "dynamic_factor", mesh.kv_max, "-",
+                     mesh.name + " DF = max dynamic / static mesh force");
+    report.add_value(key + "separation_fraction", mesh.separation_fraction, "-",
+                     mesh.name + " share of the window without drive-flank contact");
+    report.add_value(key + "separations", mesh.separations, "-",
+                     mesh.name + " drive-flank separations in the window");
+    report.add_value(key + "back_impacts", mesh.back_impacts, "-",
+                     mesh.name + " back-flank impacts in the window");
+  }
+}
+
+// The sweep's nonlinear columns and the DTE waterfall (mesh 1's spectrum per speed).
+void report_nonlinear_sweep(const DynamicsParameters& p, const SweepResult& sweep, Report& report)
+{
+  auto& table = report.add_table("dynamics_nonlinear_sweep",
+                                 {"input_speed", "mesh_frequency", "direction", "dynamic_factor",
+                                  "kv_min", "separation_fraction", "separations", "back_impacts",
+                                  "mean_dte", "dte_rms", "status"},
+                                 {"rpm", "Hz", "-", "-", "-", "-", "-", "-", "µm", "µm", "-"});
+  auto& waterfall =
+      report.add_table("dynamics_dte_waterfall", {"input_speed", "direction", "order", "amplitude"},
+                       {"rpm", "-", "-", "µm"});
+  unsigned int impacts = 0, separated = 0;
+  for (const SweepPoint& point : sweep.points)
+  {
+    table.add_row({point.input_speed / rpm, point.mesh_frequency, point.descending ? 1. : 0.,
+                   point.kv_max, point.kv_min, point.separation_fraction, double(point.separations),
+                   double(point.back_impacts), point.mean_deflection * 1e6,
+                   point.deflection_rms * 1e6, double(static_cast<int>(point.status))});
+    for (std::size_t k = 1; k < point.dte_orders.size(); ++k)
+      waterfall.add_row({point.input_speed / rpm, point.descending ? 1. : 0., point.dte_orders[k],
+                         point.dte_amplitude[k] * 1e6});
+    separated += point.separation_fraction > 0.;
+    impacts += point.back_impacts > 0;
+  }
+  report.add_text("sweep direction",
+                  sweep_direction_name(p.sweep_direction) +
+                      (p.mesh_model == MeshModel::nonlinear
+                           ? ", each speed from the previous speed's final state (continuation)"
+                           : ""));
+  report.add_value("sweep_separating_speeds", separated, "-",
+                   "sweep speeds where a mesh separates (direction counted separately)");
+  report.add_value("sweep_back_impact_speeds", impacts, "-",
+                   "sweep speeds with back-flank impacts");
+}
+void plot_nonlinear(CommandContext& context, Report& report, const std::string& series,
+                    const std::string& window, bool with_sweep)
+{
+  context.plot("plot_nonlinear_dynamics.py", {"dte", series, window}, "dynamics_dte.png",
+               "dynamic and unloaded transmission error DTE(t), e(t)");
+  if (!with_sweep)
+    return;
+  const TemporaryCsv sweep_csv(report, "dynamics_nonlinear_sweep");
+  context.plot("plot_nonlinear_dynamics.py", {"sweep", sweep_csv.path()},
+               "dynamics_dynamic_factor.png", "DF against speed, up and down sweeps");
+  const TemporaryCsv waterfall_csv(report, "dynamics_dte_waterfall");
+  context.plot("plot_nonlinear_dynamics.py", {"waterfall", waterfall_csv.path()},
+               "dynamics_dte_waterfall.png", "DTE spectrum against speed (mesh orders)");
+}
+// ---- end of issue 29 results ----
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
@@ -314,7 +411,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     }
     meshes.add_row({double(m + 1), mesh.nominal_force, mesh.mean_force, mesh.kv_max,
                     mesh.kv_max_time, mesh.kv_min, iso.kv, iso.resonance_ratio});
-    if (mesh.kv_min < 0.)
+    if (mesh.kv_min < 0. && !mesh.nonlinear)
       report.add_text(mesh.name + " warning",
                       "the mesh force turns negative (K_v min < 0): real teeth would separate, "
                       "which this linear model does not represent");
@@ -327,6 +424,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     }
   }
   report.add_value("kv_max", result.kv_max, "-", "K_v max over all meshes (simulated)");
+  report_nonlinear_meshes(p, result, report);
   report.add_text("ISO assumptions",
                   "c_gamma_alpha = mean model stiffness / b unless given, c' = c_gamma_alpha/"
                   "(0.75 eps + 0.25) unless given; f_pb,eff = " +
@@ -373,7 +471,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                                  (p.sweep.maximum_speed - p.sweep.minimum_speed) *
                                                      i / (p.sweep.points - 1));
     context.pcout << "dynamics: speed sweep over " << p.sweep.points << " speeds" << std::endl;
-    sweep = speed_sweep(p.train, p.simulation, speeds, p.sweep.steps_per_mesh_period);
+    SimulationSettings sweep_settings = p.simulation;
+    const bool nonlinear = p.mesh_model == MeshModel::nonlinear;
+    if (nonlinear)
+      sweep_settings.dte_spectrum_orders = 4.; // the waterfall: mesh orders up to 4
+    sweep = speed_sweep(p.train, sweep_settings, speeds, p.sweep.steps_per_mesh_period,
+                        p.sweep_direction, nonlinear);
     auto& table = report.add_table("dynamics_speed_sweep",
                                    {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
                                     "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
@@ -411,6 +514,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                         ", 3 = " + sweep_status_name(SweepStatus::not_steady) +
                                         "; K_v only for status 0");
     report.add_value("sweep_steps", steps, "-", "integration steps of the sweep");
+    if (nonlinear || p.sweep_direction != SweepDirection::up)
+      report_nonlinear_sweep(p, sweep, report);
     report.add_value("sweep_time", sweep.wall_time, "s", "wall time of the sweep");
   }
 
@@ -456,6 +561,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       context.plot("plot_dynamics.py", {"resonance", csv.path()}, "dynamics_resonance.png",
                    "K_v against input speed (resonance chart)");
     }
+    if (p.mesh_model == MeshModel::nonlinear)
+      plot_nonlinear(context, report, series, window, !sweep.points.empty());
   }
 }
 

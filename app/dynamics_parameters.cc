@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace gearstiff::app
@@ -75,6 +76,130 @@ void parse_table(const std::string& text, const std::string& parameter,
     }
   }
 }
+// ---- issue 29: the nonlinear mesh entries of "Mesh n" and "Train mesh n" ----
+void declare_nonlinear_mesh_entries(ParameterHandler& prm, bool train_mesh)
+{
+  const std::string gear = train_mesh ? "the mesh's first gear" : "the driver";
+  prm.declare_entry("backlash", "100", Double(),
+                    "mesh model nonlinear: free play 2b between drive and back flanks along the "
+                    "line of action, the normal backlash j_bn (µm); j_bn = j_t·cos alpha_wt from "
+                    "the circular backlash j_t, or -(A_sn1 + A_sn2)·cos alpha_n from the "
+                    "tooth-thickness allowances (spur gears, nominal centre distance)");
+  prm.declare_entry("transmission error file", "", Anything(),
+                    "mesh model nonlinear: summary.json of a `gearstiff stiffness` sweep of the "
+                    "same pair (checked): its loaded TE s(x) and stiffness k(x) give the "
+                    "unloaded TE e = s - W/k (zero for k = W/s); empty: none");
+  prm.declare_entry("profile deviation", "0", Double(0.),
+                    "mesh model nonlinear: profile form deviation f_f, a sinusoid of this "
+                    "peak-to-peak at the mesh frequency in the unloaded TE (µm)");
+  prm.declare_entry("pitch deviation", "0", Double(0.),
+                    "mesh model nonlinear: cumulative pitch deviation F_p of " + gear +
+                        ", a once-per-revolution sinusoid of this peak-to-peak (µm)");
+  prm.declare_entry("transmission error harmonics", "", Anything(),
+                    "mesh model nonlinear: further TE sinusoids 'order: amplitude[: phase], "
+                    "...' (mesh orders, µm, degrees)");
+}
+
+// The raw entries of declare_nonlinear_mesh_entries (the caller knows the pair to check a file
+// against and the teeth for the pitch deviation's order).
+struct NonlinearMeshEntries
+{
+  double backlash = 0.; // [m]
+  std::string file;
+  double profile_deviation = 0.; // [m] peak-to-peak
+  double pitch_deviation = 0.;   // [m] peak-to-peak
+  std::vector<dynamics::ExcitationHarmonic> harmonics;
+};
+
+NonlinearMeshEntries parse_nonlinear_mesh_entries(ParameterHandler& prm, const std::string& section)
+{
+  NonlinearMeshEntries entries;
+  entries.backlash = prm.get_double("backlash") * micrometre;
+  entries.file = prm.get("transmission error file");
+  entries.profile_deviation = prm.get_double("profile deviation") * micrometre;
+  entries.pitch_deviation = prm.get_double("pitch deviation") * micrometre;
+  const std::string parameter = section + "/transmission error harmonics";
+  for (const std::string& entry : comma_entries(prm.get("transmission error harmonics")))
+  {
+    std::istringstream in(entry);
+    std::vector<double> numbers;
+    std::string field;
+    while (std::getline(in, field, ':'))
+    {
+      std::size_t used = 0;
+      try
+      {
+        numbers.push_back(std::stod(field, &used));
+      }
+      catch (const std::exception&)
+      {
+        used = 0;
+      }
+      if (used == 0 || field.find_first_not_of(" \t", used) != std::string::npos)
+        numbers.assign(4, 0.);
+    }
+    if (numbers.size() < 2 || numbers.size() > 3)
+      throw InputError(parameter,
+                       "entry '" + entry + "' is not 'order: amplitude[: phase]' (-, µm, degrees)");
+    entries.harmonics.push_back(
+        {numbers[0], numbers[1] * micrometre, numbers.size() == 3 ? numbers[2] * degree : 0.});
+  }
+  return entries;
+}
+
+// The law of one mesh: backlash, the TE from the file (its pair checked by `check_pair`, which
+// throws naming the file parameter) and from the deviations; `teeth` of the gear whose
+// revolution the pitch deviation follows.
+dynamics::NonlinearMesh
+build_nonlinear_mesh(const NonlinearMeshEntries& entries, const std::string& section,
+                     unsigned int teeth,
+                     const std::function<void(const dynamics::StiffnessFile&)>& check_pair)
+{
+  dynamics::NonlinearMesh mesh;
+  mesh.section = section;
+  mesh.backlash = entries.backlash;
+  if (!entries.file.empty())
+  {
+    const std::string parameter = section + "/transmission error file";
+    const dynamics::StiffnessFile file = dynamics::read_stiffness_file(entries.file, parameter);
+    if (!file.transmission_error)
+      throw InputError(parameter, "'" + entries.file +
+                                      "' has no loaded transmission error (the stiffness_sweep "
+                                      "table of `gearstiff stiffness` in mode sweep)");
+    check_pair(file);
+    mesh.transmission_error = file.transmission_error->unloaded;
+  }
+  const std::string harmonics = section + "/transmission error harmonics";
+  mesh.transmission_error.add_harmonic({1., 0.5 * entries.profile_deviation, 0.},
+                                       section + "/profile deviation");
+  mesh.transmission_error.add_harmonic(
+      {1. / std::max(1u, teeth), 0.5 * entries.pitch_deviation, 0.}, section + "/pitch deviation");
+  for (const dynamics::ExcitationHarmonic& h : entries.harmonics)
+    mesh.transmission_error.add_harmonic(h, harmonics);
+  dynamics::check_nonlinear_mesh(mesh, section);
+  return mesh;
+}
+
+// A "Mesh n" pair is known by its driver's teeth and base radii: the file's pinion must be
+// the driver (teeth equal, base radius within 1 %: the split path rounds r_b1 to 24.7 mm) and
+// its wheel z1·r_b2/r_b1 teeth.
+void check_numbered_mesh_pair(const dynamics::StiffnessFile& file, const dynamics::Mesh& mesh,
+                              const std::string& parameter)
+{
+  const double pinion_base_radius = file.pair.pinion_base_radius;
+  const long wheel_teeth =
+      std::lround(mesh.driver_teeth * mesh.driven_base_radius / mesh.driver_base_radius);
+  const bool same = file.pair.pinion_teeth == static_cast<int>(mesh.driver_teeth) &&
+                    file.pair.wheel_teeth == wheel_teeth &&
+                    std::abs(pinion_base_radius / mesh.driver_base_radius - 1.) < 0.01;
+  if (!same)
+    throw InputError(parameter, "the table belongs to another pair: file " + file.pair.describe() +
+                                    ", this mesh z " + std::to_string(mesh.driver_teeth) + "/" +
+                                    std::to_string(wheel_teeth) + ", r_b1 " +
+                                    format_number(mesh.driver_base_radius / mm, 6) + " mm");
+}
+// ---- end of issue 29 entries ----
+
 // The entries a mesh needs whatever describes its gears: stiffness source, damping, friction.
 // Shared by "Mesh n" (gears and meshes) and "Train mesh n" (Train description).
 // `train_mesh` adds the source 'file' (a stiffness result of the FE commands): only a Train
@@ -130,6 +255,7 @@ void declare_mesh_physics(ParameterHandler& prm, double stiffness, double dampin
                     "r_f of the driver (mm)");
   prm.declare_entry("driven friction arm", format_number(driven_arm / mm, 10), Double(0.),
                     "r_f of the driven gear (mm)");
+  declare_nonlinear_mesh_entries(prm, train_mesh);
 }
 
 // ISO 6336-1 (docs/references.md §5): c' ≈ 14 N/(mm·µm), the single stiffness of solid steel
@@ -174,6 +300,7 @@ struct MeshPhysics
   double driver_friction_arm = 0.;             // [m]
   double driven_friction_arm = 0.;             // [m]
   std::optional<dynamics::StiffnessFile> file; // source 'file': the FE result it came from
+  NonlinearMeshEntries nonlinear;              // issue 29
 };
 
 // Reads the entries of declare_mesh_physics inside the mesh's subsection `section`.
@@ -217,6 +344,7 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
   physics.friction_coefficient = prm.get_double("friction coefficient");
   physics.driver_friction_arm = prm.get_double("driver friction arm") * mm;
   physics.driven_friction_arm = prm.get_double("driven friction arm") * mm;
+  physics.nonlinear = parse_nonlinear_mesh_entries(prm, section);
 
   const std::string source = prm.get("stiffness source");
   const std::string stiffness_text = prm.get("stiffness");
@@ -484,6 +612,11 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "length of the automatic K_v window in periods of mesh 1 (-)");
   prm.declare_entry("output interval", "20", Double(0.),
                     "spacing of the rows of the time-series CSV (µs); K_v uses every step");
+  prm.declare_entry("mesh model", "linear", Selection("linear|nonlinear"),
+                    "linear: F = k·delta + c·delta'; nonlinear: F = k·h(delta - e) + c·(delta' - "
+                    "e')·[in contact] with the unloaded TE e, free play (backlash), tooth "
+                    "separation and back-flank contact, switches located by RK4 (issue 29, "
+                    "dynamics/README.md)");
   prm.leave_subsection();
 
   prm.enter_subsection("Speed sweep");
@@ -493,6 +626,10 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("maximum speed", "45000", Double(0.), "last input speed (rpm)");
   prm.declare_entry("steps per mesh period", "40", Integer(8, 10000),
                     "the step is reduced so each mesh period holds at least this many (-)");
+  prm.declare_entry("direction", "up", Selection("up|down|both"),
+                    "order of the speeds: up, down, or both (up, then down from the top); with "
+                    "the nonlinear mesh model each speed starts from the previous speed's final "
+                    "state, so multi-valued responses show both branches");
   prm.leave_subsection();
 
   // The split-path pair's b, α_t = 20°, ISO 1328 grade 6 deviations (iso_entries).
@@ -510,6 +647,21 @@ void declare_dynamics_parameters(ParameterHandler& prm)
 
 namespace
 {
+// issue 29: Simulation/mesh model and Speed sweep/direction (read before the meshes).
+void parse_nonlinear_settings(ParameterHandler& prm, DynamicsParameters& p)
+{
+  prm.enter_subsection("Simulation");
+  p.mesh_model = prm.get("mesh model") == "nonlinear" ? dynamics::MeshModel::nonlinear
+                                                      : dynamics::MeshModel::linear;
+  prm.leave_subsection();
+  prm.enter_subsection("Speed sweep");
+  const std::string direction = prm.get("direction");
+  p.sweep_direction = direction == "down"   ? dynamics::SweepDirection::down
+                      : direction == "both" ? dynamics::SweepDirection::both
+                                            : dynamics::SweepDirection::up;
+  prm.leave_subsection();
+}
+
 // "Gear n" / "Mesh n" sections: a tree-shaped train in the two-gear mesh form.
 void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
 {
@@ -558,6 +710,11 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     const MeshPhysics physics = parse_mesh_physics_section(prm, section, mesh.contact_ratio);
     apply_mesh_physics(physics, mesh);
     damping_ratios.push_back(physics.damping_ratio);
+    if (p.mesh_model == dynamics::MeshModel::nonlinear)
+      mesh.nonlinear = build_nonlinear_mesh(
+          physics.nonlinear, section, mesh.driver_teeth,
+          [&](const dynamics::StiffnessFile& file)
+          { check_numbered_mesh_pair(file, mesh, section + "/transmission error file"); });
     const std::optional<dynamics::CaiFit>& fit = physics.fit;
     p.stiffness_description.push_back(mesh.stiffness.description() +
                                       (fit ? " (fitted to the table)" : ""));
@@ -753,7 +910,16 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
                                      physics.driven_friction_arm,
                                      {},
                                      {},
+                                     {},
                                      {}};
+    if (p.mesh_model == dynamics::MeshModel::nonlinear)
+      mesh.nonlinear = build_nonlinear_mesh(
+          physics.nonlinear, section, static_cast<unsigned int>(std::abs(teeth[0])),
+          [&](const dynamics::StiffnessFile& file)
+          {
+            dynamics::match_stiffness_file(file, teeth[0], teeth[1], module,
+                                           section + "/transmission error file");
+          });
     std::string origin = physics.fit ? " (fitted to the table)" : "";
     if (physics.file)
     {
@@ -807,6 +973,7 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
   prm.enter_subsection("Train");
   p.train_description = prm.get("model") == "train";
   prm.leave_subsection();
+  parse_nonlinear_settings(prm, p);
   if (!p.train_description)
     parse_numbered_train(prm, p);
 

@@ -54,6 +54,11 @@ struct DynamicsParameters
   bool published_reference = true; // compare with docs/references.md §1
   SweepParameters sweep;
   IsoParameters iso;
+  // issue 29: the mesh law (Simulation/mesh model) and the sweep order (Speed sweep/direction;
+  // nonlinear sweeps continue from the previous speed's state). The per-mesh law is in
+  // train.meshes[m].nonlinear.
+  dynamics::MeshModel mesh_model = dynamics::MeshModel::linear;
+  dynamics::SweepDirection sweep_direction = dynamics::SweepDirection::up;
 };
 
 void declare_dynamics_parameters(dealii::ParameterHandler& prm);

@@ -134,49 +134,219 @@ unsigned long fixed_step_count(const IntegratorSettings& settings)
   return static_cast<unsigned long>(std::ceil(settings.end_time / settings.time_step - 1e-9));
 }
 
+// One classical RK4 step of length h from (angle, velocity) at t into (angle_out, velocity_out);
+// `work` holds 9·n doubles.
+void rk4_step(const TorsionalModel& model, double t, double h, const double* angle,
+              const double* velocity, double* angle_out, double* velocity_out, double* work)
+{
+  const unsigned int n = model.n_dofs();
+  double *a1 = work, *a2 = work + n, *a3 = work + 2 * n, *a4 = work + 3 * n, *phi = work + 4 * n,
+         *omega2 = work + 5 * n, *omega3 = work + 6 * n, *omega4 = work + 7 * n;
+  model.acceleration(t, angle, velocity, a1);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    phi[i] = angle[i] + 0.5 * h * velocity[i];
+    omega2[i] = velocity[i] + 0.5 * h * a1[i];
+  }
+  model.acceleration(t + 0.5 * h, phi, omega2, a2);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    phi[i] = angle[i] + 0.5 * h * omega2[i];
+    omega3[i] = velocity[i] + 0.5 * h * a2[i];
+  }
+  model.acceleration(t + 0.5 * h, phi, omega3, a3);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    phi[i] = angle[i] + h * omega3[i];
+    omega4[i] = velocity[i] + h * a3[i];
+  }
+  model.acceleration(t + h, phi, omega4, a4);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    angle_out[i] = angle[i] + h / 6. * (velocity[i] + 2. * omega2[i] + 2. * omega3[i] + omega4[i]);
+    velocity_out[i] = velocity[i] + h / 6. * (a1[i] + 2. * a2[i] + 2. * a3[i] + a4[i]);
+  }
+}
+
+// Event location for nonlinear meshes (integrate()'s comment): the contact regime of every
+// nonlinear mesh, and the first switch inside a trial step.
+class SwitchLocator
+{
+public:
+  SwitchLocator(const TorsionalModel& model, const IntegratorSettings& settings, double t,
+                const double* angle, const double* velocity)
+      : model(model), settings(settings), m(model.n_meshes()), z0(m), r0(m), z1(m), r1(m),
+        regime(m, ContactRegime::drive)
+  {
+    model.flank_approach(t, angle, velocity, z0.data(), r0.data());
+    for (unsigned int k = 0; k < m; ++k)
+      if (model.is_nonlinear(k))
+        regime[k] = contact_regime(z0[k], model.free_play(k));
+  }
+
+  // The start of the next trial step (after an accepted step or a switch).
+  void restart(double t, const double* angle, const double* velocity)
+  {
+    model.flank_approach(t, angle, velocity, z0.data(), r0.data());
+  }
+
+  // The first switch in the trial step [t, t + h] ending in (angle, velocity): its fraction
+  // s ∈ (0, 1] of the step, the mesh and the regime it enters; s = 2 when none.
+  double first_switch(double t, double h, const double* angle, const double* velocity,
+                      unsigned int& mesh, ContactRegime& entered)
+  {
+    model.flank_approach(t + h, angle, velocity, z1.data(), r1.data());
+    double first = 2.;
+    for (unsigned int k = 0; k < m; ++k)
+    {
+      if (!model.is_nonlinear(k))
+        continue;
+      const double b = model.free_play(k);
+      // Cubic Hermite interpolant of z over the step, s ∈ [0, 1].
+      const double p0 = z0[k], p1 = z1[k], d0 = r0[k] * h, d1 = r1[k] * h;
+      const auto z = [&](double s)
+      {
+        const double s2 = s * s, s3 = s2 * s;
+        return (2. * s3 - 3. * s2 + 1.) * p0 + (s3 - 2. * s2 + s) * d0 + (-2. * s3 + 3. * s2) * p1 +
+               (s3 - s2) * d1;
+      };
+      // Leaving the current regime: the signed distance to each of its boundaries (positive
+      // inside); the start counts as inside (it may sit on the boundary after a switch).
+      struct Boundary
+      {
+        double level, sign;
+        ContactRegime next;
+      };
+      Boundary boundaries[2];
+      unsigned int count = 0;
+      if (regime[k] == ContactRegime::drive)
+        boundaries[count++] = {0., 1., b > 0. ? ContactRegime::separated : ContactRegime::back};
+      else if (regime[k] == ContactRegime::back)
+        boundaries[count++] = {-b, -1., b > 0. ? ContactRegime::separated : ContactRegime::drive};
+      else
+      {
+        boundaries[count++] = {0., -1., ContactRegime::drive};
+        boundaries[count++] = {-b, 1., ContactRegime::back};
+      }
+      for (unsigned int j = 0; j < count; ++j)
+      {
+        const Boundary& boundary = boundaries[j];
+        const auto inside = [&](double s) { return boundary.sign * (z(s) - boundary.level); };
+        double previous = 0.;
+        for (unsigned int i = 1; i <= samples && double(i - 1) / samples < first; ++i)
+        {
+          const double s = double(i) / samples;
+          if (inside(s) >= 0.)
+          {
+            previous = s;
+            continue;
+          }
+          double low = previous, high = s;
+          for (int it = 0; it < 40; ++it)
+          {
+            const double middle = 0.5 * (low + high);
+            (inside(middle) >= 0. ? low : high) = middle;
+          }
+          if (high < first)
+          {
+            first = high;
+            mesh = k;
+            entered = boundary.next;
+          }
+          break;
+        }
+      }
+    }
+    return first;
+  }
+
+  void switch_to(double time, unsigned int mesh, ContactRegime entered)
+  {
+    if (settings.contact_observer)
+      settings.contact_observer(time, mesh, regime[mesh], entered);
+    regime[mesh] = entered;
+  }
+
+private:
+  static constexpr unsigned int samples = 16;
+  const TorsionalModel& model;
+  const IntegratorSettings& settings;
+  const unsigned int m;
+  std::vector<double> z0, r0, z1, r1;
+  std::vector<ContactRegime> regime;
+};
+
 void run_rk4(const TorsionalModel& model, std::vector<double> angle, std::vector<double> velocity,
              const IntegratorSettings& settings, Trajectory& trajectory)
 {
   const unsigned int n = model.n_dofs();
   const double h = settings.time_step;
-  std::vector<double> a1(n), a2(n), a3(n), a4(n), phi(n), omega(n), omega2(n), omega3(n), omega4(n);
+  std::vector<double> work(9 * n), next_angle(n), next_velocity(n);
   Recorder recorder(model, trajectory, settings, angle.data(), velocity.data());
   recorder.output(0, 0., angle.data(), velocity.data());
   const unsigned long steps = fixed_step_count(settings);
-  for (unsigned long step = 0; step < steps; ++step)
+  if (!model.has_nonlinear_meshes())
   {
-    const double t = step * h;
-    model.acceleration(t, angle.data(), velocity.data(), a1.data());
-    for (unsigned int i = 0; i < n; ++i)
+    for (unsigned long step = 0; step < steps; ++step)
     {
-      phi[i] = angle[i] + 0.5 * h * velocity[i];
-      omega2[i] = velocity[i] + 0.5 * h * a1[i];
+      rk4_step(model, step * h, h, angle.data(), velocity.data(), angle.data(), velocity.data(),
+               work.data());
+      if ((step + 1) % check_interval == 0 || step + 1 == steps)
+        recorder.check((step + 1) * h, angle.data(), velocity.data());
+      recorder.output(step + 1, (step + 1) * h, angle.data(), velocity.data());
     }
-    model.acceleration(t + 0.5 * h, phi.data(), omega2.data(), a2.data());
-    for (unsigned int i = 0; i < n; ++i)
+    trajectory.cost.function_evaluations = 4 * steps;
+  }
+  else
+  {
+    SwitchLocator locator(model, settings, 0., angle.data(), velocity.data());
+    unsigned long substeps = 0;
+    for (unsigned long step = 0; step < steps; ++step)
     {
-      phi[i] = angle[i] + 0.5 * h * omega2[i];
-      omega3[i] = velocity[i] + 0.5 * h * a2[i];
+      const double t_end = (step + 1) * h;
+      double t = step * h;
+      for (unsigned int switches = 0;; ++switches)
+      {
+        if (switches > 1000)
+          throw SolverFailure(trajectory.method + " event location",
+                              "more than 1000 contact changes within one step at t = " +
+                                  format_number(t) + " s (chattering contact)");
+        const double span = t_end - t;
+        rk4_step(model, t, span, angle.data(), velocity.data(), next_angle.data(),
+                 next_velocity.data(), work.data());
+        ++substeps;
+        unsigned int mesh = 0;
+        ContactRegime entered = ContactRegime::drive;
+        const double s =
+            locator.first_switch(t, span, next_angle.data(), next_velocity.data(), mesh, entered);
+        if (s > 1.)
+        {
+          angle.swap(next_angle);
+          velocity.swap(next_velocity);
+          break;
+        }
+        // Step to the switch (a step too short to matter is not taken), then on from there.
+        const double to_switch = s * span;
+        if (to_switch > 1e-12 * h)
+        {
+          rk4_step(model, t, to_switch, angle.data(), velocity.data(), angle.data(),
+                   velocity.data(), work.data());
+          ++substeps;
+          t += to_switch;
+        }
+        locator.switch_to(t, mesh, entered);
+        ++trajectory.cost.located_switches;
+        locator.restart(t, angle.data(), velocity.data());
+      }
+      locator.restart(t_end, angle.data(), velocity.data());
+      if ((step + 1) % check_interval == 0 || step + 1 == steps)
+        recorder.check(t_end, angle.data(), velocity.data());
+      recorder.output(step + 1, t_end, angle.data(), velocity.data());
     }
-    model.acceleration(t + 0.5 * h, phi.data(), omega3.data(), a3.data());
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      phi[i] = angle[i] + h * omega3[i];
-      omega4[i] = velocity[i] + h * a3[i];
-    }
-    model.acceleration(t + h, phi.data(), omega4.data(), a4.data());
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      angle[i] += h / 6. * (velocity[i] + 2. * omega2[i] + 2. * omega3[i] + omega4[i]);
-      velocity[i] += h / 6. * (a1[i] + 2. * a2[i] + 2. * a3[i] + a4[i]);
-    }
-    if ((step + 1) % check_interval == 0 || step + 1 == steps)
-      recorder.check((step + 1) * h, angle.data(), velocity.data());
-    recorder.output(step + 1, (step + 1) * h, angle.data(), velocity.data());
+    trajectory.cost.function_evaluations = 4 * substeps;
   }
   recorder.finish();
   trajectory.cost.steps = steps;
-  trajectory.cost.function_evaluations = 4 * steps;
   trajectory.cost.smallest_step = trajectory.cost.largest_step = h;
 }
 
@@ -401,6 +571,11 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
               "'Simulation/allow unstable step = true' to run anyway";
     throw InputError("Simulation/time step", reason.str());
   }
+
+  if (model.has_nonlinear_meshes() && settings.type != IntegratorType::rk4)
+    throw InputError("Simulation/integrator",
+                     "the nonlinear mesh model needs RK4 (with located contact changes); " +
+                         integrator_name(settings.type) + " would step over them");
 
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();

@@ -41,6 +41,10 @@ struct IntegratorSettings
   // accumulated without storing the whole trajectory (its memory traffic would cost more than
   // the integration). Empty: not called.
   std::function<void(double time, const double* angle, const double* velocity)> observer;
+  // Nonlinear meshes: called at every located contact change of mesh `mesh` (RK4 only: the
+  // step is cut at the switch, see integrate()). Empty: not called.
+  std::function<void(double time, unsigned int mesh, ContactRegime from, ContactRegime to)>
+      contact_observer;
 };
 
 struct IntegrationCost
@@ -51,6 +55,7 @@ struct IntegrationCost
   unsigned long linear_solves = 0;        // HHT-α only
   double smallest_step = 0.;              // [s]
   double largest_step = 0.;               // [s]
+  unsigned long located_switches = 0;     // contact changes of nonlinear meshes (RK4)
   double wall_time = 0.;                  // [s]
   // [s] processor time of this process during the run: on a shared machine the honest cost
   double cpu_time = 0.;
@@ -93,6 +98,14 @@ void check_work(const WorkEstimate& work, const std::string& parameter, const st
 
 // Integrates from the initial angles [rad] and speeds [rad/s] (relative to the nominal
 // rotation, see torsional_model.h) from t = 0 to settings.end_time.
+//
+// Nonlinear meshes (nonlinear_mesh.h) switch between drive contact, separation and back-flank
+// contact where the flank approach z = δ − e crosses 0 or −2b, a kink in the force. RK4 does not
+// step over such a switch: after each trial step the cubic Hermite interpolant of z (values and
+// rates at both ends) is searched for the first crossing (sampled at h/16, then bisection); the
+// step is cut there, the switch counted, and the rest of the step taken from the switch, so
+// every RK4 step sees a smooth right-hand side. HHT-α (linearised) and the adaptive method
+// refuse nonlinear meshes (InputError naming Simulation/integrator).
 Trajectory integrate(const TorsionalModel& model, const std::vector<double>& initial_angle,
                      const std::vector<double>& initial_velocity,
                      const IntegratorSettings& settings);

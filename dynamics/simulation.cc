@@ -16,6 +16,13 @@ std::string start_state_name(StartState start)
   return start == StartState::rest ? "rest" : "static deflection";
 }
 
+std::string sweep_direction_name(SweepDirection direction)
+{
+  return direction == SweepDirection::up     ? "up"
+         : direction == SweepDirection::down ? "down"
+                                             : "both";
+}
+
 std::string sweep_status_name(SweepStatus status)
 {
   switch (status)
@@ -38,9 +45,9 @@ namespace
 // a whole number of mesh periods, so the mesh harmonics fall on FFT bins; the series is
 // resampled by linear interpolation onto 2^k points so the FFT never meets a large prime
 // factor (the step oversamples the mesh frequency ~100-fold, so interpolation is harmless).
-void force_spectrum(const std::vector<double>& time, const std::vector<double>& force,
-                    std::size_t first, double start, double end, double max_frequency,
-                    MeshResult& result)
+void amplitude_spectrum(const std::vector<double>& time, const std::vector<double>& force,
+                        std::size_t first, double start, double end, double max_frequency,
+                        std::vector<double>& frequencies, std::vector<double>& amplitudes)
 {
   const std::size_t available = time.size() - first;
   std::size_t n = 1;
@@ -67,8 +74,8 @@ void force_spectrum(const std::vector<double>& time, const std::vector<double>& 
     const double frequency = k * resolution;
     if (frequency > max_frequency)
       break;
-    result.spectrum_frequency.push_back(frequency);
-    result.spectrum_amplitude.push_back((k == 0 ? 1. : 2.) * std::abs(spectrum[k]) / n);
+    frequencies.push_back(frequency);
+    amplitudes.push_back((k == 0 ? 1. : 2.) * std::abs(spectrum[k]) / n);
   }
 }
 } // namespace
@@ -107,6 +114,34 @@ void check_simulation_work(const TorsionalModel& model, const SimulationSettings
                    "the window start or more damping");
 }
 
+// An excitation harmonic the step cannot follow (fewer than 8 steps per period) is refused,
+// naming the harmonics of the mesh that carries it.
+void check_excitation_resolution(const TorsionalModel& model, double step)
+{
+  constexpr double steps_per_harmonic = 8.;
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+  {
+    const Mesh& mesh = model.train().meshes[m];
+    if (!mesh.nonlinear)
+      continue;
+    const double order = mesh.nonlinear->transmission_error.highest_order();
+    const double frequency = order * model.mesh_position_rate(m);
+    if (frequency * step * steps_per_harmonic > 1.)
+    {
+      const std::string section =
+          mesh.nonlinear->section.empty()
+              ? (mesh.name.empty() ? "Mesh " + std::to_string(m + 1) : mesh.name)
+              : mesh.nonlinear->section;
+      throw InputError(section + "/transmission error harmonics",
+                       "order " + std::to_string(order) + " at " + std::to_string(frequency) +
+                           " Hz is above what the time step " + std::to_string(step * 1e6) +
+                           " µs resolves (8 steps per period: at most " +
+                           std::to_string(1. / (steps_per_harmonic * step)) +
+                           " Hz); lower the order or the step");
+    }
+  }
+}
+
 SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings)
 {
   SimulationResult result;
@@ -142,16 +177,27 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
 
   const unsigned int n = model.n_dofs();
   std::vector<double> angle(n, 0.), velocity(n, 0.);
-  if (settings.start == StartState::static_deflection)
+  if (!settings.initial_angle.empty())
+  {
+    if (settings.initial_angle.size() != n || settings.initial_velocity.size() != n)
+      throw InputError("initial state", "needs one angle and one speed per degree of freedom");
+    angle = settings.initial_angle;
+    velocity = settings.initial_velocity;
+  }
+  else if (settings.start == StartState::static_deflection)
     angle = model.static_state(true).angle;
   result.initial_angle = angle;
+  check_excitation_resolution(model, h);
 
   // K_v statistics at every step through the observer; only the window's forces are kept (for
   // the spectrum) and the trajectory itself every `record_interval`.
   const unsigned int n_meshes = model.n_meshes();
   result.meshes.resize(n_meshes);
   std::vector<double> window_time;
-  std::vector<std::vector<double>> window_force(n_meshes);
+  std::vector<std::vector<double>> window_force(n_meshes), window_deflection(n_meshes);
+  const bool keep_deflection = settings.keep_time_series || settings.dte_spectrum_orders > 0.;
+  std::vector<double> deflection_sum(n_meshes, 0.), deflection_square(n_meshes, 0.);
+  std::vector<std::size_t> separated_steps(n_meshes, 0);
   std::vector<double> scale(n_meshes), force_sum(n_meshes, 0.);
   std::size_t mean_count = 0;
   for (unsigned int m = 0; m < n_meshes; ++m)
@@ -168,6 +214,7 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
     mesh.kv_max = mesh.kv_max_first_half = mesh.kv_max_second_half =
         -std::numeric_limits<double>::infinity();
     mesh.kv_min = std::numeric_limits<double>::infinity();
+    mesh.nonlinear = model.is_nonlinear(m);
   }
   const double tolerance = 1e-9 * h;
   IntegratorSettings integrator = settings.integrator;
@@ -183,12 +230,21 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
     if (t < result.window_start - tolerance || t > result.window_end + tolerance)
       return;
     const bool in_mean = t < result.window_end - 0.5 * h;
-    if (settings.keep_time_series)
+    if (keep_deflection)
       window_time.push_back(t);
     for (unsigned int m = 0; m < n_meshes; ++m)
     {
       MeshResult& mesh = result.meshes[m];
-      const double force = model.mesh_response(m, t, phi, omega).force;
+      const MeshResponse response = model.mesh_response(m, t, phi, omega);
+      const double force = response.force;
+      if (in_mean)
+      {
+        deflection_sum[m] += response.deflection;
+        deflection_square[m] += response.deflection * response.deflection;
+        separated_steps[m] += response.regime != ContactRegime::drive;
+      }
+      if (keep_deflection)
+        window_deflection[m].push_back(response.deflection);
       const double kv = force * scale[m];
       if (kv > mesh.kv_max)
       {
@@ -204,6 +260,17 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
         window_force[m].push_back(force);
     }
     mean_count += in_mean;
+    result.final_time = t;
+    result.final_angle.assign(phi, phi + n);
+    result.final_velocity.assign(omega, omega + n);
+  };
+  integrator.contact_observer = [&](double t, unsigned int m, ContactRegime from, ContactRegime to)
+  {
+    if (t < result.window_start || t >= result.window_end)
+      return;
+    MeshResult& mesh = result.meshes[m];
+    mesh.separations += from == ContactRegime::drive;
+    mesh.back_impacts += to == ContactRegime::back;
   };
   result.trajectory = integrate(model, angle, velocity, integrator);
   const Trajectory& trajectory = result.trajectory;
@@ -214,12 +281,23 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   for (unsigned int m = 0; m < n_meshes; ++m)
   {
     MeshResult& mesh = result.meshes[m];
-    mesh.mean_force = force_sum[m] / std::max<std::size_t>(mean_count, 1);
+    const double count = std::max<std::size_t>(mean_count, 1);
+    mesh.mean_force = force_sum[m] / count;
+    mesh.mean_deflection = deflection_sum[m] / count;
+    mesh.deflection_rms = std::sqrt(
+        std::max(0., deflection_square[m] / count - mesh.mean_deflection * mesh.mean_deflection));
+    mesh.separation_fraction = separated_steps[m] / count;
     result.kv_max = std::max(result.kv_max, mesh.kv_max);
+    if (keep_deflection)
+      amplitude_spectrum(
+          window_time, window_deflection[m], 0, result.window_start, result.window_end,
+          settings.keep_time_series ? max_frequency
+                                    : settings.dte_spectrum_orders * mesh.mesh_frequency,
+          mesh.dte_spectrum_frequency, mesh.dte_spectrum_amplitude);
     if (!settings.keep_time_series)
       continue;
-    force_spectrum(window_time, window_force[m], 0, result.window_start, result.window_end,
-                   max_frequency, mesh);
+    amplitude_spectrum(window_time, window_force[m], 0, result.window_start, result.window_end,
+                       max_frequency, mesh.spectrum_frequency, mesh.spectrum_amplitude);
     const std::vector<double>& time = trajectory.time;
     mesh.force.resize(time.size());
     mesh.stiffness.resize(time.size());
@@ -243,17 +321,38 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
 }
 
 SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
-                        const std::vector<double>& input_speeds, unsigned int steps_per_mesh_period)
+                        const std::vector<double>& input_speeds, unsigned int steps_per_mesh_period,
+                        SweepDirection direction, bool continuation)
 {
   const auto start = std::chrono::steady_clock::now();
   SweepResult sweep;
-  for (const double speed : input_speeds)
+  std::vector<double> ascending = input_speeds;
+  std::vector<std::pair<double, bool>> order; // speed, descending
+  if (direction != SweepDirection::up || continuation)
+    std::sort(ascending.begin(), ascending.end());
+  if (direction != SweepDirection::down)
+    for (const double speed : ascending)
+      order.emplace_back(speed, false);
+  if (direction != SweepDirection::up)
+    for (auto speed = ascending.rbegin(); speed != ascending.rend(); ++speed)
+      order.emplace_back(*speed, true);
+  // The previous speed's final state and mesh positions (continuation).
+  std::vector<double> angle, velocity, positions;
+  for (const auto& [speed, descending] : order)
   {
     GearTrain point_train = train;
     point_train.input_speed = speed;
+    if (continuation && !positions.empty())
+      for (std::size_t m = 0; m < positions.size(); ++m)
+        point_train.meshes[m].initial_position = positions[m];
     const TorsionalModel model(point_train);
     SimulationSettings point = settings;
     point.keep_time_series = false;
+    if (continuation && !angle.empty())
+    {
+      point.initial_angle = angle;
+      point.initial_velocity = velocity;
+    }
     double fastest_mesh = 0.;
     for (unsigned int m = 0; m < model.n_meshes(); ++m)
       fastest_mesh = std::max(fastest_mesh, model.mesh_position_rate(m));
@@ -261,6 +360,7 @@ SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settin
         std::min(settings.integrator.time_step, 1. / (fastest_mesh * steps_per_mesh_period));
     SweepPoint p;
     p.input_speed = speed;
+    p.descending = descending;
     p.mesh_frequency = model.mesh_position_rate(0);
     p.time_step = point.integrator.time_step;
     try
@@ -273,12 +373,30 @@ SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settin
         p.kv_min = std::min(p.kv_min, mesh.kv_min);
         p.periodicity =
             std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
+        p.separation_fraction = std::max(p.separation_fraction, mesh.separation_fraction);
+        p.separations += mesh.separations;
+        p.back_impacts += mesh.back_impacts;
+      }
+      const MeshResult& first = result.meshes.front();
+      p.mean_deflection = first.mean_deflection;
+      p.deflection_rms = first.deflection_rms;
+      for (std::size_t k = 0; k < first.dte_spectrum_frequency.size(); ++k)
+      {
+        p.dte_orders.push_back(first.dte_spectrum_frequency[k] / first.mesh_frequency);
+        p.dte_amplitude.push_back(first.dte_spectrum_amplitude[k]);
       }
       p.cost = result.trajectory.cost;
-      if (p.kv_min < 0.)
+      // Nonlinear meshes represent separation: a negative force is back-flank contact.
+      if (p.kv_min < 0. && !model.has_nonlinear_meshes())
         p.status = SweepStatus::contact_loss;
       else if (p.periodicity > steady_state_tolerance * p.kv_max)
         p.status = SweepStatus::not_steady;
+      angle = result.final_angle;
+      velocity = result.final_velocity;
+      positions.clear();
+      for (unsigned int m = 0; m < model.n_meshes(); ++m)
+        positions.push_back(point_train.meshes[m].initial_position +
+                            model.mesh_position_rate(m) * result.final_time);
     }
     catch (const SolverFailure& failure)
     {
@@ -286,6 +404,8 @@ SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settin
       p.status = SweepStatus::diverged;
       p.failure = failure.what();
       p.kv_max = p.kv_min = p.periodicity = std::numeric_limits<double>::quiet_NaN();
+      angle.clear(); // the next speed starts afresh
+      positions.clear();
     }
     sweep.points.push_back(p);
   }

@@ -36,6 +36,12 @@ struct SimulationSettings
   // [s] spacing of the stored trajectory and time series; 0: every output point. K_v, the mean
   // force and the spectrum always use every step.
   double record_interval = 0.;
+  // Start from this state instead of `start` (a sweep's continuation: the previous speed's
+  // final state) [rad], [rad/s] per DOF; empty: `start`.
+  std::vector<double> initial_angle, initial_velocity;
+  // Nonlinear meshes: keep the DTE spectrum up to this many mesh orders even without time
+  // series (a sweep's waterfall); 0: only with time series.
+  double dte_spectrum_orders = 0.;
 };
 
 struct MeshResult
@@ -58,6 +64,17 @@ struct MeshResult
   double kv_max_second_half = 0.; //     difference shows whether the response is periodic
   std::vector<double> spectrum_frequency; // [Hz]
   std::vector<double> spectrum_amplitude; // [N] single-sided amplitude of F
+  // Dynamic transmission error δ (the deflection along the line of action) over the window:
+  double mean_deflection = 0.; // [m]
+  double deflection_rms = 0.;  // [m] about its mean
+  // Nonlinear meshes (nonlinear_mesh.h), over the window:
+  bool nonlinear = false;
+  double separation_fraction = 0.; // [-] share of the output steps not in drive contact
+  unsigned long separations = 0;   // [-] drive contact lost (located switches)
+  unsigned long back_impacts = 0;  // [-] back flank struck
+  // DTE spectrum (same frequencies as the force spectrum, or up to dte_spectrum_orders)
+  std::vector<double> dte_spectrum_frequency; // [Hz]
+  std::vector<double> dte_spectrum_amplitude; // [m]
 };
 
 struct SimulationResult
@@ -72,6 +89,9 @@ struct SimulationResult
   ModalProperties modes;
   double kv_max = 0.;                // [-] largest over all meshes
   std::vector<double> initial_angle; // [rad]
+  // The state at the end (a sweep continues from it): time [s], angles [rad], speeds [rad/s].
+  double final_time = 0.;
+  std::vector<double> final_angle, final_velocity;
 };
 
 SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings);
@@ -106,6 +126,15 @@ struct SweepPoint
   // chart may show where the model stops holding); reports must print them as invalid.
   SweepStatus status = SweepStatus::valid;
   IntegrationCost cost;
+  // Up/down sweeps with continuation (nonlinear meshes):
+  bool descending = false;           // belongs to the down sweep
+  double separation_fraction = 0.;   // [-] largest over the meshes
+  unsigned long separations = 0;     // [-] all meshes, in the window
+  unsigned long back_impacts = 0;    // [-] all meshes, in the window
+  double mean_deflection = 0.;       // [m] mesh 1: mean DTE
+  double deflection_rms = 0.;        // [m] mesh 1: DTE rms about its mean
+  std::vector<double> dte_orders;    // [mesh orders] of mesh 1's DTE spectrum lines
+  std::vector<double> dte_amplitude; // [m]
 };
 
 struct SweepResult
@@ -114,11 +143,25 @@ struct SweepResult
   double wall_time = 0.; // [s]
 };
 
+enum class SweepDirection
+{
+  up,
+  down,
+  both // up, then down from the top speed's state
+};
+std::string sweep_direction_name(SweepDirection direction);
+
 // K_v against input speed. A speed at which the linear model diverges is recorded as unstable
 // (not as a number) and the sweep goes on; bad input still throws. The step is
 // settings.integrator.time_step, reduced where needed so every mesh period holds at least
 // `steps_per_mesh_period` steps (the stiffness jumps must be resolved at high speed).
+//
+// `direction` orders the speeds (ascending, descending, or both one after the other);
+// with `continuation` each speed starts from the previous speed's final state (angles, speeds
+// relative to the nominal rotation, and mesh positions), so where the response is multi-valued
+// (nonlinear meshes near resonance) the up and down sweeps follow different branches.
 SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
                         const std::vector<double>& input_speeds,
-                        unsigned int steps_per_mesh_period = 40);
+                        unsigned int steps_per_mesh_period = 40,
+                        SweepDirection direction = SweepDirection::up, bool continuation = false);
 } // namespace gearstiff::dynamics

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 namespace gearstiff::dynamics
 {
@@ -74,6 +75,8 @@ StiffnessFilePair read_pair(const ptree& tree, const std::string& path,
                          *m * 1e-3, *a * 1e-3, *eps};
   if (const auto approach = value(tree, "approach_ratio"))
     pair.approach_ratio = *approach;
+  if (const auto radius = value(tree, "pinion_base_radius"))
+    pair.pinion_base_radius = *radius * 1e-3;
   return pair;
 }
 
@@ -117,23 +120,40 @@ std::vector<double> column(const ptree& tree, const std::string& table, const st
   return values;
 }
 
-// The sweep's k(x) with positions modulo one base pitch, checked to cover the cycle.
-MeshStiffness sweep_table(const std::vector<double>& positions,
-                          const std::vector<double>& stiffness, const std::string& parameter)
+bool has_column(const ptree& tree, const std::string& table, const std::string& name)
 {
-  std::vector<std::pair<double, double>> nodes; // x [base pitches], k [N/m]
+  const auto node = tree.get_child_optional(ptree::path_type("tables/" + table, '/'));
+  if (!node)
+    return false;
+  for (const auto& c : node->get_child("columns"))
+    if (c.second.data() == name)
+      return true;
+  return false;
+}
+
+// The sweep's k(x) with positions modulo one base pitch, checked to cover the cycle; with the
+// loaded TE [um] (may be empty) also its split into k and e (nonlinear_mesh.h).
+MeshStiffness sweep_table(const std::vector<double>& positions,
+                          const std::vector<double>& stiffness,
+                          const std::vector<double>& loaded_error, const std::string& parameter,
+                          std::optional<LoadedTransmissionErrorSplit>& split)
+{
+  // x [base pitches], k [N/m], s [m]
+  std::vector<std::tuple<double, double, double>> nodes;
   for (std::size_t i = 0; i < positions.size(); ++i)
   {
     const double x = positions[i] - std::floor(positions[i]);
-    nodes.emplace_back(x < 1. ? x : 0., stiffness[i] * 1e6);
+    nodes.emplace_back(x < 1. ? x : 0., stiffness[i] * 1e6,
+                       i < loaded_error.size() ? loaded_error[i] * 1e-6 : 0.);
   }
   std::sort(nodes.begin(), nodes.end());
-  std::vector<double> x, k;
-  for (const auto& [xi, ki] : nodes)
+  std::vector<double> x, k, s;
+  for (const auto& [xi, ki, si] : nodes)
     if (x.empty() || xi - x.back() > 1e-9)
     {
       x.push_back(xi);
       k.push_back(ki);
+      s.push_back(si);
     }
   double widest = x.empty() ? 1. : 1. - x.back() + x.front();
   for (std::size_t i = 1; i < x.size(); ++i)
@@ -144,6 +164,8 @@ MeshStiffness sweep_table(const std::vector<double>& positions,
                          " distinct positions modulo one base pitch, widest gap " + format(widest) +
                          " base pitches (at most twice the mean " +
                          "spacing allowed; sweep one full base pitch)");
+  if (!loaded_error.empty())
+    split = split_loaded_transmission_error(x, k, s, parameter);
   return MeshStiffness::table(x, k, parameter);
 }
 } // namespace
@@ -164,8 +186,13 @@ StiffnessFile read_stiffness_file(const std::string& path, const std::string& pa
       column(tree, "stiffness_sweep", "mesh_position", "-", parameter);
   if (!positions.empty())
   {
-    file.stiffness = sweep_table(
-        positions, column(tree, "stiffness_sweep", "stiffness", "N/um", parameter), parameter);
+    const std::vector<double> loaded_error =
+        has_column(tree, "stiffness_sweep", "transmission_error")
+            ? column(tree, "stiffness_sweep", "transmission_error", "um", parameter)
+            : std::vector<double>();
+    file.stiffness =
+        sweep_table(positions, column(tree, "stiffness_sweep", "stiffness", "N/um", parameter),
+                    loaded_error, parameter, file.transmission_error);
     return file;
   }
   const auto scale = value(tree, "cai_scale");

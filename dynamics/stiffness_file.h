@@ -9,8 +9,10 @@
 #pragma once
 
 #include "dynamics/mesh_stiffness.h"
+#include "dynamics/nonlinear_mesh.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace gearstiff::dynamics
@@ -25,6 +27,8 @@ struct StiffnessFilePair
   // [-] ε_f = AC/p_bt of the FE pair (start of contact to the pitch point, pinion driving);
   // NaN when the file predates it (the train then keeps the standard-tooth value).
   double approach_ratio = std::numeric_limits<double>::quiet_NaN();
+  // [m] r_b1 of the FE pinion (values/pinion_base_radius); NaN when the file has none
+  double pinion_base_radius = std::numeric_limits<double>::quiet_NaN();
   std::string describe() const; // "z 20/10, m 2 mm, a 30 mm"
 };
 
@@ -33,6 +37,9 @@ struct StiffnessFile
   std::string command; // "stiffness" or "cai"
   StiffnessFilePair pair;
   MeshStiffness stiffness; // k(x) with the pinion driving (x as in mesh_stiffness.h)
+  // A sweep's column transmission_error [um] (the loaded static TE s(x) at the FE load) split
+  // into k(x) and the unloaded TE e(x) (nonlinear_mesh.h); empty for a Cai summary.
+  std::optional<LoadedTransmissionErrorSplit> transmission_error;
 };
 
 // Reads `path`; InputError naming `parameter` for a missing or unreadable file, a summary

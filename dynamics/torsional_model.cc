@@ -163,6 +163,13 @@ void TorsionalModel::validate_mesh(const GearTrain& train, unsigned int m) const
   // A default-constructed MeshStiffness is a zero constant: the caller forgot the source.
   require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., label + "/stiffness",
           "no positive mesh stiffness given");
+  if (mesh.nonlinear)
+  {
+    check_nonlinear_mesh(*mesh.nonlinear, label);
+    require(!mesh.nonlinear->back_stiffness ||
+                mesh.nonlinear->back_stiffness->mean_stiffness(mesh.contact_ratio) > 0.,
+            label + "/back flank stiffness", "no positive back-flank stiffness given");
+  }
 }
 
 void TorsionalModel::compile_meshes(const GearTrain& train)
@@ -200,9 +207,21 @@ void TorsionalModel::compile_meshes(const GearTrain& train)
     c.approach_ratio = mesh.approach_ratio;
     c.initial_position = mesh.initial_position;
     c.stiffness = mesh.stiffness;
+    if (mesh.nonlinear)
+    {
+      c.nonlinear = any_nonlinear = true;
+      c.backlash = mesh.nonlinear->backlash;
+      c.transmission_error = mesh.nonlinear->transmission_error;
+      c.mean_transmission_error = c.transmission_error.mean();
+      // Symmetric teeth: the back flanks run the path of contact the other way.
+      c.back_stiffness = mesh.nonlinear->back_stiffness
+                             ? *mesh.nonlinear->back_stiffness
+                             : mesh.stiffness.reversed(mesh.contact_ratio);
+    }
     meshes.push_back(c);
   }
   cached_states.resize(meshes.size());
+  cached_nonlinear.resize(meshes.size());
 }
 
 double TorsionalModel::deflection(const CompiledMesh& mesh, const double* angle) const
@@ -219,6 +238,46 @@ MeshStiffnessState TorsionalModel::mesh_state(const CompiledMesh& mesh, double t
                                  mesh.contact_ratio, mesh.approach_ratio);
 }
 
+void TorsionalModel::update_cache(double time) const
+{
+  // RK4 evaluates twice at t + h/2, and its last stage at t + h is usually the next step's
+  // first: the mesh states of the last time are reused (same time, same values: exact).
+  if (time == cached_time)
+    return;
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    const CompiledMesh& mesh = meshes[m];
+    const double x = mesh.initial_position + mesh.position_rate * time;
+    // Without friction the direction is not needed (forces only): the stiffness alone.
+    cached_states[m] = mesh.mu == 0.
+                           ? MeshStiffnessState{mesh.stiffness.stiffness(x, mesh.contact_ratio), 0.}
+                           : mesh_state(mesh, time);
+    if (mesh.nonlinear)
+      cached_nonlinear[m] = {mesh.transmission_error.value(x),
+                             mesh.transmission_error.slope(x) * mesh.position_rate,
+                             mesh.back_stiffness.stiffness(x, mesh.contact_ratio)};
+  }
+  cached_time = time;
+}
+
+namespace
+{
+// The mesh force of nonlinear_mesh.h from δ, δ̇ [m, m/s] and the instant's k, e, ė, k_back;
+// `in_drive_contact` tells whether tooth friction acts (back-flank friction is neglected).
+inline double nonlinear_force(double stiffness, double damping, double backlash, double error,
+                              double error_rate, double back_stiffness, double delta, double rate,
+                              bool& in_drive_contact)
+{
+  const double z = delta - error;
+  in_drive_contact = z > 0.;
+  if (z > 0.)
+    return stiffness * z + damping * (rate - error_rate);
+  if (z < -backlash)
+    return back_stiffness * (z + backlash) + damping * (rate - error_rate);
+  return 0.;
+}
+} // namespace
+
 void TorsionalModel::acceleration(double time, const double* angle, const double* velocity,
                                   double* result) const
 {
@@ -227,21 +286,7 @@ void TorsionalModel::acceleration(double time, const double* angle, const double
   for (const Suspension& suspension : suspensions)
     result[suspension.dof] -= suspension.stiffness * angle[suspension.dof] +
                               suspension.damping * velocity[suspension.dof];
-  // RK4 evaluates twice at t + h/2, and its last stage at t + h is usually the next step's
-  // first: the mesh states of the last time are reused (same time, same values: exact).
-  if (!(time == cached_time))
-  {
-    // Without friction the direction is not needed (forces only): the stiffness alone.
-    for (std::size_t m = 0; m < meshes.size(); ++m)
-      cached_states[m] =
-          meshes[m].mu == 0.
-              ? MeshStiffnessState{meshes[m].stiffness.stiffness(meshes[m].initial_position +
-                                                                     meshes[m].position_rate * time,
-                                                                 meshes[m].contact_ratio),
-                                   0.}
-              : mesh_state(meshes[m], time);
-    cached_time = time;
-  }
+  update_cache(time);
   // Always three terms, without branches: a pair's unused third term has c = arm = 0 on DOF 0,
   // which adds exact zeros (compile_meshes).
   for (std::size_t m = 0; m < meshes.size(); ++m)
@@ -252,13 +297,49 @@ void TorsionalModel::acceleration(double time, const double* angle, const double
     const double* c = mesh.c;
     const double delta = c[0] * angle[dof[0]] + c[1] * angle[dof[1]] + c[2] * angle[dof[2]];
     const double rate = c[0] * velocity[dof[0]] + c[1] * velocity[dof[1]] + c[2] * velocity[dof[2]];
-    const double force = state.stiffness * delta + mesh.damping * rate;
-    const double friction = mesh.mu * state.friction_direction;
+    double force, friction = mesh.mu * state.friction_direction;
+    if (!mesh.nonlinear)
+      force = state.stiffness * delta + mesh.damping * rate;
+    else
+    {
+      const NonlinearState& n = cached_nonlinear[m];
+      bool drive = true;
+      force = nonlinear_force(state.stiffness, mesh.damping, mesh.backlash, n.error, n.error_rate,
+                              n.back_stiffness, delta, rate, drive);
+      friction = drive ? friction : 0.;
+    }
     for (unsigned int i = 0; i < 3; ++i)
       result[dof[i]] -= (c[i] + friction * mesh.arm[i]) * force;
   }
   for (unsigned int i = 0; i < n_gears; ++i)
     result[i] *= inverse_inertia[i];
+}
+
+void TorsionalModel::flank_approach(double time, const double* angle, const double* velocity,
+                                    double* approach, double* approach_rate) const
+{
+  update_cache(time);
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+    if (meshes[m].nonlinear)
+    {
+      approach[m] = deflection(meshes[m], angle) - cached_nonlinear[m].error;
+      approach_rate[m] = deflection(meshes[m], velocity) - cached_nonlinear[m].error_rate;
+    }
+}
+
+double TorsionalModel::highest_excitation_order() const
+{
+  double order = 0.;
+  for (const CompiledMesh& mesh : meshes)
+    if (mesh.nonlinear)
+      order = std::max(order, mesh.transmission_error.highest_order());
+  return order;
+}
+
+double TorsionalModel::largest_stiffness(const CompiledMesh& mesh) const
+{
+  const double k = mesh.stiffness.max_stiffness(mesh.contact_ratio);
+  return mesh.nonlinear ? std::max(k, mesh.back_stiffness.max_stiffness(mesh.contact_ratio)) : k;
 }
 
 MeshResponse TorsionalModel::mesh_response(unsigned int m, double time, const double* angle,
@@ -272,7 +353,21 @@ MeshResponse TorsionalModel::mesh_response(unsigned int m, double time, const do
   response.friction_direction = state.friction_direction;
   response.deflection = deflection(mesh, angle);
   response.deflection_rate = deflection(mesh, velocity);
-  response.force = state.stiffness * response.deflection + mesh.damping * response.deflection_rate;
+  if (!mesh.nonlinear)
+  {
+    response.force =
+        state.stiffness * response.deflection + mesh.damping * response.deflection_rate;
+    return response;
+  }
+  const double x = response.position;
+  const double error = mesh.transmission_error.value(x);
+  bool drive = true;
+  response.force = nonlinear_force(state.stiffness, mesh.damping, mesh.backlash, error,
+                                   mesh.transmission_error.slope(x) * mesh.position_rate,
+                                   mesh.back_stiffness.stiffness(x, mesh.contact_ratio),
+                                   response.deflection, response.deflection_rate, drive);
+  response.transmission_error = error;
+  response.regime = contact_regime(response.deflection - error, mesh.backlash);
   return response;
 }
 
@@ -345,7 +440,8 @@ std::vector<double> TorsionalModel::solve_static(const std::vector<double>& sigm
     const CompiledMesh& mesh = meshes[m];
     kinematic(m, mesh.dof[0]) = mesh.c[0];
     kinematic(m, mesh.dof[1]) = mesh.c[1];
-    rhs[m] = forces[m] / mesh.stiffness.mean_stiffness(mesh.contact_ratio);
+    rhs[m] = forces[m] / mesh.stiffness.mean_stiffness(mesh.contact_ratio) +
+             mesh.mean_transmission_error;
   }
   kinematic.row(n_mesh) = inertia.cwiseProduct(rigid).transpose();
   const Eigen::VectorXd angle = kinematic.fullPivLu().solve(rhs);
@@ -372,6 +468,11 @@ std::vector<double> TorsionalModel::solve_static_general(const std::vector<doubl
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
   system.topLeftCorner(n_gears, n_gears) = K;
   rhs.head(n_gears) = torques;
+  // The mean unloaded TE e of a nonlinear mesh: F = k·(δ − e) adds k·e·g to the load side.
+  for (unsigned int m = 0; m < meshes.size(); ++m)
+    for (unsigned int i = 0; meshes[m].nonlinear && i < meshes[m].n_terms; ++i)
+      rhs[meshes[m].dof[i]] += k[m] * meshes[m].mean_transmission_error *
+                               (meshes[m].c[i] + meshes[m].mu * sigma[m] * meshes[m].arm[i]);
   if (has_rigid_mode)
   {
     const Eigen::VectorXd momentum = inertia.cwiseProduct(rigid);
@@ -388,7 +489,8 @@ std::vector<double> TorsionalModel::solve_static_general(const std::vector<doubl
   rigid_acceleration = has_rigid_mode ? solution[n_gears] : 0.;
   std::vector<double> forces(meshes.size());
   for (unsigned int m = 0; m < meshes.size(); ++m)
-    forces[m] = k[m] * deflection(meshes[m], angle_out.data());
+    forces[m] =
+        k[m] * (deflection(meshes[m], angle_out.data()) - meshes[m].mean_transmission_error);
   return forces;
 }
 
@@ -404,7 +506,8 @@ StaticState TorsionalModel::static_state(bool include_friction) const
                              : solve_static(sigma, state.rigid_acceleration, state.angle);
   for (unsigned int m = 0; m < meshes.size(); ++m)
     state.deflection.push_back(state.mesh_force[m] /
-                               meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio));
+                                   meshes[m].stiffness.mean_stiffness(meshes[m].contact_ratio) +
+                               meshes[m].mean_transmission_error);
   return state;
 }
 
@@ -449,7 +552,7 @@ double TorsionalModel::highest_natural_frequency() const
 {
   std::vector<double> k(meshes.size()), sigma(meshes.size(), 1.);
   for (unsigned int m = 0; m < meshes.size(); ++m)
-    k[m] = meshes[m].stiffness.max_stiffness(meshes[m].contact_ratio);
+    k[m] = largest_stiffness(meshes[m]);
   Eigen::MatrixXd K, C;
   assemble(k, sigma, K, C);
   const Eigen::VectorXcd values = (inertia.cwiseInverse().asDiagonal() * K).eigenvalues();
@@ -506,7 +609,7 @@ double TorsionalModel::rk4_step_limit() const
 {
   std::vector<double> k(meshes.size()), sigma(meshes.size(), 1.);
   for (unsigned int m = 0; m < meshes.size(); ++m)
-    k[m] = meshes[m].stiffness.max_stiffness(meshes[m].contact_ratio);
+    k[m] = largest_stiffness(meshes[m]);
   Eigen::MatrixXd K, C;
   assemble(k, sigma, K, C);
   return rk4_limit_for(K, C);
@@ -535,7 +638,18 @@ double TorsionalModel::strain_energy(double time, const double* angle) const
   for (const CompiledMesh& mesh : meshes)
   {
     const double delta = deflection(mesh, angle);
-    energy += 0.5 * mesh_state(mesh, time).stiffness * delta * delta;
+    if (!mesh.nonlinear)
+    {
+      energy += 0.5 * mesh_state(mesh, time).stiffness * delta * delta;
+      continue;
+    }
+    // ½·k·h(z)², with the flank in contact's stiffness.
+    const double x = mesh.initial_position + mesh.position_rate * time;
+    const double z = delta - mesh.transmission_error.value(x);
+    const double elastic = backlash_function(z, mesh.backlash);
+    const double k = z > 0. ? mesh.stiffness.stiffness(x, mesh.contact_ratio)
+                            : mesh.back_stiffness.stiffness(x, mesh.contact_ratio);
+    energy += 0.5 * k * elastic * elastic;
   }
   for (const Suspension& suspension : suspensions)
     energy += 0.5 * suspension.stiffness * angle[suspension.dof] * angle[suspension.dof];

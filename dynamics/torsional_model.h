@@ -26,9 +26,11 @@
 #pragma once
 
 #include "dynamics/mesh_stiffness.h"
+#include "dynamics/nonlinear_mesh.h"
 
 #include <Eigen/Dense>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,9 @@ struct Mesh
   // [base pitches per second per rad/s]: z_a·|ω_a − ω_frame|/(2π·ω_input).
   std::vector<MeshTerm> terms;
   double position_ratio = 0.;
+  // Nonlinear mesh law (nonlinear_mesh.h: TE excitation, backlash, separation, back flank);
+  // empty: the linear law F = k·δ + c·δ̇.
+  std::optional<NonlinearMesh> nonlinear;
 };
 
 // A member that the kinematics holds still but that hangs on a torsional spring and damper to
@@ -115,7 +120,9 @@ struct MeshResponse
   double friction_direction = 0.; // [-]
   double deflection = 0.;         // [m] δ along the line of action
   double deflection_rate = 0.;    // [m/s]
-  double force = 0.;              // [N] F = k·δ + c·δ̇
+  double force = 0.;              // [N] F = k·δ + c·δ̇ (nonlinear: nonlinear_mesh.h)
+  double transmission_error = 0.; // [m] unloaded TE e (0 for a linear mesh)
+  ContactRegime regime = ContactRegime::drive;
 };
 
 // The static state under mean mesh stiffness: the train turning at nominal speed, carrying its
@@ -200,6 +207,17 @@ public:
   // Rigid-mode vector: gear angles of a rigid rotation with gear 0 turning by 1 rad.
   const Eigen::VectorXd& rigid_mode() const { return rigid; }
 
+  // Nonlinear meshes (nonlinear_mesh.h). Their switch functions: the flank approach z = δ − e
+  // [m] and its rate [m/s] per mesh (linear meshes: untouched), and the free play 2b [m]; the
+  // integrator locates where z crosses 0 and −2b.
+  bool has_nonlinear_meshes() const { return any_nonlinear; }
+  bool is_nonlinear(unsigned int m) const { return meshes[m].nonlinear; }
+  double free_play(unsigned int m) const { return meshes[m].backlash; }
+  void flank_approach(double time, const double* angle, const double* velocity, double* approach,
+                      double* approach_rate) const;
+  // [mesh orders] highest harmonic of the TE excitation over the meshes.
+  double highest_excitation_order() const;
+
 private:
   struct CompiledMesh
   {
@@ -213,7 +231,19 @@ private:
     double contact_ratio, approach_ratio;
     double position_rate, initial_position;
     MeshStiffness stiffness;
+    bool nonlinear = false;
+    double backlash = 0.; // [m] 2b
+    TransmissionError transmission_error;
+    MeshStiffness back_stiffness;
+    double mean_transmission_error = 0.; // [m]
   };
+  // e [m], ė [m/s] and k_back [N/m] of a nonlinear mesh at one instant.
+  struct NonlinearState
+  {
+    double error = 0., error_rate = 0., back_stiffness = 0.;
+  };
+  void update_cache(double time) const;
+  double largest_stiffness(const CompiledMesh& mesh) const;
   MeshStiffnessState mesh_state(const CompiledMesh& mesh, double time) const;
   void assemble(const std::vector<double>& k, const std::vector<double>& sigma, Eigen::MatrixXd& K,
                 Eigen::MatrixXd& C) const;
@@ -238,8 +268,10 @@ private:
   std::vector<double> nominal_forces;
   std::vector<Suspension> suspensions;
   bool general = false;
+  bool any_nonlinear = false;
   // Mesh states at cached_time (acceleration() only; a model is used by one thread at a time).
   mutable double cached_time = std::numeric_limits<double>::quiet_NaN();
   mutable std::vector<MeshStiffnessState> cached_states;
+  mutable std::vector<NonlinearState> cached_nonlinear;
 };
 } // namespace gearstiff::dynamics

@@ -430,6 +430,7 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       mesh.friction_coefficient = input.meshes[m].friction_coefficient;
       mesh.driver_friction_arm = input.meshes[m].driver_friction_arm;
       mesh.driven_friction_arm = input.meshes[m].driven_friction_arm;
+      mesh.nonlinear = input.meshes[m].nonlinear;
       train.meshes.push_back(mesh);
       model.spec_mesh.push_back(m);
       model.mesh_copy.push_back(j);
@@ -473,8 +474,16 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
     const std::size_t m = model.spec_mesh[i];
     const std::optional<unsigned int>& fe_driver = input.meshes[m].stiffness_driver;
     if (fe_driver && (*fe_driver == 0) != (a_drives[m] == 1))
-      train.meshes[i].stiffness =
-          input.meshes[m].stiffness.reversed(model.spec_mesh_contact_ratio[m]);
+    {
+      const double contact_ratio = model.spec_mesh_contact_ratio[m];
+      train.meshes[i].stiffness = input.meshes[m].stiffness.reversed(contact_ratio);
+      if (std::optional<NonlinearMesh>& nonlinear = train.meshes[i].nonlinear)
+      {
+        nonlinear->transmission_error = nonlinear->transmission_error.reversed(contact_ratio);
+        if (nonlinear->back_stiffness)
+          nonlinear->back_stiffness = nonlinear->back_stiffness->reversed(contact_ratio);
+      }
+    }
   }
   // Approach ratios (the driven gear's tip starts the contact), friction arms, phases.
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)

@@ -49,6 +49,9 @@ struct TrainMeshDynamics
   // reversal, friction and the sun/ring phasing, so k(x) and the phase share one origin (A).
   std::optional<double> contact_ratio;  // [-]
   std::optional<double> approach_ratio; // [-]
+  // Nonlinear mesh law (nonlinear_mesh.h), the same for every copy; its TE and back-flank
+  // stiffness are reversed with `stiffness` where the other gear drives.
+  std::optional<NonlinearMesh> nonlinear;
 };
 
 struct TrainSuspension
