@@ -11,7 +11,9 @@
 // How the paper's 3-DOF equations are implemented (sign of friction, phase, start) is described
 // in dynamics/torsional_model.h; every K_v is reported with the window, phase and start used.
 #include "app/command.h"
+#include "app/dynamics_lateral.h"
 #include "app/dynamics_parameters.h"
+#include "app/lateral_parameters.h"
 #include "app/units.h"
 #include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/simulation.h"
@@ -303,6 +305,11 @@ void plot_nonlinear(CommandContext& context, Report& report, const std::string& 
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
+  if (lateral_model_selected(prm)) // issue 30: dynamics_lateral.cc
+  {
+    run_lateral_dynamics(prm, context);
+    return;
+  }
   const DynamicsParameters p = parse_dynamics_parameters(prm);
   const TorsionalModel model(p.train);
   Report& report = context.report;
@@ -577,5 +584,10 @@ const CommandRegistration registration(Command{
     "speed sweep, and ISO 6336-1 method B K_v beside it. Built-in case: the split-path gearbox\n"
     "of Reszuta & Drewniak 2015 (docs/references.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° "
     "apart.",
-    declare_dynamics_parameters, run});
+    [](dealii::ParameterHandler& prm)
+    {
+      declare_dynamics_parameters(prm);
+      declare_lateral_parameters(prm);
+    },
+    run});
 } // namespace

@@ -513,10 +513,12 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "print the published split-path values (docs/references.md §1, Reszuta & "
                     "Drewniak 2015) beside ours when the train is that case (T1 and the base "
                     "radii of Mesh 1); false: never");
-  prm.declare_entry("model", "gears and meshes", Selection("gears and meshes|train"),
+  prm.declare_entry("model", "gears and meshes", Selection("gears and meshes|train|lateral"),
                     "'gears and meshes': the sections Gear n / Mesh n (a tree, default: the "
                     "split path); 'train': the kinematics command's Train description (gears, "
-                    "carriers, planets, meshes, ...) with the sections Train mesh n");
+                    "carriers, planets, meshes, ...) with the sections Train mesh n; 'lateral': "
+                    "one planetary stage of that description as the planar lateral-torsional "
+                    "model (Lin & Parker 1999: modes, classes, load sharing, bearing forces)");
   prm.declare_entry("pressure angle", "20", Double(0., 45.),
                     "train model: pressure angle of the standard teeth (x = 0, h_a* = 1) for "
                     "base radii, contact and approach ratios (degrees)");
@@ -1025,5 +1027,20 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
         p.initial_position +
         dynamics::mesh_phase_from_placement(p.train.meshes[m].driver_teeth, p.placement_angle[m]);
   return p;
+}
+} // namespace gearstiff::app
+
+namespace gearstiff::app
+{
+// issue 30: the lateral model's view of a Train mesh (dynamics_parameters.h).
+TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio)
+{
+  const std::string section = train_mesh_section(m);
+  const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
+  const double ratio = physics.file ? physics.file->pair.contact_ratio : contact_ratio;
+  return {physics.stiffness.mean_stiffness(ratio), physics.damping,
+          physics.stiffness.description() + ", mean " +
+              format_number(physics.stiffness.mean_stiffness(ratio) * 1e-6, 6) + " N/µm",
+          physics.stiffness, ratio};
 }
 } // namespace gearstiff::app

@@ -65,3 +65,19 @@ void declare_dynamics_parameters(dealii::ParameterHandler& prm);
 // Throws InputError naming "Section/parameter" for values the patterns cannot catch.
 DynamicsParameters parse_dynamics_parameters(dealii::ParameterHandler& prm);
 } // namespace gearstiff::app
+
+namespace gearstiff::app
+{
+// issue 30 (Train/model = lateral): Train mesh m + 1 reduced to what the lateral model uses,
+// its mean stiffness over a mesh cycle (ε_α `contact_ratio`, or the FE file's own) and damping.
+struct TrainMeshMean
+{
+  double stiffness = 0.;         // [N/m]
+  double damping = 0.;           // [N·s/m]
+  std::string description;       // the stiffness source, for the report
+  dynamics::MeshStiffness curve; // k(x) for the time response
+  double contact_ratio = 0.;     // [-] ε_α of k(x)
+};
+TrainMeshMean parse_train_mesh_mean(dealii::ParameterHandler& prm, unsigned int m,
+                                    double contact_ratio);
+} // namespace gearstiff::app

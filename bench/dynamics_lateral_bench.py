@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""Speed of the lateral-torsional stage model (issue 30) through `gearstiff dynamics`.
+
+    python3 bench/dynamics_lateral_bench.py [path/to/gearstiff]   (default: build/app/gearstiff)
+
+Targets: the modes (with their classification and energies) of a 6-planet stage in at most
+10 ms; 200 000 RK4 steps of the 3-planet stage in at most 0.5 s. The stage is Lin & Parker's
+example system (tests/dynamics/cli/lateral_lin_parker.prm). Prints the median of five runs of
+each (wall time reported by the command) and its ratio to the target. Run it holding the build
+lock on a shared machine.
+"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+
+root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
+prm = os.path.join(root, "tests", "dynamics", "cli", "lateral_lin_parker.prm")
+
+
+def run(*settings):
+    args = [binary, "dynamics", prm, "--json"]
+    for s in settings:
+        args += ["--set", s]
+    out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
+    return json.loads(out)["values"]
+
+
+def median_of_five(key, *settings):
+    runs = [run(*settings) for _ in range(5)]
+    return statistics.median(r[key]["value"] for r in runs), runs[0]
+
+
+short = ["Simulation/simulated time=0.0001", "Simulation/time step=1", "Train/carrier radii=c: 120"]
+ms, _ = median_of_five("modes_time", "Train/planets=p: c*6", *short)
+print(f"modes of the 6-planet stage: {ms:.3f} ms (target 10 ms, ratio {ms / 10:.3f})")
+
+steps = ["Train/planets=p: c*3", "Simulation/time step=1", "Simulation/simulated time=0.2"]
+ms, values = median_of_five("integration_time", *steps)
+print(f"RK4 {values['steps']['value']:.0f} steps of the 3-planet stage: {ms:.1f} ms "
+      f"(target 500 ms, ratio {ms / 500:.3f}); RK4 limit {values['rk4_step_limit']['value']:.3g} µs")

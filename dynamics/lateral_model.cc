@@ -1,0 +1,558 @@
+#include "dynamics/lateral_model.h"
+
+#include "errors/errors.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace gearstiff::dynamics
+{
+namespace
+{
+std::string format(double value, int digits = 5)
+{
+  std::ostringstream s;
+  s.precision(digits);
+  s << value;
+  return s.str();
+}
+
+const LateralMember central_members[3] = {LateralMember::carrier, LateralMember::ring,
+                                          LateralMember::sun};
+
+const LateralCentralMember& member_data(const LateralStage& stage, LateralMember member)
+{
+  switch (member)
+  {
+  case LateralMember::carrier:
+    return stage.carrier;
+  case LateralMember::ring:
+    return stage.ring;
+  default:
+    return stage.sun;
+  }
+}
+
+void require_positive(double value, const std::string& parameter, const std::string& what)
+{
+  if (!(value > 0.) || !std::isfinite(value))
+    throw InputError(parameter, what + " must be positive (is " + format(value) + ")");
+}
+
+void require_non_negative(double value, const std::string& parameter, const std::string& what)
+{
+  if (!(value >= 0.) || !std::isfinite(value))
+    throw InputError(parameter, what + " must not be negative (is " + format(value) + ")");
+}
+
+// Angle wrapped to [0, 2π).
+double wrap(double angle)
+{
+  const double turn = 2. * M_PI;
+  return angle - turn * std::floor(angle / turn);
+}
+} // namespace
+
+std::string lateral_member_name(LateralMember member)
+{
+  switch (member)
+  {
+  case LateralMember::carrier:
+    return "carrier";
+  case LateralMember::ring:
+    return "ring";
+  default:
+    return "sun";
+  }
+}
+
+std::string lateral_mode_class_name(LateralModeClass type)
+{
+  switch (type)
+  {
+  case LateralModeClass::rotational:
+    return "rotational";
+  case LateralModeClass::translational:
+    return "translational";
+  case LateralModeClass::planet:
+    return "planet";
+  default:
+    return "mixed";
+  }
+}
+
+std::vector<double> equally_spaced_angles(unsigned int planets)
+{
+  std::vector<double> angles(planets);
+  for (unsigned int n = 0; n < planets; ++n)
+    angles[n] = 2. * M_PI * n / planets;
+  return angles;
+}
+
+LateralModel::LateralModel(const LateralStage& stage)
+    : data(stage), n_planet(static_cast<unsigned int>(stage.planet_angles.size()))
+{
+  if (n_planet < 1)
+    throw InputError("Train/planets", "the lateral model needs at least one planet");
+  for (const LateralMember j : central_members)
+  {
+    const LateralCentralMember& m = member_data(stage, j);
+    const std::string name = lateral_member_name(j);
+    require_positive(m.mass, "Train/masses", "the mass of the " + name);
+    require_positive(m.radius,
+                     j == LateralMember::carrier ? "Train/carrier radii" : "Train/base diameters",
+                     "the radius of the " + name);
+    if (!m.held)
+      require_positive(m.moment_of_inertia, "Train/inertias", "J of the " + name);
+    require_non_negative(m.bearing_stiffness, "Train/bearing stiffness", "the " + name + "'s");
+    require_non_negative(m.bearing_damping, "Train/bearing damping", "the " + name + "'s");
+    require_non_negative(m.torsional_stiffness, "Train/suspended members", "the " + name + "'s");
+    require_non_negative(m.torsional_damping, "Train/suspended members", "the " + name + "'s");
+  }
+  require_positive(stage.planet_mass, "Train/masses", "the planet mass");
+  require_positive(stage.planet_moment_of_inertia, "Train/inertias", "J of the planet");
+  require_positive(stage.planet_base_radius, "Train/base diameters", "the planet base radius");
+  require_positive(stage.pin_stiffness, "Train/planet pin stiffness", "the pin stiffness");
+  require_non_negative(stage.pin_damping, "Train/planet pin stiffness", "the pin damping");
+  require_positive(stage.sun_mesh_stiffness, "Train mesh 1/stiffness", "the sun mesh stiffness");
+  require_positive(stage.ring_mesh_stiffness, "Train mesh 2/stiffness", "the ring mesh stiffness");
+  require_non_negative(stage.sun_mesh_damping, "Train mesh 1/damping", "the sun mesh damping");
+  require_non_negative(stage.ring_mesh_damping, "Train mesh 2/damping", "the ring mesh damping");
+  for (const double alpha : {stage.sun_pressure_angle, stage.ring_pressure_angle})
+    if (!(alpha >= 0. && alpha < 0.5 * M_PI))
+      throw InputError("Train/pressure angle", "must lie in [0, 90) deg");
+
+  // Planets must not overlap: centres 2·r_c·sin(Δψ/2) apart, at least two tip radii.
+  const double tip = data.planet_tip_radius > 0.
+                         ? data.planet_tip_radius
+                         : data.planet_base_radius / std::cos(data.sun_pressure_angle);
+  std::vector<double> sorted;
+  for (const double psi : data.planet_angles)
+    sorted.push_back(wrap(psi));
+  std::sort(sorted.begin(), sorted.end());
+  for (unsigned int n = 0; n < n_planet && n_planet > 1; ++n)
+  {
+    const double gap =
+        n + 1 < n_planet ? sorted[n + 1] - sorted[n] : sorted.front() + 2. * M_PI - sorted.back();
+    const double distance = 2. * data.carrier.radius * std::sin(0.5 * gap);
+    if (distance <= 2. * tip)
+      throw InputError("Train/planet angles",
+                       "planets at " + format(sorted[n] * 180. / M_PI) + " and " +
+                           format(sorted[(n + 1) % n_planet] * 180. / M_PI) +
+                           " deg collide: centres " + format(distance * 1e3) +
+                           " mm apart, tip circles need " + format(2e3 * tip) + " mm");
+  }
+  for (const auto* errors : {&data.pin_error_tangential, &data.pin_error_radial})
+  {
+    if (!errors->empty() && errors->size() != n_planet)
+      throw InputError("Train/planet pin errors",
+                       "needs one value per planet (" + std::to_string(n_planet) + ")");
+    for (const double e : *errors)
+      if (!std::isfinite(e))
+        throw InputError("Train/planet pin errors", "must be finite");
+  }
+
+  const unsigned int n = n_dofs();
+  mass_diagonal.resize(n);
+  for (const LateralMember j : central_members)
+  {
+    const LateralCentralMember& m = member_data(stage, j);
+    mass_diagonal[central_dof(j, 0)] = m.mass;
+    mass_diagonal[central_dof(j, 1)] = m.mass;
+    mass_diagonal[central_dof(j, 2)] = m.moment_of_inertia / (m.radius * m.radius);
+  }
+  for (unsigned int p = 0; p < n_planet; ++p)
+  {
+    mass_diagonal[planet_dof(p, 0)] = stage.planet_mass;
+    mass_diagonal[planet_dof(p, 1)] = stage.planet_mass;
+    mass_diagonal[planet_dof(p, 2)] =
+        stage.planet_moment_of_inertia / (stage.planet_base_radius * stage.planet_base_radius);
+  }
+  for (unsigned int i = 0; i < n; ++i)
+    if (!(i % 3 == 2 && i < 9 && member_data(stage, LateralMember(i / 3)).held))
+      free.push_back(i);
+
+  // The springs of the header's deflections.
+  for (const LateralMember j : central_members)
+  {
+    const LateralCentralMember& m = member_data(stage, j);
+    for (unsigned int c = 0; c < 2; ++c)
+      if (m.bearing_stiffness > 0. || m.bearing_damping > 0.)
+        spring_list.push_back(
+            {0, 0, m.bearing_stiffness, m.bearing_damping, 0., {{central_dof(j, c), 1.}}});
+    if (!m.held && (m.torsional_stiffness > 0. || m.torsional_damping > 0.))
+    {
+      const double r2 = m.radius * m.radius;
+      spring_list.push_back({1,
+                             0,
+                             m.torsional_stiffness / r2,
+                             m.torsional_damping / r2,
+                             0.,
+                             {{central_dof(j, 2), 1.}}});
+    }
+  }
+  const double as = stage.sun_pressure_angle, ar = stage.ring_pressure_angle;
+  const unsigned int xc = central_dof(LateralMember::carrier, 0),
+                     yc = central_dof(LateralMember::carrier, 1),
+                     uc = central_dof(LateralMember::carrier, 2);
+  const unsigned int xr = central_dof(LateralMember::ring, 0),
+                     yr = central_dof(LateralMember::ring, 1),
+                     ur = central_dof(LateralMember::ring, 2);
+  const unsigned int xs = central_dof(LateralMember::sun, 0),
+                     ys = central_dof(LateralMember::sun, 1),
+                     us = central_dof(LateralMember::sun, 2);
+  for (unsigned int p = 0; p < n_planet; ++p)
+  {
+    const double psi = stage.planet_angles[p];
+    const double et = stage.pin_error_tangential.empty() ? 0. : stage.pin_error_tangential[p];
+    const double er = stage.pin_error_radial.empty() ? 0. : stage.pin_error_radial[p];
+    const unsigned int zeta = planet_dof(p, 0), eta = planet_dof(p, 1), up = planet_dof(p, 2);
+    spring_list.push_back({2,
+                           p,
+                           stage.pin_stiffness,
+                           stage.pin_damping,
+                           er,
+                           {{xc, std::cos(psi)}, {yc, std::sin(psi)}, {zeta, -1.}}});
+    spring_list.push_back({2,
+                           p,
+                           stage.pin_stiffness,
+                           stage.pin_damping,
+                           et,
+                           {{xc, -std::sin(psi)}, {yc, std::cos(psi)}, {uc, 1.}, {eta, -1.}}});
+    const double psi_s = psi - as, psi_r = psi + ar;
+    sun_mesh_spring.push_back(spring_list.size());
+    spring_list.push_back({3,
+                           p,
+                           stage.sun_mesh_stiffness,
+                           stage.sun_mesh_damping,
+                           0.,
+                           {{xs, -std::sin(psi_s)},
+                            {ys, std::cos(psi_s)},
+                            {us, 1.},
+                            {zeta, -std::sin(as)},
+                            {eta, -std::cos(as)},
+                            {up, 1.}}});
+    ring_mesh_spring.push_back(spring_list.size());
+    spring_list.push_back({4,
+                           p,
+                           stage.ring_mesh_stiffness,
+                           stage.ring_mesh_damping,
+                           0.,
+                           {{xr, -std::sin(psi_r)},
+                            {yr, std::cos(psi_r)},
+                            {ur, 1.},
+                            {zeta, std::sin(ar)},
+                            {eta, -std::cos(ar)},
+                            {up, -1.}}});
+  }
+  stiffness_matrix = Eigen::MatrixXd::Zero(n, n);
+  damping_matrix = Eigen::MatrixXd::Zero(n, n);
+  error_force = Eigen::VectorXd::Zero(n);
+  for (const Spring& s : spring_list)
+    for (const auto& [i, vi] : s.terms)
+    {
+      error_force[i] -= s.stiffness * s.preload * vi;
+      for (const auto& [j, vj] : s.terms)
+      {
+        stiffness_matrix(i, j) += s.stiffness * vi * vj;
+        damping_matrix(i, j) += s.damping * vi * vj;
+      }
+    }
+
+  // A translation that nothing holds (zero bearing stiffness where no mesh or pin restrains
+  // the stage as a whole) makes the stage drift: refuse it, naming the member that moves most.
+  const LateralModes free_modes = modes();
+  for (Eigen::Index k = 0; k < free_modes.frequencies.size(); ++k)
+  {
+    if (free_modes.frequencies[k] > 0.)
+      break;
+    double translation = 0., largest = 0.;
+    unsigned int body = 0;
+    // Central members only: the stage's rigid rotation carries the planets tangentially.
+    for (unsigned int b = 0; b < 3; ++b)
+    {
+      translation += free_modes.kinetic_energy_share(k, 2 * b);
+      if (free_modes.kinetic_energy_share(k, 2 * b) > largest)
+      {
+        largest = free_modes.kinetic_energy_share(k, 2 * b);
+        body = b;
+      }
+    }
+    if (translation > 1e-6)
+      throw InputError("Train/bearing stiffness",
+                       "the " + lateral_member_name(LateralMember(body)) +
+                           " translates freely: zero bearing stiffness with nothing else "
+                           "holding the stage in x and y");
+  }
+}
+
+std::string LateralModel::dof_name(unsigned int dof) const
+{
+  static const char* central_names[3] = {"x", "y", "u"};
+  static const char* planet_names[3] = {"zeta", "eta", "u"};
+  if (dof < 9)
+    return lateral_member_name(LateralMember(dof / 3)) + " " + central_names[dof % 3];
+  return "planet " + std::to_string((dof - 9) / 3 + 1) + " " + planet_names[(dof - 9) % 3];
+}
+
+Eigen::MatrixXd LateralModel::gyroscopic() const
+{
+  // Per body, with (x, y) in the frame turning at Ω: m(ẍ − 2Ωẏ − Ω²x), m(ÿ + 2Ωẋ − Ω²y)
+  // (Cooley & Parker 2012), planets likewise in (ζ, η).
+  const unsigned int n = n_dofs();
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n, n);
+  for (unsigned int b = 0; b < n / 3; ++b)
+  {
+    g(3 * b, 3 * b + 1) = -2. * mass_diagonal[3 * b];
+    g(3 * b + 1, 3 * b) = 2. * mass_diagonal[3 * b];
+  }
+  return g;
+}
+
+Eigen::MatrixXd LateralModel::centripetal() const
+{
+  const unsigned int n = n_dofs();
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
+  for (unsigned int b = 0; b < n / 3; ++b)
+    k(3 * b, 3 * b) = k(3 * b + 1, 3 * b + 1) = mass_diagonal[3 * b];
+  return k;
+}
+
+double LateralModel::deflection(const Spring& spring, const double* q) const
+{
+  double d = spring.preload;
+  for (const auto& [i, v] : spring.terms)
+    d += v * q[i];
+  return d;
+}
+
+double LateralModel::sun_mesh_deflection(unsigned int planet, const double* q) const
+{
+  return deflection(spring_list[sun_mesh_spring[planet]], q);
+}
+
+double LateralModel::ring_mesh_deflection(unsigned int planet, const double* q) const
+{
+  return deflection(spring_list[ring_mesh_spring[planet]], q);
+}
+
+LateralModes LateralModel::modes(double relative_tolerance) const
+{
+  const unsigned int nf = free.size(), n = n_dofs();
+  Eigen::VectorXd scale(nf); // M^(-1/2)
+  Eigen::MatrixXd a(nf, nf);
+  for (unsigned int i = 0; i < nf; ++i)
+    scale[i] = 1. / std::sqrt(mass_diagonal[free[i]]);
+  for (unsigned int i = 0; i < nf; ++i)
+    for (unsigned int j = 0; j < nf; ++j)
+      a(i, j) = scale[i] * stiffness_matrix(free[i], free[j]) * scale[j];
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
+  if (solver.info() != Eigen::Success)
+    throw SolverFailure("lateral modes", "the symmetric eigensolver did not converge");
+  const Eigen::VectorXd& lambda = solver.eigenvalues();
+  const double largest = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
+
+  LateralModes result;
+  result.frequencies.resize(nf);
+  result.shapes = Eigen::MatrixXd::Zero(n, nf);
+  for (unsigned int k = 0; k < nf; ++k)
+  {
+    // Eigenvalues of a positive semi-definite K below round-off count as rigid-body modes.
+    const double l = lambda[k] > 1e-11 * largest ? lambda[k] : 0.;
+    result.frequencies[k] = std::sqrt(l) / (2. * M_PI);
+    for (unsigned int i = 0; i < nf; ++i)
+      result.shapes(free[i], k) = scale[i] * solver.eigenvectors()(i, k);
+  }
+
+  // Energies: kinetic per body and DOF type, strain per spring group.
+  const unsigned int n_bodies = 3 + n_planet;
+  result.kinetic_energy_share = Eigen::MatrixXd::Zero(nf, 2 * n_bodies);
+  result.strain_energy_share = Eigen::MatrixXd::Zero(nf, n_spring_groups);
+  for (unsigned int k = 0; k < nf; ++k)
+  {
+    const Eigen::VectorXd v = result.shapes.col(k);
+    for (unsigned int i = 0; i < n; ++i)
+      result.kinetic_energy_share(k, 2 * (i / 3) + (i % 3 == 2 ? 1 : 0)) +=
+          mass_diagonal[i] * v[i] * v[i];
+    result.kinetic_energy_share.row(k) /= result.kinetic_energy_share.row(k).sum();
+    double total = 0.;
+    for (const Spring& s : spring_list)
+    {
+      double d = 0.;
+      for (const auto& [i, c] : s.terms)
+        d += c * v[i];
+      const double energy = 0.5 * s.stiffness * d * d;
+      result.strain_energy_share(k, s.group) += energy;
+      total += energy;
+    }
+    if (result.frequencies[k] > 0. && total > 0.)
+      result.strain_energy_share.row(k) /= total;
+    else
+      result.strain_energy_share.row(k).setZero();
+  }
+
+  // Groups of equal frequency and their class, judged on the whole group (a degenerate pair's
+  // basis is arbitrary, its subspace is not): central members' translation and rotation energy.
+  for (unsigned int k = 0; k < nf;)
+  {
+    unsigned int end = k + 1;
+    const double lk = result.frequencies[k] * result.frequencies[k];
+    while (end < nf)
+    {
+      const double le = result.frequencies[end] * result.frequencies[end];
+      if (std::abs(le - lk) >
+          relative_tolerance * std::max(le, 1e-9 * largest / (4. * M_PI * M_PI)))
+        break;
+      ++end;
+    }
+    LateralModeGroup group;
+    double translation = 0., rotation = 0., frequency = 0.;
+    for (unsigned int m = k; m < end; ++m)
+    {
+      group.modes.push_back(m);
+      frequency += result.frequencies[m];
+      for (unsigned int b = 0; b < 3; ++b)
+      {
+        translation += result.kinetic_energy_share(m, 2 * b);
+        rotation += result.kinetic_energy_share(m, 2 * b + 1);
+      }
+    }
+    group.frequency = frequency / (end - k);
+    // Exact classes have exactly zero central energy; 1e-9 of the group's energy is far above
+    // the eigenvectors' round-off (~1e-26 in energy) and far below any physical coupling.
+    const double zero = 1e-9 * (end - k);
+    group.type = translation < zero && rotation < zero ? LateralModeClass::planet
+                 : translation < zero                  ? LateralModeClass::rotational
+                 : rotation < zero                     ? LateralModeClass::translational
+                                                       : LateralModeClass::mixed;
+    result.groups.push_back(group);
+    k = end;
+  }
+  return result;
+}
+
+std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) const
+{
+  const unsigned int nf = free.size();
+  const Eigen::MatrixXd g = gyroscopic(), kc = centripetal();
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * nf, 2 * nf);
+  for (unsigned int i = 0; i < nf; ++i)
+  {
+    a(i, nf + i) = 1.;
+    const double inverse_mass = 1. / mass_diagonal[free[i]];
+    for (unsigned int j = 0; j < nf; ++j)
+    {
+      const unsigned int fi = free[i], fj = free[j];
+      a(nf + i, j) =
+          -inverse_mass * (stiffness_matrix(fi, fj) - carrier_speed * carrier_speed * kc(fi, fj));
+      a(nf + i, nf + j) = -inverse_mass * carrier_speed * g(fi, fj);
+    }
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, false);
+  if (solver.info() != Eigen::Success)
+    throw SolverFailure("lateral gyroscopic modes", "the eigensolver did not converge");
+  std::vector<double> all;
+  for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i)
+    all.push_back(std::abs(solver.eigenvalues()[i].imag()) / (2. * M_PI));
+  std::sort(all.begin(), all.end());
+  // Each frequency appears as a conjugate pair (a divergent or rigid mode as two real roots).
+  std::vector<double> frequencies;
+  for (std::size_t i = 0; i < all.size(); i += 2)
+    frequencies.push_back(0.5 * (all[i] + all[i + 1]));
+  return frequencies;
+}
+
+LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) const
+{
+  const unsigned int nf = free.size(), n = n_dofs();
+  const LateralCentralMember& in = member_data(data, load.input);
+  const LateralCentralMember& out = member_data(data, load.output);
+  if (in.held)
+    throw InputError("Train/inputs", "the input " + lateral_member_name(load.input) + " is held");
+  if (out.held || load.output == load.input)
+    throw InputError("Train/output",
+                     "the output " + lateral_member_name(load.output) + " must turn");
+  Eigen::VectorXd f = error_force;
+  f[central_dof(load.input, 2)] += load.input_torque / in.radius;
+
+  // Rigid-body modes of the free coordinates: the stage's free rotation (none when every
+  // member has a torsional support).
+  const LateralModes m = modes();
+  std::vector<Eigen::VectorXd> rigid;
+  for (Eigen::Index k = 0; k < m.frequencies.size() && m.frequencies[k] == 0.; ++k)
+    rigid.push_back(m.shapes.col(k));
+  if (rigid.size() > 1)
+    throw InputError("Train/fixed", "the stage has " + std::to_string(rigid.size()) +
+                                        " free rotations: hold or suspend a member");
+  const unsigned int uo = central_dof(load.output, 2);
+  double output_torque = 0.;
+  if (!rigid.empty())
+  {
+    // The load on the output that balances the input in the rigid rotation: v0ᵀ·f = 0.
+    const Eigen::VectorXd& v0 = rigid.front();
+    if (std::abs(v0[uo]) < 1e-12 * v0.cwiseAbs().maxCoeff())
+      throw InputError("Train/output", "the output does not turn with the stage");
+    output_torque = -v0.dot(f) / v0[uo] * out.radius;
+    f[uo] += output_torque / out.radius;
+  }
+  // [K M·v0; v0ᵀ·M 0]·[q; a] = [f; 0]: the deflection orthogonal to the rigid rotation.
+  const unsigned int extra = rigid.size();
+  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(nf + extra, nf + extra);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf + extra);
+  for (unsigned int i = 0; i < nf; ++i)
+  {
+    rhs[i] = f[free[i]];
+    for (unsigned int j = 0; j < nf; ++j)
+      system(i, j) = stiffness_matrix(free[i], free[j]);
+    if (extra)
+    {
+      const double mv = mass_diagonal[free[i]] * rigid.front()[free[i]];
+      system(i, nf) = mv;
+      system(nf, i) = mv;
+    }
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
+  if (!lu.isInvertible())
+    throw SolverFailure("lateral statics", "the stiffness matrix is singular");
+  const Eigen::VectorXd solution = lu.solve(rhs);
+
+  LateralStaticState state;
+  state.displacement = Eigen::VectorXd::Zero(n);
+  for (unsigned int i = 0; i < nf; ++i)
+    state.displacement[free[i]] = solution[i];
+  state.output_torque = output_torque;
+  const double* q = state.displacement.data();
+  state.pin_radial_force.assign(n_planet, 0.);
+  state.pin_tangential_force.assign(n_planet, 0.);
+  for (const Spring& s : spring_list)
+    if (s.group == 2)
+    {
+      // Pin force on the planet: −∂U/∂ζ = k·δ (outwards), likewise tangentially.
+      const bool radial = s.terms.size() == 3;
+      (radial ? state.pin_radial_force : state.pin_tangential_force)[s.planet] =
+          s.stiffness * deflection(s, q);
+    }
+  double sun_total = 0., ring_total = 0.;
+  for (unsigned int p = 0; p < n_planet; ++p)
+  {
+    state.sun_mesh_force.push_back(data.sun_mesh_stiffness * sun_mesh_deflection(p, q));
+    state.ring_mesh_force.push_back(data.ring_mesh_stiffness * ring_mesh_deflection(p, q));
+    sun_total += state.sun_mesh_force.back();
+    ring_total += state.ring_mesh_force.back();
+  }
+  for (unsigned int p = 0; p < n_planet; ++p)
+  {
+    state.sun_load_sharing.push_back(n_planet * state.sun_mesh_force[p] / sun_total);
+    state.ring_load_sharing.push_back(n_planet * state.ring_mesh_force[p] / ring_total);
+  }
+  for (const LateralMember j : central_members)
+  {
+    const double k = member_data(data, j).bearing_stiffness;
+    for (unsigned int c = 0; c < 2; ++c)
+      state.bearing_force(static_cast<int>(j), c) = -k * q[central_dof(j, c)];
+  }
+  return state;
+}
+} // namespace gearstiff::dynamics

@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Charts of `gearstiff dynamics` with Train/model = lateral.
+
+    plot_lateral.py sharing  LOAD_SHARING.csv OUT.png   load sharing factor per planet
+    plot_lateral.py campbell CAMPBELL.csv OUT.png       natural frequencies over carrier speed
+    plot_lateral.py orbit    ORBIT.csv OUT.png          orbit of a central member (x, y)
+
+CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
+"""
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from plot_dynamics import finish, read  # noqa: E402
+
+
+def sharing(path, png):
+    """Bars of N·F_sn/ΣF_s (sun meshes) and the ring meshes' factor per planet; 1 is equal."""
+    _, c = read(path)
+    planets = [int(p) for p in c["planet [-]"]]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    width = 0.38
+    ax.bar([p - width / 2 for p in planets], c["lsf_sun [-]"], width, label="sun meshes")
+    ax.bar([p + width / 2 for p in planets], c["lsf_ring [-]"], width, label="ring meshes")
+    ax.axhline(1.0, color="0.3", lw=0.8, ls="--", label="equal sharing")
+    ax.set_xticks(planets)
+    low = min(min(c["lsf_sun [-]"]), min(c["lsf_ring [-]"]))
+    high = max(max(c["lsf_sun [-]"]), max(c["lsf_ring [-]"]))
+    margin = max(0.02, 0.2 * (high - low))
+    ax.set_ylim(min(low, 1.0) - margin, max(high, 1.0) + margin)
+    ax.set_title("Planet load sharing factor")
+    finish(fig, ax, "planet", "load sharing factor [-]", png)
+
+
+def campbell(path, png):
+    """Every natural frequency against carrier speed (rotating carrier frame)."""
+    header, c = read(path)
+    speed = c[header[0]]
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for name in header[1:]:
+        ax.plot(speed, c[name], color="C0", lw=0.8)
+    ax.set_title("Natural frequencies with gyroscopic and centripetal terms")
+    ax.plot([], [], color="C0", lw=0.8, label="natural frequencies")
+    finish(fig, ax, "carrier speed [rpm]", "frequency [Hz]", png)
+
+
+def orbit(path, png):
+    """x against y of the central members over the steady-state window."""
+    header, c = read(path)
+    fig, ax = plt.subplots(figsize=(6, 6))
+    for i in range(1, len(header) - 1, 2):
+        label = header[i].split("_x")[0]
+        ax.plot(c[header[i]], c[header[i + 1]], lw=0.7, label=label)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_title("Orbits of the central members")
+    finish(fig, ax, "x [µm]", "y [µm]", png)
+
+
+def main(argv):
+    kind = argv[1]
+    if kind == "sharing":
+        sharing(argv[2], argv[-1])
+    elif kind == "campbell":
+        campbell(argv[2], argv[-1])
+    else:
+        orbit(argv[2], argv[-1])
+
+
+if __name__ == "__main__":
+    main(sys.argv)
