@@ -142,7 +142,7 @@ TEST(MicroGeometry, ZeroLoadLimitIsTheGeometricError)
 // the design torque T_d (the loaded TE of the unmodified pair at mode single, ≈ 7 µm at 49.4
 // N·m). TE peak-to-peak over one mesh cycle (16 positions) against torque: at zero torque it is
 // the geometric tent (C/2 peak), it falls as the load fills the reliefs and rises again beyond
-// the optimum, which is well below the unmodified pair's p-p at T_d (Harris 1958).
+// the optimum, where it is far below the unmodified pair's p-p (Harris 1958).
 // Where the minimum lies: Harris' model has one pair stiffness c along the path, so the
 // double-zone TE C/2 + F/(2c) equals the single-zone F/c at F/c = C, i.e. at T_d. The FE pair
 // is softer where it touches near a tip (the single-pair stiffness falls towards the ends of
@@ -150,7 +150,8 @@ TEST(MicroGeometry, ZeroLoadLimitIsTheGeometricError)
 // is ≈ 1.5× as compliant as at the pitch point (measured 2026-11-26: TE 8.05 µm there against
 // 6.9–7.2 µm in the single zone at T_d with C = 6 µm), and C/2 + 1.5·F/(2c) = F/c gives
 // F/c = 2C: the minimum moves to ≈ 1.5–2·T_d. Measured: the minimum among 0.25…2·T_d lies at
-// 1.5·T_d (8 torques, 32 positions, C = 6 µm); the band asserted is [1.25, 2]·T_d.
+// 1.5·T_d (32 positions, C = 6 µm) and at 1.75·T_d here (16 positions, C = 7.11 µm); the band
+// asserted is [1.25, 2]·T_d.
 TEST(MicroGeometry, HarrisMinimumNearTheDesignTorque)
 {
   GearMeshStiffnessSettings single = settings_at(0., "micro_harris_single");
@@ -186,8 +187,11 @@ TEST(MicroGeometry, HarrisMinimumNearTheDesignTorque)
   const std::size_t best = std::min_element(peak.begin(), peak.end()) - peak.begin();
   EXPECT_GE(factors[best], 1.25);
   EXPECT_LE(factors[best], 2.);
+  // Measured 2026-11-26 (C = 7.11 µm): p-p at T_d 1.71 µm relieved against 2.13 µm unmodified;
+  // at the minimum (1.75·T_d) 0.50 µm against 3.60 µm.
   const auto plain_design = summarize_transmission_error(plain.by_torque[3]);
-  EXPECT_LT(peak[3], 0.5 * plain_design.peak_to_peak);
+  EXPECT_LT(peak[3], plain_design.peak_to_peak);
+  EXPECT_LT(peak[best], 0.5 * summarize_transmission_error(plain.by_torque[best]).peak_to_peak);
   // Zero-load end: the unloaded TE is the geometric tent, peak C/2 at the middle of each
   // double zone, so its p-p is C/2 to the sampling of 16 positions (the nearest sample lies
   // within half a step of the middle: ≥ C/2·(1 − 1/(16·(ε_α − 1))) ≈ 0.88·C/2).
