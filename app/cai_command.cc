@@ -1,5 +1,6 @@
-// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair (docs/references.md
-// §1; dynamics/cai_stiffness.h) to FE contact results over the whole engagement A..E.
+// `gearstiff cai [case.prm]`: calibrates the Cai stiffness curve of one tooth pair
+// (docs/references.md §1; dynamics/cai_stiffness.h) to FE contact results over the whole engagement
+// A..E.
 //
 //   gearstiff cai -o out                                   scale only, published shape kept
 //   gearstiff cai --set "Cai calibration/fit shape=true"    the shape coefficients too
@@ -60,6 +61,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const double contact_ratio = pair.transverse_contact_ratio;
   Report& report = context.report;
+  if (!p.derived_sizes.empty())
+    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "cai");
   std::vector<dynamics::StiffnessSample> samples;

@@ -2,10 +2,15 @@
 
 #include "errors/errors.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <memory>
 #include <mutex>
 #include <pthread.h>
 #include <sstream>
@@ -203,10 +208,45 @@ std::string tools_directory()
 }
 
 CommandContext::CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
-                               const std::string& staging_directory, bool quiet)
+                               const std::string& staging_directory, bool quiet, bool show_progress)
     : mpi_communicator(communicator), pcout(pcout), staging_directory(staging_directory),
-      quiet(quiet)
+      quiet(quiet), show_progress(show_progress)
 {
+}
+
+void CommandContext::progress(const std::string& stage, const std::string& text) const
+{
+  if (!show_progress)
+    return;
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(mpi_communicator, &rank);
+  MPI_Comm_size(mpi_communicator, &ranks);
+  std::ostringstream line;
+  line << stage << ": " << text;
+  if (ranks > 1)
+    line << " [rank " << rank << "]";
+  line << '\n';
+  // One write per line, so that the lines of several ranks do not interleave within a line.
+  std::cerr << line.str() << std::flush;
+}
+
+std::function<void(const std::string&)> CommandContext::progress_counter(const std::string& stage,
+                                                                         double share) const
+{
+  const auto start = std::chrono::steady_clock::now();
+  auto done = std::make_shared<unsigned int>(0);
+  return [this, stage, share, start, done](const std::string& text)
+  {
+    ++*done;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double left = std::max(0., share - *done) * elapsed / *done;
+    std::ostringstream line;
+    line.precision(3);
+    line << text << " (" << *done << " done here of ~" << std::lround(share) << ", " << elapsed
+         << " s elapsed, ~" << left << " s left)";
+    progress(stage, line.str());
+  };
 }
 
 bool CommandContext::is_root() const

@@ -27,8 +27,10 @@ namespace gearstiff::app
 class CommandContext
 {
 public:
+  // `quiet`: plot scripts print nothing (--json or --quiet); `show_progress`: progress lines
+  // (off with --quiet).
   CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,
-                 const std::string& staging_directory, bool quiet);
+                 const std::string& staging_directory, bool quiet, bool show_progress = true);
 
   MPI_Comm mpi_communicator;
   dealii::ConditionalOStream& pcout; // progress and diagnostics (stderr when --json)
@@ -44,9 +46,20 @@ public:
             const std::string& png_name, const std::string& description);
   bool is_root() const;
 
+  // One progress line on stderr from the calling rank — any rank, the one that did the work —
+  // unless --quiet: "<stage>: <text> [rank r]" (the rank only when there are several). Never on
+  // stdout, so a --json run's stdout stays one JSON object.
+  void progress(const std::string& stage, const std::string& text) const;
+  // A counter for `total` items of one stage on this rank: call it after each item with the
+  // item's text; it prints "<stage>: <text> (<i>/<total> on this rank's share, <t> s elapsed,
+  // ~<s> s left)" through progress(). `share`: the items this rank expects (total / ranks).
+  std::function<void(const std::string&)> progress_counter(const std::string& stage,
+                                                           double share) const;
+
 private:
   std::string staging_directory;
   bool quiet;
+  bool show_progress;
 };
 
 struct Command

@@ -1,6 +1,6 @@
 // `gearstiff cycloid`: the corrected equidistant of a cycloid (Cyclo) disc for a list of contact
-// arc ratios ε (docs/references.md §4, Chmurawa & Łokiec), solved with Levenberg–Marquardt, with the
-// roller clearances of each corrected disc and the published ε = 0.27 column beside ours.
+// arc ratios ε (docs/references.md §4, Chmurawa & Łokiec), solved with Levenberg–Marquardt, with
+// the roller clearances of each corrected disc and the published ε = 0.27 column beside ours.
 //
 //   gearstiff cycloid                                      the published disc, ε = 0.27
 //   gearstiff cycloid --set "Cycloid correction/contact arc ratios=0.2, 0.27, 0.35"
@@ -167,6 +167,11 @@ void run(ParameterHandler& prm, CommandContext& context)
                 "equations: clearance Delta r at both arc ends, touching with equal slopes at S, "
                 "arc length epsilon*360deg/z_s; r_k = C(q_k - q) + r. Clearances: distance from "
                 "each roller centre to the corrected profile minus q, disc at nominal kinematics.");
+  report.add_text("roller clearances",
+                  "Δr_i at disc rotation ψ = " + format_number(disc_rotation / degree, 6) +
+                      "° (Cycloid correction/disc rotation); `gearstiff cycloid-loads` reports the "
+                      "same clearance (column gap_*) at the disc rotation of its crank angle, so "
+                      "the two agree when ψ does");
   if (context.writes_files())
     write_outline(context.output_file("disc_outline_nominal.csv", "nominal disc outline"),
                   nominal_lobe);
@@ -175,7 +180,8 @@ void run(ParameterHandler& prm, CommandContext& context)
 const CommandRegistration registration(
     {"cycloid", "cycloid disc: corrected equidistant (Levenberg-Marquardt), roller clearances",
      "Computes the correction (r_k, q_k, delta and the contact-arc angles) of a cycloid disc's\n"
-     "equidistant for each contact arc ratio epsilon, after Chmurawa & Lokiec (docs/references.md §4),\n"
+     "equidistant for each contact arc ratio epsilon, after Chmurawa & Lokiec (docs/references.md "
+     "§4),\n"
      "with the roller clearances of each corrected disc. The built-in case is the published disc\n"
      "(r = 96 mm, e = 3 mm, q = 8.5 mm, z_k = 20) whose epsilon = 0.27 column is compared.\n"
      "With -o: disc outlines (points, outward normals, arc length) as CSV.",

@@ -96,6 +96,21 @@ std::string scratch_stem(MPI_Comm communicator)
       .string();
 }
 
+// Cells of h_c across a contact below which its peak pressure is not resolved: four cells put
+// at least three nodes inside the loaded width.
+constexpr double contact_resolution_cells = 4.;
+
+// Closed length / h_c of the contact (roller or pin) with the largest pressure.
+double peak_contact_cells(const stiffness::CycloidLoadResult& r)
+{
+  const stiffness::CycloidContactLoad* peak = nullptr;
+  for (const auto* list : {&r.rollers, &r.pins})
+    for (const auto& load : *list)
+      if (load.force > 0. && (peak == nullptr || load.max_pressure > peak->max_pressure))
+        peak = &load;
+  return peak == nullptr || !(r.contact_size > 0.) ? 0. : peak->contact_length / r.contact_size;
+}
+
 // The position's figures, keys prefixed (empty for the first profile).
 void report_position(Report& report, const stiffness::CycloidLoadResult& r,
                      const std::string& prefix, const std::string& label, bool compare)
@@ -137,6 +152,23 @@ void report_position(Report& report, const stiffness::CycloidLoadResult& r,
   value("output_moment_balance", r.output_moment_balance, "-", "|Σ c_j × Q_j − M_c|/M_c");
   value("output_rotation", r.output_rotation / arcmin, "arcmin", "output rotation θ under M_c");
   value("max_contact_pressure", r.max_contact_pressure / 1e6, "MPa", "peak contact pressure");
+  // The peak pressure is a converged number only when its contact spans several cells: a Hertz
+  // line contact's pressure is an ellipse over 2a (Johnson 1985 eq. 4.43, docs/references.md
+  // §6), which a few closed nodes cannot draw. Below contact_resolution_cells cells the value
+  // depends on where the nodes fall (790 N gave 515 MPa, 741 N 855 MPa at h_c = 0.08 mm).
+  const double cells = peak_contact_cells(r);
+  value("peak_contact_cells", cells, "-",
+        "closed contact length / h_c at the peak-pressure contact (resolved: >= " +
+            format_number(contact_resolution_cells, 2) + ")");
+  if (cells < contact_resolution_cells)
+    report.add_text(prefix + "pressure unresolved",
+                    label + ": the peak-pressure contact spans " + format_number(cells, 2) +
+                        " cells of h_c = " + format_number(r.contact_size / mm, 3) + " mm (< " +
+                        format_number(contact_resolution_cells, 2) +
+                        "): max_contact_pressure is not resolved; forces are. Set Mesh/contact "
+                        "size to at most " +
+                        format_number(r.contact_size / mm * cells / contact_resolution_cells, 2) +
+                        " mm for the pressure");
   value("disc_von_mises", r.disc_von_mises / 1e6, "MPa", "largest von Mises stress in the disc");
   value("n_dofs", r.n_dofs, "-", "DoFs");
   value("active_set_iterations", r.active_set_iterations, "-", "contact active-set iterations");
@@ -157,10 +189,13 @@ void add_contact_table(Report& report, const std::string& name,
 {
   std::vector<std::string> columns{rollers ? "roller" : "pin", "angle"}, units{"-", "deg"};
   for (const auto& pc : profiles)
-    for (const std::string c : {"gap", "force", "analytic_force", "max_pressure"})
+    for (const std::string c : {"gap", "force", "analytic_force", "max_pressure", "contact_cells"})
     {
       columns.push_back(c + "_" + pc.name);
-      units.push_back(c == "gap" ? "mm" : c == "max_pressure" ? "MPa" : "N");
+      units.push_back(c == "gap"             ? "mm"
+                      : c == "max_pressure"  ? "MPa"
+                      : c == "contact_cells" ? "-"
+                                             : "N");
     }
   ReportTable& table = report.add_table(name, columns, units);
   const auto& first = results[profiles[0].position];
@@ -171,7 +206,10 @@ void add_contact_table(Report& report, const std::string& name,
     for (const auto& pc : profiles)
     {
       const auto& l = (rollers ? results[pc.position].rollers : results[pc.position].pins)[k];
-      row.insert(row.end(), {l.initial_gap / mm, l.force, l.analytic_force, l.max_pressure / 1e6});
+      const double h_c = results[pc.position].contact_size;
+      // contact_cells: closed length / h_c, below 4 the pressure is unresolved (report text).
+      row.insert(row.end(), {l.initial_gap / mm, l.force, l.analytic_force, l.max_pressure / 1e6,
+                             h_c > 0. ? l.contact_length / h_c : 0.});
     }
     table.add_row(row);
   }
@@ -319,8 +357,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
               .parent_path()
               .string();
     }
-  const auto progress = [&context](const std::string& line)
-  { context.pcout << "cycloid-loads: " << line << std::endl; };
+  // From the rank that solved the case (each takes its own, fem::distribute_items).
+  const auto progress = context.progress_counter(
+      "cycloid-loads",
+      double(cases.size()) / dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator));
   const std::vector<stiffness::CycloidLoadResult> results = stiffness::solve_cycloid_cases(
       context.mpi_communicator, cases, scratch_stem(context.mpi_communicator), progress);
 
@@ -338,8 +378,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       stiffness::CycloidLoadSettings s = bases[b];
       s.scene_file = scratch_stem(context.mpi_communicator) + "_loop_" + profiles[b].name + ".msh";
       loops.push_back(stiffness::cycloid_hysteresis(s));
-      progress("friction loop, " + profiles[b].name + ": " + std::to_string(loops.back().steps) +
-               " steps, " + std::to_string(loops.back().time) + " s");
+      if (context.is_root()) // every rank solves the same loop
+        context.progress("cycloid-loads", "friction loop " + std::to_string(b + 1) + "/" +
+                                              std::to_string(bases.size()) + ", " +
+                                              profiles[b].name + ": " +
+                                              std::to_string(loops.back().steps) + " steps, " +
+                                              format_number(loops.back().time, 3) + " s");
     }
   for (unsigned int b = 0; b < profiles.size(); ++b)
   {
@@ -354,8 +398,21 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                  "loading branches");
       report.add_value(prefix + "lost_motion", loop.lost_motion / arcmin, "arcmin",
                        pc.name + ": friction loop, mid-width rotation between ±3% of M_c");
-      report.add_value(prefix + "hysteresis", loop.hysteresis / arcmin, "arcmin",
-                       pc.name + ": friction loop width at ±3% of M_c (falling − rising)");
+      const bool resolved = loop.hysteresis > loop.hysteresis_resolution;
+      report.add_value(
+          prefix + "hysteresis", loop.hysteresis / arcmin, "arcmin",
+          pc.name + ": friction loop width at ±3% of M_c (falling − rising)" +
+              (resolved ? std::string() : std::string(", BELOW RESOLUTION: no measurable loop")));
+      report.add_value(prefix + "hysteresis_resolution", loop.hysteresis_resolution / arcmin,
+                       "arcmin",
+                       pc.name + ": what the loop width is known to (half the difference of its "
+                                 "+3% and −3% estimates)");
+      if (!resolved)
+        report.add_text(prefix + "hysteresis below resolution",
+                        pc.name + ": loop width " + format_number(loop.hysteresis / arcmin, 2) +
+                            " arcmin is below its resolution " +
+                            format_number(loop.hysteresis_resolution / arcmin, 2) +
+                            " arcmin: no measurable friction loop at this μ and mesh");
       report.add_value(prefix + "loop_wall_time", loop.time, "s",
                        pc.name + ": wall time of the friction loop (" + std::to_string(loop.steps) +
                            " load steps)");
@@ -379,6 +436,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     }
   }
   add_contact_table(report, "cycloid_rollers", profiles, results, true);
+  report.add_text("roller gaps",
+                  "gap_* of cycloid_rollers: the roller clearance Δr_i of `gearstiff cycloid` "
+                  "(distance from the roller centre to the disc profile minus q, nominal "
+                  "kinematics) at this position's disc rotation ψ = " +
+                      format_number(results[profiles[0].position].disc_rotation / degree, 6) +
+                      "° (`gearstiff cycloid --set \"Cycloid correction/disc rotation=...\"` gives "
+                      "the same table at that ψ)");
   add_contact_table(report, "cycloid_pins", profiles, results, false);
   if (p.torsional)
     add_torsion_table(report, levels, profiles, results);

@@ -216,6 +216,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                " meshes; angles relative to the nominal rotation");
   if (p.train_description)
     report_train_model(p, model, report);
+  if (!p.derived_sizes.empty())
+  {
+    std::string text;
+    for (const std::string& size : p.derived_sizes)
+      text += (text.empty() ? "" : "; ") + size;
+    report.add_text("derived values", text);
+  }
   for (unsigned int m = 0; m < model.n_meshes(); ++m)
   {
     const Mesh& mesh = p.train.meshes[m];
@@ -313,9 +320,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                       "which this linear model does not represent");
     if (p.cai_fit[m])
     {
-      report.add_value(key + "cai_fit_scale", p.cai_fit[m]->parameters.scale / 1e3, "N/mm",
+      report.add_value(key + "cai_fit_scale", p.cai_fit[m]->parameters.scale / 1e6, "N/µm",
                        mesh.name + " fitted Cai scale (single-pair peak)");
-      report.add_value(key + "cai_fit_rms", p.cai_fit[m]->rms_residual / 1e3, "N/mm",
+      report.add_value(key + "cai_fit_rms", p.cai_fit[m]->rms_residual / 1e6, "N/µm",
                        mesh.name + " Cai fit rms residual");
     }
   }
@@ -417,7 +424,11 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
         format_number(result.window_start, 8) + "," + format_number(result.window_end, 8);
     context.plot("plot_dynamics.py", {"vibration", series, window}, "dynamics_vibration.png",
                  "torsional vibration phi_i(t)");
-    context.plot("plot_dynamics.py", {"kv", series, window}, "dynamics_kv.png", "K_v(t)");
+    // A few mesh periods and the envelope per mesh period: the whole run is a solid band.
+    context.plot(
+        "plot_dynamics.py",
+        {"kv", series, window + "," + format_number(1. / result.meshes[0].mesh_frequency, 8)},
+        "dynamics_kv.png", "K_v(t): envelope per mesh period and the last periods");
     context.plot("plot_dynamics.py", {"stiffness", series, window}, "dynamics_stiffness.png",
                  "mesh stiffness k(t)");
     if (p.train_description)
@@ -457,6 +468,7 @@ const CommandRegistration registration(Command{
     "method), adaptive Dormand-Prince 5(4), implicit HHT-alpha. Reports K_v = F/F_nominal over a\n"
     "steady-state window (with the window, phase and start), the mesh-force spectrum, a K_v\n"
     "speed sweep, and ISO 6336-1 method B K_v beside it. Built-in case: the split-path gearbox\n"
-    "of Reszuta & Drewniak 2015 (docs/references.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° apart.",
+    "of Reszuta & Drewniak 2015 (docs/references.md §1), T1 = 49.4 N·m at 1450 rpm, wheels 180° "
+    "apart.",
     declare_dynamics_parameters, run});
 } // namespace

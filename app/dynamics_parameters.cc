@@ -19,6 +19,10 @@ namespace
 constexpr double micrometre = 1e-6;
 constexpr double newton_per_mm = 1e3;            // N/mm → N/m
 constexpr double newton_per_mm_micrometre = 1e9; // N/(mm·µm) → N/m²
+// Mesh damping as a ratio (issue 25): ζ = 0.05, inside the 0.03–0.17 of the gear-mesh damping
+// ratios reported in the literature (docs/references.md §10); the published split-path meshes
+// keep their c_g = 100 N·s/m (§1). Applied by apply_damping_ratios.
+constexpr double default_damping_ratio = 0.05;
 
 std::string gear_section(unsigned int i)
 {
@@ -93,8 +97,16 @@ void declare_mesh_physics(ParameterHandler& prm, double stiffness, double dampin
                       "table) or `gearstiff cai` (its calibrated Cai curve) with -o, for the "
                       "same pair (teeth, module, centre distance checked); path relative to the "
                       "working directory");
-  prm.declare_entry("stiffness", format_number(stiffness / newton_per_mm, 10), Double(),
-                    "constant: the mesh stiffness; cai: one pair's peak k'_j (N/mm)");
+  prm.declare_entry("stiffness",
+                    train_mesh ? std::string("auto") : format_number(stiffness / newton_per_mm, 10),
+                    Anything(),
+                    std::string("constant: the mesh stiffness; cai: one pair's peak k'_j; a "
+                                "number in N/mm, or with its unit: '327.2 N/µm' (the unit of "
+                                "every stiffness the program prints), 'N/um', 'N/mm', 'N/m'") +
+                        (train_mesh ? "; auto = ISO 6336-1's c' = 14 N/(mm·µm) for solid steel "
+                                      "spur gears times the smaller face width of the mesh's "
+                                      "gears in Train/face widths, else ISO 6336/face width"
+                                    : ""));
   prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
                     "c0, c1, c2 of the Cai bracket c2·s² + c1·s + c0, s = engagement "
                     "fraction (-); the published shape peaks at 1");
@@ -103,14 +115,53 @@ void declare_mesh_physics(ParameterHandler& prm, double stiffness, double dampin
                     "pitches in [0, 1) (increasing) and k in N/mm");
   prm.declare_entry("fit cai shape", "false", Bool(),
                     "cai fit: fit the three shape coefficients too, not only the scale");
-  prm.declare_entry("damping", format_number(damping, 10), Double(),
-                    "c_g, mesh damping along the line of action (N·s/m)");
-  prm.declare_entry("friction coefficient", format_number(friction, 10), Double(0., 0.99),
-                    "mu, tooth friction (-)");
+  // Damping as a ratio (issue 25): see apply_damping_ratios.
+  prm.declare_entry("damping", train_mesh ? std::string("auto") : format_number(damping, 10),
+                    Anything(),
+                    "c_g, mesh damping along the line of action (N·s/m); auto: from 'damping "
+                    "ratio'");
+  prm.declare_entry("damping ratio", format_number(default_damping_ratio, 10), Double(0., 1.),
+                    "ζ of the mesh for damping = auto (-): c_g = 2ζ·√(k_m·m_e), k_m the mean "
+                    "mesh stiffness, m_e = 1/Σ r_b²/J of the gears in the mesh; default 0.05, "
+                    "inside the 0.03–0.17 reported for gear meshes (docs/references.md §10)");
+  prm.declare_entry("friction coefficient", format_number(friction, 10),
+                    friction_coefficient_pattern(), "mu, tooth friction (-)");
   prm.declare_entry("driver friction arm", format_number(driver_arm / mm, 10), Double(0.),
                     "r_f of the driver (mm)");
   prm.declare_entry("driven friction arm", format_number(driven_arm / mm, 10), Double(0.),
                     "r_f of the driven gear (mm)");
+}
+
+// ISO 6336-1 (docs/references.md §5): c' ≈ 14 N/(mm·µm), the single stiffness of solid steel
+// spur gears with the standard basic rack when the pair's own data are not used.
+constexpr double iso_approximate_single_stiffness = 14. * newton_per_mm_micrometre; // N/m²
+
+// A stiffness as the parameter file writes it: a number in N/mm, or a number with its unit
+// (N/µm, N/um, N/mm, N/m); returned in N/m.
+double parse_stiffness_value(const std::string& text, const std::string& parameter)
+{
+  std::size_t used = 0;
+  double value = std::nan("");
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  std::string unit = used == 0 ? std::string() : text.substr(used);
+  unit.erase(0, unit.find_first_not_of(" \t"));
+  unit.erase(unit.find_last_not_of(" \t") + 1);
+  const std::pair<const char*, double> units[] = {
+      {"", newton_per_mm}, {"N/mm", newton_per_mm}, {"N/µm", 1e6}, {"N/um", 1e6}, {"N/m", 1.}};
+  if (used > 0 && std::isfinite(value))
+    for (const auto& [name, factor] : units)
+      if (unit == name)
+        return value * factor;
+  throw InputError(parameter, "'" + text +
+                                  "' is not a stiffness: a number in N/mm, or with its unit "
+                                  "(N/µm, N/mm, N/m)");
 }
 
 struct MeshPhysics
@@ -118,6 +169,7 @@ struct MeshPhysics
   dynamics::MeshStiffness stiffness;
   std::optional<dynamics::CaiFit> fit;
   double damping = 0.;                         // [N·s/m]
+  double damping_ratio = std::nan("");         // [-] ζ when damping = auto, else NaN
   double friction_coefficient = 0.;            // [-]
   double driver_friction_arm = 0.;             // [m]
   double driven_friction_arm = 0.;             // [m]
@@ -125,17 +177,41 @@ struct MeshPhysics
 };
 
 // Reads the entries of declare_mesh_physics inside the mesh's subsection `section`.
+// `automatic_stiffness` [N/m]: what 'stiffness = auto' stands for (NaN: auto not offered).
 MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section,
-                               double contact_ratio)
+                               double contact_ratio, double automatic_stiffness)
 {
   MeshPhysics physics;
-  physics.damping = prm.get_double("damping");
+  const std::string damping = prm.get("damping");
+  if (damping == "auto")
+    physics.damping_ratio = prm.get_double("damping ratio");
+  else
+  {
+    std::size_t used = 0;
+    try
+    {
+      physics.damping = std::stod(damping, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || damping.find_first_not_of(" \t", used) != std::string::npos ||
+        !std::isfinite(physics.damping))
+      throw InputError(section + "/damping",
+                       "'" + damping + "' is neither a damping (N·s/m) nor auto");
+  }
   physics.friction_coefficient = prm.get_double("friction coefficient");
   physics.driver_friction_arm = prm.get_double("driver friction arm") * mm;
   physics.driven_friction_arm = prm.get_double("driven friction arm") * mm;
 
   const std::string source = prm.get("stiffness source");
-  const double stiffness = prm.get_double("stiffness") * newton_per_mm;
+  const std::string stiffness_text = prm.get("stiffness");
+  if (stiffness_text == "auto" && std::isnan(automatic_stiffness))
+    throw InputError(section + "/stiffness", "auto is offered for Train meshes only");
+  const double stiffness = stiffness_text == "auto"
+                               ? automatic_stiffness
+                               : parse_stiffness_value(stiffness_text, section + "/stiffness");
   dynamics::CaiParameters cai = dynamics::cai_published_parameters(stiffness);
   {
     std::istringstream shape(prm.get("cai shape"));
@@ -188,12 +264,13 @@ MeshPhysics parse_mesh_physics(ParameterHandler& prm, const std::string& section
 
 // parse_mesh_physics in the subsection `section`, which is left also when it throws.
 MeshPhysics parse_mesh_physics_section(ParameterHandler& prm, const std::string& section,
-                                       double contact_ratio)
+                                       double contact_ratio,
+                                       double automatic_stiffness = std::nan(""))
 {
   prm.enter_subsection(section);
   try
   {
-    MeshPhysics physics = parse_mesh_physics(prm, section, contact_ratio);
+    MeshPhysics physics = parse_mesh_physics(prm, section, contact_ratio, automatic_stiffness);
     prm.leave_subsection();
     return physics;
   }
@@ -240,6 +317,45 @@ void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
   mesh.driven_friction_arm = physics.driven_friction_arm;
 }
 
+// ---- Mesh damping as a ratio (issue 25) ---------------------------------------------------
+// 1/m_e = Σ r²/J over the mesh's rotations: the tree form's r_b1²/J1 + r_b2²/J2, or the general
+// form's terms (signed base radii, the carrier's included) [kg].
+double mesh_equivalent_mass(const dynamics::GearTrain& train, const dynamics::Mesh& mesh)
+{
+  double compliance = 0.;
+  if (mesh.terms.empty())
+    compliance =
+        mesh.driver_base_radius * mesh.driver_base_radius / train.gears[mesh.driver].inertia +
+        mesh.driven_base_radius * mesh.driven_base_radius / train.gears[mesh.driven].inertia;
+  else
+    for (const dynamics::MeshTerm& term : mesh.terms)
+      compliance += term.coefficient * term.coefficient / train.gears[term.dof].inertia;
+  return 1. / compliance;
+}
+
+// c_g = 2ζ·√(k_m·m_e) for every mesh whose ζ (`ratios`, per model mesh) is a number; one line
+// per such mesh with a section name (`sections`, per model mesh; empty: not reported) into
+// `derived`.
+void apply_damping_ratios(dynamics::GearTrain& train, const std::vector<double>& ratios,
+                          const std::vector<std::string>& sections,
+                          std::vector<std::string>& derived)
+{
+  for (std::size_t m = 0; m < train.meshes.size(); ++m)
+  {
+    if (std::isnan(ratios[m]))
+      continue;
+    dynamics::Mesh& mesh = train.meshes[m];
+    const double stiffness = mesh.stiffness.mean_stiffness(mesh.contact_ratio);
+    const double mass = mesh_equivalent_mass(train, mesh);
+    mesh.damping = 2. * ratios[m] * std::sqrt(stiffness * mass);
+    if (!sections[m].empty())
+      derived.push_back(sections[m] + "/damping = " + format_number(mesh.damping, 4) +
+                        " N·s/m (auto: ζ = " + format_number(ratios[m], 3) +
+                        ", k_m = " + format_number(stiffness / 1e6, 4) +
+                        " N/µm, m_e = " + format_number(mass, 4) + " kg)");
+  }
+}
+// ---- end of the damping-ratio block -------------------------------------------------------
 } // namespace
 
 void declare_dynamics_parameters(ParameterHandler& prm)
@@ -254,7 +370,8 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "n1, nominal speed of gear 1 (rpm); the others follow from the base radii");
   prm.declare_entry("published reference", "true", Bool(),
                     "print the published split-path values (docs/references.md §1, Reszuta & "
-                    "Drewniak 2015) beside ours; set false for other trains");
+                    "Drewniak 2015) beside ours when the train is that case (T1 and the base "
+                    "radii of Mesh 1); false: never");
   prm.declare_entry("model", "gears and meshes", Selection("gears and meshes|train"),
                     "'gears and meshes': the sections Gear n / Mesh n (a tree, default: the "
                     "split path); 'train': the kinematics command's Train description (gears, "
@@ -401,9 +518,12 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     p.train.gears.push_back(gear);
   }
 
+  std::vector<double> damping_ratios; // per mesh, NaN: damping given
+  std::vector<std::string> mesh_sections;
   for (unsigned int m = 0; m + 1 < n_gears; ++m)
   {
     const std::string section = mesh_section(m);
+    mesh_sections.push_back(section);
     prm.enter_subsection(section);
     dynamics::Mesh mesh;
     mesh.name = section;
@@ -424,6 +544,7 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     mesh.driven = driven - 1;
     const MeshPhysics physics = parse_mesh_physics_section(prm, section, mesh.contact_ratio);
     apply_mesh_physics(physics, mesh);
+    damping_ratios.push_back(physics.damping_ratio);
     const std::optional<dynamics::CaiFit>& fit = physics.fit;
     p.stiffness_description.push_back(mesh.stiffness.description() +
                                       (fit ? " (fitted to the table)" : ""));
@@ -469,6 +590,14 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
     }
   for (unsigned int i = 0; i < n_gears; ++i)
     p.train.gears[i].torque = torque[i];
+  apply_damping_ratios(p.train, damping_ratios, mesh_sections, p.derived_sizes);
+  // The published nominal force F_cn belongs to the split-path case alone: T1 and r_b1 of it.
+  const dynamics::SplitPathCase data = dynamics::split_path_case();
+  const dynamics::Mesh& first = p.train.meshes.front();
+  p.published_reference = p.published_reference &&
+                          std::abs(torque[first.driver] - data.input_torque) < 1e-9 &&
+                          std::abs(first.driver_base_radius - data.pinion_base_radius) < 1e-9 &&
+                          std::abs(first.driven_base_radius - data.wheel_base_radius) < 1e-9;
 }
 
 // "name: v1 v2 ..., ..." with `count` non-negative finite numbers per name (`units` for the
@@ -528,6 +657,9 @@ void parse_train_extras(ParameterHandler& prm, dynamics::TrainDynamicsInput& inp
 void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
 {
   const TrainParameters train = parse_train_parameters(prm);
+  prm.enter_subsection("ISO 6336");
+  const double iso_face_width = prm.get_double("face width") * mm;
+  prm.leave_subsection();
   dynamics::TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(train.text);
   input.input_torque = train.input_torque;
@@ -536,6 +668,7 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
   if (input.spec.meshes.size() > max_train_meshes)
     throw InputError("Train/meshes", "at most " + std::to_string(max_train_meshes) +
                                          " meshes (sections 'Train mesh 1' ...)");
+  std::vector<double> spec_damping_ratios; // per Train mesh, NaN: damping given
   for (std::size_t m = 0; m < input.spec.meshes.size(); ++m)
   {
     const std::string section = train_mesh_section(m);
@@ -554,7 +687,30 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
           teeth[0] = a.teeth;
           teeth[1] = b.teeth;
         }
-    const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
+    // stiffness = auto: c'·b with this mesh's own face width (the smaller of its gears'), so
+    // that no mesh inherits the split-path pair's peak.
+    double width = 0.;
+    std::string width_origin = "ISO 6336/face width";
+    for (const dynamics::GearBlank& blank : input.blanks)
+      if ((blank.member == tm.gear_a || blank.member == tm.gear_b) &&
+          (width == 0. || blank.face_width < width))
+      {
+        width = blank.face_width;
+        width_origin = "Train/face widths";
+      }
+    if (width == 0.)
+      width = iso_face_width;
+    const double automatic_stiffness = iso_approximate_single_stiffness * width;
+    const MeshPhysics physics =
+        parse_mesh_physics_section(prm, section, contact_ratio, automatic_stiffness);
+    prm.enter_subsection(section);
+    const bool automatic = prm.get("stiffness") == "auto";
+    prm.leave_subsection();
+    if (automatic)
+      p.derived_sizes.push_back(
+          section + "/stiffness = " + format_number(automatic_stiffness / 1e6, 5) +
+          " N/µm (auto: ISO 6336-1 c' = 14 N/(mm·µm) × b = " + format_number(width / mm, 5) +
+          " mm from " + width_origin + ")");
     dynamics::TrainMeshDynamics mesh{physics.stiffness,
                                      physics.damping,
                                      physics.friction_coefficient,
@@ -576,11 +732,25 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
           " from `gearstiff " + physics.file->command + "` (" + physics.file->pair.describe() + ")";
     }
     input.meshes.push_back(mesh);
+    spec_damping_ratios.push_back(physics.damping_ratio);
     p.stiffness_description.push_back(physics.stiffness.description() + origin);
     p.cai_fit.push_back(physics.fit);
   }
   p.train_model = dynamics::build_train_model(input);
   p.train = p.train_model.train;
+  {
+    // Per model mesh (every copy) the ζ of its Train mesh; reported once per Train mesh.
+    std::vector<double> ratios;
+    std::vector<std::string> sections;
+    for (std::size_t m = 0; m < p.train.meshes.size(); ++m)
+    {
+      ratios.push_back(spec_damping_ratios[p.train_model.spec_mesh[m]]);
+      sections.push_back(p.train_model.mesh_copy[m] == 0
+                             ? train_mesh_section(p.train_model.spec_mesh[m])
+                             : std::string());
+    }
+    apply_damping_ratios(p.train, ratios, sections, p.derived_sizes);
+  }
   p.published_reference = false;
   // Per model mesh (every copy): the description of its Train mesh.
   std::vector<std::string> descriptions;

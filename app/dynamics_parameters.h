@@ -44,8 +44,9 @@ struct DynamicsParameters
   bool train_description = false;
   dynamics::TrainModel train_model;
   dynamics::GearTrain train;
-  std::vector<double> placement_angle;                  // [rad] per mesh
-  std::vector<std::string> stiffness_description;       // per mesh, for the report
+  std::vector<double> placement_angle;            // [rad] per mesh
+  std::vector<std::string> stiffness_description; // per mesh, for the report
+  std::vector<std::string> derived_sizes; // values derived from `auto` (Train mesh stiffness)
   std::vector<std::optional<dynamics::CaiFit>> cai_fit; // per mesh when "cai fit" was used
   dynamics::SimulationSettings simulation;
   double output_interval = 0.;     // [s] spacing of the time-series CSV rows

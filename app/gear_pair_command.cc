@@ -20,19 +20,10 @@ namespace
 {
 const std::string split_path_source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
 
-bool same_gear(const kinematics::GearSpec& a, const kinematics::GearSpec& b)
-{
-  auto near = [](double x, double y) { return std::abs(x - y) <= 1e-9 * (1. + std::abs(y)); };
-  return a.teeth == b.teeth && a.internal == b.internal && near(a.normal_module, b.normal_module) &&
-         near(a.pressure_angle, b.pressure_angle) && near(a.helix_angle, b.helix_angle) &&
-         near(a.profile_shift, b.profile_shift) && near(a.face_width, b.face_width) &&
-         std::abs(a.tip_diameter - b.tip_diameter) < 1e-9 &&
-         near(a.dedendum_coefficient, b.dedendum_coefficient);
-}
-
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
-  const kinematics::GearPairSpec spec = parse_gear_pair_parameters(prm);
+  std::vector<kinematics::DerivedSize> derived;
+  const kinematics::GearPairSpec spec = parse_gear_pair_parameters(prm, derived);
   const kinematics::IsoStiffnessOptions options = parse_iso_parameters(prm);
   const auto start = std::chrono::steady_clock::now();
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec);
@@ -40,10 +31,11 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const kinematics::GearPairSpec builtin = kinematics::split_path_pair();
-  const bool published = same_gear(spec.pinion, builtin.pinion) &&
-                         same_gear(spec.wheel, builtin.wheel) && spec.centre_distance == 0.;
+  // The published values belong to the built-in pair alone, recognised by its geometry.
+  const bool published = kinematics::is_split_path_pair(spec);
   Report& report = context.report;
+  if (!derived.empty())
+    report.add_text("derived sizes", kinematics::derived_sizes_text(derived));
   auto value = [&](const std::string& key, double v, double reference, const std::string& unit,
                    const std::string& description, const std::string& source)
   {
@@ -150,7 +142,8 @@ const CommandRegistration registration(Command{
     "single/double contact zones along the line of action, tip thickness, undercut and\n"
     "interference checks; then ISO 6336-1 method B stiffness c', c_γα, c_γβ with C_M, C_R, C_B "
     "and\n"
-    "the validity ranges. Default: the split-path pair of docs/references.md §1 (Reszuta & Drewniak\n"
+    "the validity ranges. Default: the split-path pair of docs/references.md §1 (Reszuta & "
+    "Drewniak\n"
     "2015), compared with the published values.",
     declare_gear_pair_parameters, run});
 } // namespace

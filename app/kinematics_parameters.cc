@@ -28,10 +28,11 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
                     "profile shift coefficient x [-] (DIN 3960: > 0 thickens the tooth)");
   prm.declare_entry("face width", format_number(gear.face_width / mm, 12), Double(0.),
                     "face width b [mm]");
-  prm.declare_entry("tip diameter", format_number(gear.tip_diameter / mm, 12), Anything(),
-                    "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x); auto (internal "
-                    "wheel) = the longest ring teeth that clear the pinion's involute by 'Gear "
-                    "pair/ring tip margin'");
+  prm.declare_entry("tip diameter", "auto", Anything(),
+                    "tip diameter d_a [mm]; 0 = standard d ± 2·m_n·(h_aP* + x); auto = the "
+                    "published tip for the teeth of the built-in case (docs/references.md §1: "
+                    "ε_α = 1.500), else standard, and for an internal wheel the longest ring teeth "
+                    "that clear the pinion's involute by 'Gear pair/ring tip margin'");
   prm.declare_entry("internal", gear.internal ? "true" : "false", Bool(),
                     "ring gear (teeth inside); only the wheel may be internal");
   prm.declare_entry("addendum coefficient", format_number(gear.addendum_coefficient, 12),
@@ -40,20 +41,25 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
                     Double(0.), "basic rack dedendum h_fP/m_n [-] (ISO 53 A: 1.25)");
   prm.declare_entry("root radius coefficient", format_number(gear.root_radius_coefficient, 12),
                     Double(0.), "basic rack root radius ρ_fP/m_n [-] (ISO 53 A: 0.38)");
-  prm.declare_entry("bore diameter", format_number(gear.bore_diameter / mm, 12), Double(0.),
-                    "bore diameter of the gear body [mm] (FE models; 0 = not given)");
+  prm.declare_entry("bore diameter", "auto", Anything(),
+                    "bore diameter of the gear body [mm] (FE models), for an internal wheel its "
+                    "outer diameter; 0 = not given; auto = 20/40 mm for the teeth of the built-in "
+                    "case (not published), else half the root diameter d_f/2, and for an internal "
+                    "wheel d_f + 2·4·m_n (a rim of four modules)");
   prm.declare_entry("web thickness", format_number(gear.web_thickness / mm, 12), Double(0.),
                     "web thickness b_s [mm] for ISO C_R; 0 = solid blank");
   prm.declare_entry("rim thickness", format_number(gear.rim_thickness / mm, 12), Double(0.),
                     "rim thickness s_R under the root [mm] for ISO C_R (webbed blanks)");
 }
 
-// "auto", or a diameter >= 0 in mm (InputError naming the parameter otherwise).
-bool parse_tip_diameter(const std::string& text, bool wheel, kinematics::GearSpec& gear)
+// "auto" (returns true, `diameter` untouched), or a diameter >= 0 in mm, stored in SI
+// (InputError naming the parameter otherwise).
+bool parse_automatic_diameter(const std::string& text, bool wheel, const std::string& key,
+                              double& diameter)
 {
   if (text == "auto")
     return true;
-  const std::string parameter = kinematics::gear_parameter_name(wheel, "tip diameter");
+  const std::string parameter = kinematics::gear_parameter_name(wheel, key);
   std::size_t used = 0;
   double value = -1.;
   try
@@ -66,26 +72,45 @@ bool parse_tip_diameter(const std::string& text, bool wheel, kinematics::GearSpe
   }
   if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !(value >= 0.))
     throw InputError(parameter, "'" + text + "' is neither a diameter >= 0 [mm] nor auto");
-  gear.tip_diameter = value * mm;
+  diameter = value * mm;
   return false;
 }
 
-// `automatic_tip` is set when the tip diameter reads "auto" (resolved once both gears are known).
-kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm, bool wheel, bool& automatic_tip)
+// `automatic_tip`/`automatic_bore` are set when the diameter reads "auto" (resolved once both
+// gears are known).
+kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm, bool wheel, bool& automatic_tip,
+                                bool& automatic_bore)
 {
   kinematics::GearSpec gear;
   gear.teeth = static_cast<unsigned int>(prm.get_integer("teeth"));
   gear.normal_module = prm.get_double("module") * mm;
+  // DIN 780 / ISO 54 modules run from 0.05 mm to 60 mm: a module far outside is a unit slip
+  // (0.003 for 3 mm in metres), blamed on the module rather than on what it makes too small.
+  const double module_mm = gear.normal_module / mm;
+  if (module_mm > 0. && module_mm < 0.05)
+    throw InputError(kinematics::gear_parameter_name(wheel, "module"),
+                     format_number(module_mm, 6) +
+                         " mm is below every standard module (DIN 780: 0.05 to 60 mm); modules "
+                         "are in mm (metres given? " +
+                         format_number(module_mm * 1e3, 6) + " mm)");
+  if (module_mm > 100.)
+    throw InputError(kinematics::gear_parameter_name(wheel, "module"),
+                     format_number(module_mm, 6) +
+                         " mm is above every standard module (DIN 780: 0.05 to 60 mm); modules "
+                         "are in mm (micrometres given? " +
+                         format_number(module_mm * 1e-3, 6) + " mm)");
   gear.pressure_angle = prm.get_double("pressure angle") * degree;
   gear.helix_angle = prm.get_double("helix angle") * degree;
   gear.profile_shift = prm.get_double("profile shift");
   gear.face_width = prm.get_double("face width") * mm;
-  automatic_tip = parse_tip_diameter(prm.get("tip diameter"), wheel, gear);
+  automatic_tip =
+      parse_automatic_diameter(prm.get("tip diameter"), wheel, "tip diameter", gear.tip_diameter);
   gear.internal = prm.get_bool("internal");
   gear.addendum_coefficient = prm.get_double("addendum coefficient");
   gear.dedendum_coefficient = prm.get_double("dedendum coefficient");
   gear.root_radius_coefficient = prm.get_double("root radius coefficient");
-  gear.bore_diameter = prm.get_double("bore diameter") * mm;
+  automatic_bore = parse_automatic_diameter(prm.get("bore diameter"), wheel, "bore diameter",
+                                            gear.bore_diameter);
   gear.web_thickness = prm.get_double("web thickness") * mm;
   gear.rim_thickness = prm.get_double("rim thickness") * mm;
   return gear;
@@ -119,25 +144,28 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
 
 kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm)
 {
+  std::vector<kinematics::DerivedSize> derived;
+  return parse_gear_pair_parameters(prm, derived);
+}
+
+kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm,
+                                                    std::vector<kinematics::DerivedSize>& derived)
+{
   kinematics::GearPairSpec pair;
+  kinematics::AutomaticSizes automatic;
   prm.enter_subsection("Gear pair");
   pair.centre_distance = prm.get_double("centre distance") * mm;
   const double ring_tip_margin = prm.get_double("ring tip margin") * mm;
-  bool automatic_pinion_tip = false, automatic_wheel_tip = false;
   prm.enter_subsection("Pinion");
-  pair.pinion = parse_gear(prm, false, automatic_pinion_tip);
+  pair.pinion = parse_gear(prm, false, automatic.pinion_tip, automatic.pinion_bore);
   prm.leave_subsection();
   prm.enter_subsection("Wheel");
-  pair.wheel = parse_gear(prm, true, automatic_wheel_tip);
+  pair.wheel = parse_gear(prm, true, automatic.wheel_tip, automatic.wheel_bore);
   prm.leave_subsection();
   prm.leave_subsection();
-  if (automatic_pinion_tip)
-    throw InputError(kinematics::gear_parameter_name(false, "tip diameter"),
-                     "auto is offered for an internal wheel only");
-  // The longest ring teeth that keep the margin (kinematics/gear_pair.h); InputError naming
-  // Gear pair/Wheel/tip diameter for an external wheel or when no tip qualifies.
-  if (automatic_wheel_tip)
-    pair.wheel.tip_diameter = kinematics::clearing_ring_tip_diameter(pair, ring_tip_margin);
+  // The rules of kinematics/automatic_sizes.h; InputError naming the parameter for a pair the
+  // geometry refuses.
+  kinematics::resolve_automatic_sizes(pair, automatic, ring_tip_margin, derived);
   return pair;
 }
 
@@ -192,8 +220,9 @@ void declare_train_parameters(dealii::ParameterHandler& prm)
   prm.enter_subsection("Train");
   for (const TrainTextEntry& entry : train_structure_entries)
     prm.declare_entry(entry.name, train.*entry.text, Anything(), entry.documentation);
-  prm.declare_entry("input torque", "120.2", Double(),
-                    "torque on the first input [N·m] (docs/references.md §2: 120.2); 0 = no statics");
+  prm.declare_entry(
+      "input torque", "120.2", Double(),
+      "torque on the first input [N·m] (docs/references.md §2: 120.2); 0 = no statics");
   prm.declare_entry("tooth friction coefficient", "0.08", Double(0., 0.5),
                     "μ_z for the pair efficiencies [-] (docs/references.md §2: 0.08)");
   for (const TrainTextEntry& entry : train_mass_entries)

@@ -4,6 +4,7 @@
 // pair (the stiffness command compares its FE value with ISO c'·b).
 #pragma once
 
+#include "kinematics/automatic_sizes.h"
 #include "kinematics/gear_pair.h"
 #include "kinematics/gear_train.h"
 #include "kinematics/iso_stiffness.h"
@@ -14,8 +15,12 @@ namespace gearstiff::app
 {
 // Defaults: the split-path pair of docs/references.md §1 (kinematics::split_path_pair()).
 void declare_gear_pair_parameters(dealii::ParameterHandler& prm);
-// Converts to SI; the checks that need the whole pair are in kinematics::compute_gear_pair.
+// Converts to SI and resolves the sizes that read `auto` (kinematics/automatic_sizes.h); the
+// checks that need the whole pair are in kinematics::compute_gear_pair. `derived` receives one
+// entry per size the rules derived (for the report).
 kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm);
+kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm,
+                                                    std::vector<kinematics::DerivedSize>& derived);
 // Subsection "ISO 6336": C_M and the specific load.
 kinematics::IsoStiffnessOptions parse_iso_parameters(dealii::ParameterHandler& prm);
 

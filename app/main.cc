@@ -7,6 +7,7 @@
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else. Errors go to stderr as one line.
 #include "app/command.h"
+#include "app/parameter_names.h"
 #include "app/units.h"
 #include "errors/errors.h"
 #include "fem/mpi_start.h"
@@ -32,6 +33,7 @@ struct CommandLine
   std::string parameter_file;
   std::vector<std::pair<std::string, std::string>> overrides; // "section/sub/key", value
   bool json = false;
+  bool quiet = false;
   bool help = false;
   bool print_parameters = false;
   std::string output_directory;
@@ -41,7 +43,7 @@ void print_usage(std::ostream& out)
 {
   out << "gearstiff — FE mesh stiffness, frictional contact and dynamics of gear drives\n\n"
          "usage: gearstiff <command> [file.prm|file.json] [--set section/key=value ...]\n"
-         "                 [--json] [-o DIR] [--help] [--print-parameters]\n\n"
+         "                 [--json] [--quiet] [-o DIR] [--help] [--print-parameters]\n\n"
          "commands:\n";
   for (const auto& [name, command] : command_registry())
   {
@@ -53,6 +55,7 @@ void print_usage(std::ostream& out)
   out << "\noptions:\n"
          "  --set S/K=V         override parameter K of subsection S (nested: S/T/K)\n"
          "  --json              print the results as one JSON object on stdout\n"
+         "  --quiet, -q         no progress lines and diagnostics (stderr; errors still print)\n"
          "  -o DIR              write result files (CSV, JSON, VTU, PNG) and the parameters\n"
          "                      used into DIR; nothing is written if the command fails\n"
          "  --print-parameters  list the command's parameters, defaults, units and ranges\n"
@@ -83,6 +86,8 @@ CommandLine parse_command_line(int argc, char** argv)
       line.print_parameters = true;
     else if (a == "--json")
       line.json = true;
+    else if (a == "--quiet" || a == "-q")
+      line.quiet = true;
     else if (a == "-o" || a == "--output")
       line.output_directory = next_value(a);
     else if (a.rfind("--output=", 0) == 0)
@@ -159,7 +164,8 @@ std::string shortened_in(std::string message, const std::string& value)
 
 // Reads the parameter file; InputError naming the file for a missing file, a folder or a
 // parse error.
-void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
+void read_parameter_file(dealii::ParameterHandler& prm, const DeclaredSection& declared,
+                         const std::string& file)
 {
   const std::string name = shortened(file);
   std::error_code error;
@@ -171,6 +177,8 @@ void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
     throw InputError(name, "is not a regular file (a parameter file .prm or .json is expected)");
   if (access(file.c_str(), R_OK) != 0)
     throw InputError(name, "parameter file cannot be read (permissions)");
+  // Misspelt names first: the section and the nearest declared names, not deal.II's message.
+  check_parameter_file(declared, file);
   try
   {
     prm.parse_input(file, "", false, true);
@@ -181,14 +189,15 @@ void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
   }
 }
 
-void apply_override(dealii::ParameterHandler& prm, const std::string& path,
-                    const std::string& value)
+void apply_override(dealii::ParameterHandler& prm, const DeclaredSection& declared,
+                    const std::string& path, const std::string& value)
 {
   std::vector<std::string> parts;
   std::size_t start = 0;
   for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1)
     parts.push_back(path.substr(start, slash - start));
   const std::string key = path.substr(start);
+  check_parameter_name(declared, parts, key, path);
   unsigned int entered = 0;
   try
   {
@@ -267,10 +276,11 @@ int run(int argc, char** argv, MPI_Comm comm)
     return 0;
   }
 
+  const DeclaredSection declared = declared_parameters(prm);
   if (!line.parameter_file.empty())
-    read_parameter_file(prm, line.parameter_file);
+    read_parameter_file(prm, declared, line.parameter_file);
   for (const auto& [path, value] : line.overrides)
-    apply_override(prm, path, value);
+    apply_override(prm, declared, path, value);
 
   if (line.print_parameters)
   {
@@ -285,8 +295,11 @@ int run(int argc, char** argv, MPI_Comm comm)
   if (!line.output_directory.empty())
     output = std::make_unique<StagedOutput>(line.output_directory, comm);
 
-  dealii::ConditionalOStream pcout(line.json ? std::cerr : std::cout, root);
-  CommandContext context(comm, pcout, output ? output->staging_directory() : "", line.json);
+  // Progress and diagnostics go to stderr with --json (stdout holds the one JSON object) and
+  // nowhere with --quiet.
+  dealii::ConditionalOStream pcout(line.json ? std::cerr : std::cout, root && !line.quiet);
+  CommandContext context(comm, pcout, output ? output->staging_directory() : "",
+                         line.json || line.quiet, !line.quiet);
   command.run(prm, context);
 
   if (output)

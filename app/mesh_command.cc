@@ -13,20 +13,17 @@
 //
 // Without -o the mesh is generated (all checks run, the report is complete) but not kept.
 #include "app/command.h"
-#include "app/cycloid_scene_parameters.h"
 #include "app/geometry_parameters.h"
-#include "app/kinematics_parameters.h"
 #include "app/parameter_patterns.h"
+#include "app/scene.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "geometry/abaqus_deck.h"
-#include "geometry/scene_cycloid.h"
-#include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
-#include "stiffness/cycloid_analytic.h"
+#include "kinematics/gear_pair.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <unistd.h>
@@ -35,8 +32,6 @@ namespace
 {
 using namespace gearstiff;
 using namespace gearstiff::app;
-
-const std::string split_path_source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
 
 // The file format and the CalculiX/Abaqus deck's own choices (the scene supplies the rest).
 void declare_deck_parameters(ParameterHandler& prm)
@@ -52,7 +47,8 @@ void declare_deck_parameters(ParameterHandler& prm)
                     "slice: one-element-thick C3D8 with u_z = 0 (plane strain, what ccx solves "
                     "best); CPE4/CPS4: plane strain/stress quadrilaterals");
   prm.declare_entry(
-      "friction coefficient", "0.01", Double(0., 1.),
+      "friction coefficient", format_number(kinematics::split_path_published::tooth_friction, 10),
+      friction_coefficient_pattern(),
       "Coulomb μ between the flanks or the cylinders [-] (docs/references.md §1: 0.01; "
       "the cycloid deck is frictionless, as cycloid-loads)");
   prm.declare_entry("output torque", "440", Double(),
@@ -65,133 +61,24 @@ void declare_deck_parameters(ParameterHandler& prm)
 
 void declare_parameters(ParameterHandler& prm)
 {
+  // Scene/type offers every registered scene type (app/scene.h), each declaring its sections.
+  std::string names, descriptions;
+  for (const auto& [name, type] : scene_registry())
+  {
+    names += (names.empty() ? "" : "|") + name;
+    descriptions += (descriptions.empty() ? "" : "; ") + name + ": " + type.description;
+  }
   prm.enter_subsection("Scene");
-  prm.declare_entry("type", "gear pair", Selection("gear pair|cylinders|cycloid"),
-                    "what to mesh: a spur gear pair at one position (subsections Gear pair, Gear "
-                    "pair scene), two cylinders in line contact (Cylinders) or a cycloid disc "
-                    "with its rollers (Cycloid disc, Cycloid scene)");
+  prm.declare_entry("type", default_scene_type, Selection(names), "what to mesh — " + descriptions);
   prm.declare_entry("mesh file", "scene.msh", Anything(),
                     "name of the .msh file written into the -o folder");
   prm.leave_subsection();
+  for (const auto& [name, type] : scene_registry())
+    type.declare_parameters(prm);
 
-  declare_gear_pair_parameters(prm);
-
-  const geometry::GearPairSceneSpec gear;
-  prm.enter_subsection("Gear pair scene");
-  prm.declare_entry("position", "single", Selection("single|double|roll angle"),
-                    "single: pitch point if in the single-contact zone (else its middle); double: "
-                    "middle of the first double-contact zone; roll angle: see below");
-  prm.declare_entry("pinion roll angle", "20", Double(),
-                    "pinion roll angle ℓ/r_b1 of the reference pair, ℓ from T1 along the line of "
-                    "action [deg]; must lie on the path of contact (position = roll angle)");
-  prm.leave_subsection();
-  // The mesh only names the sector cut faces; the analysis that uses it chooses their support.
-  declare_gear_scene_parameters(prm, gear, false);
-  prm.enter_subsection("Gear pair scene");
-  prm.declare_entry("both flanks", "false", Bool(),
-                    "also mark the unloaded flanks as candidate contact surfaces");
-  prm.declare_entry("pinion torque", "49.4", Double(0.),
-                    "pinion torque T1 for the Hertz estimate of the contact size [N·m] "
-                    "(docs/references.md §1: 7.5 kW at 1450 rpm)");
-  declare_elastic_constants(prm, "both gears");
-  prm.leave_subsection();
-
-  const geometry::CylindersSceneSpec cylinders;
-  prm.enter_subsection("Cylinders");
-  prm.declare_entry("radius 1", "10", Double(0.), "radius of the lower cylinder [mm]");
-  prm.declare_entry("radius 2", "10", Double(0.), "radius of the upper cylinder [mm]");
-  prm.declare_entry("bore radius 1", "0", Double(0.),
-                    "bore of the lower cylinder [mm]; 0 = a half-disc whose flat face is the "
-                    "support (boundary id 5)");
-  prm.declare_entry("bore radius 2", "0", Double(0.),
-                    "bore of the upper cylinder [mm]; 0 = half-disc");
-  prm.declare_entry("force per length", "1e5", Double(0.),
-                    "normal line load for the Hertz estimate [N/m]");
-  prm.declare_entry("length", "10", Double(0.), "cylinder length (3D extrusion) [mm]");
-  declare_elastic_constants(prm, "both cylinders");
-  prm.leave_subsection();
-
-  // The common entries, then this command's own: the disc's position and the Hertz estimate.
-  declare_cycloid_scene_parameters(prm, geometry::CycloidSceneSpec());
-  prm.enter_subsection("Cycloid scene");
-  prm.declare_entry("disc rotation", "0", Double(-360., 360.),
-                    "disc rotation ψ about its own centre (degrees); the disc centre follows "
-                    "the eccentric with the ring fixed");
-  prm.declare_entry("roller force", "auto", Anything(),
-                    "roller force for the Hertz estimate of automatic contact cells (N), or auto: "
-                    "P_max and Q_max of the rigid-disc load model (stiffness/cycloid_analytic.h) "
-                    "under Abaqus deck/output torque");
-  declare_elastic_constants(prm, "the disc and the rollers");
-  prm.leave_subsection();
-
-  // The mesh sizes of all three scene types.
-  declare_scene_mesh_parameters(prm, gear.mesh);
+  // The mesh sizes of every scene type.
+  declare_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh);
   declare_deck_parameters(prm);
-}
-
-geometry::GearPairSceneSpec parse_gear_scene(ParameterHandler& prm)
-{
-  geometry::GearPairSceneSpec spec;
-  spec.pair = parse_gear_pair_parameters(prm);
-  parse_gear_scene_parameters(prm, spec);
-  spec.mesh = parse_scene_mesh_parameters(prm);
-  prm.enter_subsection("Gear pair scene");
-  spec.position = geometry::parse_pair_position(prm.get("position"), "Gear pair scene/position");
-  spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
-  spec.both_flanks = prm.get_bool("both flanks");
-  spec.pinion_torque = prm.get_double("pinion torque");
-  parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
-  prm.leave_subsection();
-  return spec;
-}
-
-geometry::CylindersSceneSpec parse_cylinders(ParameterHandler& prm)
-{
-  geometry::CylindersSceneSpec spec;
-  prm.enter_subsection("Cylinders");
-  spec.radius_1 = prm.get_double("radius 1") * mm;
-  spec.radius_2 = prm.get_double("radius 2") * mm;
-  spec.bore_radius_1 = prm.get_double("bore radius 1") * mm;
-  spec.bore_radius_2 = prm.get_double("bore radius 2") * mm;
-  spec.force_per_length = prm.get_double("force per length");
-  spec.length = prm.get_double("length") * mm;
-  parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
-  prm.leave_subsection();
-  spec.mesh = parse_scene_mesh_parameters(prm);
-  return spec;
-}
-
-geometry::CycloidSceneSpec parse_cycloid(ParameterHandler& prm, const double output_torque)
-{
-  geometry::CycloidSceneSpec spec;
-  parse_cycloid_scene_parameters(prm, spec);
-  prm.enter_subsection("Cycloid scene");
-  spec.disc_rotation = prm.get_double("disc rotation") * degree;
-  const std::string roller_force = prm.get("roller force");
-  parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
-  prm.leave_subsection();
-  spec.mesh = parse_scene_mesh_parameters(prm);
-  if (roller_force == "auto")
-  {
-    if (!(std::abs(output_torque) > 0.))
-      throw InputError("Cycloid scene/roller force",
-                       "auto estimates the forces under Abaqus deck/output torque, which is 0: "
-                       "give a force (N) or a torque");
-    // The case's own load, as `cycloid-loads` sizes its cells (stiffness/cycloid_loads.cc).
-    const stiffness::CycloidAnalyticResult estimate =
-        stiffness::analytic_cycloid_loads(spec, output_torque);
-    spec.roller_force = estimate.max_roller_force;
-    spec.pin_force = estimate.max_pin_force;
-  }
-  else
-  {
-    char* end = nullptr;
-    spec.roller_force = std::strtod(roller_force.c_str(), &end);
-    if (end == roller_force.c_str() || *end != '\0' || !(spec.roller_force > 0.))
-      throw InputError("Cycloid scene/roller force",
-                       "'" + roller_force + "' is neither auto nor a positive force (N)");
-  }
-  return spec;
 }
 
 // SI quantities of the scene in the units of the parameter files.
@@ -207,7 +94,7 @@ void add_quantity(Report& report, const geometry::SceneQuantity& q)
     report.add_value(q.key, q.value, q.unit, q.description);
 }
 
-void report_scene(const geometry::SceneInfo& info, const std::string& type, Report& report)
+void report_scene(const geometry::SceneInfo& info, const Scene& scene, Report& report)
 {
   std::string ids;
   for (const auto& [id, name] : info.material_names)
@@ -220,10 +107,7 @@ void report_scene(const geometry::SceneInfo& info, const std::string& type, Repo
 
   for (const auto& q : info.quantities)
     add_quantity(report, q);
-  if (type == "gear pair" && info.contacts.size() == 2)
-    report.add_compared_value(
-        "contact_spacing", (info.contacts[1].point - info.contacts[0].point).norm() / mm, 7.380,
-        "mm", "distance between the two contacts (transverse base pitch p_et)", split_path_source);
+  scene.report(info, report);
 
   report.add_value("contact_size", info.contact_size / mm, "mm",
                    "h_c, cell size at the contacts (smallest)");
@@ -266,10 +150,7 @@ struct DeckRequest
 {
   bool write = false;   // write the CalculiX/Abaqus deck
   bool keep_msh = true; // keep the .msh in the output folder
-  geometry::Element2D element_2d = geometry::Element2D::slice;
-  double friction = 0.;       // -
-  double penalty_factor = 0.; // -
-  double output_torque = 0.;  // N·m, cycloid: M_c
+  DeckOptions options;
 };
 
 DeckRequest parse_deck_request(ParameterHandler& prm)
@@ -281,11 +162,11 @@ DeckRequest parse_deck_request(ParameterHandler& prm)
   request.write = format != "msh";
   request.keep_msh = format != "inp";
   prm.enter_subsection("Abaqus deck");
-  request.element_2d =
+  request.options.element_2d =
       geometry::parse_element_2d(prm.get("2D elements"), "Abaqus deck/2D elements");
-  request.friction = prm.get_double("friction coefficient");
-  request.penalty_factor = prm.get_double("penalty factor");
-  request.output_torque = prm.get_double("output torque");
+  request.options.friction = prm.get_double("friction coefficient");
+  request.options.penalty_factor = prm.get_double("penalty factor");
+  request.options.output_torque = prm.get_double("output torque");
   prm.leave_subsection();
   return request;
 }
@@ -295,7 +176,7 @@ DeckRequest parse_deck_request(ParameterHandler& prm)
 void write_deck(const geometry::SceneInfo& info, geometry::AbaqusDeckSpec deck,
                 const DeckRequest& request, const std::string& msh_name, CommandContext& context)
 {
-  deck.element_2d = request.element_2d;
+  deck.element_2d = request.options.element_2d;
   const std::string name = std::filesystem::path(msh_name).replace_extension(".inp").string();
   if (context.writes_files())
   {
@@ -340,16 +221,9 @@ void run(ParameterHandler& prm, CommandContext& context)
   const DeckRequest deck = parse_deck_request(prm);
 
   // Parse everything first: a bad parameter must stop the command before gmsh runs.
-  const bool gear = type == "gear pair";
-  const geometry::GearPairSceneSpec gear_spec =
-      gear ? parse_gear_scene(prm) : geometry::GearPairSceneSpec();
-  const bool cycloid = type == "cycloid";
-  const geometry::CylindersSceneSpec cylinder_spec =
-      type == "cylinders" ? parse_cylinders(prm) : geometry::CylindersSceneSpec();
-  geometry::CycloidSceneSpec cycloid_spec =
-      cycloid ? parse_cycloid(prm, deck.output_torque) : geometry::CycloidSceneSpec();
-  // The cycloid deck ties the output pins to the output member: mesh them in their holes.
-  cycloid_spec.output_pin_bodies = cycloid_spec.output_pin_bodies || deck.write;
+  const std::unique_ptr<Scene> scene = scene_registry().at(type).parse(prm);
+  if (deck.write)
+    scene->prepare_for_deck();
 
   std::string path;
   std::filesystem::path scratch;
@@ -364,23 +238,13 @@ void run(ParameterHandler& prm, CommandContext& context)
   geometry::SceneInfo info;
   try
   {
-    geometry::GearPairScene gear_scene;
-    if (gear)
-      gear_scene =
-          with_parameter_names(gear_scene_parameter_names(),
-                               [&] { return geometry::write_gear_pair_scene(gear_spec, path); });
-    info = gear      ? gear_scene.info
-           : cycloid ? geometry::write_cycloid_scene(cycloid_spec, path)
-                     : geometry::write_cylinders_scene(cylinder_spec, path);
+    info = scene->write_mesh(path);
     if (deck.write)
-      write_deck(info,
-                 gear      ? geometry::gear_pair_deck_spec(gear_spec, gear_scene, deck.friction,
-                                                           deck.penalty_factor)
-                 : cycloid ? geometry::cycloid_deck_spec(cycloid_spec, info, deck.output_torque,
-                                                         deck.penalty_factor)
-                           : geometry::cylinders_deck_spec(cylinder_spec, info, deck.friction,
-                                                           deck.penalty_factor),
-                 deck, file_name, context);
+      write_deck(info, scene->deck_spec(info, deck.options), deck, file_name, context);
+    // The geometry and mesh as a picture (from the .msh, before a scratch copy is removed).
+    if (context.writes_files() && context.is_root())
+      context.plot("plot_mesh.py", {path}, "scene_mesh.png",
+                   "the scene's geometry and mesh, with a zoom on the contact zones");
   }
   catch (...)
   {
@@ -393,7 +257,7 @@ void run(ParameterHandler& prm, CommandContext& context)
 
   context.pcout << "mesh: " << info.kind << ", " << info.mesh.n_cells << " cells in "
                 << info.time_total << " s" << std::endl;
-  report_scene(info, type, context.report);
+  report_scene(info, *scene, context.report);
 }
 
 const CommandRegistration registration(

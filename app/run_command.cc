@@ -57,6 +57,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   StiffnessParameters p = parse_stiffness_parameters(prm);
   if (p.mode != StiffnessMode::sweep)
     throw InputError("Stiffness/mode", "the run command needs mode = sweep (its k(θ) part)");
+  // Every step after the stiffness (the published values, the split-path train's K_v) belongs to
+  // the built-in pair: another pair goes through stiffness, cai and dynamics.
+  if (!kinematics::is_split_path_pair(p.settings.scene.pair))
+    throw InputError("Gear pair", "the run command is the chain of the built-in split-path "
+                                  "gearbox (docs/references.md §1); for another pair run "
+                                  "`gearstiff stiffness`, `cai` and `dynamics`");
   Report& report = context.report;
 
   // 1. Geometry and ISO 6336.
@@ -101,7 +107,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 
   // 3. k(θ) sweep and Cai calibration.
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
-  add_stiffness_sweep_table(report, sweep, "run_sweep");
+  add_stiffness_sweep_table(report, sweep, "run_sweep", pair);
   double mean = 0., mean_even = 0.;
   unsigned int n_even = 0;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)

@@ -1,6 +1,7 @@
 // `gearstiff stiffness [case.prm]`: gear mesh stiffness from a frictional FE contact solve under
-// the published load case of docs/references.md §1 (Reszuta & Drewniak 2015): torque T1 on the pinion,
-// pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly T1.
+// the published load case of docs/references.md §1 (Reszuta & Drewniak 2015): torque T1 on the
+// pinion, pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly
+// T1.
 //
 //   gearstiff stiffness                                       single-pair position (pitch point)
 //   gearstiff stiffness --set "Stiffness/mode=double"          first double-contact zone
@@ -57,6 +58,8 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
   Report& report = context.report;
+  if (!p.derived_sizes.empty())
+    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
 
   report.add_text("load case",
                   "T1 = " + format_number(p.settings.pinion_torque, 4) +
@@ -113,7 +116,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   }
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
-  add_stiffness_sweep_table(report, sweep, "stiffness_sweep");
+  add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
   add_pair_identity(report, pair);
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
   for (const auto& r : sweep.positions)

@@ -6,6 +6,8 @@
 #include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/format.h"
+#include "kinematics/gear_pair.h"
 
 #include <algorithm>
 #include <climits>
@@ -32,7 +34,15 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.leave_subsection();
   prm.enter_subsection("Contact");
   // docs/references.md §1: the ANSYS model used μ = 0.01 between the teeth.
-  prm.set("Friction coefficient", "0.01");
+  prm.set("Friction coefficient",
+          format_number(kinematics::split_path_published::tooth_friction, 10));
+  prm.leave_subsection();
+
+  // The load has one name in every command that builds the scene (mesh, stiffness, cai, run).
+  prm.enter_subsection("Gear pair scene");
+  prm.declare_entry("pinion torque", "49.4", Double(),
+                    "T1 on the pinion [N·m], > 0 (drives the loaded flanks into contact); "
+                    "docs/references.md §1: 7.5 kW at 1450 rpm");
   prm.leave_subsection();
 
   prm.enter_subsection("Stiffness");
@@ -44,9 +54,6 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry("pinion roll angle", "20", Double(),
                     "mode roll angle: pinion roll angle ℓ/r_b1 of the reference pair, ℓ from "
                     "T1 along the line of action [deg]; must lie on the path of contact");
-  prm.declare_entry("pinion torque", "49.4", Double(),
-                    "T1 on the pinion [N·m], > 0 (drives the loaded flanks into contact); "
-                    "docs/references.md §1: 7.5 kW at 1450 rpm");
   declare_elastic_constants(prm, "both gears");
   prm.declare_entry("sweep start", "-1", Double(),
                     "pinion roll angle of the first sweep interval's start [deg]; negative: "
@@ -59,7 +66,8 @@ void declare_stiffness_parameters(ParameterHandler& prm)
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
                     "print the ANSYS values of docs/references.md §1 (Reszuta & Drewniak 2015) "
-                    "beside ours; set false for other pairs");
+                    "beside ours when the pair is that case (decided from the geometry: teeth, "
+                    "face widths, tip diameters); false: never");
   prm.leave_subsection();
 }
 
@@ -93,10 +101,9 @@ ParameterNames stiffness_parameter_names()
   ParameterNames names = gear_scene_parameter_names();
   names[geometry::scene_field::position] = "Stiffness/mode";
   names[geometry::scene_field::pinion_roll_angle] = "Stiffness/pinion roll angle";
-  names[geometry::scene_field::pinion_torque] = "Stiffness/pinion torque";
   names[geometry::scene_field::young_modulus] = "Stiffness/Young's modulus";
   names[geometry::scene_field::poisson_ratio] = "Stiffness/Poisson's ratio";
-  names[stiffness::stiffness_parameter::torque] = "Stiffness/pinion torque";
+  names[stiffness::stiffness_parameter::torque] = "Gear pair scene/pinion torque";
   names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
   names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
   return names;
@@ -147,21 +154,24 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   StiffnessParameters p;
   stiffness::GearMeshStiffnessSettings& s = p.settings;
   s.scene = stiffness::default_stiffness_scene();
-  s.scene.pair = parse_gear_pair_parameters(prm);
+  s.scene.pair = parse_gear_pair_parameters(prm, p.derived_sizes);
   parse_gear_scene_parameters(prm, s.scene);
+  prm.enter_subsection("Gear pair scene");
+  s.pinion_torque = prm.get_double("pinion torque");
+  prm.leave_subsection();
   s.scene.mesh = parse_scene_mesh_parameters(prm);
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Stiffness");
   p.mode = parse_mode(prm.get("mode"));
   s.scene.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
-  s.pinion_torque = prm.get_double("pinion torque");
   parse_elastic_constants(prm, s.material.youngs_modulus, s.material.poisson_ratio);
   const double start = prm.get_double("sweep start");
   p.sweep.base_pitches = prm.get_double("sweep base pitches");
   const long positions = prm.get_integer("sweep positions");
   p.write_vtu = prm.get_bool("write vtu");
-  p.published_reference = prm.get_bool("published reference");
+  p.published_reference =
+      prm.get_bool("published reference") && kinematics::is_split_path_pair(s.scene.pair);
   prm.leave_subsection();
 
   // A count below one becomes 0, which the sweep's own check (stiffness::sweep_positions)
@@ -226,9 +236,28 @@ stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParam
   settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
   settings.output_directory = vtu_directory(p, context, {label});
   settings.output_base = label;
+  // The stages of the one position (a 3D Q2 scene takes minutes): meshing, setup, solve.
+  settings.progress = [&context, &label](const std::string& line)
+  { context.progress(label, line); };
   // A 2D position is solved on rank 0 alone: distributed over 2 ranks the default Q2 scene
   // (53k DoFs) took 6.3 s against 6.6 s on one (tests/stiffness, DistributedPositionEqualsSerial
   // checks they agree). A 3D position is distributed over all ranks.
+  // With -o, a 2D position also gets a picture of its deformed shape and contact pressure
+  // (tools/plot_deformed.py), drawn from its VTU: written to scratch when 'write vtu' is off.
+  const bool picture = context.writes_files() && settings.scene.mesh.dimension == 2;
+  std::filesystem::path scratch_vtu;
+  if (picture && settings.output_directory.empty())
+  {
+    scratch_vtu = scratch_stem(context.mpi_communicator, label + "-vtu", true);
+    if (context.is_root())
+      std::filesystem::create_directories(scratch_vtu);
+    settings.output_directory = scratch_vtu.string();
+  }
+  const auto remove_scratch = [&]()
+  {
+    if (!scratch_vtu.empty() && context.is_root())
+      std::filesystem::remove_all(scratch_vtu);
+  };
   stiffness::GearMeshStiffnessResult result;
   try
   {
@@ -245,10 +274,22 @@ stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParam
   {
     if (context.is_root())
       std::filesystem::remove(settings.scene_file);
+    remove_scratch();
     throw;
   }
   if (context.is_root())
     std::filesystem::remove(settings.scene_file);
+  if (picture && context.is_root())
+  {
+    std::vector<std::string> pieces;
+    for (const std::string& file : result.output_files)
+      if (std::filesystem::path(file).extension() == ".vtu")
+        pieces.push_back((std::filesystem::path(settings.output_directory) / file).string());
+    if (!pieces.empty())
+      context.plot("plot_deformed.py", pieces, label + "_deformed.png",
+                   label + ": deformed shape (von Mises) and contact pressure at the position");
+  }
+  remove_scratch();
   return result;
 }
 
@@ -266,8 +307,8 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
   const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
   context.pcout << label << ": " << p.sweep.positions << " positions over " << p.sweep.base_pitches
                 << " base pitch(es) on " << ranks << " rank(s)" << std::endl;
-  const auto progress = [&context, &label](const std::string& line)
-  { context.pcout << label << ": " << line << std::endl; };
+  // From the rank that solved the position (each takes its own, fem::distribute_items).
+  const auto progress = context.progress_counter(label, double(p.sweep.positions) / ranks);
   return with_parameter_names(
       stiffness_parameter_names(),
       [&]
@@ -352,30 +393,56 @@ void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair)
                    "ε_f = AC/p_bt, start of contact to the pitch point (pinion drives)");
 }
 
-void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
-                               const std::string& name)
+bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
+                      const kinematics::GearPairGeometry& pair)
 {
-  ReportTable& table = report.add_table(
-      name,
-      {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness", "transmission_error",
-       "share_pair_m1", "share_pair_0", "share_pair_p1", "max_pressure", "pinion_root_stress",
-       "wheel_root_stress", "torque_ratio", "iterations", "dofs", "time", "rank"},
-      {"-", "deg", "-", "-", "N/um", "um", "-", "-", "-", "MPa", "MPa", "MPa", "-", "-", "-", "s",
-       "-"});
+  // A loaded pair whose closed pinion nodes reach within one contact cell of either end of the
+  // path of contact, A (the wheel tip) or E (the pinion tip), touches at a tip corner: the
+  // pressure there is an edge singularity, not a Hertz pressure, and grows with refinement.
+  const double tolerance = r.contact_size;
+  for (const auto& load : r.pairs)
+    if (load.normal_force > 0. && load.closed_nodes > 0 &&
+        (load.closed_roll_min <= pair.contact_start + tolerance ||
+         load.closed_roll_max >= pair.contact_end - tolerance))
+      return true;
+  return false;
+}
+
+void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                               const std::string& name, const kinematics::GearPairGeometry& pair)
+{
+  ReportTable& table =
+      report.add_table(name,
+                       {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness",
+                        "transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
+                        "max_pressure", "tip_edge_contact", "pinion_root_stress",
+                        "wheel_root_stress", "torque_ratio", "iterations", "dofs", "time", "rank"},
+                       {"-", "deg", "-", "-", "N/um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa",
+                        "-", "-", "-", "s", "-"});
+  std::string edges;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
     const stiffness::GearMeshStiffnessResult& r = sweep.positions[i];
     double share[3] = {0., 0., 0.};
-    for (const auto& pair : r.pairs)
-      if (pair.pair >= -1 && pair.pair <= 1)
-        share[pair.pair + 1] = pair.load_share;
+    for (const auto& load : r.pairs)
+      if (load.pair >= -1 && load.pair <= 1)
+        share[load.pair + 1] = load.load_share;
+    const bool edge = tip_edge_contact(r, pair);
+    if (edge)
+      edges += (edges.empty() ? "" : ", ") + std::to_string(i + 1);
     table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
                    double(r.loaded_pairs), r.mesh_stiffness / 1e6, r.transmission_error * 1e6,
-                   share[0], share[1], share[2], r.max_contact_pressure / 1e6,
+                   share[0], share[1], share[2], r.max_contact_pressure / 1e6, edge ? 1. : 0.,
                    r.pinion_root_stress / 1e6, r.wheel_root_stress / 1e6, r.torque_ratio,
                    double(r.active_set_iterations), double(r.n_dofs), r.total_time,
                    double(sweep.rank_of_position[i])});
   }
+  if (!edges.empty())
+    report.add_text(name + " tip edge contact",
+                    "positions " + edges +
+                        ": a loaded pair touches at a tip corner (closed nodes within one contact "
+                        "cell of A or E); their max_pressure is an edge pressure that grows with "
+                        "refinement, not a Hertz pressure (column tip_edge_contact)");
 }
 
 std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& sweep)

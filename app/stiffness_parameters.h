@@ -3,13 +3,14 @@
 // (subsections "Gear pair scene" and "Mesh" of app/geometry_parameters.h, mm and degrees), the FE
 // model ("Finite elements", "Linear solver", "Contact" of app/fe_contact_parameters.h) and the
 // load case and sweep ("Stiffness").
-// Defaults: the split-path pair of docs/references.md §1 under its published load case (T1 = 49.4 N·m,
-// μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
+// Defaults: the split-path pair of docs/references.md §1 under its published load case (T1 = 49.4
+// N·m, μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
 // accuracy-versus-cost study (docs/accuracy.md).
 #pragma once
 
 #include "app/geometry_parameters.h"
 #include "dynamics/cai_stiffness.h"
+#include "kinematics/automatic_sizes.h"
 #include "stiffness/mesh_stiffness.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 
@@ -35,7 +36,10 @@ struct StiffnessParameters
   StiffnessMode mode = StiffnessMode::single;
   stiffness::StiffnessSweepSpec sweep;
   bool write_vtu = false;
-  bool published_reference = true; // compare with docs/references.md §1 (split-path pair only)
+  // Compare with docs/references.md §1: asked for and the pair is the split-path pair
+  // (kinematics::is_split_path_pair).
+  bool published_reference = true;
+  std::vector<kinematics::DerivedSize> derived_sizes; // the `auto` sizes of the gear pair
 };
 
 // Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".
@@ -75,9 +79,14 @@ void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnes
 // `gearstiff dynamics` train reads them from the command's summary.json and rejects a table of
 // another pair (app/dynamics_stiffness_file.h).
 void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair);
-// The sweep as a table (one row per position).
+// Whether a loaded pair of the position touches at a tip corner (closed nodes within one
+// contact cell of A or E of `pair`).
+bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
+                      const kinematics::GearPairGeometry& pair);
+// The sweep as a table (one row per position; column tip_edge_contact flags edge contact at a
+// tip corner, and a report text lists those positions).
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
-                               const std::string& name);
+                               const std::string& name, const kinematics::GearPairGeometry& pair);
 
 // The sweep's mesh stiffness as the dynamics module's k(x) table "x:k, ..." (x in base
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions

@@ -28,6 +28,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from calculix_stiffness import last_rotation  # noqa: E402  (one reader of ccx's rotation)
+
 SIZES = {  # mm: stiffness::default_stiffness_scene()
     "Mesh/contact size": 0.03,
     "Mesh/fine radius": 0.15,
@@ -120,22 +123,6 @@ def read_deck(deck):
             elif isinstance(current, tuple):
                 sets[current[1]].append([int(p) for p in parts[1:]])
     return nodes, sets, rot
-
-
-def last_rotation(dat, rot):
-    """Rotation about z of the ROT NODE in the last printed increment (rad)."""
-    rotation, in_block = None, False
-    with open(dat) as f:
-        for line in f:
-            if "displacements" in line:
-                in_block = True
-            elif in_block:
-                parts = line.split()
-                if len(parts) == 4 and parts[0].isdigit() and int(parts[0]) == rot:
-                    rotation = float(parts[3])
-    if rotation is None:
-        sys.exit(f"calculix_compare: no rotation of node {rot} in {dat}")
-    return rotation
 
 
 def frd_blocks(frd, names):

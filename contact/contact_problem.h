@@ -37,7 +37,6 @@
 #include "fem/elastic_system.h"
 #include "fem/supports.h"
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
@@ -55,7 +54,8 @@ enum class IterationSolves
   full_resolve      // re-assemble and re-solve the condensed system every iteration (reference)
 };
 
-// Subsection "Contact".
+// The contact controls (their parameter-file form, subsection "Contact", is declared in
+// app/fe_contact_parameters.cc).
 struct ContactParameters
 {
   IterationSolves iteration_solves = IterationSolves::automatic;
@@ -66,9 +66,6 @@ struct ContactParameters
   double overlap_tolerance = 1e-6;  // m, initial overlap beyond this is an input error
   double friction_tolerance = 1e-8; // -, friction-force change relative to the normal force
   bool warm_start = true; // analyses of similar scenes (sweeps) start from their neighbour's zone
-
-  static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm);
 };
 
 // One slave node of a contact pair in the result.
@@ -225,6 +222,15 @@ private:
 
   struct Condensed; // the factorization, column cache and contact DoFs of the Schur method
 
+  // The steps of setup_system(): m, diagonal of the mesh's bounding box; the supports' nodes
+  // and hubs; the mortar coupling of every pair (InputError: no candidates, overlap); the
+  // initial active set.
+  double mesh_diameter() const;
+  void resolve_supports();
+  void couple_pairs();
+  void check_candidates(const Pair& pair) const;
+  void set_cold_start();
+
   // The load steps from the current states; SolverFailure when one does not converge.
   void solve_load_steps(dealii::Vector<double>& residual);
   void solve_load_step(unsigned int step, const std::vector<std::vector<NodeState>>& initial_states,
@@ -283,6 +289,7 @@ private:
   // frictionless slip (stick where it vanishes), bounded by μ λ_n of that solution.
   void start_friction(const dealii::Vector<double>& residual);
   void collect_results(const dealii::Vector<double>& residual);
+  PairResult<dim> pair_result(const Pair& pair, const dealii::Vector<double>& residual) const;
   // Contact force on a slave node from a residual r = K u − f, N.
   dealii::Tensor<1, dim> nodal_force(const SlaveNode<dim>& node,
                                      const dealii::Vector<double>& residual) const;

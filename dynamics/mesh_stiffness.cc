@@ -212,11 +212,12 @@ std::string MeshStiffness::description() const
   switch (kind)
   {
   case StiffnessSource::constant:
-    s << "constant " << constant_value << " N/m";
+    // N/µm: the unit of every mesh stiffness the program prints.
+    s << "constant " << constant_value / 1e6 << " N/µm";
     break;
   case StiffnessSource::cai:
-    s << "Cai curve, single-pair peak " << cai_curve.scale << " N/m, shape (" << cai_curve.shape[0]
-      << ", " << cai_curve.shape[1] << ", " << cai_curve.shape[2] << ")";
+    s << "Cai curve, single-pair peak " << cai_curve.scale / 1e6 << " N/µm, shape ("
+      << cai_curve.shape[0] << ", " << cai_curve.shape[1] << ", " << cai_curve.shape[2] << ")";
     break;
   case StiffnessSource::table:
     s << "k(x) table, " << table_positions.size() << " points, periodic linear interpolation";

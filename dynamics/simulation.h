@@ -1,6 +1,6 @@
 // A dynamic run of a gear train and what it yields: mesh forces, the dynamic factor
-// K_v(t) = F(t)/F_nominal (docs/references.md §1: K_v = F_c/F_cn), K_v max over a steady-state window,
-// the mesh-force spectrum, and a speed sweep (K_v max against input speed).
+// K_v(t) = F(t)/F_nominal (docs/references.md §1: K_v = F_c/F_cn), K_v max over a steady-state
+// window, the mesh-force spectrum, and a speed sweep (K_v max against input speed).
 //
 // Results depend on the start (from rest or from the static deflection), on the mesh phase and
 // on whether the start-up transient is included, so each result carries the window, phase and

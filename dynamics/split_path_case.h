@@ -1,5 +1,5 @@
-// The built-in case: the split-path spur gearbox of Reszuta & Drewniak 2015 (docs/references.md §1),
-// one pinion (gear 1) driving two wheels (gears 2, 3) through meshes 1-2 and 1-3.
+// The built-in case: the split-path spur gearbox of Reszuta & Drewniak 2015 (docs/references.md
+// §1), one pinion (gear 1) driving two wheels (gears 2, 3) through meshes 1-2 and 1-3.
 //
 // Published dynamic parameters: J1 = 1.47e-4, J2 = J3 = 7.81e-3 kg·m²; r_b1/r_b2 = 24.7/67.0 mm;
 // c_g = 100 N·s/m; μ = 0.01 with arms r_f1/r_f2 = 7.47/20.27 mm; T1 = 49.4 N·m at 1450 rpm;
@@ -12,6 +12,7 @@
 #pragma once
 
 #include "dynamics/torsional_model.h"
+#include "kinematics/gear_pair.h"
 
 namespace gearstiff::dynamics
 {
@@ -27,14 +28,14 @@ struct SplitPathCase
   double wheel_base_radius = 67.0e-3;     // [m] r_b2 = r_b3
   double single_pair_stiffness = 327.2e6; // [N/m] k'_j (ANSYS), the Cai peak
   double mesh_damping = 100.;             // [N·s/m] c_g
-  double friction_coefficient = 0.01;     // [-] μ
-  double pinion_friction_arm = 7.47e-3;   // [m] r_f1
-  double wheel_friction_arm = 20.27e-3;   // [m] r_f2 = r_f3
-  double wheel_placement_angle = M_PI;    // [rad] θ between the wheel centres
-  double face_width = 24e-3;              // [m] b of the wheels (common face width)
-  double base_pitch = 0.;                 // [m] p_et, from kinematics
-  double contact_ratio = 0.;              // [-] ε_α, from kinematics
-  double approach_ratio = 0.;             // [-] ε_f, from kinematics
+  double friction_coefficient = kinematics::split_path_published::tooth_friction; // [-] μ
+  double pinion_friction_arm = 7.47e-3;                                           // [m] r_f1
+  double wheel_friction_arm = 20.27e-3;                                           // [m] r_f2 = r_f3
+  double wheel_placement_angle = M_PI; // [rad] θ between the wheel centres
+  double face_width = 24e-3;           // [m] b of the wheels (common face width)
+  double base_pitch = 0.;              // [m] p_et, from kinematics
+  double contact_ratio = 0.;           // [-] ε_α, from kinematics
+  double approach_ratio = 0.;          // [-] ε_f, from kinematics
 };
 
 // The published case with the kinematic quantities filled in from kinematics::split_path_pair().

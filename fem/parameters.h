@@ -1,10 +1,10 @@
 // Parameters of the linear-elastic finite-element model shared by every analysis built on fem/:
 // the kinematic model (plane strain, plane stress, 3D), the element degree, the materials of the
-// bodies and the linear solver. Each struct declares its own subsection entries with units in the
-// documentation strings; parse_parameters converts to SI.
+// bodies and the linear solver, in SI. Their parameter-file form (subsections "Finite elements"
+// and "Linear solver", units in the documentation strings) is declared and parsed in
+// app/fe_contact_parameters.cc, as every parameter of the project is in app/.
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
 #include <map>
 #include <string>
 
@@ -37,9 +37,6 @@ struct ElasticityParameters
   PlanarModel model = PlanarModel::plane_strain;
   unsigned int degree = 1; // FE_Q polynomial degree, 1 or 2
   double thickness = 1.0;  // m, out-of-plane extent of a 2D model (ignored in 3D)
-
-  static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm);
 };
 
 enum class LinearSolverMethod
@@ -55,9 +52,6 @@ struct LinearSolverParameters
   LinearSolverMethod method = LinearSolverMethod::direct_mumps;
   double relative_tolerance = 1e-10; // -, iterative methods: |r| / |b|
   unsigned int max_iterations = 5000;
-
-  static void declare_parameters(dealii::ParameterHandler& prm);
-  void parse_parameters(dealii::ParameterHandler& prm);
 };
 
 std::string to_string(PlanarModel model);

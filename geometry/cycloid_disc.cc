@@ -1,5 +1,5 @@
-// Cycloid disc profile, its correction and roller clearances (docs/references.md §4, after Chmurawa &
-// Łokiec). The correction system as printed has one equation fewer than unknowns; with the
+// Cycloid disc profile, its correction and roller clearances (docs/references.md §4, after Chmurawa
+// & Łokiec). The correction system as printed has one equation fewer than unknowns; with the
 // tangency at S read as "equal slopes" it is square:
 //   unknowns  α1, α_ok1, α2, α_ok2, α_S, α_okS, q_k, δ   (r_k = r + C·(q_k − q))
 //   K(α_ok1) = N(α1) − Δr·n(α1),  K(α_ok2) = N(α2) − Δr·n(α2)   (clearance Δr at the arc ends)
@@ -317,35 +317,15 @@ std::vector<Eigen::VectorXd> starting_points(const CorrectionResiduals& residual
   }
   return starts;
 }
-} // namespace
-
-CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, double contact_arc_ratio,
-                                           double clearance_limit)
+// Far from ε ≈ 0.3 the correction is no longer small and the first-order start can miss:
+// solves at the nearest ε in [0.2, 0.4] first and follows the solution to the requested ε in
+// steps (halved when a step fails). SolverFailure when no step converges.
+Eigen::VectorXd continue_correction(CorrectionResiduals& residuals, double contact_arc_ratio,
+                                    unsigned int lobes, unsigned int& iterations,
+                                    unsigned int& evaluations)
 {
-  check_disc(nominal);
-  if (nominal.rotation != 0.)
-    throw InputError(parameter_prefix + "rotation", "the nominal disc is not rotated");
-  // The contact arc lies on one flank, which spans half a lobe pitch.
-  if (!(contact_arc_ratio > 0. && contact_arc_ratio < 0.5))
-    throw InputError("Cycloid correction/contact arc ratios",
-                     "ε must lie between 0 and 0.5 (the arc must fit on one flank)");
-  if (!(clearance_limit > 0. && clearance_limit < 0.1 * nominal.roller_radius))
-    throw InputError("Cycloid correction/clearance limit", "must be positive and small against q");
-
-  const unsigned int lobes = nominal.rollers - 1;
   const double half_lobe = M_PI / lobes;
-  const double m = shortening_coefficient(nominal);
-  CorrectionResiduals residuals;
-  residuals.nominal = nominal;
-  residuals.clearance = clearance_limit;
-  // docs/references.md §4: r_k = C·(q_k − q) + e·z_k/m.
-  residuals.slope_c = (std::sqrt(1. + m * m) - 1.) / (1. - std::sqrt(1. - m * m));
-
-  // Far from ε ≈ 0.3 the correction is no longer small and the first-order start can miss:
-  // solve at the nearest ε in [0.2, 0.4] first and follow the solution to the requested ε in
-  // steps (halved when a step fails).
   const double start_ratio = std::min(0.4, std::max(0.2, contact_arc_ratio));
-  unsigned int iterations = 0, evaluations = 0;
   Eigen::VectorXd x;
   bool solved = false;
   residuals.arc = start_ratio * 2. * M_PI / lobes;
@@ -381,6 +361,34 @@ CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, doubl
                         "no converged correction with the tangency point inside the contact arc "
                         "for ε = " +
                             std::to_string(contact_arc_ratio));
+  return x;
+}
+} // namespace
+
+CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, double contact_arc_ratio,
+                                           double clearance_limit)
+{
+  check_disc(nominal);
+  if (nominal.rotation != 0.)
+    throw InputError(parameter_prefix + "rotation", "the nominal disc is not rotated");
+  // The contact arc lies on one flank, which spans half a lobe pitch.
+  if (!(contact_arc_ratio > 0. && contact_arc_ratio < 0.5))
+    throw InputError("Cycloid correction/contact arc ratios",
+                     "ε must lie between 0 and 0.5 (the arc must fit on one flank)");
+  if (!(clearance_limit > 0. && clearance_limit < 0.1 * nominal.roller_radius))
+    throw InputError("Cycloid correction/clearance limit", "must be positive and small against q");
+
+  const unsigned int lobes = nominal.rollers - 1;
+  const double m = shortening_coefficient(nominal);
+  CorrectionResiduals residuals;
+  residuals.nominal = nominal;
+  residuals.clearance = clearance_limit;
+  // docs/references.md §4: r_k = C·(q_k − q) + e·z_k/m.
+  residuals.slope_c = (std::sqrt(1. + m * m) - 1.) / (1. - std::sqrt(1. - m * m));
+
+  unsigned int iterations = 0, evaluations = 0;
+  const Eigen::VectorXd x =
+      continue_correction(residuals, contact_arc_ratio, lobes, iterations, evaluations);
 
   Eigen::VectorXd f(8);
   residuals(x, f);

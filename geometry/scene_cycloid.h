@@ -33,7 +33,8 @@ constexpr int output_pin_surfaces = 10; // boundary id: the pins' outer surfaces
 
 struct CycloidSceneSpec
 {
-  // The ring (roller circle r, roller radius q, eccentricity e, z_k): docs/references.md §4 nominal.
+  // The ring (roller circle r, roller radius q, eccentricity e, z_k): docs/references.md §4
+  // nominal.
   CycloidDiscSpec ring = {20, 96e-3, 3e-3, 8.5e-3, 0.};
   // The disc profile; rollers = 0 takes the ring's (the nominal equidistant). A corrected
   // profile (r_k, q_k, δ from solve_cycloid_correction) goes here.
@@ -51,7 +52,7 @@ struct CycloidSceneSpec
   bool output_pin_bodies = false;       // mesh the output pins in their holes
   double output_pin_radius = 9e-3;      // m, hole radius − e: no play (not published)
   double output_pin_bore_radius = 4e-3; // m, bore of each pin, held by the output member
-  double pin_force = 3776.;             // N, Q_max of docs/references.md §4, for the Hertz estimate
+  double pin_force = 3776.; // N, Q_max of docs/references.md §4, for the Hertz estimate
 
   double contact_clearance = 1e-5; // m, rollers this close to the disc are contacts
   double roller_force = 1711.;     // N, P_max of docs/references.md §4, for the Hertz estimate

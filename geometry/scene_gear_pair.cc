@@ -1,6 +1,7 @@
 #include "geometry/scene_gear_pair.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "geometry/involute_tooth.h"
 
 #include <Eigen/Geometry>
@@ -451,10 +452,20 @@ double bore_radius(double given, double rim_thickness, const kinematics::GearSpe
                                     (gear.internal ? "outer diameter" : "bore") +
                                     " given for the gear)");
   if (sigma * (root_radius - radius) < gear.normal_module)
+  {
+    // The nearest value that keeps one module, as the parameter writes it.
+    const double limit = root_radius - sigma * gear.normal_module;
+    const std::string suggestion =
+        parameter == scene_field::wheel_rim_thickness ? "at least " + format_mm(gear.normal_module)
+        : parameter == field
+            ? (gear.internal ? "at least " : "at most ") + format_mm(limit)
+            : (gear.internal ? "an outer diameter of at least " : "a bore diameter of at most ") +
+                  format_mm(2. * limit) + ", or auto";
     throw InputError(parameter, "leaves a rim thinner than one module (" +
                                     std::to_string(gear.normal_module * 1e3) +
                                     " mm) under the root circle (root radius " +
-                                    std::to_string(root_radius * 1e3) + " mm)");
+                                    std::to_string(root_radius * 1e3) + " mm): use " + suggestion);
+  }
   return radius;
 }
 

@@ -305,7 +305,7 @@ void check_tips_and_bores(const GearPairSpec& spec, const SignedPair& p)
                            std::to_string(g.teeth) + " teeth puts the root circle at " +
                            millimetres(std::abs(df)) + ", " + (g.internal ? "inside" : "outside") +
                            " the given tip diameter " + millimetres(std::abs(da)) +
-                           " (tip diameter 0 takes the standard tip of this module)");
+                           " (tip diameter auto takes the standard tip of this module)");
     // A tip inside the base circle has no involute to run on.
     if (!(std::abs(da) > std::abs(db)))
       throw InputError(gear_parameter_name(wheel, "tip diameter"),
@@ -374,14 +374,21 @@ std::pair<double, double> check_undercut_and_interference(const GearPairSpec& sp
                      "the wheel tip reaches below the pinion's involute (involute "
                      "interference: contact starts " +
                          millimetres(result.contact_start) +
-                         " from T1, the pinion form circle at " + millimetres(form1) + ")");
+                         " from T1, the pinion form circle at " + millimetres(form1) + "); " +
+                         (spec.wheel.internal
+                              ? "set it to auto (the longest ring teeth that clear the pinion's "
+                                "involute) or a larger ring tip diameter"
+                              : "set it to auto (the standard tip for this pair) or a smaller "
+                                "wheel tip diameter"));
   const double wheel_roll_at_end = wheel_roll_length(p, result, result.contact_end);
   if (spec.wheel.internal ? wheel_roll_at_end > form2 : wheel_roll_at_end < form2)
     throw InputError(gear_parameter_name(false, "tip diameter"),
                      "the pinion tip reaches beyond the wheel's involute (involute "
                      "interference at roll length " +
                          millimetres(wheel_roll_at_end) + ", wheel form limit " +
-                         millimetres(form2) + ")");
+                         millimetres(form2) +
+                         "); set it to auto (the standard tip for this "
+                         "pair) or a smaller pinion tip diameter");
   return {form1, form2};
 }
 

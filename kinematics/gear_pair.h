@@ -155,6 +155,7 @@ namespace split_path_published
 constexpr double single_pair_stiffness = 327.222e6; // N/m, k'_j = 327 222 N/mm
 constexpr double double_pair_stiffness = 497.521e6; // N/m, k'_d = 497 521 N/mm
 constexpr double single_pair_rotation = 2.481e-4;   // rad, Δφ of the single-pair position
+constexpr double tooth_friction = 0.01;             // -, μ between the teeth of the model
 inline const std::string source = "docs/references.md §1 (Reszuta & Drewniak 2015, ANSYS)";
 } // namespace split_path_published
 } // namespace gearstiff::kinematics

@@ -1,8 +1,8 @@
 // The classic analytic load distribution of a cycloid (Cyclo) drive at one crank angle, the
-// estimate Chmurawa & Łokiec (docs/references.md §4) and the textbooks compare with: the disc is rigid
-// and turns by a small angle β about its centre C (held by the eccentric bearing); each roller i
-// is pressed along the disc normal n_i at its contact point x_i (the normal runs through the
-// roller centre and, for the nominal profile, through the pitch point), so it closes by
+// estimate Chmurawa & Łokiec (docs/references.md §4) and the textbooks compare with: the disc is
+// rigid and turns by a small angle β about its centre C (held by the eccentric bearing); each
+// roller i is pressed along the disc normal n_i at its contact point x_i (the normal runs through
+// the roller centre and, for the nominal profile, through the pitch point), so it closes by
 //
 //     δ_i = β·l_i − Δr_i,        l_i = ((x_i − C) × n_i)·z  (lever about C)
 //
@@ -23,6 +23,7 @@
 // here, which is the main difference from the FE model (docs/cycloid.md).
 #pragma once
 
+#include "fem/fields.h"
 #include "geometry/scene_cycloid.h"
 
 #include <Eigen/Core>
@@ -43,6 +44,30 @@ struct CycloidAnalyticResult
   Eigen::Vector2d bearing_force = Eigen::Vector2d::Zero(); // N, bearing on the disc
   double input_torque = 0.; // N·m, M_h = |C × F| holding the eccentric
   unsigned int loaded_rollers = 0, loaded_pins = 0;
+
+  // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
+  // completeness check of tests/stiffness/test_result_fields.cc use this list.
+  template <class Self, class Visit>
+  static void for_each_field(Self& self, Visit&& visit)
+  {
+    visit("roller_forces", self.roller_forces);
+    visit("roller_levers", self.roller_levers);
+    visit("pin_forces", self.pin_forces);
+    visit("pin_levers", self.pin_levers);
+    visit("disc_rotation", self.disc_rotation);
+    visit("output_rotation", self.output_rotation);
+    visit("max_roller_force", self.max_roller_force);
+    visit("max_pin_force", self.max_pin_force);
+    visit("bearing_force", self.bearing_force);
+    visit("input_torque", self.input_torque);
+    visit("loaded_rollers", self.loaded_rollers);
+    visit("loaded_pins", self.loaded_pins);
+  }
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    fem::serialize_fields(archive, *this);
+  }
 };
 
 // Line-contact approach δ(P) (m) of two cylinders of length `length` (m), radii r1, r2 (m,

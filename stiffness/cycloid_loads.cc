@@ -596,6 +596,15 @@ CycloidHysteresis cycloid_hysteresis(const CycloidLoadSettings& base)
   h.stiffness = 0.5 * (0.5 * m / (up(1.) - up(0.5)) + 0.5 * m / (down(-0.5) - down(-1.)));
   h.lost_motion = 0.5 * (up(0.03) + down(0.03)) - 0.5 * (up(-0.03) + down(-0.03));
   h.hysteresis = 0.5 * ((down(0.03) - up(0.03)) + (down(-0.03) - up(-0.03)));
+  double lowest = 0., highest = 0.;
+  for (const LoopPoint& point : h.points)
+  {
+    lowest = std::min(lowest, point.rotation);
+    highest = std::max(highest, point.rotation);
+  }
+  h.hysteresis_resolution =
+      std::max(0.5 * std::abs((down(0.03) - up(0.03)) - (down(-0.03) - up(-0.03))),
+               1e-9 * (highest - lowest));
   h.time = timer.wall_time();
   return h;
 }

@@ -29,6 +29,7 @@
 #pragma once
 
 #include "contact/contact_problem.h"
+#include "fem/fields.h"
 #include "fem/parameters.h"
 #include "geometry/scene_cycloid.h"
 #include "stiffness/cycloid_analytic.h"
@@ -86,6 +87,28 @@ struct CycloidContactLoad
   double contact_length = 0.;        // m
   double analytic_force = 0.;        // N, the rigid-disc estimate (cycloid_analytic.h)
   bool candidate = false;            // modelled as a contact pair
+
+  // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
+  // completeness check of tests/stiffness/test_result_fields.cc use this list.
+  template <class Self, class Visit>
+  static void for_each_field(Self& self, Visit&& visit)
+  {
+    visit("index", self.index);
+    visit("angle", self.angle);
+    visit("initial_gap", self.initial_gap);
+    visit("force", self.force);
+    visit("force_x", self.force_x);
+    visit("force_y", self.force_y);
+    visit("max_pressure", self.max_pressure);
+    visit("contact_length", self.contact_length);
+    visit("analytic_force", self.analytic_force);
+    visit("candidate", self.candidate);
+  }
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    fem::serialize_fields(archive, *this);
+  }
 };
 
 struct CycloidLoadResult
@@ -126,6 +149,56 @@ struct CycloidLoadResult
          evaluate_time = 0.;
   unsigned int meshing_attempts = 0;
   std::vector<std::string> output_files;
+
+  // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
+  // completeness check of tests/stiffness/test_result_fields.cc use this list.
+  template <class Self, class Visit>
+  static void for_each_field(Self& self, Visit&& visit)
+  {
+    visit("crank_angle", self.crank_angle);
+    visit("disc_rotation", self.disc_rotation);
+    visit("output_torque", self.output_torque);
+    visit("rollers", self.rollers);
+    visit("pins", self.pins);
+    visit("max_roller_force", self.max_roller_force);
+    visit("max_pin_force", self.max_pin_force);
+    visit("loaded_rollers", self.loaded_rollers);
+    visit("loaded_pins", self.loaded_pins);
+    visit("bearing_force", self.bearing_force);
+    visit("bearing_angle", self.bearing_angle);
+    visit("bearing_force_direction", self.bearing_force_direction);
+    visit("input_torque", self.input_torque);
+    visit("input_torque_ratio", self.input_torque_ratio);
+    visit("disc_force_balance", self.disc_force_balance);
+    visit("disc_moment_balance", self.disc_moment_balance);
+    visit("output_moment_balance", self.output_moment_balance);
+    visit("closing_rotation", self.closing_rotation);
+    visit("output_rotation", self.output_rotation);
+    visit("disc_rotation_load", self.disc_rotation_load);
+    visit("max_contact_pressure", self.max_contact_pressure);
+    visit("disc_von_mises", self.disc_von_mises);
+    visit("analytic", self.analytic);
+    visit("n_cells", self.n_cells);
+    visit("n_dofs", self.n_dofs);
+    visit("active_set_iterations", self.active_set_iterations);
+    visit("contact_size", self.contact_size);
+    visit("scene_time", self.scene_time);
+    visit("setup_time", self.setup_time);
+    visit("solve_time", self.solve_time);
+    visit("total_time", self.total_time);
+    visit("meshing_time", self.meshing_time);
+    visit("read_time", self.read_time);
+    visit("factorization_time", self.factorization_time);
+    visit("iteration_time", self.iteration_time);
+    visit("evaluate_time", self.evaluate_time);
+    visit("meshing_attempts", self.meshing_attempts);
+    visit("output_files", self.output_files);
+  }
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    fem::serialize_fields(archive, *this);
+  }
 };
 
 // One solved point of a torque loop (cycloid_hysteresis).
@@ -199,6 +272,10 @@ struct CycloidHysteresis
   double stiffness = 0.;         // N·m/rad, secant 50%–100% of M_c on each loading branch, mean
   double lost_motion = 0.;       // rad, mid-width rotation at +3% minus that at −3% of M_c
   double hysteresis = 0.;        // rad, width of the loop (falling − rising) at ±3% of M_c, mean
+  // rad, what the width is known to: half the difference of its two estimates (at +3% and −3%
+  // of M_c), at least 1e-9·(rotation span of the loop); a width below it (or below zero, which
+  // friction cannot give) is no measurable loop.
+  double hysteresis_resolution = 0.;
   unsigned int steps = 0, active_set_iterations = 0; // -, load steps, all flanks
   double time = 0.;                                  // s, wall, scene(s) and solves
 };

@@ -4,6 +4,9 @@
 #include "fem/parallel.h"
 
 #include <algorithm>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
@@ -15,110 +18,6 @@ using namespace dealii;
 
 namespace
 {
-// Results cross ranks as fixed-length rows of doubles (zero on the ranks that did not solve a
-// case, so one sum gathers them all): a 1 marking the row as filled, the scalar fields, each
-// roller's and pin's fields, the analytic summary. One list of members serves both directions.
-using Result = CycloidLoadResult;
-using Load = CycloidContactLoad;
-const std::vector<double Result::*> result_reals = {&Result::crank_angle,
-                                                    &Result::disc_rotation,
-                                                    &Result::output_torque,
-                                                    &Result::max_roller_force,
-                                                    &Result::max_pin_force,
-                                                    &Result::bearing_force,
-                                                    &Result::bearing_angle,
-                                                    &Result::bearing_force_direction,
-                                                    &Result::input_torque,
-                                                    &Result::input_torque_ratio,
-                                                    &Result::disc_force_balance,
-                                                    &Result::disc_moment_balance,
-                                                    &Result::output_moment_balance,
-                                                    &Result::closing_rotation,
-                                                    &Result::output_rotation,
-                                                    &Result::disc_rotation_load,
-                                                    &Result::max_contact_pressure,
-                                                    &Result::disc_von_mises,
-                                                    &Result::contact_size,
-                                                    &Result::scene_time,
-                                                    &Result::setup_time,
-                                                    &Result::solve_time,
-                                                    &Result::total_time,
-                                                    &Result::meshing_time,
-                                                    &Result::read_time,
-                                                    &Result::factorization_time,
-                                                    &Result::iteration_time,
-                                                    &Result::evaluate_time};
-const std::vector<unsigned int Result::*> result_counts = {
-    &Result::loaded_rollers, &Result::loaded_pins,           &Result::n_cells,
-    &Result::n_dofs,         &Result::active_set_iterations, &Result::meshing_attempts};
-const std::vector<double Load::*> load_reals = {
-    &Load::angle,   &Load::initial_gap,  &Load::force,          &Load::force_x,
-    &Load::force_y, &Load::max_pressure, &Load::contact_length, &Load::analytic_force};
-const std::vector<double CycloidAnalyticResult::*> analytic_reals = {
-    &CycloidAnalyticResult::max_roller_force, &CycloidAnalyticResult::max_pin_force,
-    &CycloidAnalyticResult::disc_rotation, &CycloidAnalyticResult::output_rotation,
-    &CycloidAnalyticResult::input_torque};
-const unsigned int load_fields = load_reals.size() + 2; // + index, candidate
-
-unsigned int row_length(unsigned int rollers, unsigned int pins)
-{
-  return 1 + result_reals.size() + result_counts.size() + load_fields * (rollers + pins) +
-         analytic_reals.size() + 2; // + the bearing force's components
-}
-
-std::vector<double> pack(const Result& r, unsigned int length)
-{
-  std::vector<double> row{1.};
-  for (const auto m : result_reals)
-    row.push_back(r.*m);
-  for (const auto m : result_counts)
-    row.push_back(r.*m);
-  for (const auto* loads : {&r.rollers, &r.pins})
-    for (const Load& l : *loads)
-    {
-      row.push_back(l.index);
-      for (const auto m : load_reals)
-        row.push_back(l.*m);
-      row.push_back(l.candidate);
-    }
-  for (const auto m : analytic_reals)
-    row.push_back(r.analytic.*m);
-  row.push_back(r.analytic.bearing_force.x());
-  row.push_back(r.analytic.bearing_force.y());
-  if (row.size() != length)
-    throw SolverFailure("cycloid cases", "result row of unexpected length");
-  return row;
-}
-
-Result unpack(const double* row, unsigned int rollers, unsigned int pins)
-{
-  Result r;
-  const double* x = row + 1;
-  for (const auto m : result_reals)
-    r.*m = *x++;
-  for (const auto m : result_counts)
-    r.*m = std::lround(*x++);
-  for (auto [loads, n] : {std::pair(&r.rollers, rollers), std::pair(&r.pins, pins)})
-    for (unsigned int k = 0; k < n; ++k)
-    {
-      Load l;
-      l.index = std::lround(*x++);
-      for (const auto m : load_reals)
-        l.*m = *x++;
-      l.candidate = *x++ > 0.5;
-      loads->push_back(l);
-    }
-  for (const auto m : analytic_reals)
-    r.analytic.*m = *x++;
-  r.analytic.bearing_force.x() = *x++;
-  r.analytic.bearing_force.y() = *x++;
-  for (const Load& l : r.rollers)
-    r.analytic.roller_forces.push_back(l.analytic_force);
-  for (const Load& l : r.pins)
-    r.analytic.pin_forces.push_back(l.analytic_force);
-  return r;
-}
-
 // The settings of the mirror image about the x axis (see the header).
 CycloidLoadSettings mirrored(const CycloidLoadSettings& s)
 {
@@ -187,15 +86,13 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
                     const std::string& scene_file_stem,
                     const std::function<void(const std::string&)>& progress)
 {
-  const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
   if (cases.empty())
     return {};
   const unsigned int rollers = cases[0].scene.ring.rollers, pins = cases[0].scene.output_pins;
-  const unsigned int length = row_length(rollers, pins);
   for (const auto& c : cases)
     if (c.scene.ring.rollers != rollers || c.scene.output_pins != pins)
       throw InputError("Cycloid disc/rollers", "every case of a sweep needs the same drive");
-  std::vector<double> rows(length * cases.size(), 0.);
+  std::vector<std::pair<unsigned int, CycloidLoadResult>> mine; // (case, result) solved here
   // A failure stops every rank soon (fem::distribute_items); the first failing case's error
   // is thrown on every rank.
   fem::distribute_items(
@@ -209,9 +106,8 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
             fem::catch_failure([&]() { r = solve_cycloid_case(settings); });
         std::filesystem::remove(settings.scene_file);
         failure.rethrow();
-        const std::vector<double> row = pack(r, length);
-        std::copy(row.begin(), row.end(), rows.begin() + k * length);
-        if (progress && rank == 0)
+        mine.emplace_back(k, r);
+        if (progress) // on the rank that solved the case
           progress("case " + std::to_string(k + 1) + "/" + std::to_string(cases.size()) +
                    ": P_max = " + std::to_string(r.max_roller_force) + " N, " +
                    std::to_string(r.n_dofs) + " DoFs, " + std::to_string(r.total_time) +
@@ -219,10 +115,11 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
                    std::to_string(r.setup_time) + " s, solve " + std::to_string(r.solve_time) +
                    " s)");
       });
-  Utilities::MPI::sum(rows, communicator, rows);
-  std::vector<CycloidLoadResult> results;
-  for (unsigned int k = 0; k < cases.size(); ++k)
-    results.push_back(unpack(&rows[k * length], rollers, pins));
+  // Every rank receives every case's result, each member through its for_each_field list.
+  std::vector<CycloidLoadResult> results(cases.size());
+  for (const auto& solved : Utilities::MPI::all_gather(communicator, mine))
+    for (const auto& [k, r] : solved)
+      results[k] = r;
   return results;
 }
 

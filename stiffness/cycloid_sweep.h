@@ -24,8 +24,9 @@ namespace gearstiff::stiffness
 CycloidLoadResult solve_cycloid_case(const CycloidLoadSettings& settings);
 
 // Every case solved once, case k on rank k mod n_ranks (2D only), scene files
-// "<stem>_<k>.msh" (removed after use). `progress` (may be empty) is called on rank 0 after
-// each of its cases. A failing case stops all ranks with its exception type and message.
+// "<stem>_<k>.msh" (removed after use). `progress` (may be empty) is called on the rank that
+// solved a case, after each of its cases. A failing case stops all ranks with its exception type
+// and message.
 std::vector<CycloidLoadResult>
 solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings>& cases,
                     const std::string& scene_file_stem,

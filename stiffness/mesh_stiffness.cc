@@ -1,6 +1,7 @@
 #include "stiffness/mesh_stiffness.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "fem/mesh.h"
 #include "fem/parallel.h"
 #include "fem/small_strain.h"
@@ -132,9 +133,22 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::run()
   Timer timer(mpi_communicator, true);
   result = GearMeshStiffnessResult();
   result.dimension = dim;
+  const bool report = settings.progress && Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+  const auto stage = [&](unsigned int index, const std::string& text)
+  {
+    if (report)
+      settings.progress("stage " + std::to_string(index) + "/4 " + text + ", " +
+                        format_number(timer.wall_time(), 3) + " s elapsed");
+  };
+  stage(1, "meshing the scene");
   make_scene();
+  stage(2, "setting up (reading the mesh, stiffness matrix, mortar coupling)");
   setup_problem();
+  stage(3, "solving the contact (" +
+               std::to_string(problem->system().triangulation().n_global_active_cells()) +
+               " cells: factorization, then active-set iterations)");
   solve();
+  stage(4, "evaluating (" + std::to_string(result.active_set_iterations) + " contact iterations)");
   evaluate();
   output_results();
   result.total_time = timer.wall_time();

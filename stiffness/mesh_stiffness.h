@@ -22,9 +22,11 @@
 #pragma once
 
 #include "contact/contact_problem.h"
+#include "fem/fields.h"
 #include "fem/parameters.h"
 #include "geometry/scene_gear_pair.h"
 
+#include <functional>
 #include <memory>
 #include <mpi.h>
 #include <string>
@@ -54,6 +56,9 @@ struct GearMeshStiffnessSettings
   // Shared by the positions a sweep solves in turn (null: none): each starts from the zone the
   // previous one converged to (contact.warm_start) and leaves its own for the next.
   std::shared_ptr<std::vector<contact::ContactZone>> warm_start;
+  // Called with one line per stage of run() (scene, setup, solve; with the elapsed time) on
+  // rank 0 of the analysis' communicator; empty: silent.
+  std::function<void(const std::string&)> progress;
 };
 
 // One tooth pair in the scene and what it carries.
@@ -75,12 +80,27 @@ struct ToothPairLoad
   double closed_roll_min = 0.; // m, smallest roll length √(r² − r_b1²) of a closed pinion node
   double closed_roll_max = 0.; // m, largest
 
-  // Every field, for boost-style serialisation (results cross MPI ranks, fem/parallel.h).
+  // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
+  // completeness check of tests/stiffness/test_result_fields.cc use this list.
+  template <class Self, class Visit>
+  static void for_each_field(Self& self, Visit&& visit)
+  {
+    visit("pair", self.pair);
+    visit("position", self.position);
+    visit("normal_force", self.normal_force);
+    visit("load_share", self.load_share);
+    visit("max_pressure", self.max_pressure);
+    visit("contact_length", self.contact_length);
+    visit("closed_nodes", self.closed_nodes);
+    visit("resultant", self.resultant);
+    visit("force_deviation", self.force_deviation);
+    visit("closed_roll_min", self.closed_roll_min);
+    visit("closed_roll_max", self.closed_roll_max);
+  }
   template <class Archive>
   void serialize(Archive& archive, const unsigned int /*version*/)
   {
-    archive& pair& position& normal_force& load_share& max_pressure& contact_length& closed_nodes;
-    archive& resultant& force_deviation& closed_roll_min& closed_roll_max;
+    fem::serialize_fields(archive, *this);
   }
 };
 
@@ -121,17 +141,45 @@ struct GearMeshStiffnessResult
   double total_time = 0.;                // s, wall: the whole run
   std::vector<std::string> output_files; // VTU/PVTU written (relative to the directory)
 
-  // Every field, for boost-style serialisation (the translation unit that sends a result
-  // includes boost/serialization/vector.hpp and string.hpp).
+  // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
+  // completeness check of tests/stiffness/test_result_fields.cc use this list.
+  template <class Self, class Visit>
+  static void for_each_field(Self& self, Visit&& visit)
+  {
+    visit("pinion_roll_angle", self.pinion_roll_angle);
+    visit("reference_position", self.reference_position);
+    visit("mesh_position", self.mesh_position);
+    visit("kinematic_pairs", self.kinematic_pairs);
+    visit("loaded_pairs", self.loaded_pairs);
+    visit("pinion_torque", self.pinion_torque);
+    visit("pinion_rotation", self.pinion_rotation);
+    visit("initial_gap", self.initial_gap);
+    visit("pinion_base_radius", self.pinion_base_radius);
+    visit("wheel_base_radius", self.wheel_base_radius);
+    visit("mesh_stiffness", self.mesh_stiffness);
+    visit("transmission_error", self.transmission_error);
+    visit("wheel_torque", self.wheel_torque);
+    visit("torque_ratio", self.torque_ratio);
+    visit("pinion_hub_torque", self.pinion_hub_torque);
+    visit("pairs", self.pairs);
+    visit("max_contact_pressure", self.max_contact_pressure);
+    visit("pinion_root_stress", self.pinion_root_stress);
+    visit("wheel_root_stress", self.wheel_root_stress);
+    visit("dimension", self.dimension);
+    visit("n_cells", self.n_cells);
+    visit("n_dofs", self.n_dofs);
+    visit("contact_size", self.contact_size);
+    visit("active_set_iterations", self.active_set_iterations);
+    visit("scene_time", self.scene_time);
+    visit("setup_time", self.setup_time);
+    visit("solve_time", self.solve_time);
+    visit("total_time", self.total_time);
+    visit("output_files", self.output_files);
+  }
   template <class Archive>
   void serialize(Archive& archive, const unsigned int /*version*/)
   {
-    archive& pinion_roll_angle& reference_position& mesh_position& kinematic_pairs& loaded_pairs;
-    archive& pinion_torque& pinion_rotation& initial_gap& pinion_base_radius& wheel_base_radius;
-    archive& mesh_stiffness& transmission_error& wheel_torque& torque_ratio& pinion_hub_torque;
-    archive& pairs& max_contact_pressure& pinion_root_stress& wheel_root_stress;
-    archive& dimension& n_cells& n_dofs& contact_size& active_set_iterations;
-    archive& scene_time& setup_time& solve_time& total_time& output_files;
+    fem::serialize_fields(archive, *this);
   }
 };
 

@@ -2,7 +2,10 @@
 """Charts of `gearstiff dynamics`.
 
     plot_dynamics.py vibration SERIES.csv START,END OUT.png   torsional vibration phi_i(t)
-    plot_dynamics.py kv        SERIES.csv START,END OUT.png   K_v(t) with the steady-state window
+    plot_dynamics.py kv        SERIES.csv START,END[,PERIOD] OUT.png
+                                      K_v(t): above, its envelope (max and min over each mesh
+                                      period PERIOD [s]) over the whole run with the window;
+                                      below, the last four mesh periods of the window
     plot_dynamics.py stiffness SERIES.csv START,END OUT.png   mesh stiffness k(t)
     plot_dynamics.py resonance SWEEP.csv OUT.png              K_v max and ISO K_v against speed
     plot_dynamics.py campbell  CAMPBELL.csv MODES.csv MIN,MAX OUT.png
@@ -48,7 +51,50 @@ def finish(fig, ax, xlabel, ylabel, png, legend_at="best", legend_size=8):
     fig.savefig(png, dpi=120)
 
 
+def envelope(t, values, period):
+    """Per mesh period: the period's middle time, the smallest and the largest value."""
+    mids, lows, highs, bucket, start = [], [], [], [], t[0]
+    for time, v in zip(t, values):
+        if time >= start + period and bucket:
+            mids.append(start + 0.5 * period)
+            lows.append(min(bucket))
+            highs.append(max(bucket))
+            bucket, start = [], start + period * int((time - start) / period)
+        bucket.append(v)
+    return mids, lows, highs
+
+
+def kv_chart(path, window, png):
+    header, c = read(path)
+    t = c[header[0]]
+    numbers = [float(x) for x in window.split(",")]
+    start, end = numbers[0], numbers[1]
+    period = numbers[2] if len(numbers) > 2 else (end - start) / 40.
+    fig, (whole, detail) = plt.subplots(2, 1, figsize=(9, 6.5))
+    columns = [h for h in header[1:] if h.startswith("kv_")]
+    for n, h in enumerate(columns):
+        mids, lows, highs = envelope(t, c[h], period)
+        whole.fill_between(mids, lows, highs, color=f"C{n}", alpha=0.35, lw=0)
+        whole.plot(mids, highs, color=f"C{n}", lw=0.8, label=f"{h}: max/min per mesh period")
+        rows = [i for i, time in enumerate(t) if end - 4. * period <= time <= end]
+        detail.plot([t[i] for i in rows], [c[h][i] for i in rows], color=f"C{n}", lw=1., label=h)
+    whole.axvspan(start, end, color="0.9", zorder=0, label="steady-state window")
+    whole.set_title("K_v(t) envelope over the run", fontsize=10)
+    detail.set_title(f"the last four mesh periods of the window (period {period * 1e3:.3g} ms)",
+                     fontsize=10)
+    for ax in (whole, detail):
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel("K_v = F / F_nominal [-]")
+        ax.grid(True, lw=0.3)
+        ax.legend(loc="best", fontsize=7)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+
+
 def time_series(kind, path, window, png):
+    if kind == "kv":
+        kv_chart(path, window, png)
+        return
     header, c = read(path)
     t = c[header[0]]
     fig, ax = plt.subplots(figsize=(9, 4.5))

@@ -313,8 +313,8 @@ TEST(InvoluteTooth, RejectsImpossibleTeeth)
 
 TEST(InvoluteTooth, InternalRingCutByPinionTypeCutter)
 {
-  // Ring 7 of the bi-planetary train (docs/references.md §2: z = 72, m = 2.5 mm assumed, 20°), cut by
-  // a 25-tooth shaper cutter with h_a0 = 1.25 m (the real process).
+  // Ring 7 of the bi-planetary train (docs/references.md §2: z = 72, m = 2.5 mm assumed, 20°), cut
+  // by a 25-tooth shaper cutter with h_a0 = 1.25 m (the real process).
   for (const double x : {0., 0.3})
   {
     InvoluteToothSpec spec = split_path_pinion();

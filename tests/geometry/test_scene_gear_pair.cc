@@ -108,8 +108,8 @@ SceneInfo scene(const std::string& position, const std::string& name, unsigned i
 // remains is the spline through the profile points and the chord between boundary nodes:
 // with h_c ≈ 5-8 µm and a flank curvature radius ≥ 5 mm the chord sag is below 1e-11 m, the
 // spline error below 1e-7 m. 0.5 µm is still 12x smaller than the tooth-pair deflection at the
-// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, docs/references.md §1), so a pair that is
-// "near-zero" here is in contact for any FE analysis at that load.
+// published load (Δφ·r_b1 = 2.481e-4 · 24.667 mm ≈ 6.1 µm, docs/references.md §1), so a pair that
+// is "near-zero" here is in contact for any FE analysis at that load.
 constexpr double touching_tolerance = 0.5e-6;
 // The gap to the next pair outside the path of contact is a sizeable fraction of the base
 // pitch; 50 µm separates "touching" from "not touching" by two orders of magnitude.
@@ -145,9 +145,9 @@ TEST(GearPairScene, SinglePairPositionHasExactlyOneTouchingPair)
   EXPECT_EQ(ids.boundaries, expected);
   EXPECT_EQ(triangulation.n_active_cells(), info.mesh.n_cells);
 
-  // The split-path pair (ε_α = 1.5, docs/references.md §1) has its pitch point in the single-contact
-  // zone, so "single" puts the one contact at the pitch point C: ℓ = r_b1·tan α_wt with
-  // r_b1 = 24.667 mm and α_wt = 20° → 8.978 mm, 26.25 mm from the pinion axis (r_w1 = r1).
+  // The split-path pair (ε_α = 1.5, docs/references.md §1) has its pitch point in the
+  // single-contact zone, so "single" puts the one contact at the pitch point C: ℓ = r_b1·tan α_wt
+  // with r_b1 = 24.667 mm and α_wt = 20° → 8.978 mm, 26.25 mm from the pinion axis (r_w1 = r1).
   ASSERT_EQ(info.contacts.size(), 1u);
   EXPECT_NEAR(info.contacts[0].point.norm(), 26.25e-3, 1e-6); // 1 µm: r_b1 is given to 1 µm
   // Hertz half-width at the pitch point ≈ 0.08 mm (docs/references.md §6: 2.0 kN over 24 mm); the

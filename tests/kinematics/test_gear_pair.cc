@@ -1,5 +1,5 @@
-// Gear pair geometry against docs/references.md §1 (Reszuta & Drewniak, Mechanik 7/2015) and against
-// closed-form ISO 21771 relations that the implementation does not use directly.
+// Gear pair geometry against docs/references.md §1 (Reszuta & Drewniak, Mechanik 7/2015) and
+// against closed-form ISO 21771 relations that the implementation does not use directly.
 #include "errors/errors.h"
 #include "kinematics/gear_pair.h"
 #include "tests/kinematics/input_error_parameter.h"
@@ -57,8 +57,8 @@ TEST(GearPair, SplitPathBaseRadiusAndPitch)
   EXPECT_NEAR(pair.centre_distance, 97.5 * mm, 1e-12);
 }
 
-// docs/references.md §1 note: standard tip diameters d_a = d + 2m(1 + x) give ε_α ≈ 1.618 (3 digits:
-// tolerance 0.0005).
+// docs/references.md §1 note: standard tip diameters d_a = d + 2m(1 + x) give ε_α ≈ 1.618 (3
+// digits: tolerance 0.0005).
 TEST(GearPair, SplitPathStandardTipsContactRatio)
 {
   const GearPairGeometry pair = compute_gear_pair(standard_tips(split_path_pair()));
@@ -67,8 +67,8 @@ TEST(GearPair, SplitPathStandardTipsContactRatio)
   EXPECT_NEAR(pair.transverse_contact_ratio, 1.618, 0.0005);
 }
 
-// The built-in case: both tip radii reduced equally so that ε_α = 1.500 (docs/references.md §1). The
-// paper prints g_α = 11.068 mm, which is 1.4997·p_et: its own 1.5·p_et = 11.0705 mm. We keep
+// The built-in case: both tip radii reduced equally so that ε_α = 1.500 (docs/references.md §1).
+// The paper prints g_α = 11.068 mm, which is 1.4997·p_et: its own 1.5·p_et = 11.0705 mm. We keep
 // ε_α = 1.500 exactly, so g_α differs from the print by 2.5 µm (0.02 %); tolerance 3 µm.
 TEST(GearPair, SplitPathBuiltInContactRatio)
 {

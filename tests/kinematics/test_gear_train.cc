@@ -1,6 +1,6 @@
 // Gear-train kinematics, statics, efficiency and reduced inertia. Published values:
-// docs/references.md §2 (Drewniak, Garlicka, Kolber 2016, bi-planetary train), §3 (Milev et al. 2025,
-// planetary J*), §4 (Chmurawa & Łokiec, cycloidal ratio). Printed values are compared with a
+// docs/references.md §2 (Drewniak, Garlicka, Kolber 2016, bi-planetary train), §3 (Milev et al.
+// 2025, planetary J*), §4 (Chmurawa & Łokiec, cycloidal ratio). Printed values are compared with a
 // tolerance of half a unit of their last printed digit unless stated.
 #include "errors/errors.h"
 #include "kinematics/gear_train.h"

@@ -126,9 +126,9 @@ TEST(InternalMeshStiffness, StifferThanExternalPairOfTheSamePlanet)
 }
 
 // Rim thickness with the ring held as in a housing: N = 6 pads of 10 mm on its outer circle
-// (bolted or splined; stated defaults, docs/references.md §2 gives no ring mounting), the mesh midway
-// between two pads, where the rim bends most. A thinner rim is a softer curved beam between the
-// pads, so k rises monotonically with s_R towards the value of the same ring held on its whole
+// (bolted or splined; stated defaults, docs/references.md §2 gives no ring mounting), the mesh
+// midway between two pads, where the rim bends most. A thinner rim is a softer curved beam between
+// the pads, so k rises monotonically with s_R towards the value of the same ring held on its whole
 // outer circle (which bounds it: the pads hold a subset of that circle). Measured values in
 // docs/internal-gears.md; the assertions are the trends the issue asks for, not numbers.
 TEST(InternalMeshStiffness, StiffnessRisesWithRimThicknessWhenHeldAtPads)

@@ -1,0 +1,40 @@
+// The names a user writes (--set section/key, `set key` in a .prm, keys of a .json) checked
+// against the declared parameters before deal.II reads them, so a misspelt name is answered with
+// its section and the nearest declared names instead of deal.II's "You can't ask for entry
+// <teeht> you have not yet declared".
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gearstiff::app
+{
+// One subsection of the declared parameters: its entries and its subsections.
+struct DeclaredSection
+{
+  std::set<std::string> entries;
+  std::map<std::string, DeclaredSection> sections;
+};
+
+// Every declared entry and subsection of `prm` (read from its ShortJSON listing).
+DeclaredSection declared_parameters(const dealii::ParameterHandler& prm);
+
+// The declared names nearest to `name` (edit distance, case ignored), best first: at most
+// `count`, each within a third of the name's length (at least 2 edits).
+std::vector<std::string> nearest_names(const std::string& name,
+                                       const std::vector<std::string>& candidates,
+                                       unsigned int count = 3);
+
+// InputError(`parameter`, ...) when the entry `sections`/`key` is not declared: the first
+// missing subsection or the entry, the section it was looked for in, the nearest names.
+void check_parameter_name(const DeclaredSection& declared, const std::vector<std::string>& sections,
+                          const std::string& key, const std::string& parameter);
+
+// The same for every `set` of a .prm file or every key of a .json file; the InputError names
+// the file and line (.prm) or the file and the key's path (.json). Lines it does not understand
+// are left to deal.II's parser.
+void check_parameter_file(const DeclaredSection& declared, const std::string& file);
+} // namespace gearstiff::app

@@ -1,0 +1,430 @@
+// The Schur-complement path of ContactProblem (contact/contact_problem.h, "Linear algebra"):
+// the one factorization, the node columns, the contact system per iteration, hub changes.
+#include "contact/contact_problem_internal.h"
+#include "errors/errors.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <deal.II/base/timer.h>
+
+namespace gearstiff::contact
+{
+using namespace dealii;
+
+template <int dim>
+void ContactProblem<dim>::complete_solution(Vector<double>& residual)
+{
+  if (!condensed || !condensed->partial)
+    return;
+  // u = s·u_p + P (f_friction − Gᵀλ) + R α, one solve with the converged loads.
+  Condensed& c = *condensed;
+  displacement = c.factorization->response(c.contact_load);
+  displacement.add(c.load_factor, c.factorization->particular_solution());
+  if (c.particular_change.size() > 0)
+    displacement.add(c.load_factor, c.particular_change);
+  for (unsigned int j = 0; j < c.amplitudes.size(); ++j)
+    displacement.add(c.amplitudes[j], c.factorization->free_modes()[j]);
+  residual = elastic.residual(displacement);
+  c.partial = false;
+  result.right_hand_sides = c.factorization->n_solves();
+}
+
+template <int dim>
+void ContactProblem<dim>::build_condensed(double load_factor)
+{
+  // Once: supports at unit load factor, hub torques as unit point loads, one factorization.
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
+  // Kept only once complete: a failed factorization must not leave a half-built one behind.
+  auto built = std::make_unique<Condensed>();
+  Condensed& c = *built;
+  c.supports = make_support_constraints(1.);
+  Vector<double> unit_loads(n_dofs);
+  for (const auto& support : supports)
+    if (support.hub)
+      support.hub->add_loads(unit_loads, 1.);
+  for (const auto& pair : pairs)
+    for (const auto& node : pair.nodes)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        c.dofs.push_back(node.node.dofs[d]);
+      for (const auto& master : node.masters)
+        for (unsigned int d = 0; d < dim; ++d)
+          c.dofs.push_back(master.node.dofs[d]);
+    }
+  std::sort(c.dofs.begin(), c.dofs.end());
+  c.dofs.erase(std::unique(c.dofs.begin(), c.dofs.end()), c.dofs.end());
+  elastic.set_load_factor(1.);
+  c.factorization =
+      std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads, c.dofs);
+  // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
+  const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
+  elastic.set_load_factor(load_factor);
+  for (const auto& pair : pairs)
+  {
+    c.functionals.emplace_back();
+    for (const auto& node : pair.nodes)
+    {
+      std::array<typename Condensed::Functional, dim> functional;
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        functional[d].terms.emplace_back(c.position(node.node.dofs[d]), 1.);
+        for (const auto& master : node.masters)
+          functional[d].terms.emplace_back(c.position(master.node.dofs[d]), -master.weight);
+      }
+      c.functionals.back().push_back(functional);
+    }
+    c.slot.emplace_back(pair.nodes.size(), -1);
+  }
+  c.particular = c.at_dofs(c.factorization->particular_solution());
+  std::vector<bool> held(n_dofs, false);
+  for (const auto& line : c.supports.get_lines())
+  {
+    held[line.index] = true;
+    for (const auto& [master, weight] : line.entries)
+      held[master] = true;
+  }
+  for (const auto& pair : pairs)
+    for (const auto& node : pair.nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        c.slave_forces_exact = c.slave_forces_exact && !held[node.node.dofs[d]];
+  for (const auto& mode : c.factorization->free_modes())
+  {
+    c.modes.push_back(c.at_dofs(mode));
+    c.mode_loads.push_back(-(mode * unit_residual) + mode * unit_loads);
+  }
+  result.assembly_time += c.factorization->factorization_time();
+  result.schur_complement = true;
+  condensed = std::move(built);
+}
+
+template <int dim>
+void ContactProblem<dim>::add_new_columns()
+{
+  // Columns for the nodes closed for the first time, in one block of right-hand sides.
+  Condensed& c = *condensed;
+  std::vector<fem::SparseLoad> loads;
+  std::vector<std::pair<unsigned int, unsigned int>> new_nodes;
+  for (unsigned int p = 0; p < pairs.size(); ++p)
+    for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+      if (pairs[p].memory[k].state != NodeState::open && c.slot[p][k] < 0)
+      {
+        new_nodes.emplace_back(p, k);
+        const SlaveNode<dim>& node = pairs[p].nodes[k];
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          fem::SparseLoad load{{node.node.dofs[d], 1.}};
+          for (const auto& master : node.masters)
+            load.emplace_back(master.node.dofs[d], -master.weight);
+          loads.push_back(std::move(load));
+        }
+      }
+  if (loads.empty())
+    return;
+  std::vector<std::vector<double>> columns = c.factorization->responses(loads, c.dofs);
+  for (unsigned int j = 0; j < new_nodes.size(); ++j)
+    c.slot[new_nodes[j].first][new_nodes[j].second] = c.columns.size() + j * dim;
+  for (auto& column : columns)
+    c.columns.push_back(std::move(column));
+}
+
+template <int dim>
+std::vector<typename ContactProblem<dim>::ContactRow> ContactProblem<dim>::contact_rows() const
+{
+  // The contact rows G of this iteration as combinations of node columns, with their
+  // right-hand sides; a DoF already held (by a support or an earlier row) keeps that hold, as in
+  // make_constraints.
+  const Condensed& c = *condensed;
+  std::vector<ContactRow> rows;
+  std::vector<bool> used(elastic.get_dof_handler().n_dofs(), false);
+  for (unsigned int p = 0; p < pairs.size(); ++p)
+    for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+    {
+      if (pairs[p].memory[k].state == NodeState::open)
+        continue;
+      const SlaveNode<dim>& node = pairs[p].nodes[k];
+      const Tensor<1, dim>& n = node.normal;
+      if (pairs[p].memory[k].state == NodeState::stick)
+      {
+        const Tensor<1, dim> start = relative_displacement(node, step_start);
+        const Tensor<1, dim> offset = node.initial_gap * n + (start - (start * n) * n);
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          const types::global_dof_index dof = node.node.dofs[d];
+          if (c.supports.is_constrained(dof) || used[dof])
+            continue;
+          used[dof] = true;
+          rows.push_back({{{p, k, d, 1.}}, offset[d]});
+        }
+      }
+      else
+      {
+        const types::global_dof_index dof = node.node.dofs[normal_component(n)];
+        if (used[dof])
+          continue;
+        used[dof] = true;
+        ContactRow row{{}, node.initial_gap};
+        for (unsigned int d = 0; d < dim; ++d)
+          if (n[d] != 0.)
+            row.terms.push_back({p, k, d, n[d]});
+        rows.push_back(std::move(row));
+      }
+    }
+  return rows;
+}
+
+template <int dim>
+std::vector<typename ContactProblem<dim>::ContactTerm> ContactProblem<dim>::friction_terms() const
+{
+  // Friction loads of the slipping nodes: F_c R_cᵀ, F = μ λ_n along the friction direction.
+  std::vector<ContactTerm> terms;
+  if (friction > 0.)
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
+        if (pairs[p].memory[k].state == NodeState::slip)
+        {
+          const Tensor<1, dim> force = std::max(pairs[p].memory[k].friction_bound, 0.) *
+                                       pairs[p].memory[k].friction_direction;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (force[d] != 0.)
+              terms.push_back({p, k, d, force[d]});
+        }
+  return terms;
+}
+
+template <int dim>
+std::vector<double>
+ContactProblem<dim>::Condensed::base_displacement(const std::vector<ContactTerm>& friction_loads,
+                                                  double load_factor) const
+{
+  // u_base = s·u_p + P f_friction at the contact DoFs.
+  std::vector<double> base = particular;
+  for (double& v : base)
+    v *= load_factor;
+  for (const ContactTerm& t : friction_loads)
+  {
+    const std::vector<double>& y = column(t);
+    for (unsigned int i = 0; i < base.size(); ++i)
+      base[i] += t.coefficient * y[i];
+  }
+  return base;
+}
+
+template <int dim>
+Eigen::VectorXd
+ContactProblem<dim>::Condensed::free_mode_loads(const std::vector<ContactTerm>& friction_loads,
+                                                double load_factor) const
+{
+  // Rᵀ f of the loads of u_base.
+  const unsigned int n_modes = modes.size();
+  Eigen::VectorXd mode_load(n_modes);
+  for (unsigned int j = 0; j < n_modes; ++j)
+  {
+    mode_load[j] = load_factor * mode_loads[j];
+    for (const ContactTerm& t : friction_loads)
+      mode_load[j] += t.coefficient * functional(t)(modes[j]);
+  }
+  return mode_load;
+}
+
+template <int dim>
+void ContactProblem<dim>::Condensed::assemble(const std::vector<ContactRow>& rows,
+                                              const std::vector<double>& base,
+                                              Eigen::MatrixXd& schur, Eigen::MatrixXd& coupling,
+                                              Eigen::VectorXd& rhs) const
+{
+  // S = G P Gᵀ, E = G R, b = G u_base − g.
+  const unsigned int m = rows.size(), n_modes = modes.size();
+  schur.resize(m, m);
+  coupling.resize(m, n_modes);
+  rhs.resize(m);
+  for (unsigned int i = 0; i < m; ++i)
+  {
+    for (unsigned int j = 0; j <= i; ++j)
+    {
+      double value = 0.;
+      for (const ContactTerm& a : rows[i].terms)
+        for (const ContactTerm& b : rows[j].terms)
+          value += a.coefficient * b.coefficient * functional(a)(column(b));
+      schur(i, j) = schur(j, i) = value;
+    }
+    rhs[i] = -rows[i].value;
+    for (const ContactTerm& a : rows[i].terms)
+      rhs[i] += a.coefficient * functional(a)(base);
+    for (unsigned int j = 0; j < n_modes; ++j)
+    {
+      coupling(i, j) = 0.;
+      for (const ContactTerm& a : rows[i].terms)
+        coupling(i, j) += a.coefficient * functional(a)(modes[j]);
+    }
+  }
+}
+
+template <int dim>
+void ContactProblem<dim>::solve_contact_system(const std::vector<ContactRow>& rows,
+                                               const std::vector<ContactTerm>& friction_loads,
+                                               double load_factor,
+                                               std::vector<double>& multipliers_out,
+                                               std::vector<double>& amplitudes_out,
+                                               std::vector<double>& base) const
+{
+  const Condensed& c = *condensed;
+  base = c.base_displacement(friction_loads, load_factor);
+  const Eigen::VectorXd mode_load = c.free_mode_loads(friction_loads, load_factor);
+  const unsigned int m = rows.size(), n_modes = c.modes.size();
+  Eigen::MatrixXd schur, coupling;
+  Eigen::VectorXd rhs;
+  c.assemble(rows, base, schur, coupling, rhs);
+
+  // [S −E; −Eᵀ 0] [λ; α] = [b; −Rᵀf]: λ = S⁻¹(b + Eα), (Eᵀ S⁻¹ E) α = Rᵀf − Eᵀ S⁻¹ b.
+  Eigen::VectorXd multipliers = Eigen::VectorXd::Zero(m),
+                  amplitudes = Eigen::VectorXd::Zero(n_modes);
+  const Eigen::LDLT<Eigen::MatrixXd> schur_factor(schur);
+  if (m > 0)
+  {
+    const Eigen::VectorXd pivots = schur_factor.vectorD().cwiseAbs();
+    if (schur_factor.info() != Eigen::Success || pivots.minCoeff() <= 1e-13 * pivots.maxCoeff())
+      throw SolverFailure("contact Schur complement",
+                          "the closed contact constraints are linearly dependent (a slave node "
+                          "constrained twice: do two pairs share a slave surface?)");
+  }
+  bool restrained = n_modes == 0;
+  if (n_modes > 0 && m > 0)
+  {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> coupling_svd(coupling);
+    const Eigen::VectorXd& sigma = coupling_svd.singularValues();
+    restrained = sigma.size() == n_modes && sigma.minCoeff() > 1e-10 * sigma.maxCoeff();
+  }
+  if (!restrained)
+  {
+    // The closed contacts leave a body free. The reference path's check names the body; it
+    // builds the eliminated constraints, which only the reference path needs to be acyclic.
+    elastic.check_rigid_body_freedom(make_constraints(load_factor), "linear solve");
+    throw SolverFailure("linear solve", "a body held only through contact is free to move: "
+                                        "the closed contacts leave a rigid-body motion "
+                                        "unrestrained");
+  }
+  if (n_modes > 0)
+  {
+    const Eigen::MatrixXd s_inv_e = schur_factor.solve(coupling);
+    const Eigen::MatrixXd coarse = coupling.transpose() * s_inv_e;
+    amplitudes = coarse.ldlt().solve(mode_load - s_inv_e.transpose() * rhs);
+    multipliers = schur_factor.solve(rhs + coupling * amplitudes);
+  }
+  else if (m > 0)
+    multipliers = schur_factor.solve(rhs);
+  multipliers_out.assign(multipliers.data(), multipliers.data() + m);
+  amplitudes_out.assign(amplitudes.data(), amplitudes.data() + n_modes);
+}
+
+template <int dim>
+void ContactProblem<dim>::apply_contact_solution(const std::vector<ContactRow>& rows,
+                                                 const std::vector<ContactTerm>& friction_loads,
+                                                 const std::vector<double>& multipliers,
+                                                 const std::vector<double>& amplitudes,
+                                                 const std::vector<double>& base,
+                                                 double load_factor, Vector<double>& residual)
+{
+  Condensed& c = *condensed;
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
+  // The contact loads f_friction − Gᵀλ (N) at the contact DoFs.
+  Vector<double> load(n_dofs);
+  auto add_node_load = [&](const ContactTerm& t, double force)
+  {
+    const SlaveNode<dim>& node = pairs[t.pair].nodes[t.node];
+    load[node.node.dofs[t.component]] += force;
+    for (const auto& master : node.masters)
+      load[master.node.dofs[t.component]] -= master.weight * force;
+  };
+  for (const ContactTerm& t : friction_loads)
+    add_node_load(t, t.coefficient);
+  for (unsigned int i = 0; i < rows.size(); ++i)
+    for (const ContactTerm& t : rows[i].terms)
+      add_node_load(t, -multipliers[i] * t.coefficient);
+  c.contact_load = load;
+  c.load_factor = load_factor;
+  c.amplitudes = amplitudes;
+  c.partial = true;
+  if (!c.slave_forces_exact)
+  {
+    complete_solution(residual);
+    return;
+  }
+  // The states need only the displacements at the contact DoFs, u_C = u_base − Σ λ_i P g_iᵀ +
+  // R α, and the forces at the slave DoFs, r = K u − f = f_friction − Gᵀλ there (stationarity
+  // of the Lagrangian at a DoF no support touches). The full field waits for convergence.
+  std::vector<double> contact_displacement = base;
+  for (unsigned int i = 0; i < rows.size(); ++i)
+    for (const ContactTerm& t : rows[i].terms)
+    {
+      const std::vector<double>& y = c.columns[c.slot[t.pair][t.node] + t.component];
+      const double factor = -multipliers[i] * t.coefficient;
+      for (unsigned int k = 0; k < y.size(); ++k)
+        contact_displacement[k] += factor * y[k];
+    }
+  for (unsigned int j = 0; j < amplitudes.size(); ++j)
+    for (unsigned int k = 0; k < c.dofs.size(); ++k)
+      contact_displacement[k] += amplitudes[j] * c.modes[j][k];
+  displacement.reinit(n_dofs);
+  for (unsigned int k = 0; k < c.dofs.size(); ++k)
+    displacement[c.dofs[k]] = contact_displacement[k];
+  residual = load;
+}
+
+template <int dim>
+void ContactProblem<dim>::solve_schur_complement(double load_factor, IterationRecord& record,
+                                                 Vector<double>& residual)
+{
+  if (!condensed)
+    build_condensed(load_factor); // its assembly and factorization count in assembly_time
+  Timer timer(mpi_communicator, true);
+  add_new_columns();
+  const std::vector<ContactRow> rows = contact_rows();
+  const std::vector<ContactTerm> friction_loads = friction_terms();
+  std::vector<double> multipliers, amplitudes, base;
+  solve_contact_system(rows, friction_loads, load_factor, multipliers, amplitudes, base);
+  apply_contact_solution(rows, friction_loads, multipliers, amplitudes, base, load_factor,
+                         residual);
+  record.n_rows = rows.size();
+  record.time = timer.wall_time();
+  result.solve_time += record.time;
+  result.right_hand_sides = condensed->factorization->n_solves();
+}
+
+template <int dim>
+void ContactProblem<dim>::add_hub_change(const Support& support, double change)
+{
+  // The hub at unit target: its point load (torque control) and prescribed displacement
+  // (rotation control). Its response is u_c + P (f − K u_c): the supports condensed with
+  // homogeneous values, as every other response.
+  Condensed& c = *condensed;
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
+  const fem::RigidHub<dim> unit(elastic, support.boundary, support.axis, support.control, 1.,
+                                support.name);
+  Vector<double> loads(n_dofs), prescribed(n_dofs);
+  unit.add_loads(loads, 1.);
+  AffineConstraints<double> rotation;
+  unit.add_constraints(rotation, 1.);
+  for (const auto& line : rotation.get_lines())
+    if (line.entries.empty())
+      prescribed[line.index] = line.inhomogeneity;
+  elastic.set_load_factor(0.); // K u_c alone, no tractions
+  Vector<double> equivalent = elastic.residual(prescribed);
+  elastic.set_load_factor(c.load_factor);
+  equivalent.sadd(-1., 1., loads);
+  Vector<double> response = c.factorization->response(equivalent);
+  response += prescribed;
+  if (c.particular_change.size() == 0)
+    c.particular_change.reinit(n_dofs);
+  c.particular_change.add(change, response);
+  const std::vector<double> at_dofs = c.at_dofs(response);
+  for (unsigned int i = 0; i < at_dofs.size(); ++i)
+    c.particular[i] += change * at_dofs[i];
+  // Rᵀ f of the free rigid modes: the torque's work (K R = 0 leaves the prescribed part out).
+  for (unsigned int j = 0; j < c.modes.size(); ++j)
+    c.mode_loads[j] += change * (c.factorization->free_modes()[j] * loads);
+  result.right_hand_sides = c.factorization->n_solves();
+}
+
+template class ContactProblem<2>;
+template class ContactProblem<3>;
+} // namespace gearstiff::contact

@@ -1,0 +1,121 @@
+// Internal to contact/: what the files of ContactProblem share (contact_problem.cc: set-up and
+// the reference path; contact_condensed.cc: the Schur-complement path; contact_load_path.cc: the
+// active-set iteration, load steps and continuation; contact_output.cc: results and VTU).
+#pragma once
+
+#include "contact/contact_problem.h"
+#include "fem/stiffness_factorization.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace gearstiff::contact
+{
+// The slave DoF a closed contact constrains: the component of the largest |n_c|, so that
+// the constraint's coefficients −n_c/n_main stay bounded by one.
+template <int dim>
+unsigned int normal_component(const dealii::Tensor<1, dim>& normal)
+{
+  unsigned int main = 0;
+  for (unsigned int c = 1; c < dim; ++c)
+    if (std::abs(normal[c]) > std::abs(normal[main]))
+      main = c;
+  return main;
+}
+
+// One term of a contact row or friction load: `coefficient` times the relative displacement
+// R_c of a node in component c (a row), or the force F_c on it (a friction load).
+template <int dim>
+struct ContactProblem<dim>::ContactTerm
+{
+  unsigned int pair, node, component;
+  double coefficient;
+};
+
+// One closed-contact constraint row of the Schur complement: Σ terms = value.
+template <int dim>
+struct ContactProblem<dim>::ContactRow
+{
+  std::vector<ContactTerm> terms;
+  double value; // m
+};
+
+// The Schur-complement method's data, built once per solve(): the factorization of the
+// support-condensed K, the contact DoFs (slave and master DoFs of every candidate node), and
+// for every slave node that has been closed its dim columns P R_cᵀ at the contact DoFs, where
+// R_c u = u_s,c − Σ_m w_m u_m,c is the node's relative displacement in component c. Every
+// contact row (stick: R_c, slip: n·R) and every friction load (F_c R_cᵀ) is a combination of
+// these, so nothing else is ever solved for but one full displacement per iteration.
+template <int dim>
+struct ContactProblem<dim>::Condensed
+{
+  // A node's relative-displacement functional at the contact DoFs: R_c v = Σ weight·v[index].
+  struct Functional
+  {
+    std::vector<std::pair<unsigned int, double>> terms; // (position in dofs, weight)
+    double operator()(const std::vector<double>& v) const
+    {
+      double value = 0.;
+      for (const auto& [i, w] : terms)
+        value += w * v[i];
+      return value;
+    }
+  };
+
+  std::unique_ptr<fem::StiffnessFactorization<dim>> factorization;
+  dealii::AffineConstraints<double> supports;                        // at unit load factor
+  std::vector<dealii::types::global_dof_index> dofs;                 // contact DoFs, sorted
+  std::vector<std::vector<std::array<Functional, dim>>> functionals; // [pair][node][c]
+  std::vector<std::vector<int>> slot; // [pair][node] → first of its dim columns, −1: none yet
+  std::vector<std::vector<double>> columns; // m/N, P R_cᵀ at dofs
+  std::vector<double> particular;           // m, unit-load solution at dofs
+  std::vector<std::vector<double>> modes;   // free rigid-body modes at dofs
+  std::vector<double> mode_loads;           // N·m (work), Rᵀ f at unit load factor
+  // No support constrains a slave DoF or takes one as a master: there the contact forces are
+  // exactly f_friction − Gᵀλ, and the iterations need no full displacement field.
+  bool slave_forces_exact = true;
+  // The latest iteration's loads and rigid amplitudes; `partial`: `displacement` holds only the
+  // contact DoFs until complete_solution().
+  dealii::Vector<double> contact_load; // N
+  double load_factor = 1.;
+  std::vector<double> amplitudes; // m per unit mode
+  bool partial = false;
+  // m, complete, at unit load factor: what hub target changes after the factorization added
+  // to the particular solution (empty: none).
+  dealii::Vector<double> particular_change;
+
+  unsigned int position(dealii::types::global_dof_index dof) const
+  {
+    return std::lower_bound(dofs.begin(), dofs.end(), dof) - dofs.begin();
+  }
+  std::vector<double> at_dofs(const dealii::Vector<double>& v) const
+  {
+    std::vector<double> restricted(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      restricted[i] = v[dofs[i]];
+    return restricted;
+  }
+  const std::vector<double>& column(const ContactTerm& t) const
+  {
+    return columns[slot[t.pair][t.node] + t.component];
+  }
+  const Functional& functional(const ContactTerm& t) const
+  {
+    return functionals[t.pair][t.node][t.component];
+  }
+  // The steps of solve_contact_system (contact_condensed.cc): u_base (m) at the contact DoFs,
+  // Rᵀ f of its loads (N·m), and S, E and b of the contact rows.
+  std::vector<double> base_displacement(const std::vector<ContactTerm>& friction_loads,
+                                        double load_factor) const;
+  Eigen::VectorXd free_mode_loads(const std::vector<ContactTerm>& friction_loads,
+                                  double load_factor) const;
+  void assemble(const std::vector<ContactRow>& rows, const std::vector<double>& base,
+                Eigen::MatrixXd& schur, Eigen::MatrixXd& coupling, Eigen::VectorXd& rhs) const;
+};
+
+} // namespace gearstiff::contact

@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""Progress lines (issue 25): on stderr, from the rank that did the work, silenced by --quiet,
+never on stdout of a --json run.
+
+usage: progress.py path/to/gearstiff "MPIEXEC"
+
+1. `stiffness --json` (one position): stderr shows the four stages with the elapsed time, stdout
+   is exactly one JSON object.
+2. `stiffness --quiet`: stderr is empty.
+3. `MPIEXEC -np 2 stiffness --json`, a 4-position sweep: each rank reports the positions it
+   solved ("[rank 0]" and "[rank 1]", each with "done here", elapsed and "left"), stdout is JSON.
+"""
+import json
+import re
+import shlex
+import subprocess
+import sys
+
+
+def run(command):
+    process = subprocess.run(command, capture_output=True, text=True)
+    if process.returncode != 0:
+        sys.exit(f"progress: {' '.join(command)} exited {process.returncode}: {process.stderr}")
+    return process
+
+
+def main():
+    gearstiff, mpiexec = sys.argv[1], shlex.split(sys.argv[2])
+    one = run([gearstiff, "stiffness", "--json"])
+    json.loads(one.stdout)  # stdout holds the JSON alone
+    for stage in range(1, 5):
+        if not re.search(rf"stiffness: stage {stage}/4 .* s elapsed", one.stderr):
+            sys.exit(f"progress: no stage {stage}/4 line on stderr:\n{one.stderr}")
+    quiet = run([gearstiff, "stiffness", "--quiet"])
+    if quiet.stderr.strip():
+        sys.exit(f"progress: --quiet printed on stderr:\n{quiet.stderr}")
+    sweep = run(mpiexec + ["-np", "2", gearstiff, "stiffness", "--json", "--set",
+                           "Stiffness/mode=sweep", "--set", "Stiffness/sweep positions=4"])
+    json.loads(sweep.stdout)
+    for rank in (0, 1):
+        pattern = rf"stiffness: position \d/4 .*done here of ~2, .* s elapsed, ~.* s left\) \[rank {rank}\]"
+        if not re.search(pattern, sweep.stderr):
+            sys.exit(f"progress: rank {rank} reported no position:\n{sweep.stderr}")
+    print("progress: stages, per-rank sweep lines, --quiet and --json stdout as expected")
+
+
+if __name__ == "__main__":
+    main()

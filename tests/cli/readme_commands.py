@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Runs every command line of the README as written (issue 25: the examples must work).
+
+usage: readme_commands.py README.md path/to/gearstiff WORK_FOLDER
+
+The command lines are the indented code lines that start with `gearstiff`, `mpirun` or
+`bash tools/` (a trailing backslash continues a line). Each runs with bash in WORK_FOLDER, with
+the gearstiff binary first on PATH and `tools/` read as the source tree's. Changes made for a
+test and why:
+  - `mpirun` gets `--allow-run-as-root --oversubscribe --bind-to none` (CI runs as root on a
+    shared machine, docs/developers.md) and keeps the README's -np 2;
+  - the lines in SMALLER get a few `--set` appended (before a trailing comment), so that the whole
+    test stays under a minute or two (the README's sizes are a user's, not a test's);
+  - synopsis lines with placeholders (`gearstiff <command> [file.prm] ...`) are not commands;
+  - `bash tools/run.sh` and `bash tools/test.sh` are not run: they install packages, build the
+    project and run the whole suite (test.sh is CI itself); the command run.sh ends with,
+    `gearstiff run`, is in the README's examples through the same commands it chains.
+A line that calls `ccx` is skipped when ccx is not installed, and the test then exits 77 (ctest:
+skipped) after every other line passed. Exit 1 names the first failing line and its stderr.
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+# Substring of a README line -> settings added after `gearstiff <command>` for the test.
+SMALLER = {
+    # ~1 M DoFs, ~200 s, ~11 GB as written: one hexahedron layer of Q1, 42k DoFs, ~10 s.
+    "Mesh/dimension=3": ['--set Mesh/layers=1', '--set "Finite elements/Element degree=1"'],
+    # a 32-position sweep: 4 positions show the same path.
+    "Stiffness/mode=sweep": ['--set "Stiffness/sweep positions=4"'],
+    # 12 solves and two friction loops (~2 min on a loaded machine): one profile, Q1.
+    "cycloid-loads": ['--set "Cycloid loads/profiles=nominal"',
+                      '--set "Finite elements/Element degree=1"'],
+}
+NOT_RUN = ("bash tools/run.sh", "bash tools/test.sh")
+
+
+def readme_commands(readme):
+    lines, current = [], None
+    with open(readme) as f:
+        for raw in f:
+            if not raw.startswith("    "):
+                current = None
+                continue
+            text = raw.rstrip("\n")[4:]
+            if current is not None:
+                current += " " + text.strip()
+            elif re.match(r"(gearstiff|mpirun|bash tools/)\b", text):
+                current = text.strip()
+            else:
+                continue
+            if current.endswith("\\"):
+                current = current[:-1].rstrip()
+            else:
+                lines.append(current)
+                current = None
+    return lines
+
+
+def prepared(line, source):
+    for key, settings in SMALLER.items():
+        if key in line:
+            # After the README's own settings (a later --set wins), before a trailing comment.
+            command, hash_mark, comment = line.partition(" #")
+            line = command.rstrip() + " " + " ".join(settings) + (
+                "  " + hash_mark.strip() + comment if hash_mark else "")
+    line = line.replace("mpirun ", "mpirun --allow-run-as-root --oversubscribe --bind-to none ")
+    return re.sub(r"(?<![\w/.])tools/", os.path.join(source, "tools") + "/", line)
+
+
+def main():
+    readme, gearstiff, work = sys.argv[1:4]
+    source = os.path.dirname(os.path.abspath(readme))
+    shutil.rmtree(work, ignore_errors=True)  # the README's -o folders must not exist yet
+    os.makedirs(work)
+    env = dict(os.environ)
+    env["PATH"] = os.path.dirname(os.path.abspath(gearstiff)) + os.pathsep + env["PATH"]
+    commands = readme_commands(readme)
+    if len(commands) < 10:
+        sys.exit(f"readme_commands: found only {len(commands)} command lines in {readme}")
+    skipped = 0
+    for line in commands:
+        if line.startswith(NOT_RUN):
+            print(f"not run (installs, builds, runs the suite): {line}")
+            continue
+        if re.search(r"<\w+>", line):
+            print(f"not run (a synopsis with placeholders): {line}")
+            continue
+        if re.search(r"\bccx\b", line) and shutil.which("ccx") is None:
+            print(f"skipped (no ccx): {line}")
+            skipped += 1
+            continue
+        command = prepared(line, source)
+        start = time.monotonic()
+        process = subprocess.run(["bash", "-c", "set -o pipefail; " + command], cwd=work, env=env,
+                                 capture_output=True, text=True)
+        elapsed = time.monotonic() - start
+        if process.returncode != 0:
+            print(f"FAILED (exit {process.returncode}, {elapsed:.1f} s): {line}\nran: {command}\n"
+                  f"stderr:\n{process.stderr[-3000:]}\nstdout:\n{process.stdout[-2000:]}")
+            return 1
+        print(f"ok {elapsed:6.1f} s: {line}")
+    return 77 if skipped else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
