@@ -44,7 +44,10 @@ TEST(CycloidHysteresis, FrictionOpensTheLoopWiderWithMu)
   EXPECT_GT(low.hysteresis, 0.002 * arcmin);
   EXPECT_GT(low.hysteresis, 5. * std::abs(frictionless.hysteresis));
   EXPECT_GT(high.hysteresis, 1.5 * low.hysteresis);
-  // Friction stiffens nothing away from reversals: the loading secants stay within 20% of the
-  // frictionless one (556 N·m/arcmin, docs/cycloid.md).
-  EXPECT_NEAR(low.stiffness / frictionless.stiffness, 1., 0.2);
+  // Sticking contacts add constraints, so the loading secant with friction is stiffer than the
+  // frictionless one (an energy bound); by how much has no independent value: regression,
+  // measured 2026-11-26 (578.13 against 549.11 N·m/arcmin, +5.29 %; docs/cycloid.md: ~5 %),
+  // tolerance 0.3 points.
+  EXPECT_GT(low.stiffness, frictionless.stiffness);
+  EXPECT_NEAR(low.stiffness / frictionless.stiffness, 1.0529, 0.003);
 }

@@ -18,7 +18,7 @@ from verify import Checks, run_json, value, work_folder
 gearstiff, work = os.path.realpath(sys.argv[1]), work_folder(sys.argv[2])
 common = ["Gear pair/Pinion/teeth=24", "Gear pair/Wheel/teeth=69",
           "Gear pair/Pinion/profile shift=0", "Gear pair/Wheel/profile shift=0",
-          "Gear pair/Pinion/tip diameter=0"]
+          "Gear pair/Pinion/tip diameter=0", "Gear pair/Pinion/bore diameter=20"]
 internal = common + ["Gear pair/Wheel/internal=true", "Gear pair/Wheel/tip diameter=170",
                      "Gear pair/Wheel/bore diameter=0"]
 external = common + ["Gear pair/Wheel/tip diameter=0", "Gear pair/Wheel/bore diameter=150"]
