@@ -228,6 +228,9 @@ void report_nonlinear_meshes(const DynamicsParameters& p, const SimulationResult
                  "separated in the free play, back flank (drive table mirrored) below "
                  "−2b; switches located by RK4 (dynamics/README.md)"
                : ": F = k·δ + c·δ̇"));
+  if (p.mesh_model == MeshModel::nonlinear)
+    report.add_value("located_switches", result.trajectory.cost.located_switches, "-",
+                     "contact changes located by RK4 (all meshes, whole run)");
   for (unsigned int m = 0; m < result.meshes.size(); ++m)
   {
     const MeshResult& mesh = result.meshes[m];

@@ -157,7 +157,7 @@ TEST(StiffnessFile, FilePathOfContactReplacesStandardTeeth)
     input.input_torque = 100.;
     for (unsigned int m = 0; m < 2; ++m)
       input.meshes.push_back(
-          {MeshStiffness::constant(4e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}});
+          {MeshStiffness::constant(4e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}, {}});
     input.meshes[1].stiffness_driver = fe_pinion;
     input.meshes[1].contact_ratio = 1.4;
     input.meshes[1].approach_ratio = 0.3;

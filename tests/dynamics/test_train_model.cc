@@ -32,6 +32,7 @@ TrainDynamicsInput constant_mesh_input(const kinematics::GearTrainText& text, do
                             0.,
                             {},
                             {},
+                            {},
                             {}});
   return input;
 }
@@ -235,7 +236,7 @@ TEST(TrainModel, IsoPairsOfTrainMeshes)
   TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(text);
   input.input_torque = 49.4;
-  input.meshes.push_back({MeshStiffness::constant(4e8, "m"), 100., 0., 0., 0., {}, {}, {}});
+  input.meshes.push_back({MeshStiffness::constant(4e8, "m"), 100., 0., 0., 0., {}, {}, {}, {}});
   const TrainModel pair = build_train_model(input);
   ASSERT_EQ(pair.spec_mesh_iso.size(), 1u);
   const double r1 = 0.5 * 2.5e-3 * 21 * std::cos(input.pressure_angle);
