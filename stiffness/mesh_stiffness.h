@@ -115,10 +115,11 @@ struct GearMeshStiffnessResult
   unsigned int n_dofs = 0;
   double contact_size = 0.; // m, h_c of the scene
   unsigned int active_set_iterations = 0;
-  double scene_time = 0.;                // s, wall: geometry, meshing, writing (rank 0)
-  double setup_time = 0.;                // s, wall: reading, DoFs, stiffness, mortar coupling
-  double solve_time = 0.;                // s, wall: contact iterations (assembly + linear solves)
-  double total_time = 0.;                // s, wall: the whole run
+  double scene_time = 0.;         // s, wall: geometry, meshing, writing (rank 0)
+  double setup_time = 0.;         // s, wall: reading, DoFs, stiffness, mortar coupling
+  double solve_time = 0.;         // s, wall: contact iterations (assembly + linear solves)
+  double factorization_time = 0.; // s, wall: the stiffness factorization, when this run made it
+  double total_time = 0.;         // s, wall: the whole run
   std::vector<std::string> output_files; // VTU/PVTU written (relative to the directory)
 
   // Every field, for boost-style serialisation (the translation unit that sends a result
@@ -131,7 +132,7 @@ struct GearMeshStiffnessResult
     archive& mesh_stiffness& transmission_error& wheel_torque& torque_ratio& pinion_hub_torque;
     archive& pairs& max_contact_pressure& pinion_root_stress& wheel_root_stress;
     archive& dimension& n_cells& n_dofs& contact_size& active_set_iterations;
-    archive& scene_time& setup_time& solve_time& total_time& output_files;
+    archive& scene_time& setup_time& solve_time& factorization_time& total_time& output_files;
   }
 };
 
@@ -147,7 +148,24 @@ public:
   // forward (the torque did not close the mesh).
   GearMeshStiffnessResult run();
 
+  // Rolling (a sweep with one mesh, stiffness/mesh_stiffness_rolling.cc): the reference pair at
+  // `position` (m from T1 along the line of action). The first call meshes the scene at its own
+  // position (settings.scene: roll angle) with the flanks refined for every position of
+  // settings.scene.swept_positions, and factorizes the stiffness; every call turns both bodies
+  // rigidly to `position`, pairs the teeth in contact there afresh and solves the contact on the
+  // one factorization. `output_base`: VTU base name of this position (bodies in their own,
+  // unturned frames). InputError naming "Stiffness/sweep mesh" for a position outside the
+  // swept ones (the flanks are refined only there).
+  GearMeshStiffnessResult roll_to(double position, const std::string& output_base);
+
 private:
+  // Rolling: the pairs in contact with the reference pair at `position` (m), and the bodies'
+  // turns from the scene's own position.
+  void set_candidate_pairs(double position);
+  std::vector<contact::BodyRotation<dim>> body_rotations(double position) const;
+  double scene_position = 0.; // m, ℓ_ref of the meshed scene (rolling)
+  double mesh_diameter = 0.;  // m, GridTools::diameter of the mesh (0: not yet computed)
+
   void make_scene();
   void setup_problem();
   void solve();
@@ -173,6 +191,7 @@ inline const std::string torque = "stiffness.pinion_torque";
 inline const std::string positions = "sweep.positions";
 inline const std::string pitches = "sweep.base_pitches";
 inline const std::string scene_file = "stiffness.scene_file";
+inline const std::string sweep_mesh = "sweep.mesh";
 } // namespace stiffness_parameter
 
 // The checks of the settings the constructor makes before anything is meshed (InputError

@@ -12,6 +12,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 namespace gearstiff::stiffness
@@ -75,6 +76,28 @@ GearMeshStiffnessResult solve_position(const GearMeshStiffnessSettings& settings
   return result;
 }
 
+// One position of a rolling sweep: the rank's analysis is made (meshed, factorized) by its
+// first position; a failure's reason starts with `context`.
+template <int dim>
+GearMeshStiffnessResult roll_position(std::unique_ptr<GearMeshStiffness<dim>>& analysis,
+                                      const GearMeshStiffnessSettings& settings,
+                                      const double position, const std::string& suffix,
+                                      const std::string& context)
+{
+  GearMeshStiffnessResult result;
+  const fem::Failure failure = fem::catch_failure(
+      [&]()
+      {
+        if (!analysis)
+          analysis = std::make_unique<GearMeshStiffness<dim>>(MPI_COMM_SELF, settings);
+        result = analysis->roll_to(position, settings.output_base + "_" + suffix);
+      });
+  if (!analysis || failure.kind != fem::Failure::none)
+    std::filesystem::remove(settings.scene_file);
+  failure.rethrow(context);
+  return result;
+}
+
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
@@ -92,6 +115,15 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   GearMeshStiffnessSettings warm = settings;
   warm.warm_start = std::make_shared<std::vector<contact::ContactZone>>();
 
+  // `once`: every rank meshes the same scene (at the first position, refined for all of them)
+  // and factorizes it when it takes its first position.
+  GearMeshStiffnessSettings rolling = warm;
+  rolling.scene.position = geometry::PairPosition::roll_angle;
+  rolling.scene.pinion_roll_angle = positions.front() / r_b1;
+  rolling.scene.swept_positions = positions;
+  rolling.scene_file = scene_file_stem + "_once_" + std::to_string(rank) + ".msh";
+  std::unique_ptr<GearMeshStiffness<dim>> analysis;
+
   // Each rank takes the next unsolved position as soon as it is free (fem::distribute_items);
   // a failure stops every rank within about one contact iteration, and the first failing
   // position decides what every rank throws.
@@ -102,20 +134,34 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
       {
         const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
                                   format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
-        const GearMeshStiffnessResult r = solve_position<dim>(
-            warm, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
+        const GearMeshStiffnessResult r =
+            spec.mesh == SweepMesh::once
+                ? roll_position(analysis, rolling, positions[i], Utilities::int_to_string(i, 3),
+                                where)
+                : solve_position<dim>(warm, positions[i] / r_b1, Utilities::int_to_string(i, 3),
+                                      scene_file_stem, where);
         mine.emplace_back(i, r);
         if (progress)
           progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
                    format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
                    "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
                    std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
-                   " s [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) +
+                   " s" +
+                   (spec.mesh == SweepMesh::once
+                        ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
+                              format_number(r.setup_time, 3) + " s, contact " +
+                              format_number(r.solve_time, 3) + " s)"
+                        : std::string()) +
+                   " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) +
                    " solved]");
       });
 
+  if (spec.mesh == SweepMesh::once)
+    std::filesystem::remove(rolling.scene_file);
+
   // Every rank receives every position's result.
   StiffnessSweepResult result;
+  result.mesh = spec.mesh;
   result.n_ranks = n_ranks;
   result.positions.resize(n);
   result.rank_of_position.resize(n);
@@ -126,6 +172,17 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
       result.positions[i] = position;
       result.rank_of_position[i] = r;
     }
+  for (const auto& position : result.positions)
+  {
+    // The fixed part of a rolling sweep: the scene, set-up and factorization of each rank's
+    // first position (scene_time > 0 only there).
+    const double once =
+        position.scene_time > 0. && spec.mesh == SweepMesh::once
+            ? position.scene_time + position.setup_time + position.factorization_time
+            : 0.;
+    result.once_time += once;
+    result.per_position_time += position.total_time - once;
+  }
   result.wall_time = timer.wall_time();
   return result;
 }
