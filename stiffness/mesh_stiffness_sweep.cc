@@ -98,6 +98,39 @@ GearMeshStiffnessResult roll_position(std::unique_ptr<GearMeshStiffness<dim>>& a
   return result;
 }
 
+// Every position's result on every rank, with the rank that solved it; the once and
+// per-position times of the sweep.
+StiffnessSweepResult
+gather_positions(MPI_Comm mpi_communicator,
+                 const std::vector<std::pair<unsigned int, GearMeshStiffnessResult>>& mine,
+                 unsigned int n, SweepMesh mesh)
+{
+  StiffnessSweepResult result;
+  result.mesh = mesh;
+  result.n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+  result.positions.resize(n);
+  result.rank_of_position.resize(n);
+  const auto gathered = Utilities::MPI::all_gather(mpi_communicator, mine);
+  for (unsigned int r = 0; r < gathered.size(); ++r)
+    for (const auto& [i, position] : gathered[r])
+    {
+      result.positions[i] = position;
+      result.rank_of_position[i] = r;
+    }
+  for (const auto& position : result.positions)
+  {
+    // The fixed part of a rolling sweep: the scene, set-up and factorization of each rank's
+    // first position (scene_time > 0 only there).
+    const double once =
+        position.scene_time > 0. && mesh == SweepMesh::once
+            ? position.scene_time + position.setup_time + position.factorization_time
+            : 0.;
+    result.once_time += once;
+    result.per_position_time += position.total_time - once;
+  }
+  return result;
+}
+
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
@@ -108,7 +141,6 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
   const std::vector<double> positions = sweep_positions(pair, spec);
   const unsigned int n = positions.size();
-  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
   // Each rank's positions start from the contact zone of its previous one.
@@ -160,29 +192,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
     std::filesystem::remove(rolling.scene_file);
 
   // Every rank receives every position's result.
-  StiffnessSweepResult result;
-  result.mesh = spec.mesh;
-  result.n_ranks = n_ranks;
-  result.positions.resize(n);
-  result.rank_of_position.resize(n);
-  const auto gathered = Utilities::MPI::all_gather(mpi_communicator, mine);
-  for (unsigned int r = 0; r < gathered.size(); ++r)
-    for (const auto& [i, position] : gathered[r])
-    {
-      result.positions[i] = position;
-      result.rank_of_position[i] = r;
-    }
-  for (const auto& position : result.positions)
-  {
-    // The fixed part of a rolling sweep: the scene, set-up and factorization of each rank's
-    // first position (scene_time > 0 only there).
-    const double once =
-        position.scene_time > 0. && spec.mesh == SweepMesh::once
-            ? position.scene_time + position.setup_time + position.factorization_time
-            : 0.;
-    result.once_time += once;
-    result.per_position_time += position.total_time - once;
-  }
+  StiffnessSweepResult result = gather_positions(mpi_communicator, mine, n, spec.mesh);
   result.wall_time = timer.wall_time();
   return result;
 }

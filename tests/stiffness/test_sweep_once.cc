@@ -95,7 +95,8 @@ TEST(SweepOnce, InternalPairMatchesPerPosition)
 {
   GearMeshStiffnessSettings settings = planet_ring_settings(3., "once_internal");
   settings.contact.friction_coefficient = 0.01;
+  // 16 positions keep the test's time in bounds (the ring's mesh is the larger one).
   StiffnessSweepSpec spec;
-  spec.positions = 32;
+  spec.positions = 16;
   compare_sweeps(settings, spec, "internal");
 }
