@@ -205,6 +205,15 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_value("sweep_ranks", sweep.n_ranks, "-", "MPI ranks sharing the positions");
   report.add_value("sweep_cpu_time", cost, "s", "sum of the positions' wall times");
   report.add_value("sweep_wall_time", sweep.wall_time, "s", "wall time of the sweep");
+  const bool once = sweep.mesh == stiffness::SweepMesh::once;
+  report.add_value("sweep_mesh", once ? 1. : 0., "-",
+                   once ? "1: once (each rank meshed and factorized one scene and turned it)"
+                        : "0: per position (a scene, mesh and factorization per position)");
+  report.add_value("sweep_once_time", sweep.once_time, "s",
+                   "done once (per rank, summed): meshing, set-up of K, factorization");
+  report.add_value("sweep_per_position_time", sweep.per_position_time / sweep.positions.size(), "s",
+                   once ? "per position, mean: turning, pairing, contact solve, evaluation"
+                        : "per position, mean: everything");
 
   if (context.writes_files() && context.is_root())
   {

@@ -78,6 +78,12 @@ void declare_stiffness_parameters(ParameterHandler& prm)
                     "'name = value, ...' of Gear pair/Pinion and Wheel entries ('tip relief = "
                     "10' both gears, 'Pinion/tip relief = 10' one), e.g. 'tip relief = 5; tip "
                     "relief = 10'; empty = none");
+  prm.declare_entry("sweep mesh", "per position", Selection("per position|once"),
+                    "per position: every sweep position builds, meshes and factorizes its own "
+                    "scene (the reference); once: each rank meshes one scene, refined along "
+                    "every flank contact of the sweep, factorizes it once and turns the bodies "
+                    "rigidly to each position (the contact paired afresh there; needs the "
+                    "direct solver's Schur complement)");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
@@ -123,6 +129,8 @@ ParameterNames stiffness_parameter_names()
   names[stiffness::stiffness_parameter::torques] = "Stiffness/torques";
   names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
   names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
+  names[stiffness::stiffness_parameter::sweep_mesh] = "Stiffness/sweep mesh";
+  names[geometry::scene_field::swept_positions] = "Stiffness/sweep mesh";
   return names;
 }
 
@@ -268,6 +276,8 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   const double start = prm.get_double("sweep start");
   p.sweep.base_pitches = prm.get_double("sweep base pitches");
   const long positions = prm.get_integer("sweep positions");
+  p.sweep.mesh = prm.get("sweep mesh") == "once" ? stiffness::SweepMesh::once
+                                                 : stiffness::SweepMesh::per_position;
   p.write_vtu = prm.get_bool("write vtu");
   p.published_reference =
       prm.get_bool("published reference") && kinematics::is_split_path_pair(s.scene.pair);

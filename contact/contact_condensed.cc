@@ -42,6 +42,29 @@ void ContactProblem<dim>::build_condensed(double load_factor)
   for (const auto& support : supports)
     if (support.hub)
       support.hub->add_loads(unit_loads, 1.);
+  if (!rolling)
+    collect_contact_dofs(c);
+  elastic.set_load_factor(1.);
+  // Rolling: the contact DoFs change with every position, so no dense Schur complement on the
+  // first position's ones.
+  c.factorization = std::make_unique<fem::StiffnessFactorization<dim>>(
+      elastic, c.supports, unit_loads, rolling ? std::vector<types::global_dof_index>() : c.dofs);
+  // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
+  const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
+  elastic.set_load_factor(load_factor);
+  map_contact(c);
+  for (const auto& mode : c.factorization->free_modes())
+    c.mode_loads.push_back(-(mode * unit_residual) + mode * unit_loads);
+  result.assembly_time += c.factorization->factorization_time();
+  result.factorization_time = c.factorization->factorization_time();
+  result.schur_complement = true;
+  condensed = std::move(built);
+}
+
+template <int dim>
+void ContactProblem<dim>::collect_contact_dofs(Condensed& c) const
+{
+  c.dofs.clear();
   for (const auto& pair : pairs)
     for (const auto& node : pair.nodes)
     {
@@ -53,12 +76,18 @@ void ContactProblem<dim>::build_condensed(double load_factor)
     }
   std::sort(c.dofs.begin(), c.dofs.end());
   c.dofs.erase(std::unique(c.dofs.begin(), c.dofs.end()), c.dofs.end());
-  elastic.set_load_factor(1.);
-  c.factorization =
-      std::make_unique<fem::StiffnessFactorization<dim>>(elastic, c.supports, unit_loads, c.dofs);
-  // Rᵀ f_tractions = −Rᵀ (K u_p − f) because K R = 0 for rigid modes.
-  const Vector<double> unit_residual = elastic.residual(c.factorization->particular_solution());
-  elastic.set_load_factor(load_factor);
+}
+
+template <int dim>
+void ContactProblem<dim>::map_contact(Condensed& c) const
+{
+  // What depends on the pairing (the contact DoFs of the current pairs): the nodes'
+  // functionals, their column slots, the particular solution and free modes at the DoFs.
+  collect_contact_dofs(c);
+  c.functionals.clear();
+  c.slot.clear();
+  c.columns.clear();
+  c.modes.clear();
   for (const auto& pair : pairs)
   {
     c.functionals.emplace_back();
@@ -66,35 +95,39 @@ void ContactProblem<dim>::build_condensed(double load_factor)
     {
       std::array<typename Condensed::Functional, dim> functional;
       for (unsigned int d = 0; d < dim; ++d)
-      {
-        functional[d].terms.emplace_back(c.position(node.node.dofs[d]), 1.);
-        for (const auto& master : node.masters)
-          functional[d].terms.emplace_back(c.position(master.node.dofs[d]), -master.weight);
-      }
+        if (!node.rotated)
+        {
+          functional[d].terms.emplace_back(c.position(node.node.dofs[d]), 1.);
+          for (const auto& master : node.masters)
+            functional[d].terms.emplace_back(c.position(master.node.dofs[d]), -master.weight);
+        }
+        else
+          for (const auto& [dof, weight] : relative_terms(node, d))
+            functional[d].terms.emplace_back(c.position(dof), weight);
       c.functionals.back().push_back(functional);
     }
     c.slot.emplace_back(pair.nodes.size(), -1);
   }
   c.particular = c.at_dofs(c.factorization->particular_solution());
-  std::vector<bool> held(n_dofs, false);
+  if (c.particular_change.size() > 0)
+    for (unsigned int i = 0; i < c.dofs.size(); ++i)
+      c.particular[i] += c.particular_change[c.dofs[i]];
+  std::vector<bool> held(elastic.get_dof_handler().n_dofs(), false);
   for (const auto& line : c.supports.get_lines())
   {
     held[line.index] = true;
     for (const auto& [master, weight] : line.entries)
       held[master] = true;
   }
+  c.slave_forces_exact = true;
   for (const auto& pair : pairs)
     for (const auto& node : pair.nodes)
       for (unsigned int d = 0; d < dim; ++d)
         c.slave_forces_exact = c.slave_forces_exact && !held[node.node.dofs[d]];
   for (const auto& mode : c.factorization->free_modes())
-  {
     c.modes.push_back(c.at_dofs(mode));
-    c.mode_loads.push_back(-(mode * unit_residual) + mode * unit_loads);
-  }
-  result.assembly_time += c.factorization->factorization_time();
-  result.schur_complement = true;
-  condensed = std::move(built);
+  c.partial = false;
+  c.amplitudes.clear();
 }
 
 template <int dim>
@@ -111,12 +144,15 @@ void ContactProblem<dim>::add_new_columns()
         new_nodes.emplace_back(p, k);
         const SlaveNode<dim>& node = pairs[p].nodes[k];
         for (unsigned int d = 0; d < dim; ++d)
-        {
-          fem::SparseLoad load{{node.node.dofs[d], 1.}};
-          for (const auto& master : node.masters)
-            load.emplace_back(master.node.dofs[d], -master.weight);
-          loads.push_back(std::move(load));
-        }
+          if (!node.rotated)
+          {
+            fem::SparseLoad load{{node.node.dofs[d], 1.}};
+            for (const auto& master : node.masters)
+              load.emplace_back(master.node.dofs[d], -master.weight);
+            loads.push_back(std::move(load));
+          }
+          else
+            loads.push_back(relative_terms(node, d));
       }
   if (loads.empty())
     return;
@@ -298,7 +334,8 @@ void ContactProblem<dim>::solve_contact_system(const std::vector<ContactRow>& ro
   {
     // The closed contacts leave a body free. The reference path's check names the body; it
     // builds the eliminated constraints, which only the reference path needs to be acyclic.
-    elastic.check_rigid_body_freedom(make_constraints(load_factor), "linear solve");
+    if (!rolling)
+      elastic.check_rigid_body_freedom(make_constraints(load_factor), "linear solve");
     throw SolverFailure("linear solve", "a body held only through contact is free to move: "
                                         "the closed contacts leave a rigid-body motion "
                                         "unrestrained");
@@ -331,6 +368,12 @@ void ContactProblem<dim>::apply_contact_solution(const std::vector<ContactRow>& 
   auto add_node_load = [&](const ContactTerm& t, double force)
   {
     const SlaveNode<dim>& node = pairs[t.pair].nodes[t.node];
+    if (node.rotated)
+    {
+      for (const auto& [dof, weight] : relative_terms(node, t.component))
+        load[dof] += weight * force;
+      return;
+    }
     load[node.node.dofs[t.component]] += force;
     for (const auto& master : node.masters)
       load[master.node.dofs[t.component]] -= master.weight * force;

@@ -123,6 +123,9 @@ void ContactProblem<dim>::couple_pairs()
   // a component held by a roller stays held in the contact constraints too.
   AffineConstraints<double> held;
   add_support_constraints(held, 1.);
+  // Rolling: each pair is coupled on the turned bodies, the mesh put back in place at once.
+  const std::vector<Point<dim>> reference =
+      rolling ? elastic.triangulation().get_vertices() : std::vector<Point<dim>>();
   for (auto& pair : pairs)
   {
     // A surface paired with itself closes onto its own nodes: every node would be constrained
@@ -132,14 +135,32 @@ void ContactProblem<dim>::couple_pairs()
         throw InputError(pair.name, "the slave and master surfaces share boundary id " +
                                         std::to_string(id) +
                                         ": a surface cannot be its own contact partner");
-    std::vector<SlaveNode<dim>> coupled =
-        mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
-                        parameters.search_distance, elastic.depth());
+    std::vector<SlaveNode<dim>> coupled;
+    if (rolling)
+    {
+      turn_bodies(reference, true);
+      try
+      {
+        coupled = mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
+                                  parameters.search_distance, elastic.depth());
+      }
+      catch (...)
+      {
+        turn_bodies(reference, false);
+        throw;
+      }
+      turn_bodies(reference, false);
+    }
+    else
+      coupled = mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
+                                parameters.search_distance, elastic.depth());
     pair.nodes.clear();
     for (auto& node : coupled)
       if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))
         pair.nodes.push_back(std::move(node));
     check_candidates(pair);
+    if (rolling)
+      set_node_frames(pair);
   }
 }
 
@@ -192,9 +213,115 @@ void ContactProblem<dim>::set_cold_start()
 }
 
 template <int dim>
+void ContactProblem<dim>::roll(const std::vector<BodyRotation<dim>>& new_rotations)
+{
+  if (!use_schur_complement())
+    throw InputError("Contact/Iteration solves",
+                     "rolling bodies (one mesh for a whole sweep) needs the Schur complement "
+                     "with the direct solver");
+  rolling = true;
+  rotations = new_rotations;
+  if (result.n_dofs == 0)
+    return; // before setup_system(): it couples the pairs on the turned bodies
+  Timer timer(mpi_communicator, true);
+  couple_pairs();
+  set_cold_start();
+  warm_started = false;
+  displacement = 0.;
+  step_start = 0.;
+  const types::global_dof_index n_dofs = result.n_dofs;
+  result = ContactResults<dim>();
+  result.n_dofs = n_dofs;
+  result.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+  if (condensed)
+    map_contact(*condensed);
+  result.setup_time = timer.wall_time();
+}
+
+namespace
+{
+// The turn by `angle` (rad, counter-clockwise) about the z axis.
+template <int dim>
+Tensor<2, dim> turn_about_z(double angle)
+{
+  Tensor<2, dim> turn;
+  turn[0][0] = turn[1][1] = std::cos(angle);
+  turn[1][0] = std::sin(angle);
+  turn[0][1] = -turn[1][0];
+  if (dim == 3)
+    turn[dim - 1][dim - 1] = 1.;
+  return turn;
+}
+} // namespace
+
+template <int dim>
+void ContactProblem<dim>::turn_bodies(const std::vector<Point<dim>>& reference, bool turn)
+{
+  std::vector<bool> moved(reference.size(), false);
+  for (const auto& cell : elastic.triangulation().active_cell_iterators())
+  {
+    const auto rotation =
+        std::find_if(rotations.begin(), rotations.end(),
+                     [&](const BodyRotation<dim>& r) { return r.body == cell->material_id(); });
+    const Tensor<2, dim> matrix =
+        turn_about_z<dim>(turn && rotation != rotations.end() ? rotation->angle : 0.);
+    for (const unsigned int v : cell->vertex_indices())
+    {
+      const unsigned int i = cell->vertex_index(v);
+      if (moved[i])
+        continue;
+      moved[i] = true;
+      if (!turn || rotation == rotations.end())
+        cell->vertex(v) = reference[i];
+      else
+        cell->vertex(v) = rotation->axis + matrix * (reference[i] - rotation->axis);
+    }
+  }
+}
+
+template <int dim>
+void ContactProblem<dim>::set_node_frames(Pair& pair) const
+{
+  // The body of a surface: the material of the cells its faces belong to.
+  const auto angle_of = [&](const std::vector<types::boundary_id>& ids)
+  {
+    for (const auto& cell : elastic.get_dof_handler().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) != ids.end())
+        {
+          for (const auto& rotation : rotations)
+            if (rotation.body == cell->material_id())
+              return rotation.angle;
+          return 0.;
+        }
+    return 0.;
+  };
+  const Tensor<2, dim> slave = turn_about_z<dim>(angle_of(pair.slave));
+  const Tensor<2, dim> master = turn_about_z<dim>(angle_of(pair.master));
+  for (auto& node : pair.nodes)
+  {
+    node.rotated = true;
+    node.slave_frame = slave;
+    node.master_frame = master;
+  }
+}
+
+template <int dim>
 Tensor<1, dim> ContactProblem<dim>::relative_displacement(const SlaveNode<dim>& node,
                                                           const Vector<double>& u) const
 {
+  if (node.rotated)
+  {
+    Tensor<1, dim> slave, master; // in the bodies' own frames
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      slave[d] = u[node.node.dofs[d]];
+      for (const auto& m : node.masters)
+        master[d] += m.weight * u[m.node.dofs[d]];
+    }
+    return node.slave_frame * slave - node.master_frame * master;
+  }
   Tensor<1, dim> relative;
   for (unsigned int c = 0; c < dim; ++c)
   {
@@ -212,7 +339,8 @@ Tensor<1, dim> ContactProblem<dim>::nodal_force(const SlaveNode<dim>& node,
   Tensor<1, dim> force;
   for (unsigned int c = 0; c < dim; ++c)
     force[c] = residual[node.node.dofs[c]];
-  return force;
+  // Rolling: the residual holds the components of the slave body's own frame.
+  return node.rotated ? node.slave_frame * force : force;
 }
 
 template <int dim>

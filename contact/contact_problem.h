@@ -127,6 +127,7 @@ struct ContactResults
   unsigned int n_mpi_ranks = 1;
   double setup_time = 0.;            // s: DoFs, K, mortar coupling
   double assembly_time = 0.;         // s, summed over iterations (Schur: the one factorization)
+  double factorization_time = 0.;    // s, the one factorization when this solve made it
   double solve_time = 0.;            // s, summed over iterations
   double total_time = 0.;            // s
   bool schur_complement = false;     // the iterations solved the contact Schur complement
@@ -144,6 +145,15 @@ struct ContactZone
 {
   std::string pair;
   double gap_range = 0.; // m, closed nodes: initial gap − smallest initial gap of the pair
+};
+
+// A rigid turn of one body about the z axis (rolling: ContactProblem::roll).
+template <int dim>
+struct BodyRotation
+{
+  dealii::types::material_id body = 0; // material id of the body's cells
+  dealii::Point<dim> axis;             // m, a point of the rotation axis (parallel to z)
+  double angle = 0.;                   // rad, counter-clockwise about +z
 };
 
 template <int dim>
@@ -187,6 +197,19 @@ public:
   // a target change adds the hub's unit response once per change (one solve).
   void set_hub_target(const std::string& name, double value);
   const ContactResults<dim>& solve_next_step();
+  // Rolling — one mesh, one factorization, many positions. The small-strain stiffness of a body
+  // is invariant under a rigid rotation of its own frame, so a body's DoFs may keep its own,
+  // unrotated frame while the contact is paired on the bodies turned by `rotations` (bodies not
+  // listed stay): the normals, gaps and mortar weights come from the turned geometry, and each
+  // contact row turns the DoF components into the normal's frame. Called before setup_system()
+  // (first position) or after a solve (next positions: the pairs are coupled afresh, the
+  // contact starts cold — or from start_from() —, and K, the supports and the factorization are
+  // kept). `pairs` of add_contact_pair may be replaced in between (clear_contact_pairs). Needs
+  // the Schur complement (InputError naming "Contact/Iteration solves"), supports that turn with
+  // their bodies (hubs about their own axes), and leaves solution() and output_results() in the
+  // bodies' own frames; the pair results (positions, forces) are in the turned frame.
+  void roll(const std::vector<BodyRotation<dim>>& rotations);
+  void clear_contact_pairs() { pairs.clear(); }
   // The converged zone of every pair with closed nodes, to start a neighbouring analysis from.
   std::vector<ContactZone> converged_zones() const;
   // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
@@ -230,6 +253,12 @@ private:
   void couple_pairs();
   void check_candidates(const Pair& pair) const;
   void set_cold_start();
+  // Rolling: the turned vertices (temporarily), the frames of the coupled nodes.
+  void turn_bodies(const std::vector<dealii::Point<dim>>& reference, bool turn);
+  void set_node_frames(Pair& pair) const;
+  // The Schur method's contact DoFs and what depends on the pairing (map_contact).
+  void collect_contact_dofs(Condensed& c) const;
+  void map_contact(Condensed& c) const;
 
   // The load steps from the current states; SolverFailure when one does not converge.
   void solve_load_steps(dealii::Vector<double>& residual);
@@ -318,5 +347,7 @@ private:
   std::vector<std::vector<NodeState>> cold_start; // [pair][node], the initial states
   bool warm_started = false;                      // start_from() set the states
   std::unique_ptr<Condensed> condensed;           // owned; built by the first Schur iteration
+  bool rolling = false;                           // roll() was called
+  std::vector<BodyRotation<dim>> rotations;       // of roll()
 };
 } // namespace gearstiff::contact

@@ -28,6 +28,23 @@ unsigned int normal_component(const dealii::Tensor<1, dim>& normal)
   return main;
 }
 
+// The relative displacement (slave − masters) of a rotated node in component c of its normal's
+// frame, as (DoF, coefficient) terms on the DoFs in their bodies' frames; zero terms left out.
+template <int dim>
+std::vector<std::pair<dealii::types::global_dof_index, double>>
+relative_terms(const SlaveNode<dim>& node, unsigned int c)
+{
+  std::vector<std::pair<dealii::types::global_dof_index, double>> terms;
+  for (unsigned int d = 0; d < dim; ++d)
+    if (node.slave_frame[c][d] != 0.)
+      terms.emplace_back(node.node.dofs[d], node.slave_frame[c][d]);
+  for (const auto& master : node.masters)
+    for (unsigned int d = 0; d < dim; ++d)
+      if (node.master_frame[c][d] != 0.)
+        terms.emplace_back(master.node.dofs[d], -master.weight * node.master_frame[c][d]);
+  return terms;
+}
+
 // One term of a contact row or friction load: `coefficient` times the relative displacement
 // R_c of a node in component c (a row), or the force F_c on it (a friction load).
 template <int dim>

@@ -39,6 +39,11 @@ struct SlaveNode
   double initial_gap = 0.;                      // m, g_s (negative: overlap)
   dealii::Tensor<1, dim> initial_offset;        // m, ∫Φ_s (x̄ − x) / D_s
   std::vector<MortarMaster<dim>> masters;
+  // Rolling bodies (ContactProblem::roll): the DoFs of the slave and of its masters keep the
+  // components of their bodies' own, unrotated frames; frame[c][d] turns component d of such a
+  // DoF pair into component c of the frame of `normal`. Unused (identity) unless `rotated`.
+  bool rotated = false;
+  dealii::Tensor<2, dim> slave_frame, master_frame;
 };
 
 // Couples every slave node whose dual support projects onto the master surface within

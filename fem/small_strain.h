@@ -19,4 +19,9 @@ double displacement_ratio(const dealii::DoFHandler<dim>& dofs, const dealii::Vec
 template <int dim>
 void check_small_strain(const dealii::DoFHandler<dim>& dofs, const dealii::Vector<double>& u,
                         const std::string& load_parameter);
+// The same for a mesh of the given diameter (m, dealii::GridTools::diameter, whose cost grows
+// with the square of the vertex count): analyses that solve one mesh many times (rolling sweeps)
+// compute it once.
+void check_small_strain(double diameter, const dealii::Vector<double>& u,
+                        const std::string& load_parameter);
 } // namespace gearstiff::fem

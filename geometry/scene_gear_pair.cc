@@ -575,6 +575,76 @@ SceneContact predicted_contact(const GearPairSceneSpec& spec,
   contact.gap = *on_wheel - *on_pinion;
   return contact;
 }
+// Rolling sweeps: the pairs in contact at the scene's position or at one of the swept ones.
+std::vector<int> swept_pairs(const GearPairSceneSpec& spec,
+                             const kinematics::GearPairGeometry& pair,
+                             const std::vector<int>& contact_pairs)
+{
+  std::vector<int> pairs = contact_pairs;
+  for (const double position : spec.swept_positions)
+  {
+    if (position < pair.contact_start - path_tolerance ||
+        position > pair.contact_end + path_tolerance)
+      throw InputError(scene_field::swept_positions,
+                       "a swept position lies off the path of contact");
+    for (const int j : pairs_in_contact(pair, position))
+      pairs.push_back(j);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+// Rolling sweeps: refinement along every contact point a flank sees over the swept positions.
+// At ℓ the pinion has turned by (ℓ − ℓ_ref)/r_b1 from the scene's placement and the wheel by
+// ∓(ℓ − ℓ_ref)/r_b2 (external: the other way; ring: the same way), so pair j's contact point
+// line(ℓ + j·p_bt) maps back to the pinion's placement turned by −(ℓ − ℓ_ref)/r_b1 about its
+// centre and to the wheel's by ±(ℓ − ℓ_ref)/r_b2 about its own. The roll path is sampled at
+// half the fine radius: the discs of the foci then cover a band along the flank.
+void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                        const LineOfAction& line, const PlacedGears& gears, double reference,
+                        std::vector<SceneContact>& contacts)
+{
+  const auto [low, high] =
+      std::minmax_element(spec.swept_positions.begin(), spec.swept_positions.end());
+  const double first = std::min(*low, reference), last = std::max(*high, reference);
+  const SceneContact model = contacts.front(); // its Hertz estimate sets the default sizes
+  const double fine_radius =
+      spec.mesh.fine_radius > 0. ? spec.mesh.fine_radius : 1.5 * model.hertz_half_width;
+  const double step = 0.5 * fine_radius;
+  const double r_b1 = 0.5 * pair.pinion.base_diameter, r_b2 = 0.5 * pair.wheel.base_diameter;
+  const double wheel_sense = gears.wheel.internal ? 1. : -1.;
+  for (int j = -3; j <= 3; ++j)
+  {
+    // ℓ with ℓ + j·p_bt on the path of contact, within [first, last].
+    const double from = std::max(first, pair.contact_start - j * pair.transverse_base_pitch);
+    const double to = std::min(last, pair.contact_end - j * pair.transverse_base_pitch);
+    if (!(to >= from))
+      continue;
+    const unsigned int n = static_cast<unsigned int>(std::ceil((to - from) / step)) + 1;
+    for (unsigned int k = 0; k < n; ++k)
+    {
+      const double position = n == 1 ? from : from + (to - from) * k / (n - 1);
+      const Eigen::Vector2d point = line.at(position + j * pair.transverse_base_pitch);
+      const double turn = (position - reference) / r_b1;
+      SceneContact on_pinion = model, on_wheel = model;
+      on_pinion.point = place(point - gears.pinion_centre, gears.pinion_centre, -turn);
+      on_wheel.point = place(point - gears.wheel_centre, gears.wheel_centre,
+                             -wheel_sense * (position - reference) / r_b2);
+      on_pinion.first_feature = on_wheel.first_feature = j;
+      on_pinion.second_feature = on_wheel.second_feature = -j;
+      contacts.push_back(on_pinion);
+      contacts.push_back(on_wheel);
+    }
+  }
+}
+} // namespace
+
+std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position)
+{
+  return pairs_in_contact(pair, position);
+}
+
 // The designed separation of every pair in contact along the line of action (the loaded
 // flanks' removal at the kinematic contact point: both normals lie on the line of action there)
 // and its smallest value, the unloaded transmission error.
@@ -724,13 +794,15 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   const LineOfAction line = line_of_action(pair);
   scene.reference_position = reference_position(spec, pair);
   scene.contact_pairs = pairs_in_contact(pair, scene.reference_position);
+  scene.swept_pairs = swept_pairs(spec, pair, scene.contact_pairs);
   for (const auto& [count, field] :
        {std::pair{spec.pinion_teeth_modelled, scene_field::pinion_teeth_modelled},
         std::pair{spec.wheel_teeth_modelled, scene_field::wheel_teeth_modelled}})
-    if (count < scene.contact_pairs.size())
-      throw InputError(field, "must be at least the number of pairs in contact (" +
-                                  std::to_string(scene.contact_pairs.size()) +
-                                  ") at this position");
+    if (count < scene.swept_pairs.size())
+      throw InputError(field,
+                       "must be at least the number of pairs in contact (" +
+                           std::to_string(scene.swept_pairs.size()) + ") at this position" +
+                           (spec.swept_positions.empty() ? "" : " or one the sweep turns to"));
 
   // Placement: the loaded flanks of pair 0 through the reference point.
   const Eigen::Vector2d reference_point = line.at(scene.reference_position);
@@ -749,11 +821,13 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
     contacts.push_back(
         predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force));
   set_unloaded_transmission_error(pair, line, gears, scene);
+  if (!spec.swept_positions.empty())
+    add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
 
   // Bodies: windows of modelled teeth centred on the contacting pairs, one id per flank.
-  const int pinion_first = window_start(scene.contact_pairs, spec.pinion_teeth_modelled);
+  const int pinion_first = window_start(scene.swept_pairs, spec.pinion_teeth_modelled);
   const int pinion_last = pinion_first + static_cast<int>(spec.pinion_teeth_modelled) - 1;
-  const int wheel_first_pair = window_start(scene.contact_pairs, spec.wheel_teeth_modelled);
+  const int wheel_first_pair = window_start(scene.swept_pairs, spec.wheel_teeth_modelled);
   const int wheel_last_pair = wheel_first_pair + static_cast<int>(spec.wheel_teeth_modelled) - 1;
   for (int j = std::max(pinion_first, wheel_first_pair);
        j <= std::min(pinion_last, wheel_last_pair); ++j)

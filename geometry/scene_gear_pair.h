@@ -87,6 +87,12 @@ struct GearPairSceneSpec
   GearModifications wheel_modifications;
 
   SceneMeshSettings mesh;
+  // m, rolling sweeps (one mesh turned to every position): the reference-pair positions ℓ the
+  // bodies will be turned to from this scene's own position. Every flank that meshes at one of
+  // them is refined along all the contact points it sees (the roll path sampled at half the fine
+  // radius, mapped back to the body's own placement), and the modelled teeth cover every pair
+  // in contact at one of them. Empty: this scene's own position only.
+  std::vector<double> swept_positions;
   // Points per profile segment: dense enough that the spline through them follows the
   // involute to well below the contact size.
   ProfileResolution resolution = {4, 32, 160, 24, 12};
@@ -110,6 +116,7 @@ inline const std::string wheel_bolt_holes = "scene.wheel_bolt_holes";
 inline const std::string wheel_bolt_hole_diameter = "scene.wheel_bolt_hole_diameter";
 inline const std::string wheel_bolt_circle_diameter = "scene.wheel_bolt_circle_diameter";
 inline const std::string both_flanks = "scene.both_flanks";
+inline const std::string swept_positions = "scene.swept_positions";
 inline const std::string pinion_torque = "scene.pinion_torque";
 inline const std::string young_modulus = "scene.young_modulus";
 inline const std::string poisson_ratio = "scene.poisson_ratio";
@@ -125,11 +132,12 @@ int wheel_flank_id(int pair);
 // A written gear-pair scene: the common SceneInfo and what this scene adds, by name.
 struct GearPairScene
 {
-  SceneInfo info;                       // mesh, ids, predicted contacts (one per pair in contact)
-  double reference_position = 0.;       // m, ℓ_ref of pair 0 along the line of action from T1
-  double pinion_roll_angle = 0.;        // rad, ℓ_ref/r_b1
-  std::vector<int> contact_pairs;       // -, j of the pairs inside the path of contact (A, E)
-  std::vector<int> modelled_pairs;      // -, j whose pinion and wheel teeth are both in the scene
+  SceneInfo info;                  // mesh, ids, predicted contacts (one per pair in contact)
+  double reference_position = 0.;  // m, ℓ_ref of pair 0 along the line of action from T1
+  double pinion_roll_angle = 0.;   // rad, ℓ_ref/r_b1
+  std::vector<int> contact_pairs;  // -, j of the pairs inside the path of contact (A, E)
+  std::vector<int> modelled_pairs; // -, j whose pinion and wheel teeth are both in the scene
+  std::vector<int> swept_pairs; // -, j in contact at one of spec.swept_positions (or contact_pairs)
   double pinion_bore_radius = 0.;       // m
   double wheel_bore_radius = 0.;        // m
   double wheel_bolt_circle_radius = 0.; // m, of the ring's bolt-hole centres (0: no holes)
@@ -159,6 +167,9 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
 // "Gear pair/Wheel/..."): generates both nominal teeth and checks every modification list
 // against them. Milliseconds; write_gear_pair_scene makes the same checks.
 void check_tooth_modifications(const GearPairSceneSpec& spec);
+// Rolling sweeps: the pairs j in contact (inside the path of contact A–E) with the reference
+// pair at ℓ (m from T1), the same rule as the scene's contact_pairs.
+std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position);
 
 // The scene's numbers for reports (key, SI value, unit, description).
 std::vector<SceneQuantity> scene_quantities(const GearPairScene& scene);

@@ -143,10 +143,11 @@ struct GearMeshStiffnessResult
   unsigned int n_dofs = 0;
   double contact_size = 0.; // m, h_c of the scene
   unsigned int active_set_iterations = 0;
-  double scene_time = 0.;                // s, wall: geometry, meshing, writing (rank 0)
-  double setup_time = 0.;                // s, wall: reading, DoFs, stiffness, mortar coupling
-  double solve_time = 0.;                // s, wall: contact iterations (assembly + linear solves)
-  double total_time = 0.;                // s, wall: the whole run
+  double scene_time = 0.;         // s, wall: geometry, meshing, writing (rank 0)
+  double setup_time = 0.;         // s, wall: reading, DoFs, stiffness, mortar coupling
+  double solve_time = 0.;         // s, wall: contact iterations (assembly + linear solves)
+  double factorization_time = 0.; // s, wall: the stiffness factorization, when this run made it
+  double total_time = 0.;         // s, wall: the whole run
   std::vector<std::string> output_files; // VTU/PVTU written (relative to the directory)
 
   // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
@@ -182,6 +183,7 @@ struct GearMeshStiffnessResult
     visit("scene_time", self.scene_time);
     visit("setup_time", self.setup_time);
     visit("solve_time", self.solve_time);
+    visit("factorization_time", self.factorization_time);
     visit("total_time", self.total_time);
     visit("output_files", self.output_files);
   }
@@ -213,8 +215,24 @@ public:
   // monotone loading path, which with friction (incremental Coulomb) differs from a fresh solve
   // by the friction's path dependence only.
   std::vector<GearMeshStiffnessResult> run_torques(const std::vector<double>& torques);
+  // Rolling (a sweep with one mesh, stiffness/mesh_stiffness_rolling.cc): the reference pair at
+  // `position` (m from T1 along the line of action). The first call meshes the scene at its own
+  // position (settings.scene: roll angle) with the flanks refined for every position of
+  // settings.scene.swept_positions, and factorizes the stiffness; every call turns both bodies
+  // rigidly to `position`, pairs the teeth in contact there afresh and solves the contact on the
+  // one factorization. `output_base`: VTU base name of this position (bodies in their own,
+  // unturned frames). InputError naming "Stiffness/sweep mesh" for a position outside the
+  // swept ones (the flanks are refined only there).
+  GearMeshStiffnessResult roll_to(double position, const std::string& output_base);
 
 private:
+  // Rolling: the pairs in contact with the reference pair at `position` (m), and the bodies'
+  // turns from the scene's own position.
+  void set_candidate_pairs(double position);
+  std::vector<contact::BodyRotation<dim>> body_rotations(double position) const;
+  double scene_position = 0.; // m, ℓ_ref of the meshed scene (rolling)
+  double mesh_diameter = 0.;  // m, GridTools::diameter of the mesh (0: not yet computed)
+
   void make_scene();
   void setup_problem();
   void solve();
@@ -241,6 +259,7 @@ inline const std::string torques = "stiffness.torques";
 inline const std::string positions = "sweep.positions";
 inline const std::string pitches = "sweep.base_pitches";
 inline const std::string scene_file = "stiffness.scene_file";
+inline const std::string sweep_mesh = "sweep.mesh";
 } // namespace stiffness_parameter
 
 // The checks of the settings the constructor makes before anything is meshed (InputError

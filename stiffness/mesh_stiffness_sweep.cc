@@ -12,6 +12,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 namespace gearstiff::stiffness
@@ -80,6 +81,65 @@ solve_position_torques(const GearMeshStiffnessSettings& settings, const double r
   return results;
 }
 
+// One position of a rolling sweep: the rank's analysis is made (meshed, factorized) by its
+// first position; a failure's reason starts with `context`.
+template <int dim>
+GearMeshStiffnessResult roll_position(std::unique_ptr<GearMeshStiffness<dim>>& analysis,
+                                      const GearMeshStiffnessSettings& settings,
+                                      const double position, const std::string& suffix,
+                                      const std::string& context)
+{
+  GearMeshStiffnessResult result;
+  const fem::Failure failure = fem::catch_failure(
+      [&]()
+      {
+        if (!analysis)
+          analysis = std::make_unique<GearMeshStiffness<dim>>(MPI_COMM_SELF, settings);
+        result = analysis->roll_to(position, settings.output_base + "_" + suffix);
+      });
+  if (!analysis || failure.kind != fem::Failure::none)
+    std::filesystem::remove(settings.scene_file);
+  failure.rethrow(context);
+  return result;
+}
+
+// Every position's result on every rank, with the rank that solved it; the once and
+// per-position times of the sweep.
+StiffnessSweepResult gather_positions(
+    MPI_Comm mpi_communicator,
+    const std::vector<std::pair<unsigned int, std::vector<GearMeshStiffnessResult>>>& mine,
+    unsigned int n, SweepMesh mesh, unsigned int n_torques)
+{
+  StiffnessSweepResult result;
+  result.mesh = mesh;
+  result.n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+  result.positions.resize(n);
+  result.rank_of_position.resize(n);
+  // With a torque list, one result per torque and position (run_torques).
+  result.by_torque.assign(n_torques, std::vector<GearMeshStiffnessResult>(n));
+  const auto gathered = Utilities::MPI::all_gather(mpi_communicator, mine);
+  for (unsigned int r = 0; r < gathered.size(); ++r)
+    for (const auto& [i, position] : gathered[r])
+    {
+      result.positions[i] = position.front();
+      for (unsigned int t = 0; t < n_torques; ++t)
+        result.by_torque[t][i] = position.at(t);
+      result.rank_of_position[i] = r;
+    }
+  for (const auto& position : result.positions)
+  {
+    // The fixed part of a rolling sweep: the scene, set-up and factorization of each rank's
+    // first position (scene_time > 0 only there).
+    const double once =
+        position.scene_time > 0. && mesh == SweepMesh::once
+            ? position.scene_time + position.setup_time + position.factorization_time
+            : 0.;
+    result.once_time += once;
+    result.per_position_time += position.total_time - once;
+  }
+  return result;
+}
+
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
@@ -90,18 +150,32 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
   const std::vector<double> positions = sweep_positions(pair, spec);
   const unsigned int n = positions.size();
-  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
   const double r_b1 = 0.5 * pair.pinion.base_diameter;
   // Each rank's positions start from the contact zone of its previous one.
   GearMeshStiffnessSettings warm = settings;
   warm.warm_start = std::make_shared<std::vector<contact::ContactZone>>();
 
+  // `once`: every rank meshes the same scene (at the first position, refined for all of them)
+  // and factorizes it when it takes its first position.
+  GearMeshStiffnessSettings rolling = warm;
+  rolling.scene.position = geometry::PairPosition::roll_angle;
+  rolling.scene.pinion_roll_angle = positions.front() / r_b1;
+  rolling.scene.swept_positions = positions;
+  rolling.scene_file = scene_file_stem + "_once_" + std::to_string(rank) + ".msh";
+  std::unique_ptr<GearMeshStiffness<dim>> analysis;
+
   // Each rank takes the next unsolved position as soon as it is free (fem::distribute_items);
   // a failure stops every rank within about one contact iteration, and the first failing
   // position decides what every rank throws.
   if (!settings.torques.empty())
+  {
     check_torque_list(settings.torques);
+    if (spec.mesh == SweepMesh::once)
+      throw InputError(stiffness_parameter::torques,
+                       "a torque list needs the per-position sweep (sweep mesh = per position): "
+                       "the rolling sweep solves one torque");
+  }
   std::vector<std::pair<unsigned int, std::vector<GearMeshStiffnessResult>>> mine;
   fem::distribute_items(
       mpi_communicator, n,
@@ -109,8 +183,13 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
       {
         const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
                                   format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
-        const std::vector<GearMeshStiffnessResult> all = solve_position_torques<dim>(
-            warm, positions[i] / r_b1, Utilities::int_to_string(i, 3), scene_file_stem, where);
+        const std::vector<GearMeshStiffnessResult> all =
+            spec.mesh == SweepMesh::once
+                ? std::vector<GearMeshStiffnessResult>{roll_position(
+                      analysis, rolling, positions[i], Utilities::int_to_string(i, 3), where)}
+                : solve_position_torques<dim>(warm, positions[i] / r_b1,
+                                              Utilities::int_to_string(i, 3), scene_file_stem,
+                                              where);
         const GearMeshStiffnessResult& r = all.front();
         mine.emplace_back(i, all);
         if (progress)
@@ -118,26 +197,23 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                    format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
                    "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
                    std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
-                   " s [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) +
+                   " s" +
+                   (spec.mesh == SweepMesh::once
+                        ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
+                              format_number(r.setup_time, 3) + " s, contact " +
+                              format_number(r.solve_time, 3) + " s)"
+                        : std::string()) +
+                   " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) +
                    " solved]");
       });
 
+  if (spec.mesh == SweepMesh::once)
+    std::filesystem::remove(rolling.scene_file);
+
   // Every rank receives every position's result.
-  StiffnessSweepResult result;
-  result.n_ranks = n_ranks;
-  result.positions.resize(n);
-  result.rank_of_position.resize(n);
-  const auto gathered = Utilities::MPI::all_gather(mpi_communicator, mine);
+  StiffnessSweepResult result =
+      gather_positions(mpi_communicator, mine, n, spec.mesh, settings.torques.size());
   result.torques = settings.torques;
-  result.by_torque.assign(settings.torques.size(), std::vector<GearMeshStiffnessResult>(n));
-  for (unsigned int r = 0; r < gathered.size(); ++r)
-    for (const auto& [i, position] : gathered[r])
-    {
-      result.positions[i] = position.front();
-      for (unsigned int t = 0; t < result.by_torque.size(); ++t)
-        result.by_torque[t][i] = position.at(t);
-      result.rank_of_position[i] = r;
-    }
   result.wall_time = timer.wall_time();
   return result;
 }

@@ -14,6 +14,13 @@
 
 namespace gearstiff::stiffness
 {
+// How a sweep meshes its positions.
+enum class SweepMesh
+{
+  per_position, // a new scene, mesh and factorization at every position (the reference)
+  once          // one scene and factorization per rank, the bodies turned rigidly to each position
+};
+
 struct StiffnessSweepSpec
 {
   // m, first position of the reference pair along the line of action (from T1); negative:
@@ -21,6 +28,7 @@ struct StiffnessSweepSpec
   double start_position = -1.;
   double base_pitches = 1.;    // -, span of the sweep in transverse base pitches (> 0)
   unsigned int positions = 32; // -, N: positions at start + (i + 1/2)·span·p_bt/N, i < N
+  SweepMesh mesh = SweepMesh::per_position;
 };
 
 struct StiffnessSweepResult
@@ -32,6 +40,12 @@ struct StiffnessSweepResult
   std::vector<unsigned int> rank_of_position; // -, rank that solved each position
   unsigned int n_ranks = 1;
   double wall_time = 0.; // s, the whole sweep (slowest rank)
+  SweepMesh mesh = SweepMesh::per_position;
+  // s, wall, summed over the ranks (`once`: each rank meshes and factorizes once): what was
+  // done once — meshing, set-up (DoFs, K) and the factorization —, and per position: turning,
+  // pairing, contact solve, evaluation (per position: everything).
+  double once_time = 0.;
+  double per_position_time = 0.;
 };
 
 // Reference-pair positions (m from T1) of the sweep; InputError for zero positions, a

@@ -1,0 +1,104 @@
+// Rolling sweeps (GearMeshStiffness::roll_to): one mesh and one factorization, the bodies
+// turned rigidly to every position. A body's small-strain stiffness matrix in its own frame does
+// not change when it turns, and both supports turn with their bodies (the pinion hub about the
+// pinion axis, the fixed wheel bore about the wheel axis), so K, the support constraints and
+// the factorization of the scene's own position serve every position; only the contact pairing
+// is made afresh on the turned geometry (contact::ContactProblem::roll).
+#include "errors/errors.h"
+#include "errors/format.h"
+#include "stiffness/contact_solve.h"
+#include "stiffness/mesh_stiffness.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/timer.h>
+
+namespace gearstiff::stiffness
+{
+using namespace dealii;
+
+template <int dim>
+void GearMeshStiffness<dim>::set_candidate_pairs(double position)
+{
+  candidate_pairs.clear();
+  for (const int j : geometry::gear_pairs_in_contact(pair, position))
+  {
+    ToothPairLoad load;
+    load.pair = j;
+    load.position = position + j * pair.transverse_base_pitch;
+    candidate_pairs.push_back(load);
+  }
+  result.reference_position = position;
+  result.kinematic_pairs = candidate_pairs.size();
+  result.pinion_roll_angle = position / result.pinion_base_radius;
+  result.mesh_position = (position - pair.contact_start) / pair.transverse_base_pitch;
+}
+
+template <int dim>
+std::vector<contact::BodyRotation<dim>>
+GearMeshStiffness<dim>::body_rotations(double position) const
+{
+  // The pinion turns counter-clockwise by Δℓ/r_b1; an external wheel the other way by
+  // Δℓ/r_b2, a ring the same way (geometry/scene_gear_pair.h: add_swept_contacts).
+  const double roll = position - scene_position;
+  contact::BodyRotation<dim> pinion, wheel;
+  pinion.body = geometry::scene_ids::pinion_body;
+  pinion.angle = roll / (0.5 * pair.pinion.base_diameter);
+  wheel.body = geometry::scene_ids::wheel_body;
+  wheel.axis[0] = pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
+  wheel.angle = (pair.spec.wheel.internal ? 1. : -1.) * roll / (0.5 * pair.wheel.base_diameter);
+  return {pinion, wheel};
+}
+
+template <int dim>
+GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
+                                                        const std::string& output_base)
+{
+  Timer timer(mpi_communicator, true);
+  const std::vector<double>& swept = settings.scene.swept_positions;
+  // 1e-9 m: the positions come from the same formulas as the swept ones.
+  if (swept.empty() || position < *std::min_element(swept.begin(), swept.end()) - 1e-9 ||
+      position > *std::max_element(swept.begin(), swept.end()) + 1e-9)
+    throw InputError(stiffness_parameter::sweep_mesh,
+                     "'once': the position " + format_number(position * 1e3, 6) +
+                         " mm lies outside the positions the mesh was refined for; the flanks "
+                         "are refined only along the swept positions");
+  const bool first = !problem;
+  result = GearMeshStiffnessResult();
+  result.dimension = dim;
+  if (first)
+  {
+    make_scene(); // at the scene's own position, refined for every swept one
+    scene_position = result.reference_position;
+    set_candidate_pairs(position);
+    setup_problem();
+    problem->roll(body_rotations(position));
+    solve(); // setup_system() (DoFs, K, pairing on the turned bodies) and the factorization
+  }
+  else
+  {
+    result.pinion_base_radius = 0.5 * pair.pinion.base_diameter;
+    result.wheel_base_radius = 0.5 * pair.wheel.base_diameter;
+    set_candidate_pairs(position);
+    problem->clear_contact_pairs();
+    for (const ToothPairLoad& load : candidate_pairs)
+      problem->add_contact_pair(
+          {static_cast<types::boundary_id>(geometry::pinion_flank_id(load.pair))},
+          {static_cast<types::boundary_id>(geometry::wheel_flank_id(load.pair))},
+          "tooth pair " + std::to_string(load.pair));
+    problem->roll(body_rotations(position));
+    solve_set_up_contact_problem(*problem, result,
+                                 settings.contact.warm_start ? settings.warm_start.get() : nullptr);
+    result.n_cells = problem->system().triangulation().n_active_cells();
+  }
+  result.factorization_time = problem->results().factorization_time;
+  evaluate();
+  settings.output_base = output_base;
+  output_results();
+  result.total_time = timer.wall_time();
+  return result;
+}
+
+template GearMeshStiffnessResult GearMeshStiffness<2>::roll_to(double, const std::string&);
+template GearMeshStiffnessResult GearMeshStiffness<3>::roll_to(double, const std::string&);
+} // namespace gearstiff::stiffness
