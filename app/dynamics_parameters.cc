@@ -672,6 +672,9 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
   p.train.input_speed = prm.get_double("input speed") * rpm;
   p.published_reference = prm.get_bool("published reference");
   prm.leave_subsection();
+  if (!(p.train.input_speed > 0.) || !std::isfinite(p.train.input_speed))
+    throw InputError("Train/input speed", "must be positive (rpm), got " +
+                                              format_number(p.train.input_speed / rpm, 6) + " rpm");
 
   std::vector<std::string> torque_text(n_gears);
   for (unsigned int i = 0; i < n_gears; ++i)

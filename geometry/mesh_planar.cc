@@ -546,13 +546,20 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   gmsh::option::setNumber("Mesh.ElementOrder", 1);
   constexpr unsigned int max_attempts = 3;
   double contact_scale = grading.initial_contact_scale;
+  // Sizes near the size of a body can leave triangles the recombination cannot pair (100 mm
+  // sizes: "4 leftover Triangle 3 cells"); each such generation is repeated with every size 0.7
+  // times smaller, up to max_recombination_retries times.
+  constexpr unsigned int max_recombination_retries = 4;
+  unsigned int recombination_retries = 0;
+  double size_scale = 1.;
   for (unsigned int attempt = 1;; ++attempt)
   {
     start = Clock::now();
     gmsh::model::mesh::clear();
+    gmsh::option::setNumber("Mesh.MeshSizeMax", size_scale * grading.largest_size);
     gmsh::model::mesh::setSizeCallback(
-        [&grading, contact_scale](int, int, double x, double y, double) {
-          return grading.size_at({x, y}, contact_scale);
+        [&grading, contact_scale, size_scale](int, int, double x, double y, double) {
+          return size_scale * grading.size_at({x, y}, contact_scale);
         });
     try
     {
@@ -564,7 +571,20 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     }
     statistics.time_meshing += seconds_since(start);
     start = Clock::now();
-    check_cells(options, grading, surfaces, volumes, statistics);
+    try
+    {
+      check_cells(options, grading, surfaces, volumes, statistics);
+    }
+    catch (const SolverFailure& e)
+    {
+      if (e.method() != "gmsh quadrilateral meshing" ||
+          recombination_retries == max_recombination_retries)
+        throw;
+      ++recombination_retries;
+      size_scale *= 0.7;
+      --attempt; // not an attempt at the contact size
+      continue;
+    }
     statistics.time_checking += seconds_since(start);
     statistics.contact_scale = contact_scale;
     statistics.meshing_attempts = attempt;

@@ -31,6 +31,11 @@ from itertools import zip_longest
 
 # Commands, the overrides that keep a run short, the per-run timeout (s) and how many cases
 # each gets. Fast commands first; the FE ones on a coarse scene with Q1 elements.
+# A single planetary stage in the kinematics command's Train form (tests/dynamics/cli).
+TRAIN = ["Train/gears=s: 20, p: 10, r: -40", "Train/modules=s: 2, p: 2, r: 2", "Train/carriers=c",
+         "Train/planets=p: c*3", "Train/meshes=s-p/c, p-r/c", "Train/fixed=r", "Train/inputs=s: 1470",
+         "Train/output=c", "Train/inertias=s: 2e-4, p: 5e-5, c: 4e-3, r: 1e-2", "Train/masses=p: 0.4"]
+
 COARSE_SCENE = [
     "Mesh/contact size=0.2", "Mesh/fine radius=0.5", "Mesh/body size=1", "Mesh/rim size=3",
 ]
@@ -51,11 +56,6 @@ COMMANDS = [
 ]
 
 HUGE_TEXT = "9" * 120_000  # one argument may hold at most 128 kB
-
-# A single planetary stage in the kinematics command's Train form (tests/dynamics/cli).
-TRAIN = ["Train/gears=s: 20, p: 10, r: -40", "Train/modules=s: 2, p: 2, r: 2", "Train/carriers=c",
-         "Train/planets=p: c*3", "Train/meshes=s-p/c, p-r/c", "Train/fixed=r", "Train/inputs=s: 1470",
-         "Train/output=c", "Train/inertias=s: 2e-4, p: 5e-5, c: 4e-3, r: 1e-2", "Train/masses=p: 0.4"]
 
 # Two touching one-cell squares (tests/contact/data/touching_mesh.inp, nodes inline): the deck
 # the reader cases mutate, one hostile edit or more per case (deck_mutation).
