@@ -638,12 +638,6 @@ void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPai
     }
   }
 }
-} // namespace
-
-std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position)
-{
-  return pairs_in_contact(pair, position);
-}
 
 // The designed separation of every pair in contact along the line of action (the loaded
 // flanks' removal at the kinematic contact point: both normals lie on the line of action there)
@@ -666,6 +660,11 @@ void set_unloaded_transmission_error(const kinematics::GearPairGeometry& pair,
   scene.unloaded_transmission_error = smallest;
 }
 } // namespace
+
+std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position)
+{
+  return pairs_in_contact(pair, position);
+}
 
 FlankRollRange flank_roll_range(const kinematics::GearPairGeometry& pair, const ToothProfile& tooth,
                                 bool wheel)
