@@ -110,10 +110,10 @@ void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
     throw InputError(name, "is not a regular file (a parameter file .prm or .json is expected)");
   if (access(file.c_str(), R_OK) != 0)
     throw InputError(name, "parameter file cannot be read (permissions)");
-  // Misspelt names first: the section and the nearest declared names, not deal.II's message;
-  // then JSON values deal.II would misread (arrays, objects).
-  check_parameter_file(declared_parameters(prm), file);
+  // JSON values deal.II would misread (arrays where a value is due) first, then misspelt names:
+  // the section and the nearest declared names, not deal.II's message.
   check_json_parameter_file(file);
+  check_parameter_file(declared_parameters(prm), file);
   try
   {
     prm.parse_input(file, "", false, true);

@@ -68,8 +68,18 @@ void set_sizing_forces(const std::string& roller_force, const double output_torq
       throw InputError("Cycloid scene/roller force",
                        "auto estimates the forces under Abaqus deck/output torque, which is 0: "
                        "give a force (N) or a torque");
-    const stiffness::CycloidAnalyticResult estimate =
-        stiffness::analytic_cycloid_loads(spec, output_torque);
+    stiffness::CycloidAnalyticResult estimate;
+    try
+    {
+      estimate = stiffness::analytic_cycloid_loads(spec, output_torque);
+    }
+    catch (const SolverFailure&)
+    {
+      throw InputError("Cycloid scene/roller force",
+                       "auto needs the rigid-disc load model, which cannot carry the torque with " +
+                           std::to_string(spec.output_pins) +
+                           " output pin(s): give the roller force (N)");
+    }
     spec.roller_force = estimate.max_roller_force;
     spec.pin_force = estimate.max_pin_force;
     return;

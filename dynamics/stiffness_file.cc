@@ -164,9 +164,11 @@ MeshStiffness sweep_table(const std::vector<double>& positions,
                          " distinct positions modulo one base pitch, widest gap " + format(widest) +
                          " base pitches (at most twice the mean " +
                          "spacing allowed; sweep one full base pitch)");
+  // The stiffness values are checked (range of real gear meshes) before the TE split uses them.
+  MeshStiffness table = MeshStiffness::table(x, k, parameter);
   if (!loaded_error.empty())
     split = split_loaded_transmission_error(x, k, s, parameter);
-  return MeshStiffness::table(x, k, parameter);
+  return table;
 }
 } // namespace
 

@@ -271,7 +271,7 @@ TEST(LateralModel, StiffBearingLimitIsRotationalModel)
     input.input_torque = 100.;
     for (std::size_t m = 0; m < input.spec.meshes.size(); ++m)
       input.meshes.push_back(
-          {MeshStiffness::constant(4e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}});
+          {MeshStiffness::constant(4e8, "Train mesh/stiffness"), 0., 0., 0., 0., {}, {}, {}, {}});
     const TrainModel train = build_train_model(input);
     const ModeShapes rotational = TorsionalModel(train.train).mode_shapes();
     const LateralModes stiff = LateralModel(standard_stage(n, 1e13, 1e13)).modes();
