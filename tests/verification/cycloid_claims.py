@@ -83,12 +83,14 @@ elif claim == "torsion":
     checks.holds("nominal: FE output rotation > rigid-body analytic",
                  nominal("output_rotation") > nominal("analytic_output_rotation"))
     # The figures docs/cycloid.md quotes have no independent value: regression, measured
-    # 2026-11-26 (deterministic; tolerance 0.1 %).
+    # 2026-11-26 (deterministic; tolerance 0.1 %). The nominal lost motion was re-measured after
+    # the session's merges changed the cycloid mesh (cells sized from the case's own load,
+    # mesh-size retries): 0.066180 → 0.065885 arcmin (−0.45 %, a 0.07 arcmin figure).
     checks.near("nominal torsional stiffness [N·m/arcmin] (regression)",
                 nominal("torsional_stiffness"), 549.297, 0.001)
     checks.near("corrected torsional stiffness [N·m/arcmin] (regression)",
                 corrected("torsional_stiffness"), 433.010, 0.001)
-    checks.near("nominal lost motion [arcmin] (regression)", nominal("lost_motion"), 0.066180,
+    checks.near("nominal lost motion [arcmin] (regression)", nominal("lost_motion"), 0.065885,
                 0.001)
     checks.near("corrected lost motion [arcmin] (regression)", corrected("lost_motion"), 23.7292,
                 0.001)
