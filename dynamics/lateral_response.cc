@@ -1,6 +1,7 @@
 #include "dynamics/lateral_response.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <Eigen/Eigenvalues>
 #include <chrono>
@@ -20,12 +21,10 @@ struct MeshSpring
   double damping = 0.;
 };
 
+// The message numbers of errors/format.h, 4 significant digits.
 std::string format(double value)
 {
-  std::ostringstream s;
-  s.precision(4);
-  s << value;
-  return s.str();
+  return format_number(value, 4);
 }
 } // namespace
 

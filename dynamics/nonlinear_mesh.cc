@@ -1,6 +1,7 @@
 #include "dynamics/nonlinear_mesh.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,12 +12,10 @@ namespace gearstiff::dynamics
 {
 namespace
 {
+// The message numbers of errors/format.h, 4 significant digits.
 std::string format(double value)
 {
-  std::ostringstream s;
-  s.precision(4);
-  s << value;
-  return s.str();
+  return format_number(value, 4);
 }
 
 // Samples per longest period for the mean and the peak-to-peak (harmonic orders up to a few

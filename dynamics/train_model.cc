@@ -1,6 +1,7 @@
 #include "dynamics/train_model.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <algorithm>
 #include <array>
@@ -14,12 +15,10 @@ namespace gearstiff::dynamics
 {
 namespace
 {
+// The message numbers of errors/format.h, five significant digits unless told.
 std::string format(double value, int digits = 5)
 {
-  std::ostringstream s;
-  s.precision(digits);
-  s << value;
-  return s.str();
+  return format_number(value, digits);
 }
 
 double fraction(double x)
