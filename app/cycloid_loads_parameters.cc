@@ -70,7 +70,7 @@ CycloidLoadsParameters parse_cycloid_loads_parameters(ParameterHandler& prm)
   stiffness::CycloidLoadSettings& s = p.settings;
   s.scene = stiffness::default_cycloid_load_scene();
   parse_cycloid_scene_parameters(prm, s.scene);
-  s.scene.mesh = parse_scene_mesh_parameters(prm);
+  s.scene.mesh = parse_scene_mesh_parameters(prm, s.scene.mesh);
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Cycloid loads");

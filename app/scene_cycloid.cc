@@ -100,7 +100,8 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   const std::string roller_force = prm.get("roller force");
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
-  spec.mesh = parse_scene_mesh_parameters(prm);
+  // `auto` sizes: the numbers the `mesh` command declares (a gear pair's at module 2.5 mm).
+  spec.mesh = parse_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh);
   prm.enter_subsection("Abaqus deck");
   const double output_torque = prm.get_double("output torque");
   prm.leave_subsection();

@@ -61,7 +61,8 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   spec.length = prm.get_double("length") * mm;
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
-  spec.mesh = parse_scene_mesh_parameters(prm);
+  // `auto` sizes: the numbers the `mesh` command declares (a gear pair's at module 2.5 mm).
+  spec.mesh = parse_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh);
   return std::make_unique<CylindersMeshScene>(spec);
 }
 
