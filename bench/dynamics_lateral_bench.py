@@ -9,28 +9,15 @@ example system (tests/dynamics/cli/lateral_lin_parker.prm). Prints the median of
 each (wall time reported by the command) and its ratio to the target. Run it holding the build
 lock on a shared machine.
 """
-import json
 import os
-import statistics
-import subprocess
-import sys
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
+from gearstiff_cli import median_value, root
+
 prm = os.path.join(root, "tests", "dynamics", "cli", "lateral_lin_parker.prm")
 
 
-def run(*settings):
-    args = [binary, "dynamics", prm, "--json"]
-    for s in settings:
-        args += ["--set", s]
-    out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
-    return json.loads(out)["values"]
-
-
 def median_of_five(key, *settings):
-    runs = [run(*settings) for _ in range(5)]
-    return statistics.median(r[key]["value"] for r in runs), runs[0]
+    return median_value(5, key, "dynamics", prm, *settings)
 
 
 short = ["Simulation/simulated time=0.0001", "Simulation/time step=1", "Train/carrier radii=c: 120"]
