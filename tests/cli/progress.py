@@ -9,7 +9,8 @@ usage: progress.py path/to/gearstiff "MPIEXEC"
 2. `stiffness --quiet`: stderr is empty.
 3. `MPIEXEC -np 2 stiffness --json`, a 4-position sweep: each rank reports the positions it
    solved ("[rank 0]" and "[rank 1]", each with "done here", elapsed and "left"), stdout is JSON.
-4. `dynamics --json`, a 3-speed up-and-down sweep: one line per speed run ("speed sweep i/6",
+4. `contact --json` (the Hertz case): the set-up and each active-set iteration on stderr.
+5. `dynamics --json`, a 3-speed up-and-down sweep: one line per speed run ("speed sweep i/6",
    the speed, elapsed and "left"), stdout is JSON; with --quiet stderr is empty.
 """
 import json
@@ -43,6 +44,12 @@ def main():
         pattern = rf"stiffness: position \d/4 .*done here of ~2, .* s elapsed, ~.* s left\) \[rank {rank}\]"
         if not re.search(pattern, sweep.stderr):
             sys.exit(f"progress: rank {rank} reported no position:\n{sweep.stderr}")
+    contact = run([gearstiff, "contact", "--json"])
+    json.loads(contact.stdout)
+    for pattern in (r"contact: set-up done: \d+ DoFs, \d+ slave nodes",
+                    r"contact: load step 1/1, iteration \d+: \d+ closed, 0 changed"):
+        if not re.search(pattern, contact.stderr):
+            sys.exit(f"progress: contact printed no line like {pattern}:\n{contact.stderr}")
     sweep_args = ["--set", "Speed sweep/points=3", "--set", "Speed sweep/direction=both"]
     dynamics = run([gearstiff, "dynamics", "--json"] + sweep_args)
     json.loads(dynamics.stdout)
@@ -53,8 +60,8 @@ def main():
     quiet = run([gearstiff, "dynamics", "--quiet"] + sweep_args)
     if quiet.stderr.strip():
         sys.exit(f"progress: dynamics --quiet printed on stderr:\n{quiet.stderr}")
-    print("progress: stages, per-rank sweep lines, dynamics sweep lines, --quiet and --json "
-          "stdout as expected")
+    print("progress: stages, per-rank sweep lines, contact iterations, dynamics sweep lines, "
+          "--quiet and --json stdout as expected")
 
 
 if __name__ == "__main__":
