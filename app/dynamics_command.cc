@@ -306,18 +306,9 @@ void plot_nonlinear(CommandContext& context, Report& report, const std::string& 
 }
 // ---- end of issue 29 results ----
 
-void run(dealii::ParameterHandler& prm, CommandContext& context)
+// The case and its assumptions first: every K_v below depends on them.
+void report_case(const DynamicsParameters& p, const TorsionalModel& model, Report& report)
 {
-  if (lateral_model_selected(prm)) // issue 30: dynamics_lateral.cc
-  {
-    run_lateral_dynamics(prm, context);
-    return;
-  }
-  const DynamicsParameters p = parse_dynamics_parameters(prm);
-  const TorsionalModel model(p.train);
-  Report& report = context.report;
-
-  // The case and its assumptions first: every K_v below depends on them.
   report.add_text("model", std::to_string(model.n_dofs()) + "-DOF torsional train, " +
                                std::to_string(model.n_meshes()) +
                                " meshes; angles relative to the nominal rotation");
@@ -351,12 +342,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                               "(approach ratio), pairs weighted by their force share");
   report.add_text("start", start_state_name(p.simulation.start));
   report.add_text("integrator", integrator_name(p.simulation.integrator.type));
+}
 
-  context.pcout << "dynamics: simulating " << model.n_dofs() << " DOF with "
-                << integrator_name(p.simulation.integrator.type) << std::endl;
-  const SimulationResult result = simulate(model, p.simulation);
+// The run's window, speeds, step, stability limit and modes.
+void report_run(const DynamicsParameters& p, const TorsionalModel& model,
+                const SimulationResult& result, Report& report)
+{
   const Trajectory& trajectory = result.trajectory;
-
   report.add_text("steady-state window",
                   "[" + format_number(result.window_start, 6) + ", " +
                       format_number(result.window_end, 6) + "] s, " +
@@ -386,7 +378,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     modes.add_row({double(i + 1), result.modes.natural_frequencies[i],
                    i < result.modes.decay_rates.size() ? result.modes.decay_rates[i]
                                                        : std::numeric_limits<double>::quiet_NaN()});
+}
 
+// Per mesh: nominal and mean force, simulated and ISO K_v, mean stiffness, the Cai fit.
+void report_meshes(const DynamicsParameters& p, const TorsionalModel& model,
+                   const SimulationResult& result, Report& report)
+{
   auto& meshes = report.add_table("dynamics_meshes",
                                   {"mesh", "nominal_force", "mean_force", "kv_max", "kv_max_time",
                                    "kv_min", "kv_iso", "resonance_ratio"},
@@ -434,7 +431,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     }
   }
   report.add_value("kv_max", result.kv_max, "-", "K_v max over all meshes (simulated)");
-  report_nonlinear_meshes(p, result, report);
+}
+
+void report_iso_assumptions(const DynamicsParameters& p, Report& report)
+{
   report.add_text("ISO assumptions",
                   "c_gamma_alpha = mean model stiffness / b unless given, c' = c_gamma_alpha/"
                   "(0.75 eps + 0.25) unless given; f_pb,eff = " +
@@ -448,7 +448,12 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                              "infinitely heavy); method B ignores the coupling of the meshes "
                              "and the carriers' motion, which the simulated K_v includes"
                            : "m_red with the driver inertia shared among its meshes"));
+}
 
+// Mesh 1's force harmonics and what the integration cost.
+void report_harmonics_and_cost(const DynamicsParameters& p, const TorsionalModel& model,
+                               const SimulationResult& result, Report& report)
+{
   auto& harmonics = report.add_table(
       "dynamics_harmonics", {"harmonic", "frequency", "amplitude_mesh1"}, {"-", "Hz", "N"});
   for (unsigned int k = 0; k <= 10; ++k)
@@ -459,121 +464,176 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       harmonics.add_row({double(k), frequency, amplitude});
   }
 
-  report.add_value("steps", trajectory.cost.steps, "-", "integration steps");
-  report.add_value("function_evaluations", trajectory.cost.function_evaluations, "-",
+  const IntegrationCost& cost = result.trajectory.cost;
+  report.add_value("steps", cost.steps, "-", "integration steps");
+  report.add_value("function_evaluations", cost.function_evaluations, "-",
                    "equation-of-motion evaluations");
   if (p.simulation.integrator.type == IntegratorType::adaptive_rk)
-    report.add_value("rejected_steps", trajectory.cost.rejected_steps, "-", "rejected steps");
+    report.add_value("rejected_steps", cost.rejected_steps, "-", "rejected steps");
   if (p.simulation.integrator.type == IntegratorType::hht_alpha)
-    report.add_value("linear_solves", trajectory.cost.linear_solves, "-", "linear solves");
-  report.add_value("integration_time", trajectory.cost.wall_time * 1e3, "ms",
-                   "wall time of the integration");
-  report.add_value("integration_cpu_time", trajectory.cost.cpu_time * 1e3, "ms",
+    report.add_value("linear_solves", cost.linear_solves, "-", "linear solves");
+  report.add_value("integration_time", cost.wall_time * 1e3, "ms", "wall time of the integration");
+  report.add_value("integration_cpu_time", cost.cpu_time * 1e3, "ms",
                    "processor time of the integration");
+}
+
+// The K_v chart's table: one row per speed (K_v only where valid) and the status counts.
+void report_speed_sweep(const DynamicsParameters& p, const SweepResult& sweep, Report& report)
+{
+  auto& table = report.add_table("dynamics_speed_sweep",
+                                 {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
+                                  "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
+                                 {"rpm", "Hz", "-", "-", "-", "-", "-", "µs", "-"});
+  unsigned int unstable = 0, separated = 0, not_steady = 0;
+  unsigned long steps = 0;
+  for (const SweepPoint& point : sweep.points)
+  {
+    GearTrain train = p.train;
+    train.input_speed = point.input_speed;
+    const TorsionalModel point_model(train);
+    const IsoDynamicFactor iso = iso_factor(point_model, p, 0);
+    // Only valid points show a K_v (issue 11: diverged or contact-loss rows printed as
+    // ordinary numbers); the linear model's value stays in its own column for the chart.
+    const bool valid = point.status == SweepStatus::valid;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    table.add_row({point.input_speed / rpm, point.mesh_frequency, iso.resonance_ratio,
+                   valid ? point.kv_max : nan, valid ? point.kv_min : nan, iso.kv,
+                   double(static_cast<int>(point.status)), point.time_step * 1e6, point.kv_max});
+    unstable += point.status == SweepStatus::diverged;
+    separated += point.status == SweepStatus::contact_loss;
+    not_steady += point.status == SweepStatus::not_steady;
+    steps += point.cost.steps;
+  }
+  report.add_value("sweep_points", sweep.points.size(), "-", "speeds in the sweep");
+  report.add_value("sweep_unstable", unstable, "-",
+                   "speeds where the linear model diverges (no K_v)");
+  report.add_value("sweep_contact_loss", separated, "-",
+                   "speeds with negative mesh force (teeth would separate)");
+  report.add_value("sweep_not_steady", not_steady, "-",
+                   "speeds whose K_v window is not periodic (no K_v)");
+  report.add_text("sweep status", "0 = " + sweep_status_name(SweepStatus::valid) +
+                                      ", 1 = " + sweep_status_name(SweepStatus::diverged) +
+                                      ", 2 = " + sweep_status_name(SweepStatus::contact_loss) +
+                                      ", 3 = " + sweep_status_name(SweepStatus::not_steady) +
+                                      "; K_v only for status 0");
+  report.add_value("sweep_steps", steps, "-", "integration steps of the sweep");
+  if (p.mesh_model == MeshModel::nonlinear || p.sweep_direction != SweepDirection::up)
+    report_nonlinear_sweep(p, sweep, report);
+  report.add_value("sweep_time", sweep.wall_time, "s", "wall time of the sweep");
+}
+
+// The K_v speed sweep (issue 25: one progress line per speed on stderr, from rank 0, none with
+// --quiet) and its report.
+SweepResult run_speed_sweep(const DynamicsParameters& p, CommandContext& context)
+{
+  std::vector<double> speeds;
+  for (unsigned int i = 0; i < p.sweep.points; ++i)
+    speeds.push_back(p.sweep.points == 1
+                         ? p.sweep.minimum_speed
+                         : p.sweep.minimum_speed + (p.sweep.maximum_speed - p.sweep.minimum_speed) *
+                                                       i / (p.sweep.points - 1));
+  context.pcout << "dynamics: speed sweep over " << p.sweep.points << " speeds" << std::endl;
+  SimulationSettings sweep_settings = p.simulation;
+  const bool nonlinear = p.mesh_model == MeshModel::nonlinear;
+  if (nonlinear)
+    sweep_settings.dte_spectrum_orders = 4.; // the waterfall: mesh orders up to 4
+  const unsigned int runs = p.sweep.points * (p.sweep_direction == SweepDirection::both ? 2 : 1);
+  const bool root = context.is_root(); // every rank runs the same sweep
+  const auto counter = context.progress_counter("dynamics", runs);
+  const SweepProgress progress = [&](const SweepPoint& point, std::size_t done, std::size_t total)
+  {
+    if (root)
+      counter("speed sweep " + std::to_string(done) + "/" + std::to_string(total) + ", " +
+              format_number(point.input_speed / rpm, 6) + " rpm" +
+              (point.descending ? " (down)" : "") + ", " +
+              (point.status == SweepStatus::valid ? "K_v max " + format_number(point.kv_max, 4)
+                                                  : sweep_status_name(point.status)));
+  };
+  const SweepResult sweep =
+      speed_sweep(p.train, sweep_settings, speeds, p.sweep.steps_per_mesh_period, p.sweep_direction,
+                  nonlinear, progress);
+  report_speed_sweep(p, sweep, context.report);
+  return sweep;
+}
+
+// Campbell chart over the sweep range (or, without a sweep, from 0 up to where the fastest
+// mesh's first order meets the highest mode).
+void plot_campbell(const DynamicsParameters& p, const TorsionalModel& model,
+                   const SimulationResult& result, CommandContext& context)
+{
+  const double low = p.sweep.points > 0 ? p.sweep.minimum_speed : 0.;
+  double fastest = 0.;
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+    fastest = std::max(fastest, model.mesh_position_rate(m) / p.train.input_speed);
+  const double high = p.sweep.points > 0
+                          ? p.sweep.maximum_speed
+                          : 1.1 * result.trajectory.highest_frequency / (2. * M_PI) / fastest;
+  const TemporaryCsv campbell(context.report, "dynamics_campbell");
+  const TemporaryCsv modes(context.report, "dynamics_modes");
+  context.plot("plot_dynamics.py",
+               {"campbell", campbell.path(), modes.path(),
+                format_number(low / rpm, 8) + "," + format_number(high / rpm, 8)},
+               "dynamics_campbell.png", "Campbell chart: mesh orders against natural frequencies");
+}
+
+// -o DIR: time series, spectrum and the charts.
+void write_files(const DynamicsParameters& p, const TorsionalModel& model,
+                 const SimulationResult& result, const SweepResult& sweep, CommandContext& context)
+{
+  Report& report = context.report;
+  const std::string series = context.output_file("dynamics_time_series.csv",
+                                                 "phi_i(t), mesh forces, K_v(t), mesh stiffness");
+  write_time_series(series, model, result, p.output_interval);
+  write_spectrum(context.output_file("dynamics_spectrum.csv", "mesh-force spectrum"), result);
+  const std::string window =
+      format_number(result.window_start, 8) + "," + format_number(result.window_end, 8);
+  context.plot("plot_dynamics.py", {"vibration", series, window}, "dynamics_vibration.png",
+               "torsional vibration phi_i(t)");
+  // A few mesh periods and the envelope per mesh period: the whole run is a solid band.
+  context.plot(
+      "plot_dynamics.py",
+      {"kv", series, window + "," + format_number(1. / result.meshes[0].mesh_frequency, 8)},
+      "dynamics_kv.png", "K_v(t): envelope per mesh period and the last periods");
+  context.plot("plot_dynamics.py", {"stiffness", series, window}, "dynamics_stiffness.png",
+               "mesh stiffness k(t)");
+  if (p.train_description)
+    plot_campbell(p, model, result, context);
+  if (!sweep.points.empty())
+  {
+    const TemporaryCsv csv(report, "dynamics_speed_sweep");
+    context.plot("plot_dynamics.py", {"resonance", csv.path()}, "dynamics_resonance.png",
+                 "K_v against input speed (resonance chart)");
+  }
+  if (p.mesh_model == MeshModel::nonlinear)
+    plot_nonlinear(context, report, series, window, !sweep.points.empty());
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  if (lateral_model_selected(prm)) // issue 30: dynamics_lateral.cc
+  {
+    run_lateral_dynamics(prm, context);
+    return;
+  }
+  const DynamicsParameters p = parse_dynamics_parameters(prm);
+  const TorsionalModel model(p.train);
+  Report& report = context.report;
+  report_case(p, model, report);
+
+  context.pcout << "dynamics: simulating " << model.n_dofs() << " DOF with "
+                << integrator_name(p.simulation.integrator.type) << std::endl;
+  const SimulationResult result = simulate(model, p.simulation);
+  report_run(p, model, result, report);
+  report_meshes(p, model, result, report);
+  report_nonlinear_meshes(p, result, report);
+  report_iso_assumptions(p, report);
+  report_harmonics_and_cost(p, model, result, report);
 
   SweepResult sweep;
   if (p.sweep.points > 0)
-  {
-    std::vector<double> speeds;
-    for (unsigned int i = 0; i < p.sweep.points; ++i)
-      speeds.push_back(p.sweep.points == 1 ? p.sweep.minimum_speed
-                                           : p.sweep.minimum_speed +
-                                                 (p.sweep.maximum_speed - p.sweep.minimum_speed) *
-                                                     i / (p.sweep.points - 1));
-    context.pcout << "dynamics: speed sweep over " << p.sweep.points << " speeds" << std::endl;
-    SimulationSettings sweep_settings = p.simulation;
-    const bool nonlinear = p.mesh_model == MeshModel::nonlinear;
-    if (nonlinear)
-      sweep_settings.dte_spectrum_orders = 4.; // the waterfall: mesh orders up to 4
-    sweep = speed_sweep(p.train, sweep_settings, speeds, p.sweep.steps_per_mesh_period,
-                        p.sweep_direction, nonlinear);
-    auto& table = report.add_table("dynamics_speed_sweep",
-                                   {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
-                                    "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
-                                   {"rpm", "Hz", "-", "-", "-", "-", "-", "µs", "-"});
-    unsigned int unstable = 0, separated = 0, not_steady = 0;
-    unsigned long steps = 0;
-    for (const SweepPoint& point : sweep.points)
-    {
-      GearTrain train = p.train;
-      train.input_speed = point.input_speed;
-      const TorsionalModel point_model(train);
-      const IsoDynamicFactor iso = iso_factor(point_model, p, 0);
-      // Only valid points show a K_v (issue 11: diverged or contact-loss rows printed as
-      // ordinary numbers); the linear model's value stays in its own column for the chart.
-      const bool valid = point.status == SweepStatus::valid;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      table.add_row({point.input_speed / rpm, point.mesh_frequency, iso.resonance_ratio,
-                     valid ? point.kv_max : nan, valid ? point.kv_min : nan, iso.kv,
-                     double(static_cast<int>(point.status)), point.time_step * 1e6, point.kv_max});
-      unstable += point.status == SweepStatus::diverged;
-      separated += point.status == SweepStatus::contact_loss;
-      not_steady += point.status == SweepStatus::not_steady;
-      steps += point.cost.steps;
-    }
-    report.add_value("sweep_points", sweep.points.size(), "-", "speeds in the sweep");
-    report.add_value("sweep_unstable", unstable, "-",
-                     "speeds where the linear model diverges (no K_v)");
-    report.add_value("sweep_contact_loss", separated, "-",
-                     "speeds with negative mesh force (teeth would separate)");
-    report.add_value("sweep_not_steady", not_steady, "-",
-                     "speeds whose K_v window is not periodic (no K_v)");
-    report.add_text("sweep status", "0 = " + sweep_status_name(SweepStatus::valid) +
-                                        ", 1 = " + sweep_status_name(SweepStatus::diverged) +
-                                        ", 2 = " + sweep_status_name(SweepStatus::contact_loss) +
-                                        ", 3 = " + sweep_status_name(SweepStatus::not_steady) +
-                                        "; K_v only for status 0");
-    report.add_value("sweep_steps", steps, "-", "integration steps of the sweep");
-    if (nonlinear || p.sweep_direction != SweepDirection::up)
-      report_nonlinear_sweep(p, sweep, report);
-    report.add_value("sweep_time", sweep.wall_time, "s", "wall time of the sweep");
-  }
-
+    sweep = run_speed_sweep(p, context);
   if (context.writes_files())
-  {
-    const std::string series = context.output_file("dynamics_time_series.csv",
-                                                   "phi_i(t), mesh forces, K_v(t), mesh stiffness");
-    write_time_series(series, model, result, p.output_interval);
-    write_spectrum(context.output_file("dynamics_spectrum.csv", "mesh-force spectrum"), result);
-    const std::string window =
-        format_number(result.window_start, 8) + "," + format_number(result.window_end, 8);
-    context.plot("plot_dynamics.py", {"vibration", series, window}, "dynamics_vibration.png",
-                 "torsional vibration phi_i(t)");
-    // A few mesh periods and the envelope per mesh period: the whole run is a solid band.
-    context.plot(
-        "plot_dynamics.py",
-        {"kv", series, window + "," + format_number(1. / result.meshes[0].mesh_frequency, 8)},
-        "dynamics_kv.png", "K_v(t): envelope per mesh period and the last periods");
-    context.plot("plot_dynamics.py", {"stiffness", series, window}, "dynamics_stiffness.png",
-                 "mesh stiffness k(t)");
-    if (p.train_description)
-    {
-      // Campbell chart over the sweep range (or 0..2× the input speed without a sweep).
-      const double low = p.sweep.points > 0 ? p.sweep.minimum_speed : 0.;
-      // Without a sweep: up to where the fastest mesh's first order meets the highest mode.
-      double fastest = 0.;
-      for (unsigned int m = 0; m < model.n_meshes(); ++m)
-        fastest = std::max(fastest, model.mesh_position_rate(m) / p.train.input_speed);
-      const double high = p.sweep.points > 0
-                              ? p.sweep.maximum_speed
-                              : 1.1 * trajectory.highest_frequency / (2. * M_PI) / fastest;
-      const TemporaryCsv campbell(report, "dynamics_campbell");
-      const TemporaryCsv modes(report, "dynamics_modes");
-      context.plot("plot_dynamics.py",
-                   {"campbell", campbell.path(), modes.path(),
-                    format_number(low / rpm, 8) + "," + format_number(high / rpm, 8)},
-                   "dynamics_campbell.png",
-                   "Campbell chart: mesh orders against natural frequencies");
-    }
-    if (!sweep.points.empty())
-    {
-      const TemporaryCsv csv(report, "dynamics_speed_sweep");
-      context.plot("plot_dynamics.py", {"resonance", csv.path()}, "dynamics_resonance.png",
-                   "K_v against input speed (resonance chart)");
-    }
-    if (p.mesh_model == MeshModel::nonlinear)
-      plot_nonlinear(context, report, series, window, !sweep.points.empty());
-  }
+    write_files(p, model, result, sweep, context);
 }
 
 const CommandRegistration registration(Command{

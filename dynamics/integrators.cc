@@ -411,6 +411,66 @@ constexpr double dp_a[7][6] = {
 constexpr double dp_error[7] = {71. / 57600.,      0.,         -71. / 16695., 71. / 1920.,
                                 -17253. / 339200., 22. / 525., -1. / 40.};
 
+// Absolute tolerances of the adaptive method per state component (angles, then speeds): on the
+// scale of the static deflection and of a vibration at the highest natural frequency with that
+// amplitude, so the error test is unit-consistent.
+std::vector<double> absolute_tolerances(const TorsionalModel& model,
+                                        const std::vector<double>& angle,
+                                        const std::vector<double>& velocity, double rtol,
+                                        double highest_frequency)
+{
+  const unsigned int n = model.n_dofs();
+  const StaticState statics = model.static_state(false);
+  double angle_scale = 0.;
+  for (unsigned int i = 0; i < n; ++i)
+    angle_scale = std::max({angle_scale, std::abs(statics.angle[i]), std::abs(angle[i]),
+                            std::abs(velocity[i]) / highest_frequency});
+  if (angle_scale == 0.)
+    angle_scale = 1e-12;
+  std::vector<double> absolute(2 * n);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    absolute[i] = rtol * angle_scale;
+    absolute[n + i] = rtol * angle_scale * highest_frequency;
+  }
+  return absolute;
+}
+
+// One Dormand–Prince trial step of `step` from (t, y) with k[0] = f(t, y): stages k[1..6], the
+// 5th-order solution in y_new (stage 7, FSAL); returns the scaled rms error estimate (1e10 when
+// not finite).
+template <typename Rhs>
+double dormand_prince_trial(const Rhs& rhs, double t, double step, const std::vector<double>& y,
+                            std::vector<std::vector<double>>& k, std::vector<double>& stage,
+                            std::vector<double>& y_new, const std::vector<double>& absolute,
+                            double rtol)
+{
+  const std::size_t size = y.size();
+  for (unsigned int s = 1; s < 7; ++s)
+  {
+    for (unsigned int i = 0; i < size; ++i)
+    {
+      double sum = 0.;
+      for (unsigned int j = 0; j < s; ++j)
+        sum += dp_a[s][j] * k[j][i];
+      stage[i] = y[i] + step * sum;
+    }
+    rhs(t + dp_c[s] * step, stage, k[s]);
+  }
+  y_new = stage; // stage 7 is the 5th-order solution
+  double error = 0.;
+  for (unsigned int i = 0; i < size; ++i)
+  {
+    double e = 0.;
+    for (unsigned int j = 0; j < 7; ++j)
+      e += dp_error[j] * k[j][i];
+    const double scale = absolute[i] + rtol * std::max(std::abs(y[i]), std::abs(y_new[i]));
+    error += (step * e / scale) * (step * e / scale);
+  }
+  error = std::sqrt(error / size);
+  return std::isfinite(error) ? error : 1e10;
+}
+
 void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
                   const std::vector<double>& velocity, const IntegratorSettings& settings,
                   Trajectory& trajectory)
@@ -430,22 +490,8 @@ void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
     model.acceleration(t, state.data(), state.data() + n, out.data() + n);
     ++trajectory.cost.function_evaluations;
   };
-
-  // Absolute tolerances on the scale of the static deflection and of a vibration at the
-  // highest natural frequency with that amplitude, so the error test is unit-consistent.
-  const StaticState statics = model.static_state(false);
-  double angle_scale = 0.;
-  for (unsigned int i = 0; i < n; ++i)
-    angle_scale = std::max({angle_scale, std::abs(statics.angle[i]), std::abs(angle[i]),
-                            std::abs(velocity[i]) / trajectory.highest_frequency});
-  if (angle_scale == 0.)
-    angle_scale = 1e-12;
-  std::vector<double> absolute(size);
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    absolute[i] = rtol * angle_scale;
-    absolute[n + i] = rtol * angle_scale * trajectory.highest_frequency;
-  }
+  const std::vector<double> absolute =
+      absolute_tolerances(model, angle, velocity, rtol, trajectory.highest_frequency);
 
   Recorder recorder(model, trajectory, settings, y.data(), y.data() + n);
   recorder.output(0, 0., y.data(), y.data() + n);
@@ -461,30 +507,7 @@ void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
     {
       const bool clipped = t + h > t_output;
       const double step = clipped ? t_output - t : h;
-      for (unsigned int s = 1; s < 7; ++s)
-      {
-        for (unsigned int i = 0; i < size; ++i)
-        {
-          double sum = 0.;
-          for (unsigned int j = 0; j < s; ++j)
-            sum += dp_a[s][j] * k[j][i];
-          stage[i] = y[i] + step * sum;
-        }
-        rhs(t + dp_c[s] * step, stage, k[s]);
-      }
-      y_new = stage; // stage 7 is the 5th-order solution
-      double error = 0.;
-      for (unsigned int i = 0; i < size; ++i)
-      {
-        double e = 0.;
-        for (unsigned int j = 0; j < 7; ++j)
-          e += dp_error[j] * k[j][i];
-        const double scale = absolute[i] + rtol * std::max(std::abs(y[i]), std::abs(y_new[i]));
-        error += (step * e / scale) * (step * e / scale);
-      }
-      error = std::sqrt(error / size);
-      if (!std::isfinite(error))
-        error = 1e10;
+      const double error = dormand_prince_trial(rhs, t, step, y, k, stage, y_new, absolute, rtol);
       const double factor = std::min(5., std::max(0.2, 0.9 * std::pow(error, -0.2)));
       if (error <= 1.)
       {

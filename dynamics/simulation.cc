@@ -142,9 +142,13 @@ void check_excitation_resolution(const TorsionalModel& model, double step)
   }
 }
 
-SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings)
+namespace
 {
-  SimulationResult result;
+// Modes, decay time and the steady-state window of a run (result.modes, decay_time, window_*);
+// returns the end of the integration [s].
+double plan_window(const TorsionalModel& model, const SimulationSettings& settings,
+                   SimulationResult& result)
+{
   result.start = settings.start;
   result.modes = model.modal_properties();
   const double slowest_decay =
@@ -173,10 +177,17 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   const double whole_periods = std::floor((end_time - result.window_start) / mesh_period + 1e-9);
   result.window_end =
       whole_periods >= 1. ? result.window_start + whole_periods * mesh_period : end_time;
-  const double middle = 0.5 * (result.window_start + result.window_end);
+  return end_time;
+}
 
+// The state the run starts from: the given one (a sweep's continuation), the static deflection
+// or rest [rad], [rad/s] per DOF.
+void start_state(const TorsionalModel& model, const SimulationSettings& settings,
+                 std::vector<double>& angle, std::vector<double>& velocity)
+{
   const unsigned int n = model.n_dofs();
-  std::vector<double> angle(n, 0.), velocity(n, 0.);
+  angle.assign(n, 0.);
+  velocity.assign(n, 0.);
   if (!settings.initial_angle.empty())
   {
     if (settings.initial_angle.size() != n || settings.initial_velocity.size() != n)
@@ -186,46 +197,43 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   }
   else if (settings.start == StartState::static_deflection)
     angle = model.static_state(true).angle;
-  result.initial_angle = angle;
-  check_excitation_resolution(model, h);
+}
 
-  // K_v statistics at every step through the observer; only the window's forces are kept (for
-  // the spectrum) and the trajectory itself every `record_interval`.
-  const unsigned int n_meshes = model.n_meshes();
-  result.meshes.resize(n_meshes);
-  std::vector<double> window_time;
-  std::vector<std::vector<double>> window_force(n_meshes), window_deflection(n_meshes);
-  const bool keep_deflection = settings.keep_time_series || settings.dte_spectrum_orders > 0.;
-  std::vector<double> deflection_sum(n_meshes, 0.), deflection_square(n_meshes, 0.);
-  std::vector<std::size_t> separated_steps(n_meshes, 0);
-  std::vector<double> scale(n_meshes), force_sum(n_meshes, 0.);
-  std::size_t mean_count = 0;
-  for (unsigned int m = 0; m < n_meshes; ++m)
+// What a run gathers at every step in the window (the integrator's observers): K_v extremes per
+// mesh and window half, mean force and DTE, separated steps, contact changes, and the window's
+// samples for the spectra; finish() turns them into the MeshResults.
+class WindowStatistics
+{
+public:
+  WindowStatistics(const TorsionalModel& model, const SimulationSettings& settings,
+                   SimulationResult& result)
+      : model(model), settings(settings), result(result), h(settings.integrator.time_step),
+        middle(0.5 * (result.window_start + result.window_end)), tolerance(1e-9 * h),
+        keep_deflection(settings.keep_time_series || settings.dte_spectrum_orders > 0.),
+        n_meshes(model.n_meshes()), window_force(n_meshes), window_deflection(n_meshes),
+        deflection_sum(n_meshes, 0.), deflection_square(n_meshes, 0.), separated_steps(n_meshes, 0),
+        scale(n_meshes), force_sum(n_meshes, 0.)
   {
-    MeshResult& mesh = result.meshes[m];
-    const Mesh& description = model.train().meshes[m];
-    mesh.name = description.name.empty() ? "Mesh " + std::to_string(m + 1) : description.name;
-    mesh.nominal_force = model.nominal_force(m);
-    mesh.mesh_frequency = model.mesh_position_rate(m);
-    mesh.initial_position = description.initial_position;
-    // K_v is relative to the nominal force; a mesh without load has no K_v.
-    const double nominal = std::abs(mesh.nominal_force);
-    scale[m] = nominal > 0. ? 1. / nominal : std::numeric_limits<double>::quiet_NaN();
-    mesh.kv_max = mesh.kv_max_first_half = mesh.kv_max_second_half =
-        -std::numeric_limits<double>::infinity();
-    mesh.kv_min = std::numeric_limits<double>::infinity();
-    mesh.nonlinear = model.is_nonlinear(m);
+    result.meshes.resize(n_meshes);
+    for (unsigned int m = 0; m < n_meshes; ++m)
+    {
+      MeshResult& mesh = result.meshes[m];
+      const Mesh& description = model.train().meshes[m];
+      mesh.name = description.name.empty() ? "Mesh " + std::to_string(m + 1) : description.name;
+      mesh.nominal_force = model.nominal_force(m);
+      mesh.mesh_frequency = model.mesh_position_rate(m);
+      mesh.initial_position = description.initial_position;
+      // K_v is relative to the nominal force; a mesh without load has no K_v.
+      const double nominal = std::abs(mesh.nominal_force);
+      scale[m] = nominal > 0. ? 1. / nominal : std::numeric_limits<double>::quiet_NaN();
+      mesh.kv_max = mesh.kv_max_first_half = mesh.kv_max_second_half =
+          -std::numeric_limits<double>::infinity();
+      mesh.kv_min = std::numeric_limits<double>::infinity();
+      mesh.nonlinear = model.is_nonlinear(m);
+    }
   }
-  const double tolerance = 1e-9 * h;
-  IntegratorSettings integrator = settings.integrator;
-  integrator.end_time = end_time;
-  integrator.record_stride =
-      settings.keep_time_series
-          ? std::max(1u, static_cast<unsigned int>(std::lround(std::min(
-                             settings.record_interval / h, double(max_integration_steps)))))
-          : std::numeric_limits<unsigned int>::max();
-  check_simulation_work(model, settings, integrator, result, mesh_period);
-  integrator.observer = [&](double t, const double* phi, const double* omega)
+
+  void observe(double t, const double* phi, const double* omega)
   {
     if (t < result.window_start - tolerance || t > result.window_end + tolerance)
       return;
@@ -261,44 +269,72 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
     }
     mean_count += in_mean;
     result.final_time = t;
-    result.final_angle.assign(phi, phi + n);
-    result.final_velocity.assign(omega, omega + n);
-  };
-  integrator.contact_observer = [&](double t, unsigned int m, ContactRegime from, ContactRegime to)
+    result.final_angle.assign(phi, phi + model.n_dofs());
+    result.final_velocity.assign(omega, omega + model.n_dofs());
+  }
+
+  void contact_change(double t, unsigned int m, ContactRegime from, ContactRegime to)
   {
     if (t < result.window_start || t >= result.window_end)
       return;
     MeshResult& mesh = result.meshes[m];
     mesh.separations += from == ContactRegime::drive;
     mesh.back_impacts += to == ContactRegime::back;
-  };
-  result.trajectory = integrate(model, angle, velocity, integrator);
-  const Trajectory& trajectory = result.trajectory;
+  }
 
-  double max_frequency = settings.max_spectrum_frequency;
-  if (max_frequency <= 0.)
-    max_frequency = 1.5 * trajectory.highest_frequency / (2. * M_PI);
-  for (unsigned int m = 0; m < n_meshes; ++m)
+  // Means, rms, separation fraction and spectra of every mesh (after the integration).
+  void finish()
+  {
+    double max_frequency = settings.max_spectrum_frequency;
+    if (max_frequency <= 0.)
+      max_frequency = 1.5 * result.trajectory.highest_frequency / (2. * M_PI);
+    for (unsigned int m = 0; m < n_meshes; ++m)
+    {
+      MeshResult& mesh = result.meshes[m];
+      const double count = std::max<std::size_t>(mean_count, 1);
+      mesh.mean_force = force_sum[m] / count;
+      mesh.mean_deflection = deflection_sum[m] / count;
+      mesh.deflection_rms = std::sqrt(
+          std::max(0., deflection_square[m] / count - mesh.mean_deflection * mesh.mean_deflection));
+      mesh.separation_fraction = separated_steps[m] / count;
+      result.kv_max = std::max(result.kv_max, mesh.kv_max);
+      if (keep_deflection)
+        amplitude_spectrum(
+            window_time, window_deflection[m], 0, result.window_start, result.window_end,
+            settings.keep_time_series ? max_frequency
+                                      : settings.dte_spectrum_orders * mesh.mesh_frequency,
+            mesh.dte_spectrum_frequency, mesh.dte_spectrum_amplitude);
+      if (settings.keep_time_series)
+        amplitude_spectrum(window_time, window_force[m], 0, result.window_start, result.window_end,
+                           max_frequency, mesh.spectrum_frequency, mesh.spectrum_amplitude);
+    }
+  }
+
+private:
+  const TorsionalModel& model;
+  const SimulationSettings& settings;
+  SimulationResult& result;
+  const double h;         // [s] output interval
+  const double middle;    // [s] between the window halves
+  const double tolerance; // [s] on the window's ends
+  const bool keep_deflection;
+  const unsigned int n_meshes;
+  std::vector<double> window_time; // [s]
+  std::vector<std::vector<double>> window_force, window_deflection;
+  std::vector<double> deflection_sum, deflection_square;
+  std::vector<std::size_t> separated_steps;
+  std::vector<double> scale, force_sum;
+  std::size_t mean_count = 0;
+};
+
+// Force, stiffness and deflection of every mesh at the stored output times.
+void mesh_time_series(const TorsionalModel& model, SimulationResult& result)
+{
+  const Trajectory& trajectory = result.trajectory;
+  const std::vector<double>& time = trajectory.time;
+  for (unsigned int m = 0; m < result.meshes.size(); ++m)
   {
     MeshResult& mesh = result.meshes[m];
-    const double count = std::max<std::size_t>(mean_count, 1);
-    mesh.mean_force = force_sum[m] / count;
-    mesh.mean_deflection = deflection_sum[m] / count;
-    mesh.deflection_rms = std::sqrt(
-        std::max(0., deflection_square[m] / count - mesh.mean_deflection * mesh.mean_deflection));
-    mesh.separation_fraction = separated_steps[m] / count;
-    result.kv_max = std::max(result.kv_max, mesh.kv_max);
-    if (keep_deflection)
-      amplitude_spectrum(
-          window_time, window_deflection[m], 0, result.window_start, result.window_end,
-          settings.keep_time_series ? max_frequency
-                                    : settings.dte_spectrum_orders * mesh.mesh_frequency,
-          mesh.dte_spectrum_frequency, mesh.dte_spectrum_amplitude);
-    if (!settings.keep_time_series)
-      continue;
-    amplitude_spectrum(window_time, window_force[m], 0, result.window_start, result.window_end,
-                       max_frequency, mesh.spectrum_frequency, mesh.spectrum_amplitude);
-    const std::vector<double>& time = trajectory.time;
     mesh.force.resize(time.size());
     mesh.stiffness.resize(time.size());
     mesh.deflection.resize(time.size());
@@ -311,7 +347,39 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
       mesh.deflection[i] = response.deflection;
     }
   }
-  if (!settings.keep_time_series)
+}
+} // namespace
+
+SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings)
+{
+  SimulationResult result;
+  const double end_time = plan_window(model, settings, result);
+  std::vector<double> angle, velocity;
+  start_state(model, settings, angle, velocity);
+  result.initial_angle = angle;
+  const double h = settings.integrator.time_step;
+  check_excitation_resolution(model, h);
+
+  // K_v statistics at every step through the observer; only the window's forces are kept (for
+  // the spectrum) and the trajectory itself every `record_interval`.
+  WindowStatistics statistics(model, settings, result);
+  IntegratorSettings integrator = settings.integrator;
+  integrator.end_time = end_time;
+  integrator.record_stride =
+      settings.keep_time_series
+          ? std::max(1u, static_cast<unsigned int>(std::lround(std::min(
+                             settings.record_interval / h, double(max_integration_steps)))))
+          : std::numeric_limits<unsigned int>::max();
+  check_simulation_work(model, settings, integrator, result, 1. / model.mesh_position_rate(0));
+  integrator.observer = [&](double t, const double* phi, const double* omega)
+  { statistics.observe(t, phi, omega); };
+  integrator.contact_observer = [&](double t, unsigned int m, ContactRegime from, ContactRegime to)
+  { statistics.contact_change(t, m, from, to); };
+  result.trajectory = integrate(model, angle, velocity, integrator);
+  statistics.finish();
+  if (settings.keep_time_series)
+    mesh_time_series(model, result);
+  else
   {
     result.trajectory.angle.clear();
     result.trajectory.velocity.clear();
@@ -320,12 +388,12 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   return result;
 }
 
-SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
-                        const std::vector<double>& input_speeds, unsigned int steps_per_mesh_period,
-                        SweepDirection direction, bool continuation)
+namespace
 {
-  const auto start = std::chrono::steady_clock::now();
-  SweepResult sweep;
+// The speeds in the order they run, each with whether it belongs to the down sweep.
+std::vector<std::pair<double, bool>> sweep_order(const std::vector<double>& input_speeds,
+                                                 SweepDirection direction, bool continuation)
+{
   std::vector<double> ascending = input_speeds;
   std::vector<std::pair<double, bool>> order; // speed, descending
   if (direction != SweepDirection::up || continuation)
@@ -336,78 +404,114 @@ SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settin
   if (direction != SweepDirection::up)
     for (auto speed = ascending.rbegin(); speed != ascending.rend(); ++speed)
       order.emplace_back(*speed, true);
-  // The previous speed's final state and mesh positions (continuation).
-  std::vector<double> angle, velocity, positions;
+  return order;
+}
+
+// Where the next speed of a continued sweep starts: the previous speed's final state and mesh
+// positions (empty: afresh).
+struct SweepState
+{
+  std::vector<double> angle, velocity; // [rad], [rad/s]
+  std::vector<double> positions;       // [base pitches] per mesh
+};
+
+// A finished run's summary over its meshes into `p`, and the state the next speed continues from.
+void summarize_sweep_point(const TorsionalModel& model, const GearTrain& point_train,
+                           const SimulationResult& result, SweepPoint& p, SweepState& state)
+{
+  p.kv_max = result.kv_max;
+  p.kv_min = std::numeric_limits<double>::infinity();
+  for (const auto& mesh : result.meshes)
+  {
+    p.kv_min = std::min(p.kv_min, mesh.kv_min);
+    p.periodicity =
+        std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
+    p.separation_fraction = std::max(p.separation_fraction, mesh.separation_fraction);
+    p.separations += mesh.separations;
+    p.back_impacts += mesh.back_impacts;
+  }
+  const MeshResult& first = result.meshes.front();
+  p.mean_deflection = first.mean_deflection;
+  p.deflection_rms = first.deflection_rms;
+  for (std::size_t k = 0; k < first.dte_spectrum_frequency.size(); ++k)
+  {
+    p.dte_orders.push_back(first.dte_spectrum_frequency[k] / first.mesh_frequency);
+    p.dte_amplitude.push_back(first.dte_spectrum_amplitude[k]);
+  }
+  p.cost = result.trajectory.cost;
+  // Nonlinear meshes represent separation: a negative force is back-flank contact.
+  if (p.kv_min < 0. && !model.has_nonlinear_meshes())
+    p.status = SweepStatus::contact_loss;
+  else if (p.periodicity > steady_state_tolerance * p.kv_max)
+    p.status = SweepStatus::not_steady;
+  state.angle = result.final_angle;
+  state.velocity = result.final_velocity;
+  state.positions.clear();
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+    state.positions.push_back(point_train.meshes[m].initial_position +
+                              model.mesh_position_rate(m) * result.final_time);
+}
+
+// One speed of the sweep, started from `state` when continuing.
+SweepPoint run_sweep_point(const GearTrain& train, const SimulationSettings& settings, double speed,
+                           bool descending, unsigned int steps_per_mesh_period, bool continuation,
+                           SweepState& state)
+{
+  GearTrain point_train = train;
+  point_train.input_speed = speed;
+  if (continuation && !state.positions.empty())
+    for (std::size_t m = 0; m < state.positions.size(); ++m)
+      point_train.meshes[m].initial_position = state.positions[m];
+  const TorsionalModel model(point_train);
+  SimulationSettings point = settings;
+  point.keep_time_series = false;
+  if (continuation && !state.angle.empty())
+  {
+    point.initial_angle = state.angle;
+    point.initial_velocity = state.velocity;
+  }
+  double fastest_mesh = 0.;
+  for (unsigned int m = 0; m < model.n_meshes(); ++m)
+    fastest_mesh = std::max(fastest_mesh, model.mesh_position_rate(m));
+  point.integrator.time_step =
+      std::min(settings.integrator.time_step, 1. / (fastest_mesh * steps_per_mesh_period));
+  SweepPoint p;
+  p.input_speed = speed;
+  p.descending = descending;
+  p.mesh_frequency = model.mesh_position_rate(0);
+  p.time_step = point.integrator.time_step;
+  try
+  {
+    summarize_sweep_point(model, point_train, simulate(model, point), p, state);
+  }
+  catch (const SolverFailure& failure)
+  {
+    p.unstable = true;
+    p.status = SweepStatus::diverged;
+    p.failure = failure.what();
+    p.kv_max = p.kv_min = p.periodicity = std::numeric_limits<double>::quiet_NaN();
+    state.angle.clear(); // the next speed starts afresh
+    state.positions.clear();
+  }
+  return p;
+}
+} // namespace
+
+SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
+                        const std::vector<double>& input_speeds, unsigned int steps_per_mesh_period,
+                        SweepDirection direction, bool continuation, const SweepProgress& progress)
+{
+  const auto start = std::chrono::steady_clock::now();
+  SweepResult sweep;
+  const std::vector<std::pair<double, bool>> order =
+      sweep_order(input_speeds, direction, continuation);
+  SweepState state;
   for (const auto& [speed, descending] : order)
   {
-    GearTrain point_train = train;
-    point_train.input_speed = speed;
-    if (continuation && !positions.empty())
-      for (std::size_t m = 0; m < positions.size(); ++m)
-        point_train.meshes[m].initial_position = positions[m];
-    const TorsionalModel model(point_train);
-    SimulationSettings point = settings;
-    point.keep_time_series = false;
-    if (continuation && !angle.empty())
-    {
-      point.initial_angle = angle;
-      point.initial_velocity = velocity;
-    }
-    double fastest_mesh = 0.;
-    for (unsigned int m = 0; m < model.n_meshes(); ++m)
-      fastest_mesh = std::max(fastest_mesh, model.mesh_position_rate(m));
-    point.integrator.time_step =
-        std::min(settings.integrator.time_step, 1. / (fastest_mesh * steps_per_mesh_period));
-    SweepPoint p;
-    p.input_speed = speed;
-    p.descending = descending;
-    p.mesh_frequency = model.mesh_position_rate(0);
-    p.time_step = point.integrator.time_step;
-    try
-    {
-      const SimulationResult result = simulate(model, point);
-      p.kv_max = result.kv_max;
-      p.kv_min = std::numeric_limits<double>::infinity();
-      for (const auto& mesh : result.meshes)
-      {
-        p.kv_min = std::min(p.kv_min, mesh.kv_min);
-        p.periodicity =
-            std::max(p.periodicity, std::abs(mesh.kv_max_first_half - mesh.kv_max_second_half));
-        p.separation_fraction = std::max(p.separation_fraction, mesh.separation_fraction);
-        p.separations += mesh.separations;
-        p.back_impacts += mesh.back_impacts;
-      }
-      const MeshResult& first = result.meshes.front();
-      p.mean_deflection = first.mean_deflection;
-      p.deflection_rms = first.deflection_rms;
-      for (std::size_t k = 0; k < first.dte_spectrum_frequency.size(); ++k)
-      {
-        p.dte_orders.push_back(first.dte_spectrum_frequency[k] / first.mesh_frequency);
-        p.dte_amplitude.push_back(first.dte_spectrum_amplitude[k]);
-      }
-      p.cost = result.trajectory.cost;
-      // Nonlinear meshes represent separation: a negative force is back-flank contact.
-      if (p.kv_min < 0. && !model.has_nonlinear_meshes())
-        p.status = SweepStatus::contact_loss;
-      else if (p.periodicity > steady_state_tolerance * p.kv_max)
-        p.status = SweepStatus::not_steady;
-      angle = result.final_angle;
-      velocity = result.final_velocity;
-      positions.clear();
-      for (unsigned int m = 0; m < model.n_meshes(); ++m)
-        positions.push_back(point_train.meshes[m].initial_position +
-                            model.mesh_position_rate(m) * result.final_time);
-    }
-    catch (const SolverFailure& failure)
-    {
-      p.unstable = true;
-      p.status = SweepStatus::diverged;
-      p.failure = failure.what();
-      p.kv_max = p.kv_min = p.periodicity = std::numeric_limits<double>::quiet_NaN();
-      angle.clear(); // the next speed starts afresh
-      positions.clear();
-    }
-    sweep.points.push_back(p);
+    sweep.points.push_back(run_sweep_point(train, settings, speed, descending,
+                                           steps_per_mesh_period, continuation, state));
+    if (progress)
+      progress(sweep.points.back(), sweep.points.size(), order.size());
   }
   sweep.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return sweep;

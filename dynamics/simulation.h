@@ -11,6 +11,7 @@
 
 #include "dynamics/integrators.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -160,8 +161,14 @@ std::string sweep_direction_name(SweepDirection direction);
 // with `continuation` each speed starts from the previous speed's final state (angles, speeds
 // relative to the nominal rotation, and mesh positions), so where the response is multi-valued
 // (nonlinear meshes near resonance) the up and down sweeps follow different branches.
+//
+// `progress`, when given, is called after each speed with its point, the speeds done and the
+// speeds in all (up and down counted separately).
+using SweepProgress =
+    std::function<void(const SweepPoint& point, std::size_t done, std::size_t total)>;
 SweepResult speed_sweep(const GearTrain& train, const SimulationSettings& settings,
                         const std::vector<double>& input_speeds,
                         unsigned int steps_per_mesh_period = 40,
-                        SweepDirection direction = SweepDirection::up, bool continuation = false);
+                        SweepDirection direction = SweepDirection::up, bool continuation = false,
+                        const SweepProgress& progress = {});
 } // namespace gearstiff::dynamics

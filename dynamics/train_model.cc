@@ -10,6 +10,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 namespace gearstiff::dynamics
 {
@@ -324,29 +325,52 @@ kinematics::GearTrainSpec with_blank_inertias(const TrainDynamicsInput& input,
   }
   return spec;
 }
-} // namespace
 
-TrainModel build_train_model(const TrainDynamicsInput& input)
+// What the steps of build_train_model pass on to each other.
+struct TrainBuild
 {
-  TrainModel model;
-  const kinematics::GearTrainSpec spec = with_blank_inertias(input, model.notes);
-  const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
+  explicit TrainBuild(const TrainDynamicsInput& input)
+      : input(input), spec(with_blank_inertias(input, model.notes)),
+        solution(kinematics::solve_train_kinematics(spec))
+  {
+  }
+  const TrainDynamicsInput& input;
+  TrainModel model; // declared before spec: the blanks' notes go into it
+  kinematics::GearTrainSpec spec;
+  kinematics::TrainSolution solution;
+  Bodies bodies;
+  double input_speed = 0.;                   // [rad/s] signed speed of the input member
+  std::vector<double> inertia;               // [kg·m²] per DOF
+  std::vector<std::array<int, 3>> mesh_dofs; // per model mesh: DOF of a, b, frame (-1: still)
+  std::vector<double> forces;                // [N] per model mesh: static force, unoriented
+  std::vector<int> a_drives;                 // per Train mesh: 1 when gear a drives
+};
+
+// Bodies and DOFs, their inertias and speed ratios, the input torque and the output's load,
+// suspensions and the reduced inertia J*.
+void add_gears(TrainBuild& build)
+{
+  const kinematics::GearTrainSpec& spec = build.spec;
+  const kinematics::TrainSolution& solution = build.solution;
+  TrainModel& model = build.model;
+  const TrainDynamicsInput& input = build.input;
   if (spec.inputs.size() != 1 || spec.output.empty())
     throw InputError("Train/inputs", "the dynamics needs exactly one input and an output");
   if (input.meshes.size() != spec.meshes.size())
     throw InputError(input.mesh_section, "one set of mesh data per Train mesh is needed");
-  Bodies bodies = find_bodies(spec, solution);
+  Bodies& bodies = build.bodies;
+  bodies = find_bodies(spec, solution);
   const std::size_t input_member = solution.index(spec.inputs.front().first);
   const std::size_t input_body = bodies.body_of_member[input_member];
   if (bodies.fixed[input_body] || bodies.copies[input_body] != 1)
     throw InputError("Train/inputs", "the input must be a single member that turns");
   number_dofs(bodies, solution, input.suspensions, input_body, model);
   const std::size_t n_dofs = model.dof_names.size();
-  const double input_speed = spec.inputs.front().second;
+  const double input_speed = build.input_speed = spec.inputs.front().second;
 
   GearTrain& train = model.train;
   train.input_speed = std::abs(input_speed);
-  const std::vector<double> inertia = dof_inertias(spec, solution, bodies, n_dofs);
+  const std::vector<double>& inertia = build.inertia = dof_inertias(spec, solution, bodies, n_dofs);
   train.speed_ratios.resize(n_dofs);
   for (std::size_t b = 0; b < bodies.copies.size(); ++b)
     for (unsigned int k = 0; bodies.first_dof[b] >= 0 && k < bodies.copies[b]; ++k)
@@ -377,10 +401,16 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
 
   model.reduced_inertia = kinematics::reduced_moment_of_inertia(
       kinematics::inertia_terms(spec, solution, spec.inputs.front().first));
+}
 
-  std::vector<std::array<int, 3>> mesh_dofs; // per model mesh: DOF of a, b, frame (-1: still)
-  // Meshes, one per copy: terms, speeds, stiffness. Contact ratio first (needed for the mean
-  // stiffness), the approach ratio, force sign and phase after the static solution.
+// Meshes, one per copy: terms, speeds, stiffness. Contact ratio first (needed for the mean
+// stiffness); the approach ratio, force sign and phase follow the static solution.
+void add_meshes(TrainBuild& build)
+{
+  const kinematics::GearTrainSpec& spec = build.spec;
+  const kinematics::TrainSolution& solution = build.solution;
+  TrainModel& model = build.model;
+  const TrainDynamicsInput& input = build.input;
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
     const kinematics::TrainMesh& tm = spec.meshes[m];
@@ -413,16 +443,16 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       for (unsigned int k = 0; k < 3; ++k)
       {
         const auto& [member, r] = members[k];
-        dofs[k] = dof_of(bodies, spec, member, j / (copies / member_copies(spec, member)));
+        dofs[k] = dof_of(build.bodies, spec, member, j / (copies / member_copies(spec, member)));
         if (dofs[k] >= 0)
           coefficient[dofs[k]] += r;
       }
-      mesh_dofs.push_back(dofs);
+      build.mesh_dofs.push_back(dofs);
       for (const auto& [dof, r] : coefficient)
         mesh.terms.push_back({dof, r, 0.});
       mesh.position_ratio = std::abs(gear_a.teeth) *
                             std::abs(solution.speeds[a] - solution.speeds[c]) /
-                            (2. * M_PI * std::abs(input_speed));
+                            (2. * M_PI * std::abs(build.input_speed));
       mesh.contact_ratio = contact_ratio;
       mesh.stiffness = input.meshes[m].stiffness;
       mesh.damping = input.meshes[m].damping;
@@ -430,52 +460,58 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       mesh.driver_friction_arm = input.meshes[m].driver_friction_arm;
       mesh.driven_friction_arm = input.meshes[m].driven_friction_arm;
       mesh.nonlinear = input.meshes[m].nonlinear;
-      train.meshes.push_back(mesh);
+      model.train.meshes.push_back(mesh);
       model.spec_mesh.push_back(m);
       model.mesh_copy.push_back(j);
     }
-    model.spec_mesh_iso.push_back(iso_pair(
-        gear_a, ra, rb, std::abs(solution.speeds[a] - solution.speeds[c]) / std::abs(input_speed),
-        inertia, {mesh_dofs.end() - copies, mesh_dofs.end()}));
+    model.spec_mesh_iso.push_back(
+        iso_pair(gear_a, ra, rb,
+                 std::abs(solution.speeds[a] - solution.speeds[c]) / std::abs(build.input_speed),
+                 build.inertia, {build.mesh_dofs.end() - copies, build.mesh_dofs.end()}));
   }
+}
 
-  // Load direction: orient every mesh so its static force is positive (K_v = F/F_nominal),
-  // then the driver in the frame's reference is the gear the mesh draws power from.
-  const std::vector<double> forces = [&]
+// Load direction: orient every mesh so its static force is positive (K_v = F/F_nominal), then
+// the driver in the frame's reference is the gear the mesh draws power from; an FE table
+// computed with the other gear driving is reversed (contact runs the other way).
+void orient_meshes(TrainBuild& build)
+{
+  const kinematics::GearTrainSpec& spec = build.spec;
+  const kinematics::TrainSolution& solution = build.solution;
+  TrainModel& model = build.model;
+  GearTrain& train = model.train;
   {
     const TorsionalModel preliminary(train);
-    std::vector<double> f(train.meshes.size());
-    for (std::size_t i = 0; i < f.size(); ++i)
-      f[i] = preliminary.nominal_force(i);
-    return f;
-  }();
-  std::vector<int> a_drives(spec.meshes.size(), -1);
+    build.forces.resize(train.meshes.size());
+    for (std::size_t i = 0; i < build.forces.size(); ++i)
+      build.forces[i] = preliminary.nominal_force(i);
+  }
+  build.a_drives.assign(spec.meshes.size(), -1);
   for (std::size_t i = 0; i < train.meshes.size(); ++i)
   {
     Mesh& mesh = train.meshes[i];
     const std::size_t m = model.spec_mesh[i];
     const kinematics::TrainMesh& tm = spec.meshes[m];
-    const double sign = forces[i] < 0. ? -1. : 1.;
+    const double sign = build.forces[i] < 0. ? -1. : 1.;
     for (MeshTerm& term : mesh.terms)
       term.coefficient *= sign;
-    if (a_drives[m] < 0)
+    if (build.a_drives[m] < 0)
     {
       // Torque of the mesh on gear a: −s·r_a·F; power out of a in the frame: s·r_a·F·(ω_a − ω_c).
-      const double ra =
-          sign * signed_base_radius(spec.members[solution.index(tm.gear_a)], input.pressure_angle);
+      const double ra = sign * signed_base_radius(spec.members[solution.index(tm.gear_a)],
+                                                  build.input.pressure_angle);
       const double relative = solution.speed(tm.gear_a) - solution.speed(tm.frame);
-      a_drives[m] = ra * relative >= 0. ? 1 : 0;
+      build.a_drives[m] = ra * relative >= 0. ? 1 : 0;
     }
   }
-  // FE stiffness computed with the other gear driving: contact runs the other way.
   for (std::size_t i = 0; i < train.meshes.size(); ++i)
   {
     const std::size_t m = model.spec_mesh[i];
-    const std::optional<unsigned int>& fe_driver = input.meshes[m].stiffness_driver;
-    if (fe_driver && (*fe_driver == 0) != (a_drives[m] == 1))
+    const std::optional<unsigned int>& fe_driver = build.input.meshes[m].stiffness_driver;
+    if (fe_driver && (*fe_driver == 0) != (build.a_drives[m] == 1))
     {
       const double contact_ratio = model.spec_mesh_contact_ratio[m];
-      train.meshes[i].stiffness = input.meshes[m].stiffness.reversed(contact_ratio);
+      train.meshes[i].stiffness = build.input.meshes[m].stiffness.reversed(contact_ratio);
       if (std::optional<NonlinearMesh>& nonlinear = train.meshes[i].nonlinear)
       {
         nonlinear->transmission_error = nonlinear->transmission_error.reversed(contact_ratio);
@@ -484,90 +520,116 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       }
     }
   }
-  // Approach ratios (the driven gear's tip starts the contact), friction arms, phases.
+}
+
+// Approach ratios per Train mesh (the driven gear's tip starts the contact).
+void add_approach_ratios(TrainBuild& build)
+{
+  const kinematics::GearTrainSpec& spec = build.spec;
+  TrainModel& model = build.model;
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
     const kinematics::TrainMesh& tm = spec.meshes[m];
-    const TrainMeshDynamics& data = input.meshes[m];
+    const TrainMeshDynamics& data = build.input.meshes[m];
     if (data.approach_ratio && data.stiffness_driver)
     {
       // The FE pair's own path: driven the other way, contact starts at the other end (E), so
       // the approach becomes the FE recess ε_α − ε_f.
-      const bool fe_pinion_drives = (*data.stiffness_driver == 0) == (a_drives[m] == 1);
+      const bool fe_pinion_drives = (*data.stiffness_driver == 0) == (build.a_drives[m] == 1);
       model.spec_mesh_approach_ratio.push_back(fe_pinion_drives ? *data.approach_ratio
                                                                 : model.spec_mesh_contact_ratio[m] -
                                                                       *data.approach_ratio);
       continue;
     }
-    const auto& gear_a = spec.members[solution.index(tm.gear_a)];
-    const auto& gear_b = spec.members[solution.index(tm.gear_b)];
-    model.spec_mesh_approach_ratio.push_back(standard_mesh(gear_a.teeth, gear_b.teeth,
-                                                           gear_a.module, input.pressure_angle,
-                                                           a_drives[m] ? 0 : 1)
-                                                 .approach_ratio);
+    const auto& gear_a = spec.members[build.solution.index(tm.gear_a)];
+    const auto& gear_b = spec.members[build.solution.index(tm.gear_b)];
+    model.spec_mesh_approach_ratio.push_back(
+        standard_mesh(gear_a.teeth, gear_b.teeth, gear_a.module, build.input.pressure_angle,
+                      build.a_drives[m] ? 0 : 1)
+            .approach_ratio);
   }
-  const std::vector<double> base_phase = [&]
+}
+
+// Sun–planet and ring–planet meshes of one planet (Parker & Lin 2004; README): with standard
+// teeth the ring mesh runs ε_f,r − ε_f,s + (z_p + 1)/2 base pitches after the sun mesh; other
+// meshes start at 0. Per Train mesh [base pitches].
+std::vector<double> ring_mesh_phases(const TrainBuild& build)
+{
+  const kinematics::GearTrainSpec& spec = build.spec;
+  const kinematics::TrainSolution& solution = build.solution;
+  std::vector<double> phase(spec.meshes.size(), 0.);
+  for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
-    // Sun–planet and ring–planet meshes of one planet (Parker & Lin 2004; README): with
-    // standard teeth the ring mesh runs ε_f,r − ε_f,s + (z_p + 1)/2 base pitches after the
-    // sun mesh; other meshes start at 0.
-    std::vector<double> phase(spec.meshes.size(), 0.);
-    for (std::size_t m = 0; m < spec.meshes.size(); ++m)
+    const kinematics::TrainMesh& tm = spec.meshes[m];
+    for (const std::string& planet_name : {tm.gear_a, tm.gear_b})
     {
-      const kinematics::TrainMesh& tm = spec.meshes[m];
-      for (const std::string& planet_name : {tm.gear_a, tm.gear_b})
+      const auto& planet = spec.members[solution.index(planet_name)];
+      const auto& central =
+          spec.members[solution.index(planet_name == tm.gear_a ? tm.gear_b : tm.gear_a)];
+      if (planet.carrier != tm.frame || central.carrier == tm.frame || central.teeth > 0)
+        continue;
+      for (std::size_t s = 0; s < spec.meshes.size(); ++s)
       {
-        const auto& planet = spec.members[solution.index(planet_name)];
-        const auto& central =
-            spec.members[solution.index(planet_name == tm.gear_a ? tm.gear_b : tm.gear_a)];
-        if (planet.carrier != tm.frame || central.carrier == tm.frame || central.teeth > 0)
+        const kinematics::TrainMesh& ts = spec.meshes[s];
+        const bool has_planet = ts.gear_a == planet_name || ts.gear_b == planet_name;
+        const std::string other = ts.gear_a == planet_name ? ts.gear_b : ts.gear_a;
+        if (s == m || ts.frame != tm.frame || !has_planet ||
+            spec.members[solution.index(other)].teeth < 0)
           continue;
-        for (std::size_t s = 0; s < spec.meshes.size(); ++s)
-        {
-          const kinematics::TrainMesh& ts = spec.meshes[s];
-          const bool has_planet = ts.gear_a == planet_name || ts.gear_b == planet_name;
-          const std::string other = ts.gear_a == planet_name ? ts.gear_b : ts.gear_a;
-          if (s == m || ts.frame != tm.frame || !has_planet ||
-              spec.members[solution.index(other)].teeth < 0)
-            continue;
-          phase[m] = fraction(model.spec_mesh_approach_ratio[m] -
-                              model.spec_mesh_approach_ratio[s] + 0.5 * (planet.teeth + 1));
-          break;
-        }
+        phase[m] = fraction(build.model.spec_mesh_approach_ratio[m] -
+                            build.model.spec_mesh_approach_ratio[s] + 0.5 * (planet.teeth + 1));
+        break;
       }
     }
-    return phase;
-  }();
-  std::map<std::string, std::vector<double>> angles;
-  for (std::size_t i = 0; i < train.meshes.size(); ++i)
+  }
+  return phase;
+}
+
+// Friction arms (torsional_model.h) of model mesh i: each gear's arm with the sign of its
+// (oriented) coefficient, the frame takes minus their sum.
+void set_friction_arms(const TrainBuild& build, std::size_t i, Mesh& mesh)
+{
+  const std::size_t m = build.model.spec_mesh[i];
+  const kinematics::TrainMesh& tm = build.spec.meshes[m];
+  const double orientation = build.forces[i] < 0. ? -1. : 1.;
+  const bool a_drives = build.a_drives[m] == 1;
+  const double arm_a = a_drives ? mesh.driver_friction_arm : mesh.driven_friction_arm;
+  const double arm_b = a_drives ? mesh.driven_friction_arm : mesh.driver_friction_arm;
+  const std::size_t a = build.solution.index(tm.gear_a), b = build.solution.index(tm.gear_b);
+  const double pressure_angle = build.input.pressure_angle;
+  const double signed_a =
+      (orientation * signed_base_radius(build.spec.members[a], pressure_angle) > 0. ? 1. : -1.) *
+      arm_a;
+  const double signed_b =
+      (orientation * signed_base_radius(build.spec.members[b], pressure_angle) > 0. ? 1. : -1.) *
+      arm_b;
+  const std::array<double, 3> arms = {signed_a, signed_b, -(signed_a + signed_b)};
+  for (MeshTerm& term : mesh.terms)
   {
-    Mesh& mesh = train.meshes[i];
+    term.friction_arm = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      if (build.mesh_dofs[i][k] == static_cast<int>(term.dof))
+        term.friction_arm += arms[k];
+  }
+}
+
+// Approach ratio, friction arms and initial position of every model mesh. Copy phase: planet
+// copy at angle ψ on its carrier, central gear g turning at ω_g − ω_c in the frame:
+// x = x_0 − sign(ω_g − ω_c)·|z_g|·ψ/2π (docs/references.md §1's placement rule).
+void set_arms_and_phases(TrainBuild& build)
+{
+  const kinematics::GearTrainSpec& spec = build.spec;
+  const kinematics::TrainSolution& solution = build.solution;
+  TrainModel& model = build.model;
+  const std::vector<double> base_phase = ring_mesh_phases(build);
+  std::map<std::string, std::vector<double>> angles;
+  for (std::size_t i = 0; i < model.train.meshes.size(); ++i)
+  {
+    Mesh& mesh = model.train.meshes[i];
     const std::size_t m = model.spec_mesh[i];
     const kinematics::TrainMesh& tm = spec.meshes[m];
     mesh.approach_ratio = model.spec_mesh_approach_ratio[m];
-    // Friction arms (torsional_model.h): each gear's arm with the sign of its (oriented)
-    // coefficient, the frame takes minus their sum.
-    const double orientation = forces[i] < 0. ? -1. : 1.;
-    const double arm_a = (a_drives[m] == 1 ? mesh.driver_friction_arm : mesh.driven_friction_arm);
-    const double arm_b = (a_drives[m] == 1 ? mesh.driven_friction_arm : mesh.driver_friction_arm);
-    const std::size_t a = solution.index(tm.gear_a), b = solution.index(tm.gear_b);
-    const double signed_a =
-        (orientation * signed_base_radius(spec.members[a], input.pressure_angle) > 0. ? 1. : -1.) *
-        arm_a;
-    const double signed_b =
-        (orientation * signed_base_radius(spec.members[b], input.pressure_angle) > 0. ? 1. : -1.) *
-        arm_b;
-    const std::array<double, 3> arms = {signed_a, signed_b, -(signed_a + signed_b)};
-    for (MeshTerm& term : mesh.terms)
-    {
-      term.friction_arm = 0.;
-      for (unsigned int k = 0; k < 3; ++k)
-        if (mesh_dofs[i][k] == static_cast<int>(term.dof))
-          term.friction_arm += arms[k];
-    }
-
-    // Copy phase: planet copy at angle ψ on its carrier, central gear g turning at ω_g − ω_c
-    // in the frame: x = x_0 − sign(ω_g − ω_c)·|z_g|·ψ/2π (docs/references.md §1's placement rule).
+    set_friction_arms(build, i, mesh);
     double phase = base_phase[m];
     for (const std::string& planet_name : {tm.gear_a, tm.gear_b})
     {
@@ -583,9 +645,20 @@ TrainModel build_train_model(const TrainDynamicsInput& input)
       const double relative = solution.speed(central_name) - solution.speed(tm.frame);
       phase -= (relative >= 0. ? 1. : -1.) * std::abs(central.teeth) * psi_copy / (2. * M_PI);
     }
-    mesh.initial_position = fraction(input.initial_position + phase);
+    mesh.initial_position = fraction(build.input.initial_position + phase);
   }
-  return model;
+}
+} // namespace
+
+TrainModel build_train_model(const TrainDynamicsInput& input)
+{
+  TrainBuild build(input);
+  add_gears(build);
+  add_meshes(build);
+  orient_meshes(build);
+  add_approach_ratios(build);
+  set_arms_and_phases(build);
+  return std::move(build.model);
 }
 
 Eigen::MatrixXd modal_energy_distribution(const TorsionalModel& model,

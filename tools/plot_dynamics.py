@@ -13,42 +13,9 @@
 
 CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
 """
-import csv
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = [h.strip() for h in rows[0]]
-    columns = {h: [] for h in header}
-    for row in rows[1:]:
-        for h, v in zip(header, row):
-            try:
-                columns[h].append(float(v))
-            except ValueError:
-                columns[h].append(float("nan"))
-    return header, columns
-
-
-def shade_window(ax, window):
-    start, end = (float(x) for x in window.split(","))
-    ax.axvspan(start, end, color="0.9", zorder=0, label="steady-state window")
-
-
-def finish(fig, ax, xlabel, ylabel, png, legend_at="best", legend_size=8):
-    """Labels, grid and legend of every chart of this script, then the PNG."""
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, lw=0.3)
-    ax.legend(loc=legend_at, fontsize=legend_size)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+from dynamics_charts import finish, plt, read, shade_window
 
 
 def envelope(t, values, period):

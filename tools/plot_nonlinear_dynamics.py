@@ -8,35 +8,12 @@
 
 CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
 """
-import csv
 import math
 import sys
 
 import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-
-def read(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = [h.strip() for h in rows[0]]
-    columns = {h: [] for h in header}
-    for row in rows[1:]:
-        for h, v in zip(header, row):
-            try:
-                columns[h].append(float(v))
-            except ValueError:
-                columns[h].append(float("nan"))
-    return header, columns
-
-
-def column(header, columns, name):
-    for h in header:
-        if h == name or h.startswith(name + " ["):
-            return columns[h]
-    raise SystemExit(f"column {name} missing")
+from dynamics_charts import column, finish, plt, read, shade_window
 
 
 def dte(path, window, png):
@@ -46,14 +23,8 @@ def dte(path, window, png):
     for h in header[1:]:
         if h.startswith("dte_") or h.startswith("te_"):
             ax.plot(t, c[h], lw=0.7, label=h, ls="-" if h.startswith("dte_") else "--")
-    start, end = (float(x) for x in window.split(","))
-    ax.axvspan(start, end, color="0.9", zorder=0, label="steady-state window")
-    ax.set_xlabel("time [s]")
-    ax.set_ylabel("transmission error along the line of action [µm]")
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    shade_window(ax, window)
+    finish(fig, ax, "time [s]", "transmission error along the line of action [µm]", png)
 
 
 def sweep(path, png):

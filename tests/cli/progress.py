@@ -10,6 +10,8 @@ usage: progress.py path/to/gearstiff "MPIEXEC"
 3. `MPIEXEC -np 2 stiffness --json`, a 4-position sweep: each rank reports the positions it
    solved ("[rank 0]" and "[rank 1]", each with "done here", elapsed and "left"), stdout is JSON.
 4. `contact --json` (the Hertz case): the set-up and each active-set iteration on stderr.
+5. `dynamics --json`, a 3-speed up-and-down sweep: one line per speed run ("speed sweep i/6",
+   the speed, elapsed and "left"), stdout is JSON; with --quiet stderr is empty.
 """
 import json
 import re
@@ -48,8 +50,18 @@ def main():
                     r"contact: load step 1/1, iteration \d+: \d+ closed, 0 changed"):
         if not re.search(pattern, contact.stderr):
             sys.exit(f"progress: contact printed no line like {pattern}:\n{contact.stderr}")
-    print("progress: stages, per-rank sweep lines, contact iterations, --quiet and --json stdout "
-          "as expected")
+    sweep_args = ["--set", "Speed sweep/points=3", "--set", "Speed sweep/direction=both"]
+    dynamics = run([gearstiff, "dynamics", "--json"] + sweep_args)
+    json.loads(dynamics.stdout)
+    for i in range(1, 7):
+        pattern = rf"dynamics: speed sweep {i}/6, [0-9.]+ rpm.*\({i} done here of ~6, .* s elapsed, ~.* s left\)"
+        if not re.search(pattern, dynamics.stderr):
+            sys.exit(f"progress: no dynamics sweep line {i}/6 on stderr:\n{dynamics.stderr}")
+    quiet = run([gearstiff, "dynamics", "--quiet"] + sweep_args)
+    if quiet.stderr.strip():
+        sys.exit(f"progress: dynamics --quiet printed on stderr:\n{quiet.stderr}")
+    print("progress: stages, per-rank sweep lines, contact iterations, dynamics sweep lines, "
+          "--quiet and --json stdout as expected")
 
 
 if __name__ == "__main__":
