@@ -2,6 +2,7 @@
 
 #include "app/kinematics_parameters.h"
 #include "app/parameter_patterns.h"
+#include "app/train_parameter_entries.h"
 #include "app/units.h"
 #include "dynamics/split_path_case.h"
 #include "dynamics/stiffness_file.h"
@@ -775,33 +776,6 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
                           std::abs(first.driven_base_radius - data.wheel_base_radius) < 1e-9;
 }
 
-// "name: v1 v2 ..., ..." with `count` non-negative finite numbers per name (`units` for the
-// message): suspensions (stiffness damping), face widths, bore diameters.
-std::vector<std::pair<std::string, std::vector<double>>>
-parse_named_numbers(const std::string& text, unsigned int count, const std::string& parameter,
-                    const std::string& units)
-{
-  std::vector<std::pair<std::string, std::vector<double>>> entries_read;
-  for (const std::string& entry : comma_entries(text))
-  {
-    const auto colon = entry.find(':');
-    std::istringstream values(colon == std::string::npos ? "" : entry.substr(colon + 1));
-    std::string name = colon == std::string::npos ? "" : entry.substr(0, colon);
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t") + 1);
-    std::vector<double> numbers(count);
-    bool good = !name.empty();
-    for (double& v : numbers)
-      good = good && (values >> v) && v >= 0. && std::isfinite(v);
-    std::string rest;
-    if (!good || (values >> rest))
-      throw InputError(parameter, "entry '" + entry + "' is not 'name: " + units +
-                                      "' with non-negative numbers");
-    entries_read.emplace_back(name, numbers);
-  }
-  return entries_read;
-}
-
 // The Train entries of the dynamics beyond the kinematics' description.
 void parse_train_extras(ParameterHandler& prm, dynamics::TrainDynamicsInput& input)
 {
@@ -1036,14 +1010,31 @@ DynamicsParameters parse_dynamics_parameters(ParameterHandler& prm)
 namespace gearstiff::app
 {
 // issue 30: the lateral model's view of a Train mesh (dynamics_parameters.h).
-TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio)
+TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio,
+                                    int teeth_a, int teeth_b, double module)
 {
   const std::string section = train_mesh_section(m);
   const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
   const double ratio = physics.file ? physics.file->pair.contact_ratio : contact_ratio;
-  return {physics.stiffness.mean_stiffness(ratio), physics.damping,
-          physics.stiffness.description() + ", mean " +
-              format_number(physics.stiffness.mean_stiffness(ratio) * 1e-6, 6) + " N/µm",
-          physics.stiffness, ratio};
+  TrainMeshMean mean{physics.stiffness.mean_stiffness(ratio),
+                     physics.damping,
+                     physics.stiffness.description() + ", mean " +
+                         format_number(physics.stiffness.mean_stiffness(ratio) * 1e-6, 6) + " N/µm",
+                     physics.stiffness,
+                     ratio,
+                     std::nullopt};
+  prm.enter_subsection("Simulation");
+  const bool nonlinear = prm.get("mesh model") == "nonlinear";
+  prm.leave_subsection();
+  if (nonlinear)
+    mean.nonlinear = build_nonlinear_mesh(
+        physics.nonlinear, section, static_cast<unsigned int>(std::abs(teeth_a)),
+        [&](const dynamics::StiffnessFile& file)
+        {
+          if (module > 0.)
+            dynamics::match_stiffness_file(file, teeth_a, teeth_b, module,
+                                           section + "/transmission error file");
+        });
+  return mean;
 }
 } // namespace gearstiff::app

@@ -77,7 +77,11 @@ struct TrainMeshMean
   std::string description;       // the stiffness source, for the report
   dynamics::MeshStiffness curve; // k(x) for the time response
   double contact_ratio = 0.;     // [-] ε_α of k(x)
+  // Simulation/mesh model = nonlinear: the mesh law of the section (teeth: the mesh's gears,
+  // signed, for the pitch deviation's order and the TE file's check when `module` > 0 [m]).
+  std::optional<dynamics::NonlinearMesh> nonlinear;
 };
 TrainMeshMean parse_train_mesh_mean(dealii::ParameterHandler& prm, unsigned int m,
-                                    double contact_ratio);
+                                    double contact_ratio, int teeth_a = 0, int teeth_b = 0,
+                                    double module = 0.);
 } // namespace gearstiff::app
