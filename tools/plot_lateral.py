@@ -78,15 +78,16 @@ def sweep(path, png):
             continue
         speed = [c["input_speed [rpm]"][i] for i in rows]
         tag = "up" if direction == 0 else "down"
-        axes[0].plot(speed, [c["kv_max [-]"][i] for i in rows], style, ms=3, label="K_v " + tag)
+        axes[0].plot(speed, [c["kv_max [-]"][i] for i in rows], style, ms=3, color="C0",
+                     label="K_v " + tag)
         bad = [i for i in rows if round(c["status [-]"][i]) != 0]
         axes[0].plot([c["input_speed [rpm]"][i] for i in bad], [c["kv_max [-]"][i] for i in bad],
                      "x", color="k")
-        for member in ("carrier", "ring", "sun"):
+        for j, member in enumerate(("carrier", "ring", "sun")):
             axes[1].plot(speed, [c["bearing_force_%s [N]" % member][i] for i in rows], style,
-                         ms=3, label="%s %s" % (member, tag))
+                         ms=3, color="C%d" % j, label="%s %s" % (member, tag))
             axes[2].plot(speed, [c["orbit_%s [µm]" % member][i] for i in rows], style, ms=3,
-                         label="%s %s" % (member, tag))
+                         color="C%d" % j, label="%s %s" % (member, tag))
     axes[0].set_ylabel("K_v max [-]")
     axes[1].set_ylabel("largest bearing force [N]")
     axes[0].set_title("Lateral stage: speed sweep")
