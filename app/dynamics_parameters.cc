@@ -1022,7 +1022,11 @@ TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, doubl
                          format_number(physics.stiffness.mean_stiffness(ratio) * 1e-6, 6) + " N/µm",
                      physics.stiffness,
                      ratio,
+                     std::nullopt,
                      std::nullopt};
+  if (physics.file && module > 0.)
+    mean.stiffness_driver = dynamics::match_stiffness_file(*physics.file, teeth_a, teeth_b, module,
+                                                           section + "/stiffness file");
   prm.enter_subsection("Simulation");
   const bool nonlinear = prm.get("mesh model") == "nonlinear";
   prm.leave_subsection();

@@ -262,9 +262,25 @@ void build_stage(const kinematics::GearTrainSpec& spec, const LateralEntries& e,
   read_planet_layout(e, planet, p.backlash, stage);
 }
 
+// Which gear drives in the carrier frame: the sun when its torque and its speed relative to the
+// carrier have one sign (T_s·(ω_s − ω_c) > 0). With the ideal torque ratios of the stage
+// (T_r = T_s·|z_r|/z_s, T_c = −(T_s + T_r)), T_s follows from the input torque.
+bool sun_drives(const kinematics::GearTrainSpec& spec, const kinematics::TrainSolution& solution,
+                const LateralParameters& p)
+{
+  const double ring_per_sun =
+      std::abs(double(member(spec, p.ring).teeth)) / member(spec, p.sun).teeth;
+  const double sun_per_input = p.load.input == dynamics::LateralMember::sun ? 1.
+                               : p.load.input == dynamics::LateralMember::ring
+                                   ? 1. / ring_per_sun
+                                   : -1. / (1. + ring_per_sun);
+  return sun_per_input * p.load.input_torque * (solution.speed(p.sun) - p.carrier_speed) > 0.;
+}
+
 // Meshes: the mean stiffness of Train mesh 1 and 2 along the lines of action.
 void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
-                 const kinematics::TrainMember& planet, double pressure_angle, LateralParameters& p)
+                 const kinematics::TrainMember& planet, double pressure_angle, bool drives,
+                 LateralParameters& p)
 {
   dynamics::LateralStage& stage = p.stage;
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)
@@ -281,8 +297,24 @@ void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
         parse_train_mesh_mean(prm, m, contact_ratio, member(spec, mesh.gear_a).teeth,
                               member(spec, mesh.gear_b).teeth, gear.module);
     const bool sun = other == p.sun;
-    (sun ? p.excitation.sun_nonlinear : p.excitation.ring_nonlinear) = mean.nonlinear;
-    (sun ? p.excitation.sun_mesh : p.excitation.ring_mesh) = mean.curve;
+    // The FE pinion drove in the table; where the other gear drives here the contact runs the
+    // path the other way: k(ε_α − x), and the TE likewise (the train model's rule).
+    const std::string driver = (sun == drives) ? other : planet.name;
+    const std::string fe_driver =
+        mean.stiffness_driver ? (*mean.stiffness_driver == 0 ? mesh.gear_a : mesh.gear_b) : driver;
+    TrainMeshMean law = mean;
+    if (fe_driver != driver)
+    {
+      law.curve = law.curve.reversed(law.contact_ratio);
+      if (law.nonlinear)
+        law.nonlinear->transmission_error =
+            law.nonlinear->transmission_error.reversed(law.contact_ratio);
+      p.notes.push_back("Train mesh " + std::to_string(m + 1) + ": " + driver +
+                        " drives, the FE table's pinion " + fe_driver +
+                        " drove: k(x) and TE reversed along the path");
+    }
+    (sun ? p.excitation.sun_nonlinear : p.excitation.ring_nonlinear) = law.nonlinear;
+    (sun ? p.excitation.sun_mesh : p.excitation.ring_mesh) = law.curve;
     (sun ? p.excitation.sun_contact_ratio : p.excitation.ring_contact_ratio) = mean.contact_ratio;
     (sun ? stage.sun_mesh_stiffness : stage.ring_mesh_stiffness) = mean.stiffness;
     (sun ? stage.sun_mesh_damping : stage.ring_mesh_damping) = mean.damping;
@@ -312,21 +344,6 @@ void read_loads(const kinematics::GearTrainSpec& spec, const kinematics::TrainSo
   p.input_speed = spec.inputs.front().second;
   p.load.input_torque = (p.input_speed >= 0. ? 1. : -1.) * input_torque;
   p.carrier_speed = solution.speed(p.carrier);
-}
-
-// Which gear drives in the carrier frame: the sun when its torque and its speed relative to the
-// carrier have one sign (T_s·(ω_s − ω_c) > 0). With the ideal torque ratios of the stage
-// (T_r = T_s·|z_r|/z_s, T_c = −(T_s + T_r)), T_s follows from the input torque.
-bool sun_drives(const kinematics::GearTrainSpec& spec, const kinematics::TrainSolution& solution,
-                const LateralParameters& p)
-{
-  const double ring_per_sun =
-      std::abs(double(member(spec, p.ring).teeth)) / member(spec, p.sun).teeth;
-  const double sun_per_input = p.load.input == dynamics::LateralMember::sun ? 1.
-                               : p.load.input == dynamics::LateralMember::ring
-                                   ? 1. / ring_per_sun
-                                   : -1. / (1. + ring_per_sun);
-  return sun_per_input * p.load.input_torque * (solution.speed(p.sun) - p.carrier_speed) > 0.;
 }
 
 // The ring mesh of a planet after its sun mesh (Parker & Lin 2004, dynamics/README.md): with
@@ -494,8 +511,8 @@ LateralParameters parse_lateral_parameters(ParameterHandler& prm)
   const LateralEntries entries = read_lateral_entries(prm, p);
   const kinematics::TrainMember& planet = find_stage_members(spec, p);
   build_stage(spec, entries, planet, p);
-  read_meshes(prm, spec, planet, entries.pressure_angle, p);
   read_loads(spec, solution, train.input_torque, p);
+  read_meshes(prm, spec, planet, entries.pressure_angle, sun_drives(spec, solution, p), p);
   phase_meshes(spec, solution, entries.pressure_angle, p);
   read_run_settings(prm, p);
   read_sweep_settings(prm, p);
