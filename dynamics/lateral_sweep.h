@@ -18,7 +18,8 @@ namespace gearstiff::dynamics
 // Rigid-body mesh frequency and carrier speed at an input speed, and the phase rule of one
 // planet's ring mesh against its sun mesh (Parker & Lin 2004, dynamics/README.md): the ring mesh
 // runs ε_f,r − ε_f,s + (z_p + 1)/2 base pitches (mod 1) after the sun mesh, ε_f the approach
-// ratio of each mesh for the gear that drives in the carrier frame. [base pitches] in [0, 1).
+// ratio of each mesh for the gear that drives in the carrier frame (docs/references.md §7).
+// [base pitches] in [0, 1).
 double planet_ring_mesh_offset(int planet_teeth, double sun_approach_ratio,
                                double ring_approach_ratio);
 
