@@ -501,6 +501,13 @@ void run_contact(ParameterHandler& prm, CommandContext& context)
   problem.system().set_materials(materials, "Bodies/Names");
   add_supports(prm, mesh.names, problem);
   add_contact_pair(prm, mesh.names, problem);
+  // The active set of a large 3D mesh takes minutes: one line per iteration from rank 0.
+  problem.set_progress(
+      [&context](const std::string& line)
+      {
+        if (context.is_root())
+          context.progress("contact", line);
+      });
 
   context.pcout << "contact: " << (built_in ? "built-in Hertz case" : mesh.file) << ", " << dim
                 << "D, FE_Q(" << elasticity.degree << "), "

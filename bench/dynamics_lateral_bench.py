@@ -11,17 +11,14 @@ each (wall time reported by the command) and its ratio to the target. Run it hol
 lock on a shared machine.
 """
 import os
-import sys
 
-from gearstiff_bench import Bench
+from gearstiff_cli import median_value, root
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
-bench = Bench(binary, os.path.join(root, "tests", "dynamics", "cli", "lateral_lin_parker.prm"))
+prm = os.path.join(root, "tests", "dynamics", "cli", "lateral_lin_parker.prm")
 
 
 def median_of_five(key, *settings):
-    return bench.median(5, key, *settings)
+    return median_value(5, key, "dynamics", prm, *settings)
 
 
 short = ["Simulation/simulated time=0.0001", "Simulation/time step=1", "Train/carrier radii=c: 120"]
@@ -40,6 +37,6 @@ sweep = ["Speed sweep/points=20", "Speed sweep/minimum speed=200", "Speed sweep/
          "Simulation/simulated time=0.001", "Train/bearing damping=s: 2000, r: 2000, c: 2000",
          "Train mesh 1/damping=1000", "Train mesh 2/damping=1000",
          "Train mesh 1/stiffness source=cai", "Train mesh 2/stiffness source=cai"]
-s_time, values = bench.median(3, "lateral_sweep_time", *sweep)
+seconds, values = median_value(3, "lateral_sweep_time", "dynamics", prm, *sweep)
 print(f"sweep of 40 runs ({values['lateral_sweep_steps']['value']:.0f} RK4 steps) of the 4-planet "
-      f"stage, nonlinear meshes: {s_time:.2f} s (median of 3, no target)")
+      f"stage, nonlinear meshes: {seconds:.2f} s (median of 3, no target)")

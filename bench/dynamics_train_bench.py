@@ -9,17 +9,14 @@ the median of three runs of each (processor time of the integration / of the swe
 ratio to the target. Run it holding the build lock on a shared machine.
 """
 import os
-import sys
 
-from gearstiff_bench import Bench
+from gearstiff_cli import median_value, root
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
-bench = Bench(binary, os.path.join(root, "bench", "dynamics_biplanetary.prm"))
+prm = os.path.join(root, "bench", "dynamics_biplanetary.prm")
 
 
 def median_of_three(key, *settings):
-    return bench.median(3, key, *settings)
+    return median_value(3, key, "dynamics", prm, *settings)
 
 
 # 200 000 steps at 1 µs (below the RK4 limit printed with it); K_v over the last 10 ms only.

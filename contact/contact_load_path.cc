@@ -254,6 +254,10 @@ void ContactProblem<dim>::solve_load_step(unsigned int step,
         active_set.push_back(state_key(pair.memory[k], pair.nodes[k].tangents[0]));
       }
     result.history.push_back(record);
+    if (progress)
+      progress("load step " + std::to_string(step) + "/" + std::to_string(parameters.load_steps) +
+               ", iteration " + std::to_string(iteration) + ": " + std::to_string(record.n_closed) +
+               " closed, " + std::to_string(changes) + " changed");
     last_changes = changes;
     if (changes == 0 && friction_change <= parameters.friction_tolerance)
       return;

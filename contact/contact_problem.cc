@@ -2,6 +2,7 @@
 
 #include "contact/contact_problem_internal.h"
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,6 +86,15 @@ void ContactProblem<dim>::setup_system()
   result.n_dofs = dof_handler.n_dofs();
   result.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   result.setup_time = timer.wall_time();
+  if (progress)
+  {
+    std::size_t slave_nodes = 0;
+    for (const auto& pair : pairs)
+      slave_nodes += pair.nodes.size();
+    progress("set-up done: " + std::to_string(result.n_dofs) + " DoFs, " +
+             std::to_string(slave_nodes) + " slave nodes, " + format_number(result.setup_time, 3) +
+             " s");
+  }
 }
 
 template <int dim>

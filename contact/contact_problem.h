@@ -40,6 +40,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -217,6 +218,9 @@ public:
   std::vector<std::string> output_results(const std::string& directory,
                                           const std::string& base) const;
   const ContactResults<dim>& run();
+  // Progress of long solves: called on every rank (the caller decides which one prints) with one
+  // line after the set-up and after each active-set iteration; empty (the default): silent.
+  void set_progress(std::function<void(const std::string&)> report) { progress = report; }
 
   const ContactResults<dim>& results() const { return result; }
   const dealii::Vector<double>& solution() const { return displacement; }
@@ -344,6 +348,7 @@ private:
   // force (3D: slip directions converge as a fixed point with the bounds).
   double direction_change = 0.;
   ContactResults<dim> result;
+  std::function<void(const std::string&)> progress;
   std::vector<std::vector<NodeState>> cold_start; // [pair][node], the initial states
   bool warm_started = false;                      // start_from() set the states
   std::unique_ptr<Condensed> condensed;           // owned; built by the first Schur iteration

@@ -1,6 +1,7 @@
 #include "fem/mesh.h"
 
 #include "errors/errors.h"
+#include "fem/cell_shape.h"
 #include "fem/parallel.h"
 
 #include <cmath>
@@ -81,6 +82,28 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
       if (!std::isfinite(serial.get_vertices()[v][c]))
         throw InputError(parameter, "'" + file_name + "': a node (vertex " + std::to_string(v) +
                                         ") has a coordinate that is not a finite number");
+  // deal.II accepts a cell of zero area (collapsed or bow-tie corners); its assembly then fails
+  // the factorization as a "solver failure" for what is a fault of the file.
+  for (const auto& cell : serial.active_cell_iterators())
+  {
+    if (!cell->reference_cell().is_hyper_cube())
+      continue; // the quadrilateral/hexahedral check only
+    std::vector<Eigen::Vector3d> corners;
+    for (const unsigned int v : dim == 2 ? std::vector<unsigned int>{0, 1, 3, 2}
+                                         : std::vector<unsigned int>{0, 1, 3, 2, 4, 5, 7, 6})
+    {
+      Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] = cell->vertex(v)[c];
+      corners.push_back(x);
+    }
+    if (!corners_span_a_cell<dim>(corners))
+      throw InputError(parameter, "'" + file_name + "': cell " +
+                                      std::to_string(cell->active_cell_index()) +
+                                      " (physical tag " + std::to_string(cell->material_id()) +
+                                      ") is degenerate or twisted (its corners do not span a "
+                                      "cell of positive size)");
+  }
   GridTools::scale(scale, serial);
   join_bodies<dim>({&serial}, tria);
   return read_physical_names(file_name, dim);

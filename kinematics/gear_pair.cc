@@ -320,6 +320,40 @@ void check_tips_and_bores(const GearPairSpec& spec, const SignedPair& p)
   }
 }
 
+// Transverse tooth thickness at the reference circle [m] (ISO 21771).
+double reference_tooth_thickness(const GearSpec& g, const SignedPair& p)
+{
+  return p.m_t * (pi / 2. + 2. * g.profile_shift * std::tan(p.alpha_n));
+}
+
+// Normal tooth thickness at the tip circle [m]; a gear of its own, before any pair check, so
+// that a shift or tip that makes the tooth pointed is named as that, not as the interference
+// the same pointed tooth also causes.
+double normal_tip_thickness(const GearSpec& g, const SignedPair& p, bool wheel)
+{
+  const double d = wheel ? p.d2 : p.d1;
+  const double db = wheel ? p.db2 : p.db1;
+  const double da = wheel ? p.da2 : p.da1;
+  const double s_at = da * (reference_tooth_thickness(g, p) / d + involute(p.alpha_t) -
+                            involute(std::acos(db / da)));
+  const double beta_a = std::atan(std::tan(p.beta) * da / d);
+  return s_at * std::cos(beta_a);
+}
+
+void check_tip_thickness(const GearPairSpec& spec, const SignedPair& p)
+{
+  for (const bool wheel : {false, true})
+  {
+    const GearSpec& g = wheel ? spec.wheel : spec.pinion;
+    const double tip_thickness = normal_tip_thickness(g, p, wheel);
+    if (!(tip_thickness > 0.))
+      throw InputError(
+          gear_parameter_name(wheel, g.tip_diameter > 0. ? "tip diameter" : "profile shift"),
+          "the tooth comes to a point before the tip circle (tip thickness " +
+              millimetres(tip_thickness) + ")");
+  }
+}
+
 // Line of action from T1 towards the pitch point C (module header): T2, C, A
 // and E.
 void set_line_of_action(const SignedPair& p, GearPairGeometry& result)
@@ -485,17 +519,9 @@ void set_gear_geometry(const GearPairSpec& spec, const SignedPair& p,
     const double active_roll =
         wheel ? wheel_roll_length(p, result, result.contact_end) : result.contact_start;
     out.active_profile_start = 2. * std::sqrt(0.25 * db * db + active_roll * active_roll);
-    out.tooth_thickness = p.m_t * (pi / 2. + 2. * g.profile_shift * std::tan(p.alpha_n));
-    const double alpha_at = std::acos(db / da);
-    out.tip_pressure_angle = alpha_at;
-    const double s_at = da * (out.tooth_thickness / d + involute(p.alpha_t) - involute(alpha_at));
-    const double beta_a = std::atan(std::tan(p.beta) * da / d);
-    out.tip_thickness = s_at * std::cos(beta_a);
-    if (!(out.tip_thickness > 0.))
-      throw InputError(
-          gear_parameter_name(wheel, g.tip_diameter > 0. ? "tip diameter" : "profile shift"),
-          "the tooth comes to a point before the tip circle (tip thickness " +
-              millimetres(out.tip_thickness) + ")");
+    out.tooth_thickness = reference_tooth_thickness(g, p);
+    out.tip_pressure_angle = std::acos(db / da);
+    out.tip_thickness = normal_tip_thickness(g, p, wheel);
     // A tip thinner than 0.2·m_n is commonly held too fragile (hardened:
     // 0.4·m_n).
     if (out.tip_thickness < 0.2 * p.m_n)
@@ -551,6 +577,7 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
   result.spec.pinion.tip_diameter = std::abs(p.da1);
   result.spec.wheel.tip_diameter = std::abs(p.da2);
   check_tips_and_bores(spec, p);
+  check_tip_thickness(spec, p);
   set_line_of_action(p, result);
   const std::pair<double, double> form_rolls = check_undercut_and_interference(spec, p, result);
   check_tip_clearances(spec, p, result);

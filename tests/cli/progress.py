@@ -9,6 +9,7 @@ usage: progress.py path/to/gearstiff "MPIEXEC"
 2. `stiffness --quiet`: stderr is empty.
 3. `MPIEXEC -np 2 stiffness --json`, a 4-position sweep: each rank reports the positions it
    solved ("[rank 0]" and "[rank 1]", each with "done here", elapsed and "left"), stdout is JSON.
+4. `contact --json` (the Hertz case): the set-up and each active-set iteration on stderr.
 """
 import json
 import re
@@ -41,7 +42,14 @@ def main():
         pattern = rf"stiffness: position \d/4 .*done here of ~2, .* s elapsed, ~.* s left\) \[rank {rank}\]"
         if not re.search(pattern, sweep.stderr):
             sys.exit(f"progress: rank {rank} reported no position:\n{sweep.stderr}")
-    print("progress: stages, per-rank sweep lines, --quiet and --json stdout as expected")
+    contact = run([gearstiff, "contact", "--json"])
+    json.loads(contact.stdout)
+    for pattern in (r"contact: set-up done: \d+ DoFs, \d+ slave nodes",
+                    r"contact: load step 1/1, iteration \d+: \d+ closed, 0 changed"):
+        if not re.search(pattern, contact.stderr):
+            sys.exit(f"progress: contact printed no line like {pattern}:\n{contact.stderr}")
+    print("progress: stages, per-rank sweep lines, contact iterations, --quiet and --json stdout "
+          "as expected")
 
 
 if __name__ == "__main__":

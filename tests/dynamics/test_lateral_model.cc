@@ -118,15 +118,9 @@ ClassCount count_classes(const LateralModes& modes, int rotational_multiplicity,
 LateralStage standard_stage(unsigned int planets, double bearing, double pin)
 {
   const double alpha = 20. * M_PI / 180., module = 2e-3;
+  // Undamped, rotation free, no torsional support.
   auto central = [&](double mass, double inertia, double radius)
-  {
-    LateralCentralMember m;
-    m.mass = mass;
-    m.moment_of_inertia = inertia;
-    m.radius = radius;
-    m.bearing_stiffness = bearing;
-    return m;
-  };
+  { return LateralCentralMember{mass, inertia, radius, bearing, 0., false, 0., 0.}; };
   LateralStage stage;
   stage.sun = central(0.5, 2e-4, 0.5 * module * 20 * std::cos(alpha));
   stage.ring = central(2.0, 1e-2, 0.5 * module * 40 * std::cos(alpha));
