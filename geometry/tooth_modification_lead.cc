@@ -1,11 +1,11 @@
 #include "geometry/tooth_modification_lead.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace gearstiff::geometry
 {
@@ -13,10 +13,7 @@ namespace
 {
 std::string um(double length)
 {
-  std::ostringstream text;
-  text.precision(4);
-  text << length * 1e6 << " µm";
-  return text.str();
+  return format_number(length * 1e6, 4) + " µm";
 }
 
 // inv(α_r) = tan α_r − α_r with cos α_r = r_b/r; 0 inside the base circle (the involute starts
