@@ -12,6 +12,7 @@
 // Files with -o: the sweep table (CSV), k(x) for the dynamics command (stiffness_table.prm),
 // the k(θ) chart (PNG), VTU of every position with "Stiffness/write vtu=true".
 #include "app/command.h"
+#include "app/face_load_report.h"
 #include "app/stiffness_parameters.h"
 #include "app/units.h"
 #include "errors/errors.h"
@@ -164,6 +165,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100.,
                      "%", "k against ISO 6336-1 c'·b");
     report_stiffness_position(report, r, "", mode_name(p.mode));
+    report_face_load(context, {r});
     context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
                   << " s (" << r.n_dofs << " DoFs)" << std::endl;
     return;
@@ -171,6 +173,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
   add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
+  report_face_load(context, sweep.positions);
   report_micro_geometry(p, sweep, context);
   add_pair_identity(report, pair);
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;

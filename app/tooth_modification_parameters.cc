@@ -38,7 +38,8 @@ const Entry entries[] = {
     {"lead crowning", "0", "C_β over the face width [µm] (3D only)"},
     {"lead slope", "0", "f_Hβ over the face width [µm] (3D only)"},
     {"end relief", "0", "C_I = C_II at both ends of the face [µm] (3D only)"},
-    {"end relief length", "0", "length of the end relief from each end [mm] (3D only)"},
+    {"end relief length", "0",
+     "L_I, length of the end relief from each end [mm], in (0, half the face width] (3D only)"},
     {"modified flanks", "both",
      "loaded: the modifications act on the loaded flank only; both: on both flanks"}};
 
@@ -96,6 +97,23 @@ std::vector<std::string> split(const std::string& text, char separator)
     parts.push_back(trim(part));
   return parts;
 }
+// The lead modifications of one gear (3D; geometry/tooth_modification_lead.h), in m.
+geometry::LeadModification parse_lead(const ModificationText& text, bool wheel,
+                                      geometry::ModifiedFlanks flanks)
+{
+  geometry::LeadModification lead;
+  lead.crowning = number(text, "lead crowning", wheel) * 1e-6;
+  lead.slope = number(text, "lead slope", wheel) * 1e-6;
+  lead.end_relief = number(text, "end relief", wheel) * 1e-6;
+  lead.end_relief_length = number(text, "end relief length", wheel) * mm;
+  lead.flanks = flanks;
+  for (const auto& [amount, name] :
+       {std::pair{lead.crowning, "lead crowning"}, std::pair{lead.end_relief, "end relief"},
+        std::pair{lead.end_relief_length, "end relief length"}})
+    if (amount < 0.)
+      throw InputError(gear_path(wheel, name), "must be 0 or positive");
+  return lead;
+}
 } // namespace
 
 void declare_tooth_modification_parameters(ParameterHandler& prm)
@@ -134,12 +152,11 @@ geometry::GearModifications parse_gear_modifications(const ModificationText& tex
   const geometry::ModifiedFlanks flanks = geometry::parse_modified_flanks(
       text.at("modified flanks"), gear_path(wheel, "modified flanks"));
   for (const char* name : lead_entries)
-    if (number(text, name, wheel) != 0.)
-      throw InputError(gear_path(wheel, name),
-                       dimension == 2 ? "a lead modification needs the 3D model (Mesh/dimension "
-                                        "= 3): a 2D model has no face width to vary over"
-                                      : "lead modifications are not implemented yet (only the "
-                                        "profile modifications are)");
+    if (number(text, name, wheel) != 0. && dimension == 2)
+      throw InputError(gear_path(wheel, name), "a lead modification needs the 3D model (Mesh/"
+                                               "dimension = 3): a 2D model has no face width to "
+                                               "vary over");
+  modifications.lead = parse_lead(text, wheel, flanks);
   for (const auto& [kind, name] :
        {std::pair{ModificationKind::tip_relief, "tip relief"},
         std::pair{ModificationKind::root_relief, "root relief"},

@@ -27,7 +27,7 @@ PairModificationText read_tooth_modification_text(dealii::ParameterHandler& prm)
 
 // The modification list of one gear (`wheel` names the parameters "Gear pair/Wheel/...");
 // InputError for a malformed or negative value and for lead modifications when `dimension` is 2
-// (3D lead modifications are not implemented yet: InputError too).
+// (in 3D they go to GearModifications::lead).
 geometry::GearModifications parse_gear_modifications(const ModificationText& text, bool wheel,
                                                      unsigned int dimension);
 

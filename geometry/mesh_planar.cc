@@ -384,8 +384,11 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
                    reason + ": use a larger contact size, a smaller fine radius or a smaller load");
 }
 
-MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& grading,
-                                 const MeshOptions& options)
+namespace
+{
+// Everything mesh_planar_model refuses before gmsh starts (InputError naming the parameter).
+void check_mesh_input(const PlanarModel& model, const SizeGrading& grading,
+                      const MeshOptions& options)
 {
   if (model.bodies.empty())
     throw InputError("scene", "has no bodies to mesh");
@@ -413,71 +416,86 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     for (const auto& hole : body.holes)
       check_loop(hole, body.name);
   }
-
   check_mesh_estimate(model, grading, options);
+}
 
-  MeshStatistics statistics;
-  GmshSession session;
-
-  auto start = Clock::now();
+// The gmsh entities of the model and their ids.
+struct GmshEntities
+{
   std::map<int, std::vector<int>> curves_by_id;
-  std::vector<std::pair<int, int>> curve_ids; // (curve tag, boundary id), every curve
-  std::vector<std::pair<int, int>> surfaces;  // (surface tag, material id)
+  std::vector<std::pair<int, int>> curve_ids;             // (curve tag, boundary id), every curve
+  std::vector<std::pair<int, int>> surfaces;              // (surface tag, material id)
+  std::vector<std::pair<int, int>> volumes;               // (volume tag, material id), 3D
+  std::map<int, std::vector<int>> lateral_surfaces_by_id; // boundary id -> surfaces, 3D
+  std::vector<int> side_faces;                            // z = 0 and z = face width, 3D
+  std::vector<int> lateral_surfaces;                      // 3D
+};
+
+// 3D: extrude each surface; gmsh returns, per surface, the top surface, the volume and the
+// lateral surfaces.
+void extrude_surfaces(const MeshOptions& options, GmshEntities& entities)
+{
+  for (const auto& [surface, material_id] : entities.surfaces)
+  {
+    gmsh::vectorpair extruded;
+    gmsh::model::geo::extrude({{2, surface}}, 0., 0., options.face_width, extruded,
+                              {static_cast<int>(options.layers)}, {}, true);
+    if (extruded.size() < 3 || extruded[1].first != 3)
+      throw SolverFailure("gmsh extrusion",
+                          "unexpected result for surface " + std::to_string(surface));
+    entities.side_faces.push_back(surface);
+    entities.side_faces.push_back(extruded[0].second);
+    entities.volumes.emplace_back(extruded[1].second, material_id);
+    for (std::size_t i = 2; i < extruded.size(); ++i)
+      entities.lateral_surfaces.push_back(extruded[i].second);
+  }
+  if (entities.lateral_surfaces.size() != entities.curve_ids.size())
+    throw SolverFailure("gmsh extrusion", "lateral surfaces do not match the curves");
+}
+
+// The order of the lateral surfaces follows gmsh's own walk of the curve loops, which reverses a
+// hole's curves (harmless for a bore of one id, wrong for a ring whose teeth line its hole), so
+// each lateral surface takes the id of the base curve it was swept from (its boundary).
+void label_lateral_surfaces(GmshEntities& entities)
+{
+  const std::map<int, int> id_of_curve(entities.curve_ids.begin(), entities.curve_ids.end());
+  for (const int lateral : entities.lateral_surfaces)
+  {
+    gmsh::vectorpair edges;
+    gmsh::model::getBoundary({{2, lateral}}, edges, false, false, false);
+    std::optional<int> id;
+    for (const auto& [edge_dim, edge] : edges)
+      if (const auto found = id_of_curve.find(std::abs(edge)); found != id_of_curve.end())
+        id = found->second;
+    if (!id)
+      throw SolverFailure("gmsh extrusion",
+                          "lateral surface " + std::to_string(lateral) + " has no base curve");
+    if (*id != 0)
+      entities.lateral_surfaces_by_id[*id].push_back(lateral);
+  }
+}
+
+GmshEntities build_geometry(const PlanarModel& model, const MeshOptions& options)
+{
+  GmshEntities entities;
   for (const auto& body : model.bodies)
   {
-    std::vector<int> loops{add_loop(body.outer, true, curves_by_id, curve_ids)};
+    std::vector<int> loops{add_loop(body.outer, true, entities.curves_by_id, entities.curve_ids)};
     for (const auto& hole : body.holes)
-      loops.push_back(add_loop(hole, false, curves_by_id, curve_ids));
-    surfaces.emplace_back(gmsh::model::geo::addPlaneSurface(loops), body.material_id);
+      loops.push_back(add_loop(hole, false, entities.curves_by_id, entities.curve_ids));
+    entities.surfaces.emplace_back(gmsh::model::geo::addPlaneSurface(loops), body.material_id);
   }
-
-  // 3D: extrude each surface; gmsh returns, per surface, the top surface, the volume and the
-  // lateral surfaces. Their order follows gmsh's own walk of the curve loops, which reverses a
-  // hole's curves (harmless for a bore of one id, wrong for a ring whose teeth line its hole),
-  // so each lateral surface takes the id of the base curve it was swept from (its boundary).
-  std::vector<std::pair<int, int>> volumes;               // (volume tag, material id)
-  std::map<int, std::vector<int>> lateral_surfaces_by_id; // boundary id -> surfaces
-  std::vector<int> side_faces;                            // z = 0 and z = face width
-  std::vector<int> lateral_surfaces;
   if (options.dimension == 3)
-  {
-    for (const auto& [surface, material_id] : surfaces)
-    {
-      gmsh::vectorpair extruded;
-      gmsh::model::geo::extrude({{2, surface}}, 0., 0., options.face_width, extruded,
-                                {static_cast<int>(options.layers)}, {}, true);
-      if (extruded.size() < 3 || extruded[1].first != 3)
-        throw SolverFailure("gmsh extrusion",
-                            "unexpected result for surface " + std::to_string(surface));
-      side_faces.push_back(surface);
-      side_faces.push_back(extruded[0].second);
-      volumes.emplace_back(extruded[1].second, material_id);
-      for (std::size_t i = 2; i < extruded.size(); ++i)
-        lateral_surfaces.push_back(extruded[i].second);
-    }
-    if (lateral_surfaces.size() != curve_ids.size())
-      throw SolverFailure("gmsh extrusion", "lateral surfaces do not match the curves");
-  }
+    extrude_surfaces(options, entities);
   gmsh::model::geo::synchronize();
   if (options.dimension == 3)
-  {
-    const std::map<int, int> id_of_curve(curve_ids.begin(), curve_ids.end());
-    for (const int lateral : lateral_surfaces)
-    {
-      gmsh::vectorpair edges;
-      gmsh::model::getBoundary({{2, lateral}}, edges, false, false, false);
-      std::optional<int> id;
-      for (const auto& [edge_dim, edge] : edges)
-        if (const auto found = id_of_curve.find(std::abs(edge)); found != id_of_curve.end())
-          id = found->second;
-      if (!id)
-        throw SolverFailure("gmsh extrusion",
-                            "lateral surface " + std::to_string(lateral) + " has no base curve");
-      if (*id != 0)
-        lateral_surfaces_by_id[*id].push_back(lateral);
-    }
-  }
+    label_lateral_surfaces(entities);
+  return entities;
+}
 
+void add_physical_groups(const PlanarModel& model, const MeshOptions& options,
+                         GmshEntities& entities)
+{
   const auto name_of_boundary = [&](const int id)
   {
     const auto found = model.boundary_names.find(id);
@@ -485,14 +503,14 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   };
   // Bodies with the same material id (e.g. all rollers of a cycloid drive) share one group,
   // named after the first of them.
-  const auto add_body_groups = [&](const int dim, const std::vector<std::pair<int, int>>& entities)
+  const auto add_body_groups = [&](const int dim, const std::vector<std::pair<int, int>>& bodies)
   {
     std::map<int, std::vector<int>> entities_by_id;
     std::map<int, std::string> names;
-    for (std::size_t b = 0; b < entities.size(); ++b)
+    for (std::size_t b = 0; b < bodies.size(); ++b)
     {
-      entities_by_id[entities[b].second].push_back(entities[b].first);
-      names.emplace(entities[b].second, model.bodies[b].name);
+      entities_by_id[bodies[b].second].push_back(bodies[b].first);
+      names.emplace(bodies[b].second, model.bodies[b].name);
     }
     for (const auto& [id, tags] : entities_by_id)
     {
@@ -500,35 +518,25 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
       gmsh::model::setPhysicalName(dim, id, names[id]);
     }
   };
-  if (options.dimension == 2)
+  const bool planar = options.dimension == 2;
+  add_body_groups(planar ? 2 : 3, planar ? entities.surfaces : entities.volumes);
+  if (!planar && options.side_face_boundary_id != 0)
   {
-    add_body_groups(2, surfaces);
-    for (const auto& [id, curves] : curves_by_id)
-    {
-      gmsh::model::addPhysicalGroup(1, curves, id);
-      gmsh::model::setPhysicalName(1, id, name_of_boundary(id));
-    }
+    if (entities.lateral_surfaces_by_id.count(options.side_face_boundary_id))
+      throw InputError("side face boundary id", "is already used by a boundary curve");
+    entities.lateral_surfaces_by_id[options.side_face_boundary_id] = entities.side_faces;
   }
-  else
+  for (const auto& [id, tags] : planar ? entities.curves_by_id : entities.lateral_surfaces_by_id)
   {
-    add_body_groups(3, volumes);
-    if (options.side_face_boundary_id != 0)
-    {
-      if (lateral_surfaces_by_id.count(options.side_face_boundary_id))
-        throw InputError("side face boundary id", "is already used by a boundary curve");
-      lateral_surfaces_by_id[options.side_face_boundary_id] = side_faces;
-    }
-    for (const auto& [id, faces] : lateral_surfaces_by_id)
-    {
-      gmsh::model::addPhysicalGroup(2, faces, id);
-      gmsh::model::setPhysicalName(2, id, name_of_boundary(id));
-    }
+    gmsh::model::addPhysicalGroup(planar ? 1 : 2, tags, id);
+    gmsh::model::setPhysicalName(planar ? 1 : 2, id, name_of_boundary(id));
   }
-  statistics.time_geometry = seconds_since(start);
+}
 
+void set_meshing_options(const SizeGrading& grading)
+{
   // Sizes come from the grading alone: point and curvature sizes would override the contact
   // size with the spacing of the profile points.
-  start = Clock::now();
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -544,6 +552,32 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 2);
   gmsh::option::setNumber("Mesh.Smoothing", 5);
   gmsh::option::setNumber("Mesh.ElementOrder", 1);
+}
+
+// 3D: every node of each volume moved in-plane by model.node_offset (lead modifications); the
+// bodies are disjoint, so each node belongs to one volume.
+void move_nodes(const PlanarModel& model, const GmshEntities& entities)
+{
+  for (const auto& [volume, material_id] : entities.volumes)
+  {
+    std::vector<std::size_t> tags;
+    std::vector<double> coordinates, parametric;
+    gmsh::model::mesh::getNodes(tags, coordinates, parametric, 3, volume, true, false);
+    for (std::size_t i = 0; i < tags.size(); ++i)
+    {
+      const Eigen::Vector3d x(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]);
+      const Eigen::Vector2d offset = model.node_offset(material_id, x);
+      if (offset.x() != 0. || offset.y() != 0.)
+        gmsh::model::mesh::setNode(tags[i], {x.x() + offset.x(), x.y() + offset.y(), x.z()}, {});
+    }
+  }
+}
+
+// Generates the mesh, checks it and regenerates it finer until the cells at the contact points
+// meet the contact size (or fail: SolverFailure).
+void generate_mesh(const PlanarModel& model, const SizeGrading& grading, const MeshOptions& options,
+                   const GmshEntities& entities, MeshStatistics& statistics)
+{
   constexpr unsigned int max_attempts = 3;
   double contact_scale = grading.initial_contact_scale;
   // Sizes near the size of a body can leave triangles the recombination cannot pair (100 mm
@@ -554,7 +588,7 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   double size_scale = 1.;
   for (unsigned int attempt = 1;; ++attempt)
   {
-    start = Clock::now();
+    auto start = Clock::now();
     gmsh::model::mesh::clear();
     gmsh::option::setNumber("Mesh.MeshSizeMax", size_scale * grading.largest_size);
     gmsh::model::mesh::setSizeCallback(
@@ -569,11 +603,13 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     {
       throw SolverFailure("gmsh mesh generation", e.what());
     }
+    if (options.dimension == 3 && model.node_offset)
+      move_nodes(model, entities);
     statistics.time_meshing += seconds_since(start);
     start = Clock::now();
     try
     {
-      check_cells(options, grading, surfaces, volumes, statistics);
+      check_cells(options, grading, entities.surfaces, entities.volumes, statistics);
     }
     catch (const SolverFailure& e)
     {
@@ -589,13 +625,13 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     statistics.contact_scale = contact_scale;
     statistics.meshing_attempts = attempt;
     if (statistics.largest_edge_ratio_at_focus <= 1.)
-      break;
+      return;
     // gmsh's cells at a focus follow the size field only roughly: after the retries a cell up to
     // limits::contact_size_overshoot times the contact size is accepted (the mesh command reports
     // the ratio) — 128-position sweeps failed on cells 1.0006 to 1.05 times the size.
     if (attempt == max_attempts &&
         statistics.largest_edge_ratio_at_focus <= limits::contact_size_overshoot)
-      break;
+      return;
     if (attempt == max_attempts)
       throw SolverFailure("gmsh mesh generation",
                           "the cells at the contact points stay larger than the contact size (" +
@@ -606,6 +642,24 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     // Each retry aims further below the size: the overshoot varies between generations.
     contact_scale *= (attempt == 1 ? 0.95 : 0.9) / statistics.largest_edge_ratio_at_focus;
   }
+}
+} // namespace
+
+MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& grading,
+                                 const MeshOptions& options)
+{
+  check_mesh_input(model, grading, options);
+
+  MeshStatistics statistics;
+  GmshSession session;
+
+  auto start = Clock::now();
+  GmshEntities entities = build_geometry(model, options);
+  add_physical_groups(model, options, entities);
+  statistics.time_geometry = seconds_since(start);
+
+  set_meshing_options(grading);
+  generate_mesh(model, grading, options, entities, statistics);
 
   start = Clock::now();
   gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);

@@ -58,6 +58,10 @@ struct PlanarModel
 {
   std::vector<PlanarBody> bodies;            // disjoint bodies (they may touch at points)
   std::map<int, std::string> boundary_names; // boundary id -> physical group name
+  // 3D only: after the extrusion every node of a body with material id m moves in-plane by
+  // node_offset(m, x) (m; x the node, m): the lead modifications of gear teeth
+  // (geometry/tooth_modification_lead.h). Empty: no node moves.
+  std::function<Eigen::Vector2d(int, const Eigen::Vector3d&)> node_offset;
 };
 
 // A point where the mesh must be fine (a predicted contact): cells of `size` within `radius`.

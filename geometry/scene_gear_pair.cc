@@ -4,6 +4,7 @@
 #include "errors/format.h"
 #include "errors/limits.h"
 #include "geometry/involute_tooth.h"
+#include "geometry/tooth_modification_lead.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -642,7 +643,8 @@ void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPai
 // The designed separation of every pair in contact along the line of action (the loaded
 // flanks' removal at the kinematic contact point: both normals lie on the line of action there)
 // and its smallest value, the unloaded transmission error.
-void set_unloaded_transmission_error(const kinematics::GearPairGeometry& pair,
+void set_unloaded_transmission_error(const GearPairSceneSpec& spec,
+                                     const kinematics::GearPairGeometry& pair,
                                      const LineOfAction& line, const PlacedGears& gears,
                                      GearPairScene& scene)
 {
@@ -657,7 +659,35 @@ void set_unloaded_transmission_error(const kinematics::GearPairGeometry& pair,
     scene.pair_separation.push_back(separation);
     smallest = std::min(smallest, separation);
   }
+  // Lead modifications (3D) add the smallest of the pair's summed lead removal over the face
+  // width, the same for every pair (geometry/tooth_modification_lead.h).
+  if (spec.mesh.dimension == 3)
+  {
+    const double lead = smallest_lead_separation(
+        spec.pinion_modifications.lead, spec.wheel_modifications.lead, pair.common_face_width);
+    for (double& separation : scene.pair_separation)
+      separation += lead;
+    smallest += lead;
+  }
   scene.unloaded_transmission_error = smallest;
+}
+// Lead modifications (3D, geometry/tooth_modification_lead.h): the extruded nodes of each gear
+// turned about its axis by their removal; empty without lead modifications.
+std::function<Eigen::Vector2d(int, const Eigen::Vector3d&)>
+lead_offsets(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+             const PlacedGears& gears)
+{
+  return lead_node_offset(
+      spec.mesh.dimension,
+      {{scene_ids::pinion_body,
+        LeadModifier(gears.pinion, spec.pinion_modifications.lead, loaded_side(gears.pinion),
+                     pair.common_face_width, gears.pinion_centre, gears.pinion_rotation,
+                     "Gear pair/Pinion")},
+       {scene_ids::wheel_body,
+        LeadModifier(gears.wheel, spec.wheel_modifications.lead, loaded_side(gears.wheel),
+                     pair.common_face_width, gears.wheel_centre, gears.wheel_rotation,
+                     "Gear pair/Wheel")}},
+      {"Gear pair/Pinion", "Gear pair/Wheel"});
 }
 } // namespace
 
@@ -754,6 +784,10 @@ void check_tooth_modifications(const GearPairSceneSpec& spec)
                 loaded_side(pinion), "Gear pair/Pinion");
   ToothProfiles(wheel, spec.wheel_modifications, flank_roll_range(pair, wheel, true),
                 loaded_side(wheel), "Gear pair/Wheel");
+  check_lead_modification(spec.pinion_modifications.lead, pinion, pair.common_face_width,
+                          "Gear pair/Pinion");
+  check_lead_modification(spec.wheel_modifications.lead, wheel, pair.common_face_width,
+                          "Gear pair/Wheel");
 }
 
 GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
@@ -819,7 +853,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   for (const int j : scene.contact_pairs)
     contacts.push_back(
         predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force));
-  set_unloaded_transmission_error(pair, line, gears, scene);
+  set_unloaded_transmission_error(spec, pair, line, gears, scene);
   if (!spec.swept_positions.empty())
     add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
 
@@ -872,6 +906,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
                     involute_sign(gears.wheel) *
                         (scene.wheel_root_radius - (x - gears.wheel_centre).norm()));
   };
+  model.node_offset = lead_offsets(spec, pair, gears);
   scene.info =
       mesh_scene(model, contacts, spec.mesh, pair.common_face_width, file, depth_below_root);
   SceneInfo& info = scene.info;

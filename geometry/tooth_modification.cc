@@ -180,7 +180,7 @@ int point_side(const ProfilePoint& p)
 
 bool GearModifications::empty() const
 {
-  if (!all_teeth.empty())
+  if (!all_teeth.empty() || !lead.empty())
     return false;
   for (const auto& [index, list] : by_tooth)
     if (!list.empty())

@@ -70,12 +70,26 @@ struct FlankRollRange
   double single_root = 0.; // ρ of the single-contact end on the root side
 };
 
+// Lead modifications of a gear (3D scenes only; the shapes and how the mesh carries them:
+// geometry/tooth_modification_lead.h), the same on every tooth. All 0: none.
+struct LeadModification
+{
+  double crowning = 0.;          // m, C_β, removed at both ends of the face, 0 in its middle
+  double slope = 0.;             // m, f_Hβ; > 0 removes at z = b, < 0 at z = 0
+  double end_relief = 0.;        // m, C_I = C_II at both ends of the face
+  double end_relief_length = 0.; // m, L_I from each end
+  ModifiedFlanks flanks = ModifiedFlanks::both;
+  bool empty() const { return crowning == 0. && slope == 0. && end_relief == 0.; }
+};
+
 // The modifications of one gear: every tooth gets `all_teeth`, then the list of its index in
-// `by_tooth` (tooth indices in the gear's own frame, tooth 0 the reference tooth of the scene).
+// `by_tooth` (tooth indices in the gear's own frame, tooth 0 the reference tooth of the scene),
+// and the lead modifications `lead` (3D).
 struct GearModifications
 {
   std::vector<ToothModification> all_teeth;
   std::map<int, std::vector<ToothModification>> by_tooth;
+  LeadModification lead;
   bool empty() const;
 };
 

@@ -335,6 +335,13 @@ void GearMeshStiffness<dim>::evaluate()
     result.loaded_pairs += load.load_share > 1e-6;
     result.max_contact_pressure = std::max(result.max_contact_pressure, load.max_pressure);
   }
+  if constexpr (dim == 3) // the load across the face width (issue 27)
+  {
+    result.face_load.clear();
+    for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+      append_face_load(contact.pairs[k], candidate_pairs[k].pair, r_b1, result.face_load);
+    result.face_load_factor = summarise_face_load(result.face_load).factor;
+  }
 
   // Root stress: the largest first principal stress on the free surface between the root
   // circle and the form circle (the fillets), where tooth root cracks start (ISO 6336-3 takes

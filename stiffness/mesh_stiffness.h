@@ -25,6 +25,7 @@
 #include "fem/fields.h"
 #include "fem/parameters.h"
 #include "geometry/scene_gear_pair.h"
+#include "stiffness/face_load.h"
 
 #include <functional>
 #include <memory>
@@ -137,6 +138,10 @@ struct GearMeshStiffnessResult
   double max_contact_pressure = 0.; // Pa, over all pairs
   double pinion_root_stress = 0.;   // Pa, largest first principal stress on the pinion fillets
   double wheel_root_stress = 0.;    // Pa, the same on the wheel fillets
+  // 3D: the line load across the face width of every pair (stiffness/face_load.h) and
+  // K_Hβ = peak/mean of the pairs' summed line load (-; 2D: empty and 0).
+  std::vector<FaceLoadPoint> face_load;
+  double face_load_factor = 0.;
   // Model and cost.
   unsigned int dimension = 2;
   unsigned int n_cells = 0;
@@ -175,6 +180,8 @@ struct GearMeshStiffnessResult
     visit("max_contact_pressure", self.max_contact_pressure);
     visit("pinion_root_stress", self.pinion_root_stress);
     visit("wheel_root_stress", self.wheel_root_stress);
+    visit("face_load", self.face_load);
+    visit("face_load_factor", self.face_load_factor);
     visit("dimension", self.dimension);
     visit("n_cells", self.n_cells);
     visit("n_dofs", self.n_dofs);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Mesh stiffness k = T1/(r_b1²·Δφ) of a gear-pair deck solved by CalculiX.
+"""Mesh stiffness k = T1/(r_b1²·Δφ) and transmission error of a gear-pair deck solved by CalculiX.
 
 usage: tools/calculix_stiffness.py DECK_FOLDER [--json]
 
@@ -10,9 +10,13 @@ the folder's summary.json (pinion_torque, pinion_base_radius), the ROT NODE from
 `--set "Scene/gear pair defaults=stiffness"` makes the deck the scene `gearstiff stiffness`
 solves, so the k printed here compares with `gearstiff stiffness --set "Finite
 elements/Element degree=1"` (the element the deck's C3D8 slice reproduces).
-Prints `calculix k = X N/um (T1 = ... N·m, r_b1 = ... mm, Δφ = ... µrad)`, or with --json one
-object {"mesh_stiffness": N/µm, "pinion_rotation": rad, "pinion_torque": N·m,
-"pinion_base_radius": mm}.
+The transmission error is r_b1·Δφ (the wheel held): the deck places the pair where unmodified
+flanks touch, so with tooth modifications (issue 27; the deck carries the modified outline)
+Δφ includes the roll that closes the designed separation, and r_b1·Δφ compares with the
+`transmission_error` of `gearstiff stiffness` (r_b1·Δφ from first touch + the unloaded TE).
+Prints `calculix k = X N/um, TE = Y um (T1 = ... N·m, r_b1 = ... mm, Δφ = ... µrad)`, or with
+--json one object {"mesh_stiffness": N/µm, "transmission_error": µm, "pinion_rotation": rad,
+"pinion_torque": N·m, "pinion_base_radius": mm}.
 """
 import json
 import os
@@ -68,12 +72,14 @@ def main():
     rotation = abs(last_rotation(os.path.join(folder, "scene.dat"),
                                  rotation_node(os.path.join(folder, "scene.inp"))))
     k = torque / (base_radius ** 2 * rotation) / 1e6  # N/µm
+    te = base_radius * rotation * 1e6  # µm
     if "--json" in sys.argv[1:]:
-        print(json.dumps({"mesh_stiffness": k, "pinion_rotation": rotation,
-                          "pinion_torque": torque, "pinion_base_radius": base_radius * 1e3}))
+        print(json.dumps({"mesh_stiffness": k, "transmission_error": te,
+                          "pinion_rotation": rotation, "pinion_torque": torque,
+                          "pinion_base_radius": base_radius * 1e3}))
     else:
-        print(f"calculix k = {k:.6g} N/um (T1 = {torque:g} N·m, r_b1 = {base_radius * 1e3:.6g} mm, "
-              f"Δφ = {rotation * 1e6:.6g} µrad)")
+        print(f"calculix k = {k:.6g} N/um, TE = {te:.6g} um (T1 = {torque:g} N·m, "
+              f"r_b1 = {base_radius * 1e3:.6g} mm, Δφ = {rotation * 1e6:.6g} µrad)")
 
 
 if __name__ == "__main__":

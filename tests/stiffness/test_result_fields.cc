@@ -126,6 +126,7 @@ void expect_every_field_reaches_rank_zero(const std::string& name)
 TEST(ResultFields, EveryMemberIsListed)
 {
   EXPECT_EQ(fem::field_layout_gap<stiffness::ToothPairLoad>(), "");
+  EXPECT_EQ(fem::field_layout_gap<stiffness::FaceLoadPoint>(), "");
   EXPECT_EQ(fem::field_layout_gap<stiffness::GearMeshStiffnessResult>(), "");
   EXPECT_EQ(fem::field_layout_gap<stiffness::CycloidContactLoad>(), "");
   EXPECT_EQ(fem::field_layout_gap<stiffness::CycloidLoadResult>(), "");

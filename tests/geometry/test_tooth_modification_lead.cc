@@ -1,0 +1,193 @@
+// Lead modifications (issue 27; geometry/tooth_modification_lead.h) on the split-path pair of
+// docs/references.md §1 in a coarse 3D scene: the µm change is on the mesh deal.II reads back
+// (every flank vertex lies δ(z) below the nominal involute, measured along the flank normal), a
+// zero lead modification writes today's mesh byte for byte, the unloaded transmission error
+// takes the smallest summed lead removal, and bad input names its parameter.
+#include "errors/errors.h"
+#include "geometry/involute_tooth.h"
+#include "geometry/scene_gear_pair.h"
+#include "geometry/tooth_modification_lead.h"
+#include "kinematics/gear_pair.h"
+#include "tests/geometry/scene_test_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/grid/tria.h>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::geometry;
+using namespace gearstiff::test_support;
+
+// A coarse 3D scene (8 layers): the lead shapes need the layers, not fine transverse cells.
+GearPairSceneSpec coarse_3d()
+{
+  GearPairSceneSpec spec;
+  spec.mesh.dimension = 3;
+  spec.mesh.layers = 8;
+  spec.mesh.contact_size = 2e-4;
+  spec.mesh.fine_radius = 4e-4;
+  spec.mesh.body_size = 1e-3;
+  return spec;
+}
+
+ToothProfile nominal_tooth(const GearPairSceneSpec& spec, bool wheel)
+{
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const auto& gear = wheel ? spec.pair.wheel : spec.pair.pinion;
+  const double tip = wheel ? pair.wheel.tip_diameter : pair.pinion.tip_diameter;
+  return generate_involute_tooth(involute_tooth_spec(gear, tip), spec.resolution);
+}
+
+std::string file_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+struct FlankCheck
+{
+  double largest_error = 0.;  // m, |depth − δ(z)| over the flank vertices
+  double smallest_depth = 1.; // m, of the designed δ(z) at the vertices
+  double largest_depth = 0.;  // m
+  unsigned int vertices = 0;
+};
+
+// Every vertex of the faces with `boundary_id` on the involute part (form circle to tip) of its
+// tooth: its depth below the nominal flank of its side (r_b times the angle between the involute
+// through it and the flank's, geometry/tooth_modification_lead.h) against δ(z) of that side.
+FlankCheck check_flank(const dealii::Triangulation<3>& triangulation, int boundary_id,
+                       const ToothProfile& tooth, const Eigen::Vector2d& centre, double rotation,
+                       const LeadModification& lead, double face_width)
+{
+  const LeadModifier measure(tooth, LeadModification(), 1, face_width, centre, rotation, "test");
+  FlankCheck check;
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const auto& face : cell->face_iterators())
+    {
+      if (!face->at_boundary() ||
+          face->boundary_id() != static_cast<dealii::types::boundary_id>(boundary_id))
+        continue;
+      for (unsigned int v = 0; v < face->n_vertices(); ++v)
+      {
+        const auto& x = face->vertex(v);
+        const Eigen::Vector2d p(x[0], x[1]);
+        const double r = (p - centre).norm();
+        if (r <= tooth.form_radius + 1e-6 || r >= tooth.tip_radius - 1e-6)
+          continue;
+        const double upper = measure.depth_below_flank(p, +1);
+        const double lower = measure.depth_below_flank(p, -1);
+        const int side = std::abs(upper) < std::abs(lower) ? +1 : -1;
+        const double expected = lead_removed_depth(lead, x[2], face_width, side == +1);
+        check.largest_error =
+            std::max(check.largest_error, std::abs((side > 0 ? upper : lower) - expected));
+        check.smallest_depth = std::min(check.smallest_depth, expected);
+        check.largest_depth = std::max(check.largest_depth, expected);
+        ++check.vertices;
+      }
+    }
+  return check;
+}
+
+// Pinion crowning C_β = 20 µm on both flanks, wheel slope f_Hβ = 10 µm on its loaded flank. The
+// designed removal spans 0…20 µm across the face (pinion) and 0…10 µm (wheel); the flank
+// vertices deal.II reads sit within 0.05 µm of it: the vertices lie on gmsh's splines through
+// exact involute points (tooth_profile.h; the 2D chord error ≈ 0.01 µm, test_tooth_modification),
+// turned by φ = δ/r_b exactly (an involute turned about its axis is the parallel involute).
+TEST(LeadModification, MicrometresOnTheMeshDealIIReads)
+{
+  GearPairSceneSpec spec = coarse_3d();
+  spec.pinion_modifications.lead.crowning = 20e-6;
+  spec.wheel_modifications.lead.slope = 10e-6;
+  spec.wheel_modifications.lead.flanks = ModifiedFlanks::loaded;
+  const std::string file = work_file("lead_crowning_3d.msh");
+  const GearPairScene scene = write_gear_pair_scene(spec, file);
+  dealii::Triangulation<3> triangulation;
+  read_mesh(triangulation, file);
+  const double b = kinematics::compute_gear_pair(spec.pair).common_face_width;
+  const FlankCheck pinion = check_flank(
+      triangulation, pinion_flank_id(0), nominal_tooth(spec, false), scene.info.first_centre,
+      scene.info.first_rotation, spec.pinion_modifications.lead, b);
+  const FlankCheck wheel = check_flank(triangulation, wheel_flank_id(0), nominal_tooth(spec, true),
+                                       scene.info.second_centre, scene.info.second_rotation,
+                                       spec.wheel_modifications.lead, b);
+  std::cout << "pinion: " << pinion.vertices << " vertices, error " << pinion.largest_error * 1e6
+            << " µm over " << pinion.smallest_depth * 1e6 << "…" << pinion.largest_depth * 1e6
+            << " µm; wheel: " << wheel.vertices << " vertices, error " << wheel.largest_error * 1e6
+            << " µm over " << wheel.smallest_depth * 1e6 << "…" << wheel.largest_depth * 1e6
+            << " µm\n";
+  EXPECT_GT(pinion.vertices, 100u);
+  EXPECT_GT(wheel.vertices, 100u);
+  EXPECT_NEAR(pinion.smallest_depth, 0., 1e-12); // the middle layer z = b/2
+  EXPECT_NEAR(pinion.largest_depth, 20e-6, 1e-12);
+  EXPECT_NEAR(wheel.largest_depth, 10e-6, 1e-12);
+  EXPECT_LT(pinion.largest_error, 0.05e-6);
+  EXPECT_LT(wheel.largest_error, 0.05e-6);
+  // Unloaded TE at the single-contact position (no profile modification): the smallest over z
+  // of C_β(2u − 1)² + f_Hβ·u, u = z/b: at u = 1/2 − f_Hβ/(8C_β) = 0.4375 it is
+  // 20·0.0625² + 10·0.4375 = 4.6875 µm (the 2001-point sample is within 1e-12 m of it there).
+  EXPECT_NEAR(scene.unloaded_transmission_error, 4.6875e-6, 1e-11);
+}
+
+// Zero lead modifications (whatever the flank choice) write today's 3D mesh byte for byte.
+TEST(LeadModification, ZeroIsTodaysMesh)
+{
+  GearPairSceneSpec spec = coarse_3d();
+  const std::string plain = work_file("lead_plain_3d.msh");
+  write_gear_pair_scene(spec, plain);
+  spec.pinion_modifications.lead.flanks = ModifiedFlanks::loaded;
+  spec.wheel_modifications.lead.end_relief_length = 2e-3;
+  const std::string zero = work_file("lead_zero_3d.msh");
+  write_gear_pair_scene(spec, zero);
+  EXPECT_EQ(file_text(plain), file_text(zero));
+}
+
+// Bad input names the parameter before anything is meshed.
+TEST(LeadModification, BadInput)
+{
+  const auto fails = [](GearPairSceneSpec spec, const std::string& parameter)
+  {
+    try
+    {
+      check_tooth_modifications(spec);
+      write_gear_pair_scene(spec, work_file("lead_bad.msh"));
+      ADD_FAILURE() << "accepted " << parameter;
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_EQ(e.parameter(), parameter) << e.what();
+    }
+  };
+  GearPairSceneSpec spec = coarse_3d();
+  spec.pinion_modifications.lead.end_relief = 5e-6; // no length
+  fails(spec, "Gear pair/Pinion/end relief length");
+  spec.pinion_modifications.lead.end_relief_length = 20e-3; // beyond half the 24 mm face
+  fails(spec, "Gear pair/Pinion/end relief length");
+  spec = coarse_3d();
+  spec.wheel_modifications.lead.crowning = -5e-6;
+  fails(spec, "Gear pair/Wheel/lead crowning");
+  spec.wheel_modifications.lead.crowning = 2e-3; // 2 mm: beyond the tip thickness
+  fails(spec, "Gear pair/Wheel/lead crowning");
+  spec = coarse_3d();
+  spec.mesh.dimension = 2;
+  spec.pinion_modifications.lead.slope = 5e-6;
+  fails(spec, "Gear pair/Pinion/lead slope");
+  // A ring (the planet–ring pair of tests/stiffness/planet_ring.h: z = 24 in 69, m = 2.5 mm,
+  // ring addendum 0.5·m): lead modifications on a ring are not implemented.
+  spec = coarse_3d();
+  spec.pair.pinion.teeth = 24;
+  spec.pair.wheel.teeth = 69;
+  spec.pair.wheel.internal = true;
+  spec.pair.pinion.profile_shift = spec.pair.wheel.profile_shift = 0.;
+  spec.pair.pinion.tip_diameter = 0.;
+  spec.pair.wheel.tip_diameter = (69. * 2.5 - 2.5) * 1e-3;
+  spec.pair.wheel.bore_diameter = 0.;
+  spec.wheel_rim_thickness = 3. * 2.5e-3;
+  spec.wheel_modifications.lead.crowning = 5e-6;
+  fails(spec, "Gear pair/Wheel/lead crowning");
+}
+} // namespace
