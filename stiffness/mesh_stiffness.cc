@@ -183,22 +183,27 @@ GearMeshStiffness<dim>::run_torques(const std::vector<double>& torques)
   settings.pinion_torque = torques.front();
   results.push_back(run());
   for (std::size_t t = 1; t < torques.size(); ++t)
-  {
-    Timer timer(mpi_communicator, true);
-    settings.pinion_torque = torques[t];
-    const unsigned int iterations_before = problem->results().active_set_iterations;
-    problem->set_hub_target("pinion bore", torques[t]);
-    const contact::ContactResults<dim>& contact = problem->solve_next_step();
-    result.active_set_iterations = contact.active_set_iterations - iterations_before;
-    result.setup_time = 0.; // the scene, the set-up and the factorization are the first torque's
-    result.scene_time = 0.;
-    evaluate();
-    result.solve_time = timer.wall_time();
-    result.total_time = result.solve_time;
-    result.output_files.clear();
-    results.push_back(result);
-  }
+    results.push_back(next_torque(torques[t]));
   return results;
+}
+
+template <int dim>
+GearMeshStiffnessResult GearMeshStiffness<dim>::next_torque(const double torque)
+{
+  Timer timer(mpi_communicator, true);
+  settings.pinion_torque = torque;
+  const unsigned int iterations_before = problem->results().active_set_iterations;
+  problem->set_hub_target("pinion bore", torque);
+  const contact::ContactResults<dim>& contact = problem->solve_next_step();
+  result.active_set_iterations = contact.active_set_iterations - iterations_before;
+  result.setup_time = 0.; // the scene, the set-up and the factorization are the first torque's
+  result.scene_time = 0.;
+  result.factorization_time = 0.;
+  evaluate();
+  result.solve_time = timer.wall_time();
+  result.total_time = result.solve_time;
+  result.output_files.clear();
+  return result;
 }
 
 template <int dim>
