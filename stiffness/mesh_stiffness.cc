@@ -320,7 +320,13 @@ void GearMeshStiffness<dim>::evaluate()
   // The pinion rolls the unloaded error (the modifications' gap) before the flanks touch; the
   // deflection from the touching position is what sets k.
   result.transmission_error = r_b1 * result.pinion_rotation + result.unloaded_transmission_error;
+  evaluate_pairs(contact);
+  evaluate_root_stress();
+}
 
+template <int dim>
+void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& contact)
+{
   double total = 0.;
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
     total += std::max(contact.pairs[k].normal_force, 0.);
@@ -340,7 +346,11 @@ void GearMeshStiffness<dim>::evaluate()
     result.loaded_pairs += load.load_share > 1e-6;
     result.max_contact_pressure = std::max(result.max_contact_pressure, load.max_pressure);
   }
+}
 
+template <int dim>
+void GearMeshStiffness<dim>::evaluate_root_stress()
+{
   // Root stress: the largest first principal stress on the free surface between the root
   // circle and the form circle (the fillets), where tooth root cracks start (ISO 6336-3 takes
   // the tensile fillet stress). Faces lying on the root circle itself (the rim between removed

@@ -243,7 +243,10 @@ private:
   void make_scene();
   void setup_problem();
   void solve();
+  // k, TE, hub torques; then each pair's load (evaluate_pairs) and the fillet stresses.
   void evaluate();
+  void evaluate_pairs(const contact::ContactResults<dim>& contact);
+  void evaluate_root_stress();
   void output_results();
 
   MPI_Comm mpi_communicator;
