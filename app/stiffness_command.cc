@@ -107,15 +107,10 @@ void report_micro_geometry(const StiffnessParameters& p,
                "Harris map: TE peak-to-peak against torque, one line per modification set");
 }
 
-void run(dealii::ParameterHandler& prm, CommandContext& context)
+// The load case, the model and the ISO values every mode reports.
+void report_model(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                  const kinematics::IsoStiffness& iso, Report& report)
 {
-  const StiffnessParameters p = parse_stiffness_parameters(prm);
-  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
-  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
-  Report& report = context.report;
-  if (!p.derived_sizes.empty())
-    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
-
   report.add_text("load case",
                   "T1 = " + format_number(p.settings.pinion_torque, 4) +
                       " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
@@ -143,39 +138,41 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                    "ISO 6336-1 method B c'·b (docs/references.md §5: ≈ 330 N/µm)");
   report.add_value("iso_mesh_stiffness", iso.mesh_alpha_per_width / 1e6, "N/µm",
                    "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
+}
 
-  if (p.mode != StiffnessMode::sweep)
-  {
-    context.pcout << "stiffness: solving the " << mode_name(p.mode) << " position on "
-                  << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
-                  << std::endl;
-    const stiffness::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
-    report.add_text("position", position_reason(p.mode, pair, r));
-    const double reference = p.mode == StiffnessMode::single ? ansys::single_pair_stiffness
-                                                             : ansys::double_pair_stiffness;
-    const bool compare = p.published_reference && p.mode != StiffnessMode::roll_angle;
-    if (compare)
-      report.add_compared_value("mesh_stiffness", r.mesh_stiffness / 1e6, reference / 1e6, "N/µm",
-                                p.mode == StiffnessMode::single ? "single-pair mesh stiffness k'_j"
-                                                                : "double-pair mesh stiffness k'_d",
-                                ansys::source);
-    else
-      report.add_value("mesh_stiffness", r.mesh_stiffness / 1e6, "N/µm",
-                       "mesh stiffness T1/(r_b1²·Δφ)");
-    report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100.,
-                     "%", "k against ISO 6336-1 c'·b");
-    report_stiffness_position(report, r, "", mode_name(p.mode));
-    report_face_load(context, {r});
-    context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
-                  << " s (" << r.n_dofs << " DoFs)" << std::endl;
-    return;
-  }
+// One position (single, double, roll angle).
+void run_position(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                  const kinematics::IsoStiffness& iso, CommandContext& context)
+{
+  Report& report = context.report;
+  context.pcout << "stiffness: solving the " << mode_name(p.mode) << " position on "
+                << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
+                << std::endl;
+  const stiffness::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
+  report.add_text("position", position_reason(p.mode, pair, r));
+  const double reference =
+      p.mode == StiffnessMode::single ? ansys::single_pair_stiffness : ansys::double_pair_stiffness;
+  const bool compare = p.published_reference && p.mode != StiffnessMode::roll_angle;
+  if (compare)
+    report.add_compared_value("mesh_stiffness", r.mesh_stiffness / 1e6, reference / 1e6, "N/µm",
+                              p.mode == StiffnessMode::single ? "single-pair mesh stiffness k'_j"
+                                                              : "double-pair mesh stiffness k'_d",
+                              ansys::source);
+  else
+    report.add_value("mesh_stiffness", r.mesh_stiffness / 1e6, "N/µm",
+                     "mesh stiffness T1/(r_b1²·Δφ)");
+  report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100., "%",
+                   "k against ISO 6336-1 c'·b");
+  report_stiffness_position(report, r, "", mode_name(p.mode));
+  report_face_load(context, {r});
+  context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
+                << " s (" << r.n_dofs << " DoFs)" << std::endl;
+}
 
-  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
-  add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
-  report_face_load(context, sweep.positions);
-  report_micro_geometry(p, sweep, context);
-  add_pair_identity(report, pair);
+// The sweep's summary values: k statistics, comparisons, cost and what was done once.
+void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoStiffness& iso,
+                          const stiffness::StiffnessSweepResult& sweep, Report& report)
+{
   double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
   for (const auto& r : sweep.positions)
   {
@@ -217,26 +214,55 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_value("sweep_per_position_time", sweep.per_position_time / sweep.positions.size(), "s",
                    once ? "per position, mean: turning, pairing, contact solve, evaluation"
                         : "per position, mean: everything");
+}
 
-  if (context.writes_files() && context.is_root())
+// The k(x) table for `dynamics` and the k(θ) chart.
+void write_sweep_files(const StiffnessParameters& p, const kinematics::IsoStiffness& iso,
+                       const stiffness::StiffnessSweepResult& sweep, CommandContext& context)
+{
+  if (!context.writes_files() || !context.is_root())
+    return;
+  Report& report = context.report;
+  double sum = 0.;
+  for (const auto& r : sweep.positions)
+    sum += r.mesh_stiffness;
+  const double mean = sum / sweep.positions.size();
   {
-    {
-      std::ofstream out(context.output_file(
-          "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)"));
-      out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
-          << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
-          << "# Use: gearstiff dynamics stiffness_table.prm\n"
-          << dynamics_table_input(sweep);
-    }
-    const TemporaryCsv csv(report, "stiffness_sweep");
-    context.plot("plot_stiffness.py",
-                 {csv.path(),
-                  format_number(p.published_reference ? ansys::single_pair_stiffness / 1e6 : 0., 8),
-                  format_number(p.published_reference ? ansys::double_pair_stiffness / 1e6 : 0., 8),
-                  format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
-                 "stiffness_sweep.png",
-                 "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean");
+    std::ofstream out(context.output_file(
+        "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)"));
+    out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
+        << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
+        << "# Use: gearstiff dynamics stiffness_table.prm\n"
+        << dynamics_table_input(sweep);
   }
+  const TemporaryCsv csv(report, "stiffness_sweep");
+  context.plot("plot_stiffness.py",
+               {csv.path(),
+                format_number(p.published_reference ? ansys::single_pair_stiffness / 1e6 : 0., 8),
+                format_number(p.published_reference ? ansys::double_pair_stiffness / 1e6 : 0., 8),
+                format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
+               "stiffness_sweep.png",
+               "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean");
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  const StiffnessParameters p = parse_stiffness_parameters(prm);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
+  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
+  Report& report = context.report;
+  if (!p.derived_sizes.empty())
+    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
+  report_model(p, pair, iso, report);
+  if (p.mode != StiffnessMode::sweep)
+    return run_position(p, pair, iso, context);
+  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
+  add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
+  report_face_load(context, sweep.positions);
+  report_micro_geometry(p, sweep, context);
+  add_pair_identity(report, pair);
+  report_sweep_summary(p, iso, sweep, report);
+  write_sweep_files(p, iso, sweep, context);
 }
 
 const CommandRegistration registration(Command{

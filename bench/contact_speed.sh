@@ -20,8 +20,9 @@
 #   build): wall time and peak memory per rank. In core, MUMPS estimates 11.1 GB for the
 #   factors on top of the ~8 GB the ranks hold otherwise: ~19 GB, too close to the 23 GB machine.
 #
-# usage: bench/contact_speed.sh [path/to/gearstiff] [--quick|--large]
-#   (--quick: one run each, no 3D; --large: only the ~1 M DoF case)
+# usage: bench/contact_speed.sh [path/to/gearstiff] [--quick|--large|--once]
+#   (--quick: one run each, no 3D; --large: only the ~1 M DoF case; --once: only the rolling-sweep
+#   rows, one run each)
 # Results with before/after figures: bench/contact_speed.md.
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
@@ -60,6 +61,50 @@ if [ "$quick" = "--large" ]; then
   echo "| 3D Q2 6 layers ($(grep -oE '[0-9]+ DoFs' "$dir/out" | head -1)), 2 ranks [s], one run |" \
     "$(cat "$dir"/rank0.time) / $(cat "$dir"/rank1.time) (s, peak KB of rank 0 / rank 1) | | |"
   rm -rf "$dir"
+  exit 0
+fi
+
+# Rolling sweeps (issue 28, `Stiffness/sweep mesh = once`: each rank meshes one scene refined
+# along every flank contact of the sweep, factorizes it once and turns the bodies rigidly to each
+# position) against `per position` (a scene, mesh and factorization per position), default 2D
+# pair, μ = 0.01, 1 rank; medians of `runs`, the ratio from medians taken in this one sitting.
+# Peak memory (KB, /usr/bin/time %M) of one run each. The report's sweep_once_time and
+# sweep_per_position_time split the once sweep into what was done once and per position.
+# The load average is printed with the rows (the machine is shared).
+once=(--set "Stiffness/sweep mesh=once")
+peak_kb() { /usr/bin/time -f "%M" -o "$1" "${@:2}" >/dev/null 2>&1; cat "$1"; }
+rolling_rows() {
+  echo "| load average before the rolling rows | $(cut -d' ' -f1-3 /proc/loadavg) | | |"
+  mem=$(mktemp)
+  r128_once=$(median_seconds "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
+    --set "Stiffness/sweep positions=128" "${friction[@]}" "${once[@]}")
+  r256_once=$(median_seconds "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
+    --set "Stiffness/sweep positions=256" "${friction[@]}" "${once[@]}")
+  r128_per=$(median_seconds "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
+    --set "Stiffness/sweep positions=128" "${friction[@]}")
+  m128_once=$(peak_kb "$mem" "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
+    --set "Stiffness/sweep positions=128" "${friction[@]}" "${once[@]}")
+  m128_per=$(peak_kb "$mem" "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
+    --set "Stiffness/sweep positions=128" "${friction[@]}")
+  echo "| 128-position sweep 2D, 1 rank [s]: once / per position; peak MB | $r128_once ($((m128_once / 1024)) MB) | $r128_per ($((m128_per / 1024)) MB) | $(echo "scale=2; $r128_per / $r128_once" | bc) |"
+  echo "| 256-position sweep 2D once, 1 rank [s]; / 128 positions | $r256_once | | $(echo "scale=2; $r256_once / $r128_once" | bc) |"
+  if [ "$quick" != "--quick" ]; then
+    /usr/bin/time -f "%e %M" -o "$mem" "${mpi[@]}" -np 2 "$gearstiff" stiffness \
+      --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=32" --set "Mesh/dimension=3" \
+      --set "Finite elements/Element degree=1" "${friction[@]}" "${once[@]}" >/dev/null 2>&1
+    read -r seconds kilobytes <"$mem"
+    echo "| 32-position sweep 3D Q1 8 layers once, 2 ranks [s], one run | $seconds (peak $((kilobytes / 1024)) MB on the launcher's largest rank) | | |"
+  fi
+  rm -f "$mem"
+  echo "| load average after the rolling rows | $(cut -d' ' -f1-3 /proc/loadavg) | | |"
+}
+
+# --once: only the rolling-sweep rows (one run each: ratios in one sitting).
+if [ "$quick" = "--once" ]; then
+  runs=1
+  echo "| case | once | per position | ratio |"
+  echo "|---|---|---|---|"
+  rolling_rows
   exit 0
 fi
 
@@ -137,33 +182,4 @@ if [ "$quick" != "--quick" ]; then
   echo "| 3D Q1 8 layers ($(grep -oE '[0-9]+ DoFs' "$log" | head -1)), 2 ranks [s], one run | $seconds (peak $((kilobytes / 1024)) MB on the launcher's largest rank) | (was 267) | |"
   rm -f "$log" "$log.time"
 fi
-
-# Rolling sweeps (issue 28, `Stiffness/sweep mesh = once`: each rank meshes one scene refined
-# along every flank contact of the sweep, factorizes it once and turns the bodies rigidly to each
-# position) against `per position` (a scene, mesh and factorization per position), default 2D
-# pair, μ = 0.01, 1 rank; medians of `runs`, the ratio from medians taken in this one sitting.
-# Peak memory (KB, /usr/bin/time %M) of one run each. The report's sweep_once_time and
-# sweep_per_position_time split the once sweep into what was done once and per position.
-once=(--set "Stiffness/sweep mesh=once")
-peak_kb() { /usr/bin/time -f "%M" -o "$1" "${@:2}" >/dev/null 2>&1; cat "$1"; }
-mem=$(mktemp)
-r128_once=$(median_seconds "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
-  --set "Stiffness/sweep positions=128" "${friction[@]}" "${once[@]}")
-r256_once=$(median_seconds "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
-  --set "Stiffness/sweep positions=256" "${friction[@]}" "${once[@]}")
-r128_per=$(median_seconds "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
-  --set "Stiffness/sweep positions=128" "${friction[@]}")
-m128_once=$(peak_kb "$mem" "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
-  --set "Stiffness/sweep positions=128" "${friction[@]}" "${once[@]}")
-m128_per=$(peak_kb "$mem" "$gearstiff" stiffness --set "Stiffness/mode=sweep" \
-  --set "Stiffness/sweep positions=128" "${friction[@]}")
-echo "| 128-position sweep 2D, 1 rank [s]: once / per position; peak MB | $r128_once ($((m128_once / 1024)) MB) | $r128_per ($((m128_per / 1024)) MB) | $(echo "scale=2; $r128_per / $r128_once" | bc) |"
-echo "| 256-position sweep 2D once, 1 rank [s]; / 128 positions | $r256_once | | $(echo "scale=2; $r256_once / $r128_once" | bc) |"
-if [ "$quick" != "--quick" ]; then
-  /usr/bin/time -f "%e %M" -o "$mem" "${mpi[@]}" -np 2 "$gearstiff" stiffness \
-    --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=32" --set "Mesh/dimension=3" \
-    --set "Finite elements/Element degree=1" "${friction[@]}" "${once[@]}" >/dev/null 2>&1
-  read -r seconds kilobytes <"$mem"
-  echo "| 32-position sweep 3D Q1 8 layers once, 2 ranks [s], one run | $seconds (peak $((kilobytes / 1024)) MB on the launcher's largest rank) | | |"
-fi
-rm -f "$mem"
+rolling_rows

@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <iterator>
 
 namespace gearstiff::contact
 {
@@ -128,6 +130,105 @@ void ContactProblem<dim>::map_contact(Condensed& c) const
     c.modes.push_back(c.at_dofs(mode));
   c.partial = false;
   c.amplitudes.clear();
+  if (rolling)
+    map_unit_rows(c);
+}
+
+template <int dim>
+void ContactProblem<dim>::keep_columns_on(const std::vector<types::boundary_id>& surfaces)
+{
+  rolling_surfaces = surfaces;
+}
+
+template <int dim>
+std::vector<types::global_dof_index>
+ContactProblem<dim>::surface_dofs(const std::vector<types::boundary_id>& ids) const
+{
+  std::vector<types::global_dof_index> dofs, face_dofs;
+  for (const auto& cell : elastic.get_dof_handler().active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() &&
+          std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) != ids.end())
+      {
+        face_dofs.resize(cell->get_fe().n_dofs_per_face(f));
+        cell->face(f)->get_dof_indices(face_dofs);
+        dofs.insert(dofs.end(), face_dofs.begin(), face_dofs.end());
+      }
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  return dofs;
+}
+
+template <int dim>
+void ContactProblem<dim>::map_unit_rows(Condensed& c) const
+{
+  const auto covered = [&]()
+  { return std::includes(c.unit_rows.begin(), c.unit_rows.end(), c.dofs.begin(), c.dofs.end()); };
+  if (!covered())
+  {
+    // The declared surfaces and those of the current pairs; the kept responses lack the new
+    // rows and are computed afresh.
+    std::vector<types::boundary_id> ids = rolling_surfaces;
+    for (const auto& pair : pairs)
+    {
+      ids.insert(ids.end(), pair.slave.begin(), pair.slave.end());
+      ids.insert(ids.end(), pair.master.begin(), pair.master.end());
+    }
+    std::vector<types::global_dof_index> rows = surface_dofs(ids);
+    std::vector<types::global_dof_index> merged;
+    std::set_union(rows.begin(), rows.end(), c.dofs.begin(), c.dofs.end(),
+                   std::back_inserter(merged));
+    c.unit_rows = std::move(merged);
+    c.unit_columns.clear();
+  }
+  c.unit_row_of.resize(c.dofs.size());
+  for (unsigned int i = 0; i < c.dofs.size(); ++i)
+    c.unit_row_of[i] =
+        std::lower_bound(c.unit_rows.begin(), c.unit_rows.end(), c.dofs[i]) - c.unit_rows.begin();
+}
+
+template <int dim>
+std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
+    const std::vector<std::vector<std::pair<types::global_dof_index, double>>>& loads)
+{
+  Condensed& c = *condensed;
+  // Bounded memory (a 3D flank set holds many rows): past this, the kept responses start anew.
+  constexpr std::size_t max_kept_values = 60'000'000; // 480 MB
+  std::vector<types::global_dof_index> missing;
+  for (const auto& load : loads)
+    for (const auto& [dof, weight] : load)
+      if (c.unit_columns.find(dof) == c.unit_columns.end())
+        missing.push_back(dof);
+  std::sort(missing.begin(), missing.end());
+  missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+  if ((c.unit_columns.size() + missing.size()) * c.unit_rows.size() > max_kept_values)
+  {
+    c.unit_columns.clear();
+    missing.clear();
+    for (const auto& load : loads)
+      for (const auto& [dof, weight] : load)
+        missing.push_back(dof);
+    std::sort(missing.begin(), missing.end());
+    missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+  }
+  if (!missing.empty())
+  {
+    std::vector<fem::SparseLoad> units;
+    for (const auto dof : missing)
+      units.push_back({{dof, 1.}});
+    std::vector<std::vector<double>> responses = c.factorization->responses(units, c.unit_rows);
+    for (unsigned int j = 0; j < missing.size(); ++j)
+      c.unit_columns.emplace(missing[j], std::move(responses[j]));
+  }
+  std::vector<std::vector<double>> columns(loads.size(), std::vector<double>(c.dofs.size(), 0.));
+  for (unsigned int j = 0; j < loads.size(); ++j)
+    for (const auto& [dof, weight] : loads[j])
+    {
+      const std::vector<double>& unit = c.unit_columns.at(dof);
+      for (unsigned int i = 0; i < c.dofs.size(); ++i)
+        columns[j][i] += weight * unit[c.unit_row_of[i]];
+    }
+  return columns;
 }
 
 template <int dim>
@@ -156,7 +257,8 @@ void ContactProblem<dim>::add_new_columns()
       }
   if (loads.empty())
     return;
-  std::vector<std::vector<double>> columns = c.factorization->responses(loads, c.dofs);
+  std::vector<std::vector<double>> columns =
+      rolling ? rolling_columns(loads) : c.factorization->responses(loads, c.dofs);
   for (unsigned int j = 0; j < new_nodes.size(); ++j)
     c.slot[new_nodes[j].first][new_nodes[j].second] = c.columns.size() + j * dim;
   for (auto& column : columns)

@@ -211,6 +211,11 @@ public:
   // bodies' own frames; the pair results (positions, forces) are in the turned frame.
   void roll(const std::vector<BodyRotation<dim>>& rotations);
   void clear_contact_pairs() { pairs.clear(); }
+  // Rolling: the boundary ids every pairing of the sweep draws from (slave and master). The
+  // responses to unit loads at their DoFs are then computed once for the whole sweep (each
+  // when a node there first closes) and kept across positions; surfaces outside are added
+  // when a pair uses them (the kept responses are then computed afresh).
+  void keep_columns_on(const std::vector<dealii::types::boundary_id>& surfaces);
   // The converged zone of every pair with closed nodes, to start a neighbouring analysis from.
   std::vector<ContactZone> converged_zones() const;
   // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
@@ -263,6 +268,14 @@ private:
   // The Schur method's contact DoFs and what depends on the pairing (map_contact).
   void collect_contact_dofs(Condensed& c) const;
   void map_contact(Condensed& c) const;
+  // Rolling: the DoFs of the boundary faces with these ids (sorted); the positions of the
+  // contact DoFs in the kept rows (extending them, and dropping the kept responses, when
+  // needed); the columns of `loads` at the contact DoFs from the kept unit responses.
+  std::vector<dealii::types::global_dof_index>
+  surface_dofs(const std::vector<dealii::types::boundary_id>& ids) const;
+  void map_unit_rows(Condensed& c) const;
+  std::vector<std::vector<double>> rolling_columns(
+      const std::vector<std::vector<std::pair<dealii::types::global_dof_index, double>>>& loads);
 
   // The load steps from the current states; SolverFailure when one does not converge.
   void solve_load_steps(dealii::Vector<double>& residual);
@@ -354,5 +367,6 @@ private:
   std::unique_ptr<Condensed> condensed;           // owned; built by the first Schur iteration
   bool rolling = false;                           // roll() was called
   std::vector<BodyRotation<dim>> rotations;       // of roll()
+  std::vector<dealii::types::boundary_id> rolling_surfaces; // of keep_columns_on()
 };
 } // namespace gearstiff::contact

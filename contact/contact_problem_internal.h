@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -105,6 +106,13 @@ struct ContactProblem<dim>::Condensed
   // m, complete, at unit load factor: what hub target changes after the factorization added
   // to the particular solution (empty: none).
   dealii::Vector<double> particular_change;
+  // Rolling: K and its factorization stay while the pairing changes, so the response P e_t to a
+  // unit load at DoF t is kept for every position, at the DoFs of the surfaces the rolling pairs
+  // may use (`unit_rows`, sorted: ContactProblem::keep_columns_on, extended by the current
+  // pairs' surfaces when they fall outside). A node's column is then a weighted sum of these.
+  std::vector<dealii::types::global_dof_index> unit_rows;
+  std::unordered_map<dealii::types::global_dof_index, std::vector<double>> unit_columns; // m/N
+  std::vector<unsigned int> unit_row_of; // position in unit_rows of each contact DoF
 
   unsigned int position(dealii::types::global_dof_index dof) const
   {

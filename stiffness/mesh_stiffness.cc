@@ -183,22 +183,27 @@ GearMeshStiffness<dim>::run_torques(const std::vector<double>& torques)
   settings.pinion_torque = torques.front();
   results.push_back(run());
   for (std::size_t t = 1; t < torques.size(); ++t)
-  {
-    Timer timer(mpi_communicator, true);
-    settings.pinion_torque = torques[t];
-    const unsigned int iterations_before = problem->results().active_set_iterations;
-    problem->set_hub_target("pinion bore", torques[t]);
-    const contact::ContactResults<dim>& contact = problem->solve_next_step();
-    result.active_set_iterations = contact.active_set_iterations - iterations_before;
-    result.setup_time = 0.; // the scene, the set-up and the factorization are the first torque's
-    result.scene_time = 0.;
-    evaluate();
-    result.solve_time = timer.wall_time();
-    result.total_time = result.solve_time;
-    result.output_files.clear();
-    results.push_back(result);
-  }
+    results.push_back(next_torque(torques[t]));
   return results;
+}
+
+template <int dim>
+GearMeshStiffnessResult GearMeshStiffness<dim>::next_torque(const double torque)
+{
+  Timer timer(mpi_communicator, true);
+  settings.pinion_torque = torque;
+  const unsigned int iterations_before = problem->results().active_set_iterations;
+  problem->set_hub_target("pinion bore", torque);
+  const contact::ContactResults<dim>& contact = problem->solve_next_step();
+  result.active_set_iterations = contact.active_set_iterations - iterations_before;
+  result.setup_time = 0.; // the scene, the set-up and the factorization are the first torque's
+  result.scene_time = 0.;
+  result.factorization_time = 0.;
+  evaluate();
+  result.solve_time = timer.wall_time();
+  result.total_time = result.solve_time;
+  result.output_files.clear();
+  return result;
 }
 
 template <int dim>
@@ -315,7 +320,13 @@ void GearMeshStiffness<dim>::evaluate()
   // The pinion rolls the unloaded error (the modifications' gap) before the flanks touch; the
   // deflection from the touching position is what sets k.
   result.transmission_error = r_b1 * result.pinion_rotation + result.unloaded_transmission_error;
+  evaluate_pairs(contact);
+  evaluate_root_stress();
+}
 
+template <int dim>
+void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& contact)
+{
   double total = 0.;
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
     total += std::max(contact.pairs[k].normal_force, 0.);
@@ -342,7 +353,11 @@ void GearMeshStiffness<dim>::evaluate()
       append_face_load(contact.pairs[k], candidate_pairs[k].pair, r_b1, result.face_load);
     result.face_load_factor = summarise_face_load(result.face_load).factor;
   }
+}
 
+template <int dim>
+void GearMeshStiffness<dim>::evaluate_root_stress()
+{
   // Root stress: the largest first principal stress on the free surface between the root
   // circle and the form circle (the fillets), where tooth root cracks start (ISO 6336-3 takes
   // the tensile fillet stress). Faces lying on the root circle itself (the rim between removed

@@ -231,6 +231,11 @@ public:
   // unturned frames). InputError naming "Stiffness/sweep mesh" for a position outside the
   // swept ones (the flanks are refined only there).
   GearMeshStiffnessResult roll_to(double position, const std::string& output_base);
+  // roll_to under each torque of `torques` (as run_torques: the first solved afresh at the
+  // position, each further one a continuation step), one result per torque in that order.
+  std::vector<GearMeshStiffnessResult> roll_to_torques(double position,
+                                                       const std::vector<double>& torques,
+                                                       const std::string& output_base);
 
 private:
   // Rolling: the pairs in contact with the reference pair at `position` (m), and the bodies'
@@ -240,10 +245,15 @@ private:
   double scene_position = 0.; // m, ℓ_ref of the meshed scene (rolling)
   double mesh_diameter = 0.;  // m, GridTools::diameter of the mesh (0: not yet computed)
 
+  // The next torque of a torque list: one continuation step from the converged state.
+  GearMeshStiffnessResult next_torque(double torque);
   void make_scene();
   void setup_problem();
   void solve();
+  // k, TE, hub torques; then each pair's load (evaluate_pairs) and the fillet stresses.
   void evaluate();
+  void evaluate_pairs(const contact::ContactResults<dim>& contact);
+  void evaluate_root_stress();
   void output_results();
 
   MPI_Comm mpi_communicator;

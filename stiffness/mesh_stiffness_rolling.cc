@@ -72,8 +72,20 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     scene_position = result.reference_position;
     set_candidate_pairs(position);
     setup_problem();
+    // Every flank a position of the sweep pairs: the responses at their DoFs are kept.
+    std::vector<types::boundary_id> flanks;
+    for (const double swept_position : swept)
+      for (const int j : geometry::gear_pairs_in_contact(pair, swept_position))
+        for (const int flank : {geometry::pinion_flank_id(j), geometry::wheel_flank_id(j)})
+        {
+          const auto id = static_cast<types::boundary_id>(flank);
+          if (std::find(flanks.begin(), flanks.end(), id) == flanks.end())
+            flanks.push_back(id);
+        }
+    problem->keep_columns_on(flanks);
     problem->roll(body_rotations(position));
     solve(); // setup_system() (DoFs, K, pairing on the turned bodies) and the factorization
+    evaluate();
   }
   else
   {
@@ -90,15 +102,35 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     solve_set_up_contact_problem(*problem, result,
                                  settings.contact.warm_start ? settings.warm_start.get() : nullptr);
     result.n_cells = problem->system().triangulation().n_active_cells();
+    evaluate();
   }
   result.factorization_time = problem->results().factorization_time;
-  evaluate();
   settings.output_base = output_base;
   output_results();
   result.total_time = timer.wall_time();
   return result;
 }
 
+template <int dim>
+std::vector<GearMeshStiffnessResult>
+GearMeshStiffness<dim>::roll_to_torques(double position, const std::vector<double>& torques,
+                                        const std::string& output_base)
+{
+  check_torque_list(torques);
+  // Each position starts again from the first torque (the factorization does not depend on it).
+  settings.pinion_torque = torques.front();
+  if (problem)
+    problem->set_hub_target("pinion bore", torques.front());
+  std::vector<GearMeshStiffnessResult> results{roll_to(position, output_base)};
+  for (std::size_t t = 1; t < torques.size(); ++t)
+    results.push_back(next_torque(torques[t]));
+  return results;
+}
+
+template std::vector<GearMeshStiffnessResult>
+GearMeshStiffness<2>::roll_to_torques(double, const std::vector<double>&, const std::string&);
+template std::vector<GearMeshStiffnessResult>
+GearMeshStiffness<3>::roll_to_torques(double, const std::vector<double>&, const std::string&);
 template GearMeshStiffnessResult GearMeshStiffness<2>::roll_to(double, const std::string&);
 template GearMeshStiffnessResult GearMeshStiffness<3>::roll_to(double, const std::string&);
 } // namespace gearstiff::stiffness

@@ -84,18 +84,22 @@ solve_position_torques(const GearMeshStiffnessSettings& settings, const double r
 // One position of a rolling sweep: the rank's analysis is made (meshed, factorized) by its
 // first position; a failure's reason starts with `context`.
 template <int dim>
-GearMeshStiffnessResult roll_position(std::unique_ptr<GearMeshStiffness<dim>>& analysis,
-                                      const GearMeshStiffnessSettings& settings,
-                                      const double position, const std::string& suffix,
-                                      const std::string& context)
+std::vector<GearMeshStiffnessResult>
+roll_position(std::unique_ptr<GearMeshStiffness<dim>>& analysis,
+              const GearMeshStiffnessSettings& settings, const double position,
+              const std::string& suffix, const std::string& context)
 {
-  GearMeshStiffnessResult result;
+  std::vector<GearMeshStiffnessResult> result;
   const fem::Failure failure = fem::catch_failure(
       [&]()
       {
         if (!analysis)
           analysis = std::make_unique<GearMeshStiffness<dim>>(MPI_COMM_SELF, settings);
-        result = analysis->roll_to(position, settings.output_base + "_" + suffix);
+        const std::string base = settings.output_base + "_" + suffix;
+        if (settings.torques.empty())
+          result = {analysis->roll_to(position, base)};
+        else
+          result = analysis->roll_to_torques(position, settings.torques, base);
       });
   if (!analysis || failure.kind != fem::Failure::none)
     std::filesystem::remove(settings.scene_file);
@@ -169,13 +173,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   // a failure stops every rank within about one contact iteration, and the first failing
   // position decides what every rank throws.
   if (!settings.torques.empty())
-  {
     check_torque_list(settings.torques);
-    if (spec.mesh == SweepMesh::once)
-      throw InputError(stiffness_parameter::torques,
-                       "a torque list needs the per-position sweep (sweep mesh = per position): "
-                       "the rolling sweep solves one torque");
-  }
   std::vector<std::pair<unsigned int, std::vector<GearMeshStiffnessResult>>> mine;
   fem::distribute_items(
       mpi_communicator, n,
@@ -185,8 +183,8 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                                   format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
         const std::vector<GearMeshStiffnessResult> all =
             spec.mesh == SweepMesh::once
-                ? std::vector<GearMeshStiffnessResult>{roll_position(
-                      analysis, rolling, positions[i], Utilities::int_to_string(i, 3), where)}
+                ? roll_position(analysis, rolling, positions[i], Utilities::int_to_string(i, 3),
+                                where)
                 : solve_position_torques<dim>(warm, positions[i] / r_b1,
                                               Utilities::int_to_string(i, 3), scene_file_stem,
                                               where);
