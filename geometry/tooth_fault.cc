@@ -313,7 +313,10 @@ std::vector<ProfilePoint> spalled_outline(const std::vector<ProfilePoint>& point
     const bool on_flank = p.side == loaded_side && is_involute(p.segment);
     const double roll = roll_of(p.position, base_radius);
     if (on_flank && inside(roll))
+    {
       p.position -= spall.amount * p.normal;
+      p.segment = ProfileSegment::root; // the pit is a free surface (no flank, no contact id)
+    }
     result.push_back(p);
     if (i + 1 == points.size())
       break;
@@ -335,6 +338,7 @@ std::vector<ProfilePoint> spalled_outline(const std::vector<ProfilePoint>& point
       ProfilePoint wall = lerp(points[i], q, (end - roll) / (roll_next - roll));
       ProfilePoint floor = wall;
       floor.position -= spall.amount * wall.normal;
+      floor.segment = ProfileSegment::root;
       wall.corner = floor.corner = true;
       // Entering the pit: the flank point first; leaving it: the floor first.
       if (in)
@@ -535,7 +539,7 @@ bool flank_carries(const std::vector<ToothModification>& modifications, const To
         roll > roll_of(Eigen::Vector2d(nominal.tip_radius - m.amount, 0.), nominal.base_radius))
       return false;
   }
-  return true;
+  return fault_flank_depth(modifications, nominal, roll) == 0.; // not over a spall's pit
 }
 
 double fault_flank_depth(const std::vector<ToothModification>& modifications,

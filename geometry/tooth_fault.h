@@ -13,7 +13,10 @@
 //    loaded flank (ξ its roll angle; default the reference circle): the flank between the arc
 //    lengths s_c ± L/2 (s = ρ²/(2 r_b)) moved inwards by d along its normal, with straight walls at
 //    both ends (a rectangular pit through the face, the shape of Chaari et al. 2008's spall model,
-//    docs/references.md §13);
+//    docs/references.md §13). The pit's floor and walls are free surfaces (segment root: no
+//    flank, no contact id): a pit deeper than the pair's approach (a few µm) is not reached, and
+//    a pair whose contact point lies over it carries nothing (flank_carries), the contact width
+//    lost in Chaari et al.'s model;
 //  - root crack of depth a at angle ν to the tooth centre line, starting on the loaded flank's
 //    fillet (tension side) at the 30° tangent point of ISO 6336-3 (the critical section,
 //    docs/references.md §13) or at a given radius: an open slit of width crack_opening whose
@@ -58,8 +61,8 @@ void check_faults(const std::vector<ToothModification>& modifications, const Too
 ToothProfile apply_faults(const ToothProfile& tooth,
                           const std::vector<ToothModification>& modifications, int loaded_side);
 
-// Whether the loaded flank exists at roll length `roll` (m): not where the tooth is broken or
-// chipped away (a pair whose contact point lies there carries nothing).
+// Whether the loaded flank exists at roll length `roll` (m): not where the tooth is broken,
+// chipped away or over a spall's pit (a pair whose contact point lies there carries nothing).
 bool flank_carries(const std::vector<ToothModification>& modifications, const ToothProfile& nominal,
                    double roll);
 // Depth (m) a spall removes from the loaded flank at roll length `roll` (its share of the

@@ -186,6 +186,28 @@ TEST(FaultStiffness, FeCrackVanishingAndMonotonic)
   }
 }
 
+// FE with a through-face spall (30 µm deep, 1 mm long at the reference circle) on pinion tooth 0:
+// at the pitch point the contact lies over the pit, so the pair drops out — in the single zone
+// that is loss of contact (no number); at a position in the first double zone where the pit is
+// not under the contact, the faulty tooth carries and k is the healthy one (the pit is far from
+// the contact: the sections barely change; measured printed, tolerance 0.2 % as the vanishing
+// crack).
+TEST(FaultStiffness, FeSpallPair)
+{
+  const kinematics::GearPairGeometry p = pair();
+  ToothModification spall;
+  spall.kind = ModificationKind::spall;
+  spall.amount = 30e-6;
+  spall.length = 1e-3;
+  EXPECT_THROW(fe_at(p.pitch_point, {spall}, "fault_spall"), SolverFailure);
+  const double position = 0.5 * (p.contact_start + p.single_contact_start());
+  const double healthy = fe_at(position, {}, "fault_spall_healthy").mesh_stiffness;
+  const GearMeshStiffnessResult r = fe_at(position, {spall}, "fault_spall");
+  std::cout << "FE spall, double zone: " << 100. * (r.mesh_stiffness / healthy - 1.) << " %\n";
+  EXPECT_EQ(r.loaded_pairs, 2u);
+  EXPECT_NEAR(r.mesh_stiffness / healthy, 1., 0.002);
+}
+
 // The fault sweep with a broken pinion tooth, 2 positions per pitch (ℓ = A + ¼, ¾, 1¼ p_bt on
 // the ε_α = 1.5 pair): the middle one lies in the tooth's single-contact zone (loss of contact),
 // the others in double zones, where the other pair carries alone; the revolution table repeats
