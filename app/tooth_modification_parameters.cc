@@ -1,6 +1,7 @@
 #include "app/tooth_modification_parameters.h"
 
 #include "app/parameter_patterns.h"
+#include "app/tooth_fault_parameters.h"
 #include "app/units.h"
 #include "errors/errors.h"
 
@@ -124,6 +125,7 @@ void declare_tooth_modification_parameters(ParameterHandler& prm)
     prm.enter_subsection(gear);
     for (const Entry& e : entries)
       prm.declare_entry(e.name, e.default_value, Anything(), e.documentation);
+    declare_tooth_fault_entries(prm); // issue 31, app/tooth_fault_parameters.cc
     prm.leave_subsection();
   }
   prm.leave_subsection();
@@ -138,6 +140,7 @@ PairModificationText read_tooth_modification_text(ParameterHandler& prm)
     prm.enter_subsection(wheel ? "Wheel" : "Pinion");
     for (const Entry& e : entries)
       (wheel ? text.wheel : text.pinion)[e.name] = trim(prm.get(e.name));
+    read_tooth_fault_entries(prm, wheel ? text.wheel : text.pinion);
     prm.leave_subsection();
   }
   prm.leave_subsection();
@@ -181,6 +184,8 @@ geometry::GearModifications parse_gear_modifications(const ModificationText& tex
     if (m.amount != 0.)
       modifications.all_teeth.push_back(m);
   }
+  if (text.count("faulty tooth") > 0) // the fault entries were read (read_tooth_fault_entries)
+    add_tooth_faults(text, wheel, dimension, modifications);
   return modifications;
 }
 
@@ -231,6 +236,6 @@ std::string first_modified_entry(const PairModificationText& text)
       if (end == value.c_str() || amount != 0.)
         return gear_path(wheel, name);
     }
-  return "";
+  return first_fault_entry(text);
 }
 } // namespace gearstiff::app

@@ -161,12 +161,15 @@ SceneMeshSettings clamped_to_bodies(SceneMeshSettings settings, const PlanarMode
 SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contacts,
                      const SceneMeshSettings& settings, const double face_width,
                      const std::string& file,
-                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface)
+                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface,
+                     const std::vector<SizeFocus>& extra_foci)
 {
   const auto start = std::chrono::steady_clock::now();
   SceneInfo info;
   const SizeGrading grading =
       contact_size_grading(clamped_to_bodies(settings, model), contacts, depth_below_surface);
+  SizeGrading meshed = grading;
+  meshed.foci.insert(meshed.foci.end(), extra_foci.begin(), extra_foci.end());
   MeshOptions options;
   options.dimension = settings.dimension;
   options.layers = settings.layers;
@@ -177,7 +180,7 @@ SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contact
   PlanarModel named = model;
   if (settings.dimension == 3)
     named.boundary_names[scene_ids::side_faces] = "side faces";
-  info.mesh = mesh_planar_model(named, grading, options);
+  info.mesh = mesh_planar_model(named, meshed, options);
 
   info.file = file;
   info.dimension = settings.dimension;

@@ -155,7 +155,10 @@ std::vector<BoundaryPiece> arc_pieces(const Eigen::Vector2d& centre, double radi
 
 // Meshes `model` with `settings` (resolving the defaults from the contacts), writes `file` and
 // fills the common part of SceneInfo (ids, sizes, contacts, statistics, file).
+// `extra_foci`: further places meshed finer (a tooth fault's crack, geometry/tooth_fault.h); the
+// SceneInfo sizes stay those of the contacts.
 SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contacts,
                      const SceneMeshSettings& settings, double face_width, const std::string& file,
-                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface = {});
+                     const std::function<double(const Eigen::Vector2d&)>& depth_below_surface = {},
+                     const std::vector<SizeFocus>& extra_foci = {});
 } // namespace gearstiff::geometry

@@ -4,6 +4,7 @@
 #include "errors/format.h"
 #include "errors/limits.h"
 #include "geometry/involute_tooth.h"
+#include "geometry/tooth_fault.h"
 #include "geometry/tooth_modification_lead.h"
 
 #include <Eigen/Geometry>
@@ -162,7 +163,9 @@ std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen:
     for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
     {
       const ProfileEdge edge = edge_between(tooth.points[i], tooth.points[i + 1]);
-      if (!previous || edge.segment != previous->segment || edge.side != previous->side)
+      // A fault's kink (ProfilePoint::corner) starts a new piece as well.
+      if (!previous || edge.segment != previous->segment || edge.side != previous->side ||
+          tooth.points[i].corner)
       {
         pieces.emplace_back();
         pieces.back().kind = CurveKind::spline;
@@ -790,14 +793,11 @@ void check_tooth_modifications(const GearPairSceneSpec& spec)
                           "Gear pair/Wheel");
 }
 
-GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
+namespace
 {
-  const auto start = std::chrono::steady_clock::now();
-
-  // Everything is checked before gmsh runs: the pair itself (interference, backlash, contact
-  // ratio) by the kinematics, the scene's own extent here.
-  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
-  check_scene_spec(spec);
+// The nominal teeth of both gears and their per-tooth providers (modifications, faults).
+PlacedGears generate_teeth(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair)
+{
   PlacedGears gears;
   gears.pinion =
       generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
@@ -808,8 +808,12 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   gears.wheel_teeth = ToothProfiles(gears.wheel, spec.wheel_modifications,
                                     flank_roll_range(pair, gears.wheel, true),
                                     loaded_side(gears.wheel), "Gear pair/Wheel");
+  return gears;
+}
 
-  GearPairScene scene;
+// Bore (rim) radii, pads and bolt holes, and the teeth counts: all checked before gmsh runs.
+void set_rims(const GearPairSceneSpec& spec, const PlacedGears& gears, GearPairScene& scene)
+{
   scene.pinion_bore_radius = bore_radius(spec.pinion_bore_radius, 0., spec.pair.pinion, false,
                                          gears.pinion, scene_field::pinion_bore_radius);
   scene.wheel_bore_radius =
@@ -822,11 +826,57 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
                        scene_field::pinion_teeth_modelled);
   check_teeth_modelled(spec.wheel_teeth_modelled, spec.pair.wheel.teeth, spec.rim,
                        scene_field::wheel_teeth_modelled);
+}
 
-  // Position and the pairs in contact there.
-  const LineOfAction line = line_of_action(pair);
+bool has_tooth_faults(const GearModifications& modifications)
+{
+  for (const auto& [index, list] : modifications.by_tooth)
+    if (has_faults(list))
+      return true;
+  return false;
+}
+
+// The pairs in contact whose loaded flanks both exist at their contact point: a broken faulty
+// tooth, or one chipped where the pair would touch, drops its pair (issue 31: the other pairs
+// carry alone). None left: the mesh has lost contact there, and no stiffness exists.
+std::vector<int> carrying_pairs(const kinematics::GearPairGeometry& pair, const LineOfAction& line,
+                                const PlacedGears& gears, double reference,
+                                const std::vector<int>& pairs)
+{
+  std::vector<int> carrying;
+  for (const int j : pairs)
+  {
+    const double position = reference + j * pair.transverse_base_pitch;
+    const int mate = mate_tooth(gears.wheel, j);
+    if (flank_carries(gears.pinion_teeth.modifications_of(j), gears.pinion, position) &&
+        flank_carries(gears.wheel_teeth.modifications_of(mate), gears.wheel,
+                      std::abs(position - line.t2)))
+      carrying.push_back(j);
+  }
+  if (carrying.empty())
+    throw SolverFailure(
+        "gear scene placement",
+        "loss of contact: every pair in contact at this position has a broken or "
+        "chipped flank at its contact point (no tooth carries, no stiffness exists)");
+  return carrying;
+}
+
+// Position of the reference pair, the pairs in contact there (and over a rolling sweep), and
+// whether the modelled teeth can hold them.
+void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                  const LineOfAction& line, const PlacedGears& gears, GearPairScene& scene)
+{
+  const bool faults =
+      has_tooth_faults(spec.pinion_modifications) || has_tooth_faults(spec.wheel_modifications);
+  if (faults && !spec.swept_positions.empty())
+    throw InputError(scene_field::swept_positions,
+                     "a scene with tooth faults is meshed per position (a faulty tooth changes "
+                     "which pairs carry from one position to the next)");
   scene.reference_position = reference_position(spec, pair);
   scene.contact_pairs = pairs_in_contact(pair, scene.reference_position);
+  if (faults)
+    scene.contact_pairs =
+        carrying_pairs(pair, line, gears, scene.reference_position, scene.contact_pairs);
   scene.swept_pairs = swept_pairs(spec, pair, scene.contact_pairs);
   for (const auto& [count, field] :
        {std::pair{spec.pinion_teeth_modelled, scene_field::pinion_teeth_modelled},
@@ -836,68 +886,117 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
                        "must be at least the number of pairs in contact (" +
                            std::to_string(scene.swept_pairs.size()) + ") at this position" +
                            (spec.swept_positions.empty() ? "" : " or one the sweep turns to"));
+}
 
-  // Placement: the loaded flanks of pair 0 through the reference point.
-  const Eigen::Vector2d reference_point = line.at(scene.reference_position);
+// Placement: the loaded flanks of pair 0 through the reference point. An external wheel sits
+// beyond the pitch point, a ring's centre on the other side of the pinion's (the pitch point lies
+// on the ring's pitch circle, outside the pinion).
+void place_gears(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                 const LineOfAction& line, double reference, PlacedGears& gears)
+{
+  const Eigen::Vector2d reference_point = line.at(reference);
   gears.pinion_centre = Eigen::Vector2d(0., 0.);
-  // An external wheel sits beyond the pitch point, a ring's centre on the other side of the
-  // pinion's (the pitch point lies on the ring's pitch circle, outside the pinion).
   gears.wheel_centre =
       Eigen::Vector2d(spec.pair.wheel.internal ? -pair.centre_distance : pair.centre_distance, 0.);
   gears.pinion_rotation = placing_rotation(gears.pinion, gears.pinion_centre, reference_point);
   gears.wheel_rotation = placing_rotation(gears.wheel, gears.wheel_centre, reference_point);
+}
 
-  const double normal_force =
-      spec.pinion_torque / (0.5 * pair.pinion.base_diameter) / scene.contact_pairs.size();
-  std::vector<SceneContact> contacts;
-  for (const int j : scene.contact_pairs)
-    contacts.push_back(
-        predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force));
-  set_unloaded_transmission_error(spec, pair, line, gears, scene);
-  if (!spec.swept_positions.empty())
-    add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
+// The teeth in the scene: windows of pair indices centred on the contacting pairs.
+struct ModelWindows
+{
+  int pinion_first = 0, pinion_last = 0;         // pinion tooth indices
+  int wheel_first_pair = 0, wheel_last_pair = 0; // pair indices j of the wheel's teeth
+  int wheel_first = 0, wheel_last = 0;           // wheel tooth indices (its own frame)
+};
 
-  // Bodies: windows of modelled teeth centred on the contacting pairs, one id per flank.
-  const int pinion_first = window_start(scene.swept_pairs, spec.pinion_teeth_modelled);
-  const int pinion_last = pinion_first + static_cast<int>(spec.pinion_teeth_modelled) - 1;
-  const int wheel_first_pair = window_start(scene.swept_pairs, spec.wheel_teeth_modelled);
-  const int wheel_last_pair = wheel_first_pair + static_cast<int>(spec.wheel_teeth_modelled) - 1;
-  for (int j = std::max(pinion_first, wheel_first_pair);
-       j <= std::min(pinion_last, wheel_last_pair); ++j)
+// A faulty tooth outside the modelled teeth would be silently healthy: refused by its index.
+void check_faulty_teeth_modelled(const GearModifications& modifications, int first, int last,
+                                 const std::string& gear)
+{
+  for (const auto& [index, list] : modifications.by_tooth)
+    if (has_faults(list) && (index < first || index > last))
+      throw InputError("Gear pair/" + gear + "/faulty tooth",
+                       "tooth " + std::to_string(index) + " is not among the modelled teeth (" +
+                           std::to_string(first) + " to " + std::to_string(last) +
+                           ") at this position");
+}
+
+ModelWindows model_windows(const GearPairSceneSpec& spec, const PlacedGears& gears,
+                           GearPairScene& scene)
+{
+  ModelWindows w;
+  w.pinion_first = window_start(scene.swept_pairs, spec.pinion_teeth_modelled);
+  w.pinion_last = w.pinion_first + static_cast<int>(spec.pinion_teeth_modelled) - 1;
+  w.wheel_first_pair = window_start(scene.swept_pairs, spec.wheel_teeth_modelled);
+  w.wheel_last_pair = w.wheel_first_pair + static_cast<int>(spec.wheel_teeth_modelled) - 1;
+  for (int j = std::max(w.pinion_first, w.wheel_first_pair);
+       j <= std::min(w.pinion_last, w.wheel_last_pair); ++j)
     scene.modelled_pairs.push_back(j);
+  const int a = mate_tooth(gears.wheel, w.wheel_first_pair);
+  const int b = mate_tooth(gears.wheel, w.wheel_last_pair);
+  w.wheel_first = std::min(a, b);
+  w.wheel_last = std::max(a, b);
+  check_faulty_teeth_modelled(spec.pinion_modifications, w.pinion_first, w.pinion_last, "Pinion");
+  check_faulty_teeth_modelled(spec.wheel_modifications, w.wheel_first, w.wheel_last, "Wheel");
+  return w;
+}
 
+// Both bodies with one boundary id per flank, and the physical names.
+PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& gears,
+                            const GearPairScene& scene, const ModelWindows& w)
+{
   PlanarModel model;
   model.bodies.push_back(
       gear_body({"pinion body", scene_ids::pinion_body, scene_ids::pinion_bore,
                  scene_ids::pinion_cuts, pinion_flank_id, scene.pinion_bore_radius},
-                gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation, pinion_first,
-                pinion_last, spec.rim, spec.both_flanks));
+                gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation, w.pinion_first,
+                w.pinion_last, spec.rim, spec.both_flanks));
   const ToothProfile& wheel_tooth = gears.wheel;
-  const int wheel_first =
-      std::min(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
-  const int wheel_last =
-      std::max(mate_tooth(wheel_tooth, wheel_first_pair), mate_tooth(wheel_tooth, wheel_last_pair));
   model.bodies.push_back(gear_body(
       {"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
        [&wheel_tooth](int k) { return wheel_flank_id(mate_tooth(wheel_tooth, k)); },
        scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width,
        spec.wheel_bolt_holes, 0.5 * spec.wheel_bolt_hole_diameter, scene.wheel_bolt_circle_radius},
-      gears.wheel_teeth, gears.wheel_centre, gears.wheel_rotation, wheel_first, wheel_last,
+      gears.wheel_teeth, gears.wheel_centre, gears.wheel_rotation, w.wheel_first, w.wheel_last,
       spec.rim, spec.both_flanks));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},
                           {scene_ids::wheel_bore, "wheel bore"}};
-  for (int j = pinion_first; j <= pinion_last; ++j)
+  for (int j = w.pinion_first; j <= w.pinion_last; ++j)
     model.boundary_names[pinion_flank_id(j)] = "pinion flank " + std::to_string(j);
-  for (int j = wheel_first_pair; j <= wheel_last_pair; ++j)
+  for (int j = w.wheel_first_pair; j <= w.wheel_last_pair; ++j)
     model.boundary_names[wheel_flank_id(j)] = "wheel flank " + std::to_string(j);
   if (spec.rim == RimModel::sector)
   {
     model.boundary_names[scene_ids::pinion_cuts] = "pinion sector cuts";
     model.boundary_names[scene_ids::wheel_cuts] = "wheel sector cuts";
   }
+  return model;
+}
 
-  // The rims only carry the tooth loads to the bore: their cells may grow with depth below
-  // the root circle, which keeps a thin-rimmed wheel sector from dominating the cell count.
+// Where the faults of the modelled teeth need a finer mesh (a crack's faces and tip), placed.
+std::vector<SizeFocus> placed_fault_foci(const ToothProfiles& teeth, const Eigen::Vector2d& centre,
+                                         double rotation, int first, int last)
+{
+  std::vector<SizeFocus> foci;
+  for (int k = first; k <= last; ++k)
+    for (SizeFocus focus :
+         fault_foci(teeth.modifications_of(k), teeth.nominal(), loaded_side(teeth.nominal())))
+    {
+      focus.point = place(focus.point, centre, rotation + k * teeth.nominal().angular_pitch);
+      foci.push_back(focus);
+    }
+  return foci;
+}
+
+// Meshes the model. The rims only carry the tooth loads to the bore: their cells may grow with
+// depth below the root circle, which keeps a thin-rimmed wheel sector from dominating the cell
+// count.
+void mesh_gear_pair(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                    const PlacedGears& gears, const ModelWindows& w, const PlanarModel& model,
+                    const std::vector<SceneContact>& contacts, const std::string& file,
+                    GearPairScene& scene)
+{
   scene.pinion_root_radius = outline_root_radius(gears.pinion);
   scene.wheel_root_radius = outline_root_radius(gears.wheel);
   const auto depth_below_root = [&](const Eigen::Vector2d& x)
@@ -906,9 +1005,20 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
                     involute_sign(gears.wheel) *
                         (scene.wheel_root_radius - (x - gears.wheel_centre).norm()));
   };
-  model.node_offset = lead_offsets(spec, pair, gears);
+  std::vector<SizeFocus> foci =
+      placed_fault_foci(gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation,
+                        w.pinion_first, w.pinion_last);
+  const std::vector<SizeFocus> wheel_foci = placed_fault_foci(
+      gears.wheel_teeth, gears.wheel_centre, gears.wheel_rotation, w.wheel_first, w.wheel_last);
+  foci.insert(foci.end(), wheel_foci.begin(), wheel_foci.end());
   scene.info =
-      mesh_scene(model, contacts, spec.mesh, pair.common_face_width, file, depth_below_root);
+      mesh_scene(model, contacts, spec.mesh, pair.common_face_width, file, depth_below_root, foci);
+}
+
+// The scene's own numbers in SceneInfo (centres, rotations, line of action, quantities).
+void describe_scene(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                    const LineOfAction& line, const PlacedGears& gears, GearPairScene& scene)
+{
   SceneInfo& info = scene.info;
   info.kind = "gear pair";
   info.first_centre = gears.pinion_centre;
@@ -938,7 +1048,55 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
   if (!spec.pinion_modifications.empty() || !spec.wheel_modifications.empty())
     info.quantities.push_back({"unloaded_transmission_error", scene.unloaded_transmission_error,
                                "m", "the modifications' kinematic error at this position"});
-  info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace
+
+std::vector<int> carrying_gear_pairs(const GearPairSceneSpec& spec, double position)
+{
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const PlacedGears gears = generate_teeth(spec, pair);
+  try
+  {
+    return carrying_pairs(pair, line_of_action(pair), gears, position,
+                          pairs_in_contact(pair, position));
+  }
+  catch (const SolverFailure&)
+  {
+    return {};
+  }
+}
+
+GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)
+{
+  const auto start = std::chrono::steady_clock::now();
+  // Everything is checked before gmsh runs: the pair itself (interference, backlash, contact
+  // ratio) by the kinematics, the scene's own extent here.
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  check_scene_spec(spec);
+  PlacedGears gears = generate_teeth(spec, pair);
+  GearPairScene scene;
+  set_rims(spec, gears, scene);
+
+  const LineOfAction line = line_of_action(pair);
+  locate_pairs(spec, pair, line, gears, scene);
+  place_gears(spec, pair, line, scene.reference_position, gears);
+  const double normal_force =
+      spec.pinion_torque / (0.5 * pair.pinion.base_diameter) / scene.contact_pairs.size();
+  std::vector<SceneContact> contacts;
+  for (const int j : scene.contact_pairs)
+    contacts.push_back(
+        predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force));
+  set_unloaded_transmission_error(spec, pair, line, gears, scene);
+  if (!spec.swept_positions.empty())
+    add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
+
+  const ModelWindows windows = model_windows(spec, gears, scene);
+  PlanarModel model = gear_pair_model(spec, gears, scene, windows);
+  model.node_offset = lead_offsets(spec, pair, gears);
+  mesh_gear_pair(spec, pair, gears, windows, model, contacts, file, scene);
+  describe_scene(spec, pair, line, gears, scene);
+  scene.info.time_total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return scene;
 }
 

@@ -171,6 +171,11 @@ void check_tooth_modifications(const GearPairSceneSpec& spec);
 // pair at ℓ (m from T1), the same rule as the scene's contact_pairs.
 std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position);
 
+// The pairs j in contact at ℓ (m from T1, reference pair 0) whose loaded flanks both exist at
+// their contact point (issue 31: a broken or chipped faulty tooth drops its pair); empty: the
+// mesh has lost contact there. Checks the modifications as write_gear_pair_scene does.
+std::vector<int> carrying_gear_pairs(const GearPairSceneSpec& spec, double position);
+
 // The scene's numbers for reports (key, SI value, unit, description).
 std::vector<SceneQuantity> scene_quantities(const GearPairScene& scene);
 

@@ -1,6 +1,7 @@
 #include "geometry/tooth_modification.h"
 
 #include "errors/errors.h"
+#include "geometry/tooth_fault.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -40,6 +41,11 @@ std::string kind_name(ModificationKind kind)
     return "profile crowning";
   case ModificationKind::profile_slope:
     break;
+  case ModificationKind::tip_chipping:
+  case ModificationKind::broken_tooth:
+  case ModificationKind::spall:
+  case ModificationKind::root_crack:
+    return fault_name(kind);
   }
   return "profile slope";
 }
@@ -101,6 +107,11 @@ double depth_of(const ToothModification& m, const FlankRollRange& range, double 
   }
   case ModificationKind::profile_slope:
     break;
+  case ModificationKind::tip_chipping: // faults: geometry/tooth_fault.h
+  case ModificationKind::broken_tooth:
+  case ModificationKind::spall:
+  case ModificationKind::root_crack:
+    return 0.;
   }
   const double from_root =
       (roll - range.active_root) * (range.active_tip >= range.active_root ? 1. : -1.);
@@ -206,6 +217,8 @@ void check_modifications(const std::vector<ToothModification>& modifications,
   double tip_removal = 0.;
   for (const auto& m : modifications)
   {
+    if (is_fault(m.kind)) // checked by check_faults (geometry/tooth_fault.h)
+      continue;
     const std::string name = parameter + "/" + kind_name(m.kind);
     if (m.kind != ModificationKind::profile_slope && !(m.amount >= 0.))
       throw InputError(name, "must be 0 or positive (material removed, µm)");
@@ -331,7 +344,10 @@ ToothProfiles::ToothProfiles(ToothProfile nominal, GearModifications modificatio
     check_modifications(this->modifications.all_teeth, nominal_tooth, range, this->parameter);
   for (const auto& [index, list] : this->modifications.by_tooth)
     if (!list.empty())
+    {
       check_modifications(modifications_of(index), nominal_tooth, range, this->parameter);
+      check_faults(modifications_of(index), nominal_tooth, range, loaded_side, this->parameter);
+    }
 }
 
 const std::vector<ToothModification>& ToothProfiles::modifications_of(int index) const
@@ -354,13 +370,19 @@ const ToothProfile& ToothProfiles::tooth(int index) const
   const auto found = built.find(index);
   if (found != built.end())
     return found->second;
-  return built.emplace(index, modified_tooth(nominal_tooth, list, range, loaded_side, parameter))
+  // The profile modifications first (faults change no flank depth), then the faults cut the
+  // modified outline (geometry/tooth_fault.h).
+  return built
+      .emplace(index,
+               apply_faults(modified_tooth(nominal_tooth, list, range, loaded_side, parameter),
+                            list, loaded_side))
       .first->second;
 }
 
 double ToothProfiles::loaded_flank_removal(int index, double roll) const
 {
-  return removed_depth(modifications_of(index), range, roll, true);
+  return removed_depth(modifications_of(index), range, roll, true) +
+         fault_flank_depth(modifications_of(index), nominal_tooth, roll);
 }
 
 ReliefShape parse_relief_shape(const std::string& text, const std::string& parameter)

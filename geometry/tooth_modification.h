@@ -34,7 +34,12 @@ enum class ModificationKind
   tip_relief,
   root_relief,
   profile_crowning,
-  profile_slope
+  profile_slope,
+  // Tooth faults (geometry/tooth_fault.h): per tooth, in GearModifications::by_tooth.
+  tip_chipping, // amount: height removed from the tip (m), through the face
+  broken_tooth, // the tooth removed down to the root circle
+  spall,        // amount: depth (m), length: along the loaded flank (m), position: centre
+  root_crack    // amount: depth (m), angle, position: start (m radius; 0: critical section)
 };
 
 enum class ReliefShape
@@ -57,6 +62,12 @@ struct ToothModification
   double length = 0.; // m, roll length of a relief from the tip / root form (reliefs only)
   ReliefShape shape = ReliefShape::linear;
   ModifiedFlanks flanks = ModifiedFlanks::both;
+  // Tooth faults only (geometry/tooth_fault.h):
+  // spall: roll angle ξ = ρ/r_b of its centre on the loaded flank (rad; 0: the reference
+  // circle); crack: radius of its start on the loaded fillet (m; 0: the 30° critical section)
+  double position = 0.;
+  double angle = 0.; // rad, crack: angle of the crack path to the tooth centre line
+  double width = 0.; // m, spall: extent across the face (0: through the face)
 };
 
 // Where a gear's flank meets its mate, as roll lengths ρ on this gear's involute (m).

@@ -43,6 +43,9 @@ struct ProfilePoint
   // -1: the half of the tooth below the axis (y < 0, met first), +1: above (y > 0),
   // 0: points of the tip segment (which straddles the axis).
   int side = 0;
+  // A kink of the outline (the walls of a spall, the mouth and tip of a crack slit,
+  // geometry/tooth_fault.h): a new outline piece starts here, so no spline rounds it off.
+  bool corner = false;
 };
 
 // What the outline between two consecutive points is. A point shared by two segments carries

@@ -1,0 +1,186 @@
+#include "app/tooth_fault_parameters.h"
+
+#include "app/parameter_patterns.h"
+#include "app/units.h"
+#include "errors/errors.h"
+#include "geometry/scene_gear_pair.h"
+#include "geometry/tooth_fault.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace gearstiff::app
+{
+namespace
+{
+// Name, default and documentation of each entry: the names of issue 31; shapes and sources in
+// geometry/tooth_fault.h (docs/references.md §13).
+const char* const fault_entries[][3] = {
+    {"faulty tooth", "0",
+     "index of the faulty tooth: 0 = the tooth at the pitch point at pinion angle 0, counted "
+     "counter-clockwise in the gear's own frame"},
+    {"broken tooth", "false", "true: the faulty tooth is removed down to the root circle"},
+    {"tip chipping", "0", "height removed at the faulty tooth's tip, through the face [mm]"},
+    {"spall length", "0", "length of the spall along the loaded flank (involute arc) [mm]"},
+    {"spall depth", "0", "depth of the spall normal to the flank [mm]; 0 = no spall"},
+    {"spall width", "0",
+     "width of the spall across the face [mm]; 0 = through the face (only "
+     "that is modelled)"},
+    {"spall position", "reference circle",
+     "roll angle of the spall's centre on the loaded flank [deg], or 'reference circle'"},
+    {"crack depth", "0", "depth of the root crack along its path [mm]; 0 = no crack"},
+    {"crack angle", "45",
+     "angle of the crack path to the tooth centre line [deg]; 90 = straight "
+     "across the tooth"},
+    {"crack start", "critical section",
+     "where the crack starts on the loaded flank's fillet: 'critical section' (the 30° tangent "
+     "point of ISO 6336-3) or the diameter of a fillet point [mm]"},
+    {"crack width fraction", "1",
+     "share of the face the crack runs through; 1 = through the face (only that is modelled)"}};
+
+std::string path_of(bool wheel, const std::string& name)
+{
+  return std::string("Gear pair/") + (wheel ? "Wheel/" : "Pinion/") + name;
+}
+
+// The value as a number; `whole`: an integer.
+double value_of(const ModificationText& text, const std::string& name, bool wheel,
+                bool whole = false)
+{
+  std::istringstream stream(text.at(name));
+  double value = 0.;
+  std::string rest;
+  if (!(stream >> value) || (stream >> rest) || !std::isfinite(value) ||
+      (whole && value != std::round(value)))
+    throw InputError(path_of(wheel, name), "'" + shortened(text.at(name)) + "' is not " +
+                                               (whole ? "a whole number" : "a number"));
+  return value;
+}
+
+// A length in mm ≥ 0, in m.
+double length_of(const ModificationText& text, const std::string& name, bool wheel)
+{
+  const double value = value_of(text, name, wheel);
+  if (value < 0.)
+    throw InputError(path_of(wheel, name), "must be 0 or positive [mm]");
+  return value * mm;
+}
+
+bool flag_of(const ModificationText& text, const std::string& name, bool wheel)
+{
+  const std::string& value = text.at(name);
+  if (value == "true" || value == "yes")
+    return true;
+  if (value == "false" || value == "no")
+    return false;
+  throw InputError(path_of(wheel, name), "'" + shortened(value) + "' is not true or false");
+}
+
+geometry::ToothModification spall_of(const ModificationText& text, bool wheel, double depth)
+{
+  geometry::ToothModification spall;
+  spall.kind = geometry::ModificationKind::spall;
+  spall.amount = depth;
+  spall.length = length_of(text, "spall length", wheel);
+  spall.width = length_of(text, "spall width", wheel);
+  if (text.at("spall position") != "reference circle")
+  {
+    spall.position = value_of(text, "spall position", wheel) * degree;
+    if (!(spall.position > 0.))
+      throw InputError(path_of(wheel, "spall position"),
+                       "must be a positive roll angle [deg] or 'reference circle'");
+  }
+  return spall;
+}
+
+geometry::ToothModification crack_of(const ModificationText& text, bool wheel, double depth,
+                                     unsigned int dimension)
+{
+  geometry::ToothModification crack;
+  crack.kind = geometry::ModificationKind::root_crack;
+  crack.amount = depth;
+  crack.angle = value_of(text, "crack angle", wheel) * degree;
+  if (text.at("crack start") != "critical section")
+  {
+    crack.position = 0.5 * length_of(text, "crack start", wheel);
+    if (!(crack.position > 0.))
+      throw InputError(path_of(wheel, "crack start"),
+                       "must be 'critical section' or a positive diameter [mm]");
+  }
+  if (value_of(text, "crack width fraction", wheel) != 1.)
+    throw InputError(path_of(wheel, "crack width fraction"),
+                     dimension == 2 ? "a 2D model has no face width: only 1 (through the face)"
+                                    : "a partial crack front is not modelled yet: only 1 "
+                                      "(through the face)");
+  return crack;
+}
+} // namespace
+
+void declare_tooth_fault_entries(ParameterHandler& prm)
+{
+  for (const auto& [name, default_value, documentation] : fault_entries)
+    prm.declare_entry(name, default_value, Anything(), documentation);
+}
+
+void read_tooth_fault_entries(ParameterHandler& prm, ModificationText& text)
+{
+  for (const auto& entry : fault_entries)
+  {
+    const std::string name = entry[0];
+    const std::string value = prm.get(name);
+    const auto first = value.find_first_not_of(" \t");
+    text[name] = first == std::string::npos
+                     ? ""
+                     : value.substr(first, value.find_last_not_of(" \t") - first + 1);
+  }
+}
+
+void add_tooth_faults(const ModificationText& text, bool wheel, unsigned int dimension,
+                      geometry::GearModifications& modifications)
+{
+  using geometry::ModificationKind;
+  std::vector<geometry::ToothModification> faults;
+  if (flag_of(text, "broken tooth", wheel))
+    faults.push_back({ModificationKind::broken_tooth});
+  if (const double height = length_of(text, "tip chipping", wheel); height > 0.)
+  {
+    geometry::ToothModification chip;
+    chip.kind = ModificationKind::tip_chipping;
+    chip.amount = height;
+    faults.push_back(chip);
+  }
+  if (const double depth = length_of(text, "spall depth", wheel); depth > 0.)
+    faults.push_back(spall_of(text, wheel, depth));
+  if (const double depth = length_of(text, "crack depth", wheel); depth > 0.)
+    faults.push_back(crack_of(text, wheel, depth, dimension));
+  const int index = static_cast<int>(value_of(text, "faulty tooth", wheel, true));
+  if (std::abs(index) > geometry::max_pair_index)
+    throw InputError(path_of(wheel, "faulty tooth"),
+                     "must lie between -" + std::to_string(geometry::max_pair_index) + " and " +
+                         std::to_string(geometry::max_pair_index));
+  if (faults.empty())
+    return; // no fault: every tooth stays nominal
+  auto& list = modifications.by_tooth[index];
+  list.insert(list.end(), faults.begin(), faults.end());
+}
+
+std::string first_fault_entry(const PairModificationText& text)
+{
+  for (const bool wheel : {false, true})
+  {
+    const ModificationText& gear = wheel ? text.wheel : text.pinion;
+    if (gear.count("broken tooth") == 0)
+      continue;
+    if (gear.at("broken tooth") != "false")
+      return path_of(wheel, "broken tooth");
+    for (const char* name : {"tip chipping", "spall depth", "crack depth"})
+    {
+      std::istringstream stream(gear.at(name));
+      double value = 0.;
+      if (!(stream >> value) || value != 0.)
+        return path_of(wheel, name);
+    }
+  }
+  return "";
+}
+} // namespace gearstiff::app

@@ -1,0 +1,575 @@
+#include "geometry/tooth_fault.h"
+
+#include "errors/errors.h"
+#include "errors/format.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace gearstiff::geometry
+{
+namespace
+{
+// Distance (roll length, m) a spall keeps from the form circle and the tip corner: its walls
+// need points of their own, and the limits of the scene's smallest feature (errors/limits.h).
+constexpr double flank_margin = 20e-6;
+
+bool is_involute(ProfileSegment segment)
+{
+  return segment == ProfileSegment::root_relief || segment == ProfileSegment::flank ||
+         segment == ProfileSegment::relief;
+}
+
+double roll_of(const Eigen::Vector2d& p, double base_radius)
+{
+  return std::sqrt(std::max(0., p.squaredNorm() - base_radius * base_radius));
+}
+
+// Involute arc length from the base circle to roll length ρ: s = ρ²/(2 r_b).
+double involute_arc(double roll, double base_radius)
+{
+  return 0.5 * roll * roll / base_radius;
+}
+
+// Roll length (m) of a spall's centre: its roll angle times r_b, or (0) the reference circle's.
+double spall_centre(const ToothModification& spall, const ToothProfile& tooth)
+{
+  const double rb = tooth.base_radius;
+  return spall.position > 0.
+             ? spall.position * rb
+             : std::sqrt(std::max(0., tooth.reference_radius * tooth.reference_radius - rb * rb));
+}
+
+// The roll lengths of a spall's ends (m): the arc lengths s_c ± L/2 about its centre.
+std::pair<double, double> spall_rolls(const ToothModification& spall, const ToothProfile& tooth)
+{
+  const double base_radius = tooth.base_radius;
+  const double centre = involute_arc(spall_centre(spall, tooth), base_radius);
+  const double low = centre - 0.5 * spall.length, high = centre + 0.5 * spall.length;
+  return {low > 0. ? std::sqrt(2. * base_radius * low) : -1., std::sqrt(2. * base_radius * high)};
+}
+
+std::string entry(const std::string& parameter, const std::string& name)
+{
+  return parameter + "/" + name;
+}
+
+ProfilePoint lerp(const ProfilePoint& a, const ProfilePoint& b, double w)
+{
+  ProfilePoint p = a;
+  p.position = a.position + w * (b.position - a.position);
+  p.normal = (a.normal + w * (b.normal - a.normal)).normalized();
+  p.arc_length = a.arc_length + w * (b.arc_length - a.arc_length);
+  return p;
+}
+
+// The point of the loaded flank (side s) at roll length `roll`, interpolated between the
+// outline's points (160 per flank: the chord's sagitta is far below a micrometre).
+std::optional<ProfilePoint> flank_point(const ToothProfile& tooth, int side, double roll)
+{
+  const double rb = tooth.base_radius;
+  for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
+  {
+    const ProfilePoint &a = tooth.points[i], &b = tooth.points[i + 1];
+    if (a.side != side || b.side != side || !is_involute(a.segment) || !is_involute(b.segment))
+      continue;
+    const double ra = roll_of(a.position, rb), rb_ = roll_of(b.position, rb);
+    if ((roll - ra) * (roll - rb_) <= 0. && ra != rb_)
+      return lerp(a, b, (roll - ra) / (rb_ - ra));
+  }
+  return std::nullopt;
+}
+
+// Half chordal thickness (m) of the nominal tooth at the radius of a flank point.
+double half_thickness_at(const ProfilePoint& p)
+{
+  const double r = p.position.norm();
+  return r * std::sin(std::abs(std::atan2(p.position.y(), p.position.x())));
+}
+
+// Where the ray start + t·direction (t > `skip`) leaves the outline first (t, m), if it does.
+std::optional<double> ray_exit(const ToothProfile& tooth, const Eigen::Vector2d& start,
+                               const Eigen::Vector2d& direction, double skip)
+{
+  std::optional<double> best;
+  for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
+  {
+    const Eigen::Vector2d a = tooth.points[i].position, b = tooth.points[i + 1].position;
+    Eigen::Matrix2d m;
+    m << direction, a - b;
+    if (std::abs(m.determinant()) < 1e-300)
+      continue;
+    const Eigen::Vector2d ts = m.inverse() * (a - start);
+    if (ts(0) > skip && ts(1) >= 0. && ts(1) <= 1. && (!best || ts(0) < *best))
+      best = ts(0);
+  }
+  return best;
+}
+
+// Where the line origin + t·direction crosses the outline nearest t = 0: the segment index
+// and the weight along it.
+std::pair<std::size_t, double> line_crossing(const std::vector<ProfilePoint>& points,
+                                             const Eigen::Vector2d& origin,
+                                             const Eigen::Vector2d& direction, int side)
+{
+  std::pair<std::size_t, double> best{points.size(), 0.};
+  double best_t = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+  {
+    if (points[i].side != side && points[i + 1].side != side)
+      continue;
+    const Eigen::Vector2d a = points[i].position, b = points[i + 1].position;
+    Eigen::Matrix2d m;
+    m << direction, a - b;
+    if (std::abs(m.determinant()) < 1e-300)
+      continue;
+    const Eigen::Vector2d ts = m.inverse() * (a - origin);
+    if (ts(1) >= 0. && ts(1) < 1. && std::abs(ts(0)) < best_t)
+    {
+      best_t = std::abs(ts(0));
+      best = {i, ts(1)};
+    }
+  }
+  return best;
+}
+
+void check_chipping(const ToothModification& m, const ToothProfile& nominal,
+                    const std::string& parameter)
+{
+  const std::string name = entry(parameter, "tip chipping");
+  const double height = nominal.tip_radius - nominal.root_radius;
+  if (!(m.amount > 0.) || !std::isfinite(m.amount))
+    throw InputError(name, "must be a positive height [mm] (0: none)");
+  if (m.amount >= height)
+    throw InputError(name, format_mm(m.amount) + " is taller than the tooth (" + format_mm(height) +
+                               " from root to tip)");
+  if (nominal.tip_radius - m.amount <= nominal.form_radius + flank_margin)
+    throw InputError(name, format_mm(m.amount) +
+                               " reaches below the involute (the form circle lies " +
+                               format_mm(nominal.tip_radius - nominal.form_radius) +
+                               " below the tip): a deeper loss is a broken tooth");
+}
+
+void check_spall(const ToothModification& m, const ToothProfile& nominal,
+                 const FlankRollRange& range, int loaded_side, const std::string& parameter)
+{
+  if (m.width > 0.)
+    throw InputError(entry(parameter, "spall width"),
+                     "a spall narrower than the face is not modelled (the 2D outline is extruded "
+                     "through the face in 3D): 0 = through the face");
+  if (!(m.length > 0.) || !std::isfinite(m.length))
+    throw InputError(entry(parameter, "spall length"), "must be positive [mm]");
+  const auto [low, high] = spall_rolls(m, nominal);
+  const double centre_roll = spall_centre(m, nominal);
+  const double form = std::min(range.form, range.tip), tip = std::max(range.form, range.tip);
+  if (!(centre_roll > form && centre_roll < tip))
+    throw InputError(entry(parameter, "spall position"),
+                     "the centre (roll length " + format_mm(centre_roll) +
+                         ") lies outside the flank (" + format_mm(form) + " to " + format_mm(tip) +
+                         " from the base circle)");
+  if (low < form + flank_margin || high > tip - flank_margin)
+    throw InputError(entry(parameter, "spall length"),
+                     format_mm(m.length) + " at roll length " + format_mm(centre_roll) +
+                         " reaches beyond the flank (roll lengths " + format_mm(form) + " to " +
+                         format_mm(tip) + ")");
+  const auto centre = flank_point(nominal, loaded_side, centre_roll);
+  // A pit deeper than a quarter of the tooth's chordal thickness is no longer a surface fault
+  // (spalls are tens to a few hundred µm deep, Chaari et al. 2008).
+  const double limit = centre ? 0.5 * half_thickness_at(*centre) : 0.;
+  if (!(m.amount > 0.) || m.amount >= limit)
+    throw InputError(entry(parameter, "spall depth"),
+                     format_mm(m.amount) +
+                         " must be positive and less than a quarter of the tooth's thickness at "
+                         "the spall (" +
+                         format_mm(limit) + ")");
+}
+
+void check_crack(const ToothModification& m, const ToothProfile& nominal, int loaded_side,
+                 const std::string& parameter)
+{
+  if (!(m.angle > 0. && m.angle <= 0.5 * M_PI))
+    throw InputError(entry(parameter, "crack angle"),
+                     "must lie in (0, 90] degrees to the tooth centre line");
+  if (!(m.amount > 0.) || !std::isfinite(m.amount))
+    throw InputError(entry(parameter, "crack depth"), "must be a positive depth [mm] (0: none)");
+  const CrackPath path = crack_path(m, nominal, loaded_side);
+  if (!(path.across > 0.))
+    throw InputError(entry(parameter, "crack angle"),
+                     "the crack path leaves the tooth into the rim: use a larger angle");
+  // The tip must keep a ligament of a few slit widths to the opposite outline.
+  if (m.amount >= path.across - 4. * crack_opening)
+    throw InputError(entry(parameter, "crack depth"),
+                     format_mm(m.amount) +
+                         " is deeper than the tooth: the crack path crosses it in " +
+                         format_mm(path.across) + " at this angle");
+}
+
+// The radius-r point of the outline of side `side` within the fillet (the crack's given start).
+std::optional<ProfilePoint> fillet_point_at_radius(const ToothProfile& tooth, int side, double r)
+{
+  for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
+  {
+    const ProfilePoint &a = tooth.points[i], &b = tooth.points[i + 1];
+    if (a.side != side || edge_between(a, b).segment != ProfileSegment::fillet)
+      continue;
+    const double ra = a.position.norm(), rb = b.position.norm();
+    if ((r - ra) * (r - rb) <= 0. && ra != rb)
+      return lerp(a, b, (r - ra) / (rb - ra));
+  }
+  return std::nullopt;
+}
+
+// 2D outline of a broken tooth: the root arc between the two gap middles.
+std::vector<ProfilePoint> broken_outline(const ToothProfile& tooth)
+{
+  const ProfilePoint first = tooth.points.front(), last = tooth.points.back();
+  const double radius = first.position.norm();
+  const double from = std::atan2(first.position.y(), first.position.x());
+  const double to = std::atan2(last.position.y(), last.position.x());
+  const unsigned int n = 9;
+  std::vector<ProfilePoint> points;
+  for (unsigned int k = 0; k < n; ++k)
+  {
+    ProfilePoint p;
+    const double angle = from + (to - from) * k / (n - 1);
+    p.position = radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    p.normal = p.position.normalized();
+    p.arc_length = first.arc_length + radius * (angle - from);
+    p.segment = ProfileSegment::root;
+    p.side = angle < 0. ? -1 : 1;
+    points.push_back(p);
+  }
+  points.front() = first;
+  points.back() = last;
+  points.front().segment = points.back().segment = ProfileSegment::root;
+  return points;
+}
+
+// The outline cut by the circle r_cut: points beyond it removed, a tip arc at r_cut between
+// the two flank crossings.
+std::vector<ProfilePoint> chipped_outline(const std::vector<ProfilePoint>& points, double r_cut,
+                                          unsigned int arc_points)
+{
+  std::vector<ProfilePoint> result;
+  std::vector<ProfilePoint> crossings;
+  std::size_t insert_at = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const double r = points[i].position.norm();
+    if (r <= r_cut)
+      result.push_back(points[i]);
+    if (i + 1 == points.size())
+      break;
+    const double r_next = points[i + 1].position.norm();
+    if ((r - r_cut) * (r_next - r_cut) < 0.)
+    {
+      ProfilePoint c = lerp(points[i], points[i + 1], (r_cut - r) / (r_next - r));
+      c.position *= r_cut / c.position.norm();
+      c.segment = ProfileSegment::tip; // the new tip corner is a tip point (tooth_profile.h)
+      c.side = 0;
+      c.normal = c.position.normalized();
+      crossings.push_back(c);
+      if (crossings.size() == 1)
+      {
+        result.push_back(c);
+        insert_at = result.size();
+      }
+      else
+        result.push_back(c);
+    }
+  }
+  if (crossings.size() != 2)
+    throw SolverFailure("tooth fault outline", "the chipping circle does not cut both flanks");
+  const double from = std::atan2(crossings[0].position.y(), crossings[0].position.x());
+  const double to = std::atan2(crossings[1].position.y(), crossings[1].position.x());
+  std::vector<ProfilePoint> arc;
+  for (unsigned int k = 1; k + 1 < arc_points; ++k)
+  {
+    ProfilePoint p = crossings[0];
+    const double angle = from + (to - from) * k / (arc_points - 1);
+    p.position = r_cut * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    p.normal = p.position.normalized();
+    arc.push_back(p);
+  }
+  result.insert(result.begin() + insert_at, arc.begin(), arc.end());
+  return result;
+}
+
+// The loaded flank between the spall's ends moved inwards by its depth, with walls.
+std::vector<ProfilePoint> spalled_outline(const std::vector<ProfilePoint>& points,
+                                          const ToothModification& spall, const ToothProfile& tooth,
+                                          int loaded_side)
+{
+  const double base_radius = tooth.base_radius;
+  const auto [low, high] = spall_rolls(spall, tooth);
+  const auto inside = [&](double roll) { return roll > low && roll < high; };
+  std::vector<ProfilePoint> result;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    ProfilePoint p = points[i];
+    const bool on_flank = p.side == loaded_side && is_involute(p.segment);
+    const double roll = roll_of(p.position, base_radius);
+    if (on_flank && inside(roll))
+    {
+      p.position -= spall.amount * p.normal;
+      p.segment = ProfileSegment::root; // the pit is a free surface (no flank, no contact id)
+    }
+    result.push_back(p);
+    if (i + 1 == points.size())
+      break;
+    const ProfilePoint& q = points[i + 1];
+    if (!(on_flank && q.side == loaded_side && is_involute(q.segment)))
+      continue;
+    const double roll_next = roll_of(q.position, base_radius);
+    // The ends met between the two points, in the order of the outline (a spall shorter than
+    // the point spacing has both there); each toggles inside/outside.
+    std::vector<double> ends;
+    for (const double end : {low, high})
+      if ((end - roll) * (end - roll_next) < 0.)
+        ends.push_back(end);
+    std::sort(ends.begin(), ends.end(),
+              [roll](double a, double b) { return std::abs(a - roll) < std::abs(b - roll); });
+    bool in = inside(roll);
+    for (const double end : ends)
+    {
+      ProfilePoint wall = lerp(points[i], q, (end - roll) / (roll_next - roll));
+      ProfilePoint floor = wall;
+      floor.position -= spall.amount * wall.normal;
+      floor.segment = ProfileSegment::root;
+      wall.corner = floor.corner = true;
+      // Entering the pit: the flank point first; leaving it: the floor first.
+      if (in)
+        std::swap(wall, floor);
+      result.push_back(wall);
+      result.push_back(floor);
+      in = !in;
+    }
+  }
+  return result;
+}
+
+// The outline with the crack's slit: mouth, one face, tip, the other face, mouth.
+std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& points,
+                                          const CrackPath& path, int loaded_side)
+{
+  const Eigen::Vector2d across(-path.direction.y(), path.direction.x());
+  const double half = 0.5 * crack_opening;
+  const auto [i_a, w_a] =
+      line_crossing(points, path.start + half * across, path.direction, loaded_side);
+  const auto [i_b, w_b] =
+      line_crossing(points, path.start - half * across, path.direction, loaded_side);
+  if (i_a >= points.size() || i_b >= points.size())
+    throw SolverFailure("tooth fault outline", "the crack's faces miss the fillet");
+  const bool a_first = i_a + w_a < i_b + w_b;
+  const std::size_t i1 = a_first ? i_a : i_b, i2 = a_first ? i_b : i_a;
+  const double w1 = a_first ? w_a : w_b, w2 = a_first ? w_b : w_a;
+  const double offset1 = a_first ? half : -half;
+  ProfilePoint mouth1 = lerp(points[i1], points[i1 + 1], w1);
+  ProfilePoint mouth2 = lerp(points[i2], points[i2 + 1], w2);
+  const double face = path.depth - half;
+  ProfilePoint end1 = mouth1, tip = mouth1, end2 = mouth2;
+  end1.position = path.start + offset1 * across + face * path.direction;
+  end1.normal = -std::copysign(1., offset1) * across;
+  end2.position = path.start - offset1 * across + face * path.direction;
+  end2.normal = std::copysign(1., offset1) * across;
+  tip.position = path.start + path.depth * path.direction;
+  tip.normal = -path.direction;
+  std::vector<ProfilePoint> result(points.begin(), points.begin() + i1 + 1);
+  for (ProfilePoint p : {mouth1, end1, tip, end2, mouth2})
+  {
+    p.corner = true;
+    p.segment = mouth1.segment;
+    p.side = loaded_side;
+    result.push_back(p);
+  }
+  result.insert(result.end(), points.begin() + i2 + 1, points.end());
+  return result;
+}
+} // namespace
+
+bool is_fault(ModificationKind kind)
+{
+  return kind == ModificationKind::tip_chipping || kind == ModificationKind::broken_tooth ||
+         kind == ModificationKind::spall || kind == ModificationKind::root_crack;
+}
+
+bool has_faults(const std::vector<ToothModification>& modifications)
+{
+  return std::any_of(modifications.begin(), modifications.end(),
+                     [](const ToothModification& m) { return is_fault(m.kind); });
+}
+
+std::string fault_name(ModificationKind kind)
+{
+  switch (kind)
+  {
+  case ModificationKind::tip_chipping:
+    return "tip chipping";
+  case ModificationKind::broken_tooth:
+    return "broken tooth";
+  case ModificationKind::spall:
+    return "spall depth";
+  default:
+    break;
+  }
+  return "crack depth";
+}
+
+Eigen::Vector2d critical_section_point(const ToothProfile& nominal, int side)
+{
+  // The tangent's inclination to the centre line falls along the fillet from near 90° at the
+  // root to the flank's near the form circle; 30° lies between two points.
+  const double target = M_PI / 6.;
+  std::optional<Eigen::Vector2d> previous;
+  double previous_angle = 0.;
+  for (const ProfilePoint& p : nominal.points)
+  {
+    if (p.side != side || p.segment != ProfileSegment::fillet)
+      continue;
+    const double angle = std::atan2(std::abs(p.normal.x()), std::abs(p.normal.y()));
+    if (previous && (previous_angle - target) * (angle - target) <= 0. && angle != previous_angle)
+      return *previous +
+             (target - previous_angle) / (angle - previous_angle) * (p.position - *previous);
+    previous = p.position;
+    previous_angle = angle;
+  }
+  throw SolverFailure("tooth fault outline", "no fillet point with a 30° tangent");
+}
+
+CrackPath crack_path(const ToothModification& crack, const ToothProfile& nominal, int loaded_side)
+{
+  CrackPath path;
+  if (crack.position > 0.)
+  {
+    const auto start = fillet_point_at_radius(nominal, loaded_side, crack.position);
+    if (!start)
+      throw InputError("crack start",
+                       "radius " + format_mm(crack.position) + " is not on the fillet");
+    path.start = start->position;
+  }
+  else
+    path.start = critical_section_point(nominal, loaded_side);
+  // Towards the root (−x on an external tooth) and across the centre line.
+  path.direction = Eigen::Vector2d(-std::cos(crack.angle), -loaded_side * std::sin(crack.angle));
+  path.depth = crack.amount;
+  // The tooth ends where the path leaves it through the opposite flank or fillet, and at the
+  // latest at the mirror image of its start across the centre line (a path that dives into the
+  // rim: the crack then has crossed the tooth's whole thickness).
+  const double sine = std::sin(crack.angle);
+  path.across = sine > 0. ? 2. * std::abs(path.start.y()) / sine : 0.;
+  const auto exit = ray_exit(nominal, path.start, path.direction, 1e-7);
+  if (exit && (path.start + *exit * path.direction).y() * loaded_side < 0.)
+    path.across = std::min(path.across, *exit);
+  return path;
+}
+
+void check_faults(const std::vector<ToothModification>& modifications, const ToothProfile& nominal,
+                  const FlankRollRange& range, int loaded_side, const std::string& parameter)
+{
+  if (!has_faults(modifications))
+    return;
+  if (nominal.internal)
+    throw InputError(entry(parameter, "faulty tooth"),
+                     "tooth faults are modelled on external gears only");
+  for (const ToothModification& m : modifications)
+    switch (m.kind)
+    {
+    case ModificationKind::tip_chipping:
+      check_chipping(m, nominal, parameter);
+      break;
+    case ModificationKind::spall:
+      check_spall(m, nominal, range, loaded_side, parameter);
+      break;
+    case ModificationKind::root_crack:
+      try
+      {
+        check_crack(m, nominal, loaded_side, parameter);
+      }
+      catch (const InputError& e)
+      {
+        if (e.parameter() != "crack start")
+          throw;
+        throw InputError(entry(parameter, "crack start"), e.reason());
+      }
+      break;
+    default:
+      break;
+    }
+}
+
+ToothProfile apply_faults(const ToothProfile& tooth,
+                          const std::vector<ToothModification>& modifications, int loaded_side)
+{
+  ToothProfile faulty = tooth;
+  // A broken tooth makes the others moot.
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::broken_tooth)
+    {
+      faulty.points = broken_outline(tooth);
+      faulty.tip_radius = tooth.points.front().position.norm();
+      return faulty;
+    }
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::spall)
+      faulty.points = spalled_outline(faulty.points, m, tooth, loaded_side);
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::root_crack)
+      faulty.points =
+          cracked_outline(faulty.points, crack_path(m, tooth, loaded_side), loaded_side);
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::tip_chipping)
+    {
+      faulty.points = chipped_outline(faulty.points, tooth.tip_radius - m.amount, 8);
+      faulty.tip_radius = tooth.tip_radius - m.amount;
+    }
+  return faulty;
+}
+
+bool flank_carries(const std::vector<ToothModification>& modifications, const ToothProfile& nominal,
+                   double roll)
+{
+  for (const ToothModification& m : modifications)
+  {
+    if (m.kind == ModificationKind::broken_tooth)
+      return false;
+    if (m.kind == ModificationKind::tip_chipping &&
+        roll > roll_of(Eigen::Vector2d(nominal.tip_radius - m.amount, 0.), nominal.base_radius))
+      return false;
+  }
+  return fault_flank_depth(modifications, nominal, roll) == 0.; // not over a spall's pit
+}
+
+double fault_flank_depth(const std::vector<ToothModification>& modifications,
+                         const ToothProfile& nominal, double roll)
+{
+  double depth = 0.;
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::spall)
+    {
+      const auto [low, high] = spall_rolls(m, nominal);
+      if (roll > low && roll < high)
+        depth += m.amount;
+    }
+  return depth;
+}
+
+std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,
+                                  const ToothProfile& nominal, int loaded_side)
+{
+  std::vector<SizeFocus> foci;
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::root_crack)
+    {
+      const CrackPath path = crack_path(m, nominal, loaded_side);
+      const unsigned int n = static_cast<unsigned int>(std::ceil(path.depth / crack_opening));
+      for (unsigned int k = 0; k < n; ++k)
+        foci.push_back(
+            {path.start + (path.depth * k / n) * path.direction, crack_face_size, crack_opening});
+      foci.push_back({path.start + path.depth * path.direction, crack_tip_size, crack_tip_radius});
+    }
+  return foci;
+}
+} // namespace gearstiff::geometry

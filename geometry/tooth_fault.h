@@ -1,0 +1,91 @@
+// Tooth faults (issue 31) as modification kinds of geometry/tooth_modification.h: a chipped tip,
+// a broken tooth, a spall (pit) on the loaded flank and a root crack, each applied to one tooth
+// (GearModifications::by_tooth) after its profile modifications. The 2D outline is extruded
+// through the face in 3D, so every fault here runs through the whole face width (a partial-width
+// spall or crack is refused by the parameters, app/tooth_fault_parameters.cc).
+//
+// Shapes (tooth frame of geometry/tooth_profile.h, external gears only):
+//  - tip chipping h: the tooth cut by the circle r_a − h (a flat, radial-normal new tip);
+//    h must leave the involute (r_a − h above the form circle);
+//  - broken tooth: the tooth removed down to the root circle (the outline between the two gap
+//    middles becomes the root arc);
+//  - spall of depth d over the involute arc length L centred on roll length ρ_c = ξ·r_b of the
+//    loaded flank (ξ its roll angle; default the reference circle): the flank between the arc
+//    lengths s_c ± L/2 (s = ρ²/(2 r_b)) moved inwards by d along its normal, with straight walls at
+//    both ends (a rectangular pit through the face, the shape of Chaari et al. 2008's spall model,
+//    docs/references.md §13). The pit's floor and walls are free surfaces (segment root: no
+//    flank, no contact id): a pit deeper than the pair's approach (a few µm) is not reached, and
+//    a pair whose contact point lies over it carries nothing (flank_carries), the contact width
+//    lost in Chaari et al.'s model;
+//  - root crack of depth a at angle ν to the tooth centre line, starting on the loaded flank's
+//    fillet (tension side) at the 30° tangent point of ISO 6336-3 (the critical section,
+//    docs/references.md §13) or at a given radius: an open slit of width crack_opening whose
+//    faces run parallel to the crack path and meet at the tip in a 90° V. ν = 90° runs across the
+//    tooth perpendicular to its centre line; smaller ν dips towards the root (Tian 2004,
+//    Chaari et al. 2009 measure ν the same way). The slit's faces are free surfaces (an open
+//    crack: faces that close under load are not modelled).
+// Every kink a fault makes (spall walls, slit mouth, faces, tip) is a ProfilePoint::corner, so
+// the scene starts a new outline piece there.
+#pragma once
+
+#include "geometry/mesh_planar.h"
+#include "geometry/tooth_modification.h"
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace gearstiff::geometry
+{
+constexpr double crack_opening = 40e-6;     // m, width of the slit between the crack faces
+constexpr double crack_tip_size = 10e-6;    // m, cell size within crack_tip_radius of the tip
+constexpr double crack_tip_radius = 0.1e-3; // m
+// m, cell size along the crack faces (half the opening: two cells across the slit's width)
+constexpr double crack_face_size = 0.5 * crack_opening;
+
+bool is_fault(ModificationKind kind);
+bool has_faults(const std::vector<ToothModification>& modifications);
+// The parameter word of a fault's size ("tip chipping", "broken tooth", "spall depth",
+// "crack depth").
+std::string fault_name(ModificationKind kind);
+
+// The faults' checks against the nominal tooth (InputError naming `parameter` + "/<entry>"):
+// chipping taller than the tooth or reaching below the form circle, a spall outside the flank
+// or deeper than a quarter of the tooth's chordal thickness there, a crack deeper than the tooth
+// along its path, an internal gear.
+void check_faults(const std::vector<ToothModification>& modifications, const ToothProfile& nominal,
+                  const FlankRollRange& range, int loaded_side, const std::string& parameter);
+
+// The faults of `modifications` applied to `tooth` (the nominal outline with the profile
+// modifications already applied).
+ToothProfile apply_faults(const ToothProfile& tooth,
+                          const std::vector<ToothModification>& modifications, int loaded_side);
+
+// Whether the loaded flank exists at roll length `roll` (m): not where the tooth is broken,
+// chipped away or over a spall's pit (a pair whose contact point lies there carries nothing).
+bool flank_carries(const std::vector<ToothModification>& modifications, const ToothProfile& nominal,
+                   double roll);
+// Depth (m) a spall removes from the loaded flank at roll length `roll` (its share of the
+// unloaded transmission error).
+double fault_flank_depth(const std::vector<ToothModification>& modifications,
+                         const ToothProfile& nominal, double roll);
+
+// Where the mesh must be finer because of the faults (tooth frame): along a crack's faces
+// (crack_face_size) and at its tip (crack_tip_size within crack_tip_radius).
+std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,
+                                  const ToothProfile& nominal, int loaded_side);
+
+// A root crack's path (tooth frame).
+struct CrackPath
+{
+  Eigen::Vector2d start;     // m, on the loaded fillet
+  Eigen::Vector2d direction; // unit, into the tooth
+  double depth = 0.;         // m, a
+  double across = 0.;        // m, length of the path from the start to the opposite outline
+};
+CrackPath crack_path(const ToothModification& crack, const ToothProfile& nominal, int loaded_side);
+
+// The fillet point of side `side` whose tangent is inclined at 30° to the tooth centre line
+// (ISO 6336-3 critical section), m, tooth frame.
+Eigen::Vector2d critical_section_point(const ToothProfile& nominal, int side);
+} // namespace gearstiff::geometry
