@@ -314,17 +314,14 @@ void plot(CommandContext& context, const std::string& table, const std::string& 
   context.plot("plot_cycloid_loads.py", {mode, csv.path()}, png, description);
 }
 
-void run(dealii::ParameterHandler& prm, CommandContext& context)
+void report_load_case(Report& report, const CycloidLoadsParameters& p)
 {
-  const CycloidLoadsParameters p = parse_cycloid_loads_parameters(prm);
-  Report& report = context.report;
-  const double torque = p.settings.output_torque;
   report.add_text("load case",
                   "crank angle φ_h = " + format_number(p.settings.crank_angle / degree, 5) +
                       "°, eccentric held, disc bore on a bearing free to turn, rollers on fixed "
                       "pins (frictionless), output pins tied to one rigid output member carrying "
                       "M_c = " +
-                      format_number(torque, 5) +
+                      format_number(p.settings.output_torque, 5) +
                       " N·m (stiffness/cycloid_loads.h: the static equivalent of running)");
   report.add_text("model",
                   fem::to_string(p.settings.elasticity.model) + " 2D, Q" +
@@ -334,17 +331,21 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                       format_number(p.settings.scene.disc_width / mm, 4) +
                       " mm, E = " + format_number(p.settings.material.youngs_modulus / 1e9, 4) +
                       " GPa, μ = " + format_number(p.settings.contact.friction_coefficient, 3));
-  if (p.settings.scene.mesh.dimension != 2)
-    throw InputError("Mesh/dimension", "the cycloid load analysis runs in 2D (3D: not yet)");
+}
 
-  // Every case of every profile in one list, spread over the ranks.
-  const std::vector<stiffness::CycloidLoadSettings> bases = profile_settings(p, context);
+// Every case of every profile in one list (to be spread over the ranks), and where each
+// profile's cases lie in it.
+struct CaseList
+{
   std::vector<stiffness::CycloidLoadSettings> cases;
   std::vector<ProfileCases> profiles;
-  const std::vector<double> levels =
-      p.torsional ? stiffness::torsional_levels(torque, p.torque_steps) : std::vector<double>{};
-  const std::vector<double> angles =
-      stiffness::crank_angles(p.settings.crank_angle, p.sweep_span, p.sweep_positions);
+};
+
+CaseList list_cases(const std::vector<stiffness::CycloidLoadSettings>& bases,
+                    const std::vector<double>& levels, const std::vector<double>& angles)
+{
+  CaseList list;
+  auto& cases = list.cases;
   for (unsigned int b = 0; b < bases.size(); ++b)
   {
     ProfileCases pc;
@@ -352,17 +353,15 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     // The position is the ramp's +M_c level when there is a ramp. Each level of either sign
     // starts from the flank its torque closes (stiffness/cycloid_sweep.h), so a corrected
     // profile's backlash lies between its −3% and +3% levels.
-    const std::vector<double>& profile_levels = levels;
     pc.first_level = cases.size();
-    pc.levels = profile_levels.size();
-    pc.position =
-        profile_levels.empty() ? cases.size() : pc.first_level + profile_levels.size() - 1;
-    for (const double t : profile_levels)
+    pc.levels = levels.size();
+    pc.position = levels.empty() ? cases.size() : pc.first_level + levels.size() - 1;
+    for (const double t : levels)
     {
       cases.push_back(bases[b]);
       cases.back().output_torque = t;
     }
-    if (profile_levels.empty())
+    if (levels.empty())
       cases.push_back(bases[b]);
     pc.first_sweep = cases.size();
     pc.sweep = angles.size();
@@ -371,102 +370,124 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       cases.push_back(bases[b]);
       cases.back().crank_angle = a;
     }
-    profiles.push_back(pc);
+    list.profiles.push_back(pc);
   }
-  check_work(p, cases.size(), levels.size() * bases.size(),
-             dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator));
-  context.pcout << "cycloid-loads: " << cases.size() << " solves on "
-                << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
-                << std::endl;
-  if (p.write_vtu && context.writes_files())
-    for (const auto& pc : profiles)
-    {
-      auto& c = cases[pc.position];
-      c.output_base = "cycloid_" + pc.name;
-      c.output_directory =
-          std::filesystem::path(context.output_file("vtu/" + c.output_base + ".pvtu",
-                                                    "displacement, stress, contact (VTU)"))
-              .parent_path()
-              .string();
-    }
-  // From the rank that solved the case (each takes its own, fem::distribute_items).
-  const auto progress = context.progress_counter(
-      "cycloid-loads",
-      double(cases.size()) / dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator));
-  const std::vector<stiffness::CycloidLoadResult> results = stiffness::solve_cycloid_cases(
-      context.mpi_communicator, cases, scratch_stem(context.mpi_communicator), progress);
+  return list;
+}
 
-  const bool published = bases[0].scene.ring.rollers == 20 &&
-                         std::abs(bases[0].scene.ring.roller_circle_radius - 96e-3) < 1e-12 &&
-                         std::abs(bases[0].scene.ring.eccentricity - 3e-3) < 1e-12 &&
-                         std::abs(torque - 440.) < 1e-9;
-  // With friction the ramp is path dependent: each profile's loop runs on one contact problem
-  // that keeps the stick/slip history (serial; every rank solves it, the answer is the same).
-  const bool friction = p.torsional && p.settings.contact.friction_coefficient > 0.;
-  std::vector<stiffness::CycloidHysteresis> loops;
-  if (friction)
-    for (unsigned int b = 0; b < bases.size(); ++b)
-    {
-      stiffness::CycloidLoadSettings s = bases[b];
-      s.scene_file = scratch_stem(context.mpi_communicator) + "_loop_" + profiles[b].name + ".msh";
-      loops.push_back(stiffness::cycloid_hysteresis(s));
-      if (context.is_root()) // every rank solves the same loop
-        context.progress("cycloid-loads", "friction loop " + std::to_string(b + 1) + "/" +
-                                              std::to_string(bases.size()) + ", " +
-                                              profiles[b].name + ": " +
-                                              std::to_string(loops.back().steps) + " steps, " +
-                                              format_number(loops.back().time, 3) + " s");
-    }
-  for (unsigned int b = 0; b < profiles.size(); ++b)
+// VTU of each profile's position, when asked for and files are written.
+void request_vtu(const CycloidLoadsParameters& p, CommandContext& context, CaseList& list)
+{
+  if (!(p.write_vtu && context.writes_files()))
+    return;
+  for (const auto& pc : list.profiles)
   {
-    const ProfileCases& pc = profiles[b];
-    const std::string prefix = b == 0 ? "" : pc.name + "_";
-    report_position(report, results[pc.position], prefix, pc.name, published && b == 0);
-    if (friction)
-    {
-      const stiffness::CycloidHysteresis& loop = loops[b];
-      report.add_value(prefix + "torsional_stiffness", loop.stiffness * arcmin, "N·m/arcmin",
-                       pc.name + ": friction loop, secant between 50% and 100% of M_c, both "
-                                 "loading branches");
-      report.add_value(prefix + "lost_motion", loop.lost_motion / arcmin, "arcmin",
-                       pc.name + ": friction loop, mid-width rotation between ±3% of M_c");
-      const bool resolved = loop.hysteresis > loop.hysteresis_resolution;
-      report.add_value(
-          prefix + "hysteresis", loop.hysteresis / arcmin, "arcmin",
-          pc.name + ": friction loop width at ±3% of M_c (falling − rising)" +
-              (resolved ? std::string() : std::string(", BELOW RESOLUTION: no measurable loop")));
-      report.add_value(prefix + "hysteresis_resolution", loop.hysteresis_resolution / arcmin,
-                       "arcmin",
-                       pc.name + ": what the loop width is known to (half the difference of its "
-                                 "+3% and −3% estimates)");
-      if (!resolved)
-        report.add_text(prefix + "hysteresis below resolution",
-                        pc.name + ": loop width " + format_number(loop.hysteresis / arcmin, 2) +
-                            " arcmin is below its resolution " +
-                            format_number(loop.hysteresis_resolution / arcmin, 2) +
-                            " arcmin: no measurable friction loop at this μ and mesh");
-      report.add_value(prefix + "loop_wall_time", loop.time, "s",
-                       pc.name + ": wall time of the friction loop (" + std::to_string(loop.steps) +
-                           " load steps)");
-    }
-    if (pc.levels > 0)
-    {
-      const std::vector<stiffness::CycloidLoadResult> ramp(
-          results.begin() + pc.first_level, results.begin() + pc.first_level + pc.levels);
-      const stiffness::TorsionalCurve curve = stiffness::torsional_curve(torque, ramp);
-      if (!friction)
-      {
-        report.add_value(prefix + "torsional_stiffness", curve.stiffness * arcmin, "N·m/arcmin",
-                         pc.name + ": secant between 50% and 100% of M_c, both directions");
-        report.add_value(prefix + "lost_motion", curve.lost_motion / arcmin, "arcmin",
-                         pc.name + ": rotation between ±3% of M_c");
-        report.add_value(prefix + "hysteresis", curve.hysteresis / arcmin, "arcmin",
-                         pc.name + ": loading/unloading difference (frictionless: 0)");
-      }
-      report.add_value(prefix + "backlash", curve.backlash / arcmin, "arcmin",
-                       pc.name + ": rigid rotation between the flanks (closing rotations ±)");
-    }
+    auto& c = list.cases[pc.position];
+    c.output_base = "cycloid_" + pc.name;
+    c.output_directory =
+        std::filesystem::path(context.output_file("vtu/" + c.output_base + ".pvtu",
+                                                  "displacement, stress, contact (VTU)"))
+            .parent_path()
+            .string();
   }
+}
+
+std::vector<stiffness::CycloidLoadResult>
+solve_cases(CommandContext& context, const std::vector<stiffness::CycloidLoadSettings>& cases)
+{
+  const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+  context.pcout << "cycloid-loads: " << cases.size() << " solves on " << ranks << " rank(s)"
+                << std::endl;
+  // From the rank that solved the case (each takes its own, fem::distribute_items).
+  const auto progress = context.progress_counter("cycloid-loads", double(cases.size()) / ranks);
+  return stiffness::solve_cycloid_cases(context.mpi_communicator, cases,
+                                        scratch_stem(context.mpi_communicator), progress);
+}
+
+// The drive and load of docs/references.md §4, whose published values the FE is compared with.
+bool is_published_case(const stiffness::CycloidLoadSettings& s)
+{
+  return s.scene.ring.rollers == 20 &&
+         std::abs(s.scene.ring.roller_circle_radius - 96e-3) < 1e-12 &&
+         std::abs(s.scene.ring.eccentricity - 3e-3) < 1e-12 &&
+         std::abs(s.output_torque - 440.) < 1e-9;
+}
+
+// With friction the ramp is path dependent: each profile's loop runs on one contact problem
+// that keeps the stick/slip history (serial; every rank solves it, the answer is the same).
+std::vector<stiffness::CycloidHysteresis>
+friction_loops(CommandContext& context, const std::vector<stiffness::CycloidLoadSettings>& bases,
+               const std::vector<ProfileCases>& profiles)
+{
+  std::vector<stiffness::CycloidHysteresis> loops;
+  for (unsigned int b = 0; b < bases.size(); ++b)
+  {
+    stiffness::CycloidLoadSettings s = bases[b];
+    s.scene_file = scratch_stem(context.mpi_communicator) + "_loop_" + profiles[b].name + ".msh";
+    loops.push_back(stiffness::cycloid_hysteresis(s));
+    if (context.is_root()) // every rank solves the same loop
+      context.progress("cycloid-loads", "friction loop " + std::to_string(b + 1) + "/" +
+                                            std::to_string(bases.size()) + ", " + profiles[b].name +
+                                            ": " + std::to_string(loops.back().steps) + " steps, " +
+                                            format_number(loops.back().time, 3) + " s");
+  }
+  return loops;
+}
+
+void report_friction_loop(Report& report, const std::string& prefix, const std::string& name,
+                          const stiffness::CycloidHysteresis& loop)
+{
+  report.add_value(prefix + "torsional_stiffness", loop.stiffness * arcmin, "N·m/arcmin",
+                   name + ": friction loop, secant between 50% and 100% of M_c, both "
+                          "loading branches");
+  report.add_value(prefix + "lost_motion", loop.lost_motion / arcmin, "arcmin",
+                   name + ": friction loop, mid-width rotation between ±3% of M_c");
+  const bool resolved = loop.hysteresis > loop.hysteresis_resolution;
+  report.add_value(
+      prefix + "hysteresis", loop.hysteresis / arcmin, "arcmin",
+      name + ": friction loop width at ±3% of M_c (falling − rising)" +
+          (resolved ? std::string() : std::string(", BELOW RESOLUTION: no measurable loop")));
+  report.add_value(prefix + "hysteresis_resolution", loop.hysteresis_resolution / arcmin, "arcmin",
+                   name + ": what the loop width is known to (half the difference of its "
+                          "+3% and −3% estimates)");
+  if (!resolved)
+    report.add_text(prefix + "hysteresis below resolution",
+                    name + ": loop width " + format_number(loop.hysteresis / arcmin, 2) +
+                        " arcmin is below its resolution " +
+                        format_number(loop.hysteresis_resolution / arcmin, 2) +
+                        " arcmin: no measurable friction loop at this μ and mesh");
+  report.add_value(prefix + "loop_wall_time", loop.time, "s",
+                   name + ": wall time of the friction loop (" + std::to_string(loop.steps) +
+                       " load steps)");
+}
+
+// The frictionless ramp's torsion figures (with friction only the backlash: the loop gives the
+// rest).
+void report_torque_ramp(Report& report, const std::string& prefix, const ProfileCases& pc,
+                        const std::vector<stiffness::CycloidLoadResult>& results, double torque,
+                        bool friction)
+{
+  const std::vector<stiffness::CycloidLoadResult> ramp(
+      results.begin() + pc.first_level, results.begin() + pc.first_level + pc.levels);
+  const stiffness::TorsionalCurve curve = stiffness::torsional_curve(torque, ramp);
+  if (!friction)
+  {
+    report.add_value(prefix + "torsional_stiffness", curve.stiffness * arcmin, "N·m/arcmin",
+                     pc.name + ": secant between 50% and 100% of M_c, both directions");
+    report.add_value(prefix + "lost_motion", curve.lost_motion / arcmin, "arcmin",
+                     pc.name + ": rotation between ±3% of M_c");
+    report.add_value(prefix + "hysteresis", curve.hysteresis / arcmin, "arcmin",
+                     pc.name + ": loading/unloading difference (frictionless: 0)");
+  }
+  report.add_value(prefix + "backlash", curve.backlash / arcmin, "arcmin",
+                   pc.name + ": rigid rotation between the flanks (closing rotations ±)");
+}
+
+void add_tables(Report& report, const CycloidLoadsParameters& p, const std::vector<double>& levels,
+                const std::vector<ProfileCases>& profiles,
+                const std::vector<stiffness::CycloidLoadResult>& results,
+                const std::vector<stiffness::CycloidHysteresis>& loops)
+{
   add_contact_table(report, "cycloid_rollers", profiles, results, true);
   report.add_text("roller gaps",
                   "gap_* of cycloid_rollers: the roller clearance Δr_i of `gearstiff cycloid` "
@@ -478,28 +499,70 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   add_contact_table(report, "cycloid_pins", profiles, results, false);
   if (p.torsional)
     add_torsion_table(report, levels, profiles, results);
-  if (friction)
+  if (!loops.empty())
     add_hysteresis_table(report, profiles, loops);
   if (p.sweep_positions > 0)
     for (const auto& pc : profiles)
       add_sweep_table(report, pc, results);
+}
 
-  if (context.writes_files() && context.is_root())
+void plot_charts(CommandContext& context, const CycloidLoadsParameters& p,
+                 const std::vector<ProfileCases>& profiles, bool friction)
+{
+  if (!(context.writes_files() && context.is_root()))
+    return;
+  plot(context, "cycloid_rollers", "rollers", "cycloid_rollers.png",
+       "roller forces P_i, FE and analytic, per profile");
+  plot(context, "cycloid_pins", "pins", "cycloid_pins.png", "output-pin forces Q_j");
+  if (p.torsional)
+    plot(context, "cycloid_torsion", "torsion", "cycloid_torsion.png",
+         "output rotation against torque (torsional stiffness, lost motion)");
+  if (friction)
+    plot(context, "cycloid_hysteresis", "hysteresis", "cycloid_hysteresis.png",
+         "hysteresis loop with friction: output rotation against torque, per profile");
+  for (const auto& pc : profiles)
+    if (p.sweep_positions > 0)
+      plot(context, "cycloid_sweep_" + pc.name, "sweep", "cycloid_sweep_" + pc.name + ".png",
+           "P_i(φ_h) and Q_j(φ_h) traces, " + pc.name);
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  const CycloidLoadsParameters p = parse_cycloid_loads_parameters(prm);
+  Report& report = context.report;
+  const double torque = p.settings.output_torque;
+  report_load_case(report, p);
+  if (p.settings.scene.mesh.dimension != 2)
+    throw InputError("Mesh/dimension", "the cycloid load analysis runs in 2D (3D: not yet)");
+
+  const std::vector<stiffness::CycloidLoadSettings> bases = profile_settings(p, context);
+  const std::vector<double> levels =
+      p.torsional ? stiffness::torsional_levels(torque, p.torque_steps) : std::vector<double>{};
+  CaseList list =
+      list_cases(bases, levels,
+                 stiffness::crank_angles(p.settings.crank_angle, p.sweep_span, p.sweep_positions));
+  check_work(p, list.cases.size(), levels.size() * bases.size(),
+             dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator));
+  request_vtu(p, context, list);
+  const std::vector<stiffness::CycloidLoadResult> results = solve_cases(context, list.cases);
+  const bool friction = p.torsional && p.settings.contact.friction_coefficient > 0.;
+  const std::vector<stiffness::CycloidHysteresis> loops =
+      friction ? friction_loops(context, bases, list.profiles)
+               : std::vector<stiffness::CycloidHysteresis>{};
+
+  const bool published = is_published_case(bases[0]);
+  for (unsigned int b = 0; b < list.profiles.size(); ++b)
   {
-    plot(context, "cycloid_rollers", "rollers", "cycloid_rollers.png",
-         "roller forces P_i, FE and analytic, per profile");
-    plot(context, "cycloid_pins", "pins", "cycloid_pins.png", "output-pin forces Q_j");
-    if (p.torsional)
-      plot(context, "cycloid_torsion", "torsion", "cycloid_torsion.png",
-           "output rotation against torque (torsional stiffness, lost motion)");
+    const ProfileCases& pc = list.profiles[b];
+    const std::string prefix = b == 0 ? "" : pc.name + "_";
+    report_position(report, results[pc.position], prefix, pc.name, published && b == 0);
     if (friction)
-      plot(context, "cycloid_hysteresis", "hysteresis", "cycloid_hysteresis.png",
-           "hysteresis loop with friction: output rotation against torque, per profile");
-    for (const auto& pc : profiles)
-      if (p.sweep_positions > 0)
-        plot(context, "cycloid_sweep_" + pc.name, "sweep", "cycloid_sweep_" + pc.name + ".png",
-             "P_i(φ_h) and Q_j(φ_h) traces, " + pc.name);
+      report_friction_loop(report, prefix, pc.name, loops[b]);
+    if (pc.levels > 0)
+      report_torque_ramp(report, prefix, pc, results, torque, friction);
   }
+  add_tables(report, p, levels, list.profiles, results, loops);
+  plot_charts(context, p, list.profiles, friction);
 }
 
 const CommandRegistration registration(Command{

@@ -3,6 +3,7 @@
 #include "app/cycloid_scene_parameters.h"
 #include "app/fe_contact_parameters.h"
 #include "app/geometry_parameters.h"
+#include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
 
@@ -10,15 +11,6 @@
 
 namespace gearstiff::app
 {
-namespace
-{
-using dealii::ParameterHandler;
-using dealii::Patterns::Bool;
-using dealii::Patterns::Double;
-using dealii::Patterns::Integer;
-using dealii::Patterns::Selection;
-} // namespace
-
 void declare_cycloid_loads_parameters(ParameterHandler& prm)
 {
   const geometry::CycloidSceneSpec scene = stiffness::default_cycloid_load_scene();
@@ -70,7 +62,7 @@ CycloidLoadsParameters parse_cycloid_loads_parameters(ParameterHandler& prm)
   stiffness::CycloidLoadSettings& s = p.settings;
   s.scene = stiffness::default_cycloid_load_scene();
   parse_cycloid_scene_parameters(prm, s.scene);
-  s.scene.mesh = parse_scene_mesh_parameters(prm);
+  s.scene.mesh = parse_scene_mesh_parameters(prm, s.scene.mesh);
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Cycloid loads");

@@ -4,6 +4,7 @@
 #include "app/units.h"
 #include "dynamics/lateral_model.h"
 #include "dynamics/lateral_response.h"
+#include "dynamics/lateral_sweep.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -121,11 +122,71 @@ void report_statics(const LateralParameters& p, const LateralModel& model, Repor
                          format_number(s.bearing_force(j, 1), 6) + " N)");
 }
 
+// Mesh orders drawn on the Campbell chart and searched for crossings.
+constexpr unsigned int campbell_mesh_orders = 3;
+
+// Where natural frequency `mode` (index among the ascending frequencies) meets the k-th mesh
+// order k·ρ·Ω, ρ = f_mesh/|Ω_c| [Hz per rad/s], between carrier speeds low and high [rad/s]
+// where the difference changes sign: bisection to 1e-10 of the bracket.
+double crossing_speed(const LateralModel& model, unsigned int mode, double order_slope, double low,
+                      double high)
+{
+  auto difference = [&](double speed)
+  { return model.gyroscopic_frequencies(speed)[mode] - order_slope * speed; };
+  double f_low = difference(low);
+  for (int i = 0; i < 40 && high - low > 1e-10 * high; ++i)
+  {
+    const double middle = 0.5 * (low + high);
+    const double f_middle = difference(middle);
+    if ((f_middle > 0.) == (f_low > 0.))
+    {
+      low = middle;
+      f_low = f_middle;
+    }
+    else
+      high = middle;
+  }
+  return 0.5 * (low + high);
+}
+
+// Crossings of the mesh-order lines with the natural frequencies (Campbell chart): a table of
+// order, mode, carrier and input speed, frequency.
+void report_crossings(const LateralParameters& p, const LateralModel& model,
+                      const std::vector<double>& speeds,
+                      const std::vector<std::vector<double>>& frequencies, Report& report)
+{
+  const double slope = p.excitation.mesh_frequency / std::abs(p.carrier_speed); // Hz per rad/s
+  auto& table = report.add_table("lateral_campbell_crossings",
+                                 {"order", "mode", "carrier_speed", "input_speed", "frequency"},
+                                 {"-", "-", "rpm", "rpm", "Hz"});
+  unsigned int count = 0;
+  for (unsigned int k = 1; k <= campbell_mesh_orders; ++k)
+    for (std::size_t mode = 0; mode < frequencies.front().size(); ++mode)
+      for (std::size_t i = 1; i < speeds.size(); ++i)
+      {
+        const double before = frequencies[i - 1][mode] - k * slope * speeds[i - 1];
+        const double after = frequencies[i][mode] - k * slope * speeds[i];
+        // Rigid modes (0 Hz) meet the lines at standstill only; a crossing lies inside a step.
+        if (frequencies[i][mode] <= 0. || !((before > 0.) && (after <= 0.)))
+          continue;
+        const double speed = crossing_speed(model, mode, k * slope, speeds[i - 1], speeds[i]);
+        table.add_row({double(k), double(mode + 1), speed / rpm,
+                       speed * p.input_speed / p.carrier_speed / rpm, k * slope * speed});
+        ++count;
+      }
+  report.add_value("campbell_crossings", count, "-",
+                   "crossings of the mesh orders 1.." + std::to_string(campbell_mesh_orders) +
+                       " with the natural frequencies on the Campbell chart");
+  report.add_value("mesh_frequency_per_carrier_rpm", slope * rpm, "Hz/rpm",
+                   "mesh frequency per carrier speed (order 1 line)");
+}
+
 void report_campbell(const LateralParameters& p, const LateralModel& model, Report& report)
 {
   // From standstill to twice the nominal carrier speed (or 1000 rpm when the carrier is held).
   const double top = std::abs(p.carrier_speed) > 0. ? 2. * std::abs(p.carrier_speed) : 1000. * rpm;
   const unsigned int points = 41;
+  const bool orders = std::abs(p.carrier_speed) > 0. && p.excitation.mesh_frequency > 0.;
   std::vector<std::string> columns{"carrier_speed"}, units{"rpm"};
   const unsigned int n_modes = model.free_dofs().size();
   for (unsigned int k = 0; k < n_modes; ++k)
@@ -133,21 +194,84 @@ void report_campbell(const LateralParameters& p, const LateralModel& model, Repo
     columns.push_back("f" + std::to_string(k + 1));
     units.push_back("Hz");
   }
+  for (unsigned int k = 1; orders && k <= campbell_mesh_orders; ++k)
+  {
+    columns.push_back("mesh_order_" + std::to_string(k));
+    units.push_back("Hz");
+  }
   auto& table = report.add_table("lateral_campbell", columns, units);
+  std::vector<double> speeds;
+  std::vector<std::vector<double>> frequencies;
   for (unsigned int i = 0; i < points; ++i)
   {
-    const double speed = top * i / (points - 1);
-    std::vector<double> row{speed / rpm};
-    for (const double f : model.gyroscopic_frequencies(speed))
-      row.push_back(f);
+    speeds.push_back(top * i / (points - 1));
+    frequencies.push_back(model.gyroscopic_frequencies(speeds.back()));
+    std::vector<double> row{speeds.back() / rpm};
+    row.insert(row.end(), frequencies.back().begin(), frequencies.back().end());
+    for (unsigned int k = 1; orders && k <= campbell_mesh_orders; ++k)
+      row.push_back(k * p.excitation.mesh_frequency * speeds.back() / std::abs(p.carrier_speed));
     table.add_row(row);
   }
+  if (orders)
+    report_crossings(p, model, speeds, frequencies, report);
   const std::vector<double> nominal = model.gyroscopic_frequencies(p.carrier_speed);
   report.add_value("carrier_speed", p.carrier_speed / rpm, "rpm", "nominal carrier speed");
   report.add_value("lowest_frequency_running", nominal.size() > 1 ? nominal[1] : 0., "Hz",
                    "second-lowest natural frequency at the nominal carrier speed, gyroscopic "
                    "and centripetal terms included (the lowest is the rigid rotation)");
 }
+
+// Speed sweep: K_v, bearing forces and orbit amplitudes against the input speed.
+void report_sweep(const LateralParameters& p, const LateralModel& model, CommandContext& context)
+{
+  Report& report = context.report;
+  const unsigned int runs =
+      p.sweep_points * (p.sweep.direction == dynamics::SweepDirection::both ? 2 : 1);
+  const auto progress = context.progress_counter("dynamics lateral sweep", runs);
+  const LateralSweepResult sweep =
+      lateral_speed_sweep(model, p.load, p.excitation, p.run, p.sweep, progress);
+  auto& table = report.add_table(
+      "lateral_speed_sweep",
+      {"input_speed", "carrier_speed", "mesh_frequency", "direction", "status", "kv_max",
+       "sun_mesh_force_max", "ring_mesh_force_max", "bearing_force_carrier", "bearing_force_ring",
+       "bearing_force_sun", "orbit_carrier", "orbit_ring", "orbit_sun", "separation_fraction",
+       "time_step"},
+      {"rpm", "rpm", "Hz", "-", "-", "-", "N", "N", "N", "N", "N", "µm", "µm", "µm", "-", "µs"});
+  unsigned int counts[4] = {0, 0, 0, 0};
+  unsigned long steps = 0;
+  for (const LateralSweepPoint& point : sweep.points)
+  {
+    const LateralWindowSummary& s = point.summary;
+    table.add_row({std::abs(point.input_speed) / rpm, std::abs(point.carrier_speed) / rpm,
+                   point.mesh_frequency, point.descending ? 1. : 0.,
+                   double(static_cast<int>(point.status)), s.kv_max, s.sun_mesh_force_max,
+                   s.ring_mesh_force_max, s.bearing_force_max[0], s.bearing_force_max[1],
+                   s.bearing_force_max[2], s.orbit_amplitude[0] * 1e6, s.orbit_amplitude[1] * 1e6,
+                   s.orbit_amplitude[2] * 1e6, s.separation_fraction, point.time_step * 1e6});
+    ++counts[static_cast<int>(point.status)];
+    steps += point.steps;
+  }
+  report.add_text(
+      "lateral sweep",
+      sweep_direction_name(p.sweep.direction) +
+          (p.sweep.continuation ? ", each speed continuing from the previous one's state" : "") +
+          "; window " + std::to_string(p.sweep.window_periods) + " mesh periods after " +
+          format_number(sweep.settle_time * 1e3, 4) +
+          " ms (decay of the slowest mode to 1/1000 unless Simulation/steady state "
+          "start); direction 0 up, 1 down; status 0 = " +
+          sweep_status_name(SweepStatus::valid) +
+          ", 1 = " + sweep_status_name(SweepStatus::diverged) +
+          ", 2 = " + sweep_status_name(SweepStatus::contact_loss) +
+          ", 3 = " + sweep_status_name(SweepStatus::not_steady));
+  report.add_value("lateral_sweep_points", sweep.points.size(), "-", "runs of the lateral sweep");
+  report.add_value("lateral_sweep_diverged", counts[1], "-", "runs where RK4 diverged");
+  report.add_value("lateral_sweep_contact_loss", counts[2], "-",
+                   "runs where a linear mesh force turned negative");
+  report.add_value("lateral_sweep_not_steady", counts[3], "-", "runs not periodic in the window");
+  report.add_value("lateral_sweep_steps", double(steps), "-", "RK4 steps of the sweep");
+  report.add_value("lateral_sweep_time", sweep.wall_time, "s", "wall time of the lateral sweep");
+}
+
 // RK4 on the lateral stage: orbits and bearing forces of the central members.
 void report_response(const LateralParameters& p, const LateralModel& model, Report& report)
 {
@@ -215,6 +339,10 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
   if (p.gyroscopic)
     report_campbell(p, model, report);
   report_response(p, model, report);
+  report.add_value("ring_mesh_offset", p.ring_mesh_offset, "base pitches",
+                   "each planet's ring mesh after its sun mesh (Parker & Lin 2004 phasing)");
+  if (p.sweep_points > 0)
+    report_sweep(p, model, context);
 
   if (context.writes_files())
   {
@@ -227,6 +355,12 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
       const TemporaryCsv csv(report, "lateral_orbit");
       context.plot("plot_lateral.py", {"orbit", csv.path()}, "lateral_orbit.png",
                    "orbits of sun, ring and carrier (x, y)");
+    }
+    if (p.sweep_points > 0)
+    {
+      const TemporaryCsv csv(report, "lateral_speed_sweep");
+      context.plot("plot_lateral.py", {"sweep", csv.path()}, "lateral_speed_sweep.png",
+                   "K_v, bearing forces and orbit amplitudes against input speed");
     }
     if (p.gyroscopic)
     {

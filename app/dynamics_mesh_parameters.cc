@@ -541,14 +541,35 @@ namespace gearstiff::app
 using namespace dynamics_input;
 
 // issue 30: the lateral model's view of a Train mesh (dynamics_parameters.h).
-TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio)
+TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio,
+                                    int teeth_a, int teeth_b, double module)
 {
   const std::string section = train_mesh_section(m);
   const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
   const double ratio = physics.file ? physics.file->pair.contact_ratio : contact_ratio;
-  return {physics.stiffness.mean_stiffness(ratio), physics.damping,
-          physics.stiffness.description() + ", mean " +
-              format_number(physics.stiffness.mean_stiffness(ratio) * 1e-6, 6) + " N/µm",
-          physics.stiffness, ratio};
+  TrainMeshMean mean{physics.stiffness.mean_stiffness(ratio),
+                     physics.damping,
+                     physics.stiffness.description() + ", mean " +
+                         format_number(physics.stiffness.mean_stiffness(ratio) * 1e-6, 6) + " N/µm",
+                     physics.stiffness,
+                     ratio,
+                     std::nullopt,
+                     std::nullopt};
+  if (physics.file && module > 0.)
+    mean.stiffness_driver = dynamics::match_stiffness_file(*physics.file, teeth_a, teeth_b, module,
+                                                           section + "/stiffness file");
+  prm.enter_subsection("Simulation");
+  const bool nonlinear = prm.get("mesh model") == "nonlinear";
+  prm.leave_subsection();
+  if (nonlinear)
+    mean.nonlinear = build_nonlinear_mesh(
+        physics.nonlinear, section, static_cast<unsigned int>(std::abs(teeth_a)),
+        [&](const dynamics::StiffnessFile& file)
+        {
+          if (module > 0.)
+            dynamics::match_stiffness_file(file, teeth_a, teeth_b, module,
+                                           section + "/transmission error file");
+        });
+  return mean;
 }
 } // namespace gearstiff::app

@@ -77,7 +77,14 @@ struct TrainMeshMean
   std::string description;       // the stiffness source, for the report
   dynamics::MeshStiffness curve; // k(x) for the time response
   double contact_ratio = 0.;     // [-] ε_α of k(x)
+  // Simulation/mesh model = nonlinear: the mesh law of the section (teeth: the mesh's gears,
+  // signed, for the pitch deviation's order and the TE file's check when `module` > 0 [m]).
+  std::optional<dynamics::NonlinearMesh> nonlinear;
+  // An FE file's pair checked against the mesh's gears (`module` > 0): 0 when gear a was the FE
+  // pinion (drove), 1 when gear b was; empty otherwise.
+  std::optional<unsigned int> stiffness_driver;
 };
 TrainMeshMean parse_train_mesh_mean(dealii::ParameterHandler& prm, unsigned int m,
-                                    double contact_ratio);
+                                    double contact_ratio, int teeth_a = 0, int teeth_b = 0,
+                                    double module = 0.);
 } // namespace gearstiff::app

@@ -3,6 +3,7 @@
 #include "app/dynamics_parameters_internal.h"
 #include "app/kinematics_parameters.h"
 #include "app/parameter_patterns.h"
+#include "app/train_parameter_entries.h"
 #include "app/units.h"
 #include "dynamics/split_path_case.h"
 #include "dynamics/train_model.h"
@@ -153,33 +154,6 @@ void parse_numbered_train(ParameterHandler& prm, DynamicsParameters& p)
 
 namespace
 {
-// "name: v1 v2 ..., ..." with `count` non-negative finite numbers per name (`units` for the
-// message): suspensions (stiffness damping), face widths, bore diameters.
-std::vector<std::pair<std::string, std::vector<double>>>
-parse_named_numbers(const std::string& text, unsigned int count, const std::string& parameter,
-                    const std::string& units)
-{
-  std::vector<std::pair<std::string, std::vector<double>>> entries_read;
-  for (const std::string& entry : comma_entries(text))
-  {
-    const auto colon = entry.find(':');
-    std::istringstream values(colon == std::string::npos ? "" : entry.substr(colon + 1));
-    std::string name = colon == std::string::npos ? "" : entry.substr(0, colon);
-    name.erase(0, name.find_first_not_of(" \t"));
-    name.erase(name.find_last_not_of(" \t") + 1);
-    std::vector<double> numbers(count);
-    bool good = !name.empty();
-    for (double& v : numbers)
-      good = good && (values >> v) && v >= 0. && std::isfinite(v);
-    std::string rest;
-    if (!good || (values >> rest))
-      throw InputError(parameter, "entry '" + entry + "' is not 'name: " + units +
-                                      "' with non-negative numbers");
-    entries_read.emplace_back(name, numbers);
-  }
-  return entries_read;
-}
-
 // The Train entries of the dynamics beyond the kinematics' description.
 void parse_train_extras(ParameterHandler& prm, dynamics::TrainDynamicsInput& input)
 {

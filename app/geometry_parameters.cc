@@ -29,8 +29,40 @@ geometry::CycloidDiscSpec parse_cycloid_disc_parameters(ParameterHandler& prm)
   return spec;
 }
 
+namespace
+{
+// The four cell sizes of "Mesh" [mm]: name, its documentation, the member.
+struct MeshSizeEntry
+{
+  const char* name;
+  const char* documentation;
+  double geometry::SceneMeshSettings::*member;
+};
+
+const std::vector<MeshSizeEntry>& mesh_size_entries()
+{
+  static const std::vector<MeshSizeEntry> entries = {
+      {"contact size",
+       "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest Hertz half-width",
+       &geometry::SceneMeshSettings::contact_size},
+      {"fine radius",
+       "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the largest Hertz "
+       "half-width",
+       &geometry::SceneMeshSettings::fine_radius},
+      {"body size", "cell size in the teeth away from contact [mm]",
+       &geometry::SceneMeshSettings::body_size},
+      {"rim size", "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size",
+       &geometry::SceneMeshSettings::rim_size}};
+  return entries;
+}
+
+// The built-in pair's normal module [m], the reference of the `auto` mesh sizes.
+constexpr double reference_module = 2.5e-3;
+} // namespace
+
 void declare_scene_mesh_parameters(ParameterHandler& prm,
-                                   const geometry::SceneMeshSettings& defaults)
+                                   const geometry::SceneMeshSettings& defaults,
+                                   bool sizes_follow_module)
 {
   prm.enter_subsection("Mesh");
   prm.declare_entry("dimension", std::to_string(defaults.dimension), Integer(2, 3),
@@ -38,32 +70,48 @@ void declare_scene_mesh_parameters(ParameterHandler& prm,
                     "width");
   prm.declare_entry("layers", std::to_string(defaults.layers), Integer(1, 1000),
                     "hexahedron layers across the face width [-] (3D)");
-  prm.declare_entry("contact size", format_number(defaults.contact_size / mm, 10), Double(0.),
-                    "h_c, cell size at the contact points [mm]; 0 = a tenth of the smallest "
-                    "Hertz half-width");
-  prm.declare_entry("fine radius", format_number(defaults.fine_radius / mm, 10), Double(0.),
-                    "radius meshed at h_c around each contact point [mm]; 0 = 1.5 × the "
-                    "largest Hertz half-width");
   prm.declare_entry("growth rate", format_number(defaults.growth_rate, 10), Double(0.01, 1.),
                     "cell size increase per unit distance beyond the fine radius [-]");
-  prm.declare_entry("body size", format_number(defaults.body_size / mm, 10), Double(0.),
-                    "cell size in the teeth away from contact [mm]");
-  prm.declare_entry("rim size", format_number(defaults.rim_size / mm, 10), Double(0.),
-                    "largest cell size, reached deep in the gear rims [mm]; 0 = 4 × body size");
+  for (const MeshSizeEntry& entry : mesh_size_entries())
+  {
+    const std::string value = format_number(defaults.*entry.member / mm, 10);
+    if (sizes_follow_module)
+      prm.declare_entry(entry.name, "auto", Anything(),
+                        std::string(entry.documentation) + "; auto = " + value +
+                            " mm for the built-in pair's module 2.5 mm, scaled by m_n / 2.5 mm");
+    else
+      prm.declare_entry(entry.name, value, Anything(),
+                        std::string(entry.documentation) + "; auto = " + value + " mm");
+  }
   prm.leave_subsection();
 }
 
-geometry::SceneMeshSettings parse_scene_mesh_parameters(ParameterHandler& prm)
+double mesh_module_scale(const kinematics::GearPairSpec& pair)
+{
+  return kinematics::has_split_path_teeth(pair) ? 1. : pair.pinion.normal_module / reference_module;
+}
+
+geometry::SceneMeshSettings
+parse_scene_mesh_parameters(ParameterHandler& prm, const geometry::SceneMeshSettings& defaults,
+                            double module_scale, std::vector<kinematics::DerivedSize>* derived)
 {
   geometry::SceneMeshSettings mesh;
   prm.enter_subsection("Mesh");
   mesh.dimension = prm.get_integer("dimension");
   mesh.layers = prm.get_integer("layers");
-  mesh.contact_size = prm.get_double("contact size") * mm;
-  mesh.fine_radius = prm.get_double("fine radius") * mm;
   mesh.growth_rate = prm.get_double("growth rate");
-  mesh.body_size = prm.get_double("body size") * mm;
-  mesh.rim_size = prm.get_double("rim size") * mm;
+  for (const MeshSizeEntry& entry : mesh_size_entries())
+  {
+    const std::string name = std::string("Mesh/") + entry.name;
+    double& size = mesh.*entry.member;
+    if (!read_length_or_auto(prm.get(entry.name), name, "size", size))
+      continue;
+    size = defaults.*entry.member * module_scale;
+    if (derived && module_scale != 1.)
+      derived->push_back({name, size,
+                          "the built-in pair's " + format_number(defaults.*entry.member / mm, 6) +
+                              " mm × m_n / 2.5 mm"});
+  }
   prm.leave_subsection();
   return mesh;
 }

@@ -7,10 +7,12 @@
 #include "errors/errors.h"
 #include "geometry/cycloid_disc.h"
 #include "geometry/scene_gear_pair.h"
+#include "kinematics/automatic_sizes.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace gearstiff::app
 {
@@ -18,10 +20,20 @@ namespace gearstiff::app
 void declare_cycloid_disc_parameters(dealii::ParameterHandler& prm);
 geometry::CycloidDiscSpec parse_cycloid_disc_parameters(dealii::ParameterHandler& prm);
 
-// Subsection "Mesh" (dimension, layers, sizes) with `defaults` as default values.
+// Subsection "Mesh" (dimension, layers, sizes) with `defaults` as default values. With
+// `sizes_follow_module` (gear-pair scenes) the four sizes default to `auto`: `defaults` for the
+// built-in pair's module (2.5 mm), scaled by m_n / 2.5 mm for any other gear, so that a module-10
+// gear is not meshed at 0.7 mm nor a module-0.5 gear at a cell larger than its tooth.
 void declare_scene_mesh_parameters(dealii::ParameterHandler& prm,
-                                   const geometry::SceneMeshSettings& defaults);
-geometry::SceneMeshSettings parse_scene_mesh_parameters(dealii::ParameterHandler& prm);
+                                   const geometry::SceneMeshSettings& defaults,
+                                   bool sizes_follow_module = false);
+// `auto` sizes take `defaults` × `module_scale`; each one that differs from `defaults` is listed
+// in `derived` (when given) for the report.
+geometry::SceneMeshSettings parse_scene_mesh_parameters(
+    dealii::ParameterHandler& prm, const geometry::SceneMeshSettings& defaults = {},
+    double module_scale = 1., std::vector<kinematics::DerivedSize>* derived = nullptr);
+// m_n / 2.5 mm, exactly 1 for the teeth of the built-in pair (its results stay bit-identical).
+double mesh_module_scale(const kinematics::GearPairSpec& pair);
 
 // Subsection "Gear pair scene": teeth modelled, bores and rim, `defaults` as default values.
 // The position and the load and material of the Hertz size estimate are not declared here: the

@@ -57,23 +57,8 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
 bool parse_automatic_diameter(const std::string& text, bool wheel, const std::string& key,
                               double& diameter)
 {
-  if (text == "auto")
-    return true;
-  const std::string parameter = kinematics::gear_parameter_name(wheel, key);
-  std::size_t used = 0;
-  double value = -1.;
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !(value >= 0.))
-    throw InputError(parameter, "'" + text + "' is neither a diameter >= 0 [mm] nor auto");
-  diameter = value * mm;
-  return false;
+  return read_length_or_auto(text, kinematics::gear_parameter_name(wheel, key), "diameter",
+                             diameter);
 }
 
 // `automatic_tip`/`automatic_bore` are set when the diameter reads "auto" (resolved once both

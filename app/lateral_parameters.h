@@ -7,6 +7,7 @@
 
 #include "dynamics/lateral_model.h"
 #include "dynamics/lateral_response.h"
+#include "dynamics/lateral_sweep.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
@@ -27,6 +28,12 @@ struct LateralParameters
   // Time response (Simulation/time step, simulated time, start; RK4): mesh k(x) per planet.
   dynamics::LateralMeshExcitation excitation;
   dynamics::LateralRunSettings run;
+  // [base pitches] each planet's ring mesh after its sun mesh (Parker & Lin 2004)
+  double ring_mesh_offset = 0.;
+  // Speed sweep (section Speed sweep, Simulation/mesh model; 0 points: none).
+  unsigned int sweep_points = 0;
+  double sweep_minimum_speed = 0., sweep_maximum_speed = 0.; // [rad/s] input
+  dynamics::LateralSweepSettings sweep;
 };
 
 // The lateral entries of the Train subsection (the rest of Train is the kinematics command's).

@@ -78,7 +78,7 @@ void declare_parameters(ParameterHandler& prm)
     type.declare_parameters(prm);
 
   // The mesh sizes of every scene type.
-  declare_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh);
+  declare_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh, true);
   declare_deck_parameters(prm);
 }
 

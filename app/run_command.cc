@@ -51,10 +51,9 @@ dynamics::SimulationResult kv_run(const dynamics::MeshStiffness& stiffness)
   return dynamics::simulate(model, settings);
 }
 
-void run(dealii::ParameterHandler& prm, CommandContext& context)
+// Parameters the chain accepts: a sweep of the built-in split-path pair.
+void check_chain_parameters(const StiffnessParameters& p)
 {
-  dealii::Timer timer(context.mpi_communicator, true);
-  StiffnessParameters p = parse_stiffness_parameters(prm);
   if (p.mode != StiffnessMode::sweep)
     throw InputError("Stiffness/mode", "the run command needs mode = sweep (its k(θ) part)");
   // Every step after the stiffness (the published values, the split-path train's K_v) belongs to
@@ -63,13 +62,13 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     throw InputError("Gear pair", "the run command is the chain of the built-in split-path "
                                   "gearbox (docs/references.md §1); for another pair run "
                                   "`gearstiff stiffness`, `cai` and `dynamics`");
-  Report& report = context.report;
+}
 
-  // 1. Geometry and ISO 6336.
-  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
-  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
-  const double contact_ratio = pair.transverse_contact_ratio;
-  report.add_compared_value("contact_ratio", contact_ratio, 1.500, "-",
+// Step 1: geometry and ISO 6336.
+void report_geometry(Report& report, const kinematics::GearPairGeometry& pair,
+                     const kinematics::IsoStiffness& iso)
+{
+  report.add_compared_value("contact_ratio", pair.transverse_contact_ratio, 1.500, "-",
                             "transverse contact ratio ε_α", source);
   report.add_compared_value("base_pitch", pair.transverse_base_pitch * 1e3, 7.380, "mm",
                             "transverse base pitch p_et", source);
@@ -79,35 +78,49 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                             "mm", "pinion base radius r_b1", source);
   report.add_compared_value("iso_single_stiffness", iso.single_per_width / 1e6, 330., "N/µm",
                             "ISO 6336-1 c'·b", iso_source);
+}
 
-  // 2. Single- and double-pair stiffness (all ranks in one solve each).
+struct PairPositions
+{
+  stiffness::GearMeshStiffnessResult single, twin; // single- and double-pair position
+};
+
+// Step 2: single- and double-pair stiffness (all ranks in one solve each).
+PairPositions solve_pair_positions(const StiffnessParameters& p, CommandContext& context,
+                                   const kinematics::IsoStiffness& iso)
+{
   context.pcout << "run: single- and double-pair contact solves" << std::endl;
   StiffnessParameters position = p;
   position.mode = StiffnessMode::single;
   position.settings.scene.position = geometry::PairPosition::single;
-  const stiffness::GearMeshStiffnessResult single =
-      solve_stiffness_position(position, context, "single");
+  PairPositions r;
+  r.single = solve_stiffness_position(position, context, "single");
   position.mode = StiffnessMode::double_pair;
   position.settings.scene.position = geometry::PairPosition::double_pair;
-  const stiffness::GearMeshStiffnessResult twin =
-      solve_stiffness_position(position, context, "double");
-  report.add_compared_value("single_pair_stiffness", single.mesh_stiffness / 1e6,
+  r.twin = solve_stiffness_position(position, context, "double");
+  Report& report = context.report;
+  report.add_compared_value("single_pair_stiffness", r.single.mesh_stiffness / 1e6,
                             ansys::single_pair_stiffness / 1e6, "N/µm",
                             "single-pair mesh stiffness k'_j (FE)", ansys::source);
-  report.add_compared_value("double_pair_stiffness", twin.mesh_stiffness / 1e6,
+  report.add_compared_value("double_pair_stiffness", r.twin.mesh_stiffness / 1e6,
                             ansys::double_pair_stiffness / 1e6, "N/µm",
                             "double-pair mesh stiffness k'_d (FE)", ansys::source);
   report.add_compared_value(
-      "single_vs_iso", single.mesh_stiffness / 1e6, iso.single_per_width / 1e6, "N/µm",
+      "single_vs_iso", r.single.mesh_stiffness / 1e6, iso.single_per_width / 1e6, "N/µm",
       "single-pair FE stiffness against ISO 6336-1 c'·b (this pair)", "kinematics/iso_stiffness.h");
-  report.add_compared_value("single_pinion_rotation", single.pinion_rotation * 1e4, 2.481,
+  report.add_compared_value("single_pinion_rotation", r.single.pinion_rotation * 1e4, 2.481,
                             "1e-4 rad", "single-pair pinion rotation Δφ", ansys::source);
-  report.add_compared_value("double_pinion_rotation", twin.pinion_rotation * 1e4, 1.632, "1e-4 rad",
-                            "double-pair pinion rotation Δφ", ansys::source);
+  report.add_compared_value("double_pinion_rotation", r.twin.pinion_rotation * 1e4, 1.632,
+                            "1e-4 rad", "double-pair pinion rotation Δφ", ansys::source);
+  return r;
+}
 
-  // 3. k(θ) sweep and Cai calibration.
-  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
-  add_stiffness_sweep_table(report, sweep, "run_sweep", pair);
+// Step 3a: the sweep's mean stiffness (N/m) against the published and ISO values, with the
+// sweep's position sampling error: the mean from every other position (the midpoint rule at
+// twice the spacing) against the mean from all of them.
+double report_sweep_mean(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                         const kinematics::IsoStiffness& iso)
+{
   double mean = 0., mean_even = 0.;
   unsigned int n_even = 0;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
@@ -125,12 +138,16 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report.add_compared_value("fe_mean_vs_iso", mean / 1e6, iso.mesh_alpha_per_width / 1e6, "N/µm",
                             "FE mean mesh stiffness against ISO 6336-1 c_γα·b",
                             "kinematics/iso_stiffness.h");
-  // The sweep's position sampling error: the mean from every other position (the midpoint
-  // rule at twice the spacing) against the mean from all of them.
   report.add_value("sweep_sampling_error", std::abs(mean_even - mean) / mean * 100., "%",
                    "mean stiffness: every other position against all " +
                        std::to_string(sweep.positions.size()) + " (sampling error estimate)");
+  return mean;
+}
 
+// Step 3b: the Cai curve calibrated on the sweep.
+dynamics::CaiFit calibrate_cai(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                               double contact_ratio)
+{
   std::vector<dynamics::StiffnessSample> samples;
   for (const auto& [x, k] : pair_stiffness_samples(sweep, contact_ratio))
     samples.push_back({x, k});
@@ -141,23 +158,33 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                             "calibrated Cai scale (one pair's peak)", source + ": Cai peak = k'_j");
   report.add_value("cai_fit_relative_rms", fit.rms_residual / fit.parameters.scale, "-",
                    "Cai fit rms residual / scale");
+  return fit;
+}
 
-  // 4. K_v of both meshes from three stiffness sources.
-  context.pcout << "run: torsional dynamics (RK4, 5 µs) with three stiffness sources" << std::endl;
+// The sweep as the FE k(θ) table `gearstiff dynamics` reads (x, k in N/m).
+dynamics::MeshStiffness fe_table_stiffness(const stiffness::StiffnessSweepResult& sweep)
+{
   std::vector<double> table_x, table_k;
+  std::istringstream entries(dynamics_stiffness_table(sweep));
+  std::string entry;
+  while (std::getline(entries, entry, ','))
   {
-    std::istringstream entries(dynamics_stiffness_table(sweep));
-    std::string entry;
-    while (std::getline(entries, entry, ','))
-    {
-      const auto colon = entry.find(':');
-      table_x.push_back(std::stod(entry.substr(0, colon)));
-      table_k.push_back(std::stod(entry.substr(colon + 1)) * 1e3);
-    }
+    const auto colon = entry.find(':');
+    table_x.push_back(std::stod(entry.substr(0, colon)));
+    table_k.push_back(std::stod(entry.substr(colon + 1)) * 1e3);
   }
+  return dynamics::MeshStiffness::table(table_x, table_k, "FE k(θ) table");
+}
+
+// Step 4: K_v of both meshes from three stiffness sources.
+void report_dynamic_factors(CommandContext& context, const stiffness::StiffnessSweepResult& sweep,
+                            const dynamics::CaiFit& fit, double contact_ratio)
+{
+  context.pcout << "run: torsional dynamics (RK4, 5 µs) with three stiffness sources" << std::endl;
+  Report& report = context.report;
   const std::vector<std::pair<std::string, dynamics::MeshStiffness>> sources = {
       {"calibrated Cai", dynamics::MeshStiffness::cai(fit.parameters, "calibrated Cai")},
-      {"FE k(θ) table", dynamics::MeshStiffness::table(table_x, table_k, "FE k(θ) table")},
+      {"FE k(θ) table", fe_table_stiffness(sweep)},
       {"paper-scaled Cai",
        dynamics::MeshStiffness::cai(
            dynamics::cai_published_parameters(ansys::single_pair_stiffness), "paper Cai")}};
@@ -183,28 +210,58 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                           "mesh period behind)");
   }
   report.add_text("run_kv sources", "1 calibrated Cai, 2 FE k(θ) table, 3 paper-scaled Cai");
+}
 
-  report.add_value("cost_single", single.total_time, "s", "single-pair solve wall time");
-  report.add_value("cost_double", twin.total_time, "s", "double-pair solve wall time");
+void report_costs(Report& report, const PairPositions& positions,
+                  const stiffness::StiffnessSweepResult& sweep, double total_time)
+{
+  report.add_value("cost_single", positions.single.total_time, "s", "single-pair solve wall time");
+  report.add_value("cost_double", positions.twin.total_time, "s", "double-pair solve wall time");
   report.add_value("cost_sweep", sweep.wall_time, "s",
                    "sweep wall time (" + std::to_string(sweep.n_ranks) + " rank(s))");
-  report.add_value("cost_total", timer.wall_time(), "s", "the whole chain");
+  report.add_value("cost_total", total_time, "s", "the whole chain");
+}
 
-  if (context.writes_files() && context.is_root())
-  {
-    std::ofstream(
-        context.output_file("cai_calibrated.prm", "calibrated Cai curve for `gearstiff dynamics`"))
-        << dynamics_cai_input(fit.parameters);
-    std::ofstream(
-        context.output_file("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`"))
-        << dynamics_table_input(sweep);
-    const TemporaryCsv csv(report, "run_sweep");
-    context.plot("plot_stiffness.py",
-                 {csv.path(), format_number(ansys::single_pair_stiffness / 1e6, 8),
-                  format_number(ansys::double_pair_stiffness / 1e6, 8),
-                  format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
-                 "run_stiffness.png", "k(θ) with ANSYS and ISO 6336 values");
-  }
+// The dynamics inputs and the k(θ) chart.
+void write_files(CommandContext& context, const stiffness::StiffnessSweepResult& sweep,
+                 const dynamics::CaiFit& fit, const kinematics::IsoStiffness& iso, double mean)
+{
+  if (!(context.writes_files() && context.is_root()))
+    return;
+  std::ofstream(
+      context.output_file("cai_calibrated.prm", "calibrated Cai curve for `gearstiff dynamics`"))
+      << dynamics_cai_input(fit.parameters);
+  std::ofstream(
+      context.output_file("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`"))
+      << dynamics_table_input(sweep);
+  const TemporaryCsv csv(context.report, "run_sweep");
+  context.plot("plot_stiffness.py",
+               {csv.path(), format_number(ansys::single_pair_stiffness / 1e6, 8),
+                format_number(ansys::double_pair_stiffness / 1e6, 8),
+                format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
+               "run_stiffness.png", "k(θ) with ANSYS and ISO 6336 values");
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  dealii::Timer timer(context.mpi_communicator, true);
+  const StiffnessParameters p = parse_stiffness_parameters(prm);
+  check_chain_parameters(p);
+  Report& report = context.report;
+
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
+  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
+  report_geometry(report, pair, iso);
+  const PairPositions positions = solve_pair_positions(p, context, iso);
+
+  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
+  add_stiffness_sweep_table(report, sweep, "run_sweep", pair);
+  const double mean = report_sweep_mean(report, sweep, iso);
+  const dynamics::CaiFit fit = calibrate_cai(report, sweep, pair.transverse_contact_ratio);
+
+  report_dynamic_factors(context, sweep, fit, pair.transverse_contact_ratio);
+  report_costs(report, positions, sweep, timer.wall_time());
+  write_files(context, sweep, fit, iso, mean);
 }
 
 const CommandRegistration registration(Command{

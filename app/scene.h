@@ -43,6 +43,34 @@ public:
   virtual void report(const geometry::SceneInfo& /*info*/, Report& /*report*/) const {}
 };
 
+// A scene whose mesh and deck are functions of its geometry spec alone
+// (geometry/scene_<type>.h): `mesh` writes the .msh, `deck` gives the deck of what it wrote.
+template <typename Spec>
+class SpecScene : public Scene
+{
+public:
+  using MeshFunction = geometry::SceneInfo (*)(const Spec&, const std::string&);
+  using DeckFunction = geometry::AbaqusDeckSpec (*)(const Spec&, const geometry::SceneInfo&,
+                                                    const DeckOptions&);
+  SpecScene(const Spec& spec, MeshFunction mesh, DeckFunction deck)
+      : spec(spec), mesh(mesh), deck(deck)
+  {
+  }
+  geometry::SceneInfo write_mesh(const std::string& path) override { return mesh(spec, path); }
+  geometry::AbaqusDeckSpec deck_spec(const geometry::SceneInfo& info,
+                                     const DeckOptions& options) const override
+  {
+    return deck(spec, info, options);
+  }
+
+protected:
+  Spec spec;
+
+private:
+  MeshFunction mesh;
+  DeckFunction deck;
+};
+
 struct SceneType
 {
   std::string name;        // the Scene/type value

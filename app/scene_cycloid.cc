@@ -34,27 +34,22 @@ void declare_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-class CycloidMeshScene : public Scene
+geometry::AbaqusDeckSpec cycloid_deck(const geometry::CycloidSceneSpec& spec,
+                                      const geometry::SceneInfo& info, const DeckOptions& options)
+{
+  return geometry::cycloid_deck_spec(spec, info, options.output_torque, options.penalty_factor);
+}
+
+class CycloidMeshScene : public SpecScene<geometry::CycloidSceneSpec>
 {
 public:
-  explicit CycloidMeshScene(const geometry::CycloidSceneSpec& spec) : spec(spec) {}
+  explicit CycloidMeshScene(const geometry::CycloidSceneSpec& spec)
+      : SpecScene(spec, geometry::write_cycloid_scene, cycloid_deck)
+  {
+  }
 
   // The cycloid deck ties the output pins to the output member: mesh them in their holes.
   void prepare_for_deck() override { spec.output_pin_bodies = true; }
-
-  geometry::SceneInfo write_mesh(const std::string& path) override
-  {
-    return geometry::write_cycloid_scene(spec, path);
-  }
-
-  geometry::AbaqusDeckSpec deck_spec(const geometry::SceneInfo& info,
-                                     const DeckOptions& options) const override
-  {
-    return geometry::cycloid_deck_spec(spec, info, options.output_torque, options.penalty_factor);
-  }
-
-private:
-  geometry::CycloidSceneSpec spec;
 };
 
 // The roller and pin forces the contact cells are sized for: given, or the case's own load as
@@ -100,7 +95,8 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   const std::string roller_force = prm.get("roller force");
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
-  spec.mesh = parse_scene_mesh_parameters(prm);
+  // `auto` sizes: the numbers the `mesh` command declares (a gear pair's at module 2.5 mm).
+  spec.mesh = parse_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh);
   prm.enter_subsection("Abaqus deck");
   const double output_torque = prm.get_double("output torque");
   prm.leave_subsection();

@@ -29,25 +29,11 @@ void declare_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-class CylindersMeshScene : public Scene
+geometry::AbaqusDeckSpec cylinders_deck(const geometry::CylindersSceneSpec& spec,
+                                        const geometry::SceneInfo& info, const DeckOptions& options)
 {
-public:
-  explicit CylindersMeshScene(const geometry::CylindersSceneSpec& spec) : spec(spec) {}
-
-  geometry::SceneInfo write_mesh(const std::string& path) override
-  {
-    return geometry::write_cylinders_scene(spec, path);
-  }
-
-  geometry::AbaqusDeckSpec deck_spec(const geometry::SceneInfo& info,
-                                     const DeckOptions& options) const override
-  {
-    return geometry::cylinders_deck_spec(spec, info, options.friction, options.penalty_factor);
-  }
-
-private:
-  geometry::CylindersSceneSpec spec;
-};
+  return geometry::cylinders_deck_spec(spec, info, options.friction, options.penalty_factor);
+}
 
 std::unique_ptr<Scene> parse(ParameterHandler& prm)
 {
@@ -61,8 +47,10 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   spec.length = prm.get_double("length") * mm;
   parse_elastic_constants(prm, spec.young_modulus, spec.poisson_ratio);
   prm.leave_subsection();
-  spec.mesh = parse_scene_mesh_parameters(prm);
-  return std::make_unique<CylindersMeshScene>(spec);
+  // `auto` sizes: the numbers the `mesh` command declares (a gear pair's at module 2.5 mm).
+  spec.mesh = parse_scene_mesh_parameters(prm, geometry::GearPairSceneSpec().mesh);
+  return std::make_unique<SpecScene<geometry::CylindersSceneSpec>>(
+      spec, geometry::write_cylinders_scene, cylinders_deck);
 }
 
 const SceneRegistration registration({"cylinders", "two cylinders in line contact (Cylinders)",

@@ -117,14 +117,10 @@ void apply_stiffness_scene_defaults(ParameterHandler& prm)
   replace("wheel teeth modelled", std::to_string(mesh_scene.wheel_teeth_modelled),
           std::to_string(stiffness_scene.wheel_teeth_modelled));
   prm.leave_subsection();
+  // The cell sizes left `auto` take the stiffness scene's numbers in parse().
   prm.enter_subsection("Mesh");
-  const auto size = [&](const std::string& key, double from, double to, double unit)
-  { replace(key, format_number(from / unit, 10), format_number(to / unit, 10)); };
-  size("contact size", mesh_scene.mesh.contact_size, stiffness_scene.mesh.contact_size, mm);
-  size("fine radius", mesh_scene.mesh.fine_radius, stiffness_scene.mesh.fine_radius, mm);
-  size("growth rate", mesh_scene.mesh.growth_rate, stiffness_scene.mesh.growth_rate, 1.);
-  size("body size", mesh_scene.mesh.body_size, stiffness_scene.mesh.body_size, mm);
-  size("rim size", mesh_scene.mesh.rim_size, stiffness_scene.mesh.rim_size, mm);
+  replace("growth rate", format_number(mesh_scene.mesh.growth_rate, 10),
+          format_number(stiffness_scene.mesh.growth_rate, 10));
   prm.leave_subsection();
 }
 
@@ -139,7 +135,11 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   std::vector<kinematics::DerivedSize> derived;
   spec.pair = parse_gear_pair_parameters(prm, derived);
   parse_gear_scene_parameters(prm, spec);
-  spec.mesh = parse_scene_mesh_parameters(prm);
+  spec.mesh =
+      parse_scene_mesh_parameters(prm,
+                                  stiffness_scene ? stiffness::default_stiffness_scene().mesh
+                                                  : geometry::GearPairSceneSpec().mesh,
+                                  mesh_module_scale(spec.pair), &derived);
   prm.enter_subsection("Gear pair scene");
   spec.position = geometry::parse_pair_position(prm.get("position"), "Gear pair scene/position");
   spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;

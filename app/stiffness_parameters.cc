@@ -29,7 +29,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   const geometry::GearPairSceneSpec scene = stiffness::default_stiffness_scene();
   // The sector cut faces are left free by the stiffness analysis.
   declare_gear_scene_parameters(prm, scene, true);
-  declare_scene_mesh_parameters(prm, scene.mesh);
+  declare_scene_mesh_parameters(prm, scene.mesh, true);
 
   declare_fe_contact_parameters(prm);
   prm.enter_subsection("Finite elements");
@@ -266,7 +266,8 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   prm.enter_subsection("Gear pair scene");
   s.pinion_torque = prm.get_double("pinion torque");
   prm.leave_subsection();
-  s.scene.mesh = parse_scene_mesh_parameters(prm);
+  s.scene.mesh = parse_scene_mesh_parameters(prm, s.scene.mesh, mesh_module_scale(s.scene.pair),
+                                             &p.derived_sizes);
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Stiffness");

@@ -18,4 +18,9 @@ constexpr double rpm = M_PI / 30.;     // rad/s
 // A user's text as echoed in a message: at most `length` characters, longer text cut with "…"
 // and its size, so that a 200 kB value does not become a 200 kB error line.
 std::string shortened(const std::string& text, unsigned int length = limits::echoed_value_length);
+
+// A length parameter that reads a number >= 0 [mm] or `auto`: true for `auto` (`value` left as
+// is), else `value` in m; anything else is an InputError naming `parameter` ("a `what` >= 0").
+bool read_length_or_auto(const std::string& text, const std::string& parameter,
+                         const std::string& what, double& value);
 } // namespace gearstiff::app

@@ -8,28 +8,15 @@ Targets: 200 000 RK4 steps of the bi-planetary train (bench/dynamics_biplanetary
 the median of three runs of each (processor time of the integration / of the sweep) and its
 ratio to the target. Run it holding the build lock on a shared machine.
 """
-import json
 import os
-import statistics
-import subprocess
-import sys
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-binary = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "app", "gearstiff")
+from gearstiff_cli import median_value, root
+
 prm = os.path.join(root, "bench", "dynamics_biplanetary.prm")
 
 
-def run(*settings):
-    args = [binary, "dynamics", prm, "--json"]
-    for s in settings:
-        args += ["--set", s]
-    out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
-    return json.loads(out)["values"]
-
-
 def median_of_three(key, *settings):
-    runs = [run(*settings) for _ in range(3)]
-    return statistics.median(r[key]["value"] for r in runs), runs[0]
+    return median_value(3, key, "dynamics", prm, *settings)
 
 
 # 200 000 steps at 1 µs (below the RK4 limit printed with it); K_v over the last 10 ms only.

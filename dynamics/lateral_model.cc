@@ -90,11 +90,10 @@ std::vector<double> equally_spaced_angles(unsigned int planets)
   return angles;
 }
 
-LateralModel::LateralModel(const LateralStage& stage)
-    : data(stage), n_planet(static_cast<unsigned int>(stage.planet_angles.size()))
+namespace
 {
-  if (n_planet < 1)
-    throw InputError("Train/planets", "the lateral model needs at least one planet");
+void check_member_data(const LateralStage& stage)
+{
   for (const LateralMember j : central_members)
   {
     const LateralCentralMember& m = member_data(stage, j);
@@ -122,8 +121,13 @@ LateralModel::LateralModel(const LateralStage& stage)
   for (const double alpha : {stage.sun_pressure_angle, stage.ring_pressure_angle})
     if (!(alpha >= 0. && alpha < 0.5 * M_PI))
       throw InputError("Train/pressure angle", "must lie in [0, 90) deg");
+}
 
-  // Planets must not overlap: centres 2·r_c·sin(Δψ/2) apart, at least two tip radii.
+// Planets must not overlap: centres 2·r_c·sin(Δψ/2) apart, at least two tip radii; pin errors
+// one per planet.
+void check_planet_layout(const LateralStage& data)
+{
+  const unsigned int n_planet = data.planet_angles.size();
   const double tip = data.planet_tip_radius > 0.
                          ? data.planet_tip_radius
                          : data.planet_base_radius / std::cos(data.sun_pressure_angle);
@@ -152,117 +156,84 @@ LateralModel::LateralModel(const LateralStage& stage)
       if (!std::isfinite(e))
         throw InputError("Train/planet pin errors", "must be finite");
   }
+}
 
-  const unsigned int n = n_dofs();
-  mass_diagonal.resize(n);
-  for (const LateralMember j : central_members)
-  {
-    const LateralCentralMember& m = member_data(stage, j);
-    mass_diagonal[central_dof(j, 0)] = m.mass;
-    mass_diagonal[central_dof(j, 1)] = m.mass;
-    mass_diagonal[central_dof(j, 2)] = m.moment_of_inertia / (m.radius * m.radius);
-  }
-  for (unsigned int p = 0; p < n_planet; ++p)
-  {
-    mass_diagonal[planet_dof(p, 0)] = stage.planet_mass;
-    mass_diagonal[planet_dof(p, 1)] = stage.planet_mass;
-    mass_diagonal[planet_dof(p, 2)] =
-        stage.planet_moment_of_inertia / (stage.planet_base_radius * stage.planet_base_radius);
-  }
-  for (unsigned int i = 0; i < n; ++i)
-    if (!(i % 3 == 2 && i < 9 && member_data(stage, LateralMember(i / 3)).held))
-      free.push_back(i);
-
-  // The springs of the header's deflections.
+// Bearings and torsional supports of the central members.
+void add_support_springs(const LateralStage& stage, std::vector<LateralModel::Spring>& springs)
+{
   for (const LateralMember j : central_members)
   {
     const LateralCentralMember& m = member_data(stage, j);
     for (unsigned int c = 0; c < 2; ++c)
       if (m.bearing_stiffness > 0. || m.bearing_damping > 0.)
-        spring_list.push_back(
-            {0, 0, m.bearing_stiffness, m.bearing_damping, 0., {{central_dof(j, c), 1.}}});
+        springs.push_back({0,
+                           0,
+                           m.bearing_stiffness,
+                           m.bearing_damping,
+                           0.,
+                           {{LateralModel::central_dof(j, c), 1.}}});
     if (!m.held && (m.torsional_stiffness > 0. || m.torsional_damping > 0.))
     {
       const double r2 = m.radius * m.radius;
-      spring_list.push_back({1,
-                             0,
-                             m.torsional_stiffness / r2,
-                             m.torsional_damping / r2,
-                             0.,
-                             {{central_dof(j, 2), 1.}}});
+      springs.push_back({1,
+                         0,
+                         m.torsional_stiffness / r2,
+                         m.torsional_damping / r2,
+                         0.,
+                         {{LateralModel::central_dof(j, 2), 1.}}});
     }
   }
-  const double as = stage.sun_pressure_angle, ar = stage.ring_pressure_angle;
-  const unsigned int xc = central_dof(LateralMember::carrier, 0),
-                     yc = central_dof(LateralMember::carrier, 1),
-                     uc = central_dof(LateralMember::carrier, 2);
-  const unsigned int xr = central_dof(LateralMember::ring, 0),
-                     yr = central_dof(LateralMember::ring, 1),
-                     ur = central_dof(LateralMember::ring, 2);
-  const unsigned int xs = central_dof(LateralMember::sun, 0),
-                     ys = central_dof(LateralMember::sun, 1),
-                     us = central_dof(LateralMember::sun, 2);
-  for (unsigned int p = 0; p < n_planet; ++p)
-  {
-    const double psi = stage.planet_angles[p];
-    const double et = stage.pin_error_tangential.empty() ? 0. : stage.pin_error_tangential[p];
-    const double er = stage.pin_error_radial.empty() ? 0. : stage.pin_error_radial[p];
-    const unsigned int zeta = planet_dof(p, 0), eta = planet_dof(p, 1), up = planet_dof(p, 2);
-    spring_list.push_back({2,
-                           p,
-                           stage.pin_stiffness,
-                           stage.pin_damping,
-                           er,
-                           {{xc, std::cos(psi)}, {yc, std::sin(psi)}, {zeta, -1.}}});
-    spring_list.push_back({2,
-                           p,
-                           stage.pin_stiffness,
-                           stage.pin_damping,
-                           et,
-                           {{xc, -std::sin(psi)}, {yc, std::cos(psi)}, {uc, 1.}, {eta, -1.}}});
-    const double psi_s = psi - as, psi_r = psi + ar;
-    sun_mesh_spring.push_back(spring_list.size());
-    spring_list.push_back({3,
-                           p,
-                           stage.sun_mesh_stiffness,
-                           stage.sun_mesh_damping,
-                           0.,
-                           {{xs, -std::sin(psi_s)},
-                            {ys, std::cos(psi_s)},
-                            {us, 1.},
-                            {zeta, -std::sin(as)},
-                            {eta, -std::cos(as)},
-                            {up, 1.}}});
-    ring_mesh_spring.push_back(spring_list.size());
-    spring_list.push_back({4,
-                           p,
-                           stage.ring_mesh_stiffness,
-                           stage.ring_mesh_damping,
-                           0.,
-                           {{xr, -std::sin(psi_r)},
-                            {yr, std::cos(psi_r)},
-                            {ur, 1.},
-                            {zeta, std::sin(ar)},
-                            {eta, -std::cos(ar)},
-                            {up, -1.}}});
-  }
-  stiffness_matrix = Eigen::MatrixXd::Zero(n, n);
-  damping_matrix = Eigen::MatrixXd::Zero(n, n);
-  error_force = Eigen::VectorXd::Zero(n);
-  for (const Spring& s : spring_list)
-    for (const auto& [i, vi] : s.terms)
-    {
-      error_force[i] -= s.stiffness * s.preload * vi;
-      for (const auto& [j, vj] : s.terms)
-      {
-        stiffness_matrix(i, j) += s.stiffness * vi * vj;
-        damping_matrix(i, j) += s.damping * vi * vj;
-      }
-    }
+}
 
-  // A translation that nothing holds (zero bearing stiffness where no mesh or pin restrains
-  // the stage as a whole) makes the stage drift: refuse it, naming the member that moves most.
-  const LateralModes free_modes = modes();
+// Planet p's radial and tangential pins (the header's deflections).
+void add_pin_springs(const LateralStage& stage, unsigned int p,
+                     std::vector<LateralModel::Spring>& springs)
+{
+  const double psi = stage.planet_angles[p];
+  const double et = stage.pin_error_tangential.empty() ? 0. : stage.pin_error_tangential[p];
+  const double er = stage.pin_error_radial.empty() ? 0. : stage.pin_error_radial[p];
+  const unsigned int xc = LateralModel::central_dof(LateralMember::carrier, 0),
+                     yc = LateralModel::central_dof(LateralMember::carrier, 1),
+                     uc = LateralModel::central_dof(LateralMember::carrier, 2);
+  const unsigned int zeta = LateralModel::planet_dof(p, 0), eta = LateralModel::planet_dof(p, 1);
+  springs.push_back({2,
+                     p,
+                     stage.pin_stiffness,
+                     stage.pin_damping,
+                     er,
+                     {{xc, std::cos(psi)}, {yc, std::sin(psi)}, {zeta, -1.}}});
+  springs.push_back({2,
+                     p,
+                     stage.pin_stiffness,
+                     stage.pin_damping,
+                     et,
+                     {{xc, -std::sin(psi)}, {yc, std::cos(psi)}, {uc, 1.}, {eta, -1.}}});
+}
+
+// Planet p's sun mesh (sun = true) or ring mesh along its line of action.
+LateralModel::Spring mesh_spring(const LateralStage& stage, unsigned int p, bool sun)
+{
+  const double alpha = sun ? stage.sun_pressure_angle : stage.ring_pressure_angle;
+  const double psi = stage.planet_angles[p] + (sun ? -alpha : alpha); // ψ_sn, ψ_rn
+  const LateralMember j = sun ? LateralMember::sun : LateralMember::ring;
+  const double side = sun ? 1. : -1.; // the planet's ζ and u enter with opposite signs
+  return {sun ? 3u : 4u,
+          p,
+          sun ? stage.sun_mesh_stiffness : stage.ring_mesh_stiffness,
+          sun ? stage.sun_mesh_damping : stage.ring_mesh_damping,
+          0.,
+          {{LateralModel::central_dof(j, 0), -std::sin(psi)},
+           {LateralModel::central_dof(j, 1), std::cos(psi)},
+           {LateralModel::central_dof(j, 2), 1.},
+           {LateralModel::planet_dof(p, 0), -side * std::sin(alpha)},
+           {LateralModel::planet_dof(p, 1), -std::cos(alpha)},
+           {LateralModel::planet_dof(p, 2), side}}};
+}
+
+// A translation that nothing holds (zero bearing stiffness where no mesh or pin restrains the
+// stage as a whole) makes the stage drift: refuse it, naming the member that moves most.
+void refuse_free_translation(const LateralModes& free_modes)
+{
   for (Eigen::Index k = 0; k < free_modes.frequencies.size(); ++k)
   {
     if (free_modes.frequencies[k] > 0.)
@@ -285,6 +256,60 @@ LateralModel::LateralModel(const LateralStage& stage)
                            " translates freely: zero bearing stiffness with nothing else "
                            "holding the stage in x and y");
   }
+}
+} // namespace
+
+LateralModel::LateralModel(const LateralStage& stage)
+    : data(stage), n_planet(static_cast<unsigned int>(stage.planet_angles.size()))
+{
+  if (n_planet < 1)
+    throw InputError("Train/planets", "the lateral model needs at least one planet");
+  check_member_data(stage);
+  check_planet_layout(stage);
+
+  const unsigned int n = n_dofs();
+  mass_diagonal.resize(n);
+  for (const LateralMember j : central_members)
+  {
+    const LateralCentralMember& m = member_data(stage, j);
+    mass_diagonal[central_dof(j, 0)] = m.mass;
+    mass_diagonal[central_dof(j, 1)] = m.mass;
+    mass_diagonal[central_dof(j, 2)] = m.moment_of_inertia / (m.radius * m.radius);
+  }
+  for (unsigned int p = 0; p < n_planet; ++p)
+  {
+    mass_diagonal[planet_dof(p, 0)] = stage.planet_mass;
+    mass_diagonal[planet_dof(p, 1)] = stage.planet_mass;
+    mass_diagonal[planet_dof(p, 2)] =
+        stage.planet_moment_of_inertia / (stage.planet_base_radius * stage.planet_base_radius);
+  }
+  for (unsigned int i = 0; i < n; ++i)
+    if (!(i % 3 == 2 && i < 9 && member_data(stage, LateralMember(i / 3)).held))
+      free.push_back(i);
+
+  add_support_springs(stage, spring_list);
+  for (unsigned int p = 0; p < n_planet; ++p)
+  {
+    add_pin_springs(stage, p, spring_list);
+    sun_mesh_spring.push_back(spring_list.size());
+    spring_list.push_back(mesh_spring(stage, p, true));
+    ring_mesh_spring.push_back(spring_list.size());
+    spring_list.push_back(mesh_spring(stage, p, false));
+  }
+  stiffness_matrix = Eigen::MatrixXd::Zero(n, n);
+  damping_matrix = Eigen::MatrixXd::Zero(n, n);
+  error_force = Eigen::VectorXd::Zero(n);
+  for (const Spring& s : spring_list)
+    for (const auto& [i, vi] : s.terms)
+    {
+      error_force[i] -= s.stiffness * s.preload * vi;
+      for (const auto& [j, vj] : s.terms)
+      {
+        stiffness_matrix(i, j) += s.stiffness * vi * vj;
+        damping_matrix(i, j) += s.damping * vi * vj;
+      }
+    }
+  refuse_free_translation(modes());
 }
 
 std::string LateralModel::dof_name(unsigned int dof) const
@@ -337,63 +362,16 @@ double LateralModel::ring_mesh_deflection(unsigned int planet, const double* q) 
   return deflection(spring_list[ring_mesh_spring[planet]], q);
 }
 
-LateralModes LateralModel::modes(double relative_tolerance) const
+namespace
 {
-  const unsigned int nf = free.size(), n = n_dofs();
-  Eigen::VectorXd scale(nf); // M^(-1/2)
-  Eigen::MatrixXd a(nf, nf);
-  for (unsigned int i = 0; i < nf; ++i)
-    scale[i] = 1. / std::sqrt(mass_diagonal[free[i]]);
-  for (unsigned int i = 0; i < nf; ++i)
-    for (unsigned int j = 0; j < nf; ++j)
-      a(i, j) = scale[i] * stiffness_matrix(free[i], free[j]) * scale[j];
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
-  if (solver.info() != Eigen::Success)
-    throw SolverFailure("lateral modes", "the symmetric eigensolver did not converge");
-  const Eigen::VectorXd& lambda = solver.eigenvalues();
-  const double largest = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
-
-  LateralModes result;
-  result.frequencies.resize(nf);
-  result.shapes = Eigen::MatrixXd::Zero(n, nf);
-  for (unsigned int k = 0; k < nf; ++k)
-  {
-    // Eigenvalues of a positive semi-definite K below round-off count as rigid-body modes.
-    const double l = lambda[k] > 1e-11 * largest ? lambda[k] : 0.;
-    result.frequencies[k] = std::sqrt(l) / (2. * M_PI);
-    for (unsigned int i = 0; i < nf; ++i)
-      result.shapes(free[i], k) = scale[i] * solver.eigenvectors()(i, k);
-  }
-
-  // Energies: kinetic per body and DOF type, strain per spring group.
-  const unsigned int n_bodies = 3 + n_planet;
-  result.kinetic_energy_share = Eigen::MatrixXd::Zero(nf, 2 * n_bodies);
-  result.strain_energy_share = Eigen::MatrixXd::Zero(nf, n_spring_groups);
-  for (unsigned int k = 0; k < nf; ++k)
-  {
-    const Eigen::VectorXd v = result.shapes.col(k);
-    for (unsigned int i = 0; i < n; ++i)
-      result.kinetic_energy_share(k, 2 * (i / 3) + (i % 3 == 2 ? 1 : 0)) +=
-          mass_diagonal[i] * v[i] * v[i];
-    result.kinetic_energy_share.row(k) /= result.kinetic_energy_share.row(k).sum();
-    double total = 0.;
-    for (const Spring& s : spring_list)
-    {
-      double d = 0.;
-      for (const auto& [i, c] : s.terms)
-        d += c * v[i];
-      const double energy = 0.5 * s.stiffness * d * d;
-      result.strain_energy_share(k, s.group) += energy;
-      total += energy;
-    }
-    if (result.frequencies[k] > 0. && total > 0.)
-      result.strain_energy_share.row(k) /= total;
-    else
-      result.strain_energy_share.row(k).setZero();
-  }
-
-  // Groups of equal frequency and their class, judged on the whole group (a degenerate pair's
-  // basis is arbitrary, its subspace is not): central members' translation and rotation energy.
+// Groups of equal frequency and their class, judged on the whole group (a degenerate pair's
+// basis is arbitrary, its subspace is not): central members' translation and rotation energy.
+// `largest`: the largest eigenvalue of M^(-1/2)·K·M^(-1/2) [1/s²].
+std::vector<LateralModeGroup> classify_modes(const LateralModes& result, double relative_tolerance,
+                                             double largest)
+{
+  std::vector<LateralModeGroup> groups;
+  const unsigned int nf = result.frequencies.size();
   for (unsigned int k = 0; k < nf;)
   {
     unsigned int end = k + 1;
@@ -426,9 +404,73 @@ LateralModes LateralModel::modes(double relative_tolerance) const
                  : translation < zero                  ? LateralModeClass::rotational
                  : rotation < zero                     ? LateralModeClass::translational
                                                        : LateralModeClass::mixed;
-    result.groups.push_back(group);
+    groups.push_back(group);
     k = end;
   }
+  return groups;
+}
+} // namespace
+
+// Kinetic energy per body and DOF type, strain energy per spring group, of every mode.
+void LateralModel::modal_energies(LateralModes& result) const
+{
+  const unsigned int nf = free.size(), n = n_dofs();
+  const unsigned int n_bodies = 3 + n_planet;
+  result.kinetic_energy_share = Eigen::MatrixXd::Zero(nf, 2 * n_bodies);
+  result.strain_energy_share = Eigen::MatrixXd::Zero(nf, n_spring_groups);
+  for (unsigned int k = 0; k < nf; ++k)
+  {
+    const Eigen::VectorXd v = result.shapes.col(k);
+    for (unsigned int i = 0; i < n; ++i)
+      result.kinetic_energy_share(k, 2 * (i / 3) + (i % 3 == 2 ? 1 : 0)) +=
+          mass_diagonal[i] * v[i] * v[i];
+    result.kinetic_energy_share.row(k) /= result.kinetic_energy_share.row(k).sum();
+    double total = 0.;
+    for (const Spring& s : spring_list)
+    {
+      double d = 0.;
+      for (const auto& [i, c] : s.terms)
+        d += c * v[i];
+      const double energy = 0.5 * s.stiffness * d * d;
+      result.strain_energy_share(k, s.group) += energy;
+      total += energy;
+    }
+    if (result.frequencies[k] > 0. && total > 0.)
+      result.strain_energy_share.row(k) /= total;
+    else
+      result.strain_energy_share.row(k).setZero();
+  }
+}
+
+LateralModes LateralModel::modes(double relative_tolerance) const
+{
+  const unsigned int nf = free.size(), n = n_dofs();
+  Eigen::VectorXd scale(nf); // M^(-1/2)
+  Eigen::MatrixXd a(nf, nf);
+  for (unsigned int i = 0; i < nf; ++i)
+    scale[i] = 1. / std::sqrt(mass_diagonal[free[i]]);
+  for (unsigned int i = 0; i < nf; ++i)
+    for (unsigned int j = 0; j < nf; ++j)
+      a(i, j) = scale[i] * stiffness_matrix(free[i], free[j]) * scale[j];
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
+  if (solver.info() != Eigen::Success)
+    throw SolverFailure("lateral modes", "the symmetric eigensolver did not converge");
+  const Eigen::VectorXd& lambda = solver.eigenvalues();
+  const double largest = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
+
+  LateralModes result;
+  result.frequencies.resize(nf);
+  result.shapes = Eigen::MatrixXd::Zero(n, nf);
+  for (unsigned int k = 0; k < nf; ++k)
+  {
+    // Eigenvalues of a positive semi-definite K below round-off count as rigid-body modes.
+    const double l = lambda[k] > 1e-11 * largest ? lambda[k] : 0.;
+    result.frequencies[k] = std::sqrt(l) / (2. * M_PI);
+    for (unsigned int i = 0; i < nf; ++i)
+      result.shapes(free[i], k) = scale[i] * solver.eigenvectors()(i, k);
+  }
+  modal_energies(result);
+  result.groups = classify_modes(result, relative_tolerance, largest);
   return result;
 }
 
@@ -463,40 +505,12 @@ std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) c
   return frequencies;
 }
 
-LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) const
+// [K M·v0; v0ᵀ·M 0]·[q; a] = [f; 0] over the free coordinates: the deflection orthogonal to the
+// rigid rotation v0 (when there is one), in full coordinates.
+Eigen::VectorXd LateralModel::deflection_under(const Eigen::VectorXd& f,
+                                               const std::vector<Eigen::VectorXd>& rigid) const
 {
-  const unsigned int nf = free.size(), n = n_dofs();
-  const LateralCentralMember& in = member_data(data, load.input);
-  const LateralCentralMember& out = member_data(data, load.output);
-  if (in.held)
-    throw InputError("Train/inputs", "the input " + lateral_member_name(load.input) + " is held");
-  if (out.held || load.output == load.input)
-    throw InputError("Train/output",
-                     "the output " + lateral_member_name(load.output) + " must turn");
-  Eigen::VectorXd f = error_force;
-  f[central_dof(load.input, 2)] += load.input_torque / in.radius;
-
-  // Rigid-body modes of the free coordinates: the stage's free rotation (none when every
-  // member has a torsional support).
-  const LateralModes m = modes();
-  std::vector<Eigen::VectorXd> rigid;
-  for (Eigen::Index k = 0; k < m.frequencies.size() && m.frequencies[k] == 0.; ++k)
-    rigid.push_back(m.shapes.col(k));
-  if (rigid.size() > 1)
-    throw InputError("Train/fixed", "the stage has " + std::to_string(rigid.size()) +
-                                        " free rotations: hold or suspend a member");
-  const unsigned int uo = central_dof(load.output, 2);
-  double output_torque = 0.;
-  if (!rigid.empty())
-  {
-    // The load on the output that balances the input in the rigid rotation: v0ᵀ·f = 0.
-    const Eigen::VectorXd& v0 = rigid.front();
-    if (std::abs(v0[uo]) < 1e-12 * v0.cwiseAbs().maxCoeff())
-      throw InputError("Train/output", "the output does not turn with the stage");
-    output_torque = -v0.dot(f) / v0[uo] * out.radius;
-    f[uo] += output_torque / out.radius;
-  }
-  // [K M·v0; v0ᵀ·M 0]·[q; a] = [f; 0]: the deflection orthogonal to the rigid rotation.
+  const unsigned int nf = free.size();
   const unsigned int extra = rigid.size();
   Eigen::MatrixXd system = Eigen::MatrixXd::Zero(nf + extra, nf + extra);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf + extra);
@@ -516,12 +530,15 @@ LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) con
   if (!lu.isInvertible())
     throw SolverFailure("lateral statics", "the stiffness matrix is singular");
   const Eigen::VectorXd solution = lu.solve(rhs);
-
-  LateralStaticState state;
-  state.displacement = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());
   for (unsigned int i = 0; i < nf; ++i)
-    state.displacement[free[i]] = solution[i];
-  state.output_torque = output_torque;
+    q[free[i]] = solution[i];
+  return q;
+}
+
+// Pin, mesh and bearing forces and load sharing of `state.displacement`.
+void LateralModel::static_forces(LateralStaticState& state) const
+{
   const double* q = state.displacement.data();
   state.pin_radial_force.assign(n_planet, 0.);
   state.pin_tangential_force.assign(n_planet, 0.);
@@ -552,6 +569,44 @@ LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) con
     for (unsigned int c = 0; c < 2; ++c)
       state.bearing_force(static_cast<int>(j), c) = -k * q[central_dof(j, c)];
   }
+}
+
+LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) const
+{
+  const LateralCentralMember& in = member_data(data, load.input);
+  const LateralCentralMember& out = member_data(data, load.output);
+  if (in.held)
+    throw InputError("Train/inputs", "the input " + lateral_member_name(load.input) + " is held");
+  if (out.held || load.output == load.input)
+    throw InputError("Train/output",
+                     "the output " + lateral_member_name(load.output) + " must turn");
+  Eigen::VectorXd f = error_force;
+  f[central_dof(load.input, 2)] += load.input_torque / in.radius;
+
+  // Rigid-body modes of the free coordinates: the stage's free rotation (none when every
+  // member has a torsional support).
+  const LateralModes m = modes();
+  std::vector<Eigen::VectorXd> rigid;
+  for (Eigen::Index k = 0; k < m.frequencies.size() && m.frequencies[k] == 0.; ++k)
+    rigid.push_back(m.shapes.col(k));
+  if (rigid.size() > 1)
+    throw InputError("Train/fixed", "the stage has " + std::to_string(rigid.size()) +
+                                        " free rotations: hold or suspend a member");
+  const unsigned int uo = central_dof(load.output, 2);
+  double output_torque = 0.;
+  if (!rigid.empty())
+  {
+    // The load on the output that balances the input in the rigid rotation: v0ᵀ·f = 0.
+    const Eigen::VectorXd& v0 = rigid.front();
+    if (std::abs(v0[uo]) < 1e-12 * v0.cwiseAbs().maxCoeff())
+      throw InputError("Train/output", "the output does not turn with the stage");
+    output_torque = -v0.dot(f) / v0[uo] * out.radius;
+    f[uo] += output_torque / out.radius;
+  }
+  LateralStaticState state;
+  state.displacement = deflection_under(f, rigid);
+  state.output_torque = output_torque;
+  static_forces(state);
   return state;
 }
 } // namespace gearstiff::dynamics

@@ -198,6 +198,10 @@ public:
 
 private:
   double deflection(const Spring& spring, const double* q) const;
+  void modal_energies(LateralModes& result) const;
+  Eigen::VectorXd deflection_under(const Eigen::VectorXd& f,
+                                   const std::vector<Eigen::VectorXd>& rigid) const;
+  void static_forces(LateralStaticState& state) const;
 
   LateralStage data;
   unsigned int n_planet = 0;

@@ -483,9 +483,9 @@ std::vector<unsigned int> lexicographic(unsigned int dim)
   return {0, 1, 3, 2, 4, 5, 7, 6};
 }
 
-template <int dim>
-void build_triangulation(const Deck& deck, const double scale, Triangulation<dim>& tria,
-                         const std::string& parameter, PhysicalNames& names)
+// Each element's material id: its first element set's number (1-based), 0 for none; the sets'
+// names go into `names`.
+std::map<long, types::material_id> element_materials(const Deck& deck, PhysicalNames& names)
 {
   std::map<long, types::material_id> material;
   for (std::size_t s = deck.element_sets.size(); s-- > 0;) // the first set listing a cell wins
@@ -493,14 +493,27 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
       material[id] = static_cast<types::material_id>(s + 1);
   for (std::size_t s = 0; s < deck.element_sets.size(); ++s)
     names.cells[group_name_from_abaqus(deck.element_sets[s].name)] = s + 1;
+  return material;
+}
 
+// The deck's nodes and elements as deal.II vertices (m) and cells.
+template <int dim>
+struct DeckCells
+{
   std::map<long, unsigned int> vertex_of_node;
   std::vector<Point<dim>> vertices;
   std::vector<CellData<dim>> cells;
+};
+
+template <int dim>
+DeckCells<dim> deck_cells(const Deck& deck, const double scale, const std::string& parameter,
+                          const std::map<long, types::material_id>& material)
+{
+  DeckCells<dim> result;
   const auto order = lexicographic(dim);
   const auto vertex = [&](long node, const Element& element)
   {
-    const auto [found, added] = vertex_of_node.emplace(node, vertices.size());
+    const auto [found, added] = result.vertex_of_node.emplace(node, result.vertices.size());
     if (added)
     {
       const auto x = deck.nodes.find(node);
@@ -510,7 +523,7 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
       Point<dim> p;
       for (unsigned int c = 0; c < dim; ++c)
         p[c] = scale * x->second[c];
-      vertices.push_back(p);
+      result.vertices.push_back(p);
     }
     return found->second;
   };
@@ -521,9 +534,17 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
       cell.vertices[v] = vertex(element.nodes[order[v]], element);
     const auto found = material.find(id);
     cell.material_id = found == material.end() ? 0 : found->second;
-    cells.push_back(cell);
+    result.cells.push_back(cell);
   }
+  return result;
+}
 
+// The deck's surfaces as boundary faces, boundary id = the surface's number (1-based); their
+// names go into `names`.
+template <int dim>
+SubCellData surface_faces(const Deck& deck, const std::map<long, unsigned int>& vertex_of_node,
+                          PhysicalNames& names)
+{
   SubCellData faces;
   for (std::size_t s = 0; s < deck.surfaces.size(); ++s)
   {
@@ -544,9 +565,17 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
         faces.boundary_quads.push_back(data);
     }
   }
-  // Faces of a surface must lie on the boundary: a face two elements share is interior.
+  return faces;
+}
+
+// Faces of a surface must lie on the boundary: a face two elements share is interior.
+template <int dim>
+void check_surfaces_on_boundary(const Deck& deck, const DeckCells<dim>& mesh,
+                                const std::string& parameter)
+{
+  const auto order = lexicographic(dim);
   std::map<std::vector<unsigned int>, unsigned int> face_uses; // sorted vertices -> elements
-  for (const auto& cell : cells)
+  for (const auto& cell : mesh.cells)
     for (const auto& corners : element_faces(dim))
     {
       std::vector<unsigned int> key;
@@ -561,7 +590,7 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
       const Element& element = deck.elements.at(id);
       std::vector<unsigned int> key;
       for (const unsigned int c : element_faces(dim)[face])
-        key.push_back(vertex_of_node.at(element.nodes[c]));
+        key.push_back(mesh.vertex_of_node.at(element.nodes[c]));
       std::sort(key.begin(), key.end());
       if (face_uses[key] > 1)
         throw InputError(parameter, "*SURFACE NAME=" + surface.name + ": face S" +
@@ -570,9 +599,13 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
                                         " is shared by two elements (an interior face; a "
                                         "surface lies on the boundary)");
     }
+}
 
-  // Each element's corners must span a cell: the Jacobian at every corner non-zero and of one
-  // sign (a degenerate element made the factorization fail with "PETSc error code 81").
+// Each element's corners must span a cell: the Jacobian at every corner non-zero and of one
+// sign (a degenerate element made the factorization fail with "PETSc error code 81").
+template <int dim>
+void check_element_shapes(const Deck& deck, const std::string& parameter)
+{
   for (const auto& [id, element] : deck.elements)
   {
     std::vector<Eigen::Vector3d> corners;
@@ -587,13 +620,23 @@ void build_triangulation(const Deck& deck, const double scale, Triangulation<dim
                            " is degenerate or twisted (its corners, in the Abaqus order, do not "
                            "span a cell of positive size)");
   }
+}
 
-  GridTools::invert_all_negative_measure_cells(vertices, cells);
-  GridTools::consistently_order_cells(cells);
+template <int dim>
+void build_triangulation(const Deck& deck, const double scale, Triangulation<dim>& tria,
+                         const std::string& parameter, PhysicalNames& names)
+{
+  DeckCells<dim> mesh = deck_cells<dim>(deck, scale, parameter, element_materials(deck, names));
+  const SubCellData faces = surface_faces<dim>(deck, mesh.vertex_of_node, names);
+  check_surfaces_on_boundary<dim>(deck, mesh, parameter);
+  check_element_shapes<dim>(deck, parameter);
+
+  GridTools::invert_all_negative_measure_cells(mesh.vertices, mesh.cells);
+  GridTools::consistently_order_cells(mesh.cells);
   Triangulation<dim> serial;
   try
   {
-    serial.create_triangulation(vertices, cells, faces);
+    serial.create_triangulation(mesh.vertices, mesh.cells, faces);
   }
   catch (const ExceptionBase& e)
   {

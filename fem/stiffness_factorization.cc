@@ -96,6 +96,22 @@ std::vector<unsigned int> connected_parts(const DoFHandler<dim>& dof_handler,
     parent[i] = root(i);
   return parent;
 }
+// `constraints` with the DoFs of fixing_dofs held as well.
+AffineConstraints<double> held_constraints(const AffineConstraints<double>& constraints,
+                                           const std::vector<Vector<double>>& modes)
+{
+  AffineConstraints<double> fixed;
+  for (const auto& line : constraints.get_lines())
+  {
+    fixed.add_line(line.index);
+    fixed.add_entries(line.index, line.entries);
+    fixed.set_inhomogeneity(line.index, line.inhomogeneity);
+  }
+  for (const auto dof : fixing_dofs(modes, constraints))
+    fixed.add_line(dof);
+  fixed.close();
+  return fixed;
+}
 } // namespace
 
 template <int dim>
@@ -268,6 +284,100 @@ struct StiffnessFactorization<dim>::Implementation
     return result;
   }
 
+  // Cholesky by MUMPS on `matrix` (symmetric positive definite once every body is held);
+  // returns the preconditioner that holds the factor.
+  PC create_cholesky_solver()
+  {
+    PC pc;
+    check(KSPCreate(mpi_communicator, &ksp), "KSPCreate");
+    check(KSPSetOperators(ksp, matrix, matrix), "KSPSetOperators");
+    check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+    check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+    check(PCFactorGetMatrix(pc, &factor), "PCFactorGetMatrix");
+    // Factors out of core (MUMPS ICNTL(22) = 1, files in $MUMPS_OOC_TMPDIR, else /tmp) from
+    // `out_of_core_dofs` on: the 3D Q2 pair at 1.06 M DoFs on 2 ranks then peaks at 10.6 GB in
+    // all (MUMPS in core: 11.1 GB for the factors alone on top of ~8 GB), for ~10 % more time at
+    // 407k DoFs (27.0 s against 24.2 s, same k). PETSC_OPTIONS (-mat_mumps_icntl_22) still
+    // override.
+    constexpr types::global_dof_index out_of_core_dofs = 500'000;
+    if (n_dofs >= out_of_core_dofs)
+      check(MatMumpsSetIcntl(factor, 22, 1), "MatMumpsSetIcntl");
+    return pc;
+  }
+
+  // Asks MUMPS for the dense Schur complement on the interface of `interface_dofs` where it
+  // pays: MUMPS forms it as a dense root front and Eigen factorizes it again, both O(n³).
+  // Measured on one rank (2D, 47k–59k DoFs): 320 and 638 interface DoFs (gear pair, single and
+  // double) 0.1 s faster than the sparse inverse entries; 4443 (cycloid drive, 28 pairs) 2.8 s
+  // slower for the same forces.
+  void request_schur_complement(const std::vector<types::global_dof_index>& interface_dofs)
+  {
+    const bool serial = Utilities::MPI::n_mpi_processes(mpi_communicator) == 1;
+    constexpr std::size_t max_dense_interface = 1500;
+    std::vector<types::global_dof_index> candidate;
+    if (serial && !interface_dofs.empty())
+      candidate = interface_of(interface_dofs);
+    if (candidate.empty() || candidate.size() > max_dense_interface)
+      return;
+    interface = std::move(candidate);
+    std::vector<PetscInt> indices(interface.begin(), interface.end());
+    IS is;
+    check(ISCreateGeneral(PETSC_COMM_SELF, indices.size(), indices.data(), PETSC_COPY_VALUES, &is),
+          "ISCreateGeneral");
+    check(MatFactorSetSchurIS(factor, is), "MatFactorSetSchurIS");
+    ISDestroy(&is);
+  }
+
+  // The DoFs whose values give those at `rows`: for a constrained row its masters (sorted).
+  std::vector<types::global_dof_index>
+  values_needed(const std::vector<types::global_dof_index>& rows) const
+  {
+    std::vector<types::global_dof_index> needed;
+    for (const auto row : rows)
+    {
+      if (const auto* entries = homogeneous.get_constraint_entries(row))
+        for (const auto& [master, weight] : *entries)
+          needed.push_back(master);
+      else if (!homogeneous.is_constrained(row))
+        needed.push_back(row);
+    }
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+    return needed;
+  }
+
+  // (K⁻¹)_CC = S⁻¹ for the Schur complement S on the interface C: loads on C only need S. Adds
+  // the responses at `rows` into `result` and returns true when every load lies on C.
+  bool interface_responses(const std::vector<SparseLoad>& loads,
+                           const std::vector<types::global_dof_index>& rows,
+                           std::vector<std::vector<double>>& result) const
+  {
+    auto interface_position = [&](types::global_dof_index dof)
+    { return std::lower_bound(interface.begin(), interface.end(), dof) - interface.begin(); };
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(interface.size(), loads.size());
+    for (unsigned int j = 0; j < loads.size(); ++j)
+      for (const auto& [dof, value] : loads[j])
+        for (const auto& [target, weight] : condensed_targets(dof))
+        {
+          const auto k = interface_position(target);
+          if (k == static_cast<long>(interface.size()) || interface[k] != target)
+            return false;
+          rhs(k, j) += weight * value;
+        }
+    const Eigen::MatrixXd solution = interface_factor.solve(rhs);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (const auto& [target, weight] : condensed_targets(rows[r]))
+      {
+        const auto k = interface_position(target);
+        for (unsigned int j = 0; j < loads.size(); ++j)
+          result[j][r] += weight * solution(k, j);
+      }
+    return true;
+  }
+
   // C^T b: a load on a constrained DoF acts on its masters (virtual work), written into the
   // owned entries of `rhs` (every rank holds the complete load).
   void condense(const SparseLoad& load, Vec rhs) const
@@ -302,58 +412,14 @@ StiffnessFactorization<dim>::StiffnessFactorization(
   // Supports plus one fixed DoF per free rigid-body mode: a non-singular matrix whose inverse
   // is a generalized inverse of the support-condensed one.
   modes = system.free_rigid_modes(constraints);
-  AffineConstraints<double> fixed;
-  for (const auto& line : constraints.get_lines())
-  {
-    fixed.add_line(line.index);
-    fixed.add_entries(line.index, line.entries);
-    fixed.set_inhomogeneity(line.index, line.inhomogeneity);
-  }
-  for (const auto dof : fixing_dofs(modes, constraints))
-    fixed.add_line(dof);
-  fixed.close();
+  AffineConstraints<double> fixed = held_constraints(constraints, modes);
   impl->homogeneous = homogeneous_copy(fixed);
   impl->part = connected_parts(system.get_dof_handler(), fixed);
 
   PETScWrappers::MPI::Vector rhs;
   system.condensed_system(fixed, point_loads, impl->matrix, rhs);
-
-  // Cholesky: the condensed matrix is symmetric positive definite once every body is held.
-  PC pc;
-  check(KSPCreate(impl->mpi_communicator, &impl->ksp), "KSPCreate");
-  check(KSPSetOperators(impl->ksp, impl->matrix, impl->matrix), "KSPSetOperators");
-  check(KSPSetType(impl->ksp, KSPPREONLY), "KSPSetType");
-  check(KSPGetPC(impl->ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-  check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-  check(PCFactorGetMatrix(pc, &impl->factor), "PCFactorGetMatrix");
-  // Factors out of core (MUMPS ICNTL(22) = 1, files in $MUMPS_OOC_TMPDIR, else /tmp) from
-  // `out_of_core_dofs` on: the 3D Q2 pair at 1.06 M DoFs on 2 ranks then peaks at 10.6 GB in all
-  // (MUMPS in core: 11.1 GB for the factors alone on top of ~8 GB), for ~10 % more time at 407k
-  // DoFs (27.0 s against 24.2 s, same k). PETSC_OPTIONS (-mat_mumps_icntl_22) still override.
-  constexpr types::global_dof_index out_of_core_dofs = 500'000;
-  if (impl->n_dofs >= out_of_core_dofs)
-    check(MatMumpsSetIcntl(impl->factor, 22, 1), "MatMumpsSetIcntl");
-  const bool serial = Utilities::MPI::n_mpi_processes(impl->mpi_communicator) == 1;
-  // The dense Schur complement pays where the interface is small: MUMPS forms it as a dense
-  // root front and Eigen factorizes it again, both O(n³). Measured on one rank (2D, 47k–59k
-  // DoFs): 320 and 638 interface DoFs (gear pair, single and double) 0.1 s faster than the
-  // sparse inverse entries; 4443 (cycloid drive, 28 pairs) 2.8 s slower for the same forces.
-  constexpr std::size_t max_dense_interface = 1500;
-  std::vector<types::global_dof_index> interface;
-  if (serial && !interface_dofs.empty())
-    interface = impl->interface_of(interface_dofs);
-  if (!interface.empty() && interface.size() <= max_dense_interface)
-  {
-    impl->interface = std::move(interface);
-    std::vector<PetscInt> indices(impl->interface.begin(), impl->interface.end());
-    IS is;
-    check(ISCreateGeneral(PETSC_COMM_SELF, indices.size(), indices.data(), PETSC_COPY_VALUES, &is),
-          "ISCreateGeneral");
-    check(MatFactorSetSchurIS(impl->factor, is), "MatFactorSetSchurIS");
-    ISDestroy(&is);
-  }
+  PC pc = impl->create_cholesky_solver();
+  impl->request_schur_complement(interface_dofs);
   // A failed factorization (out of memory, singular) is no PETSc error: ask MUMPS.
   PetscErrorCode setup_code;
   {
@@ -436,55 +502,17 @@ StiffnessFactorization<dim>::responses(const std::vector<SparseLoad>& loads,
                                        const std::vector<types::global_dof_index>& rows) const
 {
   // The values at `rows` need, for a constrained row, its masters' values: gather both.
-  std::vector<types::global_dof_index> needed;
-  for (const auto row : rows)
-  {
-    if (const auto* entries = impl->homogeneous.get_constraint_entries(row))
-      for (const auto& [master, weight] : *entries)
-        needed.push_back(master);
-    else if (!impl->homogeneous.is_constrained(row))
-      needed.push_back(row);
-  }
-  std::sort(needed.begin(), needed.end());
-  needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+  const std::vector<types::global_dof_index> needed = impl->values_needed(rows);
   auto position = [&](types::global_dof_index dof)
   { return std::lower_bound(needed.begin(), needed.end(), dof) - needed.begin(); };
 
   std::vector<std::vector<double>> result(loads.size(), std::vector<double>(rows.size(), 0.));
   if (impl->dense &&
-      std::includes(impl->interface.begin(), impl->interface.end(), needed.begin(), needed.end()))
+      std::includes(impl->interface.begin(), impl->interface.end(), needed.begin(), needed.end()) &&
+      impl->interface_responses(loads, rows, result))
   {
-    // (K⁻¹)_CC = S⁻¹ for the Schur complement S on the interface C: loads on C only need S.
-    auto interface_position = [&](types::global_dof_index dof)
-    {
-      return std::lower_bound(impl->interface.begin(), impl->interface.end(), dof) -
-             impl->interface.begin();
-    };
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(impl->interface.size(), loads.size());
-    bool on_interface = true;
-    for (unsigned int j = 0; j < loads.size() && on_interface; ++j)
-      for (const auto& [dof, value] : loads[j])
-        for (const auto& [target, weight] : impl->condensed_targets(dof))
-        {
-          const auto k = interface_position(target);
-          if (k == static_cast<long>(impl->interface.size()) || impl->interface[k] != target)
-            on_interface = false;
-          else
-            rhs(k, j) += weight * value;
-        }
-    if (on_interface)
-    {
-      const Eigen::MatrixXd solution = impl->interface_factor.solve(rhs);
-      solves += loads.size();
-      for (unsigned int r = 0; r < rows.size(); ++r)
-        for (const auto& [target, weight] : impl->condensed_targets(rows[r]))
-        {
-          const auto k = interface_position(target);
-          for (unsigned int j = 0; j < loads.size(); ++j)
-            result[j][r] += weight * solution(k, j);
-        }
-      return result;
-    }
+    solves += loads.size();
+    return result;
   }
   // Loads on few DoFs, values wanted at few DoFs: entries of K⁻¹ rather than whole solutions.
   std::vector<types::global_dof_index> targets;

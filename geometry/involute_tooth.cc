@@ -32,6 +32,7 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <tuple>
 
 namespace gearstiff::geometry
 {
@@ -417,13 +418,14 @@ InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double t
   spec.teeth = gear.teeth;
   spec.module = gear.normal_module;
   spec.pressure_angle = gear.pressure_angle;
-  spec.profile_shift = gear.profile_shift;
   spec.tip_diameter = tip_diameter;
-  spec.internal = gear.internal;
-  spec.cutter_addendum = gear.dedendum_coefficient;
-  spec.cutter_dedendum = gear.addendum_coefficient;
-  spec.cutter_tip_radius = gear.root_radius_coefficient;
+  spec.profile_shift = gear.profile_shift;
+  // The cutter is the gear's basic rack turned over: its addendum cuts the gear's dedendum, its
+  // dedendum meets the gear's addendum, its tip round draws the root round.
+  std::tie(spec.cutter_addendum, spec.cutter_dedendum, spec.cutter_tip_radius) = std::tuple{
+      gear.dedendum_coefficient, gear.addendum_coefficient, gear.root_radius_coefficient};
   spec.gear_addendum = gear.addendum_coefficient;
+  spec.internal = gear.internal;
   return spec;
 }
 
@@ -748,10 +750,8 @@ ToothProfile generate_involute_tooth(const InvoluteToothSpec& spec,
   tooth.teeth = spec.teeth;
   tooth.angular_pitch = angular_pitch;
   tooth.internal = spec.internal;
-  tooth.reference_radius = g.reference_radius;
-  tooth.base_radius = g.base_radius;
-  tooth.tip_radius = g.tip_radius;
-  tooth.root_radius = motion.root_radius;
+  std::tie(tooth.reference_radius, tooth.base_radius, tooth.tip_radius, tooth.root_radius) =
+      std::tuple{g.reference_radius, g.base_radius, g.tip_radius, motion.root_radius}; // m
 
   const double fillet_start = fillet_start_rotation(motion, range, flank, g, tooth);
   const double t_form = form_roll_parameter(spec, g, flank, motion, fillet_start, tooth);

@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <map>
 
 namespace gearstiff::geometry
 {
@@ -71,22 +73,29 @@ void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_c
     contacts.push_back(contact);
   }
 }
-} // namespace
 
-Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin)
+// The output pins must fit their holes with a bore inside each.
+void check_output_pin_bodies(const CycloidSceneSpec& spec)
 {
-  return spec.output_pin_circle_radius *
-         unit(spec.disc_rotation + spec.output_pin_phase + 2. * M_PI * pin / spec.output_pins);
+  if (!(spec.output_pin_radius + spec.ring.eccentricity <= spec.output_pin_hole_radius + 1e-12))
+    throw InputError(section + "output pin radius",
+                     "the pins do not fit their holes: pin radius + e = " +
+                         std::to_string((spec.output_pin_radius + spec.ring.eccentricity) * 1e3) +
+                         " mm exceeds the hole radius " +
+                         std::to_string(spec.output_pin_hole_radius * 1e3) + " mm");
+  if (!(spec.output_pin_bore_radius > 0. &&
+        spec.output_pin_bore_radius < spec.output_pin_radius - 1e-3))
+    throw InputError(section + "output pin bore radius",
+                     "must be positive and leave 1 mm of pin around it");
+  if (!(spec.pin_force > 0.))
+    throw InputError(section + "pin force", "must be positive");
 }
 
-SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& file)
+// Checks the scene's dimensions against the disc outline; returns the lobe root radius (m).
+double check_cycloid_scene(const CycloidSceneSpec& spec, const CycloidDiscSpec& disc,
+                           const ToothProfile& lobe)
 {
-  const auto start = std::chrono::steady_clock::now();
   const CycloidDiscSpec& ring = spec.ring;
-  const CycloidDiscSpec disc = spec.disc.rollers == 0 ? ring : spec.disc;
-  // The profile generator checks the disc itself (m < 1, rollers that fit).
-  const ToothProfile lobe = generate_cycloid_disc(disc, spec.points_per_lobe);
-  const unsigned int lobes = lobe.teeth;
   if (disc.rollers != ring.rollers || std::abs(disc.eccentricity - ring.eccentricity) > 1e-12)
     throw InputError(section + "disc", "must have the ring's rollers and eccentricity");
 
@@ -118,68 +127,90 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
   else if (spec.bore_radius > lobe_root - 1e-3)
     throw InputError(section + "bore radius", "leaves no disc material under the lobes");
   if (spec.output_pin_bodies && spec.output_pins > 0)
-  {
-    if (!(spec.output_pin_radius + ring.eccentricity <= spec.output_pin_hole_radius + 1e-12))
-      throw InputError(section + "output pin radius",
-                       "the pins do not fit their holes: pin radius + e = " +
-                           std::to_string((spec.output_pin_radius + ring.eccentricity) * 1e3) +
-                           " mm exceeds the hole radius " +
-                           std::to_string(spec.output_pin_hole_radius * 1e3) + " mm");
-    if (!(spec.output_pin_bore_radius > 0. &&
-          spec.output_pin_bore_radius < spec.output_pin_radius - 1e-3))
-      throw InputError(section + "output pin bore radius",
-                       "must be positive and leave 1 mm of pin around it");
-    if (!(spec.pin_force > 0.))
-      throw InputError(section + "pin force", "must be positive");
-  }
+    check_output_pin_bodies(spec);
   if (!(spec.roller_pin_radius > 0. && spec.roller_pin_radius < 0.8 * ring.roller_radius))
     throw InputError(section + "roller pin radius", "must lie in (0, 0.8·q)");
   if (!(spec.disc_width > 0.))
     throw InputError(section + "disc width", "must be positive");
   if (!(spec.roller_force > 0.))
     throw InputError(section + "roller force", "must be positive");
+  return lobe_root;
+}
 
-  const double psi = spec.disc_rotation;
-  const Eigen::Vector2d disc_centre =
-      -ring.eccentricity * unit(-double(lobes) * psi); // see the header
-  const Eigen::Rotation2Dd to_scene(psi);
-  const auto place = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d
-  { return disc_centre + to_scene * p; };
+// Where the disc sits at rotation ψ: its centre (see the header) and the map from disc to scene
+// coordinates.
+struct DiscPlacement
+{
+  DiscPlacement(const CycloidSceneSpec& spec, unsigned int lobes)
+      : centre(-spec.ring.eccentricity * unit(-double(lobes) * spec.disc_rotation)),
+        to_scene(spec.disc_rotation)
+  {
+  }
+  Eigen::Vector2d operator()(const Eigen::Vector2d& p) const { return centre + to_scene * p; }
 
-  // Contacts: the exact closest point of the equidistant to each roller centre (golden-section
-  // search in the generating angle between the neighbours of the nearest outline point), the
-  // clearance from prof's roller_clearances for the same placement.
-  const std::vector<double> clearances = roller_clearances(ring, disc, psi);
-  const unsigned int n = lobe.points.size();
+  Eigen::Vector2d centre; // m
+  Eigen::Rotation2Dd to_scene;
+};
+
+Eigen::Vector2d roller_centre(const CycloidDiscSpec& ring, unsigned int roller)
+{
+  return ring.roller_circle_radius * unit(2. * M_PI * roller / ring.rollers);
+}
+
+// The generating angle (rad) of the disc outline point closest to `local` (disc coordinates):
+// golden-section search between the neighbours of the nearest outline point.
+double closest_generating_angle(const CycloidDiscSpec& disc, unsigned int lobes,
+                                unsigned int points, const Eigen::Vector2d& local)
+{
   const double lobe_pitch = 2. * M_PI / lobes;
-  std::vector<SceneContact> contacts;
-  std::vector<double> contact_angles(ring.rollers, 0.);
+  double best = std::numeric_limits<double>::infinity(), best_alpha = 0.;
+  for (unsigned int k = 0; k < lobes; ++k)
+    for (unsigned int j = 0; j < points; ++j)
+    {
+      const double alpha = -M_PI / lobes + lobe_pitch * j / (points - 1) + k * lobe_pitch;
+      const double distance = (cycloid_point(disc, alpha) - local).norm();
+      if (distance < best)
+        best = distance, best_alpha = alpha;
+    }
+  double low = best_alpha - lobe_pitch / (points - 1),
+         high = best_alpha + lobe_pitch / (points - 1);
+  const double golden = 0.5 * (std::sqrt(5.) - 1.);
+  for (int it = 0; it < 60; ++it)
+  {
+    const double a = high - golden * (high - low), b = low + golden * (high - low);
+    if ((cycloid_point(disc, a) - local).norm() < (cycloid_point(disc, b) - local).norm())
+      high = b;
+    else
+      low = a;
+  }
+  return 0.5 * (low + high);
+}
+
+struct RollerContacts
+{
+  std::vector<SceneContact> contacts; // rollers within the contact clearance
+  std::vector<double> contact_angles; // rad, per roller: polar angle of its closest disc point
+};
+
+// Contacts: the exact closest point of the equidistant to each roller centre, the clearance from
+// prof's roller_clearances for the same placement.
+RollerContacts roller_contacts(const CycloidSceneSpec& spec, const CycloidDiscSpec& disc,
+                               const ToothProfile& lobe, const DiscPlacement& place)
+{
+  const CycloidDiscSpec& ring = spec.ring;
+  const double psi = spec.disc_rotation;
+  const std::vector<double> clearances = roller_clearances(ring, disc, psi);
+  const unsigned int lobes = lobe.teeth;
+  const double lobe_pitch = 2. * M_PI / lobes;
+  RollerContacts result;
+  result.contact_angles.assign(ring.rollers, 0.);
   for (unsigned int i = 0; i < ring.rollers; ++i)
   {
-    const Eigen::Vector2d roller = ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers);
-    const Eigen::Vector2d local = to_scene.inverse() * (roller - disc_centre);
-    double best = std::numeric_limits<double>::infinity(), best_alpha = 0.;
-    for (unsigned int k = 0; k < lobes; ++k)
-      for (unsigned int j = 0; j < n; ++j)
-      {
-        const double alpha = -M_PI / lobes + lobe_pitch * j / (n - 1) + k * lobe_pitch;
-        const double distance = (cycloid_point(disc, alpha) - local).norm();
-        if (distance < best)
-          best = distance, best_alpha = alpha;
-      }
-    double low = best_alpha - lobe_pitch / (n - 1), high = best_alpha + lobe_pitch / (n - 1);
-    const double golden = 0.5 * (std::sqrt(5.) - 1.);
-    for (int it = 0; it < 60; ++it)
-    {
-      const double a = high - golden * (high - low), b = low + golden * (high - low);
-      if ((cycloid_point(disc, a) - local).norm() < (cycloid_point(disc, b) - local).norm())
-        high = b;
-      else
-        low = a;
-    }
-    const double alpha = 0.5 * (low + high);
+    const Eigen::Vector2d roller = roller_centre(ring, i);
+    const Eigen::Vector2d local = place.to_scene.inverse() * (roller - place.centre);
+    const double alpha = closest_generating_angle(disc, lobes, lobe.points.size(), local);
     const Eigen::Vector2d point = place(cycloid_point(disc, alpha));
-    contact_angles[i] = std::atan2((point - roller).y(), (point - roller).x());
+    result.contact_angles[i] = std::atan2((point - roller).y(), (point - roller).x());
     if (clearances[i] > spec.contact_clearance)
       continue;
     SceneContact contact = loaded_contact(spec, cycloid_curvature_radius(disc, alpha),
@@ -189,22 +220,28 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
     contact.gap = clearances[i];
     contact.first_feature = static_cast<int>(std::lround((alpha + psi) / lobe_pitch));
     contact.second_feature = static_cast<int>(i);
-    contacts.push_back(contact);
+    result.contacts.push_back(contact);
   }
-  if (contacts.empty())
+  if (result.contacts.empty())
     throw InputError(section + "contact clearance",
                      "no roller lies within it at this disc rotation");
+  return result;
+}
 
-  PlanarModel model;
-  PlanarBody disc_body;
-  disc_body.name = "disc";
-  disc_body.material_id = scene_ids::first_body;
+PlanarBody disc_body(const CycloidSceneSpec& spec, const ToothProfile& lobe,
+                     const DiscPlacement& place)
+{
+  PlanarBody body;
+  body.name = "disc";
+  body.material_id = scene_ids::first_body;
   // One closed spline through every lobe's points: pieces joined at the lobe gaps would meet
   // there with a kink of the interpolating spline (a few µm off the exact outline), right where
   // a roller sits in a gap in conformal contact — an initial overlap of that size.
   BoundaryPiece outline;
   outline.kind = CurveKind::spline;
   outline.boundary_id = scene_ids::first_contact;
+  const unsigned int lobes = lobe.teeth;
+  const double lobe_pitch = 2. * M_PI / lobes;
   for (unsigned int k = 0; k < lobes; ++k)
   {
     const Eigen::Rotation2Dd lobe_rotation(k * lobe_pitch);
@@ -212,18 +249,22 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
       outline.points.push_back(place(lobe_rotation * lobe.points[j].position));
   }
   outline.points.back() = outline.points.front();
-  disc_body.outer.pieces.push_back(outline);
-  disc_body.holes.push_back(circle_loop(disc_centre, spec.bore_radius, scene_ids::first_bore));
+  body.outer.pieces.push_back(outline);
+  body.holes.push_back(circle_loop(place.centre, spec.bore_radius, scene_ids::first_bore));
   for (unsigned int j = 0; j < spec.output_pins; ++j)
-    disc_body.holes.push_back(circle_loop(disc_centre + output_pin_centre(spec, j),
-                                          spec.output_pin_hole_radius,
-                                          scene_ids::output_pin_holes));
-  model.bodies.push_back(disc_body);
-  if (spec.output_pin_bodies)
-    add_output_pins(spec, disc_centre, model, contacts);
+    body.holes.push_back(circle_loop(place.centre + output_pin_centre(spec, j),
+                                     spec.output_pin_hole_radius, scene_ids::output_pin_holes));
+  return body;
+}
+
+// The rollers, each starting its outline where the disc comes closest (a mesh node there).
+void add_rollers(const CycloidSceneSpec& spec, const std::vector<double>& contact_angles,
+                 PlanarModel& model)
+{
+  const CycloidDiscSpec& ring = spec.ring;
   for (unsigned int i = 0; i < ring.rollers; ++i)
   {
-    const Eigen::Vector2d centre = ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers);
+    const Eigen::Vector2d centre = roller_centre(ring, i);
     PlanarBody roller;
     roller.name = "rollers";
     roller.material_id = scene_ids::second_body;
@@ -232,27 +273,37 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
     roller.holes.push_back(circle_loop(centre, spec.roller_pin_radius, scene_ids::second_bore));
     model.bodies.push_back(roller);
   }
-  model.boundary_names = {{scene_ids::first_bore, "disc bore"},
-                          {scene_ids::second_bore, "roller pins"},
-                          {scene_ids::first_contact, "disc lobes"},
-                          {scene_ids::second_contact, "roller surfaces"},
-                          {scene_ids::output_pin_holes, "output pin holes"}};
+}
+
+std::map<int, std::string> cycloid_boundary_names(const CycloidSceneSpec& spec)
+{
+  std::map<int, std::string> names = {{scene_ids::first_bore, "disc bore"},
+                                      {scene_ids::second_bore, "roller pins"},
+                                      {scene_ids::first_contact, "disc lobes"},
+                                      {scene_ids::second_contact, "roller surfaces"},
+                                      {scene_ids::output_pin_holes, "output pin holes"}};
   if (spec.output_pin_bodies)
   {
-    model.boundary_names[cycloid_ids::output_pin_bores] = "output pin bores";
-    model.boundary_names[cycloid_ids::output_pin_surfaces] = "output pin surfaces";
+    names[cycloid_ids::output_pin_bores] = "output pin bores";
+    names[cycloid_ids::output_pin_surfaces] = "output pin surfaces";
   }
+  return names;
+}
 
-  // Away from the contacts the disc (below its lobe roots) and the rollers (below their
-  // surface) only carry load to the bore and the pins: let the cells grow with depth there.
+// Away from the contacts the disc (below its lobe roots) and the rollers (below their surface)
+// only carry load to the bore and the pins: the depth (m) below the nearest such surface, along
+// which the cells grow.
+std::function<double(const Eigen::Vector2d&)>
+depth_below_surfaces(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_centre,
+                     double lobe_root)
+{
   std::vector<Eigen::Vector2d> roller_centres;
-  for (unsigned int i = 0; i < ring.rollers; ++i)
-    roller_centres.push_back(ring.roller_circle_radius * unit(2. * M_PI * i / ring.rollers));
+  for (unsigned int i = 0; i < spec.ring.rollers; ++i)
+    roller_centres.push_back(roller_centre(spec.ring, i));
   std::vector<Eigen::Vector2d> pin_centres;
   for (unsigned int j = 0; spec.output_pin_bodies && j < spec.output_pins; ++j)
     pin_centres.push_back(output_pin_centre(spec, j));
-  const auto depth =
-      [=, q = ring.roller_radius, p = spec.output_pin_radius](const Eigen::Vector2d& x)
+  return [=, q = spec.ring.roller_radius, p = spec.output_pin_radius](const Eigen::Vector2d& x)
   {
     double result = lobe_root - (x - disc_centre).norm();
     for (const auto& c : roller_centres)
@@ -261,30 +312,67 @@ SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& f
       result = std::max(result, p - (x - c).norm());
     return result;
   };
+}
+
+std::vector<SceneQuantity> cycloid_quantities(const CycloidSceneSpec& spec, unsigned int lobes,
+                                              std::size_t rollers_in_contact, double lobe_root)
+{
+  const CycloidDiscSpec& ring = spec.ring;
+  return {{"disc_rotation", spec.disc_rotation, "rad", "disc rotation ψ"},
+          {"rollers", double(ring.rollers), "-", "rollers z_k (all modelled)"},
+          {"lobes", double(lobes), "-", "disc lobes z_s"},
+          {"rollers_in_contact", double(rollers_in_contact), "-",
+           "rollers within the contact clearance"},
+          {"disc_bore_radius", spec.bore_radius, "m", "disc bore radius"},
+          {"output_pin_holes", double(spec.output_pins), "-", "output-pin holes"},
+          {"output_pin_hole_radius", spec.output_pin_hole_radius, "m", "output-pin hole radius"},
+          {"output_pin_bodies", spec.output_pin_bodies ? double(spec.output_pins) : 0., "-",
+           "output pins meshed in their holes"},
+          {"output_pin_play",
+           spec.output_pin_hole_radius - spec.output_pin_radius - ring.eccentricity, "m",
+           "radial play of each pin in its hole (hole − pin − e)"},
+          {"lobe_root_radius", lobe_root, "m", "smallest radius of the disc outline"}};
+}
+} // namespace
+
+Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin)
+{
+  return spec.output_pin_circle_radius *
+         unit(spec.disc_rotation + spec.output_pin_phase + 2. * M_PI * pin / spec.output_pins);
+}
+
+SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& file)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const CycloidDiscSpec& ring = spec.ring;
+  const CycloidDiscSpec disc = spec.disc.rollers == 0 ? ring : spec.disc;
+  // The profile generator checks the disc itself (m < 1, rollers that fit).
+  const ToothProfile lobe = generate_cycloid_disc(disc, spec.points_per_lobe);
+  const double lobe_root = check_cycloid_scene(spec, disc, lobe);
+
+  const unsigned int lobes = lobe.teeth;
+  const DiscPlacement placement(spec, lobes);
+  RollerContacts rollers = roller_contacts(spec, disc, lobe, placement);
+  PlanarModel model;
+  model.bodies.push_back(disc_body(spec, lobe, placement));
+  if (spec.output_pin_bodies)
+    add_output_pins(spec, placement.centre, model, rollers.contacts);
+  add_rollers(spec, rollers.contact_angles, model);
+  model.boundary_names = cycloid_boundary_names(spec);
+
   // At the rollers, seated in the lobe gaps in near-conformal contact, gmsh's longest edges
   // reach about 1.9 times the requested size (1.87–1.96 at 0.6 h_c for crank angles 0° and 9°
   // of the built-in drive, against 1.45 at gear teeth): aim lower at once instead of meshing
   // the whole scene twice (at 0.48, 6 of 8 crank angles over one roller pitch mesh once).
   SceneMeshSettings mesh = spec.mesh;
   mesh.initial_contact_scale = 0.48;
-  SceneInfo info = mesh_scene(model, contacts, mesh, spec.disc_width, file, depth);
+  SceneInfo info = mesh_scene(model, rollers.contacts, mesh, spec.disc_width, file,
+                              depth_below_surfaces(spec, placement.centre, lobe_root));
   info.kind = "cycloid";
-  info.first_centre = disc_centre;
+  info.first_centre = placement.centre;
   info.second_centre = Eigen::Vector2d::Zero();
-  info.first_rotation = psi;
-  info.quantities = {
-      {"disc_rotation", psi, "rad", "disc rotation ψ"},
-      {"rollers", double(ring.rollers), "-", "rollers z_k (all modelled)"},
-      {"lobes", double(lobes), "-", "disc lobes z_s"},
-      {"rollers_in_contact", double(contacts.size()), "-", "rollers within the contact clearance"},
-      {"disc_bore_radius", spec.bore_radius, "m", "disc bore radius"},
-      {"output_pin_holes", double(spec.output_pins), "-", "output-pin holes"},
-      {"output_pin_hole_radius", spec.output_pin_hole_radius, "m", "output-pin hole radius"},
-      {"output_pin_bodies", spec.output_pin_bodies ? double(spec.output_pins) : 0., "-",
-       "output pins meshed in their holes"},
-      {"output_pin_play", spec.output_pin_hole_radius - spec.output_pin_radius - ring.eccentricity,
-       "m", "radial play of each pin in its hole (hole − pin − e)"},
-      {"lobe_root_radius", lobe_root, "m", "smallest radius of the disc outline"}};
+  info.first_rotation = spec.disc_rotation;
+  info.quantities = cycloid_quantities(spec, lobes, rollers.contacts.size(), lobe_root);
   info.time_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return info;
 }

@@ -7,7 +7,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <numeric>
 #include <set>
@@ -52,17 +54,12 @@ void check_name(const std::string& name, const std::string& parameter)
 
 double parse_number(const std::string& text, const std::string& parameter)
 {
-  std::size_t used = 0;
-  double value = 0.;
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value))
+  // The whole text a finite number: strtod's range error is std::stod's out_of_range.
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(begin, &end);
+  if (end == begin || end != begin + text.size() || errno == ERANGE || !std::isfinite(value))
     throw InputError(parameter, "'" + text + "' is not a number");
   return value;
 }
@@ -163,8 +160,7 @@ void check_mesh_frames(const GearTrainSpec& spec, const TrainSolution& solution)
                                             " copies but no carrier to ride on");
 }
 
-// Checks names, tooth counts and module agreement; fills orbit radii and mesh copies.
-void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
+void check_members(const GearTrainSpec& spec)
 {
   std::set<std::string> seen;
   for (const TrainMember& member : spec.members)
@@ -183,68 +179,72 @@ void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
       throw InputError("Train/modules",
                        "member '" + member.name + "' has a negative module, mass or inertia");
   }
-  solution.names.clear();
-  for (const TrainMember& member : spec.members)
-    solution.names.push_back(member.name);
-  solution.names.push_back(housing_name);
+}
 
-  auto require = [&](const std::string& name, const std::string& key)
-  {
-    if (std::find(solution.names.begin(), solution.names.end(), name) == solution.names.end())
-      throw InputError("Train/" + key, "unknown member '" + name + "'");
-  };
+void require_member(const TrainSolution& solution, const std::string& name, const std::string& key)
+{
+  if (std::find(solution.names.begin(), solution.names.end(), name) == solution.names.end())
+    throw InputError("Train/" + key, "unknown member '" + name + "'");
+}
+
+// Every member named by a carrier, connection, fixed member, input or the output exists.
+void check_references(const GearTrainSpec& spec, const TrainSolution& solution)
+{
   for (const TrainMember& member : spec.members)
     if (!member.carrier.empty())
     {
-      require(member.carrier, "planets");
+      require_member(solution, member.carrier, "planets");
       if (member.carrier == member.name)
         throw InputError("Train/planets", "'" + member.name + "' cannot carry itself");
     }
   for (const auto& [a, b] : spec.connections)
   {
-    require(a, "connections");
-    require(b, "connections");
+    require_member(solution, a, "connections");
+    require_member(solution, b, "connections");
   }
   for (const std::string& name : spec.fixed)
-    require(name, "fixed");
+    require_member(solution, name, "fixed");
   for (const auto& input : spec.inputs)
-    require(input.first, "inputs");
+    require_member(solution, input.first, "inputs");
   if (!spec.output.empty())
-    require(spec.output, "output");
+    require_member(solution, spec.output, "output");
+}
 
-  for (const TrainMesh& mesh : spec.meshes)
-  {
-    require(mesh.gear_a, "meshes");
-    require(mesh.gear_b, "meshes");
-    require(mesh.frame, "meshes");
-    if (mesh.gear_a == mesh.gear_b || mesh.frame == mesh.gear_a || mesh.frame == mesh.gear_b)
-      throw InputError("Train/meshes", "mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" +
-                                           mesh.frame + " names a member twice");
-    for (const std::string& name : {mesh.gear_a, mesh.gear_b})
-      if (name == housing_name || member_of(spec, solution, name).teeth == 0)
-        throw InputError("Train/meshes", "'" + name + "' in mesh " + mesh.gear_a + "-" +
-                                             mesh.gear_b + " has no teeth (list it in gears)");
-    const TrainMember& a = member_of(spec, solution, mesh.gear_a);
-    const TrainMember& b = member_of(spec, solution, mesh.gear_b);
-    if (a.teeth < 0 && b.teeth < 0)
-      throw InputError("Train/meshes",
-                       "two internal gears " + a.name + " and " + b.name + " cannot mesh");
-    const TrainMember& inner = a.teeth < 0 ? b : a;
-    const TrainMember& outer = a.teeth < 0 ? a : b;
-    if (outer.teeth < 0 && -outer.teeth <= inner.teeth)
-      throw InputError("Train/gears", "internal gear " + outer.name + " (" +
-                                          std::to_string(-outer.teeth) +
-                                          " teeth) must have more teeth than " + inner.name + " (" +
-                                          std::to_string(inner.teeth) + ") that runs inside it");
-    if (a.module > 0. && b.module > 0. && std::abs(a.module - b.module) > 1e-12)
-      throw InputError("Train/modules",
-                       "gears " + a.name + " and " + b.name + " mesh but have different modules");
-  }
+// A mesh joins two distinct toothed gears of one module, at most one of them internal (and then
+// the larger), on a third member as its frame.
+void check_mesh(const GearTrainSpec& spec, const TrainSolution& solution, const TrainMesh& mesh)
+{
+  require_member(solution, mesh.gear_a, "meshes");
+  require_member(solution, mesh.gear_b, "meshes");
+  require_member(solution, mesh.frame, "meshes");
+  if (mesh.gear_a == mesh.gear_b || mesh.frame == mesh.gear_a || mesh.frame == mesh.gear_b)
+    throw InputError("Train/meshes", "mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" + mesh.frame +
+                                         " names a member twice");
+  for (const std::string& name : {mesh.gear_a, mesh.gear_b})
+    if (name == housing_name || member_of(spec, solution, name).teeth == 0)
+      throw InputError("Train/meshes", "'" + name + "' in mesh " + mesh.gear_a + "-" + mesh.gear_b +
+                                           " has no teeth (list it in gears)");
+  const TrainMember& a = member_of(spec, solution, mesh.gear_a);
+  const TrainMember& b = member_of(spec, solution, mesh.gear_b);
+  if (a.teeth < 0 && b.teeth < 0)
+    throw InputError("Train/meshes",
+                     "two internal gears " + a.name + " and " + b.name + " cannot mesh");
+  const TrainMember& inner = a.teeth < 0 ? b : a;
+  const TrainMember& outer = a.teeth < 0 ? a : b;
+  if (outer.teeth < 0 && -outer.teeth <= inner.teeth)
+    throw InputError("Train/gears", "internal gear " + outer.name + " (" +
+                                        std::to_string(-outer.teeth) +
+                                        " teeth) must have more teeth than " + inner.name + " (" +
+                                        std::to_string(inner.teeth) + ") that runs inside it");
+  if (a.module > 0. && b.module > 0. && std::abs(a.module - b.module) > 1e-12)
+    throw InputError("Train/modules",
+                     "gears " + a.name + " and " + b.name + " mesh but have different modules");
+}
 
-  check_mesh_frames(spec, solution);
-
-  // Orbit radii: a planet's axis sits at the centre distance from its central mate, which
-  // shares the frame's axis. Two meshes giving two radii mean the train does not close.
+// Orbit radii: a planet's axis sits at the centre distance from its central mate, which
+// shares the frame's axis. Two meshes giving two radii mean the train does not close.
+void set_orbit_radii(const GearTrainSpec& spec, TrainSolution& solution)
+{
   const std::size_t n = solution.names.size();
   solution.orbit_radius.assign(n, 0.);
   solution.mesh_copies.assign(spec.meshes.size(), 1);
@@ -286,6 +286,21 @@ void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
           spec.members[i].carrier == spec.members[j].carrier)
         solution.orbit_radius[i] = solution.orbit_radius[j];
 }
+
+// Checks names, tooth counts and module agreement; fills orbit radii and mesh copies.
+void check_structure(const GearTrainSpec& spec, TrainSolution& solution)
+{
+  check_members(spec);
+  solution.names.clear();
+  for (const TrainMember& member : spec.members)
+    solution.names.push_back(member.name);
+  solution.names.push_back(housing_name);
+  check_references(spec, solution);
+  for (const TrainMesh& mesh : spec.meshes)
+    check_mesh(spec, solution, mesh);
+  check_mesh_frames(spec, solution);
+  set_orbit_radii(spec, solution);
+}
 } // namespace
 
 std::size_t TrainSolution::index(const std::string& member) const
@@ -301,13 +316,19 @@ double TrainSolution::speed(const std::string& member) const
   return speeds[index(member)];
 }
 
-TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
+namespace
 {
-  TrainSolution solution;
-  check_structure(spec, solution);
-  if (spec.inputs.empty())
-    throw InputError("Train/inputs", "no input speed given");
+// The speed equations: the structural rows (Willis per mesh, connections, fixed members, the
+// housing) first, then one row per input speed.
+struct SpeedEquations
+{
+  Eigen::MatrixXd matrix;
+  Eigen::VectorXd right_hand_side; // rad/s
+  std::size_t structural_rows = 0;
+};
 
+SpeedEquations speed_equations(const GearTrainSpec& spec, const TrainSolution& solution)
+{
   const std::size_t n = solution.names.size();
   const std::size_t housing = n - 1;
   std::vector<Eigen::VectorXd> rows;
@@ -334,38 +355,59 @@ TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
   for (const std::string& name : spec.fixed)
     rows.push_back(unit_row(solution.index(name)));
   rows.push_back(unit_row(housing));
-  const std::size_t structural_rows = rows.size();
+  SpeedEquations equations;
+  equations.structural_rows = rows.size();
   for (const auto& input : spec.inputs)
     rows.push_back(unit_row(solution.index(input.first)));
 
-  Eigen::MatrixXd matrix(rows.size(), n);
-  Eigen::VectorXd right_hand_side = Eigen::VectorXd::Zero(rows.size());
+  equations.matrix.resize(rows.size(), n);
+  equations.right_hand_side = Eigen::VectorXd::Zero(rows.size());
   for (std::size_t r = 0; r < rows.size(); ++r)
-    matrix.row(r) = rows[r].transpose();
+    equations.matrix.row(r) = rows[r].transpose();
   for (std::size_t k = 0; k < spec.inputs.size(); ++k)
-    right_hand_side[structural_rows + k] = spec.inputs[k].second;
+    equations.right_hand_side[equations.structural_rows + k] = spec.inputs[k].second;
+  return equations;
+}
+
+// The inputs leave members free: names them (those the kernel of the equations moves).
+[[noreturn]] void throw_under_constrained(const GearTrainSpec& spec, const TrainSolution& solution,
+                                          const Eigen::FullPivLU<Eigen::MatrixXd>& full)
+{
+  const Eigen::MatrixXd kernel = full.kernel();
+  std::string free_members;
+  for (std::size_t i = 0; i < solution.names.size(); ++i)
+    if (kernel.row(i).norm() > 1e-9)
+      free_members += (free_members.empty() ? "" : ", ") + solution.names[i];
+  throw InputError("Train/inputs", "under-constrained: the train has " +
+                                       std::to_string(solution.degrees_of_freedom) +
+                                       " degree(s) of freedom but " +
+                                       std::to_string(spec.inputs.size()) +
+                                       " input(s) fix fewer; undetermined: " + free_members);
+}
+} // namespace
+
+TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
+{
+  TrainSolution solution;
+  check_structure(spec, solution);
+  if (spec.inputs.empty())
+    throw InputError("Train/inputs", "no input speed given");
+
+  const std::size_t n = solution.names.size();
+  const SpeedEquations equations = speed_equations(spec, solution);
+  const Eigen::MatrixXd& matrix = equations.matrix;
+  const Eigen::VectorXd& right_hand_side = equations.right_hand_side;
 
   // Tooth counts are integers of order 100: a relative pivot threshold of 1e-10 separates
   // true rank deficiency from rounding by many orders of magnitude.
-  Eigen::FullPivLU<Eigen::MatrixXd> structure(matrix.topRows(structural_rows));
+  Eigen::FullPivLU<Eigen::MatrixXd> structure(matrix.topRows(equations.structural_rows));
   structure.setThreshold(1e-10);
   solution.degrees_of_freedom = static_cast<unsigned int>(n - structure.rank());
 
   Eigen::FullPivLU<Eigen::MatrixXd> full(matrix);
   full.setThreshold(1e-10);
   if (full.rank() < static_cast<Eigen::Index>(n))
-  {
-    const Eigen::MatrixXd kernel = full.kernel();
-    std::string free_members;
-    for (std::size_t i = 0; i < n; ++i)
-      if (kernel.row(i).norm() > 1e-9)
-        free_members += (free_members.empty() ? "" : ", ") + solution.names[i];
-    throw InputError("Train/inputs", "under-constrained: the train has " +
-                                         std::to_string(solution.degrees_of_freedom) +
-                                         " degree(s) of freedom but " +
-                                         std::to_string(spec.inputs.size()) +
-                                         " input(s) fix fewer; undetermined: " + free_members);
-  }
+    throw_under_constrained(spec, solution, full);
   const Eigen::VectorXd speeds = full.solve(right_hand_side);
   const double scale = std::max(1., right_hand_side.cwiseAbs().maxCoeff());
   if ((matrix * speeds - right_hand_side).norm() > 1e-9 * scale)
@@ -400,36 +442,91 @@ double epicyclic_efficiency(double base_ratio, double base_efficiency)
   return (1. - base_ratio * base_efficiency) / (1. - base_ratio);
 }
 
-TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution& solution,
-                                 double input_torque, double tooth_friction)
+namespace
 {
-  if (spec.inputs.size() != 1 || spec.output.empty())
-    throw InputError("Train/inputs", "statics need exactly one input and an output");
+// The rigid bodies of the statics: which are held (the housing's and every fixed member's), and
+// the row of its torque balance for each free one.
+struct StaticsBodies
+{
+  StaticsBodies(const GearTrainSpec& spec, const TrainSolution& solution)
+      : bodies(spec, solution), grounded(solution.names.size(), false)
+  {
+  }
+  bool held(std::size_t member) { return grounded[bodies.find(member)]; }
+
+  RigidBodies bodies;
+  std::vector<bool> grounded;                     // per body root
+  std::map<std::size_t, std::size_t> equation_of; // free body root → row
+};
+
+StaticsBodies statics_bodies(const GearTrainSpec& spec, const TrainSolution& solution,
+                             std::size_t input, std::size_t output)
+{
   const std::size_t n = solution.names.size();
-  const std::size_t input = solution.index(spec.inputs.front().first);
-  const std::size_t output = solution.index(spec.output);
-  RigidBodies bodies(spec, solution);
-  std::vector<bool> grounded(n, false);
-  grounded[bodies.find(n - 1)] = true;
+  StaticsBodies b(spec, solution);
+  b.grounded[b.bodies.find(n - 1)] = true;
   for (const std::string& name : spec.fixed)
-    grounded[bodies.find(solution.index(name))] = true;
-  if (bodies.find(input) == bodies.find(output))
+    b.grounded[b.bodies.find(solution.index(name))] = true;
+  if (b.bodies.find(input) == b.bodies.find(output))
     throw InputError("Train/output", "input and output are the same rigid body");
-  if (grounded[bodies.find(output)] || grounded[bodies.find(input)])
+  if (b.held(output) || b.held(input))
     throw InputError("Train/output", "input or output is held fixed");
 
-  std::map<std::size_t, std::size_t> equation_of; // free body root → row
   for (std::size_t i = 0; i < n; ++i)
-    if (!grounded[bodies.find(i)] && !equation_of.count(bodies.find(i)))
-      equation_of.emplace(bodies.find(i), equation_of.size());
+    if (!b.held(i) && !b.equation_of.count(b.bodies.find(i)))
+      b.equation_of.emplace(b.bodies.find(i), b.equation_of.size());
   const std::size_t meshes = spec.meshes.size();
-  if (equation_of.size() != meshes + 1)
+  if (b.equation_of.size() != meshes + 1)
     throw InputError("Train/output",
-                     "statics undetermined: " + std::to_string(equation_of.size()) +
+                     "statics undetermined: " + std::to_string(b.equation_of.size()) +
                          " free bodies for " + std::to_string(meshes) +
                          " mesh torques and one output torque (one degree of freedom needed)");
+  return b;
+}
 
-  TrainStatics statics;
+// One pass of the torque balances: unknowns the torque on gear a of each mesh and the output
+// torque; `ratio` receives each mesh's torque ratio on b / on a with the pass's efficiencies.
+Eigen::VectorXd solve_torque_balances(const GearTrainSpec& spec, const TrainSolution& solution,
+                                      StaticsBodies& b, std::size_t input, std::size_t output,
+                                      double input_torque, const std::vector<double>& eta,
+                                      const std::vector<int>& a_drives, std::vector<double>& ratio)
+{
+  const std::size_t meshes = spec.meshes.size();
+  Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(meshes + 1, meshes + 1);
+  Eigen::VectorXd right_hand_side = Eigen::VectorXd::Zero(meshes + 1);
+  auto add = [&](std::size_t member, std::size_t column, double value)
+  {
+    const std::size_t root = b.bodies.find(member);
+    if (!b.grounded[root])
+      matrix(b.equation_of.at(root), column) += value;
+  };
+  for (std::size_t m = 0; m < meshes; ++m)
+  {
+    const TrainMesh& mesh = spec.meshes[m];
+    const double z_a = spec.members[solution.index(mesh.gear_a)].teeth;
+    const double z_b = spec.members[solution.index(mesh.gear_b)].teeth;
+    ratio[m] = z_b / z_a * (a_drives[m] ? eta[m] : 1. / eta[m]);
+    add(solution.index(mesh.gear_a), m, 1.);
+    add(solution.index(mesh.gear_b), m, ratio[m]);
+    add(solution.index(mesh.frame), m, -(1. + ratio[m]));
+  }
+  add(output, meshes, 1.);
+  right_hand_side[b.equation_of.at(b.bodies.find(input))] = -input_torque;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(matrix);
+  lu.setThreshold(1e-10);
+  if (lu.rank() < static_cast<Eigen::Index>(meshes + 1))
+    throw InputError("Train/output", "statics undetermined: the torque equations are "
+                                     "singular for this input/output choice");
+  return lu.solve(right_hand_side);
+}
+
+// The mesh torques, passes repeated until the directions of relative power flow settle (pass 0
+// is loss-free and only sets them). Returns the output torque.
+double solve_mesh_torques(const GearTrainSpec& spec, const TrainSolution& solution,
+                          StaticsBodies& b, std::size_t input, std::size_t output,
+                          double input_torque, double tooth_friction, TrainStatics& statics)
+{
+  const std::size_t meshes = spec.meshes.size();
   statics.meshes.resize(meshes);
   std::vector<int> a_drives(meshes, 1);
   std::vector<double> efficiency(meshes);
@@ -437,42 +534,16 @@ TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution&
     efficiency[m] =
         pair_efficiency(spec.members[solution.index(spec.meshes[m].gear_a)].teeth,
                         spec.members[solution.index(spec.meshes[m].gear_b)].teeth, tooth_friction);
-  // Pass 0 is loss-free and only sets the directions of relative power flow.
+  const std::vector<double> loss_free(meshes, 1.);
   Eigen::VectorXd unknowns;
   for (unsigned int pass = 0;; ++pass)
   {
     if (pass > 20)
       throw SolverFailure("train statics", "directions of power flow did not settle after 20 "
                                            "passes (self-locking train?)");
-    Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(meshes + 1, meshes + 1);
-    Eigen::VectorXd right_hand_side = Eigen::VectorXd::Zero(meshes + 1);
-    auto add = [&](std::size_t member, std::size_t column, double value)
-    {
-      const std::size_t root = bodies.find(member);
-      if (!grounded[root])
-        matrix(equation_of.at(root), column) += value;
-    };
     std::vector<double> ratio(meshes);
-    for (std::size_t m = 0; m < meshes; ++m)
-    {
-      const TrainMesh& mesh = spec.meshes[m];
-      const double z_a = spec.members[solution.index(mesh.gear_a)].teeth;
-      const double z_b = spec.members[solution.index(mesh.gear_b)].teeth;
-      const double eta = pass == 0 ? 1. : efficiency[m];
-      ratio[m] = z_b / z_a * (a_drives[m] ? eta : 1. / eta);
-      add(solution.index(mesh.gear_a), m, 1.);
-      add(solution.index(mesh.gear_b), m, ratio[m]);
-      add(solution.index(mesh.frame), m, -(1. + ratio[m]));
-    }
-    add(output, meshes, 1.);
-    right_hand_side[equation_of.at(bodies.find(input))] = -input_torque;
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(matrix);
-    lu.setThreshold(1e-10);
-    if (lu.rank() < static_cast<Eigen::Index>(meshes + 1))
-      throw InputError("Train/output", "statics undetermined: the torque equations are "
-                                       "singular for this input/output choice");
-    unknowns = lu.solve(right_hand_side);
-
+    unknowns = solve_torque_balances(spec, solution, b, input, output, input_torque,
+                                     pass == 0 ? loss_free : efficiency, a_drives, ratio);
     bool changed = false;
     for (std::size_t m = 0; m < meshes; ++m)
     {
@@ -498,18 +569,16 @@ TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution&
     if (tooth_friction == 0. && !changed)
       break;
   }
+  return unknowns[meshes];
+}
 
-  statics.input_torque = input_torque;
-  statics.output_torque = unknowns[meshes];
-  statics.efficiency =
-      -statics.output_torque * solution.speeds[output] / (input_torque * solution.speeds[input]);
-  statics.applied_torque.assign(n, 0.);
-  statics.applied_torque[input] = input_torque;
-  statics.applied_torque[output] = statics.output_torque;
-  // Reactions: each grounded body takes what its meshes put on it, assigned to its fixed
-  // member (or the housing).
+// Reactions: each grounded body takes what its meshes put on it, assigned to its fixed member
+// (or the housing); the mesh torques reaching the output body are its paths.
+void add_reactions(const GearTrainSpec& spec, const TrainSolution& solution, StaticsBodies& b,
+                   std::size_t output, TrainStatics& statics)
+{
   std::map<std::size_t, double> ground_load;
-  for (std::size_t m = 0; m < meshes; ++m)
+  for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
     const TrainMesh& mesh = spec.meshes[m];
     const MeshTorques& t = statics.meshes[m];
@@ -517,49 +586,53 @@ TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution&
          {std::pair{mesh.gear_a, t.on_a}, std::pair{mesh.gear_b, t.on_b},
           std::pair{mesh.frame, t.on_frame}})
     {
-      const std::size_t root = bodies.find(solution.index(name));
-      if (grounded[root])
+      const std::size_t root = b.bodies.find(solution.index(name));
+      if (b.grounded[root])
         ground_load[root] += torque;
-      if (root == bodies.find(output))
+      if (root == b.bodies.find(output))
         statics.output_paths.emplace_back(m, torque);
     }
   }
   for (const auto& [root, load] : ground_load)
   {
-    std::size_t holder = n - 1;
+    std::size_t holder = solution.names.size() - 1;
     for (const std::string& name : spec.fixed)
-      if (bodies.find(solution.index(name)) == root)
+      if (b.bodies.find(solution.index(name)) == root)
       {
         holder = solution.index(name);
         break;
       }
     statics.applied_torque[holder] -= load;
   }
+}
 
-  // Tooth forces per copy at the pitch circle; planet axis loads as the vector sum over the
-  // planet's meshes (mate external: contact towards the carrier axis, internal: away).
+// Tooth forces per copy at the pitch circle; planet axis loads as the vector sum over the
+// planet's meshes (mate external: contact towards the carrier axis, internal: away).
+void add_tooth_forces(const GearTrainSpec& spec, const TrainSolution& solution, StaticsBodies& b,
+                      TrainStatics& statics)
+{
   std::map<std::size_t, std::pair<double, std::string>> planet_force; // body → (F_y, name)
-  for (std::size_t m = 0; m < meshes; ++m)
+  for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
     const TrainMesh& mesh = spec.meshes[m];
     const TrainMember& a = member_of(spec, solution, mesh.gear_a);
-    const TrainMember& b = member_of(spec, solution, mesh.gear_b);
+    const TrainMember& gear_b = member_of(spec, solution, mesh.gear_b);
     MeshTorques& t = statics.meshes[m];
     const double copies = solution.mesh_copies[m];
     if (a.module > 0.)
       t.tangential_force = std::abs(t.on_a) / (copies * std::abs(pitch_radius(a)));
-    if (mesh.frame == housing_name || a.module == 0. || b.module == 0.)
+    if (mesh.frame == housing_name || a.module == 0. || gear_b.module == 0.)
       continue;
     for (const bool planet_is_a : {true, false})
     {
-      const TrainMember& planet = planet_is_a ? a : b;
-      const TrainMember& mate = planet_is_a ? b : a;
+      const TrainMember& planet = planet_is_a ? a : gear_b;
+      const TrainMember& mate = planet_is_a ? gear_b : a;
       if (planet.carrier != mesh.frame || mate.carrier == mesh.frame)
         continue;
       const double torque = planet_is_a ? t.on_a : t.on_b;
       // t(θ) = (−sin θ, cos θ): θ = π towards the axis gives −y, θ = 0 gives +y.
       const double direction = mate.teeth > 0 ? -1. : 1.;
-      auto& entry = planet_force[bodies.find(solution.index(planet.name))];
+      auto& entry = planet_force[b.bodies.find(solution.index(planet.name))];
       entry.first += direction * torque / (copies * pitch_radius(planet));
       if (entry.second.empty())
         entry.second = planet.name;
@@ -567,6 +640,30 @@ TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution&
   }
   for (const auto& [root, force] : planet_force)
     statics.planet_axis_forces.emplace_back(force.second, std::abs(force.first));
+}
+} // namespace
+
+TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution& solution,
+                                 double input_torque, double tooth_friction)
+{
+  if (spec.inputs.size() != 1 || spec.output.empty())
+    throw InputError("Train/inputs", "statics need exactly one input and an output");
+  const std::size_t n = solution.names.size();
+  const std::size_t input = solution.index(spec.inputs.front().first);
+  const std::size_t output = solution.index(spec.output);
+  StaticsBodies bodies = statics_bodies(spec, solution, input, output);
+
+  TrainStatics statics;
+  statics.input_torque = input_torque;
+  statics.output_torque = solve_mesh_torques(spec, solution, bodies, input, output, input_torque,
+                                             tooth_friction, statics);
+  statics.efficiency =
+      -statics.output_torque * solution.speeds[output] / (input_torque * solution.speeds[input]);
+  statics.applied_torque.assign(n, 0.);
+  statics.applied_torque[input] = input_torque;
+  statics.applied_torque[output] = statics.output_torque;
+  add_reactions(spec, solution, bodies, output, statics);
+  add_tooth_forces(spec, solution, bodies, statics);
   return statics;
 }
 
@@ -655,11 +752,16 @@ double milev_planetary_inertia(double sun_radius, double planet_radius, unsigned
          std::pow(a + c, 4) * a * a / (4. * k * c * c);
 }
 
-GearTrainSpec parse_gear_train(const GearTrainText& text)
+namespace
 {
-  GearTrainSpec spec;
-  std::map<std::string, std::size_t> index;
-  auto member = [&](const std::string& name) -> TrainMember&
+// The members of a spec being parsed, by name.
+class MemberTable
+{
+public:
+  explicit MemberTable(GearTrainSpec& spec) : spec(spec) {}
+  bool has(const std::string& name) const { return index.count(name) > 0; }
+  // The member of that name, declared now if it is new.
+  TrainMember& declare(const std::string& name)
   {
     if (!index.count(name))
     {
@@ -668,7 +770,23 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
       spec.members.back().name = name;
     }
     return spec.members[index[name]];
-  };
+  }
+  // A member already declared in gears or carriers (else an InputError naming Train/<key>).
+  TrainMember& existing(const std::string& name, const std::string& key)
+  {
+    if (!index.count(name))
+      throw InputError("Train/" + key,
+                       "unknown member '" + name + "' (declare it in gears or carriers)");
+    return spec.members[index[name]];
+  }
+
+private:
+  GearTrainSpec& spec;
+  std::map<std::string, std::size_t> index;
+};
+
+void parse_gears_and_carriers(const GearTrainText& text, MemberTable& members)
+{
   for (const auto& [name, value] : parse_assignments(text.gears, "gears"))
   {
     const double teeth = parse_number(value, "Train/gears");
@@ -677,111 +795,137 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
                                           "' needs a non-zero whole number of "
                                           "teeth (negative: internal), got " +
                                           value);
-    if (index.count(name))
+    if (members.has(name))
       throw InputError("Train/gears", "gear '" + name + "' is listed twice");
-    member(name).teeth = static_cast<int>(teeth);
+    members.declare(name).teeth = static_cast<int>(teeth);
   }
   for (const std::string& name : parse_names(text.carriers, "carriers"))
   {
-    if (index.count(name))
+    if (members.has(name))
       throw InputError("Train/carriers", "'" + name + "' is already a gear");
-    member(name);
+    members.declare(name);
   }
-  auto existing = [&](const std::string& name, const std::string& key) -> TrainMember&
+}
+
+// "name: carrier*copies" (copies 1 when left out).
+void parse_planets(const std::string& text, MemberTable& members)
+{
+  for (const auto& [name, value] : parse_assignments(text, "planets"))
   {
-    if (!index.count(name))
-      throw InputError("Train/" + key,
-                       "unknown member '" + name + "' (declare it in gears or carriers)");
-    return spec.members[index[name]];
-  };
+    const auto star = value.find('*');
+    const std::string carrier = trim(value.substr(0, star));
+    check_name(carrier, "Train/planets");
+    TrainMember& planet = members.existing(name, "planets");
+    members.existing(carrier, "planets");
+    planet.carrier = carrier;
+    if (star == std::string::npos)
+      continue;
+    const double copies = parse_number(trim(value.substr(star + 1)), "Train/planets");
+    if (!(copies >= 1.) || copies != std::round(copies))
+      throw InputError("Train/planets", "copies of '" + name + "' must be a whole number ≥ 1");
+    // Before any member is allocated per copy (2·10⁹ copies filled 24 GB).
+    if (copies > limits::max_train_members)
+      throw InputError("Train/planets",
+                       "'" + name + "' has " + trim(value.substr(star + 1)) +
+                           " copies, more than the " + std::to_string(limits::max_train_members) +
+                           " members a train model holds (limit, docs/limits.md; a planetary "
+                           "stage has 3 to 8 planets)");
+    planet.copies = static_cast<unsigned int>(copies);
+  }
+}
+
+// "a-b/frame" (frame the housing when left out).
+std::vector<TrainMesh> parse_meshes(const std::string& text, MemberTable& members)
+{
+  std::vector<TrainMesh> meshes;
+  if (trim(text).empty())
+    return meshes;
+  for (const std::string& entry : split(text, ','))
+  {
+    TrainMesh mesh;
+    const auto slash = entry.find('/');
+    const std::string pair = trim(entry.substr(0, slash));
+    if (slash != std::string::npos)
+      mesh.frame = trim(entry.substr(slash + 1));
+    const auto dash = pair.find('-');
+    if (dash == std::string::npos)
+      throw InputError("Train/meshes", "entry '" + entry + "' is not of the form a-b/frame");
+    mesh.gear_a = trim(pair.substr(0, dash));
+    mesh.gear_b = trim(pair.substr(dash + 1));
+    for (const std::string& name : {mesh.gear_a, mesh.gear_b})
+      members.existing(name, "meshes");
+    if (mesh.frame != housing_name)
+      members.existing(mesh.frame, "meshes");
+    meshes.push_back(mesh);
+  }
+  return meshes;
+}
+
+// "a=b": members turning as one rigid body.
+std::vector<std::pair<std::string, std::string>> parse_connections(const std::string& text,
+                                                                   MemberTable& members)
+{
+  std::vector<std::pair<std::string, std::string>> connections;
+  if (trim(text).empty())
+    return connections;
+  for (const std::string& entry : split(text, ','))
+  {
+    const auto equals = entry.find('=');
+    if (equals == std::string::npos)
+      throw InputError("Train/connections", "entry '" + entry + "' is not of the form a=b");
+    const std::string a = trim(entry.substr(0, equals));
+    const std::string b = trim(entry.substr(equals + 1));
+    members.existing(a, "connections");
+    members.existing(b, "connections");
+    connections.emplace_back(a, b);
+  }
+  return connections;
+}
+
+// "name: value" with a value ≥ 0 (`what` names the quantity in the message).
+void parse_nonnegative(const std::string& text, const std::string& key, const std::string& what,
+                       MemberTable& members, double TrainMember::*field)
+{
+  for (const auto& [name, value] : parse_assignments(text, key))
+  {
+    const double number = parse_number(value, "Train/" + key);
+    if (number < 0.)
+      throw InputError("Train/" + key, what + " of '" + name + "' is negative");
+    members.existing(name, key).*field = number;
+  }
+}
+} // namespace
+
+GearTrainSpec parse_gear_train(const GearTrainText& text)
+{
+  GearTrainSpec spec;
+  MemberTable members(spec);
+  parse_gears_and_carriers(text, members);
   for (const auto& [name, value] : parse_assignments(text.modules, "modules"))
   {
     const double module = parse_number(value, "Train/modules");
     if (!(module > 0.))
       throw InputError("Train/modules", "module of '" + name + "' must be positive");
-    existing(name, "modules").module = module * 1e-3;
+    members.existing(name, "modules").module = module * 1e-3;
   }
-  for (const auto& [name, value] : parse_assignments(text.planets, "planets"))
-  {
-    const auto star = value.find('*');
-    const std::string carrier = trim(value.substr(0, star));
-    check_name(carrier, "Train/planets");
-    TrainMember& planet = existing(name, "planets");
-    existing(carrier, "planets");
-    planet.carrier = carrier;
-    if (star != std::string::npos)
-    {
-      const double copies = parse_number(trim(value.substr(star + 1)), "Train/planets");
-      if (!(copies >= 1.) || copies != std::round(copies))
-        throw InputError("Train/planets", "copies of '" + name + "' must be a whole number ≥ 1");
-      // Before any member is allocated per copy (2·10⁹ copies filled 24 GB).
-      if (copies > limits::max_train_members)
-        throw InputError("Train/planets",
-                         "'" + name + "' has " + trim(value.substr(star + 1)) +
-                             " copies, more than the " + std::to_string(limits::max_train_members) +
-                             " members a train model holds (limit, docs/limits.md; a planetary "
-                             "stage has 3 to 8 planets)");
-      planet.copies = static_cast<unsigned int>(copies);
-    }
-  }
-  if (!trim(text.meshes).empty())
-    for (const std::string& entry : split(text.meshes, ','))
-    {
-      TrainMesh mesh;
-      const auto slash = entry.find('/');
-      const std::string pair = trim(entry.substr(0, slash));
-      if (slash != std::string::npos)
-        mesh.frame = trim(entry.substr(slash + 1));
-      const auto dash = pair.find('-');
-      if (dash == std::string::npos)
-        throw InputError("Train/meshes", "entry '" + entry + "' is not of the form a-b/frame");
-      mesh.gear_a = trim(pair.substr(0, dash));
-      mesh.gear_b = trim(pair.substr(dash + 1));
-      for (const std::string& name : {mesh.gear_a, mesh.gear_b})
-        existing(name, "meshes");
-      if (mesh.frame != housing_name)
-        existing(mesh.frame, "meshes");
-      spec.meshes.push_back(mesh);
-    }
-  if (!trim(text.connections).empty())
-    for (const std::string& entry : split(text.connections, ','))
-    {
-      const auto equals = entry.find('=');
-      if (equals == std::string::npos)
-        throw InputError("Train/connections", "entry '" + entry + "' is not of the form a=b");
-      const std::string a = trim(entry.substr(0, equals));
-      const std::string b = trim(entry.substr(equals + 1));
-      existing(a, "connections");
-      existing(b, "connections");
-      spec.connections.emplace_back(a, b);
-    }
+  parse_planets(text.planets, members);
+  spec.meshes = parse_meshes(text.meshes, members);
+  spec.connections = parse_connections(text.connections, members);
   for (const std::string& name : parse_names(text.fixed, "fixed"))
   {
-    existing(name, "fixed");
+    members.existing(name, "fixed");
     spec.fixed.push_back(name);
   }
   for (const auto& [name, value] : parse_assignments(text.inputs, "inputs"))
   {
-    existing(name, "inputs");
+    members.existing(name, "inputs");
     spec.inputs.emplace_back(name, parse_number(value, "Train/inputs") * rpm);
   }
   spec.output = trim(text.output);
   if (!spec.output.empty())
-    existing(spec.output, "output");
-  for (const auto& [name, value] : parse_assignments(text.inertias, "inertias"))
-  {
-    const double inertia = parse_number(value, "Train/inertias");
-    if (inertia < 0.)
-      throw InputError("Train/inertias", "inertia of '" + name + "' is negative");
-    existing(name, "inertias").moment_of_inertia = inertia;
-  }
-  for (const auto& [name, value] : parse_assignments(text.masses, "masses"))
-  {
-    const double mass = parse_number(value, "Train/masses");
-    if (mass < 0.)
-      throw InputError("Train/masses", "mass of '" + name + "' is negative");
-    existing(name, "masses").mass = mass;
-  }
+    members.existing(spec.output, "output");
+  parse_nonnegative(text.inertias, "inertias", "inertia", members, &TrainMember::moment_of_inertia);
+  parse_nonnegative(text.masses, "masses", "mass", members, &TrainMember::mass);
   return spec;
 }
 
@@ -792,61 +936,35 @@ std::vector<std::string> builtin_train_names()
 
 GearTrainText builtin_train(const std::string& name)
 {
-  GearTrainText text;
-  if (name == "bi-planetary")
-  {
-    // Drewniak, Garlicka, Kolber 2016 (docs/references.md §2). Each of the three planets 2 carries
-    // an inner set: sun 3 on planet 2's axis, three planets 4 on inner carrier H, ring 5
-    // fixed to carrier h; H drives planet 6, which runs in the fixed ring 7. Modules are not
-    // published: 2 mm for 1-2 and the inner set reproduce the printed forces (1907.94 N =
-    // T1/(3·r1), 2453.06 N = T5/(9·r5)); 4 mm for 6-7 makes planet 6 coaxial with planet 2
-    // ((72 − 21)·4/2 = (21 + 81)·2/2 = 102 mm).
-    text.gears = "1: 21, 2: 81, 3: 21, 4: 24, 5: -69, 6: 21, 7: -72";
-    text.modules = "1: 2, 2: 2, 3: 2, 4: 2, 5: 2, 6: 4, 7: 4";
-    text.carriers = "h, H";
-    text.planets = "2: h*3, 3: h*3, 5: h*3, 6: h*3, H: h*3, 4: H*9";
-    text.meshes = "1-2/h, 3-4/H, 4-5/H, 6-7/h";
-    text.connections = "3=2, 5=h, H=6";
-    text.fixed = "7";
-    text.inputs = "1: 1470";
-    text.output = "h";
-  }
-  else if (name == "planetary")
-  {
-    text.gears = "s: 20, p: 10, r: -40";
-    text.modules = "s: 2, p: 2, r: 2";
-    text.carriers = "c";
-    text.planets = "p: c*3";
-    text.meshes = "s-p/c, p-r/c";
-    text.fixed = "r";
-    text.inputs = "s: 1470";
-    text.output = "c";
-  }
-  else if (name == "split-path")
-  {
-    // Reszuta & Drewniak 2015 (docs/references.md §1): pinion 1 drives wheels 2 and 3.
-    text.gears = "1: 21, 2: 57, 3: 57";
-    text.modules = "1: 2.5, 2: 2.5, 3: 2.5";
-    text.meshes = "1-2, 1-3";
-    text.inputs = "1: 1450";
-    text.output = "2";
-  }
-  else if (name == "cycloidal")
-  {
-    // Chmurawa & Łokiec (docs/references.md §4): disc s (19 lobes) on the eccentric e rolls in the
-    // fixed ring of 20 rollers k; the pin coupling passes the disc's rotation to `out`. The
-    // rolling lobe pair obeys the same Willis relation as a tooth pair.
-    text.gears = "s: 19, k: -20";
-    text.carriers = "e, out";
-    text.planets = "s: e*2";
-    text.meshes = "s-k/e";
-    text.connections = "out=s";
-    text.fixed = "k";
-    text.inputs = "e: 750";
-    text.output = "out";
-  }
-  else
+  // Each as {gears, modules, carriers, planets, meshes, connections, fixed, inputs, output,
+  // inertias, masses}.
+  static const std::map<std::string, GearTrainText> trains = {
+      // Drewniak, Garlicka, Kolber 2016 (docs/references.md §2). Each of the three planets 2
+      // carries an inner set: sun 3 on planet 2's axis, three planets 4 on inner carrier H, ring 5
+      // fixed to carrier h; H drives planet 6, which runs in the fixed ring 7. Modules are not
+      // published: 2 mm for 1-2 and the inner set reproduce the printed forces (1907.94 N =
+      // T1/(3·r1), 2453.06 N = T5/(9·r5)); 4 mm for 6-7 makes planet 6 coaxial with planet 2
+      // ((72 − 21)·4/2 = (21 + 81)·2/2 = 102 mm).
+      {"bi-planetary",
+       {"1: 21, 2: 81, 3: 21, 4: 24, 5: -69, 6: 21, 7: -72",
+        "1: 2, 2: 2, 3: 2, 4: 2, 5: 2, 6: 4, 7: 4", "h, H",
+        "2: h*3, 3: h*3, 5: h*3, 6: h*3, H: h*3, 4: H*9", "1-2/h, 3-4/H, 4-5/H, 6-7/h",
+        "3=2, 5=h, H=6", "7", "1: 1470", "h", "", ""}},
+      {"planetary",
+       {"s: 20, p: 10, r: -40", "s: 2, p: 2, r: 2", "c", "p: c*3", "s-p/c, p-r/c", "", "r",
+        "s: 1470", "c", "", ""}},
+      // Reszuta & Drewniak 2015 (docs/references.md §1): pinion 1 drives wheels 2 and 3.
+      {"split-path",
+       {"1: 21, 2: 57, 3: 57", "1: 2.5, 2: 2.5, 3: 2.5", "", "", "1-2, 1-3", "", "", "1: 1450", "2",
+        "", ""}},
+      // Chmurawa & Łokiec (docs/references.md §4): disc s (19 lobes) on the eccentric e rolls in
+      // the fixed ring of 20 rollers k; the pin coupling passes the disc's rotation to `out`. The
+      // rolling lobe pair obeys the same Willis relation as a tooth pair.
+      {"cycloidal",
+       {"s: 19, k: -20", "", "e, out", "s: e*2", "s-k/e", "out=s", "k", "e: 750", "out", "", ""}}};
+  const auto found = trains.find(name);
+  if (found == trains.end())
     throw InputError("Train/builtin", "unknown built-in train '" + name + "'");
-  return text;
+  return found->second;
 }
 } // namespace gearstiff::kinematics

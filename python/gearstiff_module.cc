@@ -445,28 +445,10 @@ std::string python_name(const std::string& command) // "gear-pair" → "gear_pai
   std::replace(name.begin(), name.end(), '-', '_');
   return name;
 }
-} // namespace
-
-PYBIND11_MODULE(gearstiff, m)
+// gearstiff.InputError and gearstiff.SolverFailure, raised for the C++ exceptions of the same
+// names; deal.II's exceptions as RuntimeError.
+void register_exceptions(py::module_& m)
 {
-  m.doc() = "gearstiff: FE mesh stiffness, frictional contact and torsional dynamics of gear "
-            "drives, in-process.\n\nOne function per command of the `gearstiff` command line "
-            "(gear_pair, stiffness, cai, dynamics, kinematics, cycloid, cycloid_loads, mesh, "
-            "contact, run), each\n"
-            "    f(params=None, output_directory=None, verbose=False) -> dict\n"
-            "params: a nested dict in the .prm's sections and names "
-            "({'Gear pair': {'Pinion': {'teeth': 21}}}), or the path of a .prm/.json file; "
-            "None runs the built-in default case.\n"
-            "The dict returned: 'values' {key: {'value', 'unit', 'description'[, 'published', "
-            "'relative_deviation', 'source']}}, 'tables' {name: {'columns', 'units', 'data': "
-            "{column: numpy array}}}, 'text', 'files', 'parameters' (the parameters used, as a "
-            "dict a later call accepts), 'timings' {'run', 'total'} [s].\n"
-            "Errors: gearstiff.InputError (bad input, names the parameter) and "
-            "gearstiff.SolverFailure (a numerical method failed).";
-
-  start_mpi();
-  py::module_::import("atexit").attr("register")(py::cpp_function(&end_mpi));
-
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<SolverFailure> solver_failure(m, "SolverFailure", PyExc_RuntimeError);
   input_error_type = input_error.ptr();
@@ -496,7 +478,11 @@ PYBIND11_MODULE(gearstiff, m)
           PyErr_SetString(PyExc_RuntimeError, one_line(deal_ii_message(e)).c_str());
         }
       });
+}
 
+// One function per registered command, under its Python name.
+void define_commands(py::module_& m)
+{
   for (const auto& [name, command] : command_registry())
   {
     const std::string registered = name;
@@ -512,6 +498,30 @@ PYBIND11_MODULE(gearstiff, m)
          "does; verbose: print progress. Returns the report as a dict (see help(gearstiff)).")
             .c_str());
   }
+}
+} // namespace
+
+PYBIND11_MODULE(gearstiff, m)
+{
+  m.doc() = "gearstiff: FE mesh stiffness, frictional contact and torsional dynamics of gear "
+            "drives, in-process.\n\nOne function per command of the `gearstiff` command line "
+            "(gear_pair, stiffness, cai, dynamics, kinematics, cycloid, cycloid_loads, mesh, "
+            "contact, run), each\n"
+            "    f(params=None, output_directory=None, verbose=False) -> dict\n"
+            "params: a nested dict in the .prm's sections and names "
+            "({'Gear pair': {'Pinion': {'teeth': 21}}}), or the path of a .prm/.json file; "
+            "None runs the built-in default case.\n"
+            "The dict returned: 'values' {key: {'value', 'unit', 'description'[, 'published', "
+            "'relative_deviation', 'source']}}, 'tables' {name: {'columns', 'units', 'data': "
+            "{column: numpy array}}}, 'text', 'files', 'parameters' (the parameters used, as a "
+            "dict a later call accepts), 'timings' {'run', 'total'} [s].\n"
+            "Errors: gearstiff.InputError (bad input, names the parameter) and "
+            "gearstiff.SolverFailure (a numerical method failed).";
+
+  start_mpi();
+  py::module_::import("atexit").attr("register")(py::cpp_function(&end_mpi));
+  register_exceptions(m);
+  define_commands(m);
   m.def("print_parameters", &print_parameters, py::arg("command"),
         "The parameters of `command` ('gear_pair' or 'gear-pair') as a nested dict: for each "
         "parameter its default (typed), unit, allowed values and documentation.");

@@ -13,6 +13,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <filesystem>
 #include <limits>
+#include <tuple>
 
 namespace gearstiff::stiffness
 {
@@ -111,6 +112,129 @@ double max_von_mises(const fem::ElasticSystem<dim>& system, const Vector<double>
   }
   return largest;
 }
+
+// Faces of every roller and pin, and the disc faces nearest to each, get their own ids.
+template <int dim>
+void relabel_contact_faces(Triangulation<dim>& tria, const std::vector<Eigen::Vector2d>& rollers,
+                           const std::vector<Eigen::Vector2d>& pins, const Eigen::Vector2d& centre)
+{
+  std::vector<Eigen::Vector2d> holes;
+  for (const auto& c : pins)
+    holes.push_back(centre + c);
+  for (const auto& cell : tria.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+    {
+      const auto face = cell->face(f);
+      if (!face->at_boundary())
+        continue;
+      const Eigen::Vector2d x = planar(face->center());
+      switch (face->boundary_id())
+      {
+      case geometry::scene_ids::second_contact:
+        face->set_boundary_id(roller_surface_base + nearest(rollers, x));
+        break;
+      case geometry::scene_ids::first_contact:
+        face->set_boundary_id(disc_lobe_base + nearest(rollers, x));
+        break;
+      case geometry::cycloid_ids::output_pin_surfaces:
+        face->set_boundary_id(pin_surface_base + nearest(pins, x));
+        break;
+      case geometry::scene_ids::output_pin_holes:
+        face->set_boundary_id(pin_hole_base + nearest(holes, x));
+        break;
+      default:
+        break;
+      }
+    }
+}
+
+// Contact pairs of the rollers the scene refined (clearance within the contact clearance); the
+// others keep P_i = 0 (documented in the result as not candidate). Fills `loads` (one per
+// roller) and returns each roller's pair index (invalid_unsigned_int: none); `pair` counts on.
+template <int dim>
+std::vector<unsigned int>
+add_roller_pairs(contact::ContactProblem<dim>& problem, const CycloidLoadSettings& settings,
+                 const geometry::CycloidSceneSpec& closed_scene, unsigned int& pair,
+                 std::vector<CycloidContactLoad>& loads)
+{
+  const geometry::CycloidDiscSpec& ring = settings.scene.ring;
+  const geometry::CycloidDiscSpec disc = closed_scene.disc.rollers == 0 ? ring : closed_scene.disc;
+  const std::vector<geometry::RollerContact> contacts =
+      geometry::roller_contacts(ring, disc, closed_scene.disc_rotation);
+  const std::vector<double> clearances = geometry::roller_clearances(
+      ring, settings.scene.disc.rollers == 0 ? ring : settings.scene.disc,
+      settings.scene.disc_rotation);
+  std::vector<unsigned int> pairs;
+  loads.clear();
+  for (unsigned int i = 0; i < ring.rollers; ++i)
+  {
+    CycloidContactLoad load;
+    load.index = i;
+    load.angle = 2. * M_PI * i / ring.rollers;
+    load.initial_gap = clearances[i];
+    load.candidate = contacts[i].clearance <= settings.scene.contact_clearance;
+    if (!(contacts[i].clearance > -settings.contact.overlap_tolerance))
+      throw InputError("Cycloid disc/roller radius",
+                       "roller " + std::to_string(i) + " overlaps the disc by " +
+                           std::to_string(-contacts[i].clearance * 1e3) + " mm");
+    loads.push_back(load);
+    pairs.push_back(load.candidate ? pair++ : numbers::invalid_unsigned_int);
+    if (load.candidate)
+      problem.add_contact_pair({types::boundary_id(roller_surface_base + i)},
+                               {types::boundary_id(disc_lobe_base + i)},
+                               "roller " + std::to_string(i));
+  }
+  return pairs;
+}
+
+// A contact pair for every output pin in its hole; fills `loads`, returns the pair indices.
+template <int dim>
+std::vector<unsigned int> add_pin_pairs(contact::ContactProblem<dim>& problem,
+                                        const CycloidLoadSettings& settings,
+                                        const std::vector<Eigen::Vector2d>& pins,
+                                        unsigned int& pair, std::vector<CycloidContactLoad>& loads)
+{
+  const double play = settings.scene.output_pin_hole_radius - settings.scene.output_pin_radius -
+                      settings.scene.ring.eccentricity;
+  std::vector<unsigned int> pairs;
+  loads.clear();
+  for (unsigned int j = 0; j < pins.size(); ++j)
+  {
+    CycloidContactLoad load;
+    load.index = j;
+    load.angle = std::atan2(pins[j].y(), pins[j].x());
+    load.initial_gap = play;
+    load.candidate = true;
+    loads.push_back(load);
+    pairs.push_back(pair++);
+    problem.add_contact_pair({types::boundary_id(pin_surface_base + j)},
+                             {types::boundary_id(pin_hole_base + j)}, "pin " + std::to_string(j));
+  }
+  return pairs;
+}
+
+// The largest force of `loads` (N); `loaded` counts those above 1e-6 of it.
+double largest_force(const std::vector<CycloidContactLoad>& loads, unsigned int& loaded)
+{
+  double top = 0.;
+  for (const auto& l : loads)
+    top = std::max(top, l.force);
+  loaded = 0;
+  for (const auto& l : loads)
+    loaded += l.force > 1e-6 * top;
+  return top;
+}
+
+// The rigid-disc model of the same case beside the FE (cycloid_analytic.h).
+void add_analytic_loads(const CycloidLoadSettings& settings, CycloidLoadResult& result)
+{
+  result.analytic = analytic_cycloid_loads(settings.scene, settings.output_torque,
+                                           settings.roller_material.youngs_modulus);
+  for (unsigned int i = 0; i < result.rollers.size(); ++i)
+    result.rollers[i].analytic_force = result.analytic.roller_forces[i];
+  for (unsigned int j = 0; j < result.pins.size(); ++j)
+    result.pins[j].analytic_force = result.analytic.pin_forces[j];
+}
 } // namespace
 
 geometry::CycloidSceneSpec default_cycloid_load_scene()
@@ -125,11 +249,10 @@ geometry::CycloidSceneSpec default_cycloid_load_scene()
   // Sizes from the refinement study (docs/cycloid.md): with Q2 elements P_max within 1 % of the
   // finest level (all sizes × 0.35), Q_max within 0.1 %, one position in about 5 s.
   scene.points_per_lobe = 61;
-  scene.mesh.contact_size = 80e-6;
-  scene.mesh.fine_radius = 0.3e-3;
-  scene.mesh.body_size = 2e-3;
-  scene.mesh.rim_size = 8e-3;
-  scene.mesh.growth_rate = 0.4;
+  auto& mesh = scene.mesh;
+  std::tie(mesh.contact_size, mesh.fine_radius, mesh.body_size, mesh.rim_size) =
+      std::tuple{80e-6, 0.3e-3, 2e-3, 8e-3}; // m
+  mesh.growth_rate = 0.4;
   return scene;
 }
 
@@ -266,86 +389,13 @@ void CycloidLoads<dim>::setup_problem()
                                    {geometry::scene_ids::second_body, settings.roller_material},
                                    {geometry::cycloid_ids::output_pin_body, settings.material}},
                                   "material");
-
-  // Faces of every roller and pin, and the disc faces nearest to each, get their own ids.
-  const geometry::CycloidDiscSpec& ring = settings.scene.ring;
   const Eigen::Vector2d centre = disc_centre(settings);
-  const std::vector<Eigen::Vector2d> rollers = roller_centres(ring),
-                                     pins = pin_centres(closed_scene);
-  std::vector<Eigen::Vector2d> holes;
-  for (const auto& c : pins)
-    holes.push_back(centre + c);
-  for (const auto& cell : tria.active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-    {
-      const auto face = cell->face(f);
-      if (!face->at_boundary())
-        continue;
-      const Eigen::Vector2d x = planar(face->center());
-      switch (face->boundary_id())
-      {
-      case geometry::scene_ids::second_contact:
-        face->set_boundary_id(roller_surface_base + nearest(rollers, x));
-        break;
-      case geometry::scene_ids::first_contact:
-        face->set_boundary_id(disc_lobe_base + nearest(rollers, x));
-        break;
-      case geometry::cycloid_ids::output_pin_surfaces:
-        face->set_boundary_id(pin_surface_base + nearest(pins, x));
-        break;
-      case geometry::scene_ids::output_pin_holes:
-        face->set_boundary_id(pin_hole_base + nearest(holes, x));
-        break;
-      default:
-        break;
-      }
-    }
+  const std::vector<Eigen::Vector2d> pins = pin_centres(closed_scene);
+  relabel_contact_faces(tria, roller_centres(settings.scene.ring), pins, centre);
 
-  // Contact pairs: the rollers the scene refined (clearance within the contact clearance) and
-  // every pin; the others keep P_i = 0 (documented in the result as not candidate).
-  const geometry::CycloidDiscSpec disc = closed_scene.disc.rollers == 0 ? ring : closed_scene.disc;
-  const std::vector<geometry::RollerContact> contacts =
-      geometry::roller_contacts(ring, disc, closed_scene.disc_rotation);
-  const std::vector<double> clearances = geometry::roller_clearances(
-      ring, settings.scene.disc.rollers == 0 ? ring : settings.scene.disc,
-      settings.scene.disc_rotation);
-  const double play =
-      settings.scene.output_pin_hole_radius - settings.scene.output_pin_radius - ring.eccentricity;
   unsigned int pair = 0;
-  result.rollers.clear();
-  roller_pairs.clear();
-  for (unsigned int i = 0; i < ring.rollers; ++i)
-  {
-    CycloidContactLoad load;
-    load.index = i;
-    load.angle = 2. * M_PI * i / ring.rollers;
-    load.initial_gap = clearances[i];
-    load.candidate = contacts[i].clearance <= settings.scene.contact_clearance;
-    if (!(contacts[i].clearance > -settings.contact.overlap_tolerance))
-      throw InputError("Cycloid disc/roller radius",
-                       "roller " + std::to_string(i) + " overlaps the disc by " +
-                           std::to_string(-contacts[i].clearance * 1e3) + " mm");
-    result.rollers.push_back(load);
-    roller_pairs.push_back(load.candidate ? pair++ : numbers::invalid_unsigned_int);
-    if (load.candidate)
-      problem->add_contact_pair({types::boundary_id(roller_surface_base + i)},
-                                {types::boundary_id(disc_lobe_base + i)},
-                                "roller " + std::to_string(i));
-  }
-  result.pins.clear();
-  pin_pairs.clear();
-  for (unsigned int j = 0; j < pins.size(); ++j)
-  {
-    CycloidContactLoad load;
-    load.index = j;
-    load.angle = std::atan2(pins[j].y(), pins[j].x());
-    load.initial_gap = play;
-    load.candidate = true;
-    result.pins.push_back(load);
-    pin_pairs.push_back(pair++);
-    problem->add_contact_pair({types::boundary_id(pin_surface_base + j)},
-                              {types::boundary_id(pin_hole_base + j)}, "pin " + std::to_string(j));
-  }
+  roller_pairs = add_roller_pairs(*problem, settings, closed_scene, pair, result.rollers);
+  pin_pairs = add_pin_pairs(*problem, settings, pins, pair, result.pins);
 
   // Supports (see the header): bearing (free to turn), fixed roller pins, rigid output member.
   Point<dim> bearing_axis, ring_axis;
@@ -431,18 +481,8 @@ void CycloidLoads<dim>::evaluate()
         cross(pins[j], Eigen::Vector2d(result.pins[j].force_x, result.pins[j].force_y));
   }
 
-  const auto largest = [](const std::vector<CycloidContactLoad>& loads, unsigned int& loaded)
-  {
-    double top = 0.;
-    for (const auto& l : loads)
-      top = std::max(top, l.force);
-    loaded = 0;
-    for (const auto& l : loads)
-      loaded += l.force > 1e-6 * top;
-    return top;
-  };
-  result.max_roller_force = largest(result.rollers, result.loaded_rollers);
-  result.max_pin_force = largest(result.pins, result.loaded_pins);
+  result.max_roller_force = largest_force(result.rollers, result.loaded_rollers);
+  result.max_pin_force = largest_force(result.pins, result.loaded_pins);
 
   // Bearing: the support's force on the disc; the disc pushes the eccentric with its opposite.
   const Eigen::Vector2d support_force = planar(bearing.force);
@@ -463,12 +503,7 @@ void CycloidLoads<dim>::evaluate()
   result.disc_von_mises =
       max_von_mises(problem->system(), problem->solution(), geometry::scene_ids::first_body);
 
-  result.analytic =
-      analytic_cycloid_loads(settings.scene, torque, settings.roller_material.youngs_modulus);
-  for (unsigned int i = 0; i < result.rollers.size(); ++i)
-    result.rollers[i].analytic_force = result.analytic.roller_forces[i];
-  for (unsigned int j = 0; j < result.pins.size(); ++j)
-    result.pins[j].analytic_force = result.analytic.pin_forces[j];
+  add_analytic_loads(settings, result);
 }
 
 template <int dim>

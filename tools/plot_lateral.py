@@ -4,6 +4,7 @@
     plot_lateral.py sharing  LOAD_SHARING.csv OUT.png   load sharing factor per planet
     plot_lateral.py campbell CAMPBELL.csv OUT.png       natural frequencies over carrier speed
     plot_lateral.py orbit    ORBIT.csv OUT.png          orbit of a central member (x, y)
+    plot_lateral.py sweep    SWEEP.csv OUT.png          K_v, bearing forces, orbits over speed
 
 CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
 """
@@ -40,8 +41,15 @@ def campbell(path, png):
     header, c = read(path)
     speed = c[header[0]]
     fig, ax = plt.subplots(figsize=(8, 5))
-    for name in header[1:]:
+    modes = [n for n in header[1:] if not n.startswith("mesh_order_")]
+    orders = [n for n in header[1:] if n.startswith("mesh_order_")]
+    for name in modes:
         ax.plot(speed, c[name], color="C0", lw=0.8)
+    top = max(max(c[name]) for name in modes)
+    for i, name in enumerate(orders):
+        ax.plot(speed, c[name], color="C%d" % (i + 1), lw=1.0, ls="--",
+                label="mesh order %s" % name.split("_")[-1].split(" ")[0])
+    ax.set_ylim(0, 1.05 * top)
     ax.set_title("Natural frequencies with gyroscopic and centripetal terms")
     ax.plot([], [], color="C0", lw=0.8, label="natural frequencies")
     finish(fig, ax, "carrier speed [rpm]", "frequency [Hz]", png)
@@ -59,12 +67,44 @@ def orbit(path, png):
     finish(fig, ax, "x [µm]", "y [µm]", png)
 
 
+def sweep(path, png):
+    """K_v, largest bearing forces and orbit amplitudes against input speed; the down sweep
+    (direction 1) dashed, invalid points (status not 0) marked x."""
+    _, c = read(path)
+    fig, axes = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
+    for direction, style in ((0, "-o"), (1, "--s")):
+        rows = [i for i, d in enumerate(c["direction [-]"]) if round(d) == direction]
+        if not rows:
+            continue
+        speed = [c["input_speed [rpm]"][i] for i in rows]
+        tag = "up" if direction == 0 else "down"
+        axes[0].plot(speed, [c["kv_max [-]"][i] for i in rows], style, ms=3, color="C0",
+                     label="K_v " + tag)
+        bad = [i for i in rows if round(c["status [-]"][i]) != 0]
+        axes[0].plot([c["input_speed [rpm]"][i] for i in bad], [c["kv_max [-]"][i] for i in bad],
+                     "x", color="k")
+        for j, member in enumerate(("carrier", "ring", "sun")):
+            axes[1].plot(speed, [c["bearing_force_%s [N]" % member][i] for i in rows], style,
+                         ms=3, color="C%d" % j, label="%s %s" % (member, tag))
+            axes[2].plot(speed, [c["orbit_%s [µm]" % member][i] for i in rows], style, ms=3,
+                         color="C%d" % j, label="%s %s" % (member, tag))
+    axes[0].set_ylabel("K_v max [-]")
+    axes[1].set_ylabel("largest bearing force [N]")
+    axes[0].set_title("Lateral stage: speed sweep")
+    for ax in axes[:2]:
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=7)
+    finish(fig, axes[2], "input speed [rpm]", "orbit amplitude [µm]", png)
+
+
 def main(argv):
     kind = argv[1]
     if kind == "sharing":
         sharing(argv[2], argv[-1])
     elif kind == "campbell":
         campbell(argv[2], argv[-1])
+    elif kind == "sweep":
+        sweep(argv[2], argv[-1])
     else:
         orbit(argv[2], argv[-1])
 

@@ -17,6 +17,29 @@ namespace
 // printed as 327 222 N/mm; the unrounded inputs give 327.24e6 N/m.
 constexpr double single_pair_ansys = 327.2e6; // [N/m]
 constexpr double contact_ratio = 1.5;         // docs/references.md §1: ε_α = 1.500
+
+// The smallest and largest mesh stiffness (N/m) of the Cai curve with ε_α = 1.5, sampled at
+// `samples` points of one period, in the double-contact zone (x < ε_α − 1 = 0.5) and the
+// single-contact zone.
+struct ZoneRanges
+{
+  double low_single = 1e30, high_single = 0., low_double = 1e30, high_double = 0.;
+};
+
+ZoneRanges zone_ranges(const CaiParameters& cai, int samples)
+{
+  ZoneRanges r;
+  for (int i = 0; i < samples; ++i)
+  {
+    const double x = double(i) / samples;
+    const double k = cai_mesh_stiffness(cai, x, contact_ratio);
+    double& low = x < 0.5 ? r.low_double : r.low_single;
+    double& high = x < 0.5 ? r.high_double : r.high_single;
+    low = std::min(low, k);
+    high = std::max(high, k);
+  }
+  return r;
+}
 } // namespace
 
 TEST(CaiStiffness, PublishedShapePeaksAtOneAtMidEngagement)
@@ -37,16 +60,7 @@ TEST(CaiStiffness, MeshStiffnessRangesAndMean)
   // sum of two brackets ∈ [1.5, 1.6] (closed forms, see the header). Mean = ε_α·(0.55 + 0.9 − 0.6)
   // = 1.275 peaks.
   const CaiParameters cai = cai_published_parameters(single_pair_ansys);
-  double low_single = 1e30, high_single = 0., low_double = 1e30, high_double = 0.;
-  for (int i = 0; i < 1000; ++i)
-  {
-    const double x = i / 1000.;
-    const double k = cai_mesh_stiffness(cai, x, contact_ratio);
-    double& low = x < 0.5 ? low_double : low_single;
-    double& high = x < 0.5 ? high_double : high_single;
-    low = std::min(low, k);
-    high = std::max(high, k);
-  }
+  const auto [low_single, high_single, low_double, high_double] = zone_ranges(cai, 1000);
   // The samples include the zone ends (x = 0, 0.5) and the vertices (x = 0.25, 0.75), where
   // the extremes lie, so only round-off remains.
   EXPECT_NEAR(low_single / single_pair_ansys, 0.95, 1e-12);
@@ -69,15 +83,8 @@ TEST(CaiStiffness, PaperForceCheckValuesLieInTheirContactZones)
   // 1e-4 of a period: the curve's slope is at most 2·1.8·k'_j per unit s, so a sampled range
   // misses its extremes by < 1e-3·k'_j, well inside the 2.6 and 5.9 N/µm margins to the range
   // ends.
-  const CaiParameters cai = cai_published_parameters(single_pair_ansys);
-  double low_single = 1e30, high_single = 0., low_double = 1e30, high_double = 0.;
-  for (int i = 0; i < 10000; ++i)
-  {
-    const double x = i / 10000.;
-    const double k = cai_mesh_stiffness(cai, x, contact_ratio);
-    (x < 0.5 ? low_double : low_single) = std::min(x < 0.5 ? low_double : low_single, k);
-    (x < 0.5 ? high_double : high_single) = std::max(x < 0.5 ? high_double : high_single, k);
-  }
+  const auto [low_single, high_single, low_double, high_double] =
+      zone_ranges(cai_published_parameters(single_pair_ansys), 10000);
   EXPECT_GT(520.58e6, low_double);
   EXPECT_LT(520.58e6, high_double);
   EXPECT_GT(321.10e6, low_single);

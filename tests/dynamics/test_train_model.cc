@@ -226,13 +226,18 @@ TEST(TrainModel, BadInput)
 // ring. Same arithmetic in a different order: 1e-12 relative.
 TEST(TrainModel, IsoPairsOfTrainMeshes)
 {
-  kinematics::GearTrainText text;
-  text.gears = "1: 21, 2: 57";
-  text.modules = "1: 2.5, 2: 2.5";
-  text.meshes = "1-2";
-  text.inputs = "1: 1450";
-  text.output = "2";
-  text.inertias = "1: 1.47e-4, 2: 7.81e-3";
+  // The split-path pinion and one wheel: gears, modules, meshes, inputs, output and inertias.
+  const kinematics::GearTrainText text{"1: 21, 2: 57",
+                                       "1: 2.5, 2: 2.5",
+                                       "",
+                                       "",
+                                       "1-2",
+                                       "",
+                                       "",
+                                       "1: 1450",
+                                       "2",
+                                       "1: 1.47e-4, 2: 7.81e-3",
+                                       ""};
   TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(text);
   input.input_torque = 49.4;

@@ -287,6 +287,55 @@ std::map<std::string, std::size_t> surface_faces(const std::string& file)
   return faces;
 }
 
+// Every part of the cycloid deck's surfaces is a non-empty piece, and the parts of a group are
+// the group (each facet in exactly one part).
+void check_cycloid_surface_parts(const std::map<std::string, std::size_t>& faces)
+{
+  const auto parts_of = [&faces](const std::string& prefix, unsigned int count)
+  {
+    std::size_t total = 0;
+    for (unsigned int k = 0; k < count; ++k)
+    {
+      const std::size_t part = faces.at(prefix + std::to_string(k));
+      EXPECT_GT(part, 0u) << prefix << k;
+      total += part;
+    }
+    return total;
+  };
+  EXPECT_EQ(parts_of("ROLLER_", 20), faces.at("ROLLER_SURFACES"));
+  EXPECT_EQ(parts_of("LOBES_", 20), faces.at("DISC_LOBES"));
+  EXPECT_EQ(parts_of("PIN_", 8), faces.at("OUTPUT_PIN_SURFACES"));
+  EXPECT_EQ(parts_of("HOLE_", 8), faces.at("OUTPUT_PIN_HOLES"));
+}
+
+// The load-case keywords of a deck: its *CLOAD lines, the first *BOUNDARY's lines, the *ELASTIC
+// line, the pairs whose contact force CF is printed, and whether any *FRICTION is given.
+struct LoadKeywords
+{
+  std::vector<std::string> cloads, supports;
+  std::string elastic;
+  std::vector<std::string> contact_prints;
+  bool friction = false;
+};
+
+LoadKeywords load_keywords(const std::string& file)
+{
+  LoadKeywords k;
+  for (const auto& [keyword, lines] : blocks(file))
+  {
+    if (keyword == "*CLOAD")
+      k.cloads = lines;
+    else if (keyword == "*BOUNDARY" && k.supports.empty())
+      k.supports = lines;
+    else if (keyword == "*ELASTIC")
+      k.elastic = lines.at(0);
+    k.friction = k.friction || keyword == "*FRICTION";
+    if (keyword.rfind("*CONTACT PRINT, SLAVE=", 0) == 0 && lines.at(0) == "CF")
+      k.contact_prints.push_back(keyword.substr(22));
+  }
+  return k;
+}
+
 // The deck of the cycloid scene: one contact pair per roller (its surface on the lobe faces
 // nearest to it) and per output pin (on its hole), the parts splitting each boundary group
 // exactly; the disc bore a rigid body about the disc centre with no torque (the bearing), the
@@ -308,42 +357,10 @@ TEST(AbaqusDeck, CycloidSceneWithOutputMember)
     expected_pairs.push_back("PIN_" + std::to_string(j) + ", HOLE_" + std::to_string(j));
   EXPECT_EQ(contact_pairs(deck.file), expected_pairs);
 
-  // Every part is a non-empty piece, and the parts of a group are the group (each facet in
-  // exactly one part).
-  const auto faces = surface_faces(deck.file);
-  const auto parts_of = [&faces](const std::string& prefix, unsigned int count)
-  {
-    std::size_t total = 0;
-    for (unsigned int k = 0; k < count; ++k)
-    {
-      const std::size_t part = faces.at(prefix + std::to_string(k));
-      EXPECT_GT(part, 0u) << prefix << k;
-      total += part;
-    }
-    return total;
-  };
-  EXPECT_EQ(parts_of("ROLLER_", 20), faces.at("ROLLER_SURFACES"));
-  EXPECT_EQ(parts_of("LOBES_", 20), faces.at("DISC_LOBES"));
-  EXPECT_EQ(parts_of("PIN_", 8), faces.at("OUTPUT_PIN_SURFACES"));
-  EXPECT_EQ(parts_of("HOLE_", 8), faces.at("OUTPUT_PIN_HOLES"));
+  check_cycloid_surface_parts(surface_faces(deck.file));
 
   const auto [element_sets, rigid_bodies, node_lines] = deck_bodies(deck.file);
-  std::vector<std::string> cloads, supports;
-  std::string elastic;
-  std::vector<std::string> contact_prints;
-  bool friction = false;
-  for (const auto& [keyword, lines] : blocks(deck.file))
-  {
-    if (keyword == "*CLOAD")
-      cloads = lines;
-    else if (keyword == "*BOUNDARY" && supports.empty())
-      supports = lines;
-    else if (keyword == "*ELASTIC")
-      elastic = lines.at(0);
-    friction = friction || keyword == "*FRICTION";
-    if (keyword.rfind("*CONTACT PRINT, SLAVE=", 0) == 0 && lines.at(0) == "CF")
-      contact_prints.push_back(keyword.substr(22));
-  }
+  const auto [cloads, supports, elastic, contact_prints, friction] = load_keywords(deck.file);
   EXPECT_EQ(element_sets, (std::set<std::string>{"DISC", "ROLLERS", "OUTPUT_PINS"}));
   const auto id = [](std::size_t k) { return std::to_string(k); };
   EXPECT_EQ(rigid_bodies,

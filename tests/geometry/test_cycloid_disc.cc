@@ -19,12 +19,7 @@ const double degree = M_PI / 180.;
 // docs/references.md §4 nominal case: r = 96 mm, e = 3 mm, q = 8.5 mm, z_k = 20 (m = 0.625).
 CycloidDiscSpec published_disc()
 {
-  CycloidDiscSpec spec;
-  spec.rollers = 20;
-  spec.roller_circle_radius = 96e-3;
-  spec.eccentricity = 3e-3;
-  spec.roller_radius = 8.5e-3;
-  return spec;
+  return {20, 96e-3, 3e-3, 8.5e-3, 0.}; // z_k, r, e, q (m), δ (rad)
 }
 
 // Signed normal distance (m) from the nominal profile point at α down to the corrected profile
