@@ -256,7 +256,7 @@ void report_nonlinear_meshes(const DynamicsParameters& p, const SimulationResult
   }
 }
 
-// The sweep's nonlinear columns and the DTE waterfall (mesh 1's spectrum per speed).
+// The sweep's nonlinear columns and the DTE waterfall (each mesh's spectrum per speed).
 void report_nonlinear_sweep(const DynamicsParameters& p, const SweepResult& sweep, Report& report)
 {
   auto& table = report.add_table("dynamics_nonlinear_sweep",
@@ -264,9 +264,10 @@ void report_nonlinear_sweep(const DynamicsParameters& p, const SweepResult& swee
                                   "kv_min", "separation_fraction", "separations", "back_impacts",
                                   "mean_dte", "dte_rms", "status"},
                                  {"rpm", "Hz", "-", "-", "-", "-", "-", "-", "µm", "µm", "-"});
-  auto& waterfall =
-      report.add_table("dynamics_dte_waterfall", {"input_speed", "direction", "order", "amplitude"},
-                       {"rpm", "-", "-", "µm"});
+  // Every mesh's DTE spectrum; a train's copies of a Train mesh are one pair: its first copy.
+  auto& waterfall = report.add_table("dynamics_dte_waterfall",
+                                     {"input_speed", "direction", "mesh", "order", "amplitude"},
+                                     {"rpm", "-", "-", "-", "µm"});
   unsigned int impacts = 0, separated = 0;
   for (const SweepPoint& point : sweep.points)
   {
@@ -274,9 +275,11 @@ void report_nonlinear_sweep(const DynamicsParameters& p, const SweepResult& swee
                    point.kv_max, point.kv_min, point.separation_fraction, double(point.separations),
                    double(point.back_impacts), point.mean_deflection * 1e6,
                    point.deflection_rms * 1e6, double(static_cast<int>(point.status))});
-    for (std::size_t k = 1; k < point.dte_orders.size(); ++k)
-      waterfall.add_row({point.input_speed / rpm, point.descending ? 1. : 0., point.dte_orders[k],
-                         point.dte_amplitude[k] * 1e6});
+    for (std::size_t m = 0; m < point.mesh_dte_orders.size(); ++m)
+      if (!p.train_description || p.train_model.mesh_copy[m] == 0)
+        for (std::size_t k = 1; k < point.mesh_dte_orders[m].size(); ++k)
+          waterfall.add_row({point.input_speed / rpm, point.descending ? 1. : 0., double(m + 1),
+                             point.mesh_dte_orders[m][k], point.mesh_dte_amplitude[m][k] * 1e6});
     separated += point.separation_fraction > 0.;
     impacts += point.back_impacts > 0;
   }
@@ -302,7 +305,8 @@ void plot_nonlinear(CommandContext& context, Report& report, const std::string& 
                "dynamics_dynamic_factor.png", "DF against speed, up and down sweeps");
   const TemporaryCsv waterfall_csv(report, "dynamics_dte_waterfall");
   context.plot("plot_nonlinear_dynamics.py", {"waterfall", waterfall_csv.path()},
-               "dynamics_dte_waterfall.png", "DTE spectrum against speed (mesh orders)");
+               "dynamics_dte_waterfall.png",
+               "DTE spectrum against speed (mesh orders), one row per mesh");
 }
 // ---- end of issue 29 results ----
 

@@ -68,6 +68,23 @@ void declare_nonlinear_mesh_entries(ParameterHandler& prm, bool train_mesh)
                     "mesh model nonlinear: summary.json of a `gearstiff stiffness` sweep of the "
                     "same pair (checked): its loaded TE s(x) and stiffness k(x) give the "
                     "unloaded TE e = s - W/k (zero for k = W/s); empty: none");
+  prm.declare_entry(
+      "tooth thickness allowances", "", Anything(),
+      "mesh model nonlinear: backlash from the geometry instead of 'backlash': the "
+      "tooth-thickness allowances A_sn of " +
+          std::string(train_mesh ? "the mesh's first and second gear"
+                                 : "the driver and the driven gear") +
+          ", 'A_sn1, A_sn2' (µm, zero or negative: DIN 3967 upper allowances), "
+          "giving j_bn = -(A_sn1 + A_sn2)·cos alpha_n at the nominal centre "
+          "distance (ISO 21771 / DIN 3967, docs/references.md §14; alpha_n = " +
+          (train_mesh ? "Train/pressure angle" : "ISO 6336/transverse pressure angle") +
+          "); empty: 'backlash' as given");
+  prm.declare_entry("back flank file", "", Anything(),
+                    "mesh model nonlinear: summary.json of a `gearstiff stiffness` sweep of the "
+                    "same pair (checked) loaded on the flanks that are the back flanks here (e.g. "
+                    "with their own modifications): its k(x), mirrored onto the back flanks' "
+                    "path like the default; empty: the drive flanks' stiffness mirrored "
+                    "(symmetric teeth)");
   prm.declare_entry("profile deviation", "0", Double(0.),
                     "mesh model nonlinear: profile form deviation f_f, a sinusoid of this "
                     "peak-to-peak at the mesh frequency in the unloaded TE (µm)");
@@ -84,6 +101,30 @@ NonlinearMeshEntries parse_nonlinear_mesh_entries(ParameterHandler& prm, const s
   NonlinearMeshEntries entries;
   entries.backlash = prm.get_double("backlash") * micrometre;
   entries.file = prm.get("transmission error file");
+  entries.back_file = prm.get("back flank file");
+  const std::vector<std::string> allowances = comma_entries(prm.get("tooth thickness allowances"));
+  const std::string allowance_parameter = section + "/tooth thickness allowances";
+  for (const std::string& entry : allowances)
+  {
+    std::size_t used = 0;
+    double value = std::nan("");
+    try
+    {
+      value = std::stod(entry, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || entry.find_first_not_of(" \t", used) != std::string::npos ||
+        !std::isfinite(value))
+      throw InputError(allowance_parameter, "'" + entry + "' is not a number (µm)");
+    entries.thickness_allowances.push_back(value * micrometre);
+  }
+  if (!allowances.empty() && allowances.size() != 2)
+    throw InputError(allowance_parameter, "expects two allowances 'A_sn1, A_sn2' (µm), got " +
+                                              std::to_string(allowances.size()));
+
   entries.profile_deviation = prm.get_double("profile deviation") * micrometre;
   entries.pitch_deviation = prm.get_double("pitch deviation") * micrometre;
   const std::string parameter = section + "/transmission error harmonics";
@@ -119,24 +160,80 @@ NonlinearMeshEntries parse_nonlinear_mesh_entries(ParameterHandler& prm, const s
 // The law of one mesh: backlash, the TE from the file (its pair checked by `check_pair`, which
 // throws naming the file parameter) and from the deviations; `teeth` of the gear whose
 // revolution the pitch deviation follows.
-dynamics::NonlinearMesh
-build_nonlinear_mesh(const NonlinearMeshEntries& entries, const std::string& section,
-                     unsigned int teeth,
-                     const std::function<void(const dynamics::StiffnessFile&)>& check_pair)
+namespace
+{
+// ISO 21771 / DIN 3967 (docs/references.md §14): at the nominal centre distance the circular
+// backlash of a spur pair is j_t = −(A_sn1 + A_sn2) and the normal backlash, the free play along
+// the line of action, j_bn = j_t·cos α_n [m]. An allowance must thin the tooth (≤ 0) and leave
+// at least half of the nominal tooth thickness m·π/2 (x = 0).
+double backlash_from_allowances(const std::vector<double>& allowances, const MeshGeometry& geometry,
+                                const std::string& section, std::vector<std::string>& derived)
+{
+  const std::string parameter = section + "/tooth thickness allowances";
+  const double half_tooth = 0.25 * M_PI * geometry.module;
+  for (const double allowance : allowances)
+  {
+    if (allowance > 0.)
+      throw InputError(parameter, "must not be positive, got " +
+                                      format_number(allowance / micrometre, 6) +
+                                      " µm: a tooth-thickness allowance thins the tooth (DIN "
+                                      "3967); a thicker tooth than nominal leaves no backlash");
+    if (-allowance > half_tooth)
+      throw InputError(parameter,
+                       format_number(allowance / micrometre, 6) +
+                           " µm removes more than half the nominal tooth thickness m·π/2 = " +
+                           format_number(2. * half_tooth / micrometre, 6) +
+                           " µm (m = " + format_number(geometry.module / mm, 6) + " mm)");
+  }
+  const double circular = -(allowances[0] + allowances[1]);
+  const double normal = circular * std::cos(geometry.pressure_angle);
+  derived.push_back(
+      section + "/backlash = " + format_number(normal / micrometre, 6) +
+      " µm (from the tooth thickness allowances " + format_number(allowances[0] / micrometre, 6) +
+      ", " + format_number(allowances[1] / micrometre, 6) +
+      " µm: j_t = " + format_number(circular / micrometre, 6) + " µm, j_bn = j_t·cos α_n, α_n = " +
+      format_number(geometry.pressure_angle / degree, 4) + "°)");
+  return normal;
+}
+
+// An FE summary for `parameter` of the pair (`check_pair` throws naming it otherwise).
+dynamics::StiffnessFile read_pair_file(const std::string& path, const std::string& parameter,
+                                       const PairCheck& check_pair)
+{
+  const dynamics::StiffnessFile file = dynamics::read_stiffness_file(path, parameter);
+  check_pair(file, parameter);
+  return file;
+}
+} // namespace
+
+dynamics::NonlinearMesh build_nonlinear_mesh(const NonlinearMeshEntries& entries,
+                                             const std::string& section, unsigned int teeth,
+                                             const MeshGeometry& geometry,
+                                             const PairCheck& check_pair,
+                                             std::vector<std::string>& derived)
 {
   dynamics::NonlinearMesh mesh;
   mesh.section = section;
-  mesh.backlash = entries.backlash;
+  mesh.backlash =
+      entries.thickness_allowances.empty()
+          ? entries.backlash
+          : backlash_from_allowances(entries.thickness_allowances, geometry, section, derived);
   if (!entries.file.empty())
   {
     const std::string parameter = section + "/transmission error file";
-    const dynamics::StiffnessFile file = dynamics::read_stiffness_file(entries.file, parameter);
+    const dynamics::StiffnessFile file = read_pair_file(entries.file, parameter, check_pair);
     if (!file.transmission_error)
       throw InputError(parameter, "'" + entries.file +
                                       "' has no loaded transmission error (the stiffness_sweep "
                                       "table of `gearstiff stiffness` in mode sweep)");
-    check_pair(file);
     mesh.transmission_error = file.transmission_error->unloaded;
+  }
+  if (!entries.back_file.empty())
+  {
+    // Its own back-flank table: the file's k(x) run the other way along its own path of contact.
+    const dynamics::StiffnessFile file =
+        read_pair_file(entries.back_file, section + "/back flank file", check_pair);
+    mesh.back_stiffness = file.stiffness.reversed(file.pair.contact_ratio);
   }
   const std::string harmonics = section + "/transmission error harmonics";
   mesh.transmission_error.add_harmonic({1., 0.5 * entries.profile_deviation, 0.},

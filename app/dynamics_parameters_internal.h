@@ -48,18 +48,31 @@ struct NonlinearMeshEntries
 {
   double backlash = 0.; // [m]
   std::string file;
-  double profile_deviation = 0.; // [m] peak-to-peak
-  double pitch_deviation = 0.;   // [m] peak-to-peak
+  std::string back_file;                    // the back flanks' own FE table; empty: mirrored
+  std::vector<double> thickness_allowances; // [m] A_sn1, A_sn2; empty: `backlash` as given
+  double profile_deviation = 0.;            // [m] peak-to-peak
+  double pitch_deviation = 0.;              // [m] peak-to-peak
   std::vector<dynamics::ExcitationHarmonic> harmonics;
 };
 
-// The law of one mesh: backlash, the TE from the file (its pair checked by `check_pair`, which
-// throws naming the file parameter) and from the deviations; `teeth` of the gear whose
-// revolution the pitch deviation follows.
-dynamics::NonlinearMesh
-build_nonlinear_mesh(const NonlinearMeshEntries& entries, const std::string& section,
-                     unsigned int teeth,
-                     const std::function<void(const dynamics::StiffnessFile&)>& check_pair);
+// What the backlash from tooth-thickness allowances needs of the pair (spur, x = 0).
+struct MeshGeometry
+{
+  double module = 0.;         // [m]
+  double pressure_angle = 0.; // [rad] α_n
+};
+// Throws InputError naming `parameter` when the FE file is not of this mesh's pair.
+using PairCheck =
+    std::function<void(const dynamics::StiffnessFile& file, const std::string& parameter)>;
+
+// The law of one mesh: backlash (given, or from the allowances: a line into `derived`), the TE
+// from the file and from the deviations, the back flanks' own table; every file's pair checked
+// by `check_pair`; `teeth` of the gear whose revolution the pitch deviation follows.
+dynamics::NonlinearMesh build_nonlinear_mesh(const NonlinearMeshEntries& entries,
+                                             const std::string& section, unsigned int teeth,
+                                             const MeshGeometry& geometry,
+                                             const PairCheck& check_pair,
+                                             std::vector<std::string>& derived);
 
 // A "Mesh n" pair is known by its driver's teeth and base radii: the file's pinion must be
 // the driver (teeth equal, base radius within 1 %: the split path rounds r_b1 to 24.7 mm) and

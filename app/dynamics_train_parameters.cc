@@ -42,10 +42,20 @@ double parse_numbered_mesh(ParameterHandler& prm, unsigned int m, unsigned int n
   const MeshPhysics physics = parse_mesh_physics_section(prm, section, mesh.contact_ratio);
   apply_mesh_physics(physics, mesh);
   if (p.mesh_model == dynamics::MeshModel::nonlinear)
+  {
+    // Spur: α_n = α_t of the ISO section; m = 2·r_b1/(z1·cos α_n).
+    prm.enter_subsection("ISO 6336");
+    const double pressure_angle = prm.get_double("transverse pressure angle") * degree;
+    prm.leave_subsection();
+    const MeshGeometry geometry{2. * mesh.driver_base_radius /
+                                    (mesh.driver_teeth * std::cos(pressure_angle)),
+                                pressure_angle};
     mesh.nonlinear = build_nonlinear_mesh(
-        physics.nonlinear, section, mesh.driver_teeth,
-        [&](const dynamics::StiffnessFile& file)
-        { check_numbered_mesh_pair(file, mesh, section + "/transmission error file"); });
+        physics.nonlinear, section, mesh.driver_teeth, geometry,
+        [&](const dynamics::StiffnessFile& file, const std::string& parameter)
+        { check_numbered_mesh_pair(file, mesh, parameter); },
+        p.derived_sizes);
+  }
   const std::optional<dynamics::CaiFit>& fit = physics.fit;
   p.stiffness_description.push_back(mesh.stiffness.description() +
                                     (fit ? " (fitted to the table)" : ""));
@@ -257,7 +267,10 @@ double parse_train_mesh(ParameterHandler& prm, std::size_t m, double iso_face_wi
   const MeshPhysics physics =
       parse_mesh_physics_section(prm, section, pair.contact_ratio, automatic_stiffness);
   prm.enter_subsection(section);
-  const bool automatic = prm.get("stiffness") == "auto";
+  // Listed only where the number is used (sources cai and constant).
+  const std::string source = prm.get("stiffness source");
+  const bool automatic =
+      prm.get("stiffness") == "auto" && (source == "cai" || source == "constant");
   prm.leave_subsection();
   if (automatic)
     p.derived_sizes.push_back(
@@ -276,11 +289,12 @@ double parse_train_mesh(ParameterHandler& prm, std::size_t m, double iso_face_wi
   if (p.mesh_model == dynamics::MeshModel::nonlinear)
     mesh.nonlinear = build_nonlinear_mesh(
         physics.nonlinear, section, static_cast<unsigned int>(std::abs(pair.teeth[0])),
-        [&](const dynamics::StiffnessFile& file)
-        {
+        {pair.module, input.pressure_angle},
+        [&](const dynamics::StiffnessFile& file, const std::string& parameter) {
           dynamics::match_stiffness_file(file, pair.teeth[0], pair.teeth[1], pair.module,
-                                         section + "/transmission error file");
-        });
+                                         parameter);
+        },
+        p.derived_sizes);
   std::string origin = physics.fit ? " (fitted to the table)" : "";
   if (physics.file)
   {

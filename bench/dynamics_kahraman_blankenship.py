@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Kahraman & Blankenship (1997)-style study (issue 29, dynamics/README.md "Nonlinear mesh"):
 DF against speed through the main resonance of a unity-ratio spur pair, up and down sweeps
-with continuation, contact ratio 1.5 and 2.0 (Cai stiffness: no FE tables in this study).
+with continuation, contact ratio 1.5 and 2.0: the Cai curve (bench/dynamics_kahraman_blankenship.prm)
+or, with --fe, the FE k(θ) and loaded TE tables of `gearstiff stiffness`
+(bench/kahraman_blankenship_fe/: the same pair as a Train, tips set for each contact ratio).
 
-    python3 bench/dynamics_kahraman_blankenship.py [path/to/gearstiff] [-o DIR]
+    python3 bench/dynamics_kahraman_blankenship.py [path/to/gearstiff] [--fe] [-o DIR]
 
 Prints, per contact ratio, the natural frequency, where each sweep jumps (the largest DF rise
 of the up sweep, the largest drop of the down sweep, between neighbouring speeds), the DF and separation fraction on both sides, and the
@@ -16,21 +18,29 @@ import subprocess
 import sys
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-args = [a for a in sys.argv[1:] if a != "-o"]
+fe = "--fe" in sys.argv
+args = [a for a in sys.argv[1:] if a not in ("-o", "--fe")]
 out_dir = sys.argv[sys.argv.index("-o") + 1] if "-o" in sys.argv else None
 if out_dir:
     args.remove(out_dir)
-binary = args[0] if args else os.path.join(root, "build", "app", "gearstiff")
+binary = os.path.abspath(args[0]) if args else os.path.join(root, "build", "app", "gearstiff")
 prm = os.path.join(root, "bench", "dynamics_kahraman_blankenship.prm")
+fe_folder = os.path.join(root, "bench", "kahraman_blankenship_fe")
 
 for contact_ratio, approach in ((1.5, 0.75), (2.0, 1.0)):
-    command = [binary, "dynamics", prm, "--json",
-               "--set", f"Mesh 1/contact ratio={contact_ratio}",
-               "--set", f"Mesh 1/approach ratio={approach}"]
+    if fe:
+        table = f"stiffness_eps{contact_ratio}.json"
+        command = [binary, "dynamics", "dynamics_fe.prm", "--json",
+                   "--set", f"Train mesh 1/stiffness file={table}",
+                   "--set", f"Train mesh 1/transmission error file={table}"]
+    else:
+        command = [binary, "dynamics", prm, "--json",
+                   "--set", f"Mesh 1/contact ratio={contact_ratio}",
+                   "--set", f"Mesh 1/approach ratio={approach}"]
     if out_dir:
-        command += ["-o", os.path.join(out_dir, f"eps{contact_ratio}")]
-    result = json.loads(subprocess.run(command, check=True, capture_output=True,
-                                       text=True).stdout)
+        command += ["-o", os.path.abspath(os.path.join(out_dir, f"eps{contact_ratio}"))]
+    result = json.loads(subprocess.run(command, check=True, capture_output=True, text=True,
+                                       cwd=fe_folder if fe else None).stdout)
     natural = result["tables"]["dynamics_modes"]["rows"][0][1]
     rows = result["tables"]["dynamics_nonlinear_sweep"]["rows"]
     up = [r for r in rows if r[2] == 0]

@@ -433,11 +433,16 @@ void summarize_sweep_point(const TorsionalModel& model, const GearTrain& point_t
   const MeshResult& first = result.meshes.front();
   p.mean_deflection = first.mean_deflection;
   p.deflection_rms = first.deflection_rms;
-  for (std::size_t k = 0; k < first.dte_spectrum_frequency.size(); ++k)
+  for (const MeshResult& mesh : result.meshes)
   {
-    p.dte_orders.push_back(first.dte_spectrum_frequency[k] / first.mesh_frequency);
-    p.dte_amplitude.push_back(first.dte_spectrum_amplitude[k]);
+    std::vector<double> orders;
+    for (const double frequency : mesh.dte_spectrum_frequency)
+      orders.push_back(frequency / mesh.mesh_frequency);
+    p.mesh_dte_orders.push_back(orders);
+    p.mesh_dte_amplitude.push_back(mesh.dte_spectrum_amplitude);
   }
+  p.dte_orders = p.mesh_dte_orders.front();
+  p.dte_amplitude = p.mesh_dte_amplitude.front();
   p.cost = result.trajectory.cost;
   // Nonlinear meshes represent separation: a negative force is back-flank contact.
   if (p.kv_min < 0. && !model.has_nonlinear_meshes())

@@ -136,6 +136,9 @@ struct SweepPoint
   double deflection_rms = 0.;        // [m] mesh 1: DTE rms about its mean
   std::vector<double> dte_orders;    // [mesh orders] of mesh 1's DTE spectrum lines
   std::vector<double> dte_amplitude; // [m]
+  // Every mesh's DTE spectrum (the waterfall of each mesh): per mesh, lines in its own mesh
+  // orders [-] and amplitudes [m]; mesh 0's equal dte_orders and dte_amplitude.
+  std::vector<std::vector<double>> mesh_dte_orders, mesh_dte_amplitude;
 };
 
 struct SweepResult

@@ -54,25 +54,35 @@ def sweep(path, png):
 
 
 def waterfall(path, png):
+    """One row of panels per mesh (column "mesh"; older tables without it: mesh 1), one column
+    per sweep direction, a shared logarithmic colour scale."""
     header, c = read(path)
     speed = column(header, c, "input_speed")
     direction = column(header, c, "direction")
     order = column(header, c, "order")
     amplitude = column(header, c, "amplitude")
+    mesh = column(header, c, "mesh") if any(h.startswith("mesh") for h in header) \
+        else [1.0] * len(speed)
     directions = sorted(set(direction))
-    fig, axes = plt.subplots(1, len(directions), figsize=(5 * len(directions) + 1, 4.5),
-                             squeeze=False, sharey=True)
+    meshes = sorted(set(mesh))
+    fig, axes = plt.subplots(len(meshes), len(directions),
+                             figsize=(5 * len(directions) + 1, 3.2 * len(meshes) + 1.3),
+                             squeeze=False, sharex=True, sharey=True)
     top = max([a for a in amplitude if math.isfinite(a)] + [1e-12])
-    for ax, d in zip(axes[0], directions):
-        idx = [i for i, v in enumerate(direction) if v == d]
-        points = ax.scatter([speed[i] for i in idx], [order[i] for i in idx],
-                            c=[max(amplitude[i], top * 1e-4) for i in idx], s=6, cmap="viridis",
-                            norm=matplotlib.colors.LogNorm(vmin=top * 1e-4, vmax=top))
-        ax.set_title("up sweep" if d == 0.0 else "down sweep", fontsize=9)
+    norm = matplotlib.colors.LogNorm(vmin=top * 1e-4, vmax=top)
+    for row, m in enumerate(meshes):
+        for ax, d in zip(axes[row], directions):
+            idx = [i for i, v in enumerate(direction) if v == d and mesh[i] == m]
+            points = ax.scatter([speed[i] for i in idx], [order[i] for i in idx],
+                                c=[max(amplitude[i], top * 1e-4) for i in idx], s=6,
+                                cmap="viridis", norm=norm)
+            ax.set_title(f"mesh {int(m)}, " + ("up sweep" if d == 0.0 else "down sweep"),
+                         fontsize=9)
+            ax.grid(True, lw=0.3)
+        axes[row][0].set_ylabel("DTE frequency /\nmesh frequency [-]")
+    for ax in axes[-1]:
         ax.set_xlabel("input speed [rpm]")
-        ax.grid(True, lw=0.3)
-    axes[0][0].set_ylabel("DTE frequency / mesh frequency [-]")
-    fig.colorbar(points, ax=axes[0].tolist(), label="DTE amplitude [µm]")
+    fig.colorbar(points, ax=axes.ravel().tolist(), label="DTE amplitude [µm]")
     fig.savefig(png, dpi=120)
 
 
