@@ -562,14 +562,22 @@ TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, doubl
   const bool nonlinear = prm.get("mesh model") == "nonlinear";
   prm.leave_subsection();
   if (nonlinear)
+  {
+    // The lateral model's nonlinear meshes: the allowances' backlash is reported in the law.
+    prm.enter_subsection("Train");
+    const double pressure_angle = prm.get_double("pressure angle") * degree;
+    prm.leave_subsection();
+    std::vector<std::string> derived;
     mean.nonlinear = build_nonlinear_mesh(
         physics.nonlinear, section, static_cast<unsigned int>(std::abs(teeth_a)),
-        [&](const dynamics::StiffnessFile& file)
+        {module, pressure_angle},
+        [&](const dynamics::StiffnessFile& file, const std::string& parameter)
         {
           if (module > 0.)
-            dynamics::match_stiffness_file(file, teeth_a, teeth_b, module,
-                                           section + "/transmission error file");
-        });
+            dynamics::match_stiffness_file(file, teeth_a, teeth_b, module, parameter);
+        },
+        derived);
+  }
   return mean;
 }
 } // namespace gearstiff::app
