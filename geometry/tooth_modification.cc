@@ -246,18 +246,14 @@ void check_modifications(const std::vector<ToothModification>& modifications,
                          um(nominal.tip_thickness));
 }
 
-ToothProfile modified_tooth(const ToothProfile& nominal,
-                            const std::vector<ToothModification>& modifications,
-                            const FlankRollRange& range, int loaded_side,
-                            const std::string& parameter)
+namespace
 {
-  if (modifications.empty())
-    return nominal;
-  check_modifications(modifications, nominal, range, parameter);
+// Step 1 of modified_tooth: the nominal points with a point of its own at every kink of the
+// flanks (roll lengths `kinks` [m]).
+std::vector<ProfilePoint> points_with_kinks(const ToothProfile& nominal,
+                                            const std::vector<double>& kinks)
+{
   const double rb = nominal.base_radius;
-  const std::vector<double> kinks = breakpoints(modifications, range);
-
-  // 1. The nominal points with a point of its own at every kink of the flanks.
   std::vector<ProfilePoint> points;
   points.reserve(nominal.points.size() + 2 * kinks.size());
   for (std::size_t i = 0; i < nominal.points.size(); ++i)
@@ -280,6 +276,23 @@ ToothProfile modified_tooth(const ToothProfile& nominal,
     for (const double k : inside)
       points.push_back(involute_between(a, b, k, rb));
   }
+  return points;
+}
+} // namespace
+
+ToothProfile modified_tooth(const ToothProfile& nominal,
+                            const std::vector<ToothModification>& modifications,
+                            const FlankRollRange& range, int loaded_side,
+                            const std::string& parameter)
+{
+  if (modifications.empty())
+    return nominal;
+  check_modifications(modifications, nominal, range, parameter);
+  const double rb = nominal.base_radius;
+  const std::vector<double> kinks = breakpoints(modifications, range);
+
+  // 1. The nominal points with a point of its own at every kink of the flanks.
+  std::vector<ProfilePoint> points = points_with_kinks(nominal, kinks);
 
   // 2. Every flank point (and the tip corners) moves inwards by δ(ρ), its normal turns by dδ/ds;
   //    points inside a relief zone are marked, so the relief starts a new outline piece.

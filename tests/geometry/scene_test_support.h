@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 #include <filesystem>
@@ -73,4 +74,17 @@ inline std::vector<double> crossings(const dealii::Triangulation<2>& triangulati
   return result;
 }
 
+// The gap between the two flanks (boundary ids `pinion_flank`, `wheel_flank`) of one tooth pair
+// along the line t1–t2 on a mesh read back [m]: the pinion and wheel crossings closest to each
+// other, wheel minus pinion (1e300 when a flank does not cross the line).
+inline double flank_gap(const dealii::Triangulation<2>& triangulation, int pinion_flank,
+                        int wheel_flank, const Eigen::Vector2d& t1, const Eigen::Vector2d& t2)
+{
+  double gap = 1e300;
+  for (const double p : crossings(triangulation, {pinion_flank}, t1, t2))
+    for (const double w : crossings(triangulation, {wheel_flank}, t1, t2))
+      if (std::abs(p - w) < std::abs(gap))
+        gap = w - p;
+  return gap;
+}
 } // namespace gearstiff::test_support

@@ -189,13 +189,8 @@ TEST(ToothModification, UnloadedTransmissionErrorTent)
     for (std::size_t k = 0; k < scene.contact_pairs.size(); ++k)
     {
       const int j = scene.contact_pairs[k];
-      const auto on_pinion = crossings(triangulation, {pinion_flank_id(j)}, line[0], line[1]);
-      const auto on_wheel = crossings(triangulation, {wheel_flank_id(j)}, line[0], line[1]);
-      double gap = 1e300;
-      for (const double p : on_pinion)
-        for (const double w : on_wheel)
-          if (std::abs(p - w) < std::abs(gap))
-            gap = w - p;
+      const double gap =
+          flank_gap(triangulation, pinion_flank_id(j), wheel_flank_id(j), line[0], line[1]);
       EXPECT_NEAR(std::abs(gap), scene.pair_separation[k], 0.2e-6) << "s = " << s << ", pair " << j;
     }
   }

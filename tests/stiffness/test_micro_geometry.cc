@@ -8,6 +8,7 @@
 #include "stiffness/mesh_stiffness.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 #include "stiffness/transmission_error.h"
+#include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/work_file.h"
 
 #include <algorithm>
@@ -23,14 +24,7 @@ namespace
 {
 constexpr double design_torque = 49.4; // N·m, docs/references.md §1
 
-geometry::ToothModification long_relief(double amount)
-{
-  geometry::ToothModification m;
-  m.kind = geometry::ModificationKind::tip_relief;
-  m.amount = amount;
-  m.length = -1.; // auto: from the start of single-tooth contact
-  return m;
-}
+using test_support::long_relief;
 
 GearMeshStiffnessSettings settings_at(double roll_angle, const std::string& name)
 {

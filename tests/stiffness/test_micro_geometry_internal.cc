@@ -9,6 +9,7 @@
 // action), and the FE TE at a near-zero torque against the geometric value.
 #include "geometry/scene_gear_pair.h"
 #include "tests/geometry/scene_test_support.h"
+#include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/planet_ring.h"
 
 #include <algorithm>
@@ -21,14 +22,7 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-geometry::ToothModification long_relief(double amount)
-{
-  geometry::ToothModification m;
-  m.kind = geometry::ModificationKind::tip_relief;
-  m.amount = amount;
-  m.length = -1.; // auto: from the start of single-tooth contact
-  return m;
-}
+using test_support::long_relief;
 
 geometry::GearPairSceneSpec ring_scene(double c_planet, double c_ring)
 {
@@ -64,15 +58,8 @@ TEST(MicroGeometryInternal, UnloadedTentWithReliefOnPlanetAndRing)
     for (std::size_t k = 0; k < scene.contact_pairs.size(); ++k)
     {
       const int j = scene.contact_pairs[k];
-      const auto on_pinion =
-          test_support::crossings(triangulation, {geometry::pinion_flank_id(j)}, line[0], line[1]);
-      const auto on_wheel =
-          test_support::crossings(triangulation, {geometry::wheel_flank_id(j)}, line[0], line[1]);
-      double gap = 1e300;
-      for (const double p : on_pinion)
-        for (const double w : on_wheel)
-          if (std::abs(p - w) < std::abs(gap))
-            gap = w - p;
+      const double gap = test_support::flank_gap(triangulation, geometry::pinion_flank_id(j),
+                                                 geometry::wheel_flank_id(j), line[0], line[1]);
       EXPECT_NEAR(std::abs(gap), scene.pair_separation[k], 0.2e-6) << "s = " << s << ", pair " << j;
     }
   }
