@@ -132,10 +132,13 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
                       std::to_string(p.settings.scene.wheel_teeth_modelled) + " teeth modelled, " +
                       (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") +
                       " rims");
+  // The published figures belong to the built-in pair alone (issue 25: never beside another gear).
+  const bool published = p.published_reference;
   report.add_value("pinion_base_radius", 0.5 * pair.pinion.base_diameter * 1e3, "mm",
-                   "r_b1 (docs/references.md §1 states 24.667 mm)");
+                   published ? "r_b1 (docs/references.md §1 states 24.667 mm)" : "r_b1");
   report.add_value("iso_single_stiffness", iso.single_per_width / 1e6, "N/µm",
-                   "ISO 6336-1 method B c'·b (docs/references.md §5: ≈ 330 N/µm)");
+                   published ? "ISO 6336-1 method B c'·b (docs/references.md §5: ≈ 330 N/µm)"
+                             : "ISO 6336-1 method B c'·b");
   report.add_value("iso_mesh_stiffness", iso.mesh_alpha_per_width / 1e6, "N/µm",
                    "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
 }

@@ -34,6 +34,13 @@ def main():
     compared = [key for key, v in values.items() if isinstance(v, dict) and "published" in v]
     if compared:
         sys.exit(f"own_pair: {command} compares with published values: {compared}")
+    # Nor in words: no description quotes the built-in pair's published figures (r_b1 24.667 mm,
+    # the paper's c'·b ≈ 330 N/µm).
+    quoting = [key for key, v in values.items()
+               if isinstance(v, dict) and any(t in v.get("description", "") for t in
+                                              ("24.667", "≈ 330"))]
+    if quoting:
+        sys.exit(f"own_pair: {command} quotes the built-in pair's published figures: {quoting}")
     derived = report.get("text", {}).get("derived sizes", "")
     missing = [d for d in DERIVED if d not in derived]
     if missing:
