@@ -474,15 +474,6 @@ private:
   std::map<long, DeckLine> node_lines; // where each node was defined
 };
 
-// Abaqus corner order (counter-clockwise; hexahedron bottom then top) to deal.II's
-// lexicographic one.
-std::vector<unsigned int> lexicographic(unsigned int dim)
-{
-  if (dim == 2)
-    return {0, 1, 3, 2};
-  return {0, 1, 3, 2, 4, 5, 7, 6};
-}
-
 // Each element's material id: its first element set's number (1-based), 0 for none; the sets'
 // names go into `names`.
 std::map<long, types::material_id> element_materials(const Deck& deck, PhysicalNames& names)
@@ -510,7 +501,7 @@ DeckCells<dim> deck_cells(const Deck& deck, const double scale, const std::strin
                           const std::map<long, types::material_id>& material)
 {
   DeckCells<dim> result;
-  const auto order = lexicographic(dim);
+  const auto order = cyclic_corner_order(dim);
   const auto vertex = [&](long node, const Element& element)
   {
     const auto [found, added] = result.vertex_of_node.emplace(node, result.vertices.size());
@@ -573,7 +564,7 @@ template <int dim>
 void check_surfaces_on_boundary(const Deck& deck, const DeckCells<dim>& mesh,
                                 const std::string& parameter)
 {
-  const auto order = lexicographic(dim);
+  const auto order = cyclic_corner_order(dim);
   std::map<std::vector<unsigned int>, unsigned int> face_uses; // sorted vertices -> elements
   for (const auto& cell : mesh.cells)
     for (const auto& corners : element_faces(dim))

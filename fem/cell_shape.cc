@@ -5,6 +5,13 @@
 
 namespace gearstiff::fem
 {
+std::vector<unsigned int> cyclic_corner_order(unsigned int dim)
+{
+  if (dim == 2)
+    return {0, 1, 3, 2};
+  return {0, 1, 3, 2, 4, 5, 7, 6};
+}
+
 template <int dim>
 bool corners_span_a_cell(const std::vector<Eigen::Vector3d>& x)
 {

@@ -84,13 +84,14 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
                                         ") has a coordinate that is not a finite number");
   // deal.II accepts a cell of zero area (collapsed or bow-tie corners); its assembly then fails
   // the factorization as a "solver failure" for what is a fault of the file.
+  const std::vector<unsigned int> order = cyclic_corner_order(dim);
+  std::vector<Eigen::Vector3d> corners(order.size());
   for (const auto& cell : serial.active_cell_iterators())
   {
     if (!cell->reference_cell().is_hyper_cube())
       continue; // the quadrilateral/hexahedral check only
-    std::vector<Eigen::Vector3d> corners;
-    for (const unsigned int v : dim == 2 ? std::vector<unsigned int>{0, 1, 3, 2}
-                                         : std::vector<unsigned int>{0, 1, 3, 2, 4, 5, 7, 6})
+    corners.clear();
+    for (const unsigned int v : order)
     {
       Eigen::Vector3d x = Eigen::Vector3d::Zero();
       for (unsigned int c = 0; c < dim; ++c)
