@@ -12,6 +12,7 @@
 // in dynamics/torsional_model.h; every K_v is reported with the window, phase and start used.
 #include "app/command.h"
 #include "app/dynamics_lateral.h"
+#include "app/dynamics_lateral_train.h"
 #include "app/dynamics_parameters.h"
 #include "app/lateral_parameters.h"
 #include "app/units.h"
@@ -614,6 +615,11 @@ void write_files(const DynamicsParameters& p, const TorsionalModel& model,
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
+  if (lateral_train_selected(prm)) // issue 30, several stages: dynamics_lateral_train.cc
+  {
+    run_lateral_train_dynamics(prm, context);
+    return;
+  }
   if (lateral_model_selected(prm)) // issue 30: dynamics_lateral.cc
   {
     run_lateral_dynamics(prm, context);

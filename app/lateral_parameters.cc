@@ -518,4 +518,70 @@ LateralParameters parse_lateral_parameters(ParameterHandler& prm)
   read_sweep_settings(prm, p);
   return p;
 }
+
+bool lateral_train_selected(ParameterHandler& prm)
+{
+  if (!lateral_model_selected(prm))
+    return false;
+  const kinematics::GearTrainSpec spec =
+      kinematics::parse_gear_train(parse_train_parameters(prm).text);
+  return std::count_if(spec.members.begin(), spec.members.end(),
+                       [](const kinematics::TrainMember& m) { return !m.carrier.empty(); }) > 1;
+}
+
+namespace
+{
+std::map<std::string, double> first_values(const NamedValues& values, double unit)
+{
+  std::map<std::string, double> result;
+  for (const auto& [name, v] : values)
+    result[name] = v[0] * unit;
+  return result;
+}
+
+void read_lateral_train_run(ParameterHandler& prm, LateralTrainParameters& p)
+{
+  prm.enter_subsection("Simulation");
+  p.settle_time = std::max(0., prm.get_double("steady state start"));
+  p.window_periods = prm.get_integer("window periods");
+  prm.leave_subsection();
+  prm.enter_subsection("Speed sweep");
+  const unsigned int points = prm.get_integer("points");
+  const double low = prm.get_double("minimum speed") * rpm;
+  const double high = prm.get_double("maximum speed") * rpm;
+  p.steps_per_mesh_period = prm.get_integer("steps per mesh period");
+  prm.leave_subsection();
+  if (points > 0 && !(low > 0. && high >= low))
+    throw InputError("Speed sweep/maximum speed", "needs 0 < minimum speed <= maximum speed");
+  for (unsigned int i = 0; i < points; ++i)
+    p.sweep_speeds.push_back(points == 1 ? low : low + (high - low) * i / (points - 1));
+}
+} // namespace
+
+LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
+                                                      const dynamics::TrainModel& rotational)
+{
+  const TrainParameters train = parse_train_parameters(prm);
+  LateralParameters unused;
+  const LateralEntries e = read_lateral_entries(prm, unused);
+  if (!e.angles.empty() || !e.errors.empty())
+    throw InputError(e.angles.empty() ? "Train/planet pin errors" : "Train/planet angles",
+                     "not available for a train of several stages (one stage only)");
+  dynamics::LateralTrainInput input;
+  input.train.spec = kinematics::parse_gear_train(train.text);
+  input.train.input_torque = train.input_torque;
+  input.train.pressure_angle = e.pressure_angle;
+  for (const auto& [name, v] : e.suspensions)
+    input.train.suspensions.push_back({name, v[0], v[1]});
+  input.bearing_stiffness = first_values(e.bearings, 1.);
+  input.bearing_damping = first_values(e.dampings, 1.);
+  input.pin_stiffness = first_values(e.pins, 1.);
+  input.base_radius = first_values(e.diameters, 0.5 * mm);
+  input.carrier_radius = first_values(e.radii, mm);
+  LateralTrainParameters p;
+  p.setup = dynamics::build_lateral_train(input, rotational);
+  p.input_speed = std::abs(input.train.spec.inputs.front().second);
+  read_lateral_train_run(prm, p);
+  return p;
+}
 } // namespace gearstiff::app

@@ -8,6 +8,7 @@
 #include "dynamics/lateral_model.h"
 #include "dynamics/lateral_response.h"
 #include "dynamics/lateral_sweep.h"
+#include "dynamics/lateral_train_build.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
@@ -35,6 +36,23 @@ struct LateralParameters
   double sweep_minimum_speed = 0., sweep_maximum_speed = 0.; // [rad/s] input
   dynamics::LateralSweepSettings sweep;
 };
+
+// Train/model = lateral with several planet members (stages, nested carriers): the general form
+// of dynamics/lateral_train.h. The rotational model of the same train (its Train mesh k(x),
+// damping and phases) comes from the train model's parameters.
+struct LateralTrainParameters
+{
+  dynamics::LateralTrainSetup setup;
+  double input_speed = 0.;                 // [rad/s] nominal, |ω_input|
+  double settle_time = 0.;                 // [s] Simulation/steady state start (0: decay time)
+  unsigned int window_periods = 20;        // [-] of the slowest mesh
+  unsigned int steps_per_mesh_period = 40; // [-] of the fastest mesh
+  std::vector<double> sweep_speeds;        // [rad/s] (empty: no sweep)
+};
+bool lateral_train_selected(dealii::ParameterHandler& prm);
+// `rotational`: the train model of the same description (Train/model = train's parameters).
+LateralTrainParameters parse_lateral_train_parameters(dealii::ParameterHandler& prm,
+                                                      const dynamics::TrainModel& rotational);
 
 // The lateral entries of the Train subsection (the rest of Train is the kinematics command's).
 void declare_lateral_parameters(dealii::ParameterHandler& prm);
