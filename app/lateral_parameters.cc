@@ -556,6 +556,22 @@ void read_lateral_train_run(ParameterHandler& prm, LateralTrainParameters& p)
   for (unsigned int i = 0; i < points; ++i)
     p.sweep_speeds.push_back(points == 1 ? low : low + (high - low) * i / (points - 1));
 }
+// Train/planet pin errors on a train of several stages: 'body: tangential radial' [µm], the body
+// named as the report lists it (member#copy, e.g. 2#1).
+void set_pin_errors(const NamedValues& errors, dynamics::LateralTrain& train)
+{
+  for (const auto& [name, v] : errors)
+  {
+    const auto body =
+        std::find_if(train.bodies.begin(), train.bodies.end(),
+                     [&, n = name](const dynamics::LateralBody& b) { return b.name == n; });
+    if (body == train.bodies.end() || body->carrier < 0)
+      throw InputError("Train/planet pin errors",
+                       "'" + name + "' is not a planet copy (member#copy, e.g. 2#1)");
+    body->pin_error_tangential = v[0] * 1e-6;
+    body->pin_error_radial = v[1] * 1e-6;
+  }
+}
 } // namespace
 
 LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
@@ -564,9 +580,9 @@ LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
   const TrainParameters train = parse_train_parameters(prm);
   LateralParameters unused;
   const LateralEntries e = read_lateral_entries(prm, unused);
-  if (!e.angles.empty() || !e.errors.empty())
-    throw InputError(e.angles.empty() ? "Train/planet pin errors" : "Train/planet angles",
-                     "not available for a train of several stages (one stage only)");
+  if (!e.angles.empty())
+    throw InputError("Train/planet angles",
+                     "not available for a train of several stages (equally spaced copies)");
   dynamics::LateralTrainInput input;
   input.train.spec = kinematics::parse_gear_train(train.text);
   input.train.input_torque = train.input_torque;
@@ -580,6 +596,7 @@ LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
   input.carrier_radius = first_values(e.radii, mm);
   LateralTrainParameters p;
   p.setup = dynamics::build_lateral_train(input, rotational);
+  set_pin_errors(e.errors, p.setup.train);
   p.input_speed = std::abs(input.train.spec.inputs.front().second);
   read_lateral_train_run(prm, p);
   return p;
