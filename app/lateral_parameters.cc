@@ -467,8 +467,9 @@ void declare_lateral_parameters(ParameterHandler& prm)
   declare_text_entries(
       prm,
       {{"bearing stiffness", "",
-        "lateral model: radial bearing stiffness of sun, ring and carrier, the same in x and y, "
-        "'name: k, ...' (N/m); a member not listed floats (0)"},
+        "lateral model: radial bearing stiffness of sun, ring and carrier (several stages: any "
+        "member on the main axis), the same in x and y, 'name: k, ...' (N/m); a member not "
+        "listed floats (0)"},
        {"bearing damping", "", "lateral model: bearing damping in x and y, 'name: c, ...' (N·s/m)"},
        {"planet pin stiffness", "",
         "lateral model: carrier pin stiffness of the planets, radial and tangential, "
@@ -483,8 +484,8 @@ void declare_lateral_parameters(ParameterHandler& prm)
         "'planet: psi1 psi2 ...' (degrees); default equally spaced"},
        {"planet pin errors", "",
         "lateral model: carrier pin position errors, 'copy: tangential radial, ...' (µm; copy = "
-        "planet number 1..N or name#number; tangential in the sense of the planet angles, "
-        "radial outwards)"}});
+        "planet number 1..N or name#number; several stages: member#copy as the report lists the "
+        "bodies; tangential in the sense of the planet angles, radial outwards)"}});
   prm.declare_entry("gyroscopic", "false", dealii::Patterns::Bool(),
                     "lateral model: Campbell chart over carrier speed with the rotating carrier "
                     "frame's gyroscopic and centripetal terms (Cooley & Parker 2012)");

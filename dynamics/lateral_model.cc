@@ -82,6 +82,25 @@ std::string lateral_mode_class_name(LateralModeClass type)
   }
 }
 
+void assemble_springs(const std::vector<LateralModel::Spring>& springs, unsigned int n,
+                      Eigen::MatrixXd& stiffness, Eigen::MatrixXd& damping,
+                      Eigen::VectorXd& preload_force)
+{
+  stiffness = Eigen::MatrixXd::Zero(n, n);
+  damping = Eigen::MatrixXd::Zero(n, n);
+  preload_force = Eigen::VectorXd::Zero(n);
+  for (const LateralModel::Spring& s : springs)
+    for (const auto& [i, vi] : s.terms)
+    {
+      preload_force[i] -= s.stiffness * s.preload * vi;
+      for (const auto& [j, vj] : s.terms)
+      {
+        stiffness(i, j) += s.stiffness * vi * vj;
+        damping(i, j) += s.damping * vi * vj;
+      }
+    }
+}
+
 std::vector<double> equally_spaced_angles(unsigned int planets)
 {
   std::vector<double> angles(planets);
@@ -296,19 +315,7 @@ LateralModel::LateralModel(const LateralStage& stage)
     ring_mesh_spring.push_back(spring_list.size());
     spring_list.push_back(mesh_spring(stage, p, false));
   }
-  stiffness_matrix = Eigen::MatrixXd::Zero(n, n);
-  damping_matrix = Eigen::MatrixXd::Zero(n, n);
-  error_force = Eigen::VectorXd::Zero(n);
-  for (const Spring& s : spring_list)
-    for (const auto& [i, vi] : s.terms)
-    {
-      error_force[i] -= s.stiffness * s.preload * vi;
-      for (const auto& [j, vj] : s.terms)
-      {
-        stiffness_matrix(i, j) += s.stiffness * vi * vj;
-        damping_matrix(i, j) += s.damping * vi * vj;
-      }
-    }
+  assemble_springs(spring_list, n, stiffness_matrix, damping_matrix, error_force);
   refuse_free_translation(modes());
 }
 
@@ -362,23 +369,20 @@ double LateralModel::ring_mesh_deflection(unsigned int planet, const double* q) 
   return deflection(spring_list[ring_mesh_spring[planet]], q);
 }
 
-namespace
-{
-// Groups of equal frequency and their class, judged on the whole group (a degenerate pair's
-// basis is arbitrary, its subspace is not): central members' translation and rotation energy.
-// `largest`: the largest eigenvalue of M^(-1/2)·K·M^(-1/2) [1/s²].
-std::vector<LateralModeGroup> classify_modes(const LateralModes& result, double relative_tolerance,
-                                             double largest)
+std::vector<LateralModeGroup> classify_mode_groups(const Eigen::VectorXd& frequencies,
+                                                   const Eigen::MatrixXd& kinetic_energy_share,
+                                                   const std::vector<unsigned int>& central,
+                                                   double relative_tolerance, double largest)
 {
   std::vector<LateralModeGroup> groups;
-  const unsigned int nf = result.frequencies.size();
+  const unsigned int nf = frequencies.size();
   for (unsigned int k = 0; k < nf;)
   {
     unsigned int end = k + 1;
-    const double lk = result.frequencies[k] * result.frequencies[k];
+    const double lk = frequencies[k] * frequencies[k];
     while (end < nf)
     {
-      const double le = result.frequencies[end] * result.frequencies[end];
+      const double le = frequencies[end] * frequencies[end];
       if (std::abs(le - lk) >
           relative_tolerance * std::max(le, 1e-9 * largest / (4. * M_PI * M_PI)))
         break;
@@ -389,11 +393,11 @@ std::vector<LateralModeGroup> classify_modes(const LateralModes& result, double 
     for (unsigned int m = k; m < end; ++m)
     {
       group.modes.push_back(m);
-      frequency += result.frequencies[m];
-      for (unsigned int b = 0; b < 3; ++b)
+      frequency += frequencies[m];
+      for (const unsigned int b : central)
       {
-        translation += result.kinetic_energy_share(m, 2 * b);
-        rotation += result.kinetic_energy_share(m, 2 * b + 1);
+        translation += kinetic_energy_share(m, 2 * b);
+        rotation += kinetic_energy_share(m, 2 * b + 1);
       }
     }
     group.frequency = frequency / (end - k);
@@ -408,6 +412,17 @@ std::vector<LateralModeGroup> classify_modes(const LateralModes& result, double 
     k = end;
   }
   return groups;
+}
+
+namespace
+{
+// Groups of equal frequency and their class, judged on the whole group (a degenerate pair's
+// basis is arbitrary, its subspace is not): central members' translation and rotation energy.
+std::vector<LateralModeGroup> classify_modes(const LateralModes& result, double relative_tolerance,
+                                             double largest)
+{
+  return classify_mode_groups(result.frequencies, result.kinetic_energy_share, {0, 1, 2},
+                              relative_tolerance, largest);
 }
 } // namespace
 
@@ -442,33 +457,41 @@ void LateralModel::modal_energies(LateralModes& result) const
   }
 }
 
-LateralModes LateralModel::modes(double relative_tolerance) const
+double undamped_modes(const Eigen::VectorXd& mass, const Eigen::MatrixXd& stiffness,
+                      const std::vector<unsigned int>& free, Eigen::VectorXd& frequencies,
+                      Eigen::MatrixXd& shapes)
 {
-  const unsigned int nf = free.size(), n = n_dofs();
+  const unsigned int nf = free.size();
   Eigen::VectorXd scale(nf); // M^(-1/2)
   Eigen::MatrixXd a(nf, nf);
   for (unsigned int i = 0; i < nf; ++i)
-    scale[i] = 1. / std::sqrt(mass_diagonal[free[i]]);
+    scale[i] = 1. / std::sqrt(mass[free[i]]);
   for (unsigned int i = 0; i < nf; ++i)
     for (unsigned int j = 0; j < nf; ++j)
-      a(i, j) = scale[i] * stiffness_matrix(free[i], free[j]) * scale[j];
+      a(i, j) = scale[i] * stiffness(free[i], free[j]) * scale[j];
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
   if (solver.info() != Eigen::Success)
     throw SolverFailure("lateral modes", "the symmetric eigensolver did not converge");
   const Eigen::VectorXd& lambda = solver.eigenvalues();
   const double largest = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
-
-  LateralModes result;
-  result.frequencies.resize(nf);
-  result.shapes = Eigen::MatrixXd::Zero(n, nf);
+  frequencies.resize(nf);
+  shapes = Eigen::MatrixXd::Zero(mass.size(), nf);
   for (unsigned int k = 0; k < nf; ++k)
   {
     // Eigenvalues of a positive semi-definite K below round-off count as rigid-body modes.
     const double l = lambda[k] > 1e-11 * largest ? lambda[k] : 0.;
-    result.frequencies[k] = std::sqrt(l) / (2. * M_PI);
+    frequencies[k] = std::sqrt(l) / (2. * M_PI);
     for (unsigned int i = 0; i < nf; ++i)
-      result.shapes(free[i], k) = scale[i] * solver.eigenvectors()(i, k);
+      shapes(free[i], k) = scale[i] * solver.eigenvectors()(i, k);
   }
+  return largest;
+}
+
+LateralModes LateralModel::modes(double relative_tolerance) const
+{
+  LateralModes result;
+  const double largest =
+      undamped_modes(mass_diagonal, stiffness_matrix, free, result.frequencies, result.shapes);
   modal_energies(result);
   result.groups = classify_modes(result, relative_tolerance, largest);
   return result;

@@ -213,6 +213,29 @@ private:
   std::vector<unsigned int> sun_mesh_spring, ring_mesh_spring; // per planet: spring index
 };
 
+// K = Σ k·v·vᵀ and C = Σ c·v·vᵀ [N/m], [N·s/m] of `springs` over n coordinates, and the forces of
+// their preloads −Σ k·e·v [N] (pin errors).
+void assemble_springs(const std::vector<LateralModel::Spring>& springs, unsigned int n,
+                      Eigen::MatrixXd& stiffness, Eigen::MatrixXd& damping,
+                      Eigen::VectorXd& preload_force);
+
+// Undamped modes of M·q̈ + K·q = 0 over the coordinates `free` (M diagonal [kg], K [N/m]):
+// ascending frequencies [Hz] (eigenvalues below 1e-11 of the largest count as rigid: 0) and
+// mass-normalised shapes in full coordinates; returns the largest eigenvalue of M^(-1/2)·K·M^(-1/2)
+// [1/s²]. SolverFailure when the eigensolver fails.
+double undamped_modes(const Eigen::VectorXd& mass, const Eigen::MatrixXd& stiffness,
+                      const std::vector<unsigned int>& free, Eigen::VectorXd& frequencies,
+                      Eigen::MatrixXd& shapes);
+
+// Groups of equal frequency (within `relative_tolerance` in ω²) and their class, judged on the
+// whole group (a degenerate pair's basis is arbitrary, its subspace is not) by the kinetic
+// energy of the `central` bodies (translation in column 2b, rotation in 2b + 1). `largest`: the
+// largest eigenvalue of M^(-1/2)·K·M^(-1/2) [1/s²].
+std::vector<LateralModeGroup> classify_mode_groups(const Eigen::VectorXd& frequencies,
+                                                   const Eigen::MatrixXd& kinetic_energy_share,
+                                                   const std::vector<unsigned int>& central,
+                                                   double relative_tolerance, double largest);
+
 // Equally spaced angles 2πn/N [rad].
 std::vector<double> equally_spaced_angles(unsigned int planets);
 } // namespace gearstiff::dynamics

@@ -151,20 +151,18 @@ LateralTrain lateral_train_of_stage(const LateralStage& stage)
   {
     const unsigned int body = 3 + p;
     const LateralGear planet{body, train.bodies[body].centre, stage.planet_base_radius, false};
-    LateralMeshLine sun = mesh_line(train, {2, {0., 0.}, stage.sun.radius, false}, planet,
-                                    stage.sun_pressure_angle, 1);
-    sun.stiffness = stage.sun_mesh_stiffness;
-    sun.damping = stage.sun_mesh_damping;
-    sun.spec_mesh = 0;
-    sun.name = "sun-planet#" + std::to_string(p + 1);
-    LateralMeshLine ring = mesh_line(train, {1, {0., 0.}, stage.ring.radius, true}, planet,
-                                     stage.ring_pressure_angle, 1);
-    ring.stiffness = stage.ring_mesh_stiffness;
-    ring.damping = stage.ring_mesh_damping;
-    ring.spec_mesh = 1;
-    ring.name = "planet-ring#" + std::to_string(p + 1);
-    train.meshes.push_back(sun);
-    train.meshes.push_back(ring);
+    // Sun (body 2, external) then ring (body 1, internal) mesh of this planet.
+    for (const bool sun : {true, false})
+    {
+      LateralMeshLine line =
+          mesh_line(train, {sun ? 2u : 1u, {0., 0.}, (sun ? stage.sun : stage.ring).radius, !sun},
+                    planet, sun ? stage.sun_pressure_angle : stage.ring_pressure_angle, 1);
+      line.stiffness = sun ? stage.sun_mesh_stiffness : stage.ring_mesh_stiffness;
+      line.damping = sun ? stage.sun_mesh_damping : stage.ring_mesh_damping;
+      line.spec_mesh = sun ? 0 : 1;
+      line.name = (sun ? "sun-planet#" : "planet-ring#") + std::to_string(p + 1);
+      train.meshes.push_back(line);
+    }
   }
   return train;
 }
@@ -247,19 +245,7 @@ void LateralTrainModel::assemble()
       if (c < 2 || !body.held)
         free.push_back(dof(b, c));
   }
-  stiffness_matrix = Eigen::MatrixXd::Zero(n, n);
-  damping_matrix = Eigen::MatrixXd::Zero(n, n);
-  error_force = Eigen::VectorXd::Zero(n);
-  for (const Spring& s : spring_list)
-    for (const auto& [i, vi] : s.terms)
-    {
-      error_force[i] -= s.stiffness * s.preload * vi;
-      for (const auto& [j, vj] : s.terms)
-      {
-        stiffness_matrix(i, j) += s.stiffness * vi * vj;
-        damping_matrix(i, j) += s.damping * vi * vj;
-      }
-    }
+  assemble_springs(spring_list, n, stiffness_matrix, damping_matrix, error_force);
 }
 
 LateralTrainModel::LateralTrainModel(LateralTrain train) : data(std::move(train))
@@ -281,84 +267,26 @@ double LateralTrainModel::deflection(const Spring& spring, const double* q) cons
   return d;
 }
 
-namespace
-{
-// Groups of equal frequency (within `tolerance` in ω²) classified on the whole group by the
-// central bodies' translation and rotation energy, as lateral_model.h's classes.
-std::vector<LateralModeGroup> group_modes(const LateralTrain& train, const LateralTrainModes& m,
-                                          double tolerance, double largest)
-{
-  std::vector<LateralModeGroup> groups;
-  const unsigned int nf = m.frequencies.size();
-  for (unsigned int k = 0; k < nf;)
-  {
-    unsigned int end = k + 1;
-    const double lk = m.frequencies[k] * m.frequencies[k];
-    for (; end < nf; ++end)
-    {
-      const double le = m.frequencies[end] * m.frequencies[end];
-      if (std::abs(le - lk) > tolerance * std::max(le, 1e-9 * largest / (4. * M_PI * M_PI)))
-        break;
-    }
-    LateralModeGroup group;
-    double translation = 0., rotation = 0., frequency = 0.;
-    for (unsigned int i = k; i < end; ++i)
-    {
-      group.modes.push_back(i);
-      frequency += m.frequencies[i];
-      for (std::size_t b = 0; b < train.bodies.size(); ++b)
-        if (train.bodies[b].central)
-        {
-          translation += m.kinetic_energy_share(i, 2 * b);
-          rotation += m.kinetic_energy_share(i, 2 * b + 1);
-        }
-    }
-    group.frequency = frequency / (end - k);
-    const double zero = 1e-9 * (end - k); // as lateral_model.cc: far above round-off
-    group.type = translation < zero && rotation < zero ? LateralModeClass::planet
-                 : translation < zero                  ? LateralModeClass::rotational
-                 : rotation < zero                     ? LateralModeClass::translational
-                                                       : LateralModeClass::mixed;
-    groups.push_back(group);
-    k = end;
-  }
-  return groups;
-}
-} // namespace
-
 LateralTrainModes LateralTrainModel::modes(double relative_tolerance) const
 {
-  const unsigned int nf = free.size(), n = n_dofs();
-  Eigen::VectorXd scale(nf); // M^(-1/2)
-  for (unsigned int i = 0; i < nf; ++i)
-    scale[i] = 1. / std::sqrt(mass_diagonal[free[i]]);
-  Eigen::MatrixXd a(nf, nf);
-  for (unsigned int i = 0; i < nf; ++i)
-    for (unsigned int j = 0; j < nf; ++j)
-      a(i, j) = scale[i] * stiffness_matrix(free[i], free[j]) * scale[j];
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
-  if (solver.info() != Eigen::Success)
-    throw SolverFailure("lateral modes", "the symmetric eigensolver did not converge");
-  const Eigen::VectorXd& lambda = solver.eigenvalues();
-  const double largest = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
   LateralTrainModes result;
-  result.frequencies.resize(nf);
-  result.shapes = Eigen::MatrixXd::Zero(n, nf);
+  const double largest =
+      undamped_modes(mass_diagonal, stiffness_matrix, free, result.frequencies, result.shapes);
+  const unsigned int nf = free.size();
   result.kinetic_energy_share = Eigen::MatrixXd::Zero(nf, 2 * n_bodies());
   for (unsigned int k = 0; k < nf; ++k)
   {
-    const double l = lambda[k] > 1e-11 * largest ? lambda[k] : 0.; // rigid below round-off
-    result.frequencies[k] = std::sqrt(l) / (2. * M_PI);
-    for (unsigned int i = 0; i < nf; ++i)
-    {
-      const unsigned int d = free[i];
-      result.shapes(d, k) = scale[i] * solver.eigenvectors()(i, k);
+    for (const unsigned int d : free)
       result.kinetic_energy_share(k, 2 * (d / 3) + (d % 3 == 2 ? 1 : 0)) +=
           mass_diagonal[d] * result.shapes(d, k) * result.shapes(d, k);
-    }
     result.kinetic_energy_share.row(k) /= result.kinetic_energy_share.row(k).sum();
   }
-  result.groups = group_modes(data, result, relative_tolerance, largest);
+  std::vector<unsigned int> central;
+  for (unsigned int b = 0; b < n_bodies(); ++b)
+    if (data.bodies[b].central)
+      central.push_back(b);
+  result.groups = classify_mode_groups(result.frequencies, result.kinetic_energy_share, central,
+                                       relative_tolerance, largest);
   return result;
 }
 

@@ -157,7 +157,10 @@ void add_supports(const LateralTrainInput& input, const Layout& layout, std::siz
   }
 }
 
-void add_bodies(const LateralTrainInput& input, Layout& layout, LateralTrainSetup& setup)
+// Bodies named by their axis member (h, not 5, for carrier h with its rings 5); `dof_names`:
+// the rotational model's names (by the body's first member) for the DOF map.
+void add_bodies(const LateralTrainInput& input, Layout& layout, LateralTrainSetup& setup,
+                std::vector<std::string>& dof_names)
 {
   const kinematics::GearTrainSpec& spec = layout.spec;
   layout.first_body.assign(spec.members.size(), -1);
@@ -173,8 +176,10 @@ void add_bodies(const LateralTrainInput& input, Layout& layout, LateralTrainSetu
     for (unsigned int k = 0; k < layout.body_copies[l]; ++k)
     {
       LateralBody body;
-      body.name = spec.members[l].name +
-                  (layout.body_copies[l] > 1 ? "#" + std::to_string(k + 1) : std::string());
+      const std::string copy =
+          layout.body_copies[l] > 1 ? "#" + std::to_string(k + 1) : std::string();
+      body.name = spec.members[axis].name + copy;
+      dof_names.push_back(spec.members[l].name + copy);
       const Placement p = layout.place(axis, k);
       body.centre = p.centre;
       body.frame_angle = p.angle;
@@ -282,11 +287,12 @@ LateralTrainSetup build_lateral_train(const LateralTrainInput& input, const Trai
                            &input.pin_damping, &input.base_radius, &input.carrier_radius})
     for (const auto& [name, value] : *list)
       layout.index(name); // names a member
-  add_bodies(input, layout, setup);
-  for (const LateralBody& body : setup.train.bodies)
+  std::vector<std::string> dof_names;
+  add_bodies(input, layout, setup, dof_names);
+  for (const std::string& name : dof_names)
   {
     const auto& names = setup.rotational.dof_names;
-    const auto found = std::find(names.begin(), names.end(), body.name);
+    const auto found = std::find(names.begin(), names.end(), name);
     setup.body_dof.push_back(found == names.end() ? -1 : static_cast<int>(found - names.begin()));
   }
   add_meshes(input, layout, setup);
