@@ -77,7 +77,9 @@ FlankCheck check_flank(const dealii::Triangulation<3>& triangulation, int bounda
         const auto& x = face->vertex(v);
         const Eigen::Vector2d p(x[0], x[1]);
         const double r = (p - centre).norm();
-        if (r <= tooth.form_radius + 1e-6 || r >= tooth.tip_radius - 1e-6)
+        // The involute part: form circle to tip (a ring's tip lies inside its form circle).
+        if (r <= std::min(tooth.form_radius, tooth.tip_radius) + 1e-6 ||
+            r >= std::max(tooth.form_radius, tooth.tip_radius) - 1e-6)
           continue;
         const double upper = measure.depth_below_flank(p, +1);
         const double lower = measure.depth_below_flank(p, -1);
@@ -133,6 +135,60 @@ TEST(LeadModification, MicrometresOnTheMeshDealIIReads)
   EXPECT_NEAR(scene.unloaded_transmission_error, 4.6875e-6, 1e-11);
 }
 
+// The planet–ring pair of tests/stiffness/planet_ring.h (z = 24 in 69, m = 2.5 mm, ring addendum
+// 0.5·m, a rim of 3 modules) in the coarse 3D scene.
+GearPairSceneSpec planet_ring_3d()
+{
+  GearPairSceneSpec spec = coarse_3d();
+  spec.pair.pinion.teeth = 24;
+  spec.pair.wheel.teeth = 69;
+  spec.pair.wheel.internal = true;
+  spec.pair.pinion.profile_shift = spec.pair.wheel.profile_shift = 0.;
+  spec.pair.pinion.tip_diameter = 0.;
+  spec.pair.wheel.tip_diameter = (69. * 2.5 - 2.5) * 1e-3;
+  spec.pair.wheel.bore_diameter = 0.;
+  spec.wheel_rim_thickness = 3. * 2.5e-3;
+  return spec;
+}
+
+// Lead modifications on a ring (geometry/tooth_modification_lead.h: the same turn about the gear
+// axis; the ring's flanks unwind the other way). Ring crowning C_β = 20 µm on both flanks, planet
+// slope f_Hβ = 10 µm on its loaded flank: the ring's flank vertices on the mesh deal.II reads sit
+// within 0.05 µm of the designed removal (the same bound and reason as the external pair above:
+// measured 2026-11-26 in the output), and the unloaded TE takes the same smallest summed removal,
+// 4.6875 µm (derivation above: the sum does not depend on which gear carries which shape).
+TEST(LeadModification, RingMicrometresOnTheMesh)
+{
+  GearPairSceneSpec spec = planet_ring_3d();
+  spec.wheel_modifications.lead.crowning = 20e-6;
+  spec.pinion_modifications.lead.slope = 10e-6;
+  spec.pinion_modifications.lead.flanks = ModifiedFlanks::loaded;
+  const std::string file = work_file("lead_ring_3d.msh");
+  const GearPairScene scene = write_gear_pair_scene(spec, file);
+  dealii::Triangulation<3> triangulation;
+  read_mesh(triangulation, file);
+  const double b = kinematics::compute_gear_pair(spec.pair).common_face_width;
+  const FlankCheck ring = check_flank(triangulation, wheel_flank_id(0), nominal_tooth(spec, true),
+                                      scene.info.second_centre, scene.info.second_rotation,
+                                      spec.wheel_modifications.lead, b);
+  const FlankCheck planet = check_flank(
+      triangulation, pinion_flank_id(0), nominal_tooth(spec, false), scene.info.first_centre,
+      scene.info.first_rotation, spec.pinion_modifications.lead, b);
+  std::cout << "ring: " << ring.vertices << " vertices, error " << ring.largest_error * 1e6
+            << " µm over " << ring.smallest_depth * 1e6 << "…" << ring.largest_depth * 1e6
+            << " µm; planet: " << planet.vertices << " vertices, error "
+            << planet.largest_error * 1e6 << " µm over " << planet.smallest_depth * 1e6 << "…"
+            << planet.largest_depth * 1e6 << " µm\n";
+  EXPECT_GT(ring.vertices, 100u);
+  EXPECT_GT(planet.vertices, 100u);
+  EXPECT_NEAR(ring.smallest_depth, 0., 1e-12);
+  EXPECT_NEAR(ring.largest_depth, 20e-6, 1e-12);
+  EXPECT_NEAR(planet.largest_depth, 10e-6, 1e-12);
+  EXPECT_LT(ring.largest_error, 0.05e-6);
+  EXPECT_LT(planet.largest_error, 0.05e-6);
+  EXPECT_NEAR(scene.unloaded_transmission_error, 4.6875e-6, 1e-11);
+}
+
 // Zero lead modifications (whatever the flank choice) write today's 3D mesh byte for byte.
 TEST(LeadModification, ZeroIsTodaysMesh)
 {
@@ -176,18 +232,9 @@ TEST(LeadModification, BadInput)
   spec.mesh.dimension = 2;
   spec.pinion_modifications.lead.slope = 5e-6;
   fails(spec, "Gear pair/Pinion/lead slope");
-  // A ring (the planet–ring pair of tests/stiffness/planet_ring.h: z = 24 in 69, m = 2.5 mm,
-  // ring addendum 0.5·m): lead modifications on a ring are not implemented.
-  spec = coarse_3d();
-  spec.pair.pinion.teeth = 24;
-  spec.pair.wheel.teeth = 69;
-  spec.pair.wheel.internal = true;
-  spec.pair.pinion.profile_shift = spec.pair.wheel.profile_shift = 0.;
-  spec.pair.pinion.tip_diameter = 0.;
-  spec.pair.wheel.tip_diameter = (69. * 2.5 - 2.5) * 1e-3;
-  spec.pair.wheel.bore_diameter = 0.;
-  spec.wheel_rim_thickness = 3. * 2.5e-3;
-  spec.wheel_modifications.lead.crowning = 5e-6;
+  // On a ring the same checks apply: crowning beyond its tip thickness.
+  spec = planet_ring_3d();
+  spec.wheel_modifications.lead.crowning = 2e-3;
   fails(spec, "Gear pair/Wheel/lead crowning");
 }
 } // namespace
