@@ -95,6 +95,54 @@ FlankCheck check_flank(const dealii::Triangulation<3>& triangulation, int bounda
   return check;
 }
 
+// The scene of `spec` written and read back by deal.II, both gears' loaded flanks of pair 0
+// checked against their lead modifications (printed), and the scene's unloaded TE.
+struct SceneCheck
+{
+  FlankCheck pinion, wheel;
+  double unloaded_transmission_error = 0.; // m
+};
+SceneCheck check_scene(const GearPairSceneSpec& spec, const std::string& name)
+{
+  const std::string file = work_file(name);
+  const GearPairScene scene = write_gear_pair_scene(spec, file);
+  dealii::Triangulation<3> triangulation;
+  read_mesh(triangulation, file);
+  const double b = kinematics::compute_gear_pair(spec.pair).common_face_width;
+  SceneCheck check;
+  check.pinion = check_flank(triangulation, pinion_flank_id(0), nominal_tooth(spec, false),
+                             scene.info.first_centre, scene.info.first_rotation,
+                             spec.pinion_modifications.lead, b);
+  check.wheel = check_flank(triangulation, wheel_flank_id(0), nominal_tooth(spec, true),
+                            scene.info.second_centre, scene.info.second_rotation,
+                            spec.wheel_modifications.lead, b);
+  check.unloaded_transmission_error = scene.unloaded_transmission_error;
+  for (const auto& [label, gear] :
+       {std::pair{"pinion", check.pinion}, std::pair{"wheel", check.wheel}})
+    std::cout << name << ", " << label << ": " << gear.vertices << " vertices, error "
+              << gear.largest_error * 1e6 << " µm over " << gear.smallest_depth * 1e6 << "…"
+              << gear.largest_depth * 1e6 << " µm\n";
+  return check;
+}
+
+// Crowning C_β = 20 µm on both flanks of one gear, slope f_Hβ = 10 µm on the loaded flank of the
+// other (the two tests below): the removal on the flank vertices and the unloaded TE. Unloaded TE
+// at the single-contact position (no profile modification): the smallest over z of
+// C_β(2u − 1)² + f_Hβ·u, u = z/b: at u = 1/2 − f_Hβ/(8C_β) = 0.4375 it is
+// 20·0.0625² + 10·0.4375 = 4.6875 µm (the 2001-point sample is within 1e-12 m of it there).
+void expect_crowning_and_slope(const FlankCheck& crowned, const FlankCheck& sloped,
+                               double unloaded_transmission_error)
+{
+  EXPECT_GT(crowned.vertices, 100u);
+  EXPECT_GT(sloped.vertices, 100u);
+  EXPECT_NEAR(crowned.smallest_depth, 0., 1e-12); // the middle layer z = b/2
+  EXPECT_NEAR(crowned.largest_depth, 20e-6, 1e-12);
+  EXPECT_NEAR(sloped.largest_depth, 10e-6, 1e-12);
+  EXPECT_LT(crowned.largest_error, 0.05e-6);
+  EXPECT_LT(sloped.largest_error, 0.05e-6);
+  EXPECT_NEAR(unloaded_transmission_error, 4.6875e-6, 1e-11);
+}
+
 // Pinion crowning C_β = 20 µm on both flanks, wheel slope f_Hβ = 10 µm on its loaded flank. The
 // designed removal spans 0…20 µm across the face (pinion) and 0…10 µm (wheel); the flank
 // vertices deal.II reads sit within 0.05 µm of it: the vertices lie on gmsh's splines through
@@ -106,33 +154,8 @@ TEST(LeadModification, MicrometresOnTheMeshDealIIReads)
   spec.pinion_modifications.lead.crowning = 20e-6;
   spec.wheel_modifications.lead.slope = 10e-6;
   spec.wheel_modifications.lead.flanks = ModifiedFlanks::loaded;
-  const std::string file = work_file("lead_crowning_3d.msh");
-  const GearPairScene scene = write_gear_pair_scene(spec, file);
-  dealii::Triangulation<3> triangulation;
-  read_mesh(triangulation, file);
-  const double b = kinematics::compute_gear_pair(spec.pair).common_face_width;
-  const FlankCheck pinion = check_flank(
-      triangulation, pinion_flank_id(0), nominal_tooth(spec, false), scene.info.first_centre,
-      scene.info.first_rotation, spec.pinion_modifications.lead, b);
-  const FlankCheck wheel = check_flank(triangulation, wheel_flank_id(0), nominal_tooth(spec, true),
-                                       scene.info.second_centre, scene.info.second_rotation,
-                                       spec.wheel_modifications.lead, b);
-  std::cout << "pinion: " << pinion.vertices << " vertices, error " << pinion.largest_error * 1e6
-            << " µm over " << pinion.smallest_depth * 1e6 << "…" << pinion.largest_depth * 1e6
-            << " µm; wheel: " << wheel.vertices << " vertices, error " << wheel.largest_error * 1e6
-            << " µm over " << wheel.smallest_depth * 1e6 << "…" << wheel.largest_depth * 1e6
-            << " µm\n";
-  EXPECT_GT(pinion.vertices, 100u);
-  EXPECT_GT(wheel.vertices, 100u);
-  EXPECT_NEAR(pinion.smallest_depth, 0., 1e-12); // the middle layer z = b/2
-  EXPECT_NEAR(pinion.largest_depth, 20e-6, 1e-12);
-  EXPECT_NEAR(wheel.largest_depth, 10e-6, 1e-12);
-  EXPECT_LT(pinion.largest_error, 0.05e-6);
-  EXPECT_LT(wheel.largest_error, 0.05e-6);
-  // Unloaded TE at the single-contact position (no profile modification): the smallest over z
-  // of C_β(2u − 1)² + f_Hβ·u, u = z/b: at u = 1/2 − f_Hβ/(8C_β) = 0.4375 it is
-  // 20·0.0625² + 10·0.4375 = 4.6875 µm (the 2001-point sample is within 1e-12 m of it there).
-  EXPECT_NEAR(scene.unloaded_transmission_error, 4.6875e-6, 1e-11);
+  const SceneCheck check = check_scene(spec, "lead_crowning_3d.msh");
+  expect_crowning_and_slope(check.pinion, check.wheel, check.unloaded_transmission_error);
 }
 
 // The planet–ring pair of tests/stiffness/planet_ring.h (z = 24 in 69, m = 2.5 mm, ring addendum
@@ -163,30 +186,8 @@ TEST(LeadModification, RingMicrometresOnTheMesh)
   spec.wheel_modifications.lead.crowning = 20e-6;
   spec.pinion_modifications.lead.slope = 10e-6;
   spec.pinion_modifications.lead.flanks = ModifiedFlanks::loaded;
-  const std::string file = work_file("lead_ring_3d.msh");
-  const GearPairScene scene = write_gear_pair_scene(spec, file);
-  dealii::Triangulation<3> triangulation;
-  read_mesh(triangulation, file);
-  const double b = kinematics::compute_gear_pair(spec.pair).common_face_width;
-  const FlankCheck ring = check_flank(triangulation, wheel_flank_id(0), nominal_tooth(spec, true),
-                                      scene.info.second_centre, scene.info.second_rotation,
-                                      spec.wheel_modifications.lead, b);
-  const FlankCheck planet = check_flank(
-      triangulation, pinion_flank_id(0), nominal_tooth(spec, false), scene.info.first_centre,
-      scene.info.first_rotation, spec.pinion_modifications.lead, b);
-  std::cout << "ring: " << ring.vertices << " vertices, error " << ring.largest_error * 1e6
-            << " µm over " << ring.smallest_depth * 1e6 << "…" << ring.largest_depth * 1e6
-            << " µm; planet: " << planet.vertices << " vertices, error "
-            << planet.largest_error * 1e6 << " µm over " << planet.smallest_depth * 1e6 << "…"
-            << planet.largest_depth * 1e6 << " µm\n";
-  EXPECT_GT(ring.vertices, 100u);
-  EXPECT_GT(planet.vertices, 100u);
-  EXPECT_NEAR(ring.smallest_depth, 0., 1e-12);
-  EXPECT_NEAR(ring.largest_depth, 20e-6, 1e-12);
-  EXPECT_NEAR(planet.largest_depth, 10e-6, 1e-12);
-  EXPECT_LT(ring.largest_error, 0.05e-6);
-  EXPECT_LT(planet.largest_error, 0.05e-6);
-  EXPECT_NEAR(scene.unloaded_transmission_error, 4.6875e-6, 1e-11);
+  const SceneCheck check = check_scene(spec, "lead_ring_3d.msh");
+  expect_crowning_and_slope(check.wheel, check.pinion, check.unloaded_transmission_error);
 }
 
 // Zero lead modifications (whatever the flank choice) write today's 3D mesh byte for byte.
