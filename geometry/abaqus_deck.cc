@@ -520,8 +520,16 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPair
   // (ISO 6336-1); a tenth of it closes the loaded contacts without passing the loaded state.
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
   const double base_radius = 0.5 * pair.pinion.base_diameter;
-  pinion.closing_rotation = 0.1 * spec.pinion_torque /
-                            (single_pair_stiffness * info.face_width * base_radius * base_radius);
+  // Tooth modifications (issue 27) that leave every pair a designed separation (relief on both
+  // gears) add the turn that closes the smallest of them, the unloaded TE: otherwise step 1 ends
+  // with no contact and step 2's free, torque-driven pinion runs away (Δφ ~ 1e4 rad). Step 2
+  // starts from the prescribed state but its equilibrium does not depend on it (frictionless:
+  // linear elasticity and contact; with friction the stick zones depend on the path by a
+  // tenth of the loaded slip).
+  pinion.closing_rotation =
+      scene.unloaded_transmission_error / base_radius +
+      0.1 * spec.pinion_torque /
+          (single_pair_stiffness * info.face_width * base_radius * base_radius);
   deck.rigid_bodies = {pinion};
   deck.title = "gearstiff gear pair scene (" + to_string(spec.position) + " position), " +
                std::to_string(info.mesh.n_cells) + " cells";

@@ -127,7 +127,8 @@ struct AbaqusDeckSpec
 // see gear_pair_deck_spec in the .cc for why not every modelled pair), pinion bore driven by
 // spec.pinion_torque, wheel bore fixed, Young's modulus and Poisson's ratio of `spec`;
 // `penalty_factor` (-) times E/h_c gives the penalty slope, the closing rotation is a tenth of
-// the rotation an ISO-like 14 N/(mm·µm) stiffness would give.
+// the rotation an ISO-like 14 N/(mm·µm) stiffness would give plus the turn that closes the
+// designed separation of modified teeth (scene.unloaded_transmission_error / r_b1).
 AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPairScene& scene,
                                    double friction, double penalty_factor);
 

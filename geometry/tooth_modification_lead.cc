@@ -74,10 +74,6 @@ void check_lead_modification(const LeadModification& lead, const ToothProfile& n
     if (amount < 0. && std::string(name) != "/lead slope")
       throw InputError(parameter + name, "must be 0 or positive (material removed, µm)");
   }
-  if (nominal.internal)
-    throw InputError(parameter + first_entry(lead),
-                     "lead modifications on an internal (ring) gear are not implemented; put "
-                     "them on its mate");
   if (lead.end_relief > 0. &&
       !(lead.end_relief_length > 0. && lead.end_relief_length <= 0.5 * face_width))
     throw InputError(parameter + "/end relief length",

@@ -20,6 +20,13 @@
 // circle), so a flank node moves by exactly δ(z) along the flank normal; interior nodes take a
 // smooth share of it, which keeps the cells' shape (gradient δ/s_tooth ~ 1e-2). The fillets take
 // a blend of the flank's removal (no contact there).
+//
+// A ring gear (internal) takes the same construction: its tooth (tip towards the centre, root
+// circle outside the form circle) also lies between its two flanks, which are involutes of its
+// base circle unwinding the other way (flank angle c + inv(α_r) instead of c − inv(α_r)); the
+// depth below a flank is again r_b times the angle to it, and removing δ from side ±1 turns that
+// flank towards the tooth axis by ∓δ/r_b, as on an external tooth. The radial weight runs from
+// the root circle (outside, 0) to the form circle (1): rim nodes beyond the root stay put.
 #pragma once
 
 #include "geometry/tooth_modification.h"
@@ -46,8 +53,7 @@ double smallest_lead_separation(const LeadModification& first, const LeadModific
 // Checks a gear's lead modifications against its tooth and face width (InputError naming
 // `parameter` + "/lead crowning", "/lead slope", "/end relief" or "/end relief length"): amounts
 // finite and (but the slope) not negative, an end relief with a length in (0, b/2], the removal
-// of both flanks at the worst end within the tip thickness, an external gear (lead modifications
-// on a ring are not implemented).
+// of both flanks at the worst end within the tip thickness.
 void check_lead_modification(const LeadModification& lead, const ToothProfile& nominal,
                              double face_width, const std::string& parameter);
 
