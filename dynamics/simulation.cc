@@ -393,11 +393,20 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   // false sidebands of about 1 % of the mesh line at 5 µs), the window holds whole steps, its
   // spectrum is taken on them and the response compared with itself a revolution earlier.
   SimulationSettings settings = given;
+  // The stored series keeps every `stride`-th step; for a revolution table the stride too
+  // divides the mesh period, so stored samples one revolution apart are the same phase.
+  const double h0 = given.integrator.time_step;
+  unsigned int stride =
+      settings.keep_time_series
+          ? std::max(1u, static_cast<unsigned int>(std::lround(std::min(
+                             settings.record_interval / h0, double(max_integration_steps)))))
+          : std::numeric_limits<unsigned int>::max();
   if (excitation_period(model) * model.mesh_position_rate(0) > 1.5)
   {
     const double mesh_period = 1. / model.mesh_position_rate(0);
+    const double unit = settings.keep_time_series ? stride : 1.;
     settings.integrator.time_step =
-        mesh_period / std::ceil(mesh_period / given.integrator.time_step - 1e-9);
+        mesh_period / (unit * std::ceil(mesh_period / (unit * h0) - 1e-9));
   }
   SimulationResult result;
   result.time_step = settings.integrator.time_step;
@@ -413,11 +422,7 @@ SimulationResult simulate(const TorsionalModel& model, const SimulationSettings&
   WindowStatistics statistics(model, settings, result);
   IntegratorSettings integrator = settings.integrator;
   integrator.end_time = end_time;
-  integrator.record_stride =
-      settings.keep_time_series
-          ? std::max(1u, static_cast<unsigned int>(std::lround(std::min(
-                             settings.record_interval / h, double(max_integration_steps)))))
-          : std::numeric_limits<unsigned int>::max();
+  integrator.record_stride = stride;
   check_simulation_work(model, settings, integrator, result, 1. / model.mesh_position_rate(0));
   integrator.observer = [&](double t, const double* phi, const double* omega)
   { statistics.observe(t, phi, omega); };
