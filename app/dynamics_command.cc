@@ -11,6 +11,7 @@
 // How the paper's 3-DOF equations are implemented (sign of friction, phase, start) is described
 // in dynamics/torsional_model.h; every K_v is reported with the window, phase and start used.
 #include "app/command.h"
+#include "app/dynamics_fault_report.h"
 #include "app/dynamics_lateral.h"
 #include "app/dynamics_lateral_train.h"
 #include "app/dynamics_parameters.h"
@@ -362,12 +363,14 @@ void report_run(const DynamicsParameters& p, const TorsionalModel& model,
                                   ? "automatic: starts when the slowest mode has decayed to 1/1000"
                                   : "automatic: no damping, so 20 mesh periods skipped")
                            : "as given") +
-                      ", whole periods of mesh 1");
+                      (excitation_period(model) * model.mesh_position_rate(0) > 1.5
+                           ? ", whole revolutions of the faulty gear (revolution table)"
+                           : ", whole periods of mesh 1"));
 
   report.add_value("input_speed", p.train.input_speed / rpm, "rpm", "input speed n1");
   report.add_value("input_torque", p.train.gears[0].torque, "N·m", "torque on gear 1");
   report.add_value("mesh_frequency", model.mesh_position_rate(0), "Hz", "mesh frequency (mesh 1)");
-  report.add_value("time_step", p.simulation.integrator.time_step * 1e6, "µs",
+  report.add_value("time_step", result.time_step * 1e6, "µs",
                    "time step (output interval for adaptive RK)");
   report.add_value("rk4_step_limit", trajectory.rk4_step_limit * 1e6, "µs",
                    "estimated RK4 stability limit");
@@ -638,6 +641,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report_nonlinear_meshes(p, result, report);
   report_iso_assumptions(p, report);
   report_harmonics_and_cost(p, model, result, report);
+  report_fault_signature(model, result, report); // issue 31: revolution tables only
 
   SweepResult sweep;
   if (p.sweep.points > 0)

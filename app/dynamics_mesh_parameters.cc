@@ -483,6 +483,17 @@ MeshPhysics parse_mesh_physics_section(ParameterHandler& prm, const std::string&
   }
 }
 
+void check_contact_loss(const MeshPhysics& physics, bool nonlinear, const std::string& section)
+{
+  if (nonlinear || !physics.stiffness.loses_contact())
+    return;
+  throw InputError(section + "/stiffness file",
+                   "the table has positions without contact (a broken tooth: k = 0 from " +
+                       format_number(physics.stiffness.first_lost_contact(), 6) +
+                       " base pitches); the linear mesh law cannot separate the teeth, set "
+                       "Simulation/mesh model = nonlinear");
+}
+
 void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
 {
   mesh.stiffness = physics.stiffness;
@@ -561,6 +572,7 @@ TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, doubl
   prm.enter_subsection("Simulation");
   const bool nonlinear = prm.get("mesh model") == "nonlinear";
   prm.leave_subsection();
+  check_contact_loss(physics, nonlinear, section);
   if (nonlinear)
   {
     // The lateral model's nonlinear meshes: the allowances' backlash is reported in the law.

@@ -109,6 +109,10 @@ MeshPhysics parse_mesh_physics_section(dealii::ParameterHandler& prm, const std:
 
 void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh);
 
+// A table with positions without contact (`gearstiff faults` with a broken tooth, docs/faults.md)
+// runs only under the nonlinear mesh law: InputError naming `section`/stiffness file otherwise.
+void check_contact_loss(const MeshPhysics& physics, bool nonlinear, const std::string& section);
+
 // Mesh damping as a ratio (issue 25): c_g = 2ζ·√(k_m·m_e) for every mesh whose ζ (`ratios`,
 // per model mesh) is a number; one line per such mesh with a section name (`sections`, per model
 // mesh; empty: not reported) into `derived`.

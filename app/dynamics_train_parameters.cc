@@ -266,6 +266,7 @@ double parse_train_mesh(ParameterHandler& prm, std::size_t m, double iso_face_wi
       automatic_train_stiffness(input, m, iso_face_width, width, width_origin);
   const MeshPhysics physics =
       parse_mesh_physics_section(prm, section, pair.contact_ratio, automatic_stiffness);
+  check_contact_loss(physics, p.mesh_model == dynamics::MeshModel::nonlinear, section);
   prm.enter_subsection(section);
   // Listed only where the number is used (sources cai and constant).
   const std::string source = prm.get("stiffness source");

@@ -72,13 +72,16 @@ void report_rows(Report& report, const stiffness::FaultSweepResult& r)
                    change(row.energy_faulty, row.energy_healthy), double(row.lost_contact),
                    double(row.faulty_pairs)});
   }
-  auto& revolution = report.add_table(
-      "revolution_stiffness", {"mesh_position", "stiffness", "pinion_angle", "lost_contact"},
-      {"-", "N/um", "deg", "-"});
+  // `gearstiff dynamics` reads this table (dynamics/stiffness_file.h): its period column states
+  // the base pitches of one revolution on every row, so the CSV describes itself.
+  auto& revolution =
+      report.add_table("revolution_stiffness",
+                       {"mesh_position", "stiffness", "pinion_angle", "lost_contact", "period"},
+                       {"-", "N/um", "deg", "-", "-"});
   for (std::size_t i = 0; i < r.revolution_position.size(); ++i)
     revolution.add_row({r.revolution_position[i], r.revolution_stiffness[i] * 1e-6,
-                        r.revolution_pinion_angle[i] / degree,
-                        double(r.revolution_lost_contact[i])});
+                        r.revolution_pinion_angle[i] / degree, double(r.revolution_lost_contact[i]),
+                        double(r.period_pitches)});
 }
 
 void report_summary(Report& report, const stiffness::FaultSweepResult& r)
@@ -109,7 +112,9 @@ void report_summary(Report& report, const stiffness::FaultSweepResult& r)
                   "repeated and the faulty tooth's positions; rows with lost_contact = 1 carry "
                   "no stiffness (0 written: no pair touches). Its mesh positions run over the "
                   "whole revolution (period " +
-                      std::to_string(r.period_pitches) + " base pitches).");
+                      std::to_string(r.period_pitches) +
+                      " base pitches, column period); `gearstiff dynamics` reads it as a Train "
+                      "mesh's stiffness file (docs/faults.md).");
 }
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -68,29 +69,59 @@ MeshStiffness MeshStiffness::cai(const CaiParameters& parameters, const std::str
 
 MeshStiffness MeshStiffness::table(const std::vector<double>& positions,
                                    const std::vector<double>& stiffness,
-                                   const std::string& parameter)
+                                   const std::string& parameter, unsigned int period,
+                                   const std::vector<bool>& lost_contact)
 {
   if (positions.empty())
     throw InputError(parameter, "stiffness table is empty");
   if (positions.size() != stiffness.size())
     throw InputError(parameter, "positions and stiffness values differ in number");
+  if (period < 1)
+    throw InputError(parameter, "the table's period must be at least one base pitch");
+  if (!lost_contact.empty() && lost_contact.size() != positions.size())
+    throw InputError(parameter, "the lost-contact flags and the positions differ in number");
+  const double span = period;
+  MeshStiffness mesh;
   for (std::size_t i = 0; i < positions.size(); ++i)
   {
-    if (!(positions[i] >= 0. && positions[i] < 1.))
-      throw InputError(parameter, "position " + std::to_string(positions[i]) +
-                                      " outside one mesh period [0, 1) base pitches");
+    if (!(positions[i] >= 0. && positions[i] < span))
+      throw InputError(
+          parameter, "position " + std::to_string(positions[i]) +
+                         (period == 1 ? std::string(" outside one mesh period [0, 1) base pitches")
+                                      : " outside the table's period [0, " +
+                                            std::to_string(period) + ") base pitches"));
     if (i > 0 && !(positions[i] > positions[i - 1]))
       throw InputError(parameter, "positions must increase strictly (entry " +
                                       std::to_string(i + 1) + ": " + std::to_string(positions[i]) +
                                       " after " + std::to_string(positions[i - 1]) + ")");
+    if (!lost_contact.empty() && lost_contact[i])
+    {
+      // No pair touches there: no stiffness exists, and none may be written (docs/faults.md).
+      if (stiffness[i] != 0.)
+        throw InputError(parameter, "row " + std::to_string(i + 1) +
+                                        " is flagged as lost contact but carries a stiffness " +
+                                        format_stiffness(stiffness[i]) + " (it must be 0)");
+      ++mesh.lost_contact_rows;
+      continue;
+    }
     check_plausible(stiffness[i], parameter,
                     "stiffness at position " + std::to_string(positions[i]));
   }
-  MeshStiffness mesh;
+  if (mesh.lost_contact_rows == positions.size())
+    throw InputError(parameter, "no row of the table has contact: there is no mesh stiffness");
   mesh.kind = StiffnessSource::table;
   mesh.table_positions = positions;
   mesh.table_stiffness = stiffness;
+  mesh.table_period = period;
   return mesh;
+}
+
+double MeshStiffness::first_lost_contact() const
+{
+  for (std::size_t i = 0; i < table_stiffness.size(); ++i)
+    if (table_stiffness[i] == 0.)
+      return table_positions[i];
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 double MeshStiffness::table_value(double x) const
@@ -98,16 +129,29 @@ double MeshStiffness::table_value(double x) const
   const std::size_t n = table_positions.size();
   if (n == 1)
     return table_stiffness[0];
-  // Periodic linear interpolation: the segment after the last node wraps to the first + 1.
+  // Periodic linear interpolation: the segment after the last node wraps to the first + period.
+  const double span = table_period;
   const auto upper = std::upper_bound(table_positions.begin(), table_positions.end(), x);
   const std::size_t i1 = upper - table_positions.begin();
   const std::size_t i0 = (i1 == 0) ? n - 1 : i1 - 1;
   double x0 = table_positions[i0];
-  double x1 = (i1 == n) ? table_positions[0] + 1. : table_positions[i1];
+  double x1 = (i1 == n) ? table_positions[0] + span : table_positions[i1];
   if (i1 == 0)
-    x0 -= 1.;
+    x0 -= span;
   const double w = (x - x0) / (x1 - x0);
-  return (1. - w) * table_stiffness[i0] + w * table_stiffness[i1 % n];
+  const double k0 = table_stiffness[i0], k1 = table_stiffness[i1 % n];
+  // Between a row with contact and one without, the contact ends half-way (nearest row): a
+  // stiffness between the two would be invented. The trapezoid mean is unchanged by this rule.
+  if (lost_contact_rows > 0 && (k0 == 0.) != (k1 == 0.))
+    return w < 0.5 ? k0 : k1;
+  return (1. - w) * k0 + w * k1;
+}
+
+// x modulo the table's period (for P = 1 the same arithmetic as x − ⌊x⌋).
+double MeshStiffness::table_position(double mesh_position) const
+{
+  const double span = table_period;
+  return mesh_position - span * std::floor(mesh_position / span);
 }
 
 MeshStiffnessState MeshStiffness::evaluate(double mesh_position, double contact_ratio,
@@ -127,7 +171,9 @@ MeshStiffnessState MeshStiffness::evaluate(double mesh_position, double contact_
     state.friction_direction = weighted_direction / state.stiffness;
     return state;
   }
-  state.stiffness = (kind == StiffnessSource::constant) ? constant_value : table_value(x);
+  state.stiffness = (kind == StiffnessSource::constant)
+                        ? constant_value
+                        : table_value(table_position(mesh_position));
   int pairs = 0;
   int direction_sum = 0;
   for (double p = x; p < contact_ratio; p += 1., ++pairs)
@@ -142,7 +188,7 @@ double MeshStiffness::stiffness(double mesh_position, double contact_ratio) cons
   if (kind == StiffnessSource::constant)
     return constant_value;
   if (kind == StiffnessSource::table)
-    return table_value(x);
+    return table_value(table_position(mesh_position));
   // Σ over the pairs of scale·(c0 + c1·s + c2·s²), s = p/ε_α ∈ [0, 1): cai_pair_stiffness's
   // arithmetic in its order, so the value is evaluate()'s to the last bit.
   const auto& c = cai_curve.shape;
@@ -170,16 +216,18 @@ double MeshStiffness::mean_stiffness(double contact_ratio) const
   }
   case StiffnessSource::table:
   {
-    // Exact mean of the periodic piecewise-linear function (trapezoids, wrap included).
+    // Exact mean of the periodic piecewise-linear function (trapezoids, wrap included; a
+    // half-step to a row without contact has the trapezoid's area too).
     const std::size_t n = table_positions.size();
+    const double span = table_period;
     double integral = 0.;
     for (std::size_t i = 0; i < n; ++i)
     {
       const double x0 = table_positions[i];
-      const double x1 = (i + 1 < n) ? table_positions[i + 1] : table_positions[0] + 1.;
+      const double x1 = (i + 1 < n) ? table_positions[i + 1] : table_positions[0] + span;
       integral += 0.5 * (x1 - x0) * (table_stiffness[i] + table_stiffness[(i + 1) % n]);
     }
-    return integral;
+    return integral / span;
   }
   }
   return 0.;
@@ -217,9 +265,9 @@ MeshStiffness MeshStiffness::reversed(double contact_ratio) const
     std::vector<std::pair<double, double>> nodes;
     for (std::size_t i = 0; i < table_positions.size(); ++i)
     {
-      const double x = contact_ratio - table_positions[i];
-      const double f = x - std::floor(x);
-      nodes.emplace_back(f < 1. ? f : 0., table_stiffness[i]); // f = 1 by round-off is 0
+      const double f = table_position(contact_ratio - table_positions[i]);
+      // f = P by round-off is 0
+      nodes.emplace_back(f < double(table_period) ? f : 0., table_stiffness[i]);
     }
     std::sort(nodes.begin(), nodes.end());
     for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -243,6 +291,11 @@ std::string MeshStiffness::description() const
     break;
   case StiffnessSource::table:
     s << "k(x) table, " << table_positions.size() << " points, periodic linear interpolation";
+    if (table_period > 1)
+      s << ", period " << table_period << " base pitches (one revolution of a " << table_period
+        << "-tooth gear)";
+    if (lost_contact_rows > 0)
+      s << ", " << lost_contact_rows << " rows without contact (k = 0)";
     break;
   }
   return s.str();

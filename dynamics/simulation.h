@@ -6,7 +6,8 @@
 // on whether the start-up transient is included, so each result carries the window, phase and
 // start it was computed with. The steady-state window starts, unless given, after the slowest
 // vibration mode has decayed to 1/1000 (ln 1000 / smallest modal decay rate at mean stiffness)
-// and is then trimmed to a whole number of periods of mesh 1.
+// and is then trimmed to a whole number of periods of mesh 1 (of a revolution, for a
+// whole-revolution stiffness table: excitation_period).
 #pragma once
 
 #include "dynamics/integrators.h"
@@ -83,6 +84,9 @@ struct SimulationResult
   Trajectory trajectory;
   std::vector<MeshResult> meshes;
   StartState start = StartState::static_deflection;
+  // [s] the step used: the given one, or, with a whole-revolution table, shortened to divide
+  // the mesh period of mesh 1 (and the revolution) into whole steps
+  double time_step = 0.;
   double window_start = 0.; // [s]
   double window_end = 0.;   // [s]
   bool window_automatic = true;
@@ -96,6 +100,11 @@ struct SimulationResult
 };
 
 SimulationResult simulate(const TorsionalModel& model, const SimulationSettings& settings);
+
+// [s] the period the steady-state window is made of: mesh 1's mesh period, or, when a mesh runs
+// a whole-revolution table (period P base pitches, docs/faults.md), the longest P/f_mesh over
+// those meshes; the automatic window is then rounded up to whole such periods.
+double excitation_period(const TorsionalModel& model);
 
 // Whether a sweep point has a K_v at all. Only `valid` points carry one: a diverged run has
 // none, a run whose mesh force turns negative (teeth would separate) is outside the linear

@@ -131,44 +131,79 @@ bool has_column(const ptree& tree, const std::string& table, const std::string& 
   return false;
 }
 
-// The sweep's k(x) with positions modulo one base pitch, checked to cover the cycle; with the
-// loaded TE [um] (may be empty) also its split into k and e (nonlinear_mesh.h).
+// The sweep's k(x) with positions modulo the period (one base pitch, or P of a revolution
+// table), checked to cover the cycle; with the loaded TE [um] (may be empty) also its split into
+// k and e (nonlinear_mesh.h). `lost_contact` (empty: none) flags rows without contact (k = 0).
 MeshStiffness sweep_table(const std::vector<double>& positions,
                           const std::vector<double>& stiffness,
                           const std::vector<double>& loaded_error, const std::string& parameter,
-                          std::optional<LoadedTransmissionErrorSplit>& split)
+                          std::optional<LoadedTransmissionErrorSplit>& split,
+                          unsigned int period = 1, const std::vector<double>& lost_contact = {})
 {
-  // x [base pitches], k [N/m], s [m]
-  std::vector<std::tuple<double, double, double>> nodes;
+  const double span = period;
+  // x [base pitches], k [N/m], s [m], no contact
+  std::vector<std::tuple<double, double, double, bool>> nodes;
   for (std::size_t i = 0; i < positions.size(); ++i)
   {
-    const double x = positions[i] - std::floor(positions[i]);
-    nodes.emplace_back(x < 1. ? x : 0., stiffness[i] * 1e6,
-                       i < loaded_error.size() ? loaded_error[i] * 1e-6 : 0.);
+    const double x = positions[i] - span * std::floor(positions[i] / span);
+    nodes.emplace_back(x < span ? x : 0., stiffness[i] * 1e6,
+                       i < loaded_error.size() ? loaded_error[i] * 1e-6 : 0.,
+                       i < lost_contact.size() && lost_contact[i] != 0.);
   }
   std::sort(nodes.begin(), nodes.end());
   std::vector<double> x, k, s;
-  for (const auto& [xi, ki, si] : nodes)
+  std::vector<bool> lost;
+  for (const auto& [xi, ki, si, li] : nodes)
     if (x.empty() || xi - x.back() > 1e-9)
     {
       x.push_back(xi);
       k.push_back(ki);
       s.push_back(si);
+      lost.push_back(li);
     }
-  double widest = x.empty() ? 1. : 1. - x.back() + x.front();
+  double widest = x.empty() ? span : span - x.back() + x.front();
   for (std::size_t i = 1; i < x.size(); ++i)
     widest = std::max(widest, x[i] - x[i - 1]);
-  if (x.size() < 3 || widest > 2. / x.size())
-    throw InputError(parameter,
-                     "the table does not cover a mesh cycle: " + std::to_string(x.size()) +
-                         " distinct positions modulo one base pitch, widest gap " + format(widest) +
-                         " base pitches (at most twice the mean " +
-                         "spacing allowed; sweep one full base pitch)");
+  if (x.size() < 3 || widest > 2. * span / x.size())
+    throw InputError(
+        parameter, "the table does not cover a mesh cycle: " + std::to_string(x.size()) +
+                       " distinct positions modulo " +
+                       (period == 1 ? std::string("one base pitch")
+                                    : std::to_string(period) + " base pitches") +
+                       ", widest gap " + format(widest) + " base pitches (at most twice the mean " +
+                       "spacing allowed; sweep one full base pitch)");
   // The stiffness values are checked (range of real gear meshes) before the TE split uses them.
-  MeshStiffness table = MeshStiffness::table(x, k, parameter);
+  MeshStiffness table = MeshStiffness::table(x, k, parameter, period,
+                                             lost_contact.empty() ? std::vector<bool>() : lost);
   if (!loaded_error.empty())
     split = split_loaded_transmission_error(x, k, s, parameter);
   return table;
+}
+
+// The revolution table of `gearstiff faults` (docs/faults.md): columns mesh_position [-],
+// stiffness [N/um], lost_contact [-] and period [-] (base pitches, the faulty gear's teeth, the
+// same on every row and equal to the tooth count of one gear of the file's pair).
+MeshStiffness revolution_table(const ptree& tree, const StiffnessFilePair& pair,
+                               const std::vector<double>& positions, const std::string& parameter)
+{
+  const std::string table = "revolution_stiffness";
+  const std::vector<double> periods = column(tree, table, "period", "-", parameter);
+  const double period = periods.front();
+  for (const double p : periods)
+    if (p != period)
+      throw InputError(parameter, "table " + table + ": the column period differs between rows (" +
+                                      format(period) + " and " + format(p) + ")");
+  if (!(period == std::abs(pair.pinion_teeth) || period == std::abs(pair.wheel_teeth)))
+    throw InputError(parameter, "table " + table + ": period " + format(period) +
+                                    " base pitches is neither gear's tooth count (z1 = " +
+                                    std::to_string(pair.pinion_teeth) +
+                                    ", z2 = " + std::to_string(pair.wheel_teeth) +
+                                    "): a revolution table spans one revolution of the faulty "
+                                    "gear, its tooth count of base pitches");
+  std::optional<LoadedTransmissionErrorSplit> no_split;
+  return sweep_table(positions, column(tree, table, "stiffness", "N/um", parameter), {}, parameter,
+                     no_split, static_cast<unsigned int>(period),
+                     column(tree, table, "lost_contact", "-", parameter));
 }
 } // namespace
 
@@ -197,13 +232,21 @@ StiffnessFile read_stiffness_file(const std::string& path, const std::string& pa
                     loaded_error, parameter, file.transmission_error);
     return file;
   }
+  const std::vector<double> revolution =
+      column(tree, "revolution_stiffness", "mesh_position", "-", parameter);
+  if (!revolution.empty())
+  {
+    file.stiffness = revolution_table(tree, file.pair, revolution, parameter);
+    return file;
+  }
   const auto scale = value(tree, "cai_scale");
   const auto c0 = value(tree, "cai_c0"), c1 = value(tree, "cai_c1"), c2 = value(tree, "cai_c2");
   if (!scale || !c0 || !c1 || !c2)
     throw InputError(parameter, "'" + path +
                                     "' holds no mesh stiffness (the table stiffness_sweep of "
-                                    "`gearstiff stiffness` in mode sweep, or the Cai values of "
-                                    "`gearstiff cai`)");
+                                    "`gearstiff stiffness` in mode sweep, revolution_stiffness "
+                                    "of `gearstiff faults`, or the Cai values of `gearstiff "
+                                    "cai`)");
   CaiParameters cai;
   cai.scale = *scale * 1e6;
   cai.shape = {*c0, *c1, *c2};

@@ -3,9 +3,11 @@
 // (summary.json; the same object as their --json output). It names the pair it belongs to
 // (values pinion_teeth, wheel_teeth — negative for an internal wheel —, transverse_module and
 // centre_distance in mm, contact_ratio) and carries either the sweep's table stiffness_sweep
-// (columns mesh_position [base pitches] and stiffness [N/um]) or the calibrated Cai curve
-// (cai_scale [N/µm], cai_c0..cai_c2). JSON through boost::property_tree (header-only): no
-// stiffness module, no deal.II.
+// (columns mesh_position [base pitches] and stiffness [N/um]), the whole-revolution table
+// revolution_stiffness of `gearstiff faults` (columns mesh_position, stiffness, lost_contact,
+// period: a table over P base pitches, P the faulty gear's tooth count, rows without contact at
+// k = 0; docs/faults.md) or the calibrated Cai curve (cai_scale [N/µm], cai_c0..cai_c2). JSON
+// through boost::property_tree (header-only): no stiffness module, no deal.II.
 #pragma once
 
 #include "dynamics/mesh_stiffness.h"
@@ -44,9 +46,11 @@ struct StiffnessFile
 
 // Reads `path`; InputError naming `parameter` for a missing or unreadable file, a summary
 // without the pair values or without a stiffness (neither table nor Cai values), and a table
-// that does not cover one mesh cycle: positions taken modulo one base pitch, at least 3
-// distinct, and no gap between neighbours around the cycle wider than twice the mean spacing
-// (a sweep over part of a base pitch leaves the wrap-around gap open).
+// that does not cover one mesh cycle: positions taken modulo one base pitch (a revolution
+// table: modulo its period), at least 3 distinct, and no gap between neighbours around the
+// cycle wider than twice the mean spacing (a sweep over part of a base pitch leaves the
+// wrap-around gap open); a revolution table also for a period that is not the same on every
+// row or is neither gear's tooth count, and for a row flagged lost_contact with a stiffness.
 StiffnessFile read_stiffness_file(const std::string& path, const std::string& parameter);
 
 // Whether the file's pair is the mesh of gears a and b (signed teeth, transverse module

@@ -163,6 +163,14 @@ void TorsionalModel::validate_mesh(const GearTrain& train, unsigned int m) const
   // A default-constructed MeshStiffness is a zero constant: the caller forgot the source.
   require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., label + "/stiffness",
           "no positive mesh stiffness given");
+  // A table with positions where no pair touches (a broken tooth, docs/faults.md): the linear
+  // law F = k·δ + c·δ̇ would keep the damping force there and cannot separate; only the
+  // nonlinear law (F = 0 while k = 0) represents it.
+  require(mesh.nonlinear || !mesh.stiffness.loses_contact(), label + "/stiffness",
+          "the table has positions without contact (k = 0 from " +
+              std::to_string(mesh.stiffness.first_lost_contact()) +
+              " base pitches): the linear mesh law cannot separate the teeth there; use "
+              "Simulation/mesh model = nonlinear");
   if (mesh.nonlinear)
   {
     check_nonlinear_mesh(*mesh.nonlinear, label);
@@ -268,12 +276,15 @@ inline double nonlinear_force(double stiffness, double damping, double backlash,
                               double error_rate, double back_stiffness, double delta, double rate,
                               bool& in_drive_contact)
 {
+  // k = 0: no pair touches at this position (a broken tooth's table, docs/faults.md), so the
+  // flanks are apart whatever z: no force, no damping.
   const double z = delta - error;
-  in_drive_contact = z > 0.;
+  in_drive_contact = z > 0. && stiffness > 0.;
   if (z > 0.)
-    return stiffness * z + damping * (rate - error_rate);
+    return stiffness > 0. ? stiffness * z + damping * (rate - error_rate) : 0.;
   if (z < -backlash)
-    return back_stiffness * (z + backlash) + damping * (rate - error_rate);
+    return back_stiffness > 0. ? back_stiffness * (z + backlash) + damping * (rate - error_rate)
+                               : 0.;
   return 0.;
 }
 } // namespace
@@ -368,6 +379,8 @@ MeshResponse TorsionalModel::mesh_response(unsigned int m, double time, const do
                                    response.deflection, response.deflection_rate, drive);
   response.transmission_error = error;
   response.regime = contact_regime(response.deflection - error, mesh.backlash);
+  if (response.regime == ContactRegime::drive && !(state.stiffness > 0.))
+    response.regime = ContactRegime::separated; // no pair touches here (k = 0)
   return response;
 }
 

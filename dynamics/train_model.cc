@@ -427,6 +427,17 @@ void add_meshes(TrainBuild& build)
       if (copies % member_copies(spec, i) != 0)
         throw InputError("Train/planets", "mesh " + tm.gear_a + "-" + tm.gear_b + "/" + tm.frame +
                                               ": copies of its members do not divide");
+    // A whole-revolution table (docs/faults.md) follows one faulty tooth through one pair; the
+    // copies of a planetary mesh meet that tooth at different times, which one table with one
+    // phase per copy does not say.
+    if (copies > 1 && input.meshes[m].stiffness.period() > 1)
+      throw InputError(input.mesh_section + " " + std::to_string(m + 1) + "/stiffness file",
+                       "a whole-revolution table (period " +
+                           std::to_string(input.meshes[m].stiffness.period()) +
+                           " base pitches) on mesh " + tm.gear_a + "-" + tm.gear_b +
+                           ", which has " + std::to_string(copies) +
+                           " copies (planets): the copies' phases over a revolution are not "
+                           "modelled; use it on a mesh of one pair");
     const double ra = signed_base_radius(gear_a, input.pressure_angle);
     const double rb = signed_base_radius(gear_b, input.pressure_angle);
     const StandardMesh geometry =
