@@ -36,7 +36,12 @@ const char* const fault_entries[][3] = {
      "where the crack starts on the loaded flank's fillet: 'critical section' (the 30° tangent "
      "point of ISO 6336-3) or the diameter of a fillet point [mm]"},
     {"crack width fraction", "1",
-     "share of the face the crack runs through; 1 = through the face (only that is modelled)"}};
+     "share of the face width the crack runs through, from the end face z = 0; 1 = through the "
+     "face (below 1: 3D only)"},
+    {"crack front", "straight",
+     "shape of a partial crack's front across the face: 'straight' (the depth constant over the "
+     "crack width fraction) or 'parabolic' (deepest at z = 0, reaching the surface at the end "
+     "of the crack width fraction; 3D only)"}};
 
 std::string path_of(bool wheel, const std::string& name)
 {
@@ -107,11 +112,21 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
       throw InputError(path_of(wheel, "crack start"),
                        "must be 'critical section' or a positive diameter [mm]");
   }
-  if (value_of(text, "crack width fraction", wheel) != 1.)
+  crack.width_fraction = value_of(text, "crack width fraction", wheel);
+  if (!(crack.width_fraction > 0. && crack.width_fraction <= 1.))
     throw InputError(path_of(wheel, "crack width fraction"),
-                     dimension == 2 ? "a 2D model has no face width: only 1 (through the face)"
-                                    : "a partial crack front is not modelled yet: only 1 "
-                                      "(through the face)");
+                     "must lie in (0, 1]: the share of the face the crack runs through");
+  if (crack.width_fraction != 1. && dimension == 2)
+    throw InputError(path_of(wheel, "crack width fraction"),
+                     "a 2D model has no face width: only 1 (through the face)");
+  const std::string& front = text.at("crack front");
+  if (front != "straight" && front != "parabolic")
+    throw InputError(path_of(wheel, "crack front"),
+                     "'" + shortened(front) + "' is not one of straight, parabolic");
+  crack.parabolic_front = front == "parabolic";
+  if (crack.parabolic_front && dimension == 2)
+    throw InputError(path_of(wheel, "crack front"),
+                     "a 2D model has no face width: only straight (through the face)");
   return crack;
 }
 } // namespace

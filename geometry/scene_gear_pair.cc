@@ -139,13 +139,79 @@ std::optional<double> flank_intersection(const ToothProfile& tooth, const Eigen:
   return best;
 }
 
+// The pieces of one outline run `points` (placed by `placed`), a new piece wherever the segment
+// or side of the outline changes (edge_between) or at a fault's kink (ProfilePoint::corner), so
+// kinks (flank to tip, relief start) stay kinks and each piece carries one boundary id.
+std::vector<BoundaryPiece>
+outline_pieces(const std::vector<ProfilePoint>& points,
+               const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& placed,
+               const std::function<int(const ProfileEdge&)>& id_of)
+{
+  std::vector<BoundaryPiece> pieces;
+  std::optional<ProfileEdge> previous;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+  {
+    const ProfileEdge edge = edge_between(points[i], points[i + 1]);
+    if (!previous || edge.segment != previous->segment || edge.side != previous->side ||
+        points[i].corner)
+    {
+      pieces.emplace_back();
+      pieces.back().kind = CurveKind::spline;
+      pieces.back().boundary_id = id_of(edge);
+      pieces.back().points.push_back(placed(points[i].position));
+    }
+    pieces.back().points.push_back(placed(points[i + 1].position));
+    previous = edge;
+  }
+  return pieces;
+}
+
+// The piece of `pieces` (from `begin`) that starts (`at_start`) or ends at `point`.
+std::optional<std::size_t> piece_at(const std::vector<BoundaryPiece>& pieces, std::size_t begin,
+                                    const Eigen::Vector2d& point, bool at_start)
+{
+  for (std::size_t k = begin; k < pieces.size(); ++k)
+    if (((at_start ? pieces[k].points.front() : pieces[k].points.back()) - point).norm() < 1e-9)
+      return k;
+  return std::nullopt;
+}
+
+// 3D: the fills of a faulty tooth's partial-width faults (geometry/tooth_fault.h FaultFill) as
+// PlanarFill of its body, the tooth's pieces starting at `begin` in `pieces`.
+void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& centre, double angle,
+                     double face_width, const std::function<int(const ProfileEdge&)>& id_of,
+                     const std::vector<BoundaryPiece>& pieces, std::size_t begin,
+                     std::vector<PlanarFill>& fills)
+{
+  const ToothProfile& nominal = teeth.nominal();
+  const auto placed = [&](const Eigen::Vector2d& p) { return place(p, centre, angle); };
+  for (const FaultFill& fault :
+       fault_fills(nominal, teeth.modifications_of(k), loaded_side(nominal), face_width))
+  {
+    const auto first = piece_at(pieces, begin, placed(fault.from), true);
+    const auto last = piece_at(pieces, begin, placed(fault.to), false);
+    if (!first || !last || *first > *last)
+      throw SolverFailure("gear scene fault", "a partial fault's corners are not on the outline");
+    PlanarFill fill;
+    fill.first_piece = *first;
+    fill.last_piece = *last;
+    // From `to` back to `from`.
+    std::vector<ProfilePoint> closing(fault.closing.rbegin(), fault.closing.rend());
+    fill.closing = outline_pieces(closing, placed, id_of);
+    const Eigen::Rotation2Dd back(-angle);
+    const auto removed = fault.removed;
+    fill.removed = [removed, back, centre](const Eigen::Vector3d& x)
+    { return removed(back * (x.head<2>() - centre), x.z()); };
+    fills.push_back(fill);
+  }
+}
+
 // The outline pieces of teeth `first`..`last` (indices CCW from tooth 0), placed; the flanks of
-// tooth k carry flank_id(k). A new piece
-// starts wherever the segment or side of the outline changes (edge_between), so kinks (flank
-// to tip, relief start) stay kinks and each piece carries one boundary id.
+// tooth k carry flank_id(k). 3D (face_width > 0): the fills of partial-width faults.
 std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen::Vector2d& centre,
                                         double rotation, int first, int last,
-                                        const std::function<int(int)>& flank_id, bool both_flanks)
+                                        const std::function<int(int)>& flank_id, bool both_flanks,
+                                        double face_width, std::vector<PlanarFill>& fills)
 {
   std::vector<BoundaryPiece> pieces;
   for (int k = first; k <= last; ++k)
@@ -159,22 +225,13 @@ std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen:
                  : 0;
     };
     const double angle = rotation + k * tooth.angular_pitch;
-    std::optional<ProfileEdge> previous;
-    for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
-    {
-      const ProfileEdge edge = edge_between(tooth.points[i], tooth.points[i + 1]);
-      // A fault's kink (ProfilePoint::corner) starts a new piece as well.
-      if (!previous || edge.segment != previous->segment || edge.side != previous->side ||
-          tooth.points[i].corner)
-      {
-        pieces.emplace_back();
-        pieces.back().kind = CurveKind::spline;
-        pieces.back().boundary_id = id_of(edge);
-        pieces.back().points.push_back(place(tooth.points[i].position, centre, angle));
-      }
-      pieces.back().points.push_back(place(tooth.points[i + 1].position, centre, angle));
-      previous = edge;
-    }
+    const std::size_t begin = pieces.size();
+    for (BoundaryPiece& piece : outline_pieces(
+             tooth.points, [&](const Eigen::Vector2d& p) { return place(p, centre, angle); },
+             id_of))
+      pieces.push_back(std::move(piece));
+    if (face_width > 0.)
+      add_tooth_fills(teeth, k, centre, angle, face_width, id_of, pieces, begin, fills);
   }
   // Consecutive teeth share their gap-middle point: the next tooth's first piece starts where
   // the previous tooth's last piece ends.
@@ -238,14 +295,14 @@ BoundaryLoop bore_loop(const GearBodySpec& body_spec, const Eigen::Vector2d& cen
 
 PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfiles& teeth,
                      const Eigen::Vector2d& centre, double rotation, int first, int last,
-                     RimModel rim, bool both_flanks)
+                     RimModel rim, bool both_flanks, double face_width)
 {
   const ToothProfile& tooth = teeth.nominal();
   PlanarBody body;
   body.name = body_spec.name;
   body.material_id = body_spec.material_id;
-  body.outer.pieces =
-      teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id, both_flanks);
+  body.outer.pieces = teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id,
+                                   both_flanks, face_width, body.fills);
   const double root_radius = outline_root_radius(tooth);
   const double start_angle = rotation + (first - 0.5) * tooth.angular_pitch;
   const double end_angle = rotation + (last + 0.5) * tooth.angular_pitch;
@@ -944,14 +1001,16 @@ ModelWindows model_windows(const GearPairSceneSpec& spec, const PlacedGears& gea
 
 // Both bodies with one boundary id per flank, and the physical names.
 PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& gears,
-                            const GearPairScene& scene, const ModelWindows& w)
+                            const GearPairScene& scene, const ModelWindows& w, double face_width)
 {
+  // Partial-width faults are fills of the extruded mesh (3D only).
+  const double fill_width = spec.mesh.dimension == 3 ? face_width : 0.;
   PlanarModel model;
   model.bodies.push_back(
       gear_body({"pinion body", scene_ids::pinion_body, scene_ids::pinion_bore,
                  scene_ids::pinion_cuts, pinion_flank_id, scene.pinion_bore_radius},
                 gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation, w.pinion_first,
-                w.pinion_last, spec.rim, spec.both_flanks));
+                w.pinion_last, spec.rim, spec.both_flanks, fill_width));
   const ToothProfile& wheel_tooth = gears.wheel;
   model.bodies.push_back(gear_body(
       {"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
@@ -959,7 +1018,7 @@ PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& ge
        scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width,
        spec.wheel_bolt_holes, 0.5 * spec.wheel_bolt_hole_diameter, scene.wheel_bolt_circle_radius},
       gears.wheel_teeth, gears.wheel_centre, gears.wheel_rotation, w.wheel_first, w.wheel_last,
-      spec.rim, spec.both_flanks));
+      spec.rim, spec.both_flanks, fill_width));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},
                           {scene_ids::wheel_bore, "wheel bore"}};
   for (int j = w.pinion_first; j <= w.pinion_last; ++j)
@@ -1091,7 +1150,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
     add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
 
   const ModelWindows windows = model_windows(spec, gears, scene);
-  PlanarModel model = gear_pair_model(spec, gears, scene, windows);
+  PlanarModel model = gear_pair_model(spec, gears, scene, windows, pair.common_face_width);
   model.node_offset = lead_offsets(spec, pair, gears);
   mesh_gear_pair(spec, pair, gears, windows, model, contacts, file, scene);
   describe_scene(spec, pair, line, gears, scene);

@@ -351,9 +351,16 @@ std::vector<ProfilePoint> spalled_outline(const std::vector<ProfilePoint>& point
   return result;
 }
 
-// The outline with the crack's slit: mouth, one face, tip, the other face, mouth.
-std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& points,
-                                          const CrackPath& path, int loaded_side)
+// Where the slit's faces meet the outline: the segments and weights, first the one met first.
+struct SlitMouths
+{
+  std::size_t i1 = 0, i2 = 0;
+  double w1 = 0., w2 = 0.;
+  double offset1 = 0.; // m, the first mouth's offset across the path
+};
+
+SlitMouths slit_mouths(const std::vector<ProfilePoint>& points, const CrackPath& path,
+                       int loaded_side)
 {
   const Eigen::Vector2d across(-path.direction.y(), path.direction.x());
   const double half = 0.5 * crack_opening;
@@ -364,9 +371,17 @@ std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& point
   if (i_a >= points.size() || i_b >= points.size())
     throw SolverFailure("tooth fault outline", "the crack's faces miss the fillet");
   const bool a_first = i_a + w_a < i_b + w_b;
-  const std::size_t i1 = a_first ? i_a : i_b, i2 = a_first ? i_b : i_a;
-  const double w1 = a_first ? w_a : w_b, w2 = a_first ? w_b : w_a;
-  const double offset1 = a_first ? half : -half;
+  return {a_first ? i_a : i_b, a_first ? i_b : i_a, a_first ? w_a : w_b, a_first ? w_b : w_a,
+          a_first ? half : -half};
+}
+
+// The outline with the crack's slit: mouth, one face, tip, the other face, mouth.
+std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& points,
+                                          const CrackPath& path, int loaded_side)
+{
+  const Eigen::Vector2d across(-path.direction.y(), path.direction.x());
+  const double half = 0.5 * crack_opening;
+  const auto [i1, i2, w1, w2, offset1] = slit_mouths(points, path, loaded_side);
   ProfilePoint mouth1 = lerp(points[i1], points[i1 + 1], w1);
   ProfilePoint mouth2 = lerp(points[i2], points[i2 + 1], w2);
   const double face = path.depth - half;
@@ -387,6 +402,35 @@ std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& point
   }
   result.insert(result.end(), points.begin() + i2 + 1, points.end());
   return result;
+}
+
+// The fill of a partial crack: the slit's material, closed by the chord across its mouth (the
+// fillet's sagitta over the 40 µm mouth is far below a micrometre).
+FaultFill crack_fill(const ToothProfile& tooth, const ToothModification& crack, int loaded_side,
+                     double face_width)
+{
+  const CrackPath path = crack_path(crack, tooth, loaded_side);
+  const auto [i1, i2, w1, w2, offset1] = slit_mouths(tooth.points, path, loaded_side);
+  FaultFill fill;
+  fill.closing = {lerp(tooth.points[i1], tooth.points[i1 + 1], w1),
+                  lerp(tooth.points[i2], tooth.points[i2 + 1], w2)};
+  for (ProfilePoint& p : fill.closing)
+  {
+    p.segment = ProfileSegment::fillet;
+    p.side = loaded_side;
+  }
+  fill.from = fill.closing.front().position;
+  fill.to = fill.closing.back().position;
+  const double extent = crack.width_fraction * face_width;
+  const bool parabolic = crack.parabolic_front;
+  fill.removed = [path, extent, parabolic](const Eigen::Vector2d& p, double z)
+  {
+    if (z >= extent)
+      return false;
+    const double depth = parabolic ? path.depth * std::sqrt(1. - z / extent) : path.depth;
+    return (p - path.start).dot(path.direction) < depth;
+  };
+  return fill;
 }
 } // namespace
 
@@ -554,6 +598,26 @@ double fault_flank_depth(const std::vector<ToothModification>& modifications,
         depth += m.amount;
     }
   return depth;
+}
+
+bool is_partial_width(const ToothModification& fault)
+{
+  return fault.kind == ModificationKind::root_crack &&
+         (fault.width_fraction < 1. || fault.parabolic_front);
+}
+
+std::vector<FaultFill> fault_fills(const ToothProfile& tooth,
+                                   const std::vector<ToothModification>& modifications,
+                                   int loaded_side, double face_width)
+{
+  std::vector<FaultFill> fills;
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::broken_tooth)
+      return fills;
+  for (const ToothModification& m : modifications)
+    if (is_partial_width(m))
+      fills.push_back(crack_fill(tooth, m, loaded_side, face_width));
+  return fills;
 }
 
 std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,

@@ -32,6 +32,7 @@
 #include "geometry/tooth_modification.h"
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,28 @@ double fault_flank_depth(const std::vector<ToothModification>& modifications,
 // (crack_face_size) and at its tip (crack_tip_size within crack_tip_radius).
 std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,
                                   const ToothProfile& nominal, int loaded_side);
+
+// 3D, a fault over part of the face width (a root crack with a crack width fraction below 1 or a
+// parabolic front): the faulty outline is meshed with the material between its corners `from`
+// and `to` (the slit) and the healthy outline `closing` (from `from` to `to`), and the cells of
+// that material inside the fault are left out (geometry/mesh_planar.h, PlanarFill): `removed`
+// takes a point in the tooth frame (m) and its distance z from the end face z = 0 (m).
+//  - crack of depth a, width fraction f, face width b: over 0 <= z < f·b the slit reaches the
+//    depth a (straight front) or a·√(1 − z/(f·b)) (parabolic front: the front is the parabola
+//    z = f·b·(1 − (s/a)²) in the plane of the crack, s the depth along the path, deepest at the
+//    end face z = 0 and reaching the surface at z = f·b); beyond f·b the tooth is whole.
+struct FaultFill
+{
+  Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero(); // m
+  std::vector<ProfilePoint> closing;
+  std::function<bool(const Eigen::Vector2d&, double)> removed;
+};
+// Whether a fault is modelled over part of the face only (3D: a fill, else the outline extruded).
+bool is_partial_width(const ToothModification& fault);
+// The fills of the partial-width faults of `modifications` on `tooth` (as apply_faults).
+std::vector<FaultFill> fault_fills(const ToothProfile& tooth,
+                                   const std::vector<ToothModification>& modifications,
+                                   int loaded_side, double face_width);
 
 // A root crack's path (tooth frame).
 struct CrackPath
