@@ -179,24 +179,34 @@ std::optional<std::size_t> piece_at(const std::vector<BoundaryPiece>& pieces, st
 // 3D: the fills of a faulty tooth's partial-width faults (geometry/tooth_fault.h FaultFill) as
 // PlanarFill of its body, the tooth's pieces starting at `begin` in `pieces`.
 void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& centre, double angle,
-                     double face_width, const std::function<int(const ProfileEdge&)>& id_of,
+                     double face_width, const std::string& parameter,
+                     const std::function<int(const ProfileEdge&)>& id_of,
                      const std::vector<BoundaryPiece>& pieces, std::size_t begin,
                      std::vector<PlanarFill>& fills)
 {
   const ToothProfile& nominal = teeth.nominal();
   const auto placed = [&](const Eigen::Vector2d& p) { return place(p, centre, angle); };
   for (const FaultFill& fault :
-       fault_fills(nominal, teeth.modifications_of(k), loaded_side(nominal), face_width))
+       fault_fills(nominal, teeth.modifications_of(k), loaded_side(nominal), face_width, parameter))
   {
-    const auto first = piece_at(pieces, begin, placed(fault.from), true);
-    const auto last = piece_at(pieces, begin, placed(fault.to), false);
+    // The fill's corners in the outline's order (a spall's walls run either way); `closing`
+    // runs from the end of the last piece back to the start of the first.
+    std::vector<ProfilePoint> closing(fault.closing.rbegin(), fault.closing.rend());
+    auto first = piece_at(pieces, begin, placed(fault.from), true);
+    auto last = piece_at(pieces, begin, placed(fault.to), false);
     if (!first || !last || *first > *last)
-      throw SolverFailure("gear scene fault", "a partial fault's corners are not on the outline");
+    {
+      first = piece_at(pieces, begin, placed(fault.to), true);
+      last = piece_at(pieces, begin, placed(fault.from), false);
+      closing.assign(fault.closing.begin(), fault.closing.end());
+    }
+    if (!first || !last || *first > *last)
+      throw SolverFailure("gear scene fault",
+                          "a partial fault's corners are not on the outline (a partial spall or "
+                          "chipped corner on a tooth with profile modifications is not modelled)");
     PlanarFill fill;
     fill.first_piece = *first;
     fill.last_piece = *last;
-    // From `to` back to `from`.
-    std::vector<ProfilePoint> closing(fault.closing.rbegin(), fault.closing.rend());
     fill.closing = outline_pieces(closing, placed, id_of);
     const Eigen::Rotation2Dd back(-angle);
     const auto removed = fault.removed;
@@ -211,7 +221,8 @@ void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& c
 std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen::Vector2d& centre,
                                         double rotation, int first, int last,
                                         const std::function<int(int)>& flank_id, bool both_flanks,
-                                        double face_width, std::vector<PlanarFill>& fills)
+                                        double face_width, const std::string& parameter,
+                                        std::vector<PlanarFill>& fills)
 {
   std::vector<BoundaryPiece> pieces;
   for (int k = first; k <= last; ++k)
@@ -231,7 +242,7 @@ std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen:
              id_of))
       pieces.push_back(std::move(piece));
     if (face_width > 0.)
-      add_tooth_fills(teeth, k, centre, angle, face_width, id_of, pieces, begin, fills);
+      add_tooth_fills(teeth, k, centre, angle, face_width, parameter, id_of, pieces, begin, fills);
   }
   // Consecutive teeth share their gap-middle point: the next tooth's first piece starts where
   // the previous tooth's last piece ends.
@@ -301,8 +312,10 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfiles& teeth,
   PlanarBody body;
   body.name = body_spec.name;
   body.material_id = body_spec.material_id;
+  const std::string parameter =
+      body_spec.material_id == scene_ids::pinion_body ? "Gear pair/Pinion" : "Gear pair/Wheel";
   body.outer.pieces = teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id,
-                                   both_flanks, face_width, body.fills);
+                                   both_flanks, face_width, parameter, body.fills);
   const double root_radius = outline_root_radius(tooth);
   const double start_angle = rotation + (first - 0.5) * tooth.angular_pitch;
   const double end_angle = rotation + (last + 0.5) * tooth.angular_pitch;
@@ -586,6 +599,9 @@ struct PlacedGears
 {
   ToothProfile pinion, wheel;              // nominal outlines (placement)
   ToothProfiles pinion_teeth, wheel_teeth; // every modelled tooth, modified or nominal
+  // The flanks the contacts touch: the teeth without their partial-width faults (3D: a partial
+  // spall or chipped corner leaves the flank whole over the rest of the face).
+  ToothProfiles pinion_contact_teeth, wheel_contact_teeth;
   Eigen::Vector2d pinion_centre, wheel_centre;
   double pinion_rotation = 0., wheel_rotation = 0.;
 };
@@ -623,11 +639,11 @@ SceneContact predicted_contact(const GearPairSceneSpec& spec,
   contact.hertz_half_width = hertz_half_width(
       normal_force / face_width, contact.first_curvature_radius, contact.second_curvature_radius,
       spec.young_modulus, spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
-  const auto on_pinion = flank_intersection(gears.pinion_teeth.tooth(j), gears.pinion_centre,
-                                            gears.pinion_rotation + j * gears.pinion.angular_pitch,
-                                            contact.point, line.u);
+  const auto on_pinion = flank_intersection(
+      gears.pinion_contact_teeth.tooth(j), gears.pinion_centre,
+      gears.pinion_rotation + j * gears.pinion.angular_pitch, contact.point, line.u);
   const auto on_wheel = flank_intersection(
-      gears.wheel_teeth.tooth(mate_tooth(gears.wheel, j)), gears.wheel_centre,
+      gears.wheel_contact_teeth.tooth(mate_tooth(gears.wheel, j)), gears.wheel_centre,
       gears.wheel_rotation + mate_tooth(gears.wheel, j) * gears.wheel.angular_pitch, contact.point,
       line.u);
   if (!on_pinion || !on_wheel)
@@ -865,6 +881,18 @@ PlacedGears generate_teeth(const GearPairSceneSpec& spec, const kinematics::Gear
   gears.wheel_teeth = ToothProfiles(gears.wheel, spec.wheel_modifications,
                                     flank_roll_range(pair, gears.wheel, true),
                                     loaded_side(gears.wheel), "Gear pair/Wheel");
+  const auto whole = [](GearModifications modifications)
+  {
+    for (auto& [index, list] : modifications.by_tooth)
+      list.erase(std::remove_if(list.begin(), list.end(), is_partial_width), list.end());
+    return modifications;
+  };
+  gears.pinion_contact_teeth = ToothProfiles(gears.pinion, whole(spec.pinion_modifications),
+                                             flank_roll_range(pair, gears.pinion, false),
+                                             loaded_side(gears.pinion), "Gear pair/Pinion");
+  gears.wheel_contact_teeth = ToothProfiles(gears.wheel, whole(spec.wheel_modifications),
+                                            flank_roll_range(pair, gears.wheel, true),
+                                            loaded_side(gears.wheel), "Gear pair/Wheel");
   return gears;
 }
 
@@ -891,6 +919,15 @@ bool has_tooth_faults(const GearModifications& modifications)
     if (has_faults(list))
       return true;
   return false;
+}
+
+bool only_root_cracks(const GearModifications& modifications)
+{
+  for (const auto& [index, list] : modifications.by_tooth)
+    for (const ToothModification& m : list)
+      if (is_fault(m.kind) && m.kind != ModificationKind::root_crack)
+        return false;
+  return true;
 }
 
 // The pairs in contact whose loaded flanks both exist at their contact point: a broken faulty
@@ -925,10 +962,14 @@ void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeome
 {
   const bool faults =
       has_tooth_faults(spec.pinion_modifications) || has_tooth_faults(spec.wheel_modifications);
-  if (faults && !spec.swept_positions.empty())
+  // A root crack leaves every flank whole: the pairs in contact carry at every position, and a
+  // cracked scene rolls like a healthy one (`sweep mesh = once`; the cracked tooth turns with its
+  // gear). The other faults change which pairs carry from one position to the next.
+  if (faults && !spec.swept_positions.empty() &&
+      !(only_root_cracks(spec.pinion_modifications) && only_root_cracks(spec.wheel_modifications)))
     throw InputError(scene_field::swept_positions,
-                     "a scene with tooth faults is meshed per position (a faulty tooth changes "
-                     "which pairs carry from one position to the next)");
+                     "a scene with a broken, chipped or spalled tooth is meshed per position (it "
+                     "changes which pairs carry from one position to the next)");
   scene.reference_position = reference_position(spec, pair);
   scene.contact_pairs = pairs_in_contact(pair, scene.reference_position);
   if (faults)
