@@ -717,6 +717,42 @@ void add_used_nodes(int dim, int tag, const std::set<std::size_t>& used,
   gmsh::model::mesh::addNodes(dim, tag, tags, coordinates);
 }
 
+// A fill volume's own surface (bounding no other volume) with the quadrilaterals it keeps.
+struct OwnSurface
+{
+  int tag;
+  std::vector<std::size_t> quad_tags, quad_nodes;
+};
+
+// The own surfaces of `volume`, without the faces of removed cells; their nodes added to `used`.
+std::vector<OwnSurface> own_surfaces(int volume, const std::set<FaceKey>& removed_faces,
+                                     std::set<std::size_t>& used)
+{
+  gmsh::vectorpair boundary;
+  gmsh::model::getBoundary({{3, volume}}, boundary, false, false, false);
+  std::vector<OwnSurface> own;
+  for (const auto& [dim, surface] : boundary)
+  {
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(2, std::abs(surface), upward, downward);
+    if (upward.size() != 1)
+      continue;
+    OwnSurface o{std::abs(surface), {}, {}};
+    std::vector<std::size_t> tags, quads;
+    gmsh::model::mesh::getElementsByType(3, tags, quads, o.tag);
+    for (std::size_t q = 0; q < tags.size(); ++q)
+      if (!removed_faces.count(
+              face_key({quads[4 * q], quads[4 * q + 1], quads[4 * q + 2], quads[4 * q + 3]})))
+      {
+        o.quad_tags.push_back(tags[q]);
+        o.quad_nodes.insert(o.quad_nodes.end(), quads.begin() + 4 * q, quads.begin() + 4 * q + 4);
+      }
+    used.insert(o.quad_nodes.begin(), o.quad_nodes.end());
+    own.push_back(o);
+  }
+  return own;
+}
+
 // 3D: the hexahedra of each fill whose centre lies in its fault left out, with the faces of its
 // own boundary surfaces (end faces, the closing pieces' lateral surfaces) on them; the rest
 // stays the body's material. Returns the number of hexahedra left out.
@@ -753,34 +789,7 @@ unsigned long remove_fill_cells(const GmshEntities& entities)
       continue;
     removed_count += hex_tags.size() - kept_tags.size();
     used.insert(kept_nodes.begin(), kept_nodes.end());
-    // The fill's own surfaces: those that bound no other volume.
-    gmsh::vectorpair boundary;
-    gmsh::model::getBoundary({{3, volume}}, boundary, false, false, false);
-    struct Own
-    {
-      int tag;
-      std::vector<std::size_t> quad_tags, quad_nodes;
-    };
-    std::vector<Own> own;
-    for (const auto& [dim, surface] : boundary)
-    {
-      std::vector<int> upward, downward;
-      gmsh::model::getAdjacencies(2, std::abs(surface), upward, downward);
-      if (upward.size() != 1)
-        continue;
-      Own o{std::abs(surface), {}, {}};
-      std::vector<std::size_t> tags, quads;
-      gmsh::model::mesh::getElementsByType(3, tags, quads, o.tag);
-      for (std::size_t q = 0; q < tags.size(); ++q)
-        if (!removed_faces.count(
-                face_key({quads[4 * q], quads[4 * q + 1], quads[4 * q + 2], quads[4 * q + 3]})))
-        {
-          o.quad_tags.push_back(tags[q]);
-          o.quad_nodes.insert(o.quad_nodes.end(), quads.begin() + 4 * q, quads.begin() + 4 * q + 4);
-        }
-      used.insert(o.quad_nodes.begin(), o.quad_nodes.end());
-      own.push_back(o);
-    }
+    const std::vector<OwnSurface> own = own_surfaces(volume, removed_faces, used);
     std::vector<std::size_t> node_tags;
     std::vector<double> coordinates, parametric;
     gmsh::model::mesh::getNodes(node_tags, coordinates, parametric, 3, volume, false, false);
@@ -790,14 +799,14 @@ unsigned long remove_fill_cells(const GmshEntities& entities)
       gmsh::model::mesh::getNodes(own_node_tags[k], own_coordinates[k], parametric, 2, own[k].tag,
                                   false, false);
     gmsh::model::mesh::clear({{3, volume}});
-    for (const Own& o : own)
+    for (const OwnSurface& o : own)
       gmsh::model::mesh::clear({{2, o.tag}});
     // Every node back before any element refers to it.
     add_used_nodes(3, volume, used, node_tags, coordinates);
     for (std::size_t k = 0; k < own.size(); ++k)
       add_used_nodes(2, own[k].tag, used, own_node_tags[k], own_coordinates[k]);
     gmsh::model::mesh::addElementsByType(volume, 5, kept_tags, kept_nodes);
-    for (const Own& o : own)
+    for (const OwnSurface& o : own)
       if (!o.quad_tags.empty())
         gmsh::model::mesh::addElementsByType(o.tag, 3, o.quad_tags, o.quad_nodes);
   }

@@ -12,12 +12,16 @@ at K = 10 and 100 E/h_c, extrapolated to K → ∞ in 1/K (bench/calculix_compar
 must show in both: the cracked k is checked against the healthy one of the same run (a deck
 without the slit would give the healthy k, 3.6 % stiffer at this depth in docs/faults.md).
 
+Measured 2026-11-26: gearstiff Q1 276.684 N/µm, ccx 276.509 / 276.773 N/µm at K = 10 / 100,
+K → ∞ 276.803 N/µm: −0.043 %; the crack's reduction against the healthy 287.482 N/µm −3.756 %
+(gearstiff) and −3.715 % (ccx). Runtime ≈ 31 s (ccx 10 + 14 s).
+
 usage: calculix_faulty.py GEARSTIFF WORKDIR
 """
 import os
 import sys
 
-from verify import Checks, require_ccx, run_json, value, work_folder
+from verify import Checks, require_ccx, work_folder
 
 require_ccx()
 import calculix_compare as bench  # noqa: E402  (bench/, on the path through verify)
@@ -26,19 +30,9 @@ gearstiff, work = os.path.realpath(sys.argv[1]), work_folder(sys.argv[2])
 env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
 healthy_settings = bench.scene_settings(bench.LADDER_SIZES, 1.0)
 settings = healthy_settings + ["Gear pair/Pinion/crack depth=1"]
-pair = run_json(gearstiff, "gear-pair")["values"]
-r_b1 = 1e-3 * bench.value(pair, "pinion_base_radius")
-radii = (0.5e-3 * bench.value(pair, "pinion_root_diameter"),
-         0.5e-3 * bench.value(pair, "pinion_form_diameter"))
-torque = 49.4  # N·m, T1 of both commands (docs/references.md §1)
 
 healthy = bench.gearstiff_position(gearstiff, "single", healthy_settings, 0., env)
-g = bench.gearstiff_position(gearstiff, "single", settings, 0., env)
-factors = (10., 100.)
-runs = [bench.calculix_position(gearstiff, "single", settings, 0., f, work, env, radii)
-        for f in factors]
-ks = [torque / (r_b1 ** 2 * run["rotation"]) / 1e6 for run in runs]
-k_inf = (factors[0] * ks[0] - factors[1] * ks[1]) / (factors[0] - factors[1])
+g, ks, k_inf, runs = bench.single_pair_against_ccx(gearstiff, settings, work, env)
 print(f"healthy gearstiff Q1 {healthy['k']:.4f} N/um; cracked gearstiff Q1 {g['k']:.4f} N/um "
       f"({g['time']:.1f} s); ccx K = 10, 100 E/h_c: {ks[0]:.4f}, {ks[1]:.4f} N/um "
       f"({runs[0]['time']:.1f} + {runs[1]['time']:.1f} s); K -> inf {k_inf:.4f} N/um")
