@@ -524,7 +524,7 @@ struct GmshEntities
 void extrude_surfaces(const PlanarModel& model, const MeshOptions& options, GmshEntities& entities)
 {
   const std::vector<std::pair<int, int>> bodies = entities.surfaces;
-  std::set<int> laterals;
+  std::set<int> seen; // a curve shared by a body and its fill sweeps one lateral surface
   for (std::size_t b = 0; b < entities.body_fills.size(); ++b)
   {
     const auto& [index, fills] = entities.body_fills[b];
@@ -556,11 +556,10 @@ void extrude_surfaces(const PlanarModel& model, const MeshOptions& options, Gmsh
       }
       const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : extruded.size();
       for (std::size_t i = starts[k] + 2; i < end; ++i)
-        if (extruded[i].first == 2)
-          laterals.insert(std::abs(extruded[i].second));
+        if (extruded[i].first == 2 && seen.insert(std::abs(extruded[i].second)).second)
+          entities.lateral_surfaces.push_back(std::abs(extruded[i].second));
     }
   }
-  entities.lateral_surfaces.assign(laterals.begin(), laterals.end());
 }
 
 // The order of the lateral surfaces follows gmsh's own walk of the curve loops, which reverses a
