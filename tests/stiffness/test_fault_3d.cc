@@ -146,7 +146,7 @@ TEST(Fault3D, PartialSpallCarriesOnTheRestOfTheFace)
 // first double zone, where that pair touches 0.25 p_bt below the tip (inside the chipped height):
 // through the face the pair drops and pair 0 carries alone (docs/faults.md's broken-tooth rule);
 // a corner over half the face (12 mm from z = 0) leaves it carrying on the other half, between.
-// Measured 2026-11-26: healthy 391.06, corner 381.17, whole face 252.53 N/µm.
+// Measured 2026-11-26: healthy 391.09, corner 381.24, whole face 252.57 N/µm.
 TEST(Fault3D, ChippedCornerBetweenHealthyAndChippedFace)
 {
   const double healthy = k_of(3, "double_healthy", {}, true);
