@@ -20,12 +20,15 @@ const char* const fault_entries[][3] = {
      "index of the faulty tooth: 0 = the tooth at the pitch point at pinion angle 0, counted "
      "counter-clockwise in the gear's own frame"},
     {"broken tooth", "false", "true: the faulty tooth is removed down to the root circle"},
-    {"tip chipping", "0", "height removed at the faulty tooth's tip, through the face [mm]"},
+    {"tip chipping", "0", "height removed at the faulty tooth's tip [mm]"},
+    {"tip chipping width", "0",
+     "extent of the chipping along the face from the end face z = 0 [mm]: a chipped corner "
+     "(3D only); 0 = through the face"},
     {"spall length", "0", "length of the spall along the loaded flank (involute arc) [mm]"},
     {"spall depth", "0", "depth of the spall normal to the flank [mm]; 0 = no spall"},
     {"spall width", "0",
-     "width of the spall across the face [mm]; 0 = through the face (only "
-     "that is modelled)"},
+     "width of the spall across the face, centred on the face's middle [mm] (3D only); 0 = "
+     "through the face"},
     {"spall position", "reference circle",
      "roll angle of the spall's centre on the loaded flank [deg], or 'reference circle'"},
     {"crack depth", "0", "depth of the root crack along its path [mm]; 0 = no crack"},
@@ -36,7 +39,12 @@ const char* const fault_entries[][3] = {
      "where the crack starts on the loaded flank's fillet: 'critical section' (the 30° tangent "
      "point of ISO 6336-3) or the diameter of a fillet point [mm]"},
     {"crack width fraction", "1",
-     "share of the face the crack runs through; 1 = through the face (only that is modelled)"}};
+     "share of the face width the crack runs through, from the end face z = 0; 1 = through the "
+     "face (below 1: 3D only)"},
+    {"crack front", "straight",
+     "shape of a partial crack's front across the face: 'straight' (the depth constant over the "
+     "crack width fraction) or 'parabolic' (deepest at z = 0, reaching the surface at the end "
+     "of the crack width fraction; 3D only)"}};
 
 std::string path_of(bool wheel, const std::string& name)
 {
@@ -76,13 +84,25 @@ bool flag_of(const ModificationText& text, const std::string& name, bool wheel)
   throw InputError(path_of(wheel, name), "'" + shortened(value) + "' is not true or false");
 }
 
-geometry::ToothModification spall_of(const ModificationText& text, bool wheel, double depth)
+// A partial width (m) in 3D only.
+double face_extent(const ModificationText& text, const std::string& name, bool wheel,
+                   unsigned int dimension)
+{
+  const double width = length_of(text, name, wheel);
+  if (width > 0. && dimension == 2)
+    throw InputError(path_of(wheel, name),
+                     "a 2D model has no face width: only 0 (through the face)");
+  return width;
+}
+
+geometry::ToothModification spall_of(const ModificationText& text, bool wheel, double depth,
+                                     unsigned int dimension)
 {
   geometry::ToothModification spall;
   spall.kind = geometry::ModificationKind::spall;
   spall.amount = depth;
   spall.length = length_of(text, "spall length", wheel);
-  spall.width = length_of(text, "spall width", wheel);
+  spall.width = face_extent(text, "spall width", wheel, dimension);
   if (text.at("spall position") != "reference circle")
   {
     spall.position = value_of(text, "spall position", wheel) * degree;
@@ -107,11 +127,21 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
       throw InputError(path_of(wheel, "crack start"),
                        "must be 'critical section' or a positive diameter [mm]");
   }
-  if (value_of(text, "crack width fraction", wheel) != 1.)
+  crack.width_fraction = value_of(text, "crack width fraction", wheel);
+  if (!(crack.width_fraction > 0. && crack.width_fraction <= 1.))
     throw InputError(path_of(wheel, "crack width fraction"),
-                     dimension == 2 ? "a 2D model has no face width: only 1 (through the face)"
-                                    : "a partial crack front is not modelled yet: only 1 "
-                                      "(through the face)");
+                     "must lie in (0, 1]: the share of the face the crack runs through");
+  if (crack.width_fraction != 1. && dimension == 2)
+    throw InputError(path_of(wheel, "crack width fraction"),
+                     "a 2D model has no face width: only 1 (through the face)");
+  const std::string& front = text.at("crack front");
+  if (front != "straight" && front != "parabolic")
+    throw InputError(path_of(wheel, "crack front"),
+                     "'" + shortened(front) + "' is not one of straight, parabolic");
+  crack.parabolic_front = front == "parabolic";
+  if (crack.parabolic_front && dimension == 2)
+    throw InputError(path_of(wheel, "crack front"),
+                     "a 2D model has no face width: only straight (through the face)");
   return crack;
 }
 } // namespace
@@ -147,10 +177,11 @@ void add_tooth_faults(const ModificationText& text, bool wheel, unsigned int dim
     geometry::ToothModification chip;
     chip.kind = ModificationKind::tip_chipping;
     chip.amount = height;
+    chip.width = face_extent(text, "tip chipping width", wheel, dimension);
     faults.push_back(chip);
   }
   if (const double depth = length_of(text, "spall depth", wheel); depth > 0.)
-    faults.push_back(spall_of(text, wheel, depth));
+    faults.push_back(spall_of(text, wheel, depth, dimension));
   if (const double depth = length_of(text, "crack depth", wheel); depth > 0.)
     faults.push_back(crack_of(text, wheel, depth, dimension));
   const int index = static_cast<int>(value_of(text, "faulty tooth", wheel, true));

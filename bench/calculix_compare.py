@@ -185,6 +185,24 @@ def calculix_position(gearstiff, position, settings, friction, factor, work, env
             "own_time": float(own[-1].split(":")[1]) if own else float("nan")}
 
 
+def single_pair_against_ccx(gearstiff, settings, work, env, factors=(10., 100.)):
+    """The split-path pair (T1 = 49.4 N·m, docs/references.md §1) at the single-pair position,
+    frictionless: gearstiff Q1 and ccx on its deck at the penalty factors `factors`, and ccx's k
+    extrapolated to K -> inf in 1/K. Returns (gearstiff run, ccx k per factor, k_inf, ccx runs)."""
+    pair = json.loads(subprocess.run([gearstiff, "gear-pair", "--json", "--quiet"], check=True,
+                                     capture_output=True, text=True).stdout)["values"]
+    r_b1 = 1e-3 * value(pair, "pinion_base_radius")
+    radii = (0.5e-3 * value(pair, "pinion_root_diameter"),
+             0.5e-3 * value(pair, "pinion_form_diameter"))
+    torque = 49.4  # N·m, T1 of both commands
+    g = gearstiff_position(gearstiff, "single", settings, 0., env)
+    runs = [calculix_position(gearstiff, "single", settings, 0., f, work, env, radii)
+            for f in factors]
+    ks = [torque / (r_b1 ** 2 * run["rotation"]) / 1e6 for run in runs]
+    k_inf = (factors[0] * ks[0] - factors[1] * ks[1]) / (factors[0] - factors[1])
+    return g, ks, k_inf, runs
+
+
 def append_csv(path, header):
     """`path` opened for appending rows; a new file starts with the `header` line."""
     new = not os.path.exists(path)

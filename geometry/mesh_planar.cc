@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -116,20 +117,59 @@ void check_loop(const BoundaryLoop& loop, const std::string& body_name)
     throw InputError(parameter, "a boundary loop encloses no area");
 }
 
-// Adds one loop to gmsh's built-in kernel; returns the loop tag and records each curve's
-// boundary id.
-int add_loop(const BoundaryLoop& loop, bool outer, std::map<int, std::vector<int>>& curves_by_id,
-             std::vector<std::pair<int, int>>& curve_ids)
+// The gmsh tags of one loop: per piece (in the order of BoundaryLoop::pieces, not of the
+// traversal) its curves and end points in the piece's own direction.
+struct LoopTags
+{
+  int loop = 0;
+  std::vector<std::vector<int>> piece_curves; // signed: negative where gmsh's curve runs against
+  std::vector<std::pair<int, int>> piece_ends;
+};
+
+void add_curve(const BoundaryPiece& piece, const std::vector<int>& point_tags,
+               std::vector<int>& new_curves)
+{
+  switch (piece.kind)
+  {
+  case CurveKind::spline:
+    new_curves.push_back(gmsh::model::geo::addSpline(point_tags));
+    break;
+  case CurveKind::straight:
+    for (std::size_t i = 1; i < point_tags.size(); ++i)
+      new_curves.push_back(gmsh::model::geo::addLine(point_tags[i - 1], point_tags[i]));
+    break;
+  case CurveKind::arc:
+  {
+    const int centre = gmsh::model::geo::addPoint(piece.arc_centre.x(), piece.arc_centre.y(), 0.);
+    new_curves.push_back(
+        gmsh::model::geo::addCircleArc(point_tags.front(), centre, point_tags.back()));
+    break;
+  }
+  }
+}
+
+int add_point(const Eigen::Vector2d& p)
+{
+  return gmsh::model::geo::addPoint(p.x(), p.y(), 0.);
+}
+
+// Adds one loop to gmsh's built-in kernel; returns its tags and records each curve's boundary id.
+LoopTags add_loop(const BoundaryLoop& loop, bool outer,
+                  std::map<int, std::vector<int>>& curves_by_id,
+                  std::vector<std::pair<int, int>>& curve_ids)
 {
   std::vector<BoundaryPiece> pieces = counter_clockwise(loop);
+  // Reversed: the traversal runs the pieces backwards (counter_clockwise or a hole).
+  const bool reversed = (loop.signed_area() < 0.) == outer;
   if (!outer)
   {
     std::reverse(pieces.begin(), pieces.end());
     for (auto& piece : pieces)
       std::reverse(piece.points.begin(), piece.points.end());
   }
-  const auto add_point = [](const Eigen::Vector2d& p)
-  { return gmsh::model::geo::addPoint(p.x(), p.y(), 0.); };
+  LoopTags tags_out;
+  tags_out.piece_curves.resize(pieces.size());
+  tags_out.piece_ends.resize(pieces.size());
   const int first_tag = add_point(pieces.front().points.front());
   int start_tag = first_tag;
   std::vector<int> loop_curves;
@@ -143,22 +183,7 @@ int add_loop(const BoundaryLoop& loop, bool outer, std::map<int, std::vector<int
     tags.push_back(last_piece ? first_tag : add_point(piece.points.back()));
 
     std::vector<int> new_curves;
-    switch (piece.kind)
-    {
-    case CurveKind::spline:
-      new_curves.push_back(gmsh::model::geo::addSpline(tags));
-      break;
-    case CurveKind::straight:
-      for (std::size_t i = 1; i < tags.size(); ++i)
-        new_curves.push_back(gmsh::model::geo::addLine(tags[i - 1], tags[i]));
-      break;
-    case CurveKind::arc:
-    {
-      const int centre = add_point(piece.arc_centre);
-      new_curves.push_back(gmsh::model::geo::addCircleArc(tags.front(), centre, tags.back()));
-      break;
-    }
-    }
+    add_curve(piece, tags, new_curves);
     for (const int c : new_curves)
     {
       loop_curves.push_back(c);
@@ -166,9 +191,67 @@ int add_loop(const BoundaryLoop& loop, bool outer, std::map<int, std::vector<int
       if (piece.boundary_id != 0)
         curves_by_id[piece.boundary_id].push_back(c);
     }
+    const std::size_t original = reversed ? pieces.size() - 1 - k : k;
+    if (reversed)
+    {
+      std::reverse(new_curves.begin(), new_curves.end());
+      for (int& c : new_curves)
+        c = -c;
+      tags_out.piece_ends[original] = {tags.back(), tags.front()};
+    }
+    else
+      tags_out.piece_ends[original] = {tags.front(), tags.back()};
+    tags_out.piece_curves[original] = new_curves;
     start_tag = tags.back();
   }
-  return gmsh::model::geo::addCurveLoop(loop_curves);
+  tags_out.loop = gmsh::model::geo::addCurveLoop(loop_curves);
+  return tags_out;
+}
+
+// The surface of a fill (PlanarFill): the body's curves of its pieces first_piece..last_piece
+// and the closing pieces back, counter-clockwise (reversed where the polygon runs clockwise).
+int add_fill_surface(const PlanarFill& fill, const BoundaryLoop& outer, const LoopTags& tags,
+                     std::map<int, std::vector<int>>& curves_by_id,
+                     std::vector<std::pair<int, int>>& curve_ids)
+{
+  if (fill.first_piece > fill.last_piece || fill.last_piece >= outer.pieces.size() ||
+      fill.closing.empty())
+    throw SolverFailure("gmsh geometry", "a fill's pieces do not lie on its body's outline");
+  std::vector<int> curves;
+  BoundaryLoop polygon;
+  for (std::size_t k = fill.first_piece; k <= fill.last_piece; ++k)
+  {
+    curves.insert(curves.end(), tags.piece_curves[k].begin(), tags.piece_curves[k].end());
+    polygon.pieces.push_back(outer.pieces[k]);
+  }
+  int start_tag = tags.piece_ends[fill.last_piece].second;
+  const int end_tag = tags.piece_ends[fill.first_piece].first;
+  for (std::size_t k = 0; k < fill.closing.size(); ++k)
+  {
+    const BoundaryPiece& piece = fill.closing[k];
+    std::vector<int> point_tags{start_tag};
+    for (std::size_t i = 1; i + 1 < piece.points.size(); ++i)
+      point_tags.push_back(add_point(piece.points[i]));
+    point_tags.push_back(k + 1 == fill.closing.size() ? end_tag : add_point(piece.points.back()));
+    std::vector<int> new_curves;
+    add_curve(piece, point_tags, new_curves);
+    for (const int c : new_curves)
+    {
+      curves.push_back(c);
+      curve_ids.emplace_back(c, piece.boundary_id);
+      if (piece.boundary_id != 0)
+        curves_by_id[piece.boundary_id].push_back(c);
+    }
+    polygon.pieces.push_back(piece);
+    start_tag = point_tags.back();
+  }
+  if (polygon.signed_area() < 0.)
+  {
+    std::reverse(curves.begin(), curves.end());
+    for (int& c : curves)
+      c = -c;
+  }
+  return gmsh::model::geo::addPlaneSurface({gmsh::model::geo::addCurveLoop(curves)});
 }
 
 std::unordered_map<std::size_t, Eigen::Vector3d> node_coordinates()
@@ -504,28 +587,54 @@ struct GmshEntities
   std::map<int, std::vector<int>> lateral_surfaces_by_id; // boundary id -> surfaces, 3D
   std::vector<int> side_faces;                            // z = 0 and z = face width, 3D
   std::vector<int> lateral_surfaces;                      // 3D
+  // Per body: its surface's index in `surfaces` and its fills' (PlanarFill) surface tags.
+  std::vector<std::pair<std::size_t, std::vector<int>>> body_fills;
+  // 3D: the fills' volumes and the test of the cells they leave out.
+  std::vector<std::pair<int, std::function<bool(const Eigen::Vector3d&)>>> fill_volumes;
 };
 
-// 3D: extrude each surface; gmsh returns, per surface, the top surface, the volume and the
-// lateral surfaces.
-void extrude_surfaces(const MeshOptions& options, GmshEntities& entities)
+// 3D: extrude each body's surface together with its fills (one call, so that their shared
+// curves sweep one lateral surface); gmsh returns, per surface, the top surface, the volume and
+// the lateral surfaces.
+void extrude_surfaces(const PlanarModel& model, const MeshOptions& options, GmshEntities& entities)
 {
-  for (const auto& [surface, material_id] : entities.surfaces)
+  const std::vector<std::pair<int, int>> bodies = entities.surfaces;
+  std::set<int> seen; // a curve shared by a body and its fill sweeps one lateral surface
+  for (std::size_t b = 0; b < entities.body_fills.size(); ++b)
   {
+    const auto& [index, fills] = entities.body_fills[b];
+    const auto [surface, material_id] = bodies[index];
+    gmsh::vectorpair input{{2, surface}};
+    for (const int fill : fills)
+      input.emplace_back(2, fill);
     gmsh::vectorpair extruded;
-    gmsh::model::geo::extrude({{2, surface}}, 0., 0., options.face_width, extruded,
+    gmsh::model::geo::extrude(input, 0., 0., options.face_width, extruded,
                               {static_cast<int>(options.layers)}, {}, true);
-    if (extruded.size() < 3 || extruded[1].first != 3)
+    std::vector<std::size_t> starts; // where each input's (top, volume, laterals) begin
+    for (std::size_t i = 0; i + 1 < extruded.size(); ++i)
+      if (extruded[i].first == 2 && extruded[i + 1].first == 3)
+        starts.push_back(i);
+    if (starts.size() != input.size())
       throw SolverFailure("gmsh extrusion",
                           "unexpected result for surface " + std::to_string(surface));
-    entities.side_faces.push_back(surface);
-    entities.side_faces.push_back(extruded[0].second);
-    entities.volumes.emplace_back(extruded[1].second, material_id);
-    for (std::size_t i = 2; i < extruded.size(); ++i)
-      entities.lateral_surfaces.push_back(extruded[i].second);
+    for (std::size_t k = 0; k < starts.size(); ++k)
+    {
+      entities.side_faces.push_back(input[k].second);
+      entities.side_faces.push_back(extruded[starts[k]].second);
+      if (k == 0)
+        entities.volumes.emplace_back(extruded[starts[k] + 1].second, material_id);
+      else
+      {
+        entities.fill_volumes.emplace_back(extruded[starts[k] + 1].second,
+                                           model.bodies[b].fills[k - 1].removed);
+        entities.volumes.emplace_back(extruded[starts[k] + 1].second, material_id);
+      }
+      const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : extruded.size();
+      for (std::size_t i = starts[k] + 2; i < end; ++i)
+        if (extruded[i].first == 2 && seen.insert(std::abs(extruded[i].second)).second)
+          entities.lateral_surfaces.push_back(std::abs(extruded[i].second));
+    }
   }
-  if (entities.lateral_surfaces.size() != entities.curve_ids.size())
-    throw SolverFailure("gmsh extrusion", "lateral surfaces do not match the curves");
 }
 
 // The order of the lateral surfaces follows gmsh's own walk of the curve loops, which reverses a
@@ -555,13 +664,23 @@ GmshEntities build_geometry(const PlanarModel& model, const MeshOptions& options
   GmshEntities entities;
   for (const auto& body : model.bodies)
   {
-    std::vector<int> loops{add_loop(body.outer, true, entities.curves_by_id, entities.curve_ids)};
+    const LoopTags outer = add_loop(body.outer, true, entities.curves_by_id, entities.curve_ids);
+    std::vector<int> loops{outer.loop};
     for (const auto& hole : body.holes)
-      loops.push_back(add_loop(hole, false, entities.curves_by_id, entities.curve_ids));
+      loops.push_back(add_loop(hole, false, entities.curves_by_id, entities.curve_ids).loop);
     entities.surfaces.emplace_back(gmsh::model::geo::addPlaneSurface(loops), body.material_id);
+    entities.body_fills.emplace_back(entities.surfaces.size() - 1, std::vector<int>{});
+    for (const PlanarFill& fill : body.fills)
+    {
+      const int surface =
+          add_fill_surface(fill, body.outer, outer, entities.curves_by_id, entities.curve_ids);
+      entities.body_fills.back().second.push_back(surface);
+      if (options.dimension == 2)
+        entities.surfaces.emplace_back(surface, body.material_id);
+    }
   }
   if (options.dimension == 3)
-    extrude_surfaces(options, entities);
+    extrude_surfaces(model, options, entities);
   gmsh::model::geo::synchronize();
   if (options.dimension == 3)
     label_lateral_surfaces(entities);
@@ -582,11 +701,10 @@ void add_physical_groups(const PlanarModel& model, const MeshOptions& options,
   {
     std::map<int, std::vector<int>> entities_by_id;
     std::map<int, std::string> names;
-    for (std::size_t b = 0; b < bodies.size(); ++b)
-    {
-      entities_by_id[bodies[b].second].push_back(bodies[b].first);
-      names.emplace(bodies[b].second, model.bodies[b].name);
-    }
+    for (const auto& [tag, material_id] : bodies)
+      entities_by_id[material_id].push_back(tag);
+    for (const PlanarBody& body : model.bodies)
+      names.emplace(body.material_id, body.name);
     for (const auto& [id, tags] : entities_by_id)
     {
       gmsh::model::addPhysicalGroup(dim, tags, id);
@@ -646,6 +764,127 @@ void move_nodes(const PlanarModel& model, const GmshEntities& entities)
         gmsh::model::mesh::setNode(tags[i], {x.x() + offset.x(), x.y() + offset.y(), x.z()}, {});
     }
   }
+}
+
+using FaceKey = std::array<std::size_t, 4>;
+
+FaceKey face_key(std::array<std::size_t, 4> nodes)
+{
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+// The nodes of entity (dim, tag) that `used` holds, added back after its mesh was cleared.
+void add_used_nodes(int dim, int tag, const std::set<std::size_t>& used,
+                    const std::vector<std::size_t>& node_tags,
+                    const std::vector<double>& node_coordinates)
+{
+  std::vector<std::size_t> tags;
+  std::vector<double> coordinates;
+  for (std::size_t i = 0; i < node_tags.size(); ++i)
+    if (used.count(node_tags[i]))
+    {
+      tags.push_back(node_tags[i]);
+      coordinates.insert(coordinates.end(), node_coordinates.begin() + 3 * i,
+                         node_coordinates.begin() + 3 * i + 3);
+    }
+  gmsh::model::mesh::addNodes(dim, tag, tags, coordinates);
+}
+
+// A fill volume's own surface (bounding no other volume) with the quadrilaterals it keeps.
+struct OwnSurface
+{
+  int tag;
+  std::vector<std::size_t> quad_tags, quad_nodes;
+};
+
+// The own surfaces of `volume`, without the faces of removed cells; their nodes added to `used`.
+std::vector<OwnSurface> own_surfaces(int volume, const std::set<FaceKey>& removed_faces,
+                                     std::set<std::size_t>& used)
+{
+  gmsh::vectorpair boundary;
+  gmsh::model::getBoundary({{3, volume}}, boundary, false, false, false);
+  std::vector<OwnSurface> own;
+  for (const auto& [dim, surface] : boundary)
+  {
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(2, std::abs(surface), upward, downward);
+    if (upward.size() != 1)
+      continue;
+    OwnSurface o{std::abs(surface), {}, {}};
+    std::vector<std::size_t> tags, quads;
+    gmsh::model::mesh::getElementsByType(3, tags, quads, o.tag);
+    for (std::size_t q = 0; q < tags.size(); ++q)
+      if (!removed_faces.count(
+              face_key({quads[4 * q], quads[4 * q + 1], quads[4 * q + 2], quads[4 * q + 3]})))
+      {
+        o.quad_tags.push_back(tags[q]);
+        o.quad_nodes.insert(o.quad_nodes.end(), quads.begin() + 4 * q, quads.begin() + 4 * q + 4);
+      }
+    used.insert(o.quad_nodes.begin(), o.quad_nodes.end());
+    own.push_back(o);
+  }
+  return own;
+}
+
+// 3D: the hexahedra of each fill whose centre lies in its fault left out, with the faces of its
+// own boundary surfaces (end faces, the closing pieces' lateral surfaces) on them; the rest
+// stays the body's material. Returns the number of hexahedra left out.
+unsigned long remove_fill_cells(const GmshEntities& entities)
+{
+  static constexpr unsigned int hex_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                   {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  const auto nodes = node_coordinates();
+  unsigned long removed_count = 0;
+  for (const auto& [volume, removed] : entities.fill_volumes)
+  {
+    std::vector<std::size_t> hex_tags, hex_nodes;
+    gmsh::model::mesh::getElementsByType(5, hex_tags, hex_nodes, volume);
+    std::vector<std::size_t> kept_tags, kept_nodes;
+    std::set<FaceKey> removed_faces;
+    std::set<std::size_t> used;
+    for (std::size_t e = 0; e < hex_tags.size(); ++e)
+    {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (unsigned int c = 0; c < 8; ++c)
+        centre += nodes.at(hex_nodes[8 * e + c]) / 8.;
+      if (removed(centre))
+        for (const auto& face : hex_faces)
+          removed_faces.insert(face_key({hex_nodes[8 * e + face[0]], hex_nodes[8 * e + face[1]],
+                                         hex_nodes[8 * e + face[2]], hex_nodes[8 * e + face[3]]}));
+      else
+      {
+        kept_tags.push_back(hex_tags[e]);
+        kept_nodes.insert(kept_nodes.end(), hex_nodes.begin() + 8 * e,
+                          hex_nodes.begin() + 8 * e + 8);
+      }
+    }
+    if (kept_tags.size() == hex_tags.size())
+      continue;
+    removed_count += hex_tags.size() - kept_tags.size();
+    used.insert(kept_nodes.begin(), kept_nodes.end());
+    const std::vector<OwnSurface> own = own_surfaces(volume, removed_faces, used);
+    std::vector<std::size_t> node_tags;
+    std::vector<double> coordinates, parametric;
+    gmsh::model::mesh::getNodes(node_tags, coordinates, parametric, 3, volume, false, false);
+    std::vector<std::vector<std::size_t>> own_node_tags(own.size());
+    std::vector<std::vector<double>> own_coordinates(own.size());
+    for (std::size_t k = 0; k < own.size(); ++k)
+      gmsh::model::mesh::getNodes(own_node_tags[k], own_coordinates[k], parametric, 2, own[k].tag,
+                                  false, false);
+    gmsh::model::mesh::clear({{3, volume}});
+    for (const OwnSurface& o : own)
+      gmsh::model::mesh::clear({{2, o.tag}});
+    // Every node back before any element refers to it.
+    add_used_nodes(3, volume, used, node_tags, coordinates);
+    for (std::size_t k = 0; k < own.size(); ++k)
+      add_used_nodes(2, own[k].tag, used, own_node_tags[k], own_coordinates[k]);
+    gmsh::model::mesh::addElementsByType(volume, 5, kept_tags, kept_nodes);
+    for (const OwnSurface& o : own)
+      if (!o.quad_tags.empty())
+        gmsh::model::mesh::addElementsByType(o.tag, 3, o.quad_tags, o.quad_nodes);
+  }
+  return removed_count;
 }
 
 // Generates the mesh, checks it and regenerates it finer until the cells at the contact points
@@ -729,12 +968,25 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   GmshSession session;
 
   auto start = Clock::now();
-  GmshEntities entities = build_geometry(model, options);
-  add_physical_groups(model, options, entities);
-  statistics.time_geometry = seconds_since(start);
+  GmshEntities entities;
+  try // gmsh 4.8's API reports its errors as a thrown message (std::string)
+  {
+    entities = build_geometry(model, options);
+    add_physical_groups(model, options, entities);
+    statistics.time_geometry = seconds_since(start);
 
-  set_meshing_options(grading);
-  generate_mesh(model, grading, options, entities, statistics);
+    set_meshing_options(grading);
+    generate_mesh(model, grading, options, entities, statistics);
+    if (!entities.fill_volumes.empty())
+    {
+      statistics.removed_cells = remove_fill_cells(entities);
+      statistics.n_cells -= statistics.removed_cells;
+    }
+  }
+  catch (const std::string& message)
+  {
+    throw SolverFailure("gmsh", message);
+  }
 
   start = Clock::now();
   gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);

@@ -46,12 +46,27 @@ struct BoundaryLoop
   double signed_area() const; // m², positive when counter-clockwise
 };
 
+// 3D: material of a body that a fault removes over part of the face width only (a partial root
+// crack, a spall narrower than the face, a chipped corner; geometry/tooth_fault.h). The region
+// between the pieces outer.pieces[first_piece..last_piece] of its body (in the loop's order) and
+// `closing` (from the end of the last of them back to the start of the first) is meshed as a
+// surface of the body's material that shares those curves with it, extruded with it, and its
+// hexahedra whose centre satisfies `removed` are left out of the mesh with the boundary faces on
+// them: the body has the fault there and its full outline elsewhere, in one conforming mesh.
+struct PlanarFill
+{
+  std::size_t first_piece = 0, last_piece = 0;
+  std::vector<BoundaryPiece> closing;
+  std::function<bool(const Eigen::Vector3d&)> removed; // m, scene frame
+};
+
 struct PlanarBody
 {
   std::string name;                // physical group name, e.g. "pinion body"
   int material_id = 1;             // physical tag (deal.II material id), > 0; may be shared
   BoundaryLoop outer;              // the body's outline
   std::vector<BoundaryLoop> holes; // bores, pin holes
+  std::vector<PlanarFill> fills;   // 3D partial-width faults (the outline is the faulty one)
 };
 
 struct PlanarModel
@@ -121,6 +136,7 @@ struct MeshStatistics
   double time_meshing = 0.;          // s, generating the mesh
   double time_checking = 0.;         // s, element types and quality
   double time_writing = 0.;          // s, writing the .msh file
+  unsigned long removed_cells = 0;   // -, hexahedra of fills left out (PlanarFill::removed)
 };
 
 // Scaled Jacobian of a cell given its corner coordinates in gmsh/deal.II-lexicographic order

@@ -139,13 +139,90 @@ std::optional<double> flank_intersection(const ToothProfile& tooth, const Eigen:
   return best;
 }
 
+// The pieces of one outline run `points` (placed by `placed`), a new piece wherever the segment
+// or side of the outline changes (edge_between) or at a fault's kink (ProfilePoint::corner), so
+// kinks (flank to tip, relief start) stay kinks and each piece carries one boundary id.
+std::vector<BoundaryPiece>
+outline_pieces(const std::vector<ProfilePoint>& points,
+               const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& placed,
+               const std::function<int(const ProfileEdge&)>& id_of)
+{
+  std::vector<BoundaryPiece> pieces;
+  std::optional<ProfileEdge> previous;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+  {
+    const ProfileEdge edge = edge_between(points[i], points[i + 1]);
+    if (!previous || edge.segment != previous->segment || edge.side != previous->side ||
+        points[i].corner)
+    {
+      pieces.emplace_back();
+      pieces.back().kind = CurveKind::spline;
+      pieces.back().boundary_id = id_of(edge);
+      pieces.back().points.push_back(placed(points[i].position));
+    }
+    pieces.back().points.push_back(placed(points[i + 1].position));
+    previous = edge;
+  }
+  return pieces;
+}
+
+// The piece of `pieces` (from `begin`) that starts (`at_start`) or ends at `point`.
+std::optional<std::size_t> piece_at(const std::vector<BoundaryPiece>& pieces, std::size_t begin,
+                                    const Eigen::Vector2d& point, bool at_start)
+{
+  for (std::size_t k = begin; k < pieces.size(); ++k)
+    if (((at_start ? pieces[k].points.front() : pieces[k].points.back()) - point).norm() < 1e-9)
+      return k;
+  return std::nullopt;
+}
+
+// 3D: the fills of a faulty tooth's partial-width faults (geometry/tooth_fault.h FaultFill) as
+// PlanarFill of its body, the tooth's pieces starting at `begin` in `pieces`.
+void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& centre, double angle,
+                     double face_width, const std::string& parameter,
+                     const std::function<int(const ProfileEdge&)>& id_of,
+                     const std::vector<BoundaryPiece>& pieces, std::size_t begin,
+                     std::vector<PlanarFill>& fills)
+{
+  const ToothProfile& nominal = teeth.nominal();
+  const auto placed = [&](const Eigen::Vector2d& p) { return place(p, centre, angle); };
+  for (const FaultFill& fault :
+       fault_fills(nominal, teeth.modifications_of(k), loaded_side(nominal), face_width, parameter))
+  {
+    // The fill's corners in the outline's order (a spall's walls run either way); `closing`
+    // runs from the end of the last piece back to the start of the first.
+    std::vector<ProfilePoint> closing(fault.closing.rbegin(), fault.closing.rend());
+    auto first = piece_at(pieces, begin, placed(fault.from), true);
+    auto last = piece_at(pieces, begin, placed(fault.to), false);
+    if (!first || !last || *first > *last)
+    {
+      first = piece_at(pieces, begin, placed(fault.to), true);
+      last = piece_at(pieces, begin, placed(fault.from), false);
+      closing.assign(fault.closing.begin(), fault.closing.end());
+    }
+    if (!first || !last || *first > *last)
+      throw SolverFailure("gear scene fault",
+                          "a partial fault's corners are not on the outline (a partial spall or "
+                          "chipped corner on a tooth with profile modifications is not modelled)");
+    PlanarFill fill;
+    fill.first_piece = *first;
+    fill.last_piece = *last;
+    fill.closing = outline_pieces(closing, placed, id_of);
+    const Eigen::Rotation2Dd back(-angle);
+    const auto removed = fault.removed;
+    fill.removed = [removed, back, centre](const Eigen::Vector3d& x)
+    { return removed(back * (x.head<2>() - centre), x.z()); };
+    fills.push_back(fill);
+  }
+}
+
 // The outline pieces of teeth `first`..`last` (indices CCW from tooth 0), placed; the flanks of
-// tooth k carry flank_id(k). A new piece
-// starts wherever the segment or side of the outline changes (edge_between), so kinks (flank
-// to tip, relief start) stay kinks and each piece carries one boundary id.
+// tooth k carry flank_id(k). 3D (face_width > 0): the fills of partial-width faults.
 std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen::Vector2d& centre,
                                         double rotation, int first, int last,
-                                        const std::function<int(int)>& flank_id, bool both_flanks)
+                                        const std::function<int(int)>& flank_id, bool both_flanks,
+                                        double face_width, const std::string& parameter,
+                                        std::vector<PlanarFill>& fills)
 {
   std::vector<BoundaryPiece> pieces;
   for (int k = first; k <= last; ++k)
@@ -159,22 +236,13 @@ std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen:
                  : 0;
     };
     const double angle = rotation + k * tooth.angular_pitch;
-    std::optional<ProfileEdge> previous;
-    for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
-    {
-      const ProfileEdge edge = edge_between(tooth.points[i], tooth.points[i + 1]);
-      // A fault's kink (ProfilePoint::corner) starts a new piece as well.
-      if (!previous || edge.segment != previous->segment || edge.side != previous->side ||
-          tooth.points[i].corner)
-      {
-        pieces.emplace_back();
-        pieces.back().kind = CurveKind::spline;
-        pieces.back().boundary_id = id_of(edge);
-        pieces.back().points.push_back(place(tooth.points[i].position, centre, angle));
-      }
-      pieces.back().points.push_back(place(tooth.points[i + 1].position, centre, angle));
-      previous = edge;
-    }
+    const std::size_t begin = pieces.size();
+    for (BoundaryPiece& piece : outline_pieces(
+             tooth.points, [&](const Eigen::Vector2d& p) { return place(p, centre, angle); },
+             id_of))
+      pieces.push_back(std::move(piece));
+    if (face_width > 0.)
+      add_tooth_fills(teeth, k, centre, angle, face_width, parameter, id_of, pieces, begin, fills);
   }
   // Consecutive teeth share their gap-middle point: the next tooth's first piece starts where
   // the previous tooth's last piece ends.
@@ -238,14 +306,16 @@ BoundaryLoop bore_loop(const GearBodySpec& body_spec, const Eigen::Vector2d& cen
 
 PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfiles& teeth,
                      const Eigen::Vector2d& centre, double rotation, int first, int last,
-                     RimModel rim, bool both_flanks)
+                     RimModel rim, bool both_flanks, double face_width)
 {
   const ToothProfile& tooth = teeth.nominal();
   PlanarBody body;
   body.name = body_spec.name;
   body.material_id = body_spec.material_id;
-  body.outer.pieces =
-      teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id, both_flanks);
+  const std::string parameter =
+      body_spec.material_id == scene_ids::pinion_body ? "Gear pair/Pinion" : "Gear pair/Wheel";
+  body.outer.pieces = teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id,
+                                   both_flanks, face_width, parameter, body.fills);
   const double root_radius = outline_root_radius(tooth);
   const double start_angle = rotation + (first - 0.5) * tooth.angular_pitch;
   const double end_angle = rotation + (last + 0.5) * tooth.angular_pitch;
@@ -529,6 +599,9 @@ struct PlacedGears
 {
   ToothProfile pinion, wheel;              // nominal outlines (placement)
   ToothProfiles pinion_teeth, wheel_teeth; // every modelled tooth, modified or nominal
+  // The flanks the contacts touch: the teeth without their partial-width faults (3D: a partial
+  // spall or chipped corner leaves the flank whole over the rest of the face).
+  ToothProfiles pinion_contact_teeth, wheel_contact_teeth;
   Eigen::Vector2d pinion_centre, wheel_centre;
   double pinion_rotation = 0., wheel_rotation = 0.;
 };
@@ -566,11 +639,11 @@ SceneContact predicted_contact(const GearPairSceneSpec& spec,
   contact.hertz_half_width = hertz_half_width(
       normal_force / face_width, contact.first_curvature_radius, contact.second_curvature_radius,
       spec.young_modulus, spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
-  const auto on_pinion = flank_intersection(gears.pinion_teeth.tooth(j), gears.pinion_centre,
-                                            gears.pinion_rotation + j * gears.pinion.angular_pitch,
-                                            contact.point, line.u);
+  const auto on_pinion = flank_intersection(
+      gears.pinion_contact_teeth.tooth(j), gears.pinion_centre,
+      gears.pinion_rotation + j * gears.pinion.angular_pitch, contact.point, line.u);
   const auto on_wheel = flank_intersection(
-      gears.wheel_teeth.tooth(mate_tooth(gears.wheel, j)), gears.wheel_centre,
+      gears.wheel_contact_teeth.tooth(mate_tooth(gears.wheel, j)), gears.wheel_centre,
       gears.wheel_rotation + mate_tooth(gears.wheel, j) * gears.wheel.angular_pitch, contact.point,
       line.u);
   if (!on_pinion || !on_wheel)
@@ -808,6 +881,18 @@ PlacedGears generate_teeth(const GearPairSceneSpec& spec, const kinematics::Gear
   gears.wheel_teeth = ToothProfiles(gears.wheel, spec.wheel_modifications,
                                     flank_roll_range(pair, gears.wheel, true),
                                     loaded_side(gears.wheel), "Gear pair/Wheel");
+  const auto whole = [](GearModifications modifications)
+  {
+    for (auto& [index, list] : modifications.by_tooth)
+      list.erase(std::remove_if(list.begin(), list.end(), is_partial_width), list.end());
+    return modifications;
+  };
+  gears.pinion_contact_teeth = ToothProfiles(gears.pinion, whole(spec.pinion_modifications),
+                                             flank_roll_range(pair, gears.pinion, false),
+                                             loaded_side(gears.pinion), "Gear pair/Pinion");
+  gears.wheel_contact_teeth = ToothProfiles(gears.wheel, whole(spec.wheel_modifications),
+                                            flank_roll_range(pair, gears.wheel, true),
+                                            loaded_side(gears.wheel), "Gear pair/Wheel");
   return gears;
 }
 
@@ -834,6 +919,15 @@ bool has_tooth_faults(const GearModifications& modifications)
     if (has_faults(list))
       return true;
   return false;
+}
+
+bool only_root_cracks(const GearModifications& modifications)
+{
+  for (const auto& [index, list] : modifications.by_tooth)
+    for (const ToothModification& m : list)
+      if (is_fault(m.kind) && m.kind != ModificationKind::root_crack)
+        return false;
+  return true;
 }
 
 // The pairs in contact whose loaded flanks both exist at their contact point: a broken faulty
@@ -868,10 +962,14 @@ void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeome
 {
   const bool faults =
       has_tooth_faults(spec.pinion_modifications) || has_tooth_faults(spec.wheel_modifications);
-  if (faults && !spec.swept_positions.empty())
+  // A root crack leaves every flank whole: the pairs in contact carry at every position, and a
+  // cracked scene rolls like a healthy one (`sweep mesh = once`; the cracked tooth turns with its
+  // gear). The other faults change which pairs carry from one position to the next.
+  if (faults && !spec.swept_positions.empty() &&
+      !(only_root_cracks(spec.pinion_modifications) && only_root_cracks(spec.wheel_modifications)))
     throw InputError(scene_field::swept_positions,
-                     "a scene with tooth faults is meshed per position (a faulty tooth changes "
-                     "which pairs carry from one position to the next)");
+                     "a scene with a broken, chipped or spalled tooth is meshed per position (it "
+                     "changes which pairs carry from one position to the next)");
   scene.reference_position = reference_position(spec, pair);
   scene.contact_pairs = pairs_in_contact(pair, scene.reference_position);
   if (faults)
@@ -944,14 +1042,16 @@ ModelWindows model_windows(const GearPairSceneSpec& spec, const PlacedGears& gea
 
 // Both bodies with one boundary id per flank, and the physical names.
 PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& gears,
-                            const GearPairScene& scene, const ModelWindows& w)
+                            const GearPairScene& scene, const ModelWindows& w, double face_width)
 {
+  // Partial-width faults are fills of the extruded mesh (3D only).
+  const double fill_width = spec.mesh.dimension == 3 ? face_width : 0.;
   PlanarModel model;
   model.bodies.push_back(
       gear_body({"pinion body", scene_ids::pinion_body, scene_ids::pinion_bore,
                  scene_ids::pinion_cuts, pinion_flank_id, scene.pinion_bore_radius},
                 gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation, w.pinion_first,
-                w.pinion_last, spec.rim, spec.both_flanks));
+                w.pinion_last, spec.rim, spec.both_flanks, fill_width));
   const ToothProfile& wheel_tooth = gears.wheel;
   model.bodies.push_back(gear_body(
       {"wheel body", scene_ids::wheel_body, scene_ids::wheel_bore, scene_ids::wheel_cuts,
@@ -959,7 +1059,7 @@ PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& ge
        scene.wheel_bore_radius, spec.wheel_supports, spec.wheel_support_width,
        spec.wheel_bolt_holes, 0.5 * spec.wheel_bolt_hole_diameter, scene.wheel_bolt_circle_radius},
       gears.wheel_teeth, gears.wheel_centre, gears.wheel_rotation, w.wheel_first, w.wheel_last,
-      spec.rim, spec.both_flanks));
+      spec.rim, spec.both_flanks, fill_width));
   model.boundary_names = {{scene_ids::pinion_bore, "pinion bore"},
                           {scene_ids::wheel_bore, "wheel bore"}};
   for (int j = w.pinion_first; j <= w.pinion_last; ++j)
@@ -1091,7 +1191,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
     add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
 
   const ModelWindows windows = model_windows(spec, gears, scene);
-  PlanarModel model = gear_pair_model(spec, gears, scene, windows);
+  PlanarModel model = gear_pair_model(spec, gears, scene, windows, pair.common_face_width);
   model.node_offset = lead_offsets(spec, pair, gears);
   mesh_gear_pair(spec, pair, gears, windows, model, contacts, file, scene);
   describe_scene(spec, pair, line, gears, scene);

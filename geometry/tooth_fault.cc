@@ -156,10 +156,6 @@ void check_chipping(const ToothModification& m, const ToothProfile& nominal,
 void check_spall(const ToothModification& m, const ToothProfile& nominal,
                  const FlankRollRange& range, int loaded_side, const std::string& parameter)
 {
-  if (m.width > 0.)
-    throw InputError(entry(parameter, "spall width"),
-                     "a spall narrower than the face is not modelled (the 2D outline is extruded "
-                     "through the face in 3D): 0 = through the face");
   if (!(m.length > 0.) || !std::isfinite(m.length))
     throw InputError(entry(parameter, "spall length"), "must be positive [mm]");
   const auto [low, high] = spall_rolls(m, nominal);
@@ -351,9 +347,16 @@ std::vector<ProfilePoint> spalled_outline(const std::vector<ProfilePoint>& point
   return result;
 }
 
-// The outline with the crack's slit: mouth, one face, tip, the other face, mouth.
-std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& points,
-                                          const CrackPath& path, int loaded_side)
+// Where the slit's faces meet the outline: the segments and weights, first the one met first.
+struct SlitMouths
+{
+  std::size_t i1 = 0, i2 = 0;
+  double w1 = 0., w2 = 0.;
+  double offset1 = 0.; // m, the first mouth's offset across the path
+};
+
+SlitMouths slit_mouths(const std::vector<ProfilePoint>& points, const CrackPath& path,
+                       int loaded_side)
 {
   const Eigen::Vector2d across(-path.direction.y(), path.direction.x());
   const double half = 0.5 * crack_opening;
@@ -364,9 +367,17 @@ std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& point
   if (i_a >= points.size() || i_b >= points.size())
     throw SolverFailure("tooth fault outline", "the crack's faces miss the fillet");
   const bool a_first = i_a + w_a < i_b + w_b;
-  const std::size_t i1 = a_first ? i_a : i_b, i2 = a_first ? i_b : i_a;
-  const double w1 = a_first ? w_a : w_b, w2 = a_first ? w_b : w_a;
-  const double offset1 = a_first ? half : -half;
+  return {a_first ? i_a : i_b, a_first ? i_b : i_a, a_first ? w_a : w_b, a_first ? w_b : w_a,
+          a_first ? half : -half};
+}
+
+// The outline with the crack's slit: mouth, one face, tip, the other face, mouth.
+std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& points,
+                                          const CrackPath& path, int loaded_side)
+{
+  const Eigen::Vector2d across(-path.direction.y(), path.direction.x());
+  const double half = 0.5 * crack_opening;
+  const auto [i1, i2, w1, w2, offset1] = slit_mouths(points, path, loaded_side);
   ProfilePoint mouth1 = lerp(points[i1], points[i1 + 1], w1);
   ProfilePoint mouth2 = lerp(points[i2], points[i2 + 1], w2);
   const double face = path.depth - half;
@@ -387,6 +398,99 @@ std::vector<ProfilePoint> cracked_outline(const std::vector<ProfilePoint>& point
   }
   result.insert(result.end(), points.begin() + i2 + 1, points.end());
   return result;
+}
+
+// The fill of a partial crack: the slit's material, closed by the chord across its mouth (the
+// fillet's sagitta over the 40 µm mouth is far below a micrometre).
+FaultFill crack_fill(const ToothProfile& tooth, const ToothModification& crack, int loaded_side,
+                     double face_width)
+{
+  const CrackPath path = crack_path(crack, tooth, loaded_side);
+  const auto [i1, i2, w1, w2, offset1] = slit_mouths(tooth.points, path, loaded_side);
+  FaultFill fill;
+  fill.closing = {lerp(tooth.points[i1], tooth.points[i1 + 1], w1),
+                  lerp(tooth.points[i2], tooth.points[i2 + 1], w2)};
+  for (ProfilePoint& p : fill.closing)
+  {
+    p.segment = ProfileSegment::fillet;
+    p.side = loaded_side;
+  }
+  fill.from = fill.closing.front().position;
+  fill.to = fill.closing.back().position;
+  const double extent = crack.width_fraction * face_width;
+  const bool parabolic = crack.parabolic_front;
+  fill.removed = [path, extent, parabolic](const Eigen::Vector2d& p, double z)
+  {
+    if (z >= extent)
+      return false;
+    const double depth = parabolic ? path.depth * std::sqrt(1. - z / extent) : path.depth;
+    return (p - path.start).dot(path.direction) < depth;
+  };
+  return fill;
+}
+// The fill of a spall narrower than the face (centred on the face's middle): the pit's
+// material, closed by the flank between the pit's walls.
+FaultFill spall_fill(const ToothProfile& tooth, const ToothModification& spall, int loaded_side,
+                     double face_width)
+{
+  const auto [low, high] = spall_rolls(spall, tooth);
+  const auto from = flank_point(tooth, loaded_side, low);
+  const auto to = flank_point(tooth, loaded_side, high);
+  if (!from || !to)
+    throw SolverFailure("tooth fault outline", "the spall's ends are not on the flank");
+  FaultFill fill;
+  fill.closing.push_back(*from);
+  std::vector<ProfilePoint> between;
+  for (const ProfilePoint& p : tooth.points)
+  {
+    const double roll = roll_of(p.position, tooth.base_radius);
+    if (p.side == loaded_side && is_involute(p.segment) && roll > low && roll < high)
+      between.push_back(p);
+  }
+  const double base_radius = tooth.base_radius;
+  std::sort(between.begin(), between.end(),
+            [base_radius](const ProfilePoint& a, const ProfilePoint& b)
+            { return roll_of(a.position, base_radius) < roll_of(b.position, base_radius); });
+  fill.closing.insert(fill.closing.end(), between.begin(), between.end());
+  fill.closing.push_back(*to);
+  for (ProfilePoint& p : fill.closing)
+    p.corner = false;
+  fill.from = from->position;
+  fill.to = to->position;
+  const double middle = 0.5 * face_width, half = 0.5 * spall.width;
+  fill.removed = [middle, half](const Eigen::Vector2d&, double z)
+  { return std::abs(z - middle) < half; };
+  return fill;
+}
+
+// The fill of a chipped corner (from the end face z = 0 over the chipping width): the tooth
+// above the cut circle, closed by the healthy outline over the tip.
+FaultFill chip_fill(const ToothProfile& tooth, const ToothModification& chip)
+{
+  const double r_cut = tooth.tip_radius - chip.amount;
+  FaultFill fill;
+  const auto& points = tooth.points;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+  {
+    const double r = points[i].position.norm(), r_next = points[i + 1].position.norm();
+    if (r > r_cut)
+      fill.closing.push_back(points[i]);
+    if ((r - r_cut) * (r_next - r_cut) < 0.)
+    {
+      ProfilePoint c = lerp(points[i], points[i + 1], (r_cut - r) / (r_next - r));
+      c.position *= r_cut / c.position.norm();
+      fill.closing.push_back(c);
+    }
+  }
+  if (fill.closing.size() < 3)
+    throw SolverFailure("tooth fault outline", "the chipping circle does not cut both flanks");
+  for (ProfilePoint& p : fill.closing)
+    p.corner = false;
+  fill.from = fill.closing.front().position;
+  fill.to = fill.closing.back().position;
+  const double width = chip.width;
+  fill.removed = [width](const Eigen::Vector2d&, double z) { return z < width; };
+  return fill;
 }
 } // namespace
 
@@ -535,7 +639,8 @@ bool flank_carries(const std::vector<ToothModification>& modifications, const To
   {
     if (m.kind == ModificationKind::broken_tooth)
       return false;
-    if (m.kind == ModificationKind::tip_chipping &&
+    // A chipped corner (3D) leaves the rest of the face's width to carry.
+    if (m.kind == ModificationKind::tip_chipping && !is_partial_width(m) &&
         roll > roll_of(Eigen::Vector2d(nominal.tip_radius - m.amount, 0.), nominal.base_radius))
       return false;
   }
@@ -547,13 +652,55 @@ double fault_flank_depth(const std::vector<ToothModification>& modifications,
 {
   double depth = 0.;
   for (const ToothModification& m : modifications)
-    if (m.kind == ModificationKind::spall)
-    {
+    if (m.kind == ModificationKind::spall && !is_partial_width(m)) // (3D: the rest of the face
+    {                                                              // width touches there)
       const auto [low, high] = spall_rolls(m, nominal);
       if (roll > low && roll < high)
         depth += m.amount;
     }
   return depth;
+}
+
+bool is_partial_width(const ToothModification& fault)
+{
+  switch (fault.kind)
+  {
+  case ModificationKind::root_crack:
+    return fault.width_fraction < 1. || fault.parabolic_front;
+  case ModificationKind::spall:
+  case ModificationKind::tip_chipping:
+    return fault.width > 0.;
+  default:
+    break;
+  }
+  return false;
+}
+
+std::vector<FaultFill> fault_fills(const ToothProfile& tooth,
+                                   const std::vector<ToothModification>& modifications,
+                                   int loaded_side, double face_width, const std::string& parameter)
+{
+  std::vector<FaultFill> fills;
+  for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::broken_tooth)
+      return fills;
+  for (const ToothModification& m : modifications)
+  {
+    if (!is_partial_width(m))
+      continue;
+    if (m.kind != ModificationKind::root_crack && !(m.width < face_width))
+      throw InputError(entry(parameter, m.kind == ModificationKind::spall ? "spall width"
+                                                                          : "tip chipping width"),
+                       format_mm(m.width) + " is not narrower than the face (" +
+                           format_mm(face_width) + "): 0 = through the face");
+    if (m.kind == ModificationKind::root_crack)
+      fills.push_back(crack_fill(tooth, m, loaded_side, face_width));
+    else if (m.kind == ModificationKind::spall)
+      fills.push_back(spall_fill(tooth, m, loaded_side, face_width));
+    else
+      fills.push_back(chip_fill(tooth, m));
+  }
+  return fills;
 }
 
 std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,

@@ -32,6 +32,7 @@
 #include "geometry/tooth_modification.h"
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,8 @@ ToothProfile apply_faults(const ToothProfile& tooth,
                           const std::vector<ToothModification>& modifications, int loaded_side);
 
 // Whether the loaded flank exists at roll length `roll` (m): not where the tooth is broken,
-// chipped away or over a spall's pit (a pair whose contact point lies there carries nothing).
+// chipped away or over a spall's pit through the face (a pair whose contact point lies there
+// carries nothing); a partial-width spall or chipped corner (3D) leaves the rest of the face.
 bool flank_carries(const std::vector<ToothModification>& modifications, const ToothProfile& nominal,
                    double roll);
 // Depth (m) a spall removes from the loaded flank at roll length `roll` (its share of the
@@ -74,6 +76,35 @@ double fault_flank_depth(const std::vector<ToothModification>& modifications,
 // (crack_face_size) and at its tip (crack_tip_size within crack_tip_radius).
 std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,
                                   const ToothProfile& nominal, int loaded_side);
+
+// 3D, a fault over part of the face width (a root crack with a crack width fraction below 1 or a
+// parabolic front): the faulty outline is meshed with the material between its corners `from`
+// and `to` (the slit) and the healthy outline `closing` (from `from` to `to`), and the cells of
+// that material inside the fault are left out (geometry/mesh_planar.h, PlanarFill): `removed`
+// takes a point in the tooth frame (m) and its distance z from the end face z = 0 (m).
+//  - crack of depth a, width fraction f, face width b: over 0 <= z < f·b the slit reaches the
+//    depth a (straight front) or a·√(1 − z/(f·b)) (parabolic front: the front is the parabola
+//    z = f·b·(1 − (s/a)²) in the plane of the crack, s the depth along the path, deepest at the
+//    end face z = 0 and reaching the surface at z = f·b); beyond f·b the tooth is whole;
+//  - spall of width w (< b): the pit over |z − b/2| < w/2 (centred on the face), the flank whole
+//    beside it (a pair over the pit carries on the rest of the face: flank_carries);
+//  - tip chipping of height h over the width w (< b) from the end face z = 0: a chipped corner
+//    (a rectangular block h × w removed), the tooth whole beyond w.
+struct FaultFill
+{
+  Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero(); // m
+  std::vector<ProfilePoint> closing;
+  std::function<bool(const Eigen::Vector2d&, double)> removed;
+};
+// Whether a fault is modelled over part of the face only (3D: a fill, else the outline extruded).
+bool is_partial_width(const ToothModification& fault);
+// The fills of the partial-width faults of `modifications` on `tooth` (as apply_faults).
+// InputError (`parameter` + "/spall width" or "/tip chipping width") for a spall or chipped corner
+// not narrower than the face.
+std::vector<FaultFill> fault_fills(const ToothProfile& tooth,
+                                   const std::vector<ToothModification>& modifications,
+                                   int loaded_side, double face_width,
+                                   const std::string& parameter);
 
 // A root crack's path (tooth frame).
 struct CrackPath

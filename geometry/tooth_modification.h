@@ -36,7 +36,7 @@ enum class ModificationKind
   profile_crowning,
   profile_slope,
   // Tooth faults (geometry/tooth_fault.h): per tooth, in GearModifications::by_tooth.
-  tip_chipping, // amount: height removed from the tip (m), through the face
+  tip_chipping, // amount: height removed from the tip (m), width: a corner (3D)
   broken_tooth, // the tooth removed down to the root circle
   spall,        // amount: depth (m), length: along the loaded flank (m), position: centre
   root_crack    // amount: depth (m), angle, position: start (m radius; 0: critical section)
@@ -67,7 +67,11 @@ struct ToothModification
   // circle); crack: radius of its start on the loaded fillet (m; 0: the 30° critical section)
   double position = 0.;
   double angle = 0.; // rad, crack: angle of the crack path to the tooth centre line
-  double width = 0.; // m, spall: extent across the face (0: through the face)
+  // m, extent across the face (0: through the face; partial only in 3D): spall: centred on the
+  // face's middle; tip chipping: a corner from the end face z = 0
+  double width = 0.;
+  double width_fraction = 1.;   // -, crack: share of the face from z = 0 (1: through; 3D)
+  bool parabolic_front = false; // crack (3D, partial): a parabolic front, else straight
 };
 
 // Where a gear's flank meets its mate, as roll lengths ρ on this gear's involute (m).
