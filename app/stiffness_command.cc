@@ -215,7 +215,8 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
   report.add_value("sweep_once_time", sweep.once_time, "s",
                    "done once (per rank, summed): meshing, set-up of K, factorization");
   report.add_value("sweep_per_position_time", sweep.per_position_time / sweep.positions.size(), "s",
-                   once ? "per position, mean: turning, pairing, contact solve, evaluation"
+                   once ? "per position, mean: turning, pairing, contact solve, evaluation "
+                          "(from the kept unit responses)"
                         : "per position, mean: everything");
 }
 

@@ -78,18 +78,18 @@ void declare_stiffness_parameters(ParameterHandler& prm)
                     "'name = value, ...' of Gear pair/Pinion and Wheel entries ('tip relief = "
                     "10' both gears, 'Pinion/tip relief = 10' one), e.g. 'tip relief = 5; tip "
                     "relief = 10'; empty = none");
-  prm.declare_entry("sweep mesh", "per position", Selection("per position|once"),
-                    "per position: every sweep position builds, meshes and factorizes its own "
-                    "scene (the reference); once: each rank meshes one scene, refined along "
-                    "every flank contact of the sweep, factorizes it once and turns the bodies "
-                    "rigidly to each position (the contact paired afresh there; needs the "
-                    "direct solver's Schur complement). once meets the accuracy of per position "
-                    "in 2D (k within 0.3 %, TE 0.05 µm, load share 0.5 %, external and internal "
-                    "pairs, also with a torque list) and is 2-3x faster, but is not yet the "
-                    "default: it has not been shown in 3D, and its refined mesh (every flank "
-                    "contact of the sweep) has 2.4x the DoFs of one position's, so a position "
-                    "costs ~0.15 s (the full back-substitution) against the 10 s / 128 positions "
-                    "aimed at (issue 28)");
+  prm.declare_entry(
+      "sweep mesh", "automatic", Selection("automatic|per position|once"),
+      "per position: every sweep position builds, meshes and factorizes its own scene (the "
+      "reference); once: each rank meshes one scene, refined along every flank contact of the "
+      "sweep, factorizes it once and turns the bodies rigidly to each position (the contact "
+      "paired afresh there, warm-started from the neighbour; what a position reports is "
+      "completed from the kept unit responses, the whole field only for VTU; needs the direct "
+      "solver's Schur complement); automatic (the default): once in 2D, per position in 3D "
+      "and for scenes with tooth faults or without the direct solver's Schur complement. "
+      "In 2D once meets the accuracy of per position (k within 0.3 %, TE 0.05 µm, load share "
+      "0.5 %: external and internal pairs, μ = 0.01, a torque list, 2 MPI ranks) at ~0.08 s a "
+      "position after ~5 s once; in 3D that accuracy has not yet been shown (issue 28)");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
@@ -222,10 +222,12 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
   if (p.mode == StiffnessMode::sweep)
   {
     // The work before the positions are allocated: a 32-position sweep of the default scene
-    // takes 18.7 s on one rank (bench/contact_speed.md), 0.58 s a position; finer meshes take
-    // longer, so this is a lower bound. Refused above limits::max_run_seconds (2·10⁹ positions
-    // were allocated before).
-    constexpr double seconds_per_position = 18.7 / 32.;
+    // takes 18.7 s on one rank per position (bench/contact_speed.md), 0.58 s a position, and
+    // a rolling one (`once`) at least 0.07 s a position (0.08–0.1 s measured 2026-11-26,
+    // 128 positions); finer meshes take longer, so this is a lower bound. Refused above
+    // limits::max_run_seconds (2·10⁹ positions were allocated before).
+    const double seconds_per_position =
+        p.sweep.mesh == stiffness::SweepMesh::once ? 0.07 : 18.7 / 32.;
     const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const double seconds = std::ceil(double(p.sweep.positions) / ranks) * seconds_per_position;
     if (seconds > limits::max_run_seconds)
@@ -262,6 +264,24 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
 }
 } // namespace
 
+namespace
+{
+// `Stiffness/sweep mesh = automatic`: once where it has shown the accuracy of per position (2D)
+// and can run — the Schur complement with the direct solver, and no tooth faults (a faulty
+// tooth changes which pairs carry from one position to the next: meshed per position).
+bool once_by_default(const StiffnessParameters& p)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  bool faults = !s.scene.pinion_modifications.by_tooth.empty() ||
+                !s.scene.wheel_modifications.by_tooth.empty();
+  for (const StiffnessVariant& variant : p.variants)
+    faults = faults || !variant.pinion.by_tooth.empty() || !variant.wheel.by_tooth.empty();
+  return s.scene.mesh.dimension == 2 && !faults &&
+         s.contact.iteration_solves != contact::IterationSolves::full_resolve &&
+         s.linear_solver.method == fem::LinearSolverMethod::direct_mumps;
+}
+} // namespace
+
 StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
 {
   StiffnessParameters p;
@@ -283,8 +303,7 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   const double start = prm.get_double("sweep start");
   p.sweep.base_pitches = prm.get_double("sweep base pitches");
   const long positions = prm.get_integer("sweep positions");
-  p.sweep.mesh = prm.get("sweep mesh") == "once" ? stiffness::SweepMesh::once
-                                                 : stiffness::SweepMesh::per_position;
+  const std::string sweep_mesh = prm.get("sweep mesh");
   p.write_vtu = prm.get_bool("write vtu");
   p.published_reference =
       prm.get_bool("published reference") && kinematics::is_split_path_pair(s.scene.pair);
@@ -293,6 +312,9 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   prm.leave_subsection();
   s.torques = parse_torque_list(torques);
   parse_modification_stage(prm, variants, p);
+  p.sweep.mesh = sweep_mesh == "once" || (sweep_mesh == "automatic" && once_by_default(p))
+                     ? stiffness::SweepMesh::once
+                     : stiffness::SweepMesh::per_position;
 
   // A count below one becomes 0, which the sweep's own check (stiffness::sweep_positions)
   // refuses in mode sweep; the other modes do not use it.

@@ -5,12 +5,13 @@
 #   - one modification variant more (Stiffness/variants) costs ≤ 1.2× a plain 32-position sweep.
 # Each case runs `rounds` times (default 3); the median process wall time is printed.
 # usage: bench/harris_map.sh [path/to/gearstiff] [rounds] [sweep mesh]
-#   (default build/app/gearstiff, 3, "per position"; "once": each rank meshes and factorizes one
-#   scene for all its positions and torques, issue 28)
+#   (default build/app/gearstiff, 3, "automatic" = the CLI default, once in 2D: each rank meshes
+#   and factorizes one scene for all its positions and torques, issue 28; "per position": a scene
+#   and factorization per position)
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
 rounds=${2:-3}
-mesh=${3:-per position}
+mesh=${3:-automatic}
 mpi=(mpirun --allow-run-as-root --oversubscribe --bind-to none -np 2)
 export OMP_NUM_THREADS=1
 seconds() { local start=$(date +%s.%N); "$@" >/dev/null; echo "$(date +%s.%N) - $start" | bc; }

@@ -14,12 +14,15 @@ namespace gearstiff::contact
 using namespace dealii;
 
 template <int dim>
-void ContactProblem<dim>::complete_solution(Vector<double>& residual)
+void ContactProblem<dim>::complete_solution(Vector<double>& residual, bool whole)
 {
   if (!condensed || !condensed->partial)
     return;
+  if (!whole && complete_at_kept_rows(residual))
+    return;
   // u = s·u_p + P (f_friction − Gᵀλ) + R α, one solve with the converged loads.
   Condensed& c = *condensed;
+  field_partial = false;
   displacement = c.factorization->response(c.contact_load);
   displacement.add(c.load_factor, c.factorization->particular_solution());
   if (c.particular_change.size() > 0)
@@ -32,6 +35,71 @@ void ContactProblem<dim>::complete_solution(Vector<double>& residual)
 }
 
 template <int dim>
+bool ContactProblem<dim>::complete_at_kept_rows(Vector<double>& residual)
+{
+  Condensed& c = *condensed;
+  if (!rolling || !complete_only_at_rows || !c.slave_forces_exact || c.unit_rows.empty())
+    return false;
+  // The loads f_friction − Gᵀλ act only at contact DoFs, each with its kept unit response, so
+  // u = s·(u_p + Δu_p) + Σ_t load_t P e_t + R α at every kept row, linear in the loads.
+  const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
+  std::vector<std::pair<const std::vector<double>*, double>> loaded;
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    if (c.contact_load[i] != 0.)
+    {
+      const auto unit = c.unit_columns.find(i);
+      if (unit == c.unit_columns.end())
+        return false;
+      loaded.emplace_back(&unit->second, c.contact_load[i]);
+    }
+  std::vector<double> rows(c.unit_rows.size());
+  const Vector<double>& particular = c.factorization->particular_solution();
+  for (unsigned int k = 0; k < rows.size(); ++k)
+  {
+    const types::global_dof_index dof = c.unit_rows[k];
+    rows[k] = c.load_factor *
+              (particular[dof] + (c.particular_change.size() > 0 ? c.particular_change[dof] : 0.));
+    for (unsigned int j = 0; j < c.amplitudes.size(); ++j)
+      rows[k] += c.amplitudes[j] * c.factorization->free_modes()[j][dof];
+  }
+  for (const auto& [unit, load] : loaded)
+    for (unsigned int k = 0; k < rows.size(); ++k)
+      rows[k] += load * (*unit)[k];
+  displacement.reinit(n_dofs);
+  for (unsigned int k = 0; k < rows.size(); ++k)
+    displacement[c.unit_rows[k]] = rows[k];
+  // r = K u − f is exact at the held DoFs (every DoF of their cells is a kept row); elsewhere
+  // it is the contact load (stationarity, as in apply_contact_solution).
+  residual = elastic.residual(displacement);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    if (!c.held[i])
+      residual[i] = c.contact_load[i];
+  c.partial = false;
+  field_partial = true;
+  return true;
+}
+
+template <int dim>
+void ContactProblem<dim>::complete_only_at(const std::vector<types::global_dof_index>& dofs)
+{
+  output_dofs = dofs;
+  std::sort(output_dofs.begin(), output_dofs.end());
+  output_dofs.erase(std::unique(output_dofs.begin(), output_dofs.end()), output_dofs.end());
+  complete_only_at_rows = true;
+  if (condensed)
+    condensed->unit_rows.clear(); // rebuilt with these rows at the next pairing
+}
+
+template <int dim>
+void ContactProblem<dim>::complete_field()
+{
+  if (!field_partial || !condensed)
+    return;
+  condensed->partial = true;
+  complete_solution(residual_forces, true);
+}
+
+template <int dim>
 void ContactProblem<dim>::build_condensed(double load_factor)
 {
   // Once: supports at unit load factor, hub torques as unit point loads, one factorization.
@@ -40,6 +108,13 @@ void ContactProblem<dim>::build_condensed(double load_factor)
   auto built = std::make_unique<Condensed>();
   Condensed& c = *built;
   c.supports = make_support_constraints(1.);
+  c.held.assign(n_dofs, false);
+  for (const auto& line : c.supports.get_lines())
+  {
+    c.held[line.index] = true;
+    for (const auto& [master, weight] : line.entries)
+      c.held[master] = true;
+  }
   Vector<double> unit_loads(n_dofs);
   for (const auto& support : supports)
     if (support.hub)
@@ -114,18 +189,11 @@ void ContactProblem<dim>::map_contact(Condensed& c) const
   if (c.particular_change.size() > 0)
     for (unsigned int i = 0; i < c.dofs.size(); ++i)
       c.particular[i] += c.particular_change[c.dofs[i]];
-  std::vector<bool> held(elastic.get_dof_handler().n_dofs(), false);
-  for (const auto& line : c.supports.get_lines())
-  {
-    held[line.index] = true;
-    for (const auto& [master, weight] : line.entries)
-      held[master] = true;
-  }
   c.slave_forces_exact = true;
   for (const auto& pair : pairs)
     for (const auto& node : pair.nodes)
       for (unsigned int d = 0; d < dim; ++d)
-        c.slave_forces_exact = c.slave_forces_exact && !held[node.node.dofs[d]];
+        c.slave_forces_exact = c.slave_forces_exact && !c.held[node.node.dofs[d]];
   for (const auto& mode : c.factorization->free_modes())
     c.modes.push_back(c.at_dofs(mode));
   c.partial = false;
@@ -175,6 +243,21 @@ void ContactProblem<dim>::map_unit_rows(Condensed& c) const
       ids.insert(ids.end(), pair.master.begin(), pair.master.end());
     }
     std::vector<types::global_dof_index> rows = surface_dofs(ids);
+    if (complete_only_at_rows)
+      rows.insert(rows.end(), output_dofs.begin(), output_dofs.end());
+    // complete_only_at(): every DoF of the cells at the supports, for their reactions.
+    std::vector<types::global_dof_index> cell_dofs;
+    if (complete_only_at_rows)
+      for (const auto& cell : elastic.get_dof_handler().active_cell_iterators())
+      {
+        cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_indices(cell_dofs);
+        if (std::any_of(cell_dofs.begin(), cell_dofs.end(),
+                        [&](const types::global_dof_index dof) { return c.held[dof]; }))
+          rows.insert(rows.end(), cell_dofs.begin(), cell_dofs.end());
+      }
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     std::vector<types::global_dof_index> merged;
     std::set_union(rows.begin(), rows.end(), c.dofs.begin(), c.dofs.end(),
                    std::back_inserter(merged));

@@ -133,45 +133,42 @@ void ContactProblem<dim>::couple_pairs()
   // a component held by a roller stays held in the contact constraints too.
   AffineConstraints<double> held;
   add_support_constraints(held, 1.);
-  // Rolling: each pair is coupled on the turned bodies, the mesh put back in place at once.
+  // Rolling: the pairs are coupled on the turned bodies, the mesh put back in place at once.
   const std::vector<Point<dim>> reference =
       rolling ? elastic.triangulation().get_vertices() : std::vector<Point<dim>>();
-  for (auto& pair : pairs)
+  if (rolling)
+    turn_bodies(reference, true);
+  try
   {
-    // A surface paired with itself closes onto its own nodes: every node would be constrained
-    // to itself (the reference path looped forever resolving that chain).
-    for (const auto id : pair.slave)
-      if (std::find(pair.master.begin(), pair.master.end(), id) != pair.master.end())
-        throw InputError(pair.name, "the slave and master surfaces share boundary id " +
-                                        std::to_string(id) +
-                                        ": a surface cannot be its own contact partner");
-    std::vector<SlaveNode<dim>> coupled;
-    if (rolling)
+    for (auto& pair : pairs)
     {
-      turn_bodies(reference, true);
-      try
-      {
-        coupled = mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
-                                  parameters.search_distance, elastic.depth());
-      }
-      catch (...)
-      {
-        turn_bodies(reference, false);
-        throw;
-      }
-      turn_bodies(reference, false);
+      // A surface paired with itself closes onto its own nodes: every node would be
+      // constrained to itself (the reference path looped forever resolving that chain).
+      for (const auto id : pair.slave)
+        if (std::find(pair.master.begin(), pair.master.end(), id) != pair.master.end())
+          throw InputError(pair.name, "the slave and master surfaces share boundary id " +
+                                          std::to_string(id) +
+                                          ": a surface cannot be its own contact partner");
+      std::vector<SlaveNode<dim>> coupled =
+          mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
+                          parameters.search_distance, elastic.depth());
+      pair.nodes.clear();
+      for (auto& node : coupled)
+        if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))
+          pair.nodes.push_back(std::move(node));
+      check_candidates(pair);
+      if (rolling)
+        set_node_frames(pair);
     }
-    else
-      coupled = mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
-                                parameters.search_distance, elastic.depth());
-    pair.nodes.clear();
-    for (auto& node : coupled)
-      if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))
-        pair.nodes.push_back(std::move(node));
-    check_candidates(pair);
-    if (rolling)
-      set_node_frames(pair);
   }
+  catch (...)
+  {
+    if (rolling)
+      turn_bodies(reference, false);
+    throw;
+  }
+  if (rolling)
+    turn_bodies(reference, false);
 }
 
 template <int dim>
@@ -268,13 +265,16 @@ template <int dim>
 void ContactProblem<dim>::turn_bodies(const std::vector<Point<dim>>& reference, bool turn)
 {
   std::vector<bool> moved(reference.size(), false);
+  std::vector<Tensor<2, dim>> matrices; // of `rotations`
+  for (const auto& rotation : rotations)
+    matrices.push_back(turn_about_z<dim>(rotation.angle));
   for (const auto& cell : elastic.triangulation().active_cell_iterators())
   {
     const auto rotation =
         std::find_if(rotations.begin(), rotations.end(),
                      [&](const BodyRotation<dim>& r) { return r.body == cell->material_id(); });
-    const Tensor<2, dim> matrix =
-        turn_about_z<dim>(turn && rotation != rotations.end() ? rotation->angle : 0.);
+    const Tensor<2, dim>* matrix =
+        rotation != rotations.end() ? &matrices[rotation - rotations.begin()] : nullptr;
     for (const unsigned int v : cell->vertex_indices())
     {
       const unsigned int i = cell->vertex_index(v);
@@ -284,7 +284,7 @@ void ContactProblem<dim>::turn_bodies(const std::vector<Point<dim>>& reference, 
       if (!turn || rotation == rotations.end())
         cell->vertex(v) = reference[i];
       else
-        cell->vertex(v) = rotation->axis + matrix * (reference[i] - rotation->axis);
+        cell->vertex(v) = rotation->axis + *matrix * (reference[i] - rotation->axis);
     }
   }
 }

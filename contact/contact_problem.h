@@ -216,6 +216,15 @@ public:
   // when a node there first closes) and kept across positions; surfaces outside are added
   // when a pair uses them (the kept responses are then computed afresh).
   void keep_columns_on(const std::vector<dealii::types::boundary_id>& surfaces);
+  // Rolling, after setup_system(): the solution of each position is completed only at these
+  // DoFs (besides the contact DoFs, and every DoF of the cells at the supports, whose reactions
+  // need them), from the kept unit responses — no full back-substitution per position. The
+  // results (pairs, support reactions and hub rotations) are those of the full field to
+  // round-off; solution() is exact at those DoFs and 0 elsewhere until complete_field().
+  void complete_only_at(const std::vector<dealii::types::global_dof_index>& dofs);
+  // The whole displacement field of the last solve (one back-substitution), e.g. for VTU output;
+  // nothing to do unless complete_only_at() left it partial.
+  void complete_field();
   // The converged zone of every pair with closed nodes, to start a neighbouring analysis from.
   std::vector<ContactZone> converged_zones() const;
   // VTU/PVTU: displacement, von Mises, material id, subdomain, contact pressure, gap, slip,
@@ -321,8 +330,12 @@ private:
                               const std::vector<double>& amplitudes,
                               const std::vector<double>& base, double load_factor,
                               dealii::Vector<double>& residual);
-  // The whole displacement field and residual of the converged iteration.
-  void complete_solution(dealii::Vector<double>& residual);
+  // The whole displacement field and residual of the converged iteration (`whole`: even when
+  // complete_only_at() asks for the kept rows only).
+  void complete_solution(dealii::Vector<double>& residual, bool whole = false);
+  // complete_only_at(): the displacement at the kept rows and the residual, from the kept unit
+  // responses; false when they do not cover the loads (then the whole field is computed).
+  bool complete_at_kept_rows(dealii::Vector<double>& residual);
   bool use_schur_complement() const;
   dealii::Vector<double> make_point_loads(double load_factor) const;
   // Updates the states from the latest solution with the friction bounds held fixed; returns
@@ -368,5 +381,8 @@ private:
   bool rolling = false;                           // roll() was called
   std::vector<BodyRotation<dim>> rotations;       // of roll()
   std::vector<dealii::types::boundary_id> rolling_surfaces; // of keep_columns_on()
+  std::vector<dealii::types::global_dof_index> output_dofs; // of complete_only_at(), sorted
+  bool complete_only_at_rows = false;                       // complete_only_at() was called
+  bool field_partial = false; // solution() holds only the kept rows (complete_field())
 };
 } // namespace gearstiff::contact

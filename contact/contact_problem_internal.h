@@ -113,6 +113,8 @@ struct ContactProblem<dim>::Condensed
   std::vector<dealii::types::global_dof_index> unit_rows;
   std::unordered_map<dealii::types::global_dof_index, std::vector<double>> unit_columns; // m/N
   std::vector<unsigned int> unit_row_of; // position in unit_rows of each contact DoF
+  // The DoFs a support constrains or takes as a master (their residual is a reaction).
+  std::vector<bool> held;
 
   unsigned int position(dealii::types::global_dof_index dof) const
   {

@@ -246,6 +246,7 @@ void GearMeshStiffness<dim>::make_scene()
 template <int dim>
 void GearMeshStiffness<dim>::setup_problem()
 {
+  fillets.clear(); // of the previous mesh
   problem = std::make_unique<contact::ContactProblem<dim>>(
       mpi_communicator, settings.elasticity, settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
@@ -357,25 +358,18 @@ void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& 
 }
 
 template <int dim>
-void GearMeshStiffness<dim>::evaluate_root_stress()
+const std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>&
+GearMeshStiffness<dim>::fillet_faces()
 {
-  // Root stress: the largest first principal stress on the free surface between the root
-  // circle and the form circle (the fillets), where tooth root cracks start (ISO 6336-3 takes
-  // the tensile fillet stress). Faces lying on the root circle itself (the rim between removed
-  // teeth of a full-rim scene) are not fillets and are skipped.
-  const fem::ElasticSystem<dim>& system = problem->system();
-  const auto& fe = system.get_fe();
-  const QGauss<dim - 1> quadrature(fe.degree + 1);
-  FEFaceValues<dim> fe_face(system.get_mapping(), fe, quadrature,
-                            update_gradients | update_quadrature_points);
-  const Vector<double>& u = problem->solution();
-  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  // The free surface between the root circle and the form circle (the fillets). Faces lying on
+  // the root circle itself (the rim between removed teeth of a full-rim scene) are not fillets.
+  if (!fillets.empty())
+    return fillets;
   const double pinion_root = 0.5 * pair.pinion.root_diameter;
   const double wheel_root = 0.5 * pair.wheel.root_diameter;
-  result.pinion_root_stress = result.wheel_root_stress = 0.; // a further torque: anew
   const double pinion_form = 0.5 * pair.pinion.form_diameter;
   const double wheel_form = 0.5 * pair.wheel.form_diameter;
-  for (const auto& cell : system.get_dof_handler().active_cell_iterators())
+  for (const auto& cell : problem->system().get_dof_handler().active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
     {
       if (!cell->face(f)->at_boundary() ||
@@ -395,24 +389,57 @@ void GearMeshStiffness<dim>::evaluate_root_stress()
         inside = inside && r <= high && r >= low;
         on_root_circle = on_root_circle && std::abs(r - root) < 1e-9;
       }
-      if (!inside || on_root_circle)
-        continue;
-      fe_face.reinit(cell, f);
-      cell->get_dof_indices(dofs);
-      for (const unsigned int q : fe_face.quadrature_point_indices())
-      {
-        Tensor<2, dim> gradient;
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-        {
-          const unsigned int c = fe.system_to_component_index(i).first;
-          gradient[c] += u[dofs[i]] * fe_face.shape_grad_component(i, q, c);
-        }
-        const double largest =
-            eigenvalues(fem::stress(settings.material, settings.elasticity.model, gradient))[0];
-        double& target = pinion ? result.pinion_root_stress : result.wheel_root_stress;
-        target = std::max(target, largest);
-      }
+      if (inside && !on_root_circle)
+        fillets.emplace_back(cell, f);
     }
+  return fillets;
+}
+
+template <int dim>
+std::vector<types::global_dof_index> GearMeshStiffness<dim>::fillet_dofs()
+{
+  std::vector<types::global_dof_index> dofs, cell_dofs;
+  for (const auto& [cell, f] : fillet_faces())
+  {
+    cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+    cell->get_dof_indices(cell_dofs);
+    dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
+  }
+  return dofs;
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::evaluate_root_stress()
+{
+  // Root stress: the largest first principal stress on the fillets (fillet_faces), where tooth
+  // root cracks start (ISO 6336-3 takes the tensile fillet stress).
+  const fem::ElasticSystem<dim>& system = problem->system();
+  const auto& fe = system.get_fe();
+  const QGauss<dim - 1> quadrature(fe.degree + 1);
+  FEFaceValues<dim> fe_face(system.get_mapping(), fe, quadrature,
+                            update_gradients | update_quadrature_points);
+  const Vector<double>& u = problem->solution();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  result.pinion_root_stress = result.wheel_root_stress = 0.; // a further torque: anew
+  for (const auto& [cell, f] : fillet_faces())
+  {
+    const bool pinion = cell->material_id() == geometry::scene_ids::pinion_body;
+    fe_face.reinit(cell, f);
+    cell->get_dof_indices(dofs);
+    for (const unsigned int q : fe_face.quadrature_point_indices())
+    {
+      Tensor<2, dim> gradient;
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        const unsigned int c = fe.system_to_component_index(i).first;
+        gradient[c] += u[dofs[i]] * fe_face.shape_grad_component(i, q, c);
+      }
+      const double largest =
+          eigenvalues(fem::stress(settings.material, settings.elasticity.model, gradient))[0];
+      double& target = pinion ? result.pinion_root_stress : result.wheel_root_stress;
+      target = std::max(target, largest);
+    }
+  }
 }
 
 template <int dim>
@@ -420,6 +447,7 @@ void GearMeshStiffness<dim>::output_results()
 {
   if (settings.output_directory.empty())
     return;
+  problem->complete_field(); // a rolling sweep completed the field only where it reports
   result.output_files = problem->output_results(settings.output_directory, settings.output_base);
 }
 

@@ -254,6 +254,12 @@ private:
   void evaluate();
   void evaluate_pairs(const contact::ContactResults<dim>& contact);
   void evaluate_root_stress();
+  // The fillet faces (cell, face number) evaluate_root_stress() reads, found once per mesh; and
+  // the DoFs of their cells (a rolling sweep completes the solution only there, issue 28).
+  const std::vector<
+      std::pair<typename dealii::DoFHandler<dim>::active_cell_iterator, unsigned int>>&
+  fillet_faces();
+  std::vector<dealii::types::global_dof_index> fillet_dofs();
   void output_results();
 
   MPI_Comm mpi_communicator;
@@ -263,6 +269,8 @@ private:
   double pinion_rotation_angle = 0.;          // rad, scene rotation of the pinion profile
   double wheel_rotation_angle = 0.;           // rad
   std::unique_ptr<contact::ContactProblem<dim>> problem; // owned
+  std::vector<std::pair<typename dealii::DoFHandler<dim>::active_cell_iterator, unsigned int>>
+      fillets; // of fillet_faces(), for `problem`'s mesh
   GearMeshStiffnessResult result;
 };
 

@@ -84,7 +84,13 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
         }
     problem->keep_columns_on(flanks);
     problem->roll(body_rotations(position));
-    solve(); // setup_system() (DoFs, K, pairing on the turned bodies) and the factorization
+    problem->setup_system(); // DoFs, K, pairing on the turned bodies
+    // What a position reports (hub rotations and reactions, pair forces, fillet stresses) is
+    // linear in the contact loads: the solution is completed only at the fillets (and at the
+    // contact and support DoFs) from the kept unit responses, the whole field only for VTU.
+    problem->complete_only_at(fillet_dofs());
+    solve_set_up_contact_problem(*problem, result, // the factorization, then the contact
+                                 settings.contact.warm_start ? settings.warm_start.get() : nullptr);
     evaluate();
   }
   else
