@@ -1,5 +1,6 @@
 #include "app/dynamics_lateral.h"
 
+#include "app/lateral_mode_report.h"
 #include "app/lateral_parameters.h"
 #include "app/units.h"
 #include "dynamics/lateral_model.h"
@@ -18,39 +19,15 @@ namespace
 {
 using namespace gearstiff::dynamics;
 
-double class_code(LateralModeClass type)
-{
-  return static_cast<double>(static_cast<int>(type));
-}
-
 void report_modes(const LateralModel& model, const LateralModes& modes, Report& report)
 {
   const unsigned int n = model.n_planets();
-  auto& table =
-      report.add_table("lateral_modes", {"mode", "frequency", "class", "multiplicity", "group"},
-                       {"-", "Hz", "-", "-", "-"});
-  unsigned int counts[4] = {0, 0, 0, 0};
-  for (std::size_t g = 0; g < modes.groups.size(); ++g)
-  {
-    const LateralModeGroup& group = modes.groups[g];
-    ++counts[static_cast<int>(group.type)];
-    for (const unsigned int k : group.modes)
-      table.add_row({double(k + 1), modes.frequencies[k], class_code(group.type),
-                     double(group.modes.size()), double(g + 1)});
-  }
-  report.add_text("mode classes",
-                  "0 = rotational (central members only rotate), 1 = translational (central "
-                  "members only translate), 2 = planet (central members still), 3 = mixed; "
-                  "Lin & Parker 1999 for " +
-                      std::to_string(n) +
-                      " equally spaced planets: 6 rotational (x1), 6 "
-                      "translational (x2), " +
-                      std::to_string(n >= 4 ? 3 : 0) + " planet (x" +
-                      std::to_string(n >= 3 ? n - 3 : 0) + ")");
-  report.add_value("rotational_groups", counts[0], "-", "rotational frequencies");
-  report.add_value("translational_groups", counts[1], "-", "translational frequencies");
-  report.add_value("planet_groups", counts[2], "-", "planet-mode frequencies");
-  report.add_value("mixed_groups", counts[3], "-", "frequencies of mixed modes");
+  report_mode_classes(modes, "lateral_modes",
+                      "; Lin & Parker 1999 for " + std::to_string(n) +
+                          " equally spaced planets: 6 rotational (x1), 6 translational (x2), " +
+                          std::to_string(n >= 4 ? 3 : 0) + " planet (x" +
+                          std::to_string(n >= 3 ? n - 3 : 0) + ")",
+                      report);
 
   std::vector<std::string> columns{"mode", "frequency"}, units{"-", "Hz"};
   std::vector<std::string> bodies{"carrier", "ring", "sun"};

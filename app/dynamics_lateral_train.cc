@@ -1,6 +1,7 @@
 #include "app/dynamics_lateral_train.h"
 
 #include "app/dynamics_parameters.h"
+#include "app/lateral_mode_report.h"
 #include "app/lateral_parameters.h"
 #include "app/units.h"
 #include "dynamics/lateral_train_response.h"
@@ -60,25 +61,7 @@ void report_modes(const LateralTrainModel& model, Report& report)
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() *
                        1e3,
                    "ms", "wall time of the modes and their classification");
-  auto& table = report.add_table("lateral_train_modes",
-                                 {"mode", "frequency", "class", "multiplicity", "group"},
-                                 {"-", "Hz", "-", "-", "-"});
-  unsigned int counts[4] = {0, 0, 0, 0};
-  for (std::size_t g = 0; g < modes.groups.size(); ++g)
-  {
-    const LateralModeGroup& group = modes.groups[g];
-    ++counts[static_cast<int>(group.type)];
-    for (const unsigned int k : group.modes)
-      table.add_row({double(k + 1), modes.frequencies[k], double(static_cast<int>(group.type)),
-                     double(group.modes.size()), double(g + 1)});
-  }
-  report.add_text("mode classes", "0 = rotational (central members only rotate), 1 = "
-                                  "translational (central members only translate), 2 = planet "
-                                  "(central members still), 3 = mixed");
-  report.add_value("rotational_groups", counts[0], "-", "rotational frequencies");
-  report.add_value("translational_groups", counts[1], "-", "translational frequencies");
-  report.add_value("planet_groups", counts[2], "-", "planet-mode frequencies");
-  report.add_value("mixed_groups", counts[3], "-", "frequencies of mixed modes");
+  report_mode_classes(modes, "lateral_train_modes", "", report);
 }
 
 void report_statics(const LateralTrainSetup& setup, const LateralTrainModel& model, Report& report)
