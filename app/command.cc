@@ -286,10 +286,13 @@ std::function<void(const std::string&)> CommandContext::progress_counter(const s
     ++*done;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double left = std::max(0., share - *done) * elapsed / *done;
+    // `share` is an even split; ranks that take the next free item (fem::distribute_items) can
+    // solve more than it: then the count itself is the best estimate of the total here.
+    const double expected = std::max(share, double(*done));
+    const double left = (expected - *done) * elapsed / *done;
     std::ostringstream line;
     line.precision(3);
-    line << text << " (" << *done << " done here of ~" << std::lround(share) << ", " << elapsed
+    line << text << " (" << *done << " done here of ~" << std::lround(expected) << ", " << elapsed
          << " s elapsed, ~" << left << " s left)";
     progress(stage, line.str());
   };
