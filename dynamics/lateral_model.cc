@@ -528,35 +528,39 @@ std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) c
   return frequencies;
 }
 
-// [K M·v0; v0ᵀ·M 0]·[q; a] = [f; 0] over the free coordinates: the deflection orthogonal to the
-// rigid rotation v0 (when there is one), in full coordinates.
-Eigen::VectorXd LateralModel::deflection_under(const Eigen::VectorXd& f,
-                                               const std::vector<Eigen::VectorXd>& rigid) const
+Eigen::VectorXd constrained_deflection(const Eigen::VectorXd& mass,
+                                       const Eigen::MatrixXd& stiffness,
+                                       const std::vector<unsigned int>& free,
+                                       const Eigen::VectorXd& f, const Eigen::VectorXd* rigid)
 {
   const unsigned int nf = free.size();
-  const unsigned int extra = rigid.size();
+  const unsigned int extra = rigid ? 1 : 0;
   Eigen::MatrixXd system = Eigen::MatrixXd::Zero(nf + extra, nf + extra);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf + extra);
   for (unsigned int i = 0; i < nf; ++i)
   {
     rhs[i] = f[free[i]];
     for (unsigned int j = 0; j < nf; ++j)
-      system(i, j) = stiffness_matrix(free[i], free[j]);
-    if (extra)
-    {
-      const double mv = mass_diagonal[free[i]] * rigid.front()[free[i]];
-      system(i, nf) = mv;
-      system(nf, i) = mv;
-    }
+      system(i, j) = stiffness(free[i], free[j]);
+    if (rigid)
+      system(i, nf) = system(nf, i) = mass[free[i]] * (*rigid)[free[i]];
   }
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
   if (!lu.isInvertible())
     throw SolverFailure("lateral statics", "the stiffness matrix is singular");
   const Eigen::VectorXd solution = lu.solve(rhs);
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(f.size());
   for (unsigned int i = 0; i < nf; ++i)
     q[free[i]] = solution[i];
   return q;
+}
+
+// The deflection orthogonal to the rigid rotation v0 (when there is one).
+Eigen::VectorXd LateralModel::deflection_under(const Eigen::VectorXd& f,
+                                               const std::vector<Eigen::VectorXd>& rigid) const
+{
+  return constrained_deflection(mass_diagonal, stiffness_matrix, free, f,
+                                rigid.empty() ? nullptr : &rigid.front());
 }
 
 // Pin, mesh and bearing forces and load sharing of `state.displacement`.

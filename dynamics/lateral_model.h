@@ -227,6 +227,14 @@ double undamped_modes(const Eigen::VectorXd& mass, const Eigen::MatrixXd& stiffn
                       const std::vector<unsigned int>& free, Eigen::VectorXd& frequencies,
                       Eigen::MatrixXd& shapes);
 
+// Static deflection K·q = f over the coordinates `free` [m, N], orthogonal in M to the rigid
+// motion `rigid` (full coordinates) when it is not null: [K M·v0; v0ᵀ·M 0]·[q; a] = [f; 0]. Full
+// coordinates out. SolverFailure when the system is singular.
+Eigen::VectorXd constrained_deflection(const Eigen::VectorXd& mass,
+                                       const Eigen::MatrixXd& stiffness,
+                                       const std::vector<unsigned int>& free,
+                                       const Eigen::VectorXd& f, const Eigen::VectorXd* rigid);
+
 // Groups of equal frequency (within `relative_tolerance` in ω²) and their class, judged on the
 // whole group (a degenerate pair's basis is arbitrary, its subspace is not) by the kinetic
 // energy of the `central` bodies (translation in column 2b, rotation in 2b + 1). `largest`: the

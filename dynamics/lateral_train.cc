@@ -307,7 +307,7 @@ LateralTrainStatics LateralTrainModel::static_state(unsigned int input, unsigned
     throw InputError("Train/fixed", "the train has " + std::to_string(rigid.size()) +
                                         " free motions: hold or suspend a member");
   LateralTrainStatics state;
-  const unsigned int uo = dof(output, 2), nf = free.size(), extra = rigid.size();
+  const unsigned int uo = dof(output, 2), extra = rigid.size();
   if (extra)
   {
     // The load on the output that balances the input in the rigid rotation: v0ᵀ·f = 0.
@@ -317,24 +317,10 @@ LateralTrainStatics LateralTrainModel::static_state(unsigned int input, unsigned
     state.output_torque = -v0.dot(f) / v0[uo] * data.bodies[output].radius;
     f[uo] += state.output_torque / data.bodies[output].radius;
   }
-  // [K M·v0; v0ᵀ·M 0]·[q; a] = [f; 0] over the free coordinates.
-  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(nf + extra, nf + extra);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nf + extra);
-  for (unsigned int i = 0; i < nf; ++i)
-  {
-    rhs[i] = f[free[i]];
-    for (unsigned int j = 0; j < nf; ++j)
-      system(i, j) = stiffness_matrix(free[i], free[j]);
-    if (extra)
-      system(i, nf) = system(nf, i) = mass_diagonal[free[i]] * m.shapes(free[i], rigid.front());
-  }
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(system);
-  if (!lu.isInvertible())
-    throw SolverFailure("lateral statics", "the stiffness matrix is singular");
-  const Eigen::VectorXd solution = lu.solve(rhs);
-  state.displacement = Eigen::VectorXd::Zero(n_dofs());
-  for (unsigned int i = 0; i < nf; ++i)
-    state.displacement[free[i]] = solution[i];
+  const Eigen::VectorXd v0 =
+      extra ? Eigen::VectorXd(m.shapes.col(rigid.front())) : Eigen::VectorXd();
+  state.displacement =
+      constrained_deflection(mass_diagonal, stiffness_matrix, free, f, extra ? &v0 : nullptr);
   static_forces(state);
   return state;
 }
