@@ -39,8 +39,8 @@ const char* const fault_entries[][3] = {
      "where the crack starts on the loaded flank's fillet: 'critical section' (the 30° tangent "
      "point of ISO 6336-3) or the diameter of a fillet point [mm]"},
     {"crack faces", "open",
-     "'open': an open slit 0.04 mm wide; 'contact' (a crack of no width whose faces may close, "
-     "frictionless contact between them) is not available for gear scenes yet"},
+     "'open': an open slit 0.04 mm wide; 'contact': a crack of no width whose faces may close "
+     "(frictionless contact between them; 2D, a 3D model keeps the open slit)"},
     {"crack tip size", "0.01",
      "cell size at the crack tip [mm] (faces in contact: 2x along "
      "the faces, the tip size within 10x of the tip)"},
@@ -144,12 +144,8 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
   if (faces != "contact" && faces != "open")
     throw InputError(path_of(wheel, "crack faces"),
                      "'" + shortened(faces) + "' is not one of contact, open");
-  // The split mesh of a crack whose faces meet works on a strip (tests/stiffness/test_crack_tip)
-  // but not yet in the gear scene (docs/faults.md): refused rather than meshed wrong.
-  if (faces == "contact")
-    throw InputError(path_of(wheel, "crack faces"),
-                     "'contact' (faces that may close) is not available for gear scenes yet: "
-                     "use 'open'");
+  // A 3D model keeps the open slit (the split mesh is 2D only: docs/faults.md).
+  crack.crack_contact = faces == "contact" && dimension == 2;
   crack.crack_tip_size = length_of(text, "crack tip size", wheel);
   // A tip cell below 1 µm is beyond the scene's smallest feature; above 0.1 mm it is coarser
   // than the crack-face cells of the default contact sizes.
