@@ -91,6 +91,18 @@ double half_thickness_at(const ProfilePoint& p)
   return r * std::sin(std::abs(std::atan2(p.position.y(), p.position.x())));
 }
 
+// Where the line origin + t·direction crosses the line a + s·(b − a): (t, s); none if parallel.
+std::optional<Eigen::Vector2d> crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                        const Eigen::Vector2d& origin,
+                                        const Eigen::Vector2d& direction)
+{
+  Eigen::Matrix2d m;
+  m << direction, a - b;
+  if (std::abs(m.determinant()) < 1e-300)
+    return std::nullopt;
+  return Eigen::Vector2d(m.inverse() * (a - origin));
+}
+
 // Where the ray start + t·direction (t > `skip`) leaves the outline first (t, m), if it does.
 std::optional<double> ray_exit(const ToothProfile& tooth, const Eigen::Vector2d& start,
                                const Eigen::Vector2d& direction, double skip)
@@ -122,16 +134,11 @@ std::pair<std::size_t, double> line_crossing(const std::vector<ProfilePoint>& po
   {
     if (points[i].side != side && points[i + 1].side != side)
       continue;
-    const Eigen::Vector2d a = points[i].position, b = points[i + 1].position;
-    Eigen::Matrix2d m;
-    m << direction, a - b;
-    if (std::abs(m.determinant()) < 1e-300)
-      continue;
-    const Eigen::Vector2d ts = m.inverse() * (a - origin);
-    if (ts(1) >= 0. && ts(1) < 1. && std::abs(ts(0)) < best_t)
+    const auto ts = crossing(points[i].position, points[i + 1].position, origin, direction);
+    if (ts && (*ts)(1) >= 0. && (*ts)(1) < 1. && std::abs((*ts)(0)) < best_t)
     {
-      best_t = std::abs(ts(0));
-      best = {i, ts(1)};
+      best_t = std::abs((*ts)(0));
+      best = {i, (*ts)(1)};
     }
   }
   return best;
@@ -503,14 +510,10 @@ ray_crossing(const std::vector<ProfilePoint>& points, const Eigen::Vector2d& ori
   std::optional<std::tuple<std::size_t, double, double>> best;
   for (std::size_t i = 0; i + 1 < points.size(); ++i)
   {
-    const Eigen::Vector2d a = points[i].position, b = points[i + 1].position;
-    Eigen::Matrix2d m;
-    m << direction, a - b;
-    if (std::abs(m.determinant()) < 1e-300)
-      continue;
-    const Eigen::Vector2d ts = m.inverse() * (a - origin);
-    if (ts(0) > 0. && ts(1) >= 0. && ts(1) < 1. && (!best || ts(0) < std::get<2>(*best)))
-      best = std::make_tuple(i, ts(1), ts(0));
+    const auto ts = crossing(points[i].position, points[i + 1].position, origin, direction);
+    if (ts && (*ts)(0) > 0. && (*ts)(1) >= 0. && (*ts)(1) < 1. &&
+        (!best || (*ts)(0) < std::get<2>(*best)))
+      best = std::make_tuple(i, (*ts)(1), (*ts)(0));
   }
   return best;
 }
