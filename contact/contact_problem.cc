@@ -59,12 +59,13 @@ void ContactProblem<dim>::add_rigid_hub(types::boundary_id boundary, const Point
 template <int dim>
 void ContactProblem<dim>::add_contact_pair(const std::vector<types::boundary_id>& slave,
                                            const std::vector<types::boundary_id>& master,
-                                           const std::string& name)
+                                           const std::string& name, bool within_one_body)
 {
   Pair pair;
   pair.name = name;
   pair.slave = slave;
   pair.master = master;
+  pair.within_one_body = within_one_body;
   pairs.push_back(std::move(pair));
 }
 
@@ -200,11 +201,16 @@ void ContactProblem<dim>::set_cold_start()
   // not touch exactly (chords of curved outlines leave gaps of h²/8ρ) need no adjustment of the
   // geometry. A node closed at a positive gap is held at that gap: its force turns tensile if it
   // should not touch, and it opens in the next iteration.
+  // A pair within one body (crack faces) holds no body: its touching nodes do not stand for
+  // the first touch between bodies (unless no other pair exists).
   const double touching = 1e-8 * characteristic_length;
+  const bool between_bodies = std::any_of(pairs.begin(), pairs.end(),
+                                          [](const Pair& pair) { return !pair.within_one_body; });
   double smallest_gap = std::numeric_limits<double>::max();
   for (const auto& pair : pairs)
-    for (const auto& node : pair.nodes)
-      smallest_gap = std::min(smallest_gap, node.initial_gap);
+    if (!between_bodies || !pair.within_one_body)
+      for (const auto& node : pair.nodes)
+        smallest_gap = std::min(smallest_gap, node.initial_gap);
   const double closing_gap = std::max(touching, smallest_gap + touching);
   cold_start.clear();
   for (auto& pair : pairs)

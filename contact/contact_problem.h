@@ -176,9 +176,11 @@ public:
   void add_rigid_hub(dealii::types::boundary_id boundary, const dealii::Point<dim>& axis,
                      typename fem::RigidHub<dim>::Control control, double value,
                      const std::string& name);
+  // `within_one_body`: both surfaces belong to one body (the two faces of a crack), so the pair
+  // cannot hold that body; nodes the two surfaces share (a crack tip) are not coupled.
   void add_contact_pair(const std::vector<dealii::types::boundary_id>& slave,
                         const std::vector<dealii::types::boundary_id>& master,
-                        const std::string& name);
+                        const std::string& name, bool within_one_body = false);
 
   // DoFs, stiffness, supports and the mortar coupling; InputError when a pair has no
   // candidates or the bodies overlap beyond the tolerance.
@@ -244,6 +246,7 @@ private:
   {
     std::string name;
     std::vector<dealii::types::boundary_id> slave, master;
+    bool within_one_body = false; // the two faces of a crack (add_contact_pair)
     std::vector<SlaveNode<dim>> nodes;
     std::vector<NodeMemory<dim>> memory; // contact state of each node (contact/active_set.h)
   };

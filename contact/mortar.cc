@@ -567,8 +567,9 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
   std::vector<SlaveNode<dim>> result;
   for (const auto& [dof, acc] : integrals.accumulators)
     // A node whose dual support is less than half paired lies at or beyond the end of the
-    // master surface; its weights M/D would be ill-conditioned, so it is not coupled.
-    if (acc.paired_weight >= 0.5 * acc.full_weight)
+    // master surface; its weights M/D would be ill-conditioned, so it is not coupled. A node
+    // of both surfaces (the tip of a crack, whose two faces are the pair) has no gap to close.
+    if (acc.paired_weight >= 0.5 * acc.full_weight && acc.masters.count(dof) == 0)
       result.push_back(make_slave_node(integrals.nodes.at(dof), acc, integrals.nodes, depth));
   return result;
 }

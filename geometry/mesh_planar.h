@@ -58,7 +58,20 @@ struct PlanarFill
   std::size_t first_piece = 0, last_piece = 0;
   std::vector<BoundaryPiece> closing;
   std::function<bool(const Eigen::Vector3d&)> removed; // m, scene frame
+  // 2D, > 0: a crack whose faces meet. One of the pieces first_piece..last_piece (the crack,
+  // from the mouth on the outline to the tip inside the body) carries this boundary id, the other
+  // (the cut from the tip back to the outline) boundary id 0; the fill is the material beyond the
+  // cut, meshed as a surface of its own so that every quadrilateral mesh follows the crack. The
+  // mesh is then split along the crack: the body's cells keep its nodes (faces crack_id), the
+  // fill's cells get their own copies (faces crack_id + 1), but the tip's node, which both keep.
+  // Copies lie crack_face_parting towards the fill. `removed` is not used.
+  int crack_id = 0;
 };
+
+// m: the copies of a crack's nodes lie this far from the originals (PlanarFill::crack_id):
+// deal.II's GridIn may merge coincident vertices, which would seal the crack; 0.1 nm is far below
+// any deflection the faces see (µm), and the contact takes the faces as touching.
+constexpr double crack_face_parting = 1e-10;
 
 struct PlanarBody
 {

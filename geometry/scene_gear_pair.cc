@@ -176,18 +176,16 @@ std::optional<std::size_t> piece_at(const std::vector<BoundaryPiece>& pieces, st
   return std::nullopt;
 }
 
-// 3D: the fills of a faulty tooth's partial-width faults (geometry/tooth_fault.h FaultFill) as
-// PlanarFill of its body, the tooth's pieces starting at `begin` in `pieces`.
-void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& centre, double angle,
-                     double face_width, const std::string& parameter,
-                     const std::function<int(const ProfileEdge&)>& id_of,
-                     const std::vector<BoundaryPiece>& pieces, std::size_t begin,
-                     std::vector<PlanarFill>& fills)
+// The fills of a faulty tooth (geometry/tooth_fault.h FaultFill: 3D partial-width faults, 2D
+// cracks whose faces meet) as PlanarFill of its body, the tooth's pieces starting at `begin` in
+// `pieces`. A crack's piece (mouth to tip) takes the boundary id crack_id(k).
+void add_tooth_fills(const std::vector<FaultFill>& faults, int k, const Eigen::Vector2d& centre,
+                     double angle, const std::function<int(const ProfileEdge&)>& id_of,
+                     const std::function<int(int)>& crack_id, std::vector<BoundaryPiece>& pieces,
+                     std::size_t begin, std::vector<PlanarFill>& fills)
 {
-  const ToothProfile& nominal = teeth.nominal();
   const auto placed = [&](const Eigen::Vector2d& p) { return place(p, centre, angle); };
-  for (const FaultFill& fault :
-       fault_fills(nominal, teeth.modifications_of(k), loaded_side(nominal), face_width, parameter))
+  for (const FaultFill& fault : faults)
   {
     // The fill's corners in the outline's order (a spall's walls run either way); `closing`
     // runs from the end of the last piece back to the start of the first.
@@ -207,6 +205,14 @@ void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& c
     PlanarFill fill;
     fill.first_piece = *first;
     fill.last_piece = *last;
+    if (fault.crack) // the cut: mouth → tip → end, or back; the crack is the piece at the mouth
+    {
+      const bool mouth_first = (pieces[*first].points.front() - placed(fault.from)).norm() < 1e-9;
+      fill.crack_id = crack_id(k);
+      pieces[mouth_first ? *first : *last].boundary_id = fill.crack_id;
+      for (std::size_t p = *first; p <= *last; ++p)
+        pieces[p].kind = CurveKind::straight;
+    }
     fill.closing = outline_pieces(closing, placed, id_of);
     const Eigen::Rotation2Dd back(-angle);
     const auto removed = fault.removed;
@@ -217,10 +223,12 @@ void add_tooth_fills(const ToothProfiles& teeth, int k, const Eigen::Vector2d& c
 }
 
 // The outline pieces of teeth `first`..`last` (indices CCW from tooth 0), placed; the flanks of
-// tooth k carry flank_id(k). 3D (face_width > 0): the fills of partial-width faults.
+// tooth k carry flank_id(k), a crack whose faces meet crack_id(k). The fills of partial-width
+// faults (3D, face_width > 0) and of cracks whose faces meet (2D).
 std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen::Vector2d& centre,
                                         double rotation, int first, int last,
-                                        const std::function<int(int)>& flank_id, bool both_flanks,
+                                        const std::function<int(int)>& flank_id,
+                                        const std::function<int(int)>& crack_id, bool both_flanks,
                                         double face_width, const std::string& parameter,
                                         std::vector<PlanarFill>& fills)
 {
@@ -237,12 +245,17 @@ std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen:
     };
     const double angle = rotation + k * tooth.angular_pitch;
     const std::size_t begin = pieces.size();
+    const ToothProfile& nominal = teeth.nominal();
+    const std::vector<FaultFill> faults = fault_fills(nominal, teeth.modifications_of(k),
+                                                      loaded_side(nominal), face_width, parameter);
+    const std::vector<ProfilePoint>* outline = &tooth.points; // a crack's cut replaces it
+    for (const FaultFill& fault : faults)
+      if (fault.crack)
+        outline = &fault.outline;
     for (BoundaryPiece& piece : outline_pieces(
-             tooth.points, [&](const Eigen::Vector2d& p) { return place(p, centre, angle); },
-             id_of))
+             *outline, [&](const Eigen::Vector2d& p) { return place(p, centre, angle); }, id_of))
       pieces.push_back(std::move(piece));
-    if (face_width > 0.)
-      add_tooth_fills(teeth, k, centre, angle, face_width, parameter, id_of, pieces, begin, fills);
+    add_tooth_fills(faults, k, centre, angle, id_of, crack_id, pieces, begin, fills);
   }
   // Consecutive teeth share their gap-middle point: the next tooth's first piece starts where
   // the previous tooth's last piece ends.
@@ -314,8 +327,11 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfiles& teeth,
   body.material_id = body_spec.material_id;
   const std::string parameter =
       body_spec.material_id == scene_ids::pinion_body ? "Gear pair/Pinion" : "Gear pair/Wheel";
-  body.outer.pieces = teeth_pieces(teeth, centre, rotation, first, last, body_spec.flank_id,
-                                   both_flanks, face_width, parameter, body.fills);
+  const bool wheel = body_spec.material_id == scene_ids::wheel_body;
+  body.outer.pieces = teeth_pieces(
+      teeth, centre, rotation, first, last, body_spec.flank_id,
+      [wheel](int k) { return crack_face_id(wheel, k); }, both_flanks, face_width, parameter,
+      body.fills);
   const double root_radius = outline_root_radius(tooth);
   const double start_angle = rotation + (first - 0.5) * tooth.angular_pitch;
   const double end_angle = rotation + (last + 0.5) * tooth.angular_pitch;
@@ -813,6 +829,13 @@ int wheel_flank_id(int pair)
   return pinion_flank_id(pair) + 200;
 }
 
+int crack_face_id(bool wheel, int tooth)
+{
+  if (std::abs(tooth) > max_pair_index)
+    throw SolverFailure("gear scene ids", "tooth index " + std::to_string(tooth) + " out of range");
+  return 1000 + (wheel ? 400 : 0) + 2 * (tooth + max_pair_index);
+}
+
 RimModel parse_rim_model(const std::string& text, const std::string& parameter)
 {
   if (text == "sector")
@@ -1044,7 +1067,8 @@ ModelWindows model_windows(const GearPairSceneSpec& spec, const PlacedGears& gea
 PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& gears,
                             const GearPairScene& scene, const ModelWindows& w, double face_width)
 {
-  // Partial-width faults are fills of the extruded mesh (3D only).
+  // Partial-width faults are fills of the extruded mesh (3D only); cracks whose faces meet are
+  // fills in 2D.
   const double fill_width = spec.mesh.dimension == 3 ? face_width : 0.;
   PlanarModel model;
   model.bodies.push_back(
@@ -1066,6 +1090,11 @@ PlanarModel gear_pair_model(const GearPairSceneSpec& spec, const PlacedGears& ge
     model.boundary_names[pinion_flank_id(j)] = "pinion flank " + std::to_string(j);
   for (int j = w.wheel_first_pair; j <= w.wheel_last_pair; ++j)
     model.boundary_names[wheel_flank_id(j)] = "wheel flank " + std::to_string(j);
+  for (const PlanarBody& body : model.bodies)
+    for (const PlanarFill& fill : body.fills)
+      for (const int id : {fill.crack_id, fill.crack_id + 1})
+        if (fill.crack_id > 0)
+          model.boundary_names[id] = body.name + " crack face " + std::to_string(id);
   if (spec.rim == RimModel::sector)
   {
     model.boundary_names[scene_ids::pinion_cuts] = "pinion sector cuts";

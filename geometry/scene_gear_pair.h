@@ -128,6 +128,9 @@ inline const std::string poisson_ratio = "scene.poisson_ratio";
 constexpr int max_pair_index = 99;
 int pinion_flank_id(int pair);
 int wheel_flank_id(int pair);
+// Boundary ids of the two faces of a root crack whose faces meet (geometry/tooth_fault.h) on
+// tooth `tooth` (|tooth| ≤ max_pair_index, the gear's own frame): crack_face_id and + 1.
+int crack_face_id(bool wheel, int tooth);
 
 // A written gear-pair scene: the common SceneInfo and what this scene adds, by name.
 struct GearPairScene

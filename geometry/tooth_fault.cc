@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 namespace gearstiff::geometry
 {
@@ -90,6 +91,18 @@ double half_thickness_at(const ProfilePoint& p)
   return r * std::sin(std::abs(std::atan2(p.position.y(), p.position.x())));
 }
 
+// Where the line origin + t·direction crosses the line a + s·(b − a): (t, s); none if parallel.
+std::optional<Eigen::Vector2d> crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                        const Eigen::Vector2d& origin,
+                                        const Eigen::Vector2d& direction)
+{
+  Eigen::Matrix2d m;
+  m << direction, a - b;
+  if (std::abs(m.determinant()) < 1e-300)
+    return std::nullopt;
+  return Eigen::Vector2d(m.inverse() * (a - origin));
+}
+
 // Where the ray start + t·direction (t > `skip`) leaves the outline first (t, m), if it does.
 std::optional<double> ray_exit(const ToothProfile& tooth, const Eigen::Vector2d& start,
                                const Eigen::Vector2d& direction, double skip)
@@ -121,16 +134,11 @@ std::pair<std::size_t, double> line_crossing(const std::vector<ProfilePoint>& po
   {
     if (points[i].side != side && points[i + 1].side != side)
       continue;
-    const Eigen::Vector2d a = points[i].position, b = points[i + 1].position;
-    Eigen::Matrix2d m;
-    m << direction, a - b;
-    if (std::abs(m.determinant()) < 1e-300)
-      continue;
-    const Eigen::Vector2d ts = m.inverse() * (a - origin);
-    if (ts(1) >= 0. && ts(1) < 1. && std::abs(ts(0)) < best_t)
+    const auto ts = crossing(points[i].position, points[i + 1].position, origin, direction);
+    if (ts && (*ts)(1) >= 0. && (*ts)(1) < 1. && std::abs((*ts)(0)) < best_t)
     {
-      best_t = std::abs(ts(0));
-      best = {i, ts(1)};
+      best_t = std::abs((*ts)(0));
+      best = {i, (*ts)(1)};
     }
   }
   return best;
@@ -492,7 +500,91 @@ FaultFill chip_fill(const ToothProfile& tooth, const ToothModification& chip)
   fill.removed = [width](const Eigen::Vector2d&, double z) { return z < width; };
   return fill;
 }
+
+// The first crossing of the ray origin + t·direction (t > 0) with the outline: segment index,
+// weight along it and t (m); none if the ray misses it.
+std::optional<std::tuple<std::size_t, double, double>>
+ray_crossing(const std::vector<ProfilePoint>& points, const Eigen::Vector2d& origin,
+             const Eigen::Vector2d& direction)
+{
+  std::optional<std::tuple<std::size_t, double, double>> best;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+  {
+    const auto ts = crossing(points[i].position, points[i + 1].position, origin, direction);
+    if (ts && (*ts)(0) > 0. && (*ts)(1) >= 0. && (*ts)(1) < 1. &&
+        (!best || (*ts)(0) < std::get<2>(*best)))
+      best = std::make_tuple(i, (*ts)(1), (*ts)(0));
+  }
+  return best;
+}
+
+// A crack whose faces meet (ToothModification::crack_contact) cuts the tooth along mouth → tip
+// → end, `end` where the ray from the tip parallel to the centre line towards the tooth tip
+// leaves the outline. `marked`: the outline with the mouth and the end as corners (the tooth's
+// outline: its flanks stay whole); `outline`: the body's meshed outline, mouth, tip, end
+// (corners; the cut's edges are root segments, so they carry no flank id) in place of the
+// outline between the mouth and the end; `closing`: that outline, from the mouth to the end,
+// which closes the fill beyond the cut (geometry/mesh_planar.h PlanarFill).
+struct CrackCut
+{
+  std::vector<ProfilePoint> marked, outline, closing;
+};
+
+CrackCut crack_cut(const std::vector<ProfilePoint>& points, const CrackPath& path, int loaded_side)
+{
+  const auto [i, w] = line_crossing(points, path.start, path.direction, loaded_side);
+  const Eigen::Vector2d tip_position = path.start + path.depth * path.direction;
+  const auto exit = ray_crossing(points, tip_position, Eigen::Vector2d::UnitX());
+  if (i >= points.size() || !exit)
+    throw SolverFailure("tooth fault outline", "the crack's cut misses the outline");
+  const auto [j, v, t] = *exit;
+  ProfilePoint mouth = lerp(points[i], points[i + 1], w), end = lerp(points[j], points[j + 1], v);
+  ProfilePoint tip = mouth;
+  mouth.position = path.start;
+  tip.position = tip_position;
+  tip.normal = -path.direction;
+  tip.segment = ProfileSegment::root;
+  tip.side = loaded_side;
+  const bool forward = i + w < j + v; // the mouth comes first along the outline
+  CrackCut cut;
+  cut.closing.push_back(mouth);
+  if (forward)
+    cut.closing.insert(cut.closing.end(), points.begin() + i + 1, points.begin() + j + 1);
+  else
+    cut.closing.insert(cut.closing.end(), points.rend() - i - 1, points.rend() - j - 1);
+  cut.closing.push_back(end);
+  for (ProfilePoint& p : cut.closing)
+    p.corner = false;
+  mouth.corner = tip.corner = end.corner = true;
+  const std::size_t before = forward ? i : j, after = forward ? j : i;
+  const ProfilePoint first = forward ? mouth : end, last = forward ? end : mouth;
+  cut.outline.assign(points.begin(), points.begin() + before + 1);
+  cut.marked = cut.outline;
+  for (const ProfilePoint& p : {first, tip, last})
+    cut.outline.push_back(p);
+  cut.marked.push_back(first);
+  cut.marked.insert(cut.marked.end(), points.begin() + before + 1, points.begin() + after + 1);
+  cut.marked.push_back(last);
+  for (std::vector<ProfilePoint>* list : {&cut.outline, &cut.marked})
+    list->insert(list->end(), points.begin() + after + 1, points.end());
+  return cut;
+}
+
+// The modifications but the cracks whose faces meet (they cut the outline last).
+std::vector<ToothModification> without_meeting_cracks(const std::vector<ToothModification>& list)
+{
+  std::vector<ToothModification> others;
+  for (const ToothModification& m : list)
+    if (m.kind != ModificationKind::root_crack || !m.crack_contact)
+      others.push_back(m);
+  return others;
+}
 } // namespace
+
+double crack_tip_cell_size(const ToothModification& crack)
+{
+  return crack.crack_tip_size > 0. ? crack.crack_tip_size : crack_tip_size;
+}
 
 bool is_fault(ModificationKind kind)
 {
@@ -620,7 +712,7 @@ ToothProfile apply_faults(const ToothProfile& tooth,
     if (m.kind == ModificationKind::spall)
       faulty.points = spalled_outline(faulty.points, m, tooth, loaded_side);
   for (const ToothModification& m : modifications)
-    if (m.kind == ModificationKind::root_crack)
+    if (m.kind == ModificationKind::root_crack && !m.crack_contact)
       faulty.points =
           cracked_outline(faulty.points, crack_path(m, tooth, loaded_side), loaded_side);
   for (const ToothModification& m : modifications)
@@ -629,6 +721,10 @@ ToothProfile apply_faults(const ToothProfile& tooth,
       faulty.points = chipped_outline(faulty.points, tooth.tip_radius - m.amount, 8);
       faulty.tip_radius = tooth.tip_radius - m.amount;
     }
+  for (const ToothModification& m : modifications) // the cut of a crack whose faces meet
+    if (m.kind == ModificationKind::root_crack && m.crack_contact)
+      faulty.points =
+          crack_cut(faulty.points, crack_path(m, tooth, loaded_side), loaded_side).marked;
   return faulty;
 }
 
@@ -685,8 +781,23 @@ std::vector<FaultFill> fault_fills(const ToothProfile& tooth,
     if (m.kind == ModificationKind::broken_tooth)
       return fills;
   for (const ToothModification& m : modifications)
+    if (m.kind == ModificationKind::root_crack && m.crack_contact)
+    {
+      const ToothProfile before =
+          apply_faults(tooth, without_meeting_cracks(modifications), loaded_side);
+      const CrackCut cut = crack_cut(before.points, crack_path(m, tooth, loaded_side), loaded_side);
+      FaultFill fill;
+      fill.closing = cut.closing;
+      fill.outline = cut.outline;
+      fill.from = cut.closing.front().position;
+      fill.to = cut.closing.back().position;
+      fill.crack = true;
+      fill.removed = [](const Eigen::Vector2d&, double) { return false; };
+      fills.push_back(fill);
+    }
+  for (const ToothModification& m : modifications)
   {
-    if (!is_partial_width(m))
+    if (!is_partial_width(m) || !(face_width > 0.))
       continue;
     if (m.kind != ModificationKind::root_crack && !(m.width < face_width))
       throw InputError(entry(parameter, m.kind == ModificationKind::spall ? "spall width"
@@ -711,11 +822,16 @@ std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifica
     if (m.kind == ModificationKind::root_crack)
     {
       const CrackPath path = crack_path(m, nominal, loaded_side);
-      const unsigned int n = static_cast<unsigned int>(std::ceil(path.depth / crack_opening));
+      // Faces that meet: refined self-similarly with the tip size (faces 2 h_tip, tip radius
+      // 10 h_tip: the defaults give the slit's 20 µm and 0.1 mm).
+      const double tip = crack_tip_cell_size(m);
+      const double face = m.crack_contact ? 2. * tip : crack_face_size;
+      const double spacing = m.crack_contact ? 2. * face : crack_opening;
+      const unsigned int n = static_cast<unsigned int>(std::ceil(path.depth / spacing));
       for (unsigned int k = 0; k < n; ++k)
-        foci.push_back(
-            {path.start + (path.depth * k / n) * path.direction, crack_face_size, crack_opening});
-      foci.push_back({path.start + path.depth * path.direction, crack_tip_size, crack_tip_radius});
+        foci.push_back({path.start + (path.depth * k / n) * path.direction, face, spacing});
+      foci.push_back({path.start + path.depth * path.direction, tip,
+                      m.crack_contact ? 10. * tip : crack_tip_radius});
     }
   return foci;
 }

@@ -23,7 +23,14 @@
 //    faces run parallel to the crack path and meet at the tip in a 90° V. ν = 90° runs across the
 //    tooth perpendicular to its centre line; smaller ν dips towards the root (Tian 2004,
 //    Chaari et al. 2009 measure ν the same way). The slit's faces are free surfaces (an open
-//    crack: faces that close under load are not modelled).
+//    crack). With ToothModification::crack_contact (2D) the crack has no width instead: the
+//    tooth is cut along mouth → tip → the point where the ray from the tip parallel to the
+//    centre line (towards the tooth tip) leaves the outline (the tooth's outline keeps its
+//    flanks, with the mouth and that point as corners); the mesh's outline runs along that cut
+//    and the material beyond it is a fill (fault_fills, geometry/mesh_planar.h PlanarFill) sharing
+//    the cut's curves, so every quadrilateral mesh follows the crack. The mesh is then split
+//    along mouth → tip (the tip node stays shared), its two faces a frictionless contact pair
+//    of the body with itself, so they may close under compression (docs/faults.md).
 // Every kink a fault makes (spall walls, slit mouth, faces, tip) is a ProfilePoint::corner, so
 // the scene starts a new outline piece there.
 #pragma once
@@ -43,6 +50,9 @@ constexpr double crack_tip_size = 10e-6;    // m, cell size within crack_tip_rad
 constexpr double crack_tip_radius = 0.1e-3; // m
 // m, cell size along the crack faces (half the opening: two cells across the slit's width)
 constexpr double crack_face_size = 0.5 * crack_opening;
+
+// m, the cell size at a crack's tip: its crack_tip_size, or the default crack_tip_size.
+double crack_tip_cell_size(const ToothModification& crack);
 
 bool is_fault(ModificationKind kind);
 bool has_faults(const std::vector<ToothModification>& modifications);
@@ -73,7 +83,9 @@ double fault_flank_depth(const std::vector<ToothModification>& modifications,
                          const ToothProfile& nominal, double roll);
 
 // Where the mesh must be finer because of the faults (tooth frame): along a crack's faces
-// (crack_face_size) and at its tip (crack_tip_size within crack_tip_radius).
+// (crack_face_size) and at its tip (crack_tip_size within crack_tip_radius); a crack whose faces
+// meet: 2 h_tip along the faces and h_tip within 10 h_tip of the tip (h_tip =
+// crack_tip_cell_size).
 std::vector<SizeFocus> fault_foci(const std::vector<ToothModification>& modifications,
                                   const ToothProfile& nominal, int loaded_side);
 
@@ -95,10 +107,16 @@ struct FaultFill
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero(); // m
   std::vector<ProfilePoint> closing;
   std::function<bool(const Eigen::Vector2d&, double)> removed;
+  // The material beyond the cut of a crack whose faces meet (crack_contact, 2D): nothing is
+  // removed, the mesh is split along the crack (PlanarFill::crack_id), and the body is meshed
+  // with `outline`, the tooth's outline with the cut mouth → tip → end in place of `closing`.
+  bool crack = false;
+  std::vector<ProfilePoint> outline;
 };
 // Whether a fault is modelled over part of the face only (3D: a fill, else the outline extruded).
 bool is_partial_width(const ToothModification& fault);
-// The fills of the partial-width faults of `modifications` on `tooth` (as apply_faults).
+// The fills of the partial-width faults of `modifications` on `tooth` (as apply_faults; 3D,
+// face_width > 0) and of the cracks whose faces meet (2D).
 // InputError (`parameter` + "/spall width" or "/tip chipping width") for a spall or chipped corner
 // not narrower than the face.
 std::vector<FaultFill> fault_fills(const ToothProfile& tooth,

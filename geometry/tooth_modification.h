@@ -72,6 +72,10 @@ struct ToothModification
   double width = 0.;
   double width_fraction = 1.;   // -, crack: share of the face from z = 0 (1: through; 3D)
   bool parabolic_front = false; // crack (3D, partial): a parabolic front, else straight
+  // crack: true = its faces meet along the path and may close (frictionless contact between
+  // them, 2D meshes only); false = an open slit crack_opening wide whose faces never touch
+  bool crack_contact = false;
+  double crack_tip_size = 0.; // m, crack: cell size at its tip (0: crack_tip_size)
 };
 
 // Where a gear's flank meets its mate, as roll lengths ρ on this gear's involute (m).

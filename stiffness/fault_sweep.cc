@@ -174,6 +174,11 @@ FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessS
                         scene_file_stem + "_faulty_" + std::to_string(i) + ".msh");
       row.faulty_stiffness = r.mesh_stiffness;
       row.faulty_transmission_error = r.transmission_error;
+      if (!r.crack_tips.empty())
+      {
+        row.mode_one = r.crack_tips.front().mode_one;
+        row.mode_two = r.crack_tips.front().mode_two;
+      }
     }
     if (progress)
       progress("faulty position " + std::to_string(i + 1) + "/" + std::to_string(positions.size()) +

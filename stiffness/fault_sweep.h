@@ -45,6 +45,10 @@ struct FaultSweepRow
   double energy_healthy = 0.;             // N/m, potential-energy method, healthy
   double energy_faulty = 0.;              // N/m, potential-energy method, faulty (0: lost contact)
   unsigned int faulty_pairs = 0;          // -, pairs that carry with the fault
+  // Pa·m^½, K_I and K_II at the tip of a root crack whose faces meet (2D; 0 otherwise or where
+  // contact is lost): stiffness/crack_tip.h
+  double mode_one = 0.;
+  double mode_two = 0.;
 };
 
 struct FaultSweepResult

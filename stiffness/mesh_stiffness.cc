@@ -6,6 +6,7 @@
 #include "fem/parallel.h"
 #include "fem/small_strain.h"
 #include "fem/stress.h"
+#include "geometry/tooth_fault.h"
 #include "stiffness/contact_solve.h"
 
 #include <algorithm>
@@ -206,6 +207,44 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::next_torque(const double torque)
   return result;
 }
 
+namespace
+{
+// A root crack whose faces meet (geometry/tooth_fault.h), 2D: the boundary id of its first face
+// (the other is + 1) and the cell size at its tip.
+struct SceneCrack
+{
+  types::boundary_id face;
+  double tip_size; // m
+};
+
+// Those of the mesh's teeth (a crack on a tooth outside the modelled window is not meshed).
+template <int dim>
+std::vector<SceneCrack> scene_cracks(const geometry::GearPairSceneSpec& scene,
+                                     const Triangulation<dim>& triangulation)
+{
+  std::vector<SceneCrack> cracks;
+  if (dim != 2)
+    return cracks;
+  const std::vector<types::boundary_id> ids = triangulation.get_boundary_ids();
+  for (const bool wheel : {false, true})
+    for (const auto& [tooth, list] :
+         (wheel ? scene.wheel_modifications : scene.pinion_modifications).by_tooth)
+    {
+      const bool broken = std::any_of(
+          list.begin(), list.end(),
+          [](const auto& m) { return m.kind == geometry::ModificationKind::broken_tooth; });
+      for (const geometry::ToothModification& m : list)
+      {
+        const auto face = static_cast<types::boundary_id>(geometry::crack_face_id(wheel, tooth));
+        if (!broken && m.kind == geometry::ModificationKind::root_crack && m.crack_contact &&
+            std::find(ids.begin(), ids.end(), face) != ids.end())
+          cracks.push_back({face, geometry::crack_tip_cell_size(m)});
+      }
+    }
+  return cracks;
+}
+} // namespace
+
 template <int dim>
 void GearMeshStiffness<dim>::make_scene()
 {
@@ -265,6 +304,7 @@ void GearMeshStiffness<dim>::setup_problem()
         {static_cast<types::boundary_id>(geometry::pinion_flank_id(load.pair))},
         {static_cast<types::boundary_id>(geometry::wheel_flank_id(load.pair))},
         "tooth pair " + std::to_string(load.pair));
+  add_crack_pairs();
 
   Point<dim> pinion_axis, wheel_axis;
   wheel_axis[0] = wheel_axis_x(pair);
@@ -276,6 +316,16 @@ void GearMeshStiffness<dim>::setup_problem()
   problem->add_rigid_hub(geometry::scene_ids::wheel_bore, wheel_axis,
                          fem::RigidHub<dim>::Control::rotation, 0., "wheel bore");
   result.n_cells = tria.n_active_cells();
+}
+
+// A root crack whose faces meet: its faces are a contact pair of the gear with itself (with the
+// contact's μ, 0 by default: frictionless), so they close where the root is compressed.
+template <int dim>
+void GearMeshStiffness<dim>::add_crack_pairs()
+{
+  for (const SceneCrack& crack : scene_cracks(settings.scene, problem->system().triangulation()))
+    problem->add_contact_pair({crack.face}, {static_cast<types::boundary_id>(crack.face + 1)},
+                              "crack faces " + std::to_string(crack.face), true);
 }
 
 template <int dim>
@@ -302,8 +352,8 @@ void GearMeshStiffness<dim>::evaluate()
   // g_min/r_b1 (g_min the smallest initial gap of the mortar nodes; the contact solve starts
   // with those nodes closed), which is no deflection and is taken out.
   double smallest_gap = std::numeric_limits<double>::max();
-  for (const auto& pair_result : contact.pairs)
-    for (const auto& point : pair_result.points)
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k) // the tooth pairs (not crack faces)
+    for (const auto& point : contact.pairs[k].points)
       smallest_gap = std::min(smallest_gap, point.initial_gap);
   result.initial_gap = smallest_gap;
   result.pinion_rotation = pinion_hub.rotation - smallest_gap / result.pinion_base_radius;
@@ -323,6 +373,25 @@ void GearMeshStiffness<dim>::evaluate()
   result.transmission_error = r_b1 * result.pinion_rotation + result.unloaded_transmission_error;
   evaluate_pairs(contact);
   evaluate_root_stress();
+  evaluate_crack_tips();
+}
+
+template <int dim>
+void GearMeshStiffness<dim>::evaluate_crack_tips()
+{
+  result.crack_tips.clear();
+  if constexpr (dim == 2)
+  {
+    const fem::Material& m = settings.material;
+    const double modulus = settings.elasticity.model == fem::PlanarModel::plane_strain
+                               ? m.youngs_modulus / (1. - m.poisson_ratio * m.poisson_ratio)
+                               : m.youngs_modulus;
+    for (const SceneCrack& crack : scene_cracks(settings.scene, problem->system().triangulation()))
+      result.crack_tips.push_back(
+          crack_tip_factors(problem->system().get_dof_handler(), problem->system().get_mapping(),
+                            problem->solution(), crack.face, crack.face + 1, modulus,
+                            crack_fit_from * crack.tip_size, crack_fit_to * crack.tip_size));
+  }
 }
 
 template <int dim>

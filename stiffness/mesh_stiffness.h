@@ -25,6 +25,7 @@
 #include "fem/fields.h"
 #include "fem/parameters.h"
 #include "geometry/scene_gear_pair.h"
+#include "stiffness/crack_tip.h"
 #include "stiffness/face_load.h"
 
 #include <functional>
@@ -138,6 +139,9 @@ struct GearMeshStiffnessResult
   double max_contact_pressure = 0.; // Pa, over all pairs
   double pinion_root_stress = 0.;   // Pa, largest first principal stress on the pinion fillets
   double wheel_root_stress = 0.;    // Pa, the same on the wheel fillets
+  // 2D, every root crack whose faces meet (the pinion's faulty teeth, then the wheel's, by
+  // index): K_I, K_II at its tip (stiffness/crack_tip.h); empty without such cracks.
+  std::vector<CrackTipFactors> crack_tips;
   // 3D: the line load across the face width of every pair (stiffness/face_load.h) and
   // K_Hβ = peak/mean of the pairs' summed line load (-; 2D: empty and 0).
   std::vector<FaceLoadPoint> face_load;
@@ -180,6 +184,7 @@ struct GearMeshStiffnessResult
     visit("max_contact_pressure", self.max_contact_pressure);
     visit("pinion_root_stress", self.pinion_root_stress);
     visit("wheel_root_stress", self.wheel_root_stress);
+    visit("crack_tips", self.crack_tips);
     visit("face_load", self.face_load);
     visit("face_load_factor", self.face_load_factor);
     visit("dimension", self.dimension);
@@ -260,6 +265,8 @@ private:
       std::pair<typename dealii::DoFHandler<dim>::active_cell_iterator, unsigned int>>&
   fillet_faces();
   std::vector<dealii::types::global_dof_index> fillet_dofs();
+  void evaluate_crack_tips();
+  void add_crack_pairs();
   void output_results();
 
   MPI_Comm mpi_communicator;

@@ -104,6 +104,7 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
           {static_cast<types::boundary_id>(geometry::pinion_flank_id(load.pair))},
           {static_cast<types::boundary_id>(geometry::wheel_flank_id(load.pair))},
           "tooth pair " + std::to_string(load.pair));
+    add_crack_pairs();
     problem->roll(body_rotations(position));
     solve_set_up_contact_problem(*problem, result,
                                  settings.contact.warm_start ? settings.warm_start.get() : nullptr);
