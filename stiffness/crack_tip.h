@@ -10,7 +10,7 @@
 // t the crack's direction. Each pair of coincident face nodes gives an apparent K(r); the next
 // terms of the expansion make K(r) linear in r near the tip, so a straight line fitted over
 // the nodes within [fit_from, fit_to] of the tip and extrapolated to r = 0 is the result
-// (Chan, Tuba & Wilson 1970; docs/references.md §15 for the strip it is checked against).
+// (Chan, Tuba & Wilson 1970; docs/references.md §16 for the strip it is checked against).
 // Where the faces are closed Δu_n = 0: K_I comes out near zero.
 #pragma once
 

@@ -1,6 +1,6 @@
 // Stress intensity factors from the FE (stiffness/crack_tip.h) on the handbook case: an edge
 // crack of depth a in a strip of width b under bending M and tension N (per unit thickness),
-// Tada, Paris & Irwin, The Stress Analysis of Cracks Handbook (docs/references.md §15), s = a/b,
+// Tada, Paris & Irwin, The Stress Analysis of Cracks Handbook (docs/references.md §16), s = a/b,
 // t = πs/2:
 //
 //     K_I = √(πa) (σ_M F_M(s) + σ_N F_N(s)),  σ_M = 6M/b², σ_N = N/b,
