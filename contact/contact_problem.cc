@@ -59,12 +59,14 @@ void ContactProblem<dim>::add_rigid_hub(types::boundary_id boundary, const Point
 template <int dim>
 void ContactProblem<dim>::add_contact_pair(const std::vector<types::boundary_id>& slave,
                                            const std::vector<types::boundary_id>& master,
-                                           const std::string& name, bool within_one_body)
+                                           const std::string& name,
+                                           const PairingWindow<dim>& window, bool within_one_body)
 {
   Pair pair;
   pair.name = name;
   pair.slave = slave;
   pair.master = master;
+  pair.window = window;
   pair.within_one_body = within_one_body;
   pairs.push_back(std::move(pair));
 }
@@ -152,7 +154,7 @@ void ContactProblem<dim>::couple_pairs()
                                           ": a surface cannot be its own contact partner");
       std::vector<SlaveNode<dim>> coupled =
           mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
-                          parameters.search_distance, elastic.depth());
+                          parameters.search_distance, elastic.depth(), pair.window);
       pair.nodes.clear();
       for (auto& node : coupled)
         if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))
@@ -190,6 +192,22 @@ void ContactProblem<dim>::check_candidates(const Pair& pair) const
           << parameters.overlap_tolerance * 1e3 << " mm";
     throw InputError(pair.name, where.str());
   }
+}
+
+template <int dim>
+bool ContactProblem<dim>::closed_within_windows() const
+{
+  for (const auto& pair : pairs)
+    if (pair.window.radius > 0.)
+      for (unsigned int k = 0; k < pair.nodes.size(); ++k)
+      {
+        const Point<dim>& p = pair.nodes[k].node.position; // on the turned bodies
+        if (pair.memory[k].state != NodeState::open &&
+            std::hypot(p[0] - pair.window.centre[0], p[1] - pair.window.centre[1]) >
+                0.5 * pair.window.radius)
+          return false;
+      }
+  return true;
 }
 
 template <int dim>

@@ -176,11 +176,14 @@ public:
   void add_rigid_hub(dealii::types::boundary_id boundary, const dealii::Point<dim>& axis,
                      typename fem::RigidHub<dim>::Control control, double value,
                      const std::string& name);
-  // `within_one_body`: both surfaces belong to one body (the two faces of a crack), so the pair
-  // cannot hold that body; nodes the two surfaces share (a crack tip) are not coupled.
+  // `window` (radius > 0): only the surfaces near its centre are paired (contact/mortar.h,
+  // PairingWindow); check closed_within_windows() after the solve. `within_one_body`: both
+  // surfaces belong to one body (the two faces of a crack), so the pair cannot hold that
+  // body; nodes the two surfaces share (a crack tip) are not coupled.
   void add_contact_pair(const std::vector<dealii::types::boundary_id>& slave,
                         const std::vector<dealii::types::boundary_id>& master,
-                        const std::string& name, bool within_one_body = false);
+                        const std::string& name, const PairingWindow<dim>& window = {},
+                        bool within_one_body = false);
 
   // DoFs, stiffness, supports and the mortar coupling; InputError when a pair has no
   // candidates or the bodies overlap beyond the tolerance.
@@ -213,6 +216,10 @@ public:
   // bodies' own frames; the pair results (positions, forces) are in the turned frame.
   void roll(const std::vector<BodyRotation<dim>>& rotations);
   void clear_contact_pairs() { pairs.clear(); }
+  // After a solve: whether every closed node of a pair paired in a window lies within half the
+  // window's radius of its centre. When not, the contact may reach nodes the window left out:
+  // the caller pairs the whole surfaces again.
+  bool closed_within_windows() const;
   // Rolling: the boundary ids every pairing of the sweep draws from (slave and master). The
   // responses to unit loads at their DoFs are then computed once for the whole sweep (each
   // when a node there first closes) and kept across positions; surfaces outside are added
@@ -246,6 +253,7 @@ private:
   {
     std::string name;
     std::vector<dealii::types::boundary_id> slave, master;
+    PairingWindow<dim> window;    // radius 0: the whole surfaces
     bool within_one_body = false; // the two faces of a crack (add_contact_pair)
     std::vector<SlaveNode<dim>> nodes;
     std::vector<NodeMemory<dim>> memory; // contact state of each node (contact/active_set.h)

@@ -119,6 +119,50 @@ std::vector<SurfaceFace<dim>> collect_faces(const DoFHandler<dim>& dof_handler,
   return faces;
 }
 
+// m, distance of two points in the x–y plane (PairingWindow).
+template <int dim>
+double plane_distance(const Point<dim>& a, const Point<dim>& b)
+{
+  return std::hypot(a[0] - b[0], a[1] - b[1]);
+}
+
+// Restricts the faces to a window (PairingWindow) and returns, per kept slave face, whether it
+// shares a vertex with a slave face outside (its nodes are then not coupled: some of their
+// dual support lies outside). The order of the faces is kept. The master faces kept are those
+// within R + d + 3·r_max of the centre (d the search distance, r_max the largest bounding
+// radius of any face): a kept slave face (centre within R) has every candidate master face
+// (centres within r_s + r_m + d, MasterSearch) among them, and a vertex a kept master face
+// shares with a dropped one lies more than R + d + 2·r_max from the centre, farther than d from
+// every point of a kept slave face, so a projection clamped there is never paired, as before.
+template <int dim>
+std::vector<bool> restrict_to_window(const PairingWindow<dim>& window, double search_distance,
+                                     std::vector<SurfaceFace<dim>>& slaves,
+                                     std::vector<SurfaceFace<dim>>& masters)
+{
+  double largest_radius = 0.;
+  for (const auto* faces : {&slaves, &masters})
+    for (const auto& face : *faces)
+      largest_radius = std::max(largest_radius, face.radius);
+  const double master_reach = window.radius + search_distance + 3. * largest_radius;
+  masters.erase(std::remove_if(masters.begin(), masters.end(),
+                               [&](const SurfaceFace<dim>& face) {
+                                 return plane_distance(face.centre, window.centre) > master_reach;
+                               }),
+                masters.end());
+  const auto outside = [&](const SurfaceFace<dim>& face)
+  { return plane_distance(face.centre, window.centre) > window.radius; };
+  std::set<unsigned int> outside_vertices;
+  for (const auto& face : slaves)
+    if (outside(face))
+      outside_vertices.insert(face.vertex_index.begin(), face.vertex_index.end());
+  slaves.erase(std::remove_if(slaves.begin(), slaves.end(), outside), slaves.end());
+  std::vector<bool> touches_outside(slaves.size(), false);
+  for (unsigned int k = 0; k < slaves.size(); ++k)
+    for (const unsigned int v : slaves[k].vertex_index)
+      touches_outside[k] = touches_outside[k] || outside_vertices.count(v) > 0;
+  return touches_outside;
+}
+
 // The parts of a face's boundary (vertices in 2D, edges in 3D) touched by a clamped
 // projection, as sorted global vertex lists.
 template <int dim>
@@ -523,11 +567,15 @@ template <int dim>
 std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
                                             const std::vector<types::boundary_id>& slave_ids,
                                             const std::vector<types::boundary_id>& master_ids,
-                                            double search_distance, double depth)
+                                            double search_distance, double depth,
+                                            const PairingWindow<dim>& window)
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const std::vector<SurfaceFace<dim>> slaves = collect_faces(dof_handler, slave_ids);
-  const std::vector<SurfaceFace<dim>> masters = collect_faces(dof_handler, master_ids);
+  std::vector<SurfaceFace<dim>> slaves = collect_faces(dof_handler, slave_ids);
+  std::vector<SurfaceFace<dim>> masters = collect_faces(dof_handler, master_ids);
+  const std::vector<bool> touches_outside =
+      window.radius > 0. ? restrict_to_window(window, search_distance, slaves, masters)
+                         : std::vector<bool>(slaves.size(), false);
   const MasterSearch<dim> search(masters, search_distance);
 
   // A face-boundary part used by one master face only is an end (2D) or rim (3D) of the
@@ -538,8 +586,17 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
       ++part_count[part];
 
   MortarIntegrals<dim> integrals(masters);
-  for (const auto& slave : slaves)
+  std::set<types::global_dof_index> uncoupled; // window: nodes with a face outside (x DoF)
+  for (unsigned int s = 0; s < slaves.size(); ++s)
   {
+    const SurfaceFace<dim>& slave = slaves[s];
+    if (touches_outside[s])
+    {
+      for (const auto& node : face_nodes(
+               slave, face_node_indices(fe.base_element(0), slave.face_no), integrals.mapping))
+        uncoupled.insert(node.dofs[0]);
+      continue;
+    }
     const std::vector<unsigned int> candidates = search.candidates(slave);
     const SlaveFaceValues<dim> values(slave, fe.base_element(0),
                                       slave_face_quadrature(slave, masters, candidates, fe.degree));
@@ -569,7 +626,8 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
     // A node whose dual support is less than half paired lies at or beyond the end of the
     // master surface; its weights M/D would be ill-conditioned, so it is not coupled. A node
     // of both surfaces (the tip of a crack, whose two faces are the pair) has no gap to close.
-    if (acc.paired_weight >= 0.5 * acc.full_weight && acc.masters.count(dof) == 0)
+    if (acc.paired_weight >= 0.5 * acc.full_weight && uncoupled.count(dof) == 0 &&
+        acc.masters.count(dof) == 0)
       result.push_back(make_slave_node(integrals.nodes.at(dof), acc, integrals.nodes, depth));
   return result;
 }
@@ -577,9 +635,9 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
 template std::vector<SlaveNode<2>> mortar_coupling(const DoFHandler<2>&,
                                                    const std::vector<types::boundary_id>&,
                                                    const std::vector<types::boundary_id>&, double,
-                                                   double);
+                                                   double, const PairingWindow<2>&);
 template std::vector<SlaveNode<3>> mortar_coupling(const DoFHandler<3>&,
                                                    const std::vector<types::boundary_id>&,
                                                    const std::vector<types::boundary_id>&, double,
-                                                   double);
+                                                   double, const PairingWindow<3>&);
 } // namespace gearstiff::contact

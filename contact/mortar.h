@@ -46,12 +46,27 @@ struct SlaveNode
   dealii::Tensor<2, dim> slave_frame, master_frame;
 };
 
+// A pairing restricted to the surfaces near where the contact can be (rolling sweeps pair
+// long swept flanks at every position: contact/contact_problem.h). Distances are measured in
+// the x–y plane: in 3D the window is a cylinder parallel to z (a spur gear's contact lines).
+template <int dim>
+struct PairingWindow
+{
+  dealii::Point<dim> centre; // m, in the frame the pairing is made in (z ignored)
+  double radius = 0.;        // m; 0: no window, the whole surfaces are paired
+};
+
 // Couples every slave node whose dual support projects onto the master surface within
 // `search_distance` (m). `depth` is the 2D thickness (1 in 3D). Identical on every rank.
+// With a window, only the slave faces whose centres lie within its radius are paired, and a
+// slave node is coupled only when all of its faces are: every coupled node gets exactly the
+// mortar data (bit for bit) the whole surfaces would give it — the master faces kept reach far
+// enough beyond the window that each slave face meets the same candidates and no cut end of the
+// master surface is ever within the search distance —, the nodes outside are not coupled.
 template <int dim>
 std::vector<SlaveNode<dim>>
 mortar_coupling(const dealii::DoFHandler<dim>& dof_handler,
                 const std::vector<dealii::types::boundary_id>& slave_boundaries,
                 const std::vector<dealii::types::boundary_id>& master_boundaries,
-                double search_distance, double depth);
+                double search_distance, double depth, const PairingWindow<dim>& window = {});
 } // namespace gearstiff::contact

@@ -788,6 +788,11 @@ std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair,
   return pairs_in_contact(pair, position);
 }
 
+Eigen::Vector2d line_of_action_point(const kinematics::GearPairGeometry& pair, double position)
+{
+  return line_of_action(pair).at(position);
+}
+
 FlankRollRange flank_roll_range(const kinematics::GearPairGeometry& pair, const ToothProfile& tooth,
                                 bool wheel)
 {

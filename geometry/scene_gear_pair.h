@@ -173,6 +173,9 @@ void check_tooth_modifications(const GearPairSceneSpec& spec);
 // Rolling sweeps: the pairs j in contact (inside the path of contact A–E) with the reference
 // pair at ℓ (m from T1), the same rule as the scene's contact_pairs.
 std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position);
+// The point ℓ (m from T1) of the line of action in the scene frame (m; pinion centre at the
+// origin): where a pair at ℓ touches.
+Eigen::Vector2d line_of_action_point(const kinematics::GearPairGeometry& pair, double position);
 
 // The pairs j in contact at ℓ (m from T1, reference pair 0) whose loaded flanks both exist at
 // their contact point (issue 31: a broken or chipped faulty tooth drops its pair); empty: the

@@ -325,7 +325,7 @@ void GearMeshStiffness<dim>::add_crack_pairs()
 {
   for (const SceneCrack& crack : scene_cracks(settings.scene, problem->system().triangulation()))
     problem->add_contact_pair({crack.face}, {static_cast<types::boundary_id>(crack.face + 1)},
-                              "crack faces " + std::to_string(crack.face), true);
+                              "crack faces " + std::to_string(crack.face), {}, true);
 }
 
 template <int dim>

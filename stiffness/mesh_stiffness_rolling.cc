@@ -12,10 +12,84 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/timer.h>
+#include <functional>
 
 namespace gearstiff::stiffness
 {
 using namespace dealii;
+
+namespace
+{
+// R of the pairing windows (contact::PairingWindow), in transverse modules: 0.4·m_t = 1 mm for
+// the default pair. A pair at ℓ touches at its point of the line of action (at A or E, the tip
+// corners, beyond the path); its flanks are paired only within R of there. The margin: the
+// closed zone is a Hertz zone (half-width ≈ 0.1 mm at the default load, 0.2 mm at 4× it) and at
+// R the unloaded gap s²/2ρ (ρ ≤ 8 mm, the relative radius of curvature along the path) is
+// ≥ 60 µm, about ten times the loaded TE; each position checks that every closed node lies
+// within R/2 (the gap there ≥ 15 µm) and otherwise pairs the whole flanks and solves again.
+constexpr double pairing_window_modules = 0.4;
+
+// The pairs of `loads` as contact pairs of `problem` (those it had are replaced), each paired
+// only in its window (`windowed`) or along the whole flanks.
+template <int dim>
+void add_rolled_pairs(contact::ContactProblem<dim>& problem,
+                      const kinematics::GearPairGeometry& pair,
+                      const std::vector<ToothPairLoad>& loads, bool windowed)
+{
+  problem.clear_contact_pairs();
+  for (const ToothPairLoad& load : loads)
+  {
+    contact::PairingWindow<dim> window;
+    if (windowed)
+    {
+      const Eigen::Vector2d centre = geometry::line_of_action_point(
+          pair, std::clamp(load.position, pair.contact_start, pair.contact_end));
+      window.centre[0] = centre.x();
+      window.centre[1] = centre.y();
+      window.radius = pairing_window_modules * pair.transverse_module;
+    }
+    problem.add_contact_pair(
+        {static_cast<types::boundary_id>(geometry::pinion_flank_id(load.pair))},
+        {static_cast<types::boundary_id>(geometry::wheel_flank_id(load.pair))},
+        "tooth pair " + std::to_string(load.pair), window);
+  }
+}
+
+// The contact on the windowed pairing; should it reach beyond half a window, the whole flanks
+// are paired (`pair_whole_flanks`) and it is solved again from the same start.
+template <int dim>
+void solve_in_windows(contact::ContactProblem<dim>& problem, GearMeshStiffnessResult& result,
+                      std::vector<contact::ContactZone>* warm_start,
+                      const std::function<void()>& pair_whole_flanks)
+{
+  const std::vector<contact::ContactZone> start =
+      warm_start ? *warm_start : std::vector<contact::ContactZone>();
+  solve_set_up_contact_problem(problem, result, warm_start);
+  if (problem.closed_within_windows())
+    return;
+  pair_whole_flanks();
+  if (warm_start)
+    *warm_start = start;
+  solve_set_up_contact_problem(problem, result, warm_start);
+}
+
+// Every flank a position of the sweep pairs (its boundary ids): the responses at their DoFs
+// are kept for the whole sweep.
+std::vector<types::boundary_id> swept_flanks(const kinematics::GearPairGeometry& pair,
+                                             const std::vector<double>& swept)
+{
+  std::vector<types::boundary_id> flanks;
+  for (const double swept_position : swept)
+    for (const int j : geometry::gear_pairs_in_contact(pair, swept_position))
+      for (const int flank : {geometry::pinion_flank_id(j), geometry::wheel_flank_id(j)})
+      {
+        const auto id = static_cast<types::boundary_id>(flank);
+        if (std::find(flanks.begin(), flanks.end(), id) == flanks.end())
+          flanks.push_back(id);
+      }
+  return flanks;
+}
+} // namespace
 
 template <int dim>
 void GearMeshStiffness<dim>::set_candidate_pairs(double position)
@@ -64,6 +138,17 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
                          " mm lies outside the positions the mesh was refined for; the flanks "
                          "are refined only along the swept positions");
   const bool first = !problem;
+  const auto solve_rolled = [&]()
+  {
+    solve_in_windows(*problem, result,
+                     settings.contact.warm_start ? settings.warm_start.get() : nullptr,
+                     [&]()
+                     {
+                       add_rolled_pairs(*problem, pair, candidate_pairs, false);
+                       add_crack_pairs(); // add_rolled_pairs cleared them
+                       problem->roll(body_rotations(position));
+                     });
+  };
   result = GearMeshStiffnessResult();
   result.dimension = dim;
   if (first)
@@ -72,25 +157,16 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     scene_position = result.reference_position;
     set_candidate_pairs(position);
     setup_problem();
-    // Every flank a position of the sweep pairs: the responses at their DoFs are kept.
-    std::vector<types::boundary_id> flanks;
-    for (const double swept_position : swept)
-      for (const int j : geometry::gear_pairs_in_contact(pair, swept_position))
-        for (const int flank : {geometry::pinion_flank_id(j), geometry::wheel_flank_id(j)})
-        {
-          const auto id = static_cast<types::boundary_id>(flank);
-          if (std::find(flanks.begin(), flanks.end(), id) == flanks.end())
-            flanks.push_back(id);
-        }
-    problem->keep_columns_on(flanks);
+    add_rolled_pairs(*problem, pair, candidate_pairs, true);
+    add_crack_pairs(); // add_rolled_pairs cleared them
+    problem->keep_columns_on(swept_flanks(pair, swept));
     problem->roll(body_rotations(position));
     problem->setup_system(); // DoFs, K, pairing on the turned bodies
     // What a position reports (hub rotations and reactions, pair forces, fillet stresses) is
     // linear in the contact loads: the solution is completed only at the fillets (and at the
     // contact and support DoFs) from the kept unit responses, the whole field only for VTU.
     problem->complete_only_at(fillet_dofs());
-    solve_set_up_contact_problem(*problem, result, // the factorization, then the contact
-                                 settings.contact.warm_start ? settings.warm_start.get() : nullptr);
+    solve_rolled(); // the factorization, then the contact
     evaluate();
   }
   else
@@ -98,16 +174,10 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     result.pinion_base_radius = 0.5 * pair.pinion.base_diameter;
     result.wheel_base_radius = 0.5 * pair.wheel.base_diameter;
     set_candidate_pairs(position);
-    problem->clear_contact_pairs();
-    for (const ToothPairLoad& load : candidate_pairs)
-      problem->add_contact_pair(
-          {static_cast<types::boundary_id>(geometry::pinion_flank_id(load.pair))},
-          {static_cast<types::boundary_id>(geometry::wheel_flank_id(load.pair))},
-          "tooth pair " + std::to_string(load.pair));
-    add_crack_pairs();
+    add_rolled_pairs(*problem, pair, candidate_pairs, true);
+    add_crack_pairs(); // add_rolled_pairs cleared them
     problem->roll(body_rotations(position));
-    solve_set_up_contact_problem(*problem, result,
-                                 settings.contact.warm_start ? settings.warm_start.get() : nullptr);
+    solve_rolled();
     result.n_cells = problem->system().triangulation().n_active_cells();
     evaluate();
   }

@@ -138,7 +138,7 @@ StripResult bend_strip(double depth, double tip, double theta, const std::string
   problem.add_rigid_hub(right_end, dealii::Point<2>(length, 0.5 * width), Control::rotation, theta,
                         "right end");
   if (depth > 0.)
-    problem.add_contact_pair({crack_face}, {crack_face + 1}, "crack faces", true);
+    problem.add_contact_pair({crack_face}, {crack_face + 1}, "crack faces", {}, true);
   problem.run();
   StripResult r;
   r.moment = std::abs(problem.results().supports.at(1).torque);

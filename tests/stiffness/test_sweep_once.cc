@@ -37,9 +37,11 @@ double share_of(const GearMeshStiffnessResult& r, int pair)
 }
 
 // The accuracy (k 0.3 %, TE 0.05 µm, load share 0.5 %) at every position of `torque`
-// (index into the torque list; the positions when there is none).
+// (index into the torque list; the positions when there is none); k_range: the bounds of
+// k_once / k_per_position − 1.
 void compare_results(const StiffnessSweepResult& reference, const StiffnessSweepResult& rolled,
-                     const std::string& name, unsigned int torque, double k_tolerance)
+                     const std::string& name, unsigned int torque,
+                     std::pair<double, double> k_range)
 {
   const auto& expected =
       reference.by_torque.empty() ? reference.positions : reference.by_torque.at(torque);
@@ -63,7 +65,8 @@ void compare_results(const StiffnessSweepResult& reference, const StiffnessSweep
                 << dk * 100 << " %), TE " << a.transmission_error * 1e6 << " / "
                 << b.transmission_error * 1e6 << " um, share diff " << dshare << ", iterations "
                 << a.active_set_iterations << " / " << b.active_set_iterations << "\n";
-    EXPECT_NEAR(dk, 0., k_tolerance) << "position " << i;
+    EXPECT_GE(dk, k_range.first) << "position " << i;
+    EXPECT_LE(dk, k_range.second) << "position " << i;
     EXPECT_NEAR(dte, 0., 0.05e-6) << "position " << i;
     EXPECT_NEAR(dshare, 0., 5e-3) << "position " << i;
     worst_k = std::max(worst_k, std::abs(dk));
@@ -80,7 +83,7 @@ void compare_results(const StiffnessSweepResult& reference, const StiffnessSweep
 
 template <int dim = 2>
 void compare_sweeps(const GearMeshStiffnessSettings& settings, const StiffnessSweepSpec& base,
-                    const std::string& name, double k_tolerance = 3e-3)
+                    const std::string& name, std::pair<double, double> k_range = {-3e-3, 3e-3})
 {
   StiffnessSweepSpec spec = base;
   spec.mesh = SweepMesh::per_position;
@@ -93,7 +96,7 @@ void compare_sweeps(const GearMeshStiffnessSettings& settings, const StiffnessSw
     compare_results(reference, rolled,
                     settings.torques.empty() ? name
                                              : name + " T = " + std::to_string(settings.torques[t]),
-                    t, k_tolerance);
+                    t, k_range);
 }
 } // namespace
 
@@ -134,14 +137,28 @@ TEST(SweepOnce, TorqueListMatchesPerPosition)
 // positions over one base pitch, μ = 0.01, on the coarse contact size of test_lead_modification
 // (0.06 mm: each per-position solve ≈ 10 s); the bodies turn about their axes exactly as in 2D
 // (the extrusion is along them). TE and load share hold the tolerances (measured
-// 2026-11-26: |ΔTE| ≤ 0.030 µm, |Δshare| ≤ 1.0e-3); k does not: `once` is softer at every
-// position by 0.19–0.47 % (5 of 8 beyond the 0.3 %), held here to 0.5 %. One sign at
-// every position points at the discretisation, not noise: the once mesh is finer over the whole
-// of every tooth that meshes (the graded zones of its band of foci along the flanks), and a
-// finer displacement mesh is softer. Not the contact size: per position gives the same k on the
-// default 0.03 mm (386.82 against 386.83 N/µm at the first position). Which of the two is
-// nearer the converged k is not established here.
-// (2D, Q2: 0.086 %.)
+// 2026-11-26: |ΔTE| ≤ 0.030 µm, |Δshare| ≤ 1.0e-3). k: `once` is softer at every position by
+// 0.19–0.47 % (2 ranks, the test; regression: measured 2026-11-27 on 1 rank, per position / once
+// N/µm: 386.91 / 386.08, 391.17 / 389.54, 390.74 / 389.77, 388.44 / 386.81, 278.11 / 277.57, 284.04
+// / 283.44, 287.43 / 286.09, 286.66 / 286.05), and that is the per-position mesh's error, not the
+// rolling:
+//  - Both are far from the converged k on these Q1 meshes and approach it from above (a
+//    conforming displacement model is too stiff; the tooth bends through ~6 Q1 cells of the
+//    0.7 mm body size). The once mesh is finer over every meshing tooth (the graded zones of its
+//    band of foci along the flanks), hence nearer. Refinement at position 1 (all sizes × 1/√2,
+//    × 1/2, scaled_mesh): per position 391.02, 389.29, 387.44 N/µm; 16 layers 390.73 (−0.08 %).
+//  - The difference is the in-plane discretisation: the 2D plane-strain Q1 sweep on the same
+//    in-plane meshes gives once − per position = −0.22, −0.43, −0.25, −0.43, −0.20, −0.21, −0.47,
+//    −0.22 % (the 3D figures to 0.02 %), and the 2D converged k (Q2, sizes × 1/2: 395.63 N/µm at
+//    position 1, Q2 × 1 and × 1/√2 within 0.05 %) puts the Q1 k at +1.41 % (per position) and
+//    +0.98 % (once) at these sizes; the 3D per-position refinement × 1/2 drops k by 0.92 % (2D
+//    Q1: 0.96 %), so the converged 3D k at position 1 is ≈ 387.44 · 395.63 / 397.37 ≈ 385.7
+//    N/µm: per position +1.4 %, once +1.0 %.
+//  - The difference shrinks with the mesh: all sizes × 1/√2 (446k DoFs once), at the three worst
+//    positions −0.42 → −0.08 %, −0.42 → −0.16 %, −0.47 → −0.21 %; in 2D Q1 at sizes × 1/2 every
+//    position within 0.17 % (SweepOnce.Q1RefinedMatchesPerPosition).
+// So the 0.3 % is met by the converged comparison; here the sign is held (once softer,
+// nearer the converged k) with the measured spread: −0.5 % ≤ Δk ≤ 0.
 TEST(SweepOnce, ThreeDQ1MatchesPerPosition)
 {
   GearMeshStiffnessSettings settings;
@@ -156,5 +173,23 @@ TEST(SweepOnce, ThreeDQ1MatchesPerPosition)
   settings.contact.max_iterations = 150;
   StiffnessSweepSpec spec;
   spec.positions = 8;
-  compare_sweeps<3>(settings, spec, "3D Q1", 5e-3);
+  compare_sweeps<3>(settings, spec, "3D Q1", {-5e-3, 0.});
+}
+
+// The 3D pair's k difference at its contact size (ThreeDQ1MatchesPerPosition: −0.20 to −0.47 %)
+// is the in-plane Q1 discretisation, which this 2D plane-strain Q1 sweep on the same in-plane
+// sizes reproduces to 0.02 %; with every size halved (scaled_mesh: contact 0.03 mm, body
+// 0.35 mm, rim 1.4 mm, growth 0.175) the two meshes agree within the 0.3 % (regression:
+// measured 2026-11-27, −0.03 to −0.16 %, once softer at every position; 52 s on 2 ranks).
+TEST(SweepOnce, Q1RefinedMatchesPerPosition)
+{
+  GearMeshStiffnessSettings settings;
+  settings.contact.friction_coefficient = 0.01;
+  settings.elasticity.degree = 1;
+  settings.scene.mesh.contact_size = 6e-5; // m, the 3D test's (the other sizes the default's)
+  settings.scene.mesh = scaled_mesh(settings.scene.mesh, 0.5);
+  settings.contact.max_iterations = 150;
+  StiffnessSweepSpec spec;
+  spec.positions = 8;
+  compare_sweeps(settings, spec, "2D Q1 refined");
 }
