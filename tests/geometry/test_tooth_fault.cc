@@ -13,7 +13,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <deal.II/grid/tria.h>
+#include <functional>
 #include <gtest/gtest.h>
+#include <iostream>
 
 namespace
 {
@@ -280,5 +283,69 @@ TEST(ToothFault, FaultyToothOutsideTheModelIsRefused)
   spec.pinion_modifications.by_tooth[7] = {fault(ModificationKind::tip_chipping, 0.5e-3)};
   EXPECT_EQ(error_parameter([&] { write_gear_pair_scene(spec, work_file("fault_out.msh")); }),
             "Gear pair/Pinion/faulty tooth");
+}
+
+// The pinion's volume (m³) outside minus inside the z-range `removed` (half the face) in the 3D
+// scene `spec` (written to `name`). The mesh is one planar mesh extruded in layers, a partial
+// fault's fill cells left out in the layers of its range (geometry/mesh_planar.h): everything
+// but the fill cancels, and the difference is the meshed fill's area times the range's length.
+double removed_volume(const GearPairSceneSpec& spec, const std::string& name,
+                      const std::function<bool(double)>& removed)
+{
+  write_gear_pair_scene(spec, work_file(name));
+  dealii::Triangulation<3> triangulation;
+  read_mesh(triangulation, work_file(name));
+  double difference = 0.;
+  for (const auto& cell : triangulation.active_cell_iterators())
+    if (cell->material_id() == scene_ids::pinion_body)
+      difference += (removed(cell->center()[2]) ? -1. : 1.) * cell->measure();
+  return difference;
+}
+
+// Partial faults (3D) on a tooth with profile crowning (10 µm: every flank point and the tip
+// corners move): a fill is closed by the crowned tooth the fault cut, so the scene meshes (with
+// the nominal tooth its corners missed the faulty outline: refused, exit 3). A spall 50 µm deep,
+// 1 mm long, 12 mm wide (the two middle layers of 4): the pinion lacks A·w of material, A the area
+// between the crowned and the through-face spalled outlines (shoelace of the polylines); the
+// meshed fill follows splines through the same points: measured 2026-11-27 0.597616 against
+// 0.597709 mm³ (−0.016 %), tolerance 0.5 %. A chipped corner (0.5 mm over 12 mm) on the crowned
+// tooth meshes too; its removed volume is not checked here: the chipped corner's fill reads back
+// with hexahedra of negative measure, with or without profile modifications (a defect of that
+// fill's mesh found 2026-11-27, open — docs/faults.md).
+TEST(ToothFault, PartialFaultsOnAProfileModifiedTooth)
+{
+  const Pinion g = pinion();
+  ToothModification crowning;
+  crowning.kind = ModificationKind::profile_crowning;
+  crowning.amount = 10e-6;
+  GearPairSceneSpec spec;
+  spec.position = PairPosition::double_pair;
+  spec.mesh.dimension = 3;
+  spec.mesh.layers = 4;
+  spec.mesh.contact_size = 2e-4;
+  spec.mesh.fine_radius = 4e-4;
+  spec.mesh.body_size = 1e-3;
+  spec.pinion_modifications.all_teeth = {crowning};
+  const double width = 12e-3, face = 24e-3;
+  ToothModification spall = fault(ModificationKind::spall, 50e-6);
+  GearModifications through;
+  through.all_teeth = {crowning};
+  through.by_tooth[1] = {spall};
+  const ToothProfiles teeth(g.tooth, through, g.range, 1, "Gear pair/Pinion");
+  const double area =
+      enclosed_area(teeth.unfaulted_tooth(1).points) - enclosed_area(teeth.tooth(1).points);
+  spall.width = width;
+  spec.pinion_modifications.by_tooth[1] = {spall};
+  const double removed =
+      removed_volume(spec, "fault_crowned_spall.msh",
+                     [&](double z) { return std::abs(z - 0.5 * face) < 0.5 * width; });
+  std::cout << "spall on the crowned tooth: removed " << removed * 1e9 << " mm3, A·w "
+            << area * width * 1e9 << " mm3\n";
+  EXPECT_NEAR(removed / (area * width), 1., 0.005);
+
+  ToothModification corner = fault(ModificationKind::tip_chipping, 0.5e-3);
+  corner.width = width;
+  spec.pinion_modifications.by_tooth[1] = {corner};
+  EXPECT_NO_THROW(write_gear_pair_scene(spec, work_file("fault_crowned_corner.msh")));
 }
 } // namespace
