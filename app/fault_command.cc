@@ -40,6 +40,7 @@ stiffness::FaultSweepSpec faulty_tooth(const StiffnessParameters& p)
 {
   stiffness::FaultSweepSpec spec;
   spec.positions_per_pitch = p.sweep.positions;
+  spec.mesh = p.sweep.mesh;
   for (const bool wheel : {false, true})
     for (const auto& [index, list] :
          (wheel ? p.settings.scene.wheel_modifications : p.settings.scene.pinion_modifications)
@@ -57,11 +58,12 @@ stiffness::FaultSweepSpec faulty_tooth(const StiffnessParameters& p)
 
 void report_rows(Report& report, const stiffness::FaultSweepResult& r)
 {
-  auto& table = report.add_table("fault_sweep",
-                                 {"mesh_position", "healthy_stiffness", "faulty_stiffness",
-                                  "change", "energy_healthy", "energy_faulty", "energy_change",
-                                  "lost_contact", "faulty_pairs"},
-                                 {"-", "N/um", "N/um", "%", "N/um", "N/um", "%", "-", "-"});
+  auto& table =
+      report.add_table("fault_sweep",
+                       {"mesh_position", "healthy_stiffness", "faulty_stiffness", "change",
+                        "energy_healthy", "energy_faulty", "energy_change", "lost_contact",
+                        "faulty_pairs", "healthy_share", "faulty_share"},
+                       {"-", "N/um", "N/um", "%", "N/um", "N/um", "%", "-", "-", "-", "-"});
   for (const auto& row : r.rows)
   {
     const auto change = [](double faulty, double healthy)
@@ -70,7 +72,14 @@ void report_rows(Report& report, const stiffness::FaultSweepResult& r)
                    row.lost_contact ? -100. : change(row.faulty_stiffness, row.healthy_stiffness),
                    row.energy_healthy * 1e-6, row.energy_faulty * 1e-6,
                    change(row.energy_faulty, row.energy_healthy), double(row.lost_contact),
-                   double(row.faulty_pairs)});
+                   double(row.faulty_pairs), row.healthy_share, row.faulty_share});
+  }
+  if (r.crack_tip_factors) // a root crack whose faces meet: its tip's K at every position
+  {
+    auto& tip = report.add_table("crack_tip", {"mesh_position", "K_I", "K_II"},
+                                 {"-", "MPa*m^0.5", "MPa*m^0.5"});
+    for (const auto& row : r.rows)
+      tip.add_row({row.mesh_position, row.mode_one * 1e-6, row.mode_two * 1e-6});
   }
   // `gearstiff dynamics` reads this table (dynamics/stiffness_file.h): its period column states
   // the base pitches of one revolution on every row, so the CSV describes itself.
@@ -84,7 +93,7 @@ void report_rows(Report& report, const stiffness::FaultSweepResult& r)
                         double(r.period_pitches)});
 }
 
-void report_summary(Report& report, const stiffness::FaultSweepResult& r)
+void report_summary(Report& report, const stiffness::FaultSweepResult& r, stiffness::SweepMesh mesh)
 {
   double largest_drop = 0., fe_energy_spread = 0.;
   unsigned int lost = 0;
@@ -107,6 +116,10 @@ void report_summary(Report& report, const stiffness::FaultSweepResult& r)
   report.add_value("revolution_period", double(r.period_pitches), "-",
                    "base pitches in the revolution table (teeth of the faulty gear)");
   report.add_value("wall_time", r.wall_time, "s", "healthy and faulty FE sweeps, energy method");
+  const bool once = mesh == stiffness::SweepMesh::once;
+  report.add_value("sweep_mesh", once ? 1. : 0., "-",
+                   once ? "1: once (each sweep meshed and factorized once per rank and rolled)"
+                        : "0: per position (a scene, mesh and factorization per position)");
   report.add_text("revolution table",
                   "revolution_stiffness: one revolution of the faulty gear, the healthy pitch "
                   "repeated and the faulty tooth's positions; rows with lost_contact = 1 carry "
@@ -124,15 +137,21 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const auto progress = [&context](const std::string& text) { context.progress("faults", text); };
   const std::string stem = shared_scratch_directory(context.mpi_communicator) + "/fault_scene";
-  const stiffness::FaultSweepResult r =
-      p.settings.scene.mesh.dimension == 3
-          ? stiffness::fault_sweep<3>(context.mpi_communicator, p.settings, spec, stem, progress)
-          : stiffness::fault_sweep<2>(context.mpi_communicator, p.settings, spec, stem, progress);
+  const stiffness::FaultSweepResult r = with_parameter_names(
+      stiffness_parameter_names(),
+      [&]
+      {
+        return p.settings.scene.mesh.dimension == 3
+                   ? stiffness::fault_sweep<3>(context.mpi_communicator, p.settings, spec, stem,
+                                               progress)
+                   : stiffness::fault_sweep<2>(context.mpi_communicator, p.settings, spec, stem,
+                                               progress);
+      });
   if (!r.energy_failure.empty())
     context.report.add_text("energy method",
                             "not available: " + r.energy_failure + " (its columns hold 0)");
   add_pair_identity(context.report, pair);
-  report_summary(context.report, r);
+  report_summary(context.report, r, spec.mesh);
   report_rows(context.report, r);
 }
 

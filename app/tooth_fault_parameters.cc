@@ -38,9 +38,10 @@ const char* const fault_entries[][3] = {
     {"crack start", "critical section",
      "where the crack starts on the loaded flank's fillet: 'critical section' (the 30° tangent "
      "point of ISO 6336-3) or the diameter of a fillet point [mm]"},
-    {"crack faces", "open",
-     "'open': an open slit 0.04 mm wide; 'contact': a crack of no width whose faces may close "
-     "(frictionless contact between them; 2D, a 3D model keeps the open slit)"},
+    {"crack faces", "contact",
+     "'contact': a crack of no width whose faces may close (contact between them, with the "
+     "Contact section's friction coefficient; 2D, a 3D model keeps the open slit); 'open': an "
+     "open slit 0.04 mm wide"},
     {"crack tip size", "0.01",
      "cell size at the crack tip [mm] (faces in contact: 2x along "
      "the faces, the tip size within 10x of the tip)"},

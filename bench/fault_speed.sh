@@ -3,14 +3,14 @@
 # from A over ε_α = 1.5 base pitches of the split-path pair) at most 1.5 times a healthy sweep of
 # the same positions. Both are `gearstiff stiffness` sweeps, the faulty one with a 1 mm root crack
 # on pinion tooth 0 (the reference pair, in mesh throughout; its slit meshed with 20 µm cells
-# along the faces and 10 µm at the tip). `sweep mesh` (per position | once) applies to both: a
-# cracked scene rolls like a healthy one (its flanks are whole; broken, chipped or spalled teeth
-# are meshed per position). Each pair of runs is repeated `repeats` times in one sitting and the
+# along the faces and 10 µm at the tip). `sweep mesh` (automatic | per position | once) applies to
+# both: a cracked scene rolls like a healthy one (its flanks are whole), so `automatic` (the CLI
+# default) rolls both in 2D; broken, chipped or spalled teeth are meshed per position. Each pair of runs is repeated `repeats` times in one sitting and the
 # medians and the ratio of the medians printed. One rank; run under flock (both cores are shared).
-# usage: bench/fault_speed.sh [positions (64)] [sweep mesh (once)] [repeats (3)] [path/to/gearstiff]
+# usage: bench/fault_speed.sh [positions (64)] [sweep mesh (automatic)] [repeats (3)] [gearstiff]
 set -euo pipefail
 positions=${1:-64}
-mesh=${2:-once}
+mesh=${2:-automatic}
 repeats=${3:-3}
 gearstiff=${4:-$(dirname "$0")/../build/app/gearstiff}
 export OMP_NUM_THREADS=1

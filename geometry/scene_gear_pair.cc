@@ -200,8 +200,7 @@ void add_tooth_fills(const std::vector<FaultFill>& faults, int k, const Eigen::V
     }
     if (!first || !last || *first > *last)
       throw SolverFailure("gear scene fault",
-                          "a partial fault's corners are not on the outline (a partial spall or "
-                          "chipped corner on a tooth with profile modifications is not modelled)");
+                          "a partial fault's corners are not on the faulty tooth's outline");
     PlanarFill fill;
     fill.first_piece = *first;
     fill.last_piece = *last;
@@ -245,9 +244,12 @@ std::vector<BoundaryPiece> teeth_pieces(const ToothProfiles& teeth, const Eigen:
     };
     const double angle = rotation + k * tooth.angular_pitch;
     const std::size_t begin = pieces.size();
-    const ToothProfile& nominal = teeth.nominal();
-    const std::vector<FaultFill> faults = fault_fills(nominal, teeth.modifications_of(k),
-                                                      loaded_side(nominal), face_width, parameter);
+    // The fills and a crack's cut start from the tooth the fault was cut from: the
+    // profile-modified one (tip relief moves a chipped corner's and a spall's corners off the
+    // nominal flank).
+    const ToothProfile unfaulted = teeth.unfaulted_tooth(k);
+    const std::vector<FaultFill> faults = fault_fills(
+        unfaulted, teeth.modifications_of(k), loaded_side(unfaulted), face_width, parameter);
     const std::vector<ProfilePoint>* outline = &tooth.points; // a crack's cut replaces it
     for (const FaultFill& fault : faults)
       if (fault.crack)
@@ -949,15 +951,6 @@ bool has_tooth_faults(const GearModifications& modifications)
   return false;
 }
 
-bool only_root_cracks(const GearModifications& modifications)
-{
-  for (const auto& [index, list] : modifications.by_tooth)
-    for (const ToothModification& m : list)
-      if (is_fault(m.kind) && m.kind != ModificationKind::root_crack)
-        return false;
-  return true;
-}
-
 // The pairs in contact whose loaded flanks both exist at their contact point: a broken faulty
 // tooth, or one chipped where the pair would touch, drops its pair (issue 31: the other pairs
 // carry alone). None left: the mesh has lost contact there, and no stiffness exists.
@@ -990,11 +983,9 @@ void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeome
 {
   const bool faults =
       has_tooth_faults(spec.pinion_modifications) || has_tooth_faults(spec.wheel_modifications);
-  // A root crack leaves every flank whole: the pairs in contact carry at every position, and a
-  // cracked scene rolls like a healthy one (`sweep mesh = once`; the cracked tooth turns with its
-  // gear). The other faults change which pairs carry from one position to the next.
+  // A cracked scene rolls like a healthy one (`sweep mesh = once`; geometry/tooth_fault.h).
   if (faults && !spec.swept_positions.empty() &&
-      !(only_root_cracks(spec.pinion_modifications) && only_root_cracks(spec.wheel_modifications)))
+      !(flanks_whole(spec.pinion_modifications) && flanks_whole(spec.wheel_modifications)))
     throw InputError(scene_field::swept_positions,
                      "a scene with a broken, chipped or spalled tooth is meshed per position (it "
                      "changes which pairs carry from one position to the next)");

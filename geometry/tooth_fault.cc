@@ -598,6 +598,15 @@ bool has_faults(const std::vector<ToothModification>& modifications)
                      [](const ToothModification& m) { return is_fault(m.kind); });
 }
 
+bool flanks_whole(const GearModifications& modifications)
+{
+  for (const auto& [index, list] : modifications.by_tooth)
+    for (const ToothModification& m : list)
+      if (is_fault(m.kind) && m.kind != ModificationKind::root_crack)
+        return false;
+  return true;
+}
+
 std::string fault_name(ModificationKind kind)
 {
   switch (kind)

@@ -385,11 +385,13 @@ const ToothProfile& ToothProfiles::tooth(int index) const
     return found->second;
   // The profile modifications first (faults change no flank depth), then the faults cut the
   // modified outline (geometry/tooth_fault.h).
-  return built
-      .emplace(index,
-               apply_faults(modified_tooth(nominal_tooth, list, range, loaded_side, parameter),
-                            list, loaded_side))
+  return built.emplace(index, apply_faults(unfaulted_tooth(index), list, loaded_side))
       .first->second;
+}
+
+ToothProfile ToothProfiles::unfaulted_tooth(int index) const
+{
+  return modified_tooth(nominal_tooth, modifications_of(index), range, loaded_side, parameter);
 }
 
 double ToothProfiles::loaded_flank_removal(int index, double roll) const

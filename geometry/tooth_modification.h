@@ -144,6 +144,9 @@ public:
   // Tooth `index` (CCW from tooth 0 in the gear's frame), in the frame of tooth 0 (the caller
   // rotates it by index·angular_pitch).
   const ToothProfile& tooth(int index) const;
+  // Tooth `index` with its profile modifications and without its faults: the outline the faults
+  // cut (tooth() = apply_faults of it), from which a 3D partial fault's fill is closed.
+  ToothProfile unfaulted_tooth(int index) const;
   // δ (m) removed from the loaded flank of tooth `index` at roll length `roll`.
   double loaded_flank_removal(int index, double roll) const;
   const std::vector<ToothModification>& modifications_of(int index) const;

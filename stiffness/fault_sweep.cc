@@ -68,16 +68,61 @@ SweepScenes sweep_scenes(const GearMeshStiffnessSettings& settings, const FaultS
   return s;
 }
 
-template <int dim>
-GearMeshStiffnessResult solve_at(MPI_Comm mpi_communicator, GearMeshStiffnessSettings settings,
-                                 double position, double base_radius, const std::string& file)
+// The share of the load (-) pair j carries (0: not among the pairs).
+double share_of(const GearMeshStiffnessResult& result, int j)
 {
-  settings.scene.pinion_roll_angle = position / base_radius;
-  settings.scene_file = file;
-  const GearMeshStiffnessResult result = solve_on_first_rank<dim>(mpi_communicator, settings);
-  if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    std::filesystem::remove(file);
-  return result;
+  for (const ToothPairLoad& load : result.pairs)
+    if (load.pair == j)
+      return load.load_share;
+  return 0.;
+}
+
+// The FE results at `positions` (m from T1): with `once` a rolling sweep over them (they are
+// A + (i + ½)·p_bt/N, i < count: the sweep from A over count/N base pitches), else each position a
+// scene of its own on the first rank. Positions in `lost` (no pair touches) are not solved.
+template <int dim>
+std::vector<GearMeshStiffnessResult>
+solve_positions(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
+                const FaultSweepSpec& spec, const std::vector<double>& positions,
+                const std::vector<bool>& lost, const std::string& stem, const std::string& label,
+                const std::function<void(const std::string&)>& progress)
+{
+  const auto report = [&](unsigned int i, const std::string& text)
+  {
+    if (progress)
+      progress(label + " position " + std::to_string(i + 1) + "/" +
+               std::to_string(positions.size()) + ": " + text);
+  };
+  if (spec.mesh == SweepMesh::once)
+  {
+    StiffnessSweepSpec sweep;
+    sweep.start_position = -1.; // A
+    sweep.base_pitches = double(positions.size()) / spec.positions_per_pitch;
+    sweep.positions = positions.size();
+    sweep.mesh = SweepMesh::once;
+    std::function<void(const std::string&)> rolled;
+    if (progress)
+      rolled = [&](const std::string& text) { progress(label + " " + text); };
+    return stiffness_sweep<dim>(mpi_communicator, settings, sweep, stem + label, rolled).positions;
+  }
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
+  std::vector<GearMeshStiffnessResult> results(positions.size());
+  for (unsigned int i = 0; i < positions.size(); ++i)
+  {
+    if (lost[i])
+    {
+      report(i, "loss of contact");
+      continue;
+    }
+    GearMeshStiffnessSettings one = settings;
+    one.scene.pinion_roll_angle = positions[i] / (0.5 * pair.pinion.base_diameter);
+    one.scene_file = stem + "_" + label + "_" + std::to_string(i) + ".msh";
+    results[i] = solve_on_first_rank<dim>(mpi_communicator, one);
+    if (dealii::Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::filesystem::remove(one.scene_file);
+    report(i, "k " + format_number(results[i].mesh_stiffness * 1e-6, 5) + " N/µm");
+  }
+  return results;
 }
 
 void fill_revolution_table(const kinematics::GearPairGeometry& pair, const FaultSweepSpec& spec,
@@ -118,8 +163,13 @@ FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessS
   if (spec.positions_per_pitch < 1)
     throw InputError("Stiffness/sweep positions", "must be at least 1");
   const SweepScenes scenes = sweep_scenes(settings, spec);
+  if (spec.mesh == SweepMesh::once &&
+      !geometry::flanks_whole(spec.wheel ? scenes.faulty.scene.wheel_modifications
+                                         : scenes.faulty.scene.pinion_modifications))
+    throw InputError(stiffness_parameter::sweep_mesh,
+                     "once cannot roll a broken, chipped or spalled tooth (it changes which pairs "
+                     "carry from one position to the next): per position or automatic");
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
-  const double r_b1 = 0.5 * pair.pinion.base_diameter;
   const unsigned int n = spec.positions_per_pitch;
   std::vector<double> positions;
   for (unsigned int i = 0;; ++i)
@@ -142,49 +192,47 @@ FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessS
   {
     result.energy_failure = failure.what();
   }
-  std::vector<double> healthy_k, healthy_te;
-  for (unsigned int i = 0; i < n; ++i)
+  std::vector<bool> lost(positions.size());
+  std::vector<int> carrying_count(positions.size());
+  for (unsigned int i = 0; i < positions.size(); ++i)
   {
-    const GearMeshStiffnessResult r =
-        solve_at<dim>(mpi_communicator, scenes.healthy, positions[i], r_b1,
-                      scene_file_stem + "_healthy_" + std::to_string(i) + ".msh");
-    healthy_k.push_back(r.mesh_stiffness);
-    healthy_te.push_back(r.transmission_error);
-    if (progress)
-      progress("healthy position " + std::to_string(i + 1) + "/" + std::to_string(n) + ": k " +
-               format_number(r.mesh_stiffness * 1e-6, 5) + " N/µm");
+    carrying_count[i] = geometry::carrying_gear_pairs(scenes.faulty.scene, positions[i]).size();
+    lost[i] = carrying_count[i] == 0;
   }
+  const std::vector<double> healthy_positions(positions.begin(), positions.begin() + n);
+  const std::vector<GearMeshStiffnessResult> healthy =
+      solve_positions<dim>(mpi_communicator, scenes.healthy, spec, healthy_positions,
+                           std::vector<bool>(n, false), scene_file_stem, "healthy", progress);
+  const std::vector<GearMeshStiffnessResult> faulty = solve_positions<dim>(
+      mpi_communicator, scenes.faulty, spec, positions, lost, scene_file_stem, "faulty", progress);
+  std::vector<double> healthy_k;
+  for (const GearMeshStiffnessResult& r : healthy)
+    healthy_k.push_back(r.mesh_stiffness);
   for (unsigned int i = 0; i < positions.size(); ++i)
   {
     FaultSweepRow row;
     row.position = positions[i];
     row.mesh_position = (positions[i] - pair.contact_start) / pair.transverse_base_pitch;
-    row.healthy_stiffness = healthy_k[i % n];
-    row.healthy_transmission_error = healthy_te[i % n];
+    row.healthy_stiffness = healthy[i % n].mesh_stiffness;
+    row.healthy_transmission_error = healthy[i % n].transmission_error;
+    // The faulty tooth is pair i / N of the healthy pitch's scene at the same offset.
+    row.healthy_share = share_of(healthy[i % n], static_cast<int>(i / n));
     row.energy_healthy = energy_healthy[i].mesh_stiffness;
     row.energy_faulty = energy_faulty[i].lost_contact ? 0. : energy_faulty[i].mesh_stiffness;
-    const std::vector<int> carrying =
-        geometry::carrying_gear_pairs(scenes.faulty.scene, positions[i]);
-    row.faulty_pairs = carrying.size();
-    row.lost_contact = carrying.empty();
+    row.faulty_pairs = carrying_count[i];
+    row.lost_contact = lost[i];
     if (!row.lost_contact)
     {
-      const GearMeshStiffnessResult r =
-          solve_at<dim>(mpi_communicator, scenes.faulty, positions[i], r_b1,
-                        scene_file_stem + "_faulty_" + std::to_string(i) + ".msh");
-      row.faulty_stiffness = r.mesh_stiffness;
-      row.faulty_transmission_error = r.transmission_error;
-      if (!r.crack_tips.empty())
+      row.faulty_stiffness = faulty[i].mesh_stiffness;
+      row.faulty_transmission_error = faulty[i].transmission_error;
+      row.faulty_share = share_of(faulty[i], 0);
+      if (!faulty[i].crack_tips.empty())
       {
-        row.mode_one = r.crack_tips.front().mode_one;
-        row.mode_two = r.crack_tips.front().mode_two;
+        result.crack_tip_factors = true;
+        row.mode_one = faulty[i].crack_tips.front().mode_one;
+        row.mode_two = faulty[i].crack_tips.front().mode_two;
       }
     }
-    if (progress)
-      progress("faulty position " + std::to_string(i + 1) + "/" + std::to_string(positions.size()) +
-               ": " +
-               (row.lost_contact ? std::string("loss of contact")
-                                 : "k " + format_number(row.faulty_stiffness * 1e-6, 5) + " N/µm"));
     result.rows.push_back(row);
   }
   fill_revolution_table(pair, spec, healthy_k, result);

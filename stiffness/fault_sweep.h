@@ -11,12 +11,19 @@
 // the pinion angle of that row is θ_i = (A − ℓ_C)/r_b1 − f·2π/z1 + X_i·p_bt/r_b1 for pinion tooth f
 // (tooth 0 at the pitch point C at θ = 0), the wheel's f meeting pinion tooth −f.
 //
+// Meshing (spec.mesh): per position, each position a scene of its own solved on the first rank;
+// `once` (stiffness/mesh_stiffness_sweep.h), each of the two sweeps meshed and factorized once per
+// rank and rolled, the positions shared by the ranks. `once` needs every flank whole at every
+// position: a root crack (the cracked tooth turns with its gear) but not a broken, chipped or
+// spalled tooth (the scene refuses it, InputError naming Stiffness/sweep mesh).
+//
 // Loss of contact: where the faulty tooth (broken, or chipped where it would touch) would carry
 // alone, no pair touches: the row says so (lost_contact) and carries no stiffness (0 in the
 // table, never a number from a solve); where it shares, the other pairs carry alone.
 #pragma once
 
 #include "stiffness/mesh_stiffness.h"
+#include "stiffness/mesh_stiffness_sweep.h"
 #include "stiffness/potential_energy.h"
 
 #include <functional>
@@ -31,6 +38,7 @@ struct FaultSweepSpec
   unsigned int positions_per_pitch = 16; // -, N
   bool wheel = false;                    // the faulty tooth is the wheel's (else the pinion's)
   int faulty_tooth = 0;                  // -, f, in the faulty gear's own frame
+  SweepMesh mesh = SweepMesh::per_position;
 };
 
 struct FaultSweepRow
@@ -49,6 +57,10 @@ struct FaultSweepRow
   // contact is lost): stiffness/crack_tip.h
   double mode_one = 0.;
   double mode_two = 0.;
+  // -, the faulty tooth's share of the load (its pair), and the same tooth's share in the
+  // healthy pitch at the same offset (0 where contact is lost)
+  double faulty_share = 0.;
+  double healthy_share = 0.;
 };
 
 struct FaultSweepResult
@@ -60,6 +72,7 @@ struct FaultSweepResult
   std::vector<double> revolution_pinion_angle;
   std::vector<bool> revolution_lost_contact;
   unsigned int period_pitches = 0; // -, z of the faulty gear
+  bool crack_tip_factors = false;  // the rows carry K_I/K_II (a root crack whose faces meet)
   // The energy method's SolverFailure, if it failed (then every energy value is 0 and unused).
   std::string energy_failure;
   double wall_time = 0.; // s
@@ -67,7 +80,8 @@ struct FaultSweepResult
 
 // `settings.scene` holds the fault on tooth `spec.faulty_tooth` of the gear `spec.wheel` (by_tooth;
 // the other gear healthy, InputError otherwise). Positions solved one after another on the first
-// rank of the communicator (each a scene of its own), results on every rank.
+// rank of the communicator (each a scene of its own; `once`: shared by the ranks), results on
+// every rank.
 template <int dim>
 FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
                              const FaultSweepSpec& spec, const std::string& scene_file_stem,

@@ -465,7 +465,7 @@ GearMeshStiffness<dim>::fillet_faces()
 }
 
 template <int dim>
-std::vector<types::global_dof_index> GearMeshStiffness<dim>::fillet_dofs()
+std::vector<types::global_dof_index> GearMeshStiffness<dim>::reported_dofs()
 {
   std::vector<types::global_dof_index> dofs, cell_dofs;
   for (const auto& [cell, f] : fillet_faces())
@@ -474,6 +474,19 @@ std::vector<types::global_dof_index> GearMeshStiffness<dim>::fillet_dofs()
     cell->get_dof_indices(cell_dofs);
     dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
   }
+  // The crack tip's K comes from the displacements of both crack faces (evaluate_crack_tips).
+  std::set<types::boundary_id> crack_faces;
+  for (const SceneCrack& crack : scene_cracks(settings.scene, problem->system().triangulation()))
+    crack_faces.insert({crack.face, static_cast<types::boundary_id>(crack.face + 1)});
+  if (!crack_faces.empty())
+    for (const auto& cell : problem->system().get_dof_handler().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && crack_faces.count(cell->face(f)->boundary_id()) > 0)
+        {
+          cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(cell_dofs);
+          dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
+        }
   return dofs;
 }
 

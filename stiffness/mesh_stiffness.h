@@ -264,7 +264,7 @@ private:
   const std::vector<
       std::pair<typename dealii::DoFHandler<dim>::active_cell_iterator, unsigned int>>&
   fillet_faces();
-  std::vector<dealii::types::global_dof_index> fillet_dofs();
+  std::vector<dealii::types::global_dof_index> reported_dofs();
   void evaluate_crack_tips();
   void add_crack_pairs();
   void output_results();

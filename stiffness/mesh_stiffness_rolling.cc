@@ -162,10 +162,11 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     problem->keep_columns_on(swept_flanks(pair, swept));
     problem->roll(body_rotations(position));
     problem->setup_system(); // DoFs, K, pairing on the turned bodies
-    // What a position reports (hub rotations and reactions, pair forces, fillet stresses) is
-    // linear in the contact loads: the solution is completed only at the fillets (and at the
-    // contact and support DoFs) from the kept unit responses, the whole field only for VTU.
-    problem->complete_only_at(fillet_dofs());
+    // What a position reports (hub rotations and reactions, pair forces, fillet stresses, the
+    // crack tip's K from the crack faces) is linear in the contact loads: the solution is
+    // completed only at the fillets and crack faces (and at the contact and support DoFs) from
+    // the kept unit responses, the whole field only for VTU.
+    problem->complete_only_at(reported_dofs());
     solve_rolled(); // the factorization, then the contact
     evaluate();
   }

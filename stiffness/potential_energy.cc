@@ -131,22 +131,15 @@ double root_half_angle(const ToothProfile& tooth)
   return angle;
 }
 
-ToothCompliance tooth_compliance(EnergyGear& gear, int index, double roll, const Elastic& e,
-                                 unsigned int sections)
+// The beam's compliances (bending, shear, axial) of the tooth outline `tooth` loaded at `load`,
+// the loaded side ending at each crack tip's distance from the centre line above it (Tian 2004;
+// Chaari et al. 2009).
+ToothCompliance beam_compliance(const ToothProfile& tooth, const ProfilePoint& load,
+                                const std::vector<Eigen::Vector2d>& tips, const Elastic& e,
+                                unsigned int sections)
 {
-  const ToothProfile& tooth = gear.outline(index);
-  const ProfilePoint load = load_point(tooth, roll);
   const double x_c = load.position.x(), y_c = load.position.y();
   const double cos_a = load.normal.y(), sin_a = load.normal.x(); // α₁ to the centre line's normal
-  // Crack tips (tooth frame): above each, the loaded side ends at the tip's distance from the
-  // centre line (Tian 2004; Chaari et al. 2009).
-  std::vector<Eigen::Vector2d> tips;
-  for (const ToothModification& m : gear.teeth.modifications_of(index))
-    if (m.kind == ModificationKind::root_crack)
-    {
-      const geometry::CrackPath path = geometry::crack_path(m, gear.nominal, loaded);
-      tips.push_back(path.start + path.depth * path.direction);
-    }
   const double r_f = tooth.points.front().position.norm();
   const double dx = (x_c - r_f) / sections;
   ToothCompliance c;
@@ -168,6 +161,77 @@ ToothCompliance tooth_compliance(EnergyGear& gear, int index, double roll, const
     c.shear += 1.2 * cos_a * cos_a / (e.shear_modulus * area) * dx;
     c.axial += sin_a * sin_a / (e.plane_strain_modulus * area) * dx;
   }
+  return c;
+}
+
+// The crack depth (m) of `crack` at z (m from the end face z = 0) of a face of width b: a through
+// the face; over part of it (3D) a for z < f·b (straight front) or a·√(1 − z/(f·b)) (parabolic
+// front), 0 beyond (geometry/tooth_fault.h).
+double crack_depth_at(const ToothModification& crack, double z, double face_width)
+{
+  if (!geometry::is_partial_width(crack))
+    return crack.amount;
+  const double extent = crack.width_fraction * face_width;
+  if (z >= extent)
+    return 0.;
+  return crack.parabolic_front ? crack.amount * std::sqrt(1. - z / extent) : crack.amount;
+}
+
+// Bending, shear and axial compliance of tooth `index` at `load`. A crack through the face cuts
+// every section the same way; a crack over part of the face (3D) is taken by slices along the
+// face (Chen & Shao 2011, docs/references.md §17): each slice of width dz a beam with the crack
+// depth of its z, the slices side by side (their stiffnesses add: the tooth's k is the mean over
+// z of the full-width k at each slice's depth), no shear between them.
+ToothCompliance cracked_beam_compliance(EnergyGear& gear, int index, const ProfilePoint& load,
+                                        const Elastic& e, const EnergyMethodSettings& settings)
+{
+  std::vector<ToothModification> cracks;
+  bool partial = false;
+  for (const ToothModification& m : gear.teeth.modifications_of(index))
+    if (m.kind == ModificationKind::root_crack)
+    {
+      cracks.push_back(m);
+      partial = partial || geometry::is_partial_width(m);
+    }
+  const ToothProfile& tooth = gear.outline(index);
+  const unsigned int slices = partial ? settings.face_slices : 1;
+  ToothCompliance sum; // Σ over the slices of k_i²·c_i (each share c_i·k_i weighted by k_i)
+  double stiffness = 0.;
+  for (unsigned int i = 0; i < slices; ++i)
+  {
+    const double z = (i + 0.5) * e.face_width / slices;
+    std::vector<Eigen::Vector2d> tips;
+    for (const ToothModification& m : cracks)
+    {
+      const double depth = crack_depth_at(m, z, e.face_width);
+      if (depth > 0.)
+      {
+        const geometry::CrackPath path = geometry::crack_path(m, gear.nominal, loaded);
+        tips.push_back(path.start + depth * path.direction);
+      }
+    }
+    const ToothCompliance c = beam_compliance(tooth, load, tips, e, settings.sections);
+    const double k = 1. / c.total();
+    stiffness += k / slices;
+    sum.bending += k * k * c.bending;
+    sum.shear += k * k * c.shear;
+    sum.axial += k * k * c.axial;
+  }
+  // The mean stiffness k̄'s compliance 1/k̄, split as the slices' stiffness-weighted shares:
+  // Σ_i (k_i/(n·k̄))·(c_i·k_i)/k̄ sums to 1/k̄.
+  const double scale = 1. / (stiffness * stiffness * slices);
+  return {sum.bending * scale, sum.shear * scale, sum.axial * scale, 0.};
+}
+
+ToothCompliance tooth_compliance(EnergyGear& gear, int index, double roll, const Elastic& e,
+                                 const EnergyMethodSettings& settings)
+{
+  const ToothProfile& tooth = gear.outline(index);
+  const ProfilePoint load = load_point(tooth, roll);
+  const double x_c = load.position.x(), y_c = load.position.y();
+  const double cos_a = load.normal.y(), sin_a = load.normal.x();
+  const double r_f = tooth.points.front().position.norm();
+  ToothCompliance c = cracked_beam_compliance(gear, index, load, e, settings);
   // Fillet foundation, Sainsot et al. 2004 (of the nominal tooth's root).
   const double theta_f = root_half_angle(gear.nominal);
   const double s_f = 2. * r_f * std::sin(theta_f);
@@ -241,8 +305,8 @@ std::vector<EnergyPosition> energy_mesh_stiffness(const geometry::GearPairSceneS
       p.hertz = M_PI * e.hertz_modulus * e.face_width / 4.; // Yang & Lin 1987
       if (p.carries)
       {
-        p.pinion = tooth_compliance(pinion, j, p.position, e, settings.sections);
-        p.wheel = tooth_compliance(wheel, -j, roll_wheel, e, settings.sections);
+        p.pinion = tooth_compliance(pinion, j, p.position, e, settings);
+        p.wheel = tooth_compliance(wheel, -j, roll_wheel, e, settings);
         p.stiffness = 1. / (1. / p.hertz + p.pinion.total() + p.wheel.total());
         result.mesh_stiffness += p.stiffness;
         result.lost_contact = false;

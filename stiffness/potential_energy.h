@@ -23,11 +23,15 @@
 // not from the idealised involute-to-base-circle tooth of Tian; a root crack reduces the loaded
 // side's half height h₁ above the crack tip's section to the tip's distance from the centre line
 // (the crack-shadow rule of Tian 2004 and Chaari et al. 2009); the foundation term is that of
-// the healthy tooth (as in both papers). A through-face spall under the contact point and a
-// broken or chipped flank carry nothing (the pair's k = 0): where no pair carries, the mesh has
-// lost contact and no stiffness is returned. E' = E/(1 − ν²): the FE beside it is plane strain,
-// and so are wide spur teeth (b ≫ tooth thickness).
-// Sources: docs/references.md §13.
+// the healthy tooth (as in both papers). A crack over part of the face (3D: crack width
+// fraction, parabolic front) is taken by slices along the face (Chen & Shao 2011): the tooth's
+// bending, shear and axial stiffness is the mean over the face of that of the full-width tooth
+// with each slice's crack depth (slices side by side, no shear between them; against the 3D FE in
+// docs/faults.md). A through-face spall
+// under the contact point and a broken or chipped flank carry nothing (the pair's k = 0): where no
+// pair carries, the mesh has lost contact and no stiffness is returned. E' = E/(1 − ν²): the FE
+// beside it is plane strain, and so are wide spur teeth (b ≫ tooth thickness). Sources:
+// docs/references.md §13.
 #pragma once
 
 #include "geometry/scene_gear_pair.h"
@@ -38,7 +42,8 @@ namespace gearstiff::stiffness
 {
 struct EnergyMethodSettings
 {
-  unsigned int sections = 400; // -, midpoint sections from the root circle to the load point
+  unsigned int sections = 400;   // -, midpoint sections from the root circle to the load point
+  unsigned int face_slices = 48; // -, midpoint slices across the face of a partial crack
 };
 
 // One tooth at one contact point: compliances (m/N) of a face width b.
