@@ -152,6 +152,19 @@ void fill_revolution_table(const kinematics::GearPairGeometry& pair, const Fault
     }
   }
 }
+// The middles of N equal intervals per base pitch along the whole path of contact [m]: the
+// positions where the faulty tooth meshes.
+std::vector<double> path_positions(const kinematics::GearPairGeometry& pair, unsigned int n)
+{
+  std::vector<double> positions;
+  for (unsigned int i = 0;; ++i)
+  {
+    const double position = pair.contact_start + (i + 0.5) * pair.transverse_base_pitch / n;
+    if (position >= pair.contact_end)
+      return positions;
+    positions.push_back(position);
+  }
+}
 } // namespace
 
 template <int dim>
@@ -171,14 +184,7 @@ FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessS
                      "carry from one position to the next): per position or automatic");
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
   const unsigned int n = spec.positions_per_pitch;
-  std::vector<double> positions;
-  for (unsigned int i = 0;; ++i)
-  {
-    const double position = pair.contact_start + (i + 0.5) * pair.transverse_base_pitch / n;
-    if (position >= pair.contact_end)
-      break;
-    positions.push_back(position);
-  }
+  const std::vector<double> positions = path_positions(pair, n);
   FaultSweepResult result;
   // The energy method beside the FE: where its section rule has no material left (a crack
   // past the centre line under a thin tip), it fails and the FE rows stand alone.
