@@ -91,7 +91,8 @@ void declare_stiffness_parameters(ParameterHandler& prm)
       "stays whole) or without the direct solver's Schur complement. "
       "In 2D once meets the accuracy of per position (k within 0.3 %, TE 0.05 µm, load share "
       "0.5 %: external and internal pairs, μ = 0.01, a torque list, 2 MPI ranks) at ~0.08 s a "
-      "position after ~5 s once; in 3D that accuracy has not yet been shown (issue 28)");
+      "position after ~5 s once; in 3D once is within 0.5 % of per position, nearer the "
+      "converged k, but not faster (docs: bench/contact_speed.md), so 3D stays per position");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
