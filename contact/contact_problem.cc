@@ -203,8 +203,7 @@ bool ContactProblem<dim>::closed_within_windows() const
       {
         const Point<dim>& p = pair.nodes[k].node.position; // on the turned bodies
         if (pair.memory[k].state != NodeState::open &&
-            std::hypot(p[0] - pair.window.centre[0], p[1] - pair.window.centre[1]) >
-                0.5 * pair.window.radius)
+            pair.window.distance(p) > 0.5 * pair.window.radius)
           return false;
       }
   return true;

@@ -119,13 +119,6 @@ std::vector<SurfaceFace<dim>> collect_faces(const DoFHandler<dim>& dof_handler,
   return faces;
 }
 
-// m, distance of two points in the x–y plane (PairingWindow).
-template <int dim>
-double plane_distance(const Point<dim>& a, const Point<dim>& b)
-{
-  return std::hypot(a[0] - b[0], a[1] - b[1]);
-}
-
 // Restricts the faces to a window (PairingWindow) and returns, per kept slave face, whether it
 // shares a vertex with a slave face outside (its nodes are then not coupled: some of their
 // dual support lies outside). The order of the faces is kept. The master faces kept are those
@@ -145,12 +138,11 @@ std::vector<bool> restrict_to_window(const PairingWindow<dim>& window, double se
       largest_radius = std::max(largest_radius, face.radius);
   const double master_reach = window.radius + search_distance + 3. * largest_radius;
   masters.erase(std::remove_if(masters.begin(), masters.end(),
-                               [&](const SurfaceFace<dim>& face) {
-                                 return plane_distance(face.centre, window.centre) > master_reach;
-                               }),
+                               [&](const SurfaceFace<dim>& face)
+                               { return window.distance(face.centre) > master_reach; }),
                 masters.end());
   const auto outside = [&](const SurfaceFace<dim>& face)
-  { return plane_distance(face.centre, window.centre) > window.radius; };
+  { return window.distance(face.centre) > window.radius; };
   std::set<unsigned int> outside_vertices;
   for (const auto& face : slaves)
     if (outside(face))

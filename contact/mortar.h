@@ -16,6 +16,7 @@
 
 #include "fem/elastic_system.h"
 
+#include <cmath>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <vector>
@@ -54,6 +55,12 @@ struct PairingWindow
 {
   dealii::Point<dim> centre; // m, in the frame the pairing is made in (z ignored)
   double radius = 0.;        // m; 0: no window, the whole surfaces are paired
+
+  // m, distance of p from the centre in the x–y plane
+  double distance(const dealii::Point<dim>& p) const
+  {
+    return std::hypot(p[0] - centre[0], p[1] - centre[1]);
+  }
 };
 
 // Couples every slave node whose dual support projects onto the master surface within
