@@ -31,6 +31,7 @@ struct SurfaceFace
   std::vector<unsigned int> vertex_index; // global vertex numbers
   Point<dim> centre;
   double radius;          // m, bounding sphere about centre
+  Point<dim> low, high;   // m, the box of the vertices (it holds the face)
   Tensor<1, dim> outward; // approximate outward direction (from the cell centre)
 };
 
@@ -114,6 +115,13 @@ std::vector<SurfaceFace<dim>> collect_faces(const DoFHandler<dim>& dof_handler,
         for (const auto& p : face.vertices)
           face.radius = std::max(face.radius, face.centre.distance(p));
         face.outward = face.centre - cell->center();
+        face.low = face.high = face.vertices.front();
+        for (const auto& p : face.vertices)
+          for (unsigned int c = 0; c < dim; ++c)
+          {
+            face.low[c] = std::min(face.low[c], p[c]);
+            face.high[c] = std::max(face.high[c], p[c]);
+          }
         faces.push_back(face);
       }
   return faces;
@@ -404,19 +412,39 @@ struct SlaveFaceValues
   }
 };
 
+// The distance from p to the box of a face's vertices: no point of the face is nearer.
+template <int dim>
+double box_distance(const SurfaceFace<dim>& face, const Point<dim>& p)
+{
+  double squared = 0.;
+  for (unsigned int c = 0; c < dim; ++c)
+  {
+    const double outside = std::max({face.low[c] - p[c], p[c] - face.high[c], 0.});
+    squared += outside * outside;
+  }
+  return std::sqrt(squared);
+}
+
 // The closest point to p on the candidate master faces; `beyond_surface` when it was clamped to
 // an end (2D) or rim (3D) of the master surface, i.e. to a face-boundary part that only one
-// master face uses (`part_count`).
+// master face uses (`part_count`). Not found when every candidate lies farther than `reach`
+// (m, the search distance: such a point is not paired either way).
 template <int dim>
 Projection project(const Point<dim>& p, const std::vector<SurfaceFace<dim>>& masters,
                    const std::vector<unsigned int>& candidates,
                    const std::map<std::vector<unsigned int>, unsigned int>& part_count,
-                   Point<dim>& best_point)
+                   double reach, Point<dim>& best_point)
 {
   Projection best;
   std::vector<unsigned int> clamped;
   for (const unsigned int m : candidates)
   {
+    // A face whose box lies farther than the best distance so far (or than `reach`) cannot be
+    // taken: skipped unprojected (1e-12 m is far above the rounding of the distances), the
+    // result is the same. In 3D the candidates by bounding spheres are many: faces are slivers
+    // (a contact size across the profile, a layer along the face width).
+    if (box_distance(masters[m], p) > std::min(best.distance, reach) + 1e-12)
+      continue;
     const Point<dim - 1> xi = closest_point(masters[m], p, clamped);
     const Point<dim> x = interpolate<dim>(masters[m].vertices, xi);
     const double distance = x.distance(p);
@@ -604,8 +632,8 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
           integrals.accumulators[nodes[i].dofs[0]].normal[c] +=
               values.shape[q][i] * values.normals[q][c] * values.JxW[q];
       Point<dim> master_point;
-      const Projection best =
-          project(values.positions[q], masters, candidates, part_count, master_point);
+      const Projection best = project(values.positions[q], masters, candidates, part_count,
+                                      search_distance, master_point);
       if (!best.found || best.beyond_surface || best.distance > search_distance)
         continue;
       integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q], values.positions[q],
