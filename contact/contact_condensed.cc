@@ -13,6 +13,13 @@ namespace gearstiff::contact
 {
 using namespace dealii;
 
+namespace
+{
+// Bounded memory of the kept unit responses of a rolling sweep (a 3D flank set holds many rows,
+// 28k on the default 3D Q1 pair): past this, those unused the longest are dropped.
+constexpr std::size_t max_kept_values = 60'000'000; // 480 MB
+} // namespace
+
 template <int dim>
 void ContactProblem<dim>::complete_solution(Vector<double>& residual, bool whole)
 {
@@ -263,7 +270,9 @@ void ContactProblem<dim>::map_unit_rows(Condensed& c) const
                    std::back_inserter(merged));
     c.unit_rows = std::move(merged);
     c.unit_columns.clear();
+    c.unit_column_use.clear();
   }
+  ++c.pairing;
   c.unit_row_of.resize(c.dofs.size());
   for (unsigned int i = 0; i < c.dofs.size(); ++i)
     c.unit_row_of[i] =
@@ -271,12 +280,32 @@ void ContactProblem<dim>::map_unit_rows(Condensed& c) const
 }
 
 template <int dim>
+void ContactProblem<dim>::make_room_for_columns(Condensed& c, std::size_t n_new) const
+{
+  // Drops the kept responses of earlier pairings, those unused the longest first, until the
+  // new ones fit in max_kept_values (or none of an earlier pairing is left: the current
+  // pairing's loads need theirs, and complete_at_kept_rows reads them after the last solve).
+  // The rolling positions of one rank follow each other (stiffness::stiffness_sweep), so the
+  // responses of the nearest earlier positions, the ones the next pairing shares, stay.
+  std::vector<std::pair<unsigned int, types::global_dof_index>> earlier; // (pairing, DoF)
+  for (const auto& [dof, column] : c.unit_columns)
+    if (const unsigned int used = c.unit_column_use.at(dof); used < c.pairing)
+      earlier.emplace_back(used, dof);
+  std::sort(earlier.begin(), earlier.end());
+  for (const auto& [used, dof] : earlier)
+  {
+    if ((c.unit_columns.size() + n_new) * c.unit_rows.size() <= max_kept_values)
+      break;
+    c.unit_columns.erase(dof);
+    c.unit_column_use.erase(dof);
+  }
+}
+
+template <int dim>
 std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
     const std::vector<std::vector<std::pair<types::global_dof_index, double>>>& loads)
 {
   Condensed& c = *condensed;
-  // Bounded memory (a 3D flank set holds many rows): past this, the kept responses start anew.
-  constexpr std::size_t max_kept_values = 60'000'000; // 480 MB
   std::vector<types::global_dof_index> missing;
   for (const auto& load : loads)
     for (const auto& [dof, weight] : load)
@@ -284,16 +313,11 @@ std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
         missing.push_back(dof);
   std::sort(missing.begin(), missing.end());
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+  for (const auto& load : loads)
+    for (const auto& [dof, weight] : load)
+      c.unit_column_use[dof] = c.pairing;
   if ((c.unit_columns.size() + missing.size()) * c.unit_rows.size() > max_kept_values)
-  {
-    c.unit_columns.clear();
-    missing.clear();
-    for (const auto& load : loads)
-      for (const auto& [dof, weight] : load)
-        missing.push_back(dof);
-    std::sort(missing.begin(), missing.end());
-    missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
-  }
+    make_room_for_columns(c, missing.size());
   if (!missing.empty())
   {
     std::vector<fem::SparseLoad> units;

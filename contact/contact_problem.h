@@ -294,6 +294,7 @@ private:
   std::vector<dealii::types::global_dof_index>
   surface_dofs(const std::vector<dealii::types::boundary_id>& ids) const;
   void map_unit_rows(Condensed& c) const;
+  void make_room_for_columns(Condensed& c, std::size_t n_new) const;
   std::vector<std::vector<double>> rolling_columns(
       const std::vector<std::vector<std::pair<dealii::types::global_dof_index, double>>>& loads);
 

@@ -169,41 +169,53 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   rolling.scene_file = scene_file_stem + "_once_" + std::to_string(rank) + ".msh";
   std::unique_ptr<GearMeshStiffness<dim>> analysis;
 
-  // Each rank takes the next unsolved position as soon as it is free (fem::distribute_items);
-  // a failure stops every rank within about one contact iteration, and the first failing
-  // position decides what every rank throws.
+  // Each rank takes the next unsolved item as soon as it is free (fem::distribute_items); a
+  // failure stops every rank within about one contact iteration, and the first failing
+  // position decides what every rank throws. An item is one position, or with `once` a block of
+  // neighbouring positions (2 blocks per rank): a rank then rolls by one step at a time, and
+  // the unit responses of a position's contact zone serve its neighbour's too, which overlaps
+  // it (3D Q1, 32 positions: see bench/contact_speed.md).
   if (!settings.torques.empty())
     check_torque_list(settings.torques);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+  const unsigned int block =
+      spec.mesh == SweepMesh::once ? std::max(1u, (n + 2 * n_ranks - 1) / (2 * n_ranks)) : 1;
   std::vector<std::pair<unsigned int, std::vector<GearMeshStiffnessResult>>> mine;
-  fem::distribute_items(
-      mpi_communicator, n,
-      [&](const unsigned int i)
-      {
-        const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
-                                  format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
-        const std::vector<GearMeshStiffnessResult> all =
-            spec.mesh == SweepMesh::once
-                ? roll_position(analysis, rolling, positions[i], Utilities::int_to_string(i, 3),
-                                where)
-                : solve_position_torques<dim>(warm, positions[i] / r_b1,
-                                              Utilities::int_to_string(i, 3), scene_file_stem,
-                                              where);
-        const GearMeshStiffnessResult& r = all.front();
-        mine.emplace_back(i, all);
-        if (progress)
-          progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
-                   format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
-                   "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
-                   std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
-                   " s" +
-                   (spec.mesh == SweepMesh::once
-                        ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
-                              format_number(r.setup_time, 3) + " s, contact " +
-                              format_number(r.solve_time, 3) + " s)"
-                        : std::string()) +
-                   " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) +
-                   " solved]");
-      });
+  const auto solve_position = [&](const unsigned int i)
+  {
+    const std::string where = "sweep position " + std::to_string(i + 1) + " (roll angle " +
+                              format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
+    const std::vector<GearMeshStiffnessResult> all =
+        spec.mesh == SweepMesh::once
+            ? roll_position(analysis, rolling, positions[i], Utilities::int_to_string(i, 3), where)
+            : solve_position_torques<dim>(warm, positions[i] / r_b1, Utilities::int_to_string(i, 3),
+                                          scene_file_stem, where);
+    const GearMeshStiffnessResult& r = all.front();
+    mine.emplace_back(i, all);
+    if (progress)
+      progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
+               format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
+               "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
+               std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
+               " s" +
+               (spec.mesh == SweepMesh::once
+                    ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
+                          format_number(r.setup_time, 3) + " s, contact " +
+                          format_number(r.solve_time, 3) + " s)"
+                    : std::string()) +
+               " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) + " solved]");
+  };
+  fem::distribute_items(mpi_communicator, (n + block - 1) / block,
+                        [&](const unsigned int item)
+                        {
+                          for (unsigned int i = item * block; i < std::min(n, (item + 1) * block);
+                               ++i)
+                          {
+                            if (i > item * block)
+                              fem::interruption_point();
+                            solve_position(i);
+                          }
+                        });
 
   if (spec.mesh == SweepMesh::once)
     std::filesystem::remove(rolling.scene_file);
