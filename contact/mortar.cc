@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/full_matrix.h>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -415,8 +416,18 @@ Projection project(const Point<dim>& p, const std::vector<SurfaceFace<dim>>& mas
 {
   Projection best;
   std::vector<unsigned int> clamped;
+  // A face lies within its bounding sphere, so its closest point is at least |p − c| − r from p
+  // and at most |p − c| + r. A face whose least distance exceeds another's greatest cannot be
+  // the closest and is not projected on (the margin covers rounding): the same face is found,
+  // first of equals in the candidates' order, as by projecting on every candidate.
+  double nearest_bound = std::numeric_limits<double>::max();
+  for (const unsigned int m : candidates)
+    nearest_bound = std::min(nearest_bound, p.distance(masters[m].centre) + masters[m].radius);
+  const double skip_beyond = nearest_bound * (1. + 1e-9) + 1e-15;
   for (const unsigned int m : candidates)
   {
+    if (p.distance(masters[m].centre) - masters[m].radius > skip_beyond)
+      continue;
     const Point<dim - 1> xi = closest_point(masters[m], p, clamped);
     const Point<dim> x = interpolate<dim>(masters[m].vertices, xi);
     const double distance = x.distance(p);
