@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/full_matrix.h>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -437,13 +438,18 @@ Projection project(const Point<dim>& p, const std::vector<SurfaceFace<dim>>& mas
 {
   Projection best;
   std::vector<unsigned int> clamped;
+  // A face lies within its bounding sphere, so the nearest face is at most
+  // min over candidates of |p − c| + r from p (`nearest_bound`); a face whose vertex box lies
+  // farther than that, than the best distance so far or than `reach` cannot be taken: skipped
+  // unprojected (1e-12 m is far above the rounding of the distances), the same face is found,
+  // first of equals in the candidates' order. In 3D the candidates by bounding spheres are many:
+  // faces are slivers (a contact size across the profile, a layer along the face width).
+  double nearest_bound = reach;
+  for (const unsigned int m : candidates)
+    nearest_bound = std::min(nearest_bound, p.distance(masters[m].centre) + masters[m].radius);
   for (const unsigned int m : candidates)
   {
-    // A face whose box lies farther than the best distance so far (or than `reach`) cannot be
-    // taken: skipped unprojected (1e-12 m is far above the rounding of the distances), the
-    // result is the same. In 3D the candidates by bounding spheres are many: faces are slivers
-    // (a contact size across the profile, a layer along the face width).
-    if (box_distance(masters[m], p) > std::min(best.distance, reach) + 1e-12)
+    if (box_distance(masters[m], p) > std::min(best.distance, nearest_bound) + 1e-12)
       continue;
     const Point<dim - 1> xi = closest_point(masters[m], p, clamped);
     const Point<dim> x = interpolate<dim>(masters[m].vertices, xi);

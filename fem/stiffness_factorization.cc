@@ -526,6 +526,12 @@ StiffnessFactorization<dim>::responses(const std::vector<SparseLoad>& loads,
   { return std::lower_bound(targets.begin(), targets.end(), dof) - targets.begin(); };
   const std::vector<double> inverse = impl->inverse_entries(targets, needed);
   solves += loads.size();
+  // Each row's value from the needed ones (position in `needed`, weight), found once for all
+  // loads.
+  std::vector<std::vector<std::pair<unsigned int, double>>> row_terms(rows.size());
+  for (unsigned int r = 0; r < rows.size(); ++r)
+    for (const auto& [target, weight] : impl->condensed_targets(rows[r]))
+      row_terms[r].emplace_back(position(target), weight);
   std::vector<double> at_needed(needed.size());
   for (unsigned int j = 0; j < loads.size(); ++j)
   {
@@ -538,8 +544,8 @@ StiffnessFactorization<dim>::responses(const std::vector<SparseLoad>& loads,
           at_needed[i] += weight * value * column[i];
       }
     for (unsigned int r = 0; r < rows.size(); ++r)
-      for (const auto& [target, weight] : impl->condensed_targets(rows[r]))
-        result[j][r] += weight * at_needed[position(target)];
+      for (const auto& [k, weight] : row_terms[r])
+        result[j][r] += weight * at_needed[k];
   }
   return result;
 }
