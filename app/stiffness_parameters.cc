@@ -90,9 +90,11 @@ void declare_stiffness_parameters(ParameterHandler& prm)
       "and for scenes with a broken, chipped or spalled tooth (root cracks roll: every flank "
       "stays whole) or without the direct solver's Schur complement. "
       "In 2D once meets the accuracy of per position (k within 0.3 %, TE 0.05 µm, load share "
-      "0.5 %: external and internal pairs, μ = 0.01, a torque list, 2 MPI ranks) at ~0.08 s a "
-      "position after ~5 s once; in 3D once is within 0.5 % of per position, nearer the "
-      "converged k, but not faster (docs: bench/contact_speed.md), so 3D stays per position");
+      "0.5 %: external and internal pairs, μ = 0.01, a torque list, 2 MPI ranks) at ~0.04 s a "
+      "position after ~3-4 s once (default pair, 128 positions, 1 rank: ~9 s, 16x faster than "
+      "per position); in 3D once is within 0.5 % of per position, nearer the converged k, but "
+      "only ~1.2x faster for 2.6x the memory (docs: bench/contact_speed.md), so 3D stays per "
+      "position");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
