@@ -353,7 +353,12 @@ std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
       units.push_back({{dof, 1.}});
     std::vector<std::vector<double>> responses = c.factorization->responses(units, c.unit_rows);
     for (unsigned int j = 0; j < missing.size(); ++j)
+    {
       c.unit_columns.emplace(missing[j], std::move(responses[j]));
+      // A prefetched column counts as used when fetched: make_room_for_columns reads the mark
+      // of every kept column.
+      c.unit_column_use.emplace(missing[j], c.pairing);
+    }
   }
   std::vector<std::vector<double>> columns(loads.size(), std::vector<double>(c.dofs.size(), 0.));
   for (unsigned int j = 0; j < loads.size(); ++j)
