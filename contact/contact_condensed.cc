@@ -81,7 +81,7 @@ bool ContactProblem<dim>::complete_at_kept_rows(Vector<double>& residual)
       const auto unit = c.unit_columns.find(i);
       if (unit == c.unit_columns.end())
         return false;
-      loaded.emplace_back(&unit->second, c.contact_load[i]);
+      loaded.emplace_back(&unit->second.values, c.contact_load[i]);
     }
   std::vector<double> rows(c.unit_rows.size());
   const Vector<double>& particular = c.factorization->particular_solution();
@@ -294,7 +294,6 @@ void ContactProblem<dim>::map_unit_rows(Condensed& c) const
                    std::back_inserter(merged));
     c.unit_rows = std::move(merged);
     c.unit_columns.clear();
-    c.unit_column_use.clear();
   }
   ++c.pairing;
   c.unit_row_of.resize(c.dofs.size());
@@ -312,16 +311,15 @@ void ContactProblem<dim>::make_room_for_columns(Condensed& c, std::size_t n_new)
   // The rolling positions of one rank follow each other (stiffness::stiffness_sweep), so the
   // responses of the nearest earlier positions, the ones the next pairing shares, stay.
   std::vector<std::pair<unsigned int, types::global_dof_index>> earlier; // (pairing, DoF)
-  for (const auto& [dof, column] : c.unit_columns)
-    if (const unsigned int used = c.unit_column_use.at(dof); used < c.pairing)
-      earlier.emplace_back(used, dof);
+  for (const auto& [dof, kept] : c.unit_columns)
+    if (kept.last_use < c.pairing)
+      earlier.emplace_back(kept.last_use, dof);
   std::sort(earlier.begin(), earlier.end());
   for (const auto& [used, dof] : earlier)
   {
     if ((c.unit_columns.size() + n_new) * c.unit_rows.size() <= max_kept_values)
       break;
     c.unit_columns.erase(dof);
-    c.unit_column_use.erase(dof);
   }
 }
 
@@ -330,10 +328,14 @@ std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
     const std::vector<std::vector<std::pair<types::global_dof_index, double>>>& loads)
 {
   Condensed& c = *condensed;
+  // The current loads' kept responses are marked used (make_room_for_columns keeps them); the
+  // others are computed below, marked used too.
   std::vector<types::global_dof_index> missing;
   for (const auto& load : loads)
     for (const auto& [dof, weight] : load)
-      if (c.unit_columns.find(dof) == c.unit_columns.end())
+      if (const auto kept = c.unit_columns.find(dof); kept != c.unit_columns.end())
+        kept->second.last_use = c.pairing;
+      else
         missing.push_back(dof);
   if (!missing.empty())
     for (const types::global_dof_index dof : window_prefetch<dim>(pairs))
@@ -341,9 +343,6 @@ std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
         missing.push_back(dof);
   std::sort(missing.begin(), missing.end());
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
-  for (const auto& load : loads)
-    for (const auto& [dof, weight] : load)
-      c.unit_column_use[dof] = c.pairing;
   if ((c.unit_columns.size() + missing.size()) * c.unit_rows.size() > max_kept_values)
     make_room_for_columns(c, missing.size());
   if (!missing.empty())
@@ -353,18 +352,14 @@ std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
       units.push_back({{dof, 1.}});
     std::vector<std::vector<double>> responses = c.factorization->responses(units, c.unit_rows);
     for (unsigned int j = 0; j < missing.size(); ++j)
-    {
-      c.unit_columns.emplace(missing[j], std::move(responses[j]));
-      // A prefetched column counts as used when fetched: make_room_for_columns reads the mark
-      // of every kept column.
-      c.unit_column_use.emplace(missing[j], c.pairing);
-    }
+      c.unit_columns.emplace(missing[j],
+                             typename Condensed::KeptResponse{std::move(responses[j]), c.pairing});
   }
   std::vector<std::vector<double>> columns(loads.size(), std::vector<double>(c.dofs.size(), 0.));
   for (unsigned int j = 0; j < loads.size(); ++j)
     for (const auto& [dof, weight] : loads[j])
     {
-      const std::vector<double>& unit = c.unit_columns.at(dof);
+      const std::vector<double>& unit = c.unit_columns.at(dof).values;
       for (unsigned int i = 0; i < c.dofs.size(); ++i)
         columns[j][i] += weight * unit[c.unit_row_of[i]];
     }

@@ -111,11 +111,15 @@ struct ContactProblem<dim>::Condensed
   // may use (`unit_rows`, sorted: ContactProblem::keep_columns_on, extended by the current
   // pairs' surfaces when they fall outside). A node's column is then a weighted sum of these.
   std::vector<dealii::types::global_dof_index> unit_rows;
-  std::unordered_map<dealii::types::global_dof_index, std::vector<double>> unit_columns; // m/N
+  struct KeptResponse
+  {
+    std::vector<double> values; // m/N, at unit_rows
+    // The pairing (counted by map_unit_rows) that last used it: past the memory bound, those
+    // unused the longest are dropped first (ContactProblem::make_room_for_columns).
+    unsigned int last_use = 0;
+  };
+  std::unordered_map<dealii::types::global_dof_index, KeptResponse> unit_columns;
   std::vector<unsigned int> unit_row_of; // position in unit_rows of each contact DoF
-  // The pairing (counted by map_unit_rows) that last used each kept response: past the memory
-  // bound, those unused the longest are dropped first (ContactProblem::make_room_for_columns).
-  std::unordered_map<dealii::types::global_dof_index, unsigned int> unit_column_use;
   unsigned int pairing = 0;
   // The DoFs a support constrains or takes as a master (their residual is a reaction).
   std::vector<bool> held;
