@@ -8,6 +8,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <iterator>
+#include <map>
 
 namespace gearstiff::contact
 {
@@ -42,6 +43,19 @@ std::vector<types::global_dof_index> window_prefetch(const Pairs& pairs)
           }
   return dofs;
 }
+
+// Whether a rolling position is completed at its reported DoFs from the kept unit responses
+// (complete_at_kept_rows) or by one back-substitution of the whole field. 2D: from the kept
+// responses (the back-substitution was 0.05–0.15 s of a 0.14 s position, 130k DoFs). 3D: the
+// reported rows (fillets and the cells at the supports, ~14k of the 22k rows of the default
+// Q1 scene, 457k DoFs) made every unit response cost 15–16 ms instead of 9–10 ms (MUMPS prunes
+// the backward solve to the elimination-tree paths of the rows asked for), ~8600 responses per
+// rank in a 32-position sweep, against one back-substitution per position.
+template <int dim>
+constexpr bool completes_from_kept_rows()
+{
+  return dim == 2;
+}
 } // namespace
 
 template <int dim>
@@ -69,37 +83,41 @@ template <int dim>
 bool ContactProblem<dim>::complete_at_kept_rows(Vector<double>& residual)
 {
   Condensed& c = *condensed;
-  if (!rolling || !complete_only_at_rows || !c.slave_forces_exact || c.unit_rows.empty())
+  if (!completes_from_kept_rows<dim>() || !rolling || !complete_only_at_rows ||
+      !c.slave_forces_exact || c.targets.empty())
     return false;
   // The loads f_friction − Gᵀλ act only at contact DoFs, each with its kept unit response, so
-  // u = s·(u_p + Δu_p) + Σ_t load_t P e_t + R α at every kept row, linear in the loads.
+  // u = s·(u_p + Δu_p) + Σ_t load_t P e_t + R α at every target, linear in the loads.
   const unsigned int n_dofs = elastic.get_dof_handler().n_dofs();
-  std::vector<std::pair<const std::vector<double>*, double>> loaded;
+  std::vector<std::pair<const typename Condensed::KeptResponse*, double>> loaded;
   for (unsigned int i = 0; i < n_dofs; ++i)
     if (c.contact_load[i] != 0.)
     {
       const auto unit = c.unit_columns.find(i);
-      if (unit == c.unit_columns.end())
+      if (unit == c.unit_columns.end() || !c.covers_targets(*unit->second.rows))
         return false;
-      loaded.emplace_back(&unit->second.values, c.contact_load[i]);
+      loaded.emplace_back(&unit->second, c.contact_load[i]);
     }
-  std::vector<double> rows(c.unit_rows.size());
+  std::vector<double> rows(c.targets.size());
   const Vector<double>& particular = c.factorization->particular_solution();
   for (unsigned int k = 0; k < rows.size(); ++k)
   {
-    const types::global_dof_index dof = c.unit_rows[k];
+    const types::global_dof_index dof = c.targets[k];
     rows[k] = c.load_factor *
               (particular[dof] + (c.particular_change.size() > 0 ? c.particular_change[dof] : 0.));
     for (unsigned int j = 0; j < c.amplitudes.size(); ++j)
       rows[k] += c.amplitudes[j] * c.factorization->free_modes()[j][dof];
   }
   for (const auto& [unit, load] : loaded)
+  {
+    const std::vector<int>& at = unit->rows->of_target;
     for (unsigned int k = 0; k < rows.size(); ++k)
-      rows[k] += load * (*unit)[k];
+      rows[k] += load * unit->values[at[k]];
+  }
   displacement.reinit(n_dofs);
   for (unsigned int k = 0; k < rows.size(); ++k)
-    displacement[c.unit_rows[k]] = rows[k];
-  // r = K u − f is exact at the held DoFs (every DoF of their cells is a kept row); elsewhere
+    displacement[c.targets[k]] = rows[k];
+  // r = K u − f is exact at the held DoFs (every DoF of their cells is a target); elsewhere
   // it is the contact load (stationarity, as in apply_contact_solution).
   residual = elastic.residual(displacement);
   for (unsigned int i = 0; i < n_dofs; ++i)
@@ -117,8 +135,13 @@ void ContactProblem<dim>::complete_only_at(const std::vector<types::global_dof_i
   std::sort(output_dofs.begin(), output_dofs.end());
   output_dofs.erase(std::unique(output_dofs.begin(), output_dofs.end()), output_dofs.end());
   complete_only_at_rows = true;
-  if (condensed)
-    condensed->unit_rows.clear(); // rebuilt with these rows at the next pairing
+  if (condensed) // the kept responses lack the new rows
+  {
+    condensed->reported_rows.clear();
+    condensed->unit_columns.clear();
+    condensed->kept_values = 0;
+    condensed->new_rows.reset();
+  }
 }
 
 template <int dim>
@@ -261,55 +284,126 @@ ContactProblem<dim>::surface_dofs(const std::vector<types::boundary_id>& ids) co
 template <int dim>
 void ContactProblem<dim>::map_unit_rows(Condensed& c) const
 {
-  const auto covered = [&]()
-  { return std::includes(c.unit_rows.begin(), c.unit_rows.end(), c.dofs.begin(), c.dofs.end()); };
-  if (!covered())
-  {
-    // The declared surfaces and those of the current pairs; the kept responses lack the new
-    // rows and are computed afresh.
-    std::vector<types::boundary_id> ids = rolling_surfaces;
-    for (const auto& pair : pairs)
-    {
-      ids.insert(ids.end(), pair.slave.begin(), pair.slave.end());
-      ids.insert(ids.end(), pair.master.begin(), pair.master.end());
-    }
-    std::vector<types::global_dof_index> rows = surface_dofs(ids);
-    if (complete_only_at_rows)
-      rows.insert(rows.end(), output_dofs.begin(), output_dofs.end());
-    // complete_only_at(): every DoF of the cells at the supports, for their reactions.
-    std::vector<types::global_dof_index> cell_dofs;
-    if (complete_only_at_rows)
-      for (const auto& cell : elastic.get_dof_handler().active_cell_iterators())
-      {
-        cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
-        cell->get_dof_indices(cell_dofs);
-        if (std::any_of(cell_dofs.begin(), cell_dofs.end(),
-                        [&](const types::global_dof_index dof) { return c.held[dof]; }))
-          rows.insert(rows.end(), cell_dofs.begin(), cell_dofs.end());
-      }
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    std::vector<types::global_dof_index> merged;
-    std::set_union(rows.begin(), rows.end(), c.dofs.begin(), c.dofs.end(),
-                   std::back_inserter(merged));
-    c.unit_rows = std::move(merged);
-    c.unit_columns.clear();
-  }
   ++c.pairing;
-  c.unit_row_of.resize(c.dofs.size());
+  // complete_only_at(): the reported DoFs and every DoF of the cells at the supports, for
+  // their reactions.
+  if (completes_from_kept_rows<dim>() && complete_only_at_rows && c.reported_rows.empty())
+  {
+    c.reported_rows = output_dofs;
+    std::vector<types::global_dof_index> cell_dofs;
+    for (const auto& cell : elastic.get_dof_handler().active_cell_iterators())
+    {
+      cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+      cell->get_dof_indices(cell_dofs);
+      if (std::any_of(cell_dofs.begin(), cell_dofs.end(),
+                      [&](const types::global_dof_index dof) { return c.held[dof]; }))
+        c.reported_rows.insert(c.reported_rows.end(), cell_dofs.begin(), cell_dofs.end());
+    }
+    std::sort(c.reported_rows.begin(), c.reported_rows.end());
+    c.reported_rows.erase(std::unique(c.reported_rows.begin(), c.reported_rows.end()),
+                          c.reported_rows.end());
+  }
+  c.targets.clear();
+  std::set_union(c.dofs.begin(), c.dofs.end(), c.reported_rows.begin(), c.reported_rows.end(),
+                 std::back_inserter(c.targets));
+  c.contact_target.resize(c.dofs.size());
   for (unsigned int i = 0; i < c.dofs.size(); ++i)
-    c.unit_row_of[i] =
-        std::lower_bound(c.unit_rows.begin(), c.unit_rows.end(), c.dofs[i]) - c.unit_rows.begin();
+    c.contact_target[i] =
+        std::lower_bound(c.targets.begin(), c.targets.end(), c.dofs[i]) - c.targets.begin();
+}
+
+template <int dim>
+std::shared_ptr<typename ContactProblem<dim>::RowSet>
+ContactProblem<dim>::rows_for_new_responses(Condensed& c) const
+{
+  // The surfaces the sweep pairs: those declared and those of the current pairs.
+  std::vector<types::boundary_id> ids = rolling_surfaces;
+  double window = 0.; // m, the largest window radius
+  bool windowed = !pairs.empty();
+  for (const auto& pair : pairs)
+  {
+    ids.insert(ids.end(), pair.slave.begin(), pair.slave.end());
+    ids.insert(ids.end(), pair.master.begin(), pair.master.end());
+    windowed = windowed && pair.window.radius > 0.;
+    window = std::max(window, pair.window.radius);
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  if (ids != c.surface_ids)
+  {
+    c.surface_ids = ids;
+    c.surface_rows = surface_dofs(ids);
+  }
+  // 2D: the rows of every swept surface, one set for the whole sweep (a column costs ~1 ms
+  // whatever its rows). 3D: a column costs with the rows asked for (MUMPS prunes the backward
+  // solve to their elimination-tree paths): default pair, Q1, 8 layers, 457k DoFs, 32 positions
+  // on 2 ranks, per column and rank: every swept flank and the reported rows (28k rows) 17 ms;
+  // the contact DoFs alone (~9k) 9 ms, but a kept response then lacks the next window's rows
+  // and is computed again (14.9k columns a rank instead of 8.7k); the contact DoFs and the
+  // flank rows within a quarter (~11k rows) or half (~12k) a window radius of them 12 and
+  // 13.5 ms, 8.9k and 8.6k columns: a quarter. A node stays closed over a position or two,
+  // while its window moves ~0.23 mm (a quarter radius) at each.
+  const bool whole_surfaces = dim == 2 || !windowed;
+  if (whole_surfaces && c.new_rows && c.covers_targets(*c.new_rows))
+    return c.new_rows;
+  if (!whole_surfaces && c.new_rows && c.new_rows->built == c.pairing)
+    return c.new_rows;
+  auto rows = std::make_shared<RowSet>();
+  const std::vector<types::global_dof_index> near =
+      whole_surfaces ? c.surface_rows : rows_near_targets(c, 0.25 * window);
+  std::set_union(near.begin(), near.end(), c.targets.begin(), c.targets.end(),
+                 std::back_inserter(rows->rows));
+  rows->built = c.pairing;
+  c.new_rows = rows;
+  return rows;
+}
+
+template <int dim>
+std::vector<types::global_dof_index>
+ContactProblem<dim>::rows_near_targets(const Condensed& c, const double distance) const
+{
+  // The surface rows within `distance` of a contact DoF (reference positions: a body turns
+  // rigidly, so its distances stay), found through a grid of cells of that size.
+  const std::vector<Point<dim>>& points = elastic.support_points();
+  const auto cell_of = [&](const Point<dim>& p)
+  {
+    std::array<long long, dim> cell;
+    for (unsigned int d = 0; d < dim; ++d)
+      cell[d] = static_cast<long long>(std::floor(p[d] / distance));
+    return cell;
+  };
+  std::map<std::array<long long, dim>, std::vector<Point<dim>>> grid;
+  for (const auto dof : c.dofs)
+    grid[cell_of(points[dof])].push_back(points[dof]);
+  std::vector<types::global_dof_index> near;
+  for (const auto dof : c.surface_rows)
+  {
+    const Point<dim>& p = points[dof];
+    const std::array<long long, dim> centre = cell_of(p);
+    bool found = false;
+    for (unsigned int k = 0; k < (dim == 2 ? 9u : 27u) && !found; ++k)
+    {
+      std::array<long long, dim> cell = centre;
+      for (unsigned int d = 0, code = k; d < dim; ++d, code /= 3)
+        cell[d] += static_cast<long long>(code % 3) - 1;
+      if (const auto points_there = grid.find(cell); points_there != grid.end())
+        found = std::any_of(points_there->second.begin(), points_there->second.end(),
+                            [&](const Point<dim>& q) { return p.distance(q) <= distance; });
+    }
+    if (found)
+      near.push_back(dof);
+  }
+  return near;
 }
 
 template <int dim>
 void ContactProblem<dim>::make_room_for_columns(Condensed& c, std::size_t n_new) const
 {
-  // Drops the kept responses of earlier pairings, those unused the longest first, until the
-  // new ones fit in max_kept_values (or none of an earlier pairing is left: the current
-  // pairing's loads need theirs, and complete_at_kept_rows reads them after the last solve).
-  // The rolling positions of one rank follow each other (stiffness::stiffness_sweep), so the
-  // responses of the nearest earlier positions, the ones the next pairing shares, stay.
+  // Drops the kept responses of earlier pairings, those unused the longest first, until
+  // `n_new` more values fit in max_kept_values (or none of an earlier pairing is left: the
+  // current pairing's loads need theirs, and complete_at_kept_rows reads them after the last
+  // solve). The rolling positions of one rank follow each other (stiffness::stiffness_sweep),
+  // so the responses of the nearest earlier positions, the ones the next pairing shares, stay.
   std::vector<std::pair<unsigned int, types::global_dof_index>> earlier; // (pairing, DoF)
   for (const auto& [dof, kept] : c.unit_columns)
     if (kept.last_use < c.pairing)
@@ -317,8 +411,9 @@ void ContactProblem<dim>::make_room_for_columns(Condensed& c, std::size_t n_new)
   std::sort(earlier.begin(), earlier.end());
   for (const auto& [used, dof] : earlier)
   {
-    if ((c.unit_columns.size() + n_new) * c.unit_rows.size() <= max_kept_values)
+    if (c.kept_values + n_new <= max_kept_values)
       break;
+    c.kept_values -= c.unit_columns.at(dof).values.size();
     c.unit_columns.erase(dof);
   }
 }
@@ -329,39 +424,57 @@ std::vector<std::vector<double>> ContactProblem<dim>::rolling_columns(
 {
   Condensed& c = *condensed;
   // The current loads' kept responses are marked used (make_room_for_columns keeps them); the
-  // others are computed below, marked used too.
+  // others, and those whose rows miss a target, are computed below, marked used too.
+  const auto usable = [&](const types::global_dof_index dof)
+  {
+    const auto kept = c.unit_columns.find(dof);
+    return kept != c.unit_columns.end() && c.covers_targets(*kept->second.rows) ? &kept->second
+                                                                                : nullptr;
+  };
   std::vector<types::global_dof_index> missing;
   for (const auto& load : loads)
     for (const auto& [dof, weight] : load)
-      if (const auto kept = c.unit_columns.find(dof); kept != c.unit_columns.end())
-        kept->second.last_use = c.pairing;
+      if (auto* kept = usable(dof))
+        kept->last_use = c.pairing;
       else
         missing.push_back(dof);
   if (!missing.empty())
     for (const types::global_dof_index dof : window_prefetch<dim>(pairs))
-      if (c.unit_columns.find(dof) == c.unit_columns.end())
+      if (!usable(dof))
         missing.push_back(dof);
   std::sort(missing.begin(), missing.end());
   missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
-  if ((c.unit_columns.size() + missing.size()) * c.unit_rows.size() > max_kept_values)
-    make_room_for_columns(c, missing.size());
   if (!missing.empty())
   {
+    const std::shared_ptr<RowSet> rows = rows_for_new_responses(c);
+    for (const auto dof : missing)
+      if (const auto stale = c.unit_columns.find(dof); stale != c.unit_columns.end())
+      {
+        c.kept_values -= stale->second.values.size();
+        c.unit_columns.erase(stale);
+      }
+    if (c.kept_values + missing.size() * rows->rows.size() > max_kept_values)
+      make_room_for_columns(c, missing.size() * rows->rows.size());
     std::vector<fem::SparseLoad> units;
     for (const auto dof : missing)
       units.push_back({{dof, 1.}});
-    std::vector<std::vector<double>> responses = c.factorization->responses(units, c.unit_rows);
+    std::vector<std::vector<double>> responses = c.factorization->responses(units, rows->rows);
     for (unsigned int j = 0; j < missing.size(); ++j)
-      c.unit_columns.emplace(missing[j],
-                             typename Condensed::KeptResponse{std::move(responses[j]), c.pairing});
+    {
+      c.kept_values += responses[j].size();
+      c.unit_columns.emplace(
+          missing[j], typename Condensed::KeptResponse{std::move(responses[j]), rows, c.pairing});
+    }
+    c.covers_targets(*rows);
   }
   std::vector<std::vector<double>> columns(loads.size(), std::vector<double>(c.dofs.size(), 0.));
   for (unsigned int j = 0; j < loads.size(); ++j)
     for (const auto& [dof, weight] : loads[j])
     {
-      const std::vector<double>& unit = c.unit_columns.at(dof).values;
+      const typename Condensed::KeptResponse& unit = c.unit_columns.at(dof);
+      const std::vector<int>& at = unit.rows->of_target;
       for (unsigned int i = 0; i < c.dofs.size(); ++i)
-        columns[j][i] += weight * unit[c.unit_row_of[i]];
+        columns[j][i] += weight * unit.values[at[c.contact_target[i]]];
     }
   return columns;
 }

@@ -273,6 +273,7 @@ private:
   };
 
   struct Condensed; // the factorization, column cache and contact DoFs of the Schur method
+  struct RowSet;    // rolling: the rows a kept unit response holds
 
   // The steps of setup_system(): m, diagonal of the mesh's bounding box; the supports' nodes
   // and hubs; the mortar coupling of every pair (InputError: no candidates, overlap); the
@@ -288,12 +289,15 @@ private:
   // The Schur method's contact DoFs and what depends on the pairing (map_contact).
   void collect_contact_dofs(Condensed& c) const;
   void map_contact(Condensed& c) const;
-  // Rolling: the DoFs of the boundary faces with these ids (sorted); the positions of the
-  // contact DoFs in the kept rows (extending them, and dropping the kept responses, when
-  // needed); the columns of `loads` at the contact DoFs from the kept unit responses.
+  // Rolling: the DoFs of the boundary faces with these ids (sorted); the targets of the
+  // current pairing; the rows of the responses computed now; room for `n_new` more kept
+  // values; the columns of `loads` at the contact DoFs from the kept unit responses.
   std::vector<dealii::types::global_dof_index>
   surface_dofs(const std::vector<dealii::types::boundary_id>& ids) const;
   void map_unit_rows(Condensed& c) const;
+  std::shared_ptr<RowSet> rows_for_new_responses(Condensed& c) const;
+  std::vector<dealii::types::global_dof_index> rows_near_targets(const Condensed& c,
+                                                                 double distance) const;
   void make_room_for_columns(Condensed& c, std::size_t n_new) const;
   std::vector<std::vector<double>> rolling_columns(
       const std::vector<std::vector<std::pair<dealii::types::global_dof_index, double>>>& loads);

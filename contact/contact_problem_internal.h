@@ -63,6 +63,19 @@ struct ContactProblem<dim>::ContactRow
   double value; // m
 };
 
+// Rolling: the rows a kept unit response holds (ContactProblem::rows_for_new_responses).
+template <int dim>
+struct ContactProblem<dim>::RowSet
+{
+  std::vector<dealii::types::global_dof_index> rows; // sorted
+  unsigned int built = 0;                            // the pairing that built it
+  // Position in `rows` of each of `targets` (−1: not a row), valid for the pairing `mapped`;
+  // `complete`: none is −1.
+  std::vector<int> of_target;
+  unsigned int mapped = 0;
+  bool complete = false;
+};
+
 // The Schur-complement method's data, built once per solve(): the factorization of the
 // support-condensed K, the contact DoFs (slave and master DoFs of every candidate node), and
 // for every slave node that has been closed its dim columns P R_cᵀ at the contact DoFs, where
@@ -107,20 +120,49 @@ struct ContactProblem<dim>::Condensed
   // to the particular solution (empty: none).
   dealii::Vector<double> particular_change;
   // Rolling: K and its factorization stay while the pairing changes, so the response P e_t to a
-  // unit load at DoF t is kept for every position, at the DoFs of the surfaces the rolling pairs
-  // may use (`unit_rows`, sorted: ContactProblem::keep_columns_on, extended by the current
-  // pairs' surfaces when they fall outside). A node's column is then a weighted sum of these.
-  std::vector<dealii::types::global_dof_index> unit_rows;
+  // unit load at DoF t is kept for every position, at the rows of the row set it was computed
+  // with (ContactProblem::rows_for_new_responses). A node's column is then a weighted sum of
+  // these; a kept response whose rows miss a target of the current pairing is computed afresh.
   struct KeptResponse
   {
-    std::vector<double> values; // m/N, at unit_rows
+    std::vector<double> values; // m/N, at rows->rows
+    std::shared_ptr<RowSet> rows;
     // The pairing (counted by map_unit_rows) that last used it: past the memory bound, those
     // unused the longest are dropped first (ContactProblem::make_room_for_columns).
     unsigned int last_use = 0;
   };
   std::unordered_map<dealii::types::global_dof_index, KeptResponse> unit_columns;
-  std::vector<unsigned int> unit_row_of; // position in unit_rows of each contact DoF
+  std::size_t kept_values = 0;      // Σ values.size() over unit_columns
+  std::shared_ptr<RowSet> new_rows; // the rows of the latest responses computed
+  // What a rolling position needs of every response it uses (sorted): the contact DoFs and,
+  // with ContactProblem::complete_only_at, the reported DoFs and every DoF of the cells at the
+  // supports (`reported_rows`), where complete_at_kept_rows completes the solution.
+  std::vector<dealii::types::global_dof_index> targets, reported_rows;
+  std::vector<unsigned int> contact_target; // position in targets of each contact DoF
+  // The DoFs of the surfaces the sweep pairs (keep_columns_on and the current pairs' surfaces),
+  // sorted, and those surfaces' ids.
+  std::vector<dealii::types::global_dof_index> surface_rows;
+  std::vector<dealii::types::boundary_id> surface_ids;
   unsigned int pairing = 0;
+  // Whether `rows` holds every target (of_target mapped for the current pairing).
+  bool covers_targets(RowSet& rows) const
+  {
+    if (rows.mapped != pairing)
+    {
+      rows.of_target.resize(targets.size());
+      rows.complete = true;
+      for (unsigned int k = 0; k < targets.size(); ++k)
+      {
+        const auto found = std::lower_bound(rows.rows.begin(), rows.rows.end(), targets[k]);
+        rows.of_target[k] = found != rows.rows.end() && *found == targets[k]
+                                ? static_cast<int>(found - rows.rows.begin())
+                                : -1;
+        rows.complete = rows.complete && rows.of_target[k] >= 0;
+      }
+      rows.mapped = pairing;
+    }
+    return rows.complete;
+  }
   // The DoFs a support constrains or takes as a master (their residual is a reaction).
   std::vector<bool> held;
 
