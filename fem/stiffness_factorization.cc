@@ -6,8 +6,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -203,8 +201,6 @@ struct StiffnessFactorization<dim>::Implementation
     std::vector<double> result(columns.size() * rows.size(), 0.);
     if (columns.empty() || rows.empty())
       return result;
-    Timer probe(mpi_communicator, true); // PROBE
-    double mumps_seconds = 0.;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     const bool serial = Utilities::MPI::n_mpi_processes(mpi_communicator) == 1;
     // Only the rows in the column's connected part of K: the others are exact zeros (see
@@ -253,11 +249,7 @@ struct StiffnessFactorization<dim>::Implementation
       // (1026 columns, 190k DoFs, 2 ranks; 8: 10 s, 2048: 4.4 s).
       PetscInt block = 0;
       check(MatMumpsGetIcntl(factor, 27, &block), "MatMumpsGetIcntl");
-      check(MatMumpsSetIcntl(factor, 27,
-                             std::getenv("GEARSTIFF_ICNTL27")
-                                 ? std::atoi(std::getenv("GEARSTIFF_ICNTL27"))
-                                 : 512),
-            "MatMumpsSetIcntl"); // PROBE
+      check(MatMumpsSetIcntl(factor, 27, 512), "MatMumpsSetIcntl");
       PetscErrorCode code = 0;
       const auto get_inverse = [&]()
       {
@@ -270,9 +262,7 @@ struct StiffnessFactorization<dim>::Implementation
           MatMumpsSetIcntl(factor, 21, 1);
         return code;
       };
-      Timer mumps_probe(mpi_communicator, true); // PROBE
       call_mumps(get_inverse, "MatMumpsGetInverse");
-      mumps_seconds += mumps_probe.wall_time();
       if (root)
       {
         Mat local = pattern;
@@ -291,9 +281,6 @@ struct StiffnessFactorization<dim>::Implementation
     }
     if (!serial)
       Utilities::MPI::broadcast(result.data(), result.size(), 0, mpi_communicator);
-    if (std::getenv("GEARSTIFF_PROBE") && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::fprintf(stderr, "PROBE inverse_entries %zu columns %zu rows %.3f s mumps %.3f s\n",
-                   columns.size(), rows.size(), probe.wall_time(), mumps_seconds);
     return result;
   }
 

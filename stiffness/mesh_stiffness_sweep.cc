@@ -9,7 +9,6 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 #include <cmath>
-#include <cstdlib>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
@@ -86,7 +85,7 @@ solve_position_torques(const GearMeshStiffnessSettings& settings, const double r
 // first position; a failure's reason starts with `context`.
 template <int dim>
 std::vector<GearMeshStiffnessResult>
-roll_position(MPI_Comm communicator, std::unique_ptr<GearMeshStiffness<dim>>& analysis,
+roll_position(std::unique_ptr<GearMeshStiffness<dim>>& analysis,
               const GearMeshStiffnessSettings& settings, const double position,
               const std::string& suffix, const std::string& context)
 {
@@ -95,7 +94,7 @@ roll_position(MPI_Comm communicator, std::unique_ptr<GearMeshStiffness<dim>>& an
       [&]()
       {
         if (!analysis)
-          analysis = std::make_unique<GearMeshStiffness<dim>>(communicator, settings);
+          analysis = std::make_unique<GearMeshStiffness<dim>>(MPI_COMM_SELF, settings);
         const std::string base = settings.output_base + "_" + suffix;
         if (settings.torques.empty())
           result = {analysis->roll_to(position, base)};
@@ -169,14 +168,6 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   rolling.scene.swept_positions = positions;
   rolling.scene_file = scene_file_stem + "_once_" + std::to_string(rank) + ".msh";
   std::unique_ptr<GearMeshStiffness<dim>> analysis;
-  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-  // EXPERIMENT (issue 28): one scene and one distributed factorization on the whole
-  // communicator, every position solved by all ranks in turn.
-  const bool shared = spec.mesh == SweepMesh::once && n_ranks > 1 &&
-                      std::getenv("GEARSTIFF_SWEEP_SHARED") != nullptr;
-  if (shared)
-    rolling.scene_file =
-        Utilities::MPI::broadcast(mpi_communicator, scene_file_stem, 0) + "_once.msh";
 
   // Each rank takes the next unsolved item as soon as it is free (fem::distribute_items); a
   // failure stops every rank within about one contact iteration, and the first failing
@@ -186,6 +177,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   // it (3D Q1, 32 positions: see bench/contact_speed.md).
   if (!settings.torques.empty())
     check_torque_list(settings.torques);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
   const unsigned int block =
       spec.mesh == SweepMesh::once ? std::max(1u, (n + 2 * n_ranks - 1) / (2 * n_ranks)) : 1;
   std::vector<std::pair<unsigned int, std::vector<GearMeshStiffnessResult>>> mine;
@@ -195,13 +187,10 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                               format_number(positions[i] / r_b1 * 180. / M_PI, 5) + "°): ";
     const std::vector<GearMeshStiffnessResult> all =
         spec.mesh == SweepMesh::once
-            ? roll_position(shared ? mpi_communicator : MPI_COMM_SELF, analysis, rolling,
-                            positions[i], Utilities::int_to_string(i, 3), where)
+            ? roll_position(analysis, rolling, positions[i], Utilities::int_to_string(i, 3), where)
             : solve_position_torques<dim>(warm, positions[i] / r_b1, Utilities::int_to_string(i, 3),
                                           scene_file_stem, where);
     const GearMeshStiffnessResult& r = all.front();
-    if (shared && rank > 0)
-      return;
     mine.emplace_back(i, all);
     if (progress)
       progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
@@ -216,21 +205,17 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                     : std::string()) +
                " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) + " solved]");
   };
-  if (shared)
-    for (unsigned int i = 0; i < n; ++i)
-      solve_position(i);
-  else
-    fem::distribute_items(mpi_communicator, (n + block - 1) / block,
-                          [&](const unsigned int item)
+  fem::distribute_items(mpi_communicator, (n + block - 1) / block,
+                        [&](const unsigned int item)
+                        {
+                          for (unsigned int i = item * block; i < std::min(n, (item + 1) * block);
+                               ++i)
                           {
-                            for (unsigned int i = item * block; i < std::min(n, (item + 1) * block);
-                                 ++i)
-                            {
-                              if (i > item * block)
-                                fem::interruption_point();
-                              solve_position(i);
-                            }
-                          });
+                            if (i > item * block)
+                              fem::interruption_point();
+                            solve_position(i);
+                          }
+                        });
 
   if (spec.mesh == SweepMesh::once)
     std::filesystem::remove(rolling.scene_file);
