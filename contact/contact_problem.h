@@ -222,14 +222,16 @@ public:
   bool closed_within_windows() const;
   // Rolling: the boundary ids every pairing of the sweep draws from (slave and master). The
   // responses to unit loads at their DoFs are then computed once for the whole sweep (each
-  // when a node there first closes) and kept across positions; surfaces outside are added
-  // when a pair uses them (the kept responses are then computed afresh).
+  // when a node there first closes) and kept across positions, at these surfaces' DoFs in 2D,
+  // at those near the pairing's contact DoFs in 3D; a kept response that lacks a contact DoF
+  // of a later pairing is computed afresh.
   void keep_columns_on(const std::vector<dealii::types::boundary_id>& surfaces);
-  // Rolling, after setup_system(): the solution of each position is completed only at these
-  // DoFs (besides the contact DoFs, and every DoF of the cells at the supports, whose reactions
-  // need them), from the kept unit responses — no full back-substitution per position. The
-  // results (pairs, support reactions and hub rotations) are those of the full field to
-  // round-off; solution() is exact at those DoFs and 0 elsewhere until complete_field().
+  // Rolling, after setup_system(): in 2D the solution of each position is completed only at
+  // these DoFs (besides the contact DoFs, and every DoF of the cells at the supports, whose
+  // reactions need them), from the kept unit responses — no full back-substitution per
+  // position; in 3D by one back-substitution (contact_condensed.cc: completes_from_kept_rows).
+  // The results (pairs, support reactions and hub rotations) are those of the full field to
+  // round-off; solution() is exact at those DoFs (2D: 0 elsewhere until complete_field()).
   void complete_only_at(const std::vector<dealii::types::global_dof_index>& dofs);
   // The whole displacement field of the last solve (one back-substitution), e.g. for VTU output;
   // nothing to do unless complete_only_at() left it partial.
