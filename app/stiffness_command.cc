@@ -216,7 +216,7 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
                    "done once (per rank, summed): meshing, set-up of K, factorization");
   report.add_value("sweep_per_position_time", sweep.per_position_time / sweep.positions.size(), "s",
                    once ? "per position, mean: turning, pairing, contact solve, evaluation "
-                          "(from the kept unit responses)"
+                          "(2D: from the kept unit responses; 3D: one back-substitution)"
                         : "per position, mean: everything");
 }
 

@@ -85,15 +85,15 @@ void declare_stiffness_parameters(ParameterHandler& prm)
       "reference); once: each rank meshes one scene, refined along every flank contact of the "
       "sweep, factorizes it once and turns the bodies rigidly to each position (the contact "
       "paired afresh there, warm-started from the neighbour; what a position reports is "
-      "completed from the kept unit responses, the whole field only for VTU; needs the direct "
-      "solver's Schur complement); automatic (the default): once in 2D, per position in 3D "
-      "and for scenes with a broken, chipped or spalled tooth (root cracks roll: every flank "
-      "stays whole) or without the direct solver's Schur complement. "
+      "completed from the kept unit responses in 2D, by one back-substitution in 3D; needs "
+      "the direct solver's Schur complement); automatic (the default): once in 2D, per "
+      "position in 3D and for scenes with a broken, chipped or spalled tooth (root cracks "
+      "roll: every flank stays whole) or without the direct solver's Schur complement. "
       "In 2D once meets the accuracy of per position (k within 0.3 %, TE 0.05 µm, load share "
       "0.5 %: external and internal pairs, μ = 0.01, a torque list, 2 MPI ranks) at ~0.04 s a "
       "position after ~3-4 s once (default pair, 128 positions, 1 rank: ~9 s, 16x faster than "
       "per position); in 3D once is within 0.5 % of per position, nearer the converged k, but "
-      "only ~1.2x faster for 2.6x the memory (docs: bench/contact_speed.md), so 3D stays per "
+      "only ~1.6x faster for 2.5x the memory (docs: bench/contact_speed.md), so 3D stays per "
       "position");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
