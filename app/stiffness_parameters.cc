@@ -560,14 +560,14 @@ bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name, const kinematics::GearPairGeometry& pair)
 {
-  ReportTable& table =
-      report.add_table(name,
-                       {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness",
-                        "transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
-                        "max_pressure", "tip_edge_contact", "pinion_root_stress",
-                        "wheel_root_stress", "torque_ratio", "iterations", "dofs", "time", "rank"},
-                       {"-", "deg", "-", "-", "N/um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa",
-                        "-", "-", "-", "s", "-"});
+  ReportTable& table = report.add_table(
+      name,
+      {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness", "transmission_error",
+       "unloaded_transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
+       "max_pressure", "tip_edge_contact", "pinion_root_stress", "wheel_root_stress",
+       "torque_ratio", "iterations", "dofs", "time", "rank"},
+      {"-", "deg", "-", "-", "N/um", "um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa", "-", "-",
+       "-", "s", "-"});
   std::string edges;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
@@ -581,10 +581,10 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
       edges += (edges.empty() ? "" : ", ") + std::to_string(i + 1);
     table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
                    double(r.loaded_pairs), r.mesh_stiffness / 1e6, r.transmission_error * 1e6,
-                   share[0], share[1], share[2], r.max_contact_pressure / 1e6, edge ? 1. : 0.,
-                   r.pinion_root_stress / 1e6, r.wheel_root_stress / 1e6, r.torque_ratio,
-                   double(r.active_set_iterations), double(r.n_dofs), r.total_time,
-                   double(sweep.rank_of_position[i])});
+                   r.unloaded_transmission_error * 1e6, share[0], share[1], share[2],
+                   r.max_contact_pressure / 1e6, edge ? 1. : 0., r.pinion_root_stress / 1e6,
+                   r.wheel_root_stress / 1e6, r.torque_ratio, double(r.active_set_iterations),
+                   double(r.n_dofs), r.total_time, double(sweep.rank_of_position[i])});
   }
   if (!edges.empty())
     report.add_text(name + " tip edge contact",

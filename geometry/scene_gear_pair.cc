@@ -33,6 +33,26 @@ InvoluteToothSpec tooth_spec(const kinematics::GearSpec& gear,
   return spec;
 }
 
+// The gear's nominal tooth. The generator knows one tooth, not which gear: its InputError
+// ("Involute tooth/tip diameter") is renamed to the gear's own field ("Gear pair/Wheel/tip
+// diameter"), the name the kinematics' checks of the same gear use.
+ToothProfile gear_tooth(const kinematics::GearSpec& gear, const kinematics::GearGeometry& derived,
+                        const ProfileResolution& resolution, bool wheel)
+{
+  try
+  {
+    return generate_involute_tooth(tooth_spec(gear, derived), resolution);
+  }
+  catch (const InputError& e)
+  {
+    const std::string generator = "Involute tooth/";
+    if (e.parameter().rfind(generator, 0) != 0)
+      throw;
+    throw InputError(kinematics::gear_parameter_name(wheel, e.parameter().substr(generator.size())),
+                     e.reason());
+  }
+}
+
 // Radius of the outline's first point, the middle of the root gap: where the rim begins.
 double outline_root_radius(const ToothProfile& tooth)
 {
@@ -892,10 +912,8 @@ void check_tooth_modifications(const GearPairSceneSpec& spec)
   if (spec.pinion_modifications.empty() && spec.wheel_modifications.empty())
     return;
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
-  const ToothProfile pinion =
-      generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
-  const ToothProfile wheel =
-      generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  const ToothProfile pinion = gear_tooth(spec.pair.pinion, pair.pinion, spec.resolution, false);
+  const ToothProfile wheel = gear_tooth(spec.pair.wheel, pair.wheel, spec.resolution, true);
   ToothProfiles(pinion, spec.pinion_modifications, flank_roll_range(pair, pinion, false),
                 loaded_side(pinion), "Gear pair/Pinion");
   ToothProfiles(wheel, spec.wheel_modifications, flank_roll_range(pair, wheel, true),
@@ -912,9 +930,8 @@ namespace
 PlacedGears generate_teeth(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair)
 {
   PlacedGears gears;
-  gears.pinion =
-      generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
-  gears.wheel = generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  gears.pinion = gear_tooth(spec.pair.pinion, pair.pinion, spec.resolution, false);
+  gears.wheel = gear_tooth(spec.pair.wheel, pair.wheel, spec.resolution, true);
   gears.pinion_teeth = ToothProfiles(gears.pinion, spec.pinion_modifications,
                                      flank_roll_range(pair, gears.pinion, false),
                                      loaded_side(gears.pinion), "Gear pair/Pinion");

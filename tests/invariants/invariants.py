@@ -9,8 +9,8 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
 
     once = per position      a rolling sweep (one mesh, turned) against a mesh per position:
                              unloaded TE identical (it is geometry: 1 nm), loaded TE within
-                             0.05 um, k within 0.3 %, load shares within 0.005 (issue 41's
-                             accuracy, the rolling sweep's stated accuracy in docs/accuracy.md)
+                             0.05 um, load shares within 0.005 (issue 41's accuracy), k within
+                             0.5 % (the default meshes' own scatter on generated gears: 0.4 %)
     zero = none              a modification of amount 0 gives every printed digit of none
     one-gear relief          a tip relief on one gear only: unloaded TE 0 at every position (the
                              unmodified pair carries wherever the relieved one separates)
@@ -26,7 +26,10 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
     3D between plane models  straight teeth in 3D: k between plane stress and plane strain
     own train                the sweep's stiffness_table.prm runs `gearstiff dynamics` on this
                              pair: its mesh frequency z1*n1/60, its mean stiffness the sweep's,
-                             and K_v = 1 at a quasi-static speed (0.5 %)
+                             and K_v = 1 at a quasi-static speed without friction (0.5 %)
+
+A pair `gearstiff gear-pair` accepts must also be one the FE scene accepts (the first defect
+this generator found: an automatic ring tip the tooth generator refused as topped).
 
 Every case prints its seed and its full parameter set, and the command that reproduces it:
 
@@ -117,7 +120,7 @@ def load_sets(rng, pair_report, sets):
     """A torque that deflects the mesh by 3-8 um at ISO's c' = 14 N/(mm um) over the face width,
     and a friction coefficient 0-0.1."""
     width = float(sets["Gear pair/Pinion/face width"])
-    base_radius = 0.5 * value(pair_report, "pinion_base_diameter") * 1e-3
+    base_radius = value(pair_report, "pinion_base_radius") * 1e-3
     deflection = rng.uniform(3e-6, 8e-6)
     torque = 14e6 * width * deflection * base_radius
     return {"Gear pair scene/pinion torque": round(torque, 3),
@@ -183,7 +186,7 @@ def shares(row):
 
 
 def once_equals_per_position(case, runner, log):
-    positions = 6
+    positions = 5  # over one base pitch: both contact zones, and the suite's time in bounds
     once, _, _ = runner.run("stiffness", sweep_sets(case, positions, "once"))
     reference, _, _ = runner.run("stiffness", sweep_sets(case, positions, "per position"))
     rows_once, rows_ref = table(once, "stiffness_sweep"), table(reference, "stiffness_sweep")
@@ -193,7 +196,12 @@ def once_equals_per_position(case, runner, log):
                     a["unloaded_transmission_error"], 1e-3)
         check_close(f"position {i} loaded TE [um]", b["transmission_error"],
                     a["transmission_error"], 0.05)
-        check_close(f"position {i} k [N/um]", b["stiffness"], a["stiffness"], 0., 3e-3)
+        # 0.5 %, not the built-in pair's 0.3 %: the two are different meshes, each with its own
+        # discretisation error, and on generated gears the default per-position mesh alone
+        # scatters more (case 8 of seed 20261201, a 24/34 pair of m 5 mm at 22.82°: per
+        # position 900.44, 903.81, 902.34 N/um at sizes x1, x0.71, x0.5; once 904.15: 0.41 %
+        # from per position, 0.20 % from the finest level).
+        check_close(f"position {i} k [N/um]", b["stiffness"], a["stiffness"], 0., 5e-3)
         for sa, sb in zip(shares(a), shares(b)):
             check_close(f"position {i} load share", sb, sa, 5e-3)
         worst = [max(worst[0], abs(b["unloaded_transmission_error"] -
@@ -226,17 +234,14 @@ def geometric_te(case, rows, log):
 
 
 def zero_equals_none(case, runner, log):
-    """Zero modifications, a zero crack, and a crack on a tooth that is not in mesh at the
-    position (half a revolution away) give every printed value of the plain pair."""
+    """Zero modifications and a zero crack on a modelled tooth give every printed value of the
+    plain pair. (A crack on a tooth out of mesh is no such identity: the scene refuses a tooth it
+    does not model, and a modelled unloaded tooth's cracked root still feels the rim's bending.)"""
     sets = dict(case["pair"])
     plain, _, _ = runner.run("stiffness", sets)
-    z1 = int(sets["Gear pair/Pinion/teeth"])
-    module = float(sets["Gear pair/Pinion/module"])
     variants = [{"Gear pair/Pinion/tip relief": 0}, {"Gear pair/Wheel/profile crowning": 0},
                 {"Gear pair/Pinion/root relief": 0},
-                {"Gear pair/Pinion/faulty tooth": 1, "Gear pair/Pinion/crack depth": 0},
-                {"Gear pair/Pinion/faulty tooth": z1 // 2,
-                 "Gear pair/Pinion/crack depth": round(0.3 * module, 3)}]
+                {"Gear pair/Pinion/faulty tooth": 1, "Gear pair/Pinion/crack depth": 0}]
     for variant in variants:
         report, _, _ = runner.run("stiffness", dict(sets, **variant))
         differences = [k for k, v in plain["values"].items()
@@ -244,8 +249,7 @@ def zero_equals_none(case, runner, log):
                        report["values"].get(k, {}).get("value") != v.get("value")]
         if differences:
             raise CaseFailure(f"{variant} differs from none in {differences[:5]}")
-    log("zero modification = none, zero crack = healthy, a crack half a revolution away = "
-        "healthy: every printed value equal")
+    log("zero modification = none, zero crack = healthy: every printed value equal")
 
 
 def ranks_agree(case, runner, log):
@@ -294,11 +298,14 @@ def own_train(case, runner, log):
     """The sweep's stiffness_table.prm runs this pair in `gearstiff dynamics`: its mesh frequency
     is z1*n1/60, its mean stiffness the sweep's mean k (uniform positions over one base pitch:
     the mean of the periodic linear interpolation is the mean of the samples), and at a
-    quasi-static speed (2 % of the pair's resonance speed) the mesh force is the static one:
-    K_v = 1 (the dynamic part scales with (f_z/f_n)^2 ~ 4e-4: 0.5 %)."""
+    quasi-static speed, without tooth friction (whose moments change the static force by about
+    mu*tan(alpha_w), ~0.5-1 %), the mesh force is the static one: K_v = 1. The residual
+    vibration each stiffness ramp of the table leaves grows with the speed (measured on a 25/40
+    pair, m 8 mm: K_v - 1 = 0.0216, 0.0070, 0.0032, 0.0016 at 5, 2, 1, 0.5 % of the resonance
+    speed); at 0.5 % the tolerance is 0.5 %, three times that."""
     with tempfile.TemporaryDirectory(dir=runner.work) as folder:
         out = os.path.join(folder, "sweep")
-        sweep, _, _ = runner.run("stiffness", sweep_sets(case, 8, "once"), out=out)
+        sweep, _, _ = runner.run("stiffness", sweep_sets(case, 6, "once"), out=out)
         table_file = os.path.join(out, "stiffness_table.prm")
         with open(table_file) as f:
             text = f.read()
@@ -306,9 +313,10 @@ def own_train(case, runner, log):
         if f"z {z1}/" not in text:
             raise CaseFailure(f"stiffness_table.prm does not name this pair:\n{text[:400]}")
         resonance = float(text.split("resonance speed n_E1 = ")[1].split()[0])
-        speed = 0.02 * resonance
+        speed = 0.005 * resonance
         args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
-                "--set", f"Train/input speed={speed:.8g}"]
+                "--set", f"Train/input speed={speed:.8g}",
+                "--set", "Mesh 1/friction coefficient=0"]
         process = subprocess.run(args, capture_output=True, text=True)
         if process.returncode != 0:
             raise CaseFailure(f"dynamics on stiffness_table.prm exited {process.returncode}: "
@@ -334,7 +342,11 @@ def three_d_between_plane_models(case, runner, log):
     k = {}
     for name, extra in (("plane stress", {"Finite elements/Planar model": "plane stress"}),
                         ("plane strain", {"Finite elements/Planar model": "plane strain"}),
-                        ("3D", {"Mesh/dimension": 3, "Mesh/layers": 6})):
+                        # 150 iterations: with friction the 3D Tresca fixed point needs more
+                        # than the default 40 (as in test_sweep_once.ThreeDQ1; found here at
+                        # mu = 0.098: exit 3 with no node changing state).
+                        ("3D", {"Mesh/dimension": 3, "Mesh/layers": 4,
+                                "Contact/Max iterations": 150})):
         report, _, _ = runner.run("stiffness", dict(sets, **extra))
         k[name] = value(report, "mesh_stiffness")
     if not k["plane stress"] < k["3D"] < k["plane strain"]:
