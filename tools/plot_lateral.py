@@ -69,18 +69,17 @@ def orbit(path, png):
 
 def sweep(path, png):
     """K_v, largest bearing forces and orbit amplitudes against input speed; the down sweep
-    (direction 1) dashed, invalid points (status not 0) marked x."""
+    dashed, invalid points (status not valid) marked x."""
     _, c = read(path)
     fig, axes = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
-    for direction, style in ((0, "-o"), (1, "--s")):
-        rows = [i for i, d in enumerate(c["direction [-]"]) if round(d) == direction]
+    for tag, style in (("up", "-o"), ("down", "--s")):
+        rows = [i for i, d in enumerate(c["direction [-]"]) if d == tag]
         if not rows:
             continue
         speed = [c["input_speed [rpm]"][i] for i in rows]
-        tag = "up" if direction == 0 else "down"
         axes[0].plot(speed, [c["kv_max [-]"][i] for i in rows], style, ms=3, color="C0",
                      label="K_v " + tag)
-        bad = [i for i in rows if round(c["status [-]"][i]) != 0]
+        bad = [i for i in rows if c["status [-]"][i] != "valid"]
         axes[0].plot([c["input_speed [rpm]"][i] for i in bad], [c["kv_max [-]"][i] for i in bad],
                      "x", color="k")
         for j, member in enumerate(("carrier", "ring", "sun")):

@@ -10,7 +10,8 @@ Agreement, field by field (the ASPECT way: the whole output, numeric tolerances)
   and 1e-12 for scalar values; a field listed in TOLERANCES below documents a larger scatter;
 - timings, ranks and wall-clock fields are ignored (IGNORED_KEYS / IGNORED_COLUMNS), and so are
   texts that only carry timings or paths (IGNORED_TEXT);
-- everything else (keys, units, column names, row counts, texts, file names) must be identical.
+- everything else (keys, units, column names, the names a categorical column allows and holds,
+  row counts, texts, file names) must be identical.
 """
 import json
 import math
@@ -94,6 +95,9 @@ def compare(stored, actual):
         if s["columns"] != a["columns"] or s["units"] != a["units"]:
             differ(where, f"columns {list(zip(s['columns'], s['units']))} != "
                           f"{list(zip(a['columns'], a['units']))}")
+            continue
+        if s.get("categories", {}) != a.get("categories", {}):
+            differ(where, f"categories {s.get('categories', {})} != {a.get('categories', {})}")
             continue
         if len(s["rows"]) != len(a["rows"]):
             differ(where, f"{len(s['rows'])} rows != {len(a['rows'])}")
