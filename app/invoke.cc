@@ -150,9 +150,9 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& path,
     for (; entered > 0; --entered)
       prm.leave_subsection();
     const std::string selection = selection_mismatch(prm, parts, key, value);
-    throw InputError(path, "cannot set to '" + shortened(value) + "': " +
-                               (selection.empty() ? shortened_in(deal_ii_message(e), value)
-                                                  : selection));
+    throw InputError(path,
+                     "cannot set to '" + shortened(value) + "': " +
+                         (selection.empty() ? shortened_in(deal_ii_message(e), value) : selection));
   }
   for (; entered > 0; --entered)
     prm.leave_subsection();

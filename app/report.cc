@@ -23,8 +23,7 @@ void ReportTable::add_row(const std::vector<double>& row)
     category_name(rows.size() - 1, c); // an unknown code is a programming error: thrown here
 }
 
-void ReportTable::set_categories(const std::string& column,
-                                 const std::map<int, std::string>& names)
+void ReportTable::set_categories(const std::string& column, const std::map<int, std::string>& names)
 {
   if (std::find(columns.begin(), columns.end(), column) == columns.end())
     throw std::logic_error("table '" + name + "': no column '" + column + "' to name");
@@ -42,8 +41,8 @@ const std::string* ReportTable::category_name(std::size_t row, std::size_t colum
   const double code = rows[row][column];
   const auto found = names->second.find(static_cast<int>(std::lround(code)));
   if (!std::isfinite(code) || found == names->second.end() || found->first != code)
-    throw std::logic_error("table '" + name + "': code " + std::to_string(code) +
-                           " of column '" + columns[column] + "' has no name");
+    throw std::logic_error("table '" + name + "': code " + std::to_string(code) + " of column '" +
+                           columns[column] + "' has no name");
   return &found->second;
 }
 
@@ -190,9 +189,9 @@ void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
       if (names != table.categories.end())
         for (const auto& [code, category] : names->second)
           longest_name = std::max(longest_name, display_width(category) + 1);
-      widths.push_back(std::max<std::size_t>(
-          std::max<std::size_t>(13, longest_name),
-          std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
+      widths.push_back(
+          std::max<std::size_t>(std::max<std::size_t>(13, longest_name),
+                                std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
     }
     for (std::size_t c = 0; c < table.columns.size(); ++c)
       out << std::right << std::setw(widths[c]) << table.columns[c];
@@ -325,7 +324,8 @@ void Report::print_json(std::ostream& out, const std::string& command) const
       for (std::size_t c = 0; c < table.rows[r].size(); ++c)
       {
         const std::string* category = table.category_name(r, c);
-        out << (c ? ", " : "") << (category ? json_escape(*category) : json_number(table.rows[r][c]));
+        out << (c ? ", " : "")
+            << (category ? json_escape(*category) : json_number(table.rows[r][c]));
       }
       out << "]";
     }

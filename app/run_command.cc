@@ -192,8 +192,8 @@ void report_dynamic_factors(CommandContext& context, const stiffness::StiffnessS
       "run_kv",
       {"source", "kv_max_mesh1", "kv_max_mesh2", "kv_min_mesh1", "kv_min_mesh2", "mean_stiffness"},
       {"-", "-", "-", "-", "-", "N/um"});
-  kv_table.set_categories("source", {{0, sources[0].first}, {1, sources[1].first},
-                                     {2, sources[2].first}});
+  kv_table.set_categories("source",
+                          {{0, sources[0].first}, {1, sources[1].first}, {2, sources[2].first}});
   const char* keys[] = {"kv_calibrated_cai", "kv_fe_table", "kv_paper_cai"};
   for (unsigned int s = 0; s < sources.size(); ++s)
   {

@@ -118,12 +118,13 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
   std::string torques;
   for (const double t : p.settings.torques)
     torques += (torques.empty() ? "" : ", ") + format_number(t, 4);
-  report.add_text("load case",
-                  "T1 = " + (torques.empty() ? format_number(p.settings.pinion_torque, 4) : torques) +
-                      " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
-                      "wheel bore fixed, friction μ = " +
-                      format_number(p.settings.contact.friction_coefficient, 4) +
-                      "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");
+  report.add_text(
+      "load case",
+      "T1 = " + (torques.empty() ? format_number(p.settings.pinion_torque, 4) : torques) +
+          " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
+          "wheel bore fixed, friction μ = " +
+          format_number(p.settings.contact.friction_coefficient, 4) +
+          "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");
   const bool planar = p.settings.scene.mesh.dimension == 2;
   report.add_text("model",
                   std::string(planar ? fem::to_string(p.settings.elasticity.model) + " 2D"
@@ -256,6 +257,17 @@ void write_sweep_files(const StiffnessParameters& p, const kinematics::IsoStiffn
                p.published_reference
                    ? "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean"
                    : "k(θ) with its mean and the ISO 6336 mean");
+  // The TE chart names the case and the torque the positions were solved at (a torque list's
+  // first: the te_map table and harris_map.png show the others).
+  const kinematics::GearPairSpec& gears = p.settings.scene.pair;
+  const double torque = sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+  const std::string torque_text = "T1 = " + format_number(torque, 4) + " N·m";
+  context.plot("plot_transmission_error.py",
+               {csv.path(), "z " + std::to_string(gears.pinion.teeth) + "/" +
+                                std::to_string(gears.wheel.teeth) + ", m_n " +
+                                format_number(gears.pinion.normal_module * 1e3, 4) + " mm, " +
+                                torque_text},
+               "transmission_error.png", "loaded TE(θ) at " + torque_text);
 }
 
 void run(dealii::ParameterHandler& prm, CommandContext& context)

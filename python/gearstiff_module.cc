@@ -571,7 +571,8 @@ PYBIND11_MODULE(gearstiff, m)
             "'relative_deviation', 'source']}}, 'tables' {name: {'columns', 'units', 'data': "
             "{column: numpy array; of str for a categorical column}, 'categories' {column: "
             "[the names it allows]}}}, 'text', 'files', 'parameters' (the parameters used, as a "
-            "dict a later call accepts; numbers as int/float, switches as bool), 'timings' {'run', 'total'} [s].\n"
+            "dict a later call accepts; numbers as int/float, switches as bool), 'timings' {'run', "
+            "'total'} [s].\n"
             "Errors: gearstiff.InputError (bad input, names the parameter) and "
             "gearstiff.SolverFailure (a numerical method failed).";
 
