@@ -134,6 +134,48 @@ std::string csv_field(const std::string& text)
     quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
 }
+
+// One table as text: a column per entry, right-aligned, its unit under its name, a category's
+// name where the column is categorical; at most `max_rows` rows.
+void print_table(std::ostream& out, const ReportTable& table, unsigned int max_rows)
+{
+  out << '\n' << table.name << " (" << table.rows.size() << " rows)\n";
+  std::vector<std::size_t> widths;
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+  {
+    std::size_t longest_name = 0;
+    const auto names = table.categories.find(table.columns[c]);
+    if (names != table.categories.end())
+      for (const auto& [code, category] : names->second)
+        longest_name = std::max(longest_name, display_width(category) + 1);
+    widths.push_back(
+        std::max<std::size_t>(std::max<std::size_t>(13, longest_name),
+                              std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
+  }
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out << std::right << std::setw(widths[c]) << table.columns[c];
+  out << '\n';
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out << std::right << std::setw(widths[c]) << ("[" + table.units[c] + "]");
+  out << '\n';
+  std::size_t printed = 0;
+  for (std::size_t r = 0; r < table.rows.size(); ++r)
+  {
+    if (printed++ == max_rows)
+    {
+      out << "  ... " << table.rows.size() - max_rows
+          << " more rows (use -o DIR for the CSV, or --json)\n";
+      break;
+    }
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+    {
+      const std::string* category = table.category_name(r, c);
+      const std::string cell = category ? *category : format_number(table.rows[r][c]);
+      out << std::string(widths[c] - std::min(widths[c], display_width(cell)), ' ') << cell;
+    }
+    out << '\n';
+  }
+}
 } // namespace
 
 void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
@@ -179,44 +221,7 @@ void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
   }
 
   for (const auto& table : table_list)
-  {
-    out << '\n' << table.name << " (" << table.rows.size() << " rows)\n";
-    std::vector<std::size_t> widths;
-    for (std::size_t c = 0; c < table.columns.size(); ++c)
-    {
-      std::size_t longest_name = 0;
-      const auto names = table.categories.find(table.columns[c]);
-      if (names != table.categories.end())
-        for (const auto& [code, category] : names->second)
-          longest_name = std::max(longest_name, display_width(category) + 1);
-      widths.push_back(
-          std::max<std::size_t>(std::max<std::size_t>(13, longest_name),
-                                std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
-    }
-    for (std::size_t c = 0; c < table.columns.size(); ++c)
-      out << std::right << std::setw(widths[c]) << table.columns[c];
-    out << '\n';
-    for (std::size_t c = 0; c < table.columns.size(); ++c)
-      out << std::right << std::setw(widths[c]) << ("[" + table.units[c] + "]");
-    out << '\n';
-    std::size_t printed = 0;
-    for (std::size_t r = 0; r < table.rows.size(); ++r)
-    {
-      if (printed++ == max_table_rows)
-      {
-        out << "  ... " << table.rows.size() - max_table_rows
-            << " more rows (use -o DIR for the CSV, or --json)\n";
-        break;
-      }
-      for (std::size_t c = 0; c < table.columns.size(); ++c)
-      {
-        const std::string* category = table.category_name(r, c);
-        const std::string cell = category ? *category : format_number(table.rows[r][c]);
-        out << std::string(widths[c] - std::min(widths[c], display_width(cell)), ' ') << cell;
-      }
-      out << '\n';
-    }
-  }
+    print_table(out, table, max_table_rows);
 
   if (!output_file_list.empty())
   {
