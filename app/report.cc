@@ -76,7 +76,7 @@ ReportTable& Report::add_table(const std::string& name, const std::vector<std::s
 {
   if (columns.size() != units.size())
     throw std::logic_error("table '" + name + "': columns and units differ in number");
-  table_list.push_back(ReportTable{name, columns, units, {}});
+  table_list.push_back(ReportTable{name, columns, units, {}, {}});
   return table_list.back();
 }
 

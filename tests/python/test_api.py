@@ -15,6 +15,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -166,7 +167,7 @@ def test_version():
 def test_import_fails_clearly_without_numpy():
     # NumPy hidden (sys.modules entry None makes `import numpy` fail): the import of gearstiff
     # fails at once naming NumPy, not at the first call.
-    done = subprocess.run(["python3", "-c", "import sys; sys.modules['numpy'] = None; "
+    done = subprocess.run([sys.executable, "-c", "import sys; sys.modules['numpy'] = None; "
                            "import gearstiff"], capture_output=True, text=True, env=ENVIRONMENT)
     assert done.returncode != 0
     assert "ImportError: gearstiff needs NumPy" in done.stderr, done.stderr
