@@ -227,7 +227,7 @@ void note_relief_sizes(const kinematics::GearPairGeometry& pair, StiffnessParame
     const std::string gear = wheel ? "Gear pair/Wheel/" : "Gear pair/Pinion/";
     const geometry::GearModifications& m =
         wheel ? scene.wheel_modifications : scene.pinion_modifications;
-    const double module = (wheel ? pair.wheel : pair.pinion).normal_module;
+    const double module = (wheel ? scene.pair.wheel : scene.pair.pinion).normal_module;
     for (const geometry::ToothModification& t : m.all_teeth)
     {
       const bool tip = t.kind == geometry::ModificationKind::tip_relief;
