@@ -61,6 +61,8 @@ std::string joined_path(const std::vector<std::string>& sections, std::size_t co
 // "nearest: 'teeth', 'tip diameter'", or the names declared there when none is near.
 std::string suggestion(const std::string& name, const std::vector<std::string>& candidates)
 {
+  if (candidates.empty())
+    return "none is declared there";
   const std::vector<std::string> near = nearest_names(name, candidates);
   const std::vector<std::string>& listed = near.empty() ? candidates : near;
   std::string text = near.empty() ? "declared there: " : "nearest: ";

@@ -242,7 +242,7 @@ void note_relief_sizes(const kinematics::GearPairGeometry& pair, StiffnessParame
         p.input_notes.push_back(name + " = " + format_number(t.amount * 1e6, 4) +
                                 " µm is below 0.1 µm, far less than any relief removes: was it "
                                 "given in mm? (the unit is µm)");
-      else if (t.amount >= 0.05 * module)
+      else if (t.amount >= 0.05 * module * (1. - 1e-12)) // 200 µm on 4 mm: from µm and mm
         p.input_notes.push_back(name + " = " + format_number(t.amount * 1e6, 4) +
                                 " µm is 5 % of m_n = " + format_number(module * 1e3, 4) +
                                 " mm or more, more than a relief removes: check the unit (µm)");
