@@ -330,8 +330,10 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
     }
     {
       const TemporaryCsv csv(report, "lateral_orbit");
-      context.plot("plot_lateral.py", {"orbit", csv.path()}, "lateral_orbit.png",
-                   "orbits of sun, ring and carrier (x, y)");
+      // An orbit below 1e-9 of the sun's base radius is round-off: said, not drawn.
+      context.plot("plot_lateral.py",
+                   {"orbit", csv.path(), format_number(1e-9 * p.stage.sun.radius * 1e6, 3)},
+                   "lateral_orbit.png", "orbits of sun, ring and carrier (x, y)");
     }
     if (p.sweep_points > 0)
     {
