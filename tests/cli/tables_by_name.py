@@ -4,11 +4,12 @@ stiffness source) in the CSV, and summary.json states each table's columns, unit
 a categorical column allows: a table opened alone (a spreadsheet, pandas.read_csv) says what its
 entries mean. Reads the CSVs back with the csv module.
 
-usage: tables_by_name.py GEARSTIFF SOURCE_DIR WORK_DIR [OUTPUT_DIR ...]
+usage: tables_by_name.py GEARSTIFF SOURCE_DIR WORK_DIR [--case OUTPUT_DIR command args...]...
 
-OUTPUT_DIR: `-o` folders already written (the regression cases' default commands); the script
-adds its own runs for the columns no default command writes (a dynamics sweep up and down with
-nonlinear meshes, the lateral stage's sweep).
+Each --case names the `-o` folder a regression case wrote (the default commands) and its command
+line; a folder without summary.json (this test run alone) is written again by running the
+command. The script adds its own runs for the columns no default command writes (a dynamics sweep
+up and down with nonlinear meshes, the lateral stage's sweep).
 """
 import csv
 import json
@@ -45,7 +46,8 @@ def check_folder(folder, seen, errors):
     with open(os.path.join(folder, "summary.json")) as f:
         summary = json.load(f)
     for name, table in summary["tables"].items():
-        where = f"{os.path.basename(os.path.dirname(folder))}/{name}"
+        case = os.path.basename(folder)
+        where = f"{os.path.basename(os.path.dirname(folder)) if case == 'out' else case}/{name}"
         categories = table.get("categories", {})
         with open(os.path.join(folder, name + ".csv"), newline="") as f:
             rows = list(csv.reader(f))
@@ -91,8 +93,17 @@ def run(gearstiff, work, name, args):
 
 def main(argv):
     gearstiff, source, work = argv[1:4]
-    folders = list(argv[4:])
     os.makedirs(work, exist_ok=True)
+    folders, cases = [], []
+    for word in argv[4:]:
+        if word == "--case":
+            cases.append([])
+        else:
+            cases[-1].append(word)
+    for folder, *command in cases:
+        if not os.path.isfile(os.path.join(folder, "summary.json")):
+            folder = run(gearstiff, work, os.path.basename(os.path.dirname(folder)), command)
+        folders.append(folder)
     sweep = ["--set", "Speed sweep/points=3", "--set", "Speed sweep/direction=both"]
     folders.append(run(gearstiff, work, "dynamics_up_down", [
         "dynamics", "--set", "Simulation/mesh model=nonlinear"] + sweep))
