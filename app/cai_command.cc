@@ -170,8 +170,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const double contact_ratio = pair.transverse_contact_ratio;
   Report& report = context.report;
-  if (!p.derived_sizes.empty())
-    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
+  report_input_sizes(report, p);
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "cai");
   const std::vector<dynamics::StiffnessSample> samples = pair_samples(sweep, contact_ratio);

@@ -33,7 +33,7 @@ public:
                  const std::string& staging_directory, bool quiet, bool show_progress = true);
 
   MPI_Comm mpi_communicator;
-  dealii::ConditionalOStream& pcout; // progress and diagnostics (stderr when --json)
+  dealii::ConditionalOStream& pcout; // progress and diagnostics (stderr; nowhere with --quiet)
   Report report;
 
   // True when the user gave -o DIR; only then should files be written.

@@ -249,6 +249,7 @@ void add_torsion_table(Report& report, const std::vector<double>& levels,
   for (const auto& pc : profiles)
     columns.push_back("rotation_" + pc.name), units.push_back("arcmin");
   ReportTable& table = report.add_table("cycloid_torsion", columns, units);
+  table.set_categories("branch", {{-1, "unloading"}, {1, "loading"}});
   const unsigned int n = levels.size();
   for (unsigned int step = 0; step + 1 < 2 * n; ++step)
   {
@@ -263,13 +264,15 @@ void add_torsion_table(Report& report, const std::vector<double>& levels,
 }
 
 // The loops with friction (stiffness::cycloid_hysteresis), one per profile, in the order solved:
-// column profile (0 nominal, 1 corrected), branch +1 rising, −1 falling, 0 the first loading.
+// columns profile and branch (rising, falling, the first loading) by name.
 void add_hysteresis_table(Report& report, const std::vector<ProfileCases>& profiles,
                           const std::vector<stiffness::CycloidHysteresis>& loops)
 {
   ReportTable& table =
       report.add_table("cycloid_hysteresis", {"profile", "torque", "rotation", "branch"},
                        {"-", "N·m", "arcmin", "-"});
+  table.set_categories("profile", {{0, "nominal"}, {1, "corrected"}});
+  table.set_categories("branch", {{-1, "falling"}, {0, "first loading"}, {1, "rising"}});
   for (unsigned int b = 0; b < profiles.size(); ++b)
     for (const auto& point : loops[b].points)
       table.add_row({profiles[b].name == "nominal" ? 0. : 1., point.torque, point.rotation / arcmin,

@@ -16,6 +16,7 @@
 #include "app/dynamics_lateral_train.h"
 #include "app/dynamics_parameters.h"
 #include "app/lateral_parameters.h"
+#include "app/sweep_categories.h"
 #include "app/units.h"
 #include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/simulation.h"
@@ -266,10 +267,13 @@ void report_nonlinear_sweep(const DynamicsParameters& p, const SweepResult& swee
                                   "kv_min", "separation_fraction", "separations", "back_impacts",
                                   "mean_dte", "dte_rms", "status"},
                                  {"rpm", "Hz", "-", "-", "-", "-", "-", "-", "µm", "µm", "-"});
+  table.set_categories("direction", sweep_direction_categories());
+  table.set_categories("status", sweep_status_categories());
   // Every mesh's DTE spectrum; a train's copies of a Train mesh are one pair: its first copy.
   auto& waterfall = report.add_table("dynamics_dte_waterfall",
                                      {"input_speed", "direction", "mesh", "order", "amplitude"},
                                      {"rpm", "-", "-", "-", "µm"});
+  waterfall.set_categories("direction", sweep_direction_categories());
   unsigned int impacts = 0, separated = 0;
   for (const SweepPoint& point : sweep.points)
   {
@@ -492,6 +496,7 @@ void report_speed_sweep(const DynamicsParameters& p, const SweepResult& sweep, R
                                  {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
                                   "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
                                  {"rpm", "Hz", "-", "-", "-", "-", "-", "µs", "-"});
+  table.set_categories("status", sweep_status_categories());
   unsigned int unstable = 0, separated = 0, not_steady = 0;
   unsigned long steps = 0;
   for (const SweepPoint& point : sweep.points)
@@ -519,11 +524,7 @@ void report_speed_sweep(const DynamicsParameters& p, const SweepResult& sweep, R
                    "speeds with negative mesh force (teeth would separate)");
   report.add_value("sweep_not_steady", not_steady, "-",
                    "speeds whose K_v window is not periodic (no K_v)");
-  report.add_text("sweep status", "0 = " + sweep_status_name(SweepStatus::valid) +
-                                      ", 1 = " + sweep_status_name(SweepStatus::diverged) +
-                                      ", 2 = " + sweep_status_name(SweepStatus::contact_loss) +
-                                      ", 3 = " + sweep_status_name(SweepStatus::not_steady) +
-                                      "; K_v only for status 0");
+  report.add_text("sweep status", sweep_status_meanings() + "; K_v only for valid points");
   report.add_value("sweep_steps", steps, "-", "integration steps of the sweep");
   if (p.mesh_model == MeshModel::nonlinear || p.sweep_direction != SweepDirection::up)
     report_nonlinear_sweep(p, sweep, report);

@@ -2,6 +2,7 @@
 
 #include "app/lateral_mode_report.h"
 #include "app/lateral_parameters.h"
+#include "app/sweep_categories.h"
 #include "app/units.h"
 #include "dynamics/lateral_model.h"
 #include "dynamics/lateral_response.h"
@@ -214,6 +215,8 @@ void report_sweep(const LateralParameters& p, const LateralModel& model, Command
        "bearing_force_sun", "orbit_carrier", "orbit_ring", "orbit_sun", "separation_fraction",
        "time_step"},
       {"rpm", "rpm", "Hz", "-", "-", "-", "N", "N", "N", "N", "N", "µm", "µm", "µm", "-", "µs"});
+  table.set_categories("direction", sweep_direction_categories());
+  table.set_categories("status", sweep_status_categories());
   unsigned int counts[4] = {0, 0, 0, 0};
   unsigned long steps = 0;
   for (const LateralSweepPoint& point : sweep.points)
@@ -235,11 +238,8 @@ void report_sweep(const LateralParameters& p, const LateralModel& model, Command
           "; window " + std::to_string(p.sweep.window_periods) + " mesh periods after " +
           format_number(sweep.settle_time * 1e3, 4) +
           " ms (decay of the slowest mode to 1/1000 unless Simulation/steady state "
-          "start); direction 0 up, 1 down; status 0 = " +
-          sweep_status_name(SweepStatus::valid) +
-          ", 1 = " + sweep_status_name(SweepStatus::diverged) +
-          ", 2 = " + sweep_status_name(SweepStatus::contact_loss) +
-          ", 3 = " + sweep_status_name(SweepStatus::not_steady));
+          "start); status: " +
+          sweep_status_meanings());
   report.add_value("lateral_sweep_points", sweep.points.size(), "-", "runs of the lateral sweep");
   report.add_value("lateral_sweep_diverged", counts[1], "-", "runs where RK4 diverged");
   report.add_value("lateral_sweep_contact_loss", counts[2], "-",
@@ -330,8 +330,10 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
     }
     {
       const TemporaryCsv csv(report, "lateral_orbit");
-      context.plot("plot_lateral.py", {"orbit", csv.path()}, "lateral_orbit.png",
-                   "orbits of sun, ring and carrier (x, y)");
+      // An orbit below 1e-9 of the sun's base radius is round-off: said, not drawn.
+      context.plot("plot_lateral.py",
+                   {"orbit", csv.path(), format_number(1e-9 * p.stage.sun.radius * 1e6, 3)},
+                   "lateral_orbit.png", "orbits of sun, ring and carrier (x, y)");
     }
     if (p.sweep_points > 0)
     {

@@ -3,6 +3,7 @@
 #include "app/dynamics_parameters.h"
 #include "app/lateral_mode_report.h"
 #include "app/lateral_parameters.h"
+#include "app/sweep_categories.h"
 #include "app/units.h"
 #include "dynamics/lateral_train_response.h"
 #include "errors/errors.h"
@@ -170,6 +171,7 @@ void report_sweep(const LateralTrainParameters& p, double settle, Report& report
       units.push_back(what[0] == 'o' ? "µm" : "N");
     }
   auto& table = report.add_table("lateral_train_speed_sweep", columns, units);
+  table.set_categories("status", sweep_status_categories());
   for (const LateralTrainSweepPoint& point : points)
   {
     std::vector<double> row{point.input_speed / rpm, double(static_cast<int>(point.status)),
@@ -182,9 +184,7 @@ void report_sweep(const LateralTrainParameters& p, double settle, Report& report
       row.push_back(point.summary.kv_max.empty() ? 0. : point.summary.bearing_force_max[b]);
     table.add_row(row);
   }
-  report.add_text("lateral train sweep",
-                  "status 0 valid, 1 diverged, 2 contact loss (a mesh "
-                  "force below 0), 3 not steady (window halves > 5 % apart)");
+  report.add_text("lateral train sweep", "status: " + sweep_status_meanings());
   report.add_value("lateral_sweep_time",
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                    "s", "wall time of the sweep");

@@ -159,8 +159,10 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& path,
   {
     for (; entered > 0; --entered)
       prm.leave_subsection();
-    throw InputError(path, "cannot set to '" + shortened(value) +
-                               "': " + shortened_in(deal_ii_message(e), value));
+    const std::string selection = selection_mismatch(prm, parts, key, value);
+    throw InputError(path,
+                     "cannot set to '" + shortened(value) + "': " +
+                         (selection.empty() ? shortened_in(deal_ii_message(e), value) : selection));
   }
   for (; entered > 0; --entered)
     prm.leave_subsection();

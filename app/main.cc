@@ -144,10 +144,10 @@ int run(int argc, char** argv, MPI_Comm comm)
     return 0;
   }
 
-  // With --json, progress goes to stderr so that stdout holds the JSON only; --quiet: nowhere.
-  const Report report =
-      run_loaded_command(command, prm, line.output_directory, comm,
-                         line.json ? std::cerr : std::cout, !line.quiet, line.json || line.quiet);
+  // Progress and diagnostics on stderr (with or without --json), so that stdout holds the report
+  // alone; --quiet: nowhere.
+  const Report report = run_loaded_command(command, prm, line.output_directory, comm, std::cerr,
+                                           !line.quiet, line.json || line.quiet);
   if (root)
   {
     if (line.json)

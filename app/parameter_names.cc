@@ -61,6 +61,8 @@ std::string joined_path(const std::vector<std::string>& sections, std::size_t co
 // "nearest: 'teeth', 'tip diameter'", or the names declared there when none is near.
 std::string suggestion(const std::string& name, const std::vector<std::string>& candidates)
 {
+  if (candidates.empty())
+    return "none is declared there";
   const std::vector<std::string> near = nearest_names(name, candidates);
   const std::vector<std::string>& listed = near.empty() ? candidates : near;
   std::string text = near.empty() ? "declared there: " : "nearest: ";
@@ -113,6 +115,21 @@ std::string trimmed(const std::string& text)
   return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
 }
 
+// For an unknown subsection (the last of `sections`) that is declared one level further out:
+// the `end` of the subsection opened before it is probably missing. "" otherwise.
+std::string unclosed_hint(const DeclaredSection& declared, const std::vector<std::string>& sections,
+                          const std::vector<unsigned int>& opened_at)
+{
+  if (sections.size() < 2)
+    return "";
+  std::vector<std::string> outer(sections.begin(), sections.end() - 2);
+  outer.push_back(sections.back());
+  if (!missing_reason(declared, outer, "").empty())
+    return "";
+  return " (is the `end` of subsection '" + sections[sections.size() - 2] + "', opened at line " +
+         std::to_string(opened_at[opened_at.size() - 2]) + ", missing?)";
+}
+
 // Whether `sections`/`key` is declared by another command (then listed as ignored); `key` empty:
 // only the sections.
 bool elsewhere(OtherCommandNames* others, const std::vector<std::string>& sections,
@@ -140,6 +157,7 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file,
 {
   std::ifstream in(file);
   std::vector<std::string> sections;
+  std::vector<unsigned int> opened_at; // the line of each open subsection
   // Depth of the outermost open subsection only other commands declare (npos: none).
   std::size_t foreign = std::string::npos;
   std::string line, logical;
@@ -167,6 +185,7 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file,
     if (text.rfind("subsection ", 0) == 0)
     {
       sections.push_back(trimmed(text.substr(11)));
+      opened_at.push_back(first_line);
       const std::string reason = foreign != std::string::npos
                                      ? missing_reason(others->declared, sections, "")
                                      : missing_reason(declared, sections, "");
@@ -175,13 +194,15 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file,
       if (foreign == std::string::npos && elsewhere(others, sections, ""))
         foreign = sections.size() - 1;
       else
-        throw InputError(where, any_command_reason(others, sections, "", reason));
+        throw InputError(where, any_command_reason(others, sections, "", reason) +
+                                    unclosed_hint(declared, sections, opened_at));
     }
     else if (text == "end")
     {
       if (sections.empty())
         return; // deal.II reports the unbalanced end
       sections.pop_back();
+      opened_at.pop_back();
       if (foreign != std::string::npos && sections.size() <= foreign)
         foreign = std::string::npos;
     }
@@ -199,6 +220,11 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file,
           throw InputError(where, any_command_reason(others, sections, key, reason));
     }
   }
+  // deal.II's own message for an unclosed subsection names no line.
+  if (!sections.empty())
+    throw InputError(file + ":" + std::to_string(opened_at.back()),
+                     "subsection '" + joined_path(sections, sections.size()) +
+                         "' opened here is never closed: an `end` is missing");
 }
 
 // `foreign`: the tree lies inside a section only other commands declare (checked against
@@ -265,6 +291,42 @@ std::vector<std::string> nearest_names(const std::string& name,
   for (std::size_t i = 0; i < scored.size() && i < count; ++i)
     names.push_back(scored[i].second);
   return names;
+}
+
+std::string selection_mismatch(const dealii::ParameterHandler& prm,
+                               const std::vector<std::string>& sections, const std::string& key,
+                               const std::string& value)
+{
+  // The full JSON listing carries each entry's pattern description (names demangled).
+  std::stringstream listing;
+  prm.print_parameters(listing, dealii::ParameterHandler::JSON);
+  boost::property_tree::ptree tree;
+  boost::property_tree::read_json(listing, tree);
+  const boost::property_tree::ptree* node = &tree;
+  for (const std::string& name : sections)
+  {
+    const auto found = node->find(name);
+    if (found == node->not_found())
+      return "";
+    node = &found->second;
+  }
+  const auto entry = node->find(key);
+  if (entry == node->not_found())
+    return "";
+  const std::string pattern = entry->second.get<std::string>("pattern_description", "");
+  const std::string head = "[Selection ";
+  if (pattern.rfind(head, 0) != 0 || pattern.size() < head.size() + 2)
+    return "";
+  std::vector<std::string> allowed;
+  std::istringstream options(pattern.substr(head.size(), pattern.size() - head.size() - 2));
+  std::string text = "not one of ";
+  for (std::string option; std::getline(options, option, '|');)
+  {
+    text += (allowed.empty() ? "'" : ", '") + option + "'";
+    allowed.push_back(option);
+  }
+  const std::vector<std::string> near = nearest_names(value, allowed, 1);
+  return near.empty() ? text : text + "; did you mean '" + near.front() + "'?";
 }
 
 void check_parameter_name(const DeclaredSection& declared, const std::vector<std::string>& sections,

@@ -46,6 +46,13 @@ struct OtherCommandNames
 // `into` gains every entry and subsection of `from`.
 void merge_declared(DeclaredSection& into, const DeclaredSection& from);
 
+// For an entry whose pattern is a Selection ("[Selection single|double|sweep ]") and a value it
+// does not allow: "not one of 'single', 'double', 'sweep'; did you mean 'sweep'?" (the nearest
+// allowed value, when one is near). "" for another pattern: its own message stands.
+std::string selection_mismatch(const dealii::ParameterHandler& prm,
+                               const std::vector<std::string>& sections, const std::string& key,
+                               const std::string& value);
+
 // The same for every `set` of a .prm file or every key of a .json file; the InputError names
 // the file and line (.prm) or the file and the key's path (.json). Lines it does not understand
 // are left to deal.II's parser. With `others`, names only other commands declare are listed

@@ -2,6 +2,7 @@
 
 #include "app/command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,31 @@ void ReportTable::add_row(const std::vector<double>& row)
     throw std::logic_error("table '" + name + "': row has " + std::to_string(row.size()) +
                            " entries, expected " + std::to_string(columns.size()));
   rows.push_back(row);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    category_name(rows.size() - 1, c); // an unknown code is a programming error: thrown here
+}
+
+void ReportTable::set_categories(const std::string& column, const std::map<int, std::string>& names)
+{
+  if (std::find(columns.begin(), columns.end(), column) == columns.end())
+    throw std::logic_error("table '" + name + "': no column '" + column + "' to name");
+  categories[column] = names;
+  const std::size_t c = std::find(columns.begin(), columns.end(), column) - columns.begin();
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    category_name(r, c);
+}
+
+const std::string* ReportTable::category_name(std::size_t row, std::size_t column) const
+{
+  const auto names = categories.find(columns[column]);
+  if (names == categories.end())
+    return nullptr;
+  const double code = rows[row][column];
+  const auto found = names->second.find(static_cast<int>(std::lround(code)));
+  if (!std::isfinite(code) || found == names->second.end() || found->first != code)
+    throw std::logic_error("table '" + name + "': code " + std::to_string(code) + " of column '" +
+                           columns[column] + "' has no name");
+  return &found->second;
 }
 
 void Report::add_value(const std::string& key, double value, const std::string& unit,
@@ -50,7 +76,7 @@ ReportTable& Report::add_table(const std::string& name, const std::vector<std::s
 {
   if (columns.size() != units.size())
     throw std::logic_error("table '" + name + "': columns and units differ in number");
-  table_list.push_back(ReportTable{name, columns, units, {}});
+  table_list.push_back(ReportTable{name, columns, units, {}, {}});
   return table_list.back();
 }
 
@@ -97,6 +123,59 @@ std::string format_number(double x)
     s << std::setprecision(7) << x;
   return s.str();
 }
+
+// A CSV field as RFC 4180 reads it: quoted when it holds a separator, a quote or a line break.
+std::string csv_field(const std::string& text)
+{
+  if (text.find_first_of(",\"\n") == std::string::npos)
+    return text;
+  std::string quoted = "\"";
+  for (const char c : text)
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+// One table as text: a column per entry, right-aligned, its unit under its name, a category's
+// name where the column is categorical; at most `max_rows` rows.
+void print_table(std::ostream& out, const ReportTable& table, unsigned int max_rows)
+{
+  out << '\n' << table.name << " (" << table.rows.size() << " rows)\n";
+  std::vector<std::size_t> widths;
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+  {
+    std::size_t longest_name = 0;
+    const auto names = table.categories.find(table.columns[c]);
+    if (names != table.categories.end())
+      for (const auto& [code, category] : names->second)
+        longest_name = std::max(longest_name, display_width(category) + 1);
+    widths.push_back(
+        std::max<std::size_t>(std::max<std::size_t>(13, longest_name),
+                              std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
+  }
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out << std::right << std::setw(widths[c]) << table.columns[c];
+  out << '\n';
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out << std::right << std::setw(widths[c]) << ("[" + table.units[c] + "]");
+  out << '\n';
+  std::size_t printed = 0;
+  for (std::size_t r = 0; r < table.rows.size(); ++r)
+  {
+    if (printed++ == max_rows)
+    {
+      out << "  ... " << table.rows.size() - max_rows
+          << " more rows (use -o DIR for the CSV, or --json)\n";
+      break;
+    }
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+    {
+      const std::string* category = table.category_name(r, c);
+      const std::string cell = category ? *category : format_number(table.rows[r][c]);
+      out << std::string(widths[c] - std::min(widths[c], display_width(cell)), ' ') << cell;
+    }
+    out << '\n';
+  }
+}
 } // namespace
 
 void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
@@ -142,32 +221,7 @@ void Report::print_text(std::ostream& out, unsigned int max_table_rows) const
   }
 
   for (const auto& table : table_list)
-  {
-    out << '\n' << table.name << " (" << table.rows.size() << " rows)\n";
-    std::vector<std::size_t> widths;
-    for (std::size_t c = 0; c < table.columns.size(); ++c)
-      widths.push_back(std::max<std::size_t>(
-          13, std::max(table.columns[c].size(), table.units[c].size() + 2) + 1));
-    for (std::size_t c = 0; c < table.columns.size(); ++c)
-      out << std::right << std::setw(widths[c]) << table.columns[c];
-    out << '\n';
-    for (std::size_t c = 0; c < table.columns.size(); ++c)
-      out << std::right << std::setw(widths[c]) << ("[" + table.units[c] + "]");
-    out << '\n';
-    std::size_t printed = 0;
-    for (const auto& row : table.rows)
-    {
-      if (printed++ == max_table_rows)
-      {
-        out << "  ... " << table.rows.size() - max_table_rows
-            << " more rows (use -o DIR for the CSV, or --json)\n";
-        break;
-      }
-      for (std::size_t c = 0; c < row.size(); ++c)
-        out << std::right << std::setw(widths[c]) << format_number(row[c]);
-      out << '\n';
-    }
-  }
+    print_table(out, table, max_table_rows);
 
   if (!output_file_list.empty())
   {
@@ -246,12 +300,38 @@ void Report::print_json(std::ostream& out, const std::string& command) const
     out << "], \"units\": [";
     for (std::size_t c = 0; c < table.units.size(); ++c)
       out << (c ? ", " : "") << json_escape(table.units[c]);
-    out << "], \"rows\": [";
+    out << "]";
+    if (!table.categories.empty())
+    {
+      out << ", \"categories\": {";
+      bool first_column = true;
+      for (const auto& column : table.columns) // in column order, not the map's
+      {
+        const auto names = table.categories.find(column);
+        if (names == table.categories.end())
+          continue;
+        out << (first_column ? "" : ", ") << json_escape(column) << ": [";
+        first_column = false;
+        bool first_name = true;
+        for (const auto& [code, category] : names->second)
+        {
+          out << (first_name ? "" : ", ") << json_escape(category);
+          first_name = false;
+        }
+        out << "]";
+      }
+      out << "}";
+    }
+    out << ", \"rows\": [";
     for (std::size_t r = 0; r < table.rows.size(); ++r)
     {
       out << (r ? ", [" : "[");
       for (std::size_t c = 0; c < table.rows[r].size(); ++c)
-        out << (c ? ", " : "") << json_number(table.rows[r][c]);
+      {
+        const std::string* category = table.category_name(r, c);
+        out << (c ? ", " : "")
+            << (category ? json_escape(*category) : json_number(table.rows[r][c]));
+      }
       out << "]";
     }
     out << "]}";
@@ -267,10 +347,16 @@ void Report::write_table_csv(const ReportTable& table, std::ostream& out) const
   for (std::size_t c = 0; c < table.columns.size(); ++c)
     out << (c ? "," : "") << table.columns[c] << " [" << table.units[c] << "]";
   out << '\n' << std::setprecision(12);
-  for (const auto& row : table.rows)
+  for (std::size_t r = 0; r < table.rows.size(); ++r)
   {
-    for (std::size_t c = 0; c < row.size(); ++c)
-      out << (c ? "," : "") << row[c];
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+    {
+      out << (c ? "," : "");
+      if (const std::string* category = table.category_name(r, c))
+        out << csv_field(*category);
+      else
+        out << table.rows[r][c];
+    }
     out << '\n';
   }
 }

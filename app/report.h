@@ -36,7 +36,16 @@ struct ReportTable
   std::vector<std::string> columns;      // snake_case column names
   std::vector<std::string> units;        // one per column
   std::vector<std::vector<double>> rows; // each row has columns.size() entries
+  // Categorical columns (a sweep's direction, a run's status, a stiffness source): column name →
+  // the name of each code its rows hold. Every writer (text, JSON, CSV, Python) shows the name,
+  // and the JSON lists the names a column allows: a table read on its own (a spreadsheet, pandas)
+  // says what its entries mean, which numeric codes explained only in the text report did not.
+  std::map<std::string, std::map<int, std::string>> categories;
   void add_row(const std::vector<double>& row);
+  // Makes `column` categorical: its rows hold the codes of `names` (exact small integers).
+  void set_categories(const std::string& column, const std::map<int, std::string>& names);
+  // The name of row `row`'s entry in column `column`, or nullptr for a numeric column.
+  const std::string* category_name(std::size_t row, std::size_t column) const;
 };
 
 class Report

@@ -213,6 +213,44 @@ void parse_modification_stage(ParameterHandler& prm, const std::string& variants
     throw InputError("Stiffness/variants", "applies to mode sweep only");
 }
 
+// The relief lengths that read `auto` (the long relief: from the tip to the start of
+// single-tooth contact, (ε_α − 1)·p_bt along the path of contact for either gear) as derived
+// sizes, and a note for a relief amount that looks like a unit slip: below 0.1 µm (a
+// relief typed in mm) or from 5 % of m_n up (more than any relief removes: mm, or a relief
+// meant for a larger gear). The run goes on: such a value is possible, only unlikely.
+void note_relief_sizes(const kinematics::GearPairGeometry& pair, StiffnessParameters& p)
+{
+  const geometry::GearPairSceneSpec& scene = p.settings.scene;
+  const double tip_side[2] = {pair.contact_end - pair.single_contact_end(),
+                              pair.single_contact_start() - pair.contact_start};
+  for (const bool wheel : {false, true})
+  {
+    const std::string gear = wheel ? "Gear pair/Wheel/" : "Gear pair/Pinion/";
+    const geometry::GearModifications& m =
+        wheel ? scene.wheel_modifications : scene.pinion_modifications;
+    const double module = (wheel ? scene.pair.wheel : scene.pair.pinion).normal_module;
+    for (const geometry::ToothModification& t : m.all_teeth)
+    {
+      const bool tip = t.kind == geometry::ModificationKind::tip_relief;
+      if (!(tip || t.kind == geometry::ModificationKind::root_relief) || !(t.amount > 0.))
+        continue;
+      const std::string name = gear + (tip ? "tip relief" : "root relief");
+      if (tip && t.length < 0.)
+        p.derived_sizes.push_back({name + " length", tip_side[wheel ? 1 : 0],
+                                   "auto: from the tip to the start of single-tooth contact, "
+                                   "(ε_α − 1)·p_bt along the path of contact"});
+      if (t.amount < 0.1e-6)
+        p.input_notes.push_back(name + " = " + format_number(t.amount * 1e6, 4) +
+                                " µm is below 0.1 µm, far less than any relief removes: was it "
+                                "given in mm? (the unit is µm)");
+      else if (t.amount >= 0.05 * module * (1. - 1e-12)) // 200 µm on 4 mm: from µm and mm
+        p.input_notes.push_back(name + " = " + format_number(t.amount * 1e6, 4) +
+                                " µm is 5 % of m_n = " + format_number(module * 1e3, 4) +
+                                " mm or more, more than a relief removes: check the unit (µm)");
+    }
+  }
+}
+
 // The checks the analysis makes before it meshes, run at parse time: the library's own (one
 // copy each), their field names mapped to the parameters by the caller.
 void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPairGeometry& pair)
@@ -329,6 +367,7 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   // refuses in mode sweep; the other modes do not use it.
   p.sweep.positions = static_cast<unsigned int>(std::clamp<long>(positions, 0, UINT_MAX));
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(s.scene.pair);
+  note_relief_sizes(pair, p);
   if (start >= 0.)
     p.sweep.start_position = start * degree * 0.5 * pair.pinion.base_diameter;
   switch (p.mode)
@@ -555,6 +594,17 @@ bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
          load.closed_roll_max >= pair.contact_end - tolerance))
       return true;
   return false;
+}
+
+void report_input_sizes(Report& report, const StiffnessParameters& p)
+{
+  if (!p.derived_sizes.empty())
+    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
+  std::string notes;
+  for (const std::string& note : p.input_notes)
+    notes += (notes.empty() ? "" : "; ") + note;
+  if (!notes.empty())
+    report.add_text("input notes", notes);
 }
 
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,

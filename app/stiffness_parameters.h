@@ -48,6 +48,9 @@ struct StiffnessParameters
   // (kinematics::is_split_path_pair).
   bool published_reference = true;
   std::vector<kinematics::DerivedSize> derived_sizes; // the `auto` sizes of the gear pair
+  // Values that run but look like a unit slip (a relief typed in mm where µm are due), one
+  // sentence each naming the parameter; the report prints them beside the result.
+  std::vector<std::string> input_notes;
   // `Stiffness/variants`: further modification sets, each swept like the base one.
   std::vector<StiffnessVariant> variants;
 };
@@ -95,6 +98,9 @@ bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
                       const kinematics::GearPairGeometry& pair);
 // The sweep as a table (one row per position; column tip_edge_contact flags edge contact at a
 // tip corner, and a report text lists those positions).
+// The report's texts "derived sizes" (the `auto` sizes) and "input notes" (possible unit slips),
+// when there are any: the first thing an own case's report shows.
+void report_input_sizes(Report& report, const StiffnessParameters& p);
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name, const kinematics::GearPairGeometry& pair);
 // With a torque list: TE(θ), k(θ), load sharing and pressure per torque (table `name`, one row

@@ -83,7 +83,7 @@ def read_back():
     with open(sweep_csv, newline="") as f:
         for r in csv.DictReader(f):
             sweeps.setdefault(r["variant"], []).append(
-                {k: float(v) for k, v in r.items() if k != "variant"})
+                {k: v if k == "status" else float(v) for k, v in r.items() if k != "variant"})
     with open(orbit_csv, newline="") as f:
         for r in csv.DictReader(f):
             orbits.setdefault(r["variant"], []).append((float(r["x"]), float(r["y"])))
@@ -172,7 +172,7 @@ for label, single, sweep, wall, sweep_wall in results:
     sweeps[label] = table(sweep, "lateral_train_speed_sweep")
     orbits[label] = [(r["7_x"], r["7_y"]) for r in table(single, "lateral_train_orbit")]
     s = sweeps[label]
-    valid = [r for r in s if round(r["status"]) == 0]
+    valid = [r for r in s if r["status"] == "valid"]
     top = max(valid, key=lambda r: max(r[f"kv_mesh{m}"] for m in range(1, 5))) if valid else None
     orbit_top = max(s, key=lambda r: r["orbit_7"])
     print(f"|   sweep | {len(valid)}/{len(s)} valid; largest K_v "

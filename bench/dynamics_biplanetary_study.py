@@ -35,17 +35,16 @@ variants = [("I: ring 7 fixed", None)] + [
 
 def plot_sweeps(sweeps):
     """Ring fixed against the middle suspension stiffness: the linear model's K_v max in grey,
-    valid points (status 0) in colour, the rest marked by status."""
+    valid points in colour, the rest marked by status."""
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
     for ax, (label, rows) in zip(axes, (sweeps[0], sweeps[2])):
         speed = [r["input_speed"] for r in rows]
         ax.plot(speed, [r["kv_max_linear"] for r in rows], "-", color="0.6", lw=1,
                 label="K_v max of the linear model")
-        for status, marker, text in ((0, "o", "valid"), (2, "x", "contact loss"),
-                                     (3, "+", "not steady")):
+        for status, marker in (("valid", "o"), ("contact loss", "x"), ("not steady", "+")):
             pts = [(r["input_speed"], r["kv_max_linear"]) for r in rows if r["status"] == status]
             if pts:
-                ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, ms=5, label=text)
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, ms=5, label=status)
         ax.set_title(label)
         ax.set_xlabel("input speed n1 [rpm]")
         ax.grid(True, lw=0.3)
@@ -60,7 +59,7 @@ if len(sys.argv) > 1 and sys.argv[1] == "--plot-only":
     with open(os.path.join(root, "docs", "biplanetary_dynamics.csv"), newline="") as f:
         for r in csv.DictReader(f):
             sweeps.setdefault(r["variant"], []).append(
-                {"input_speed": float(r["input_speed [rpm]"]), "status": round(float(r["status [-]"])),
+                {"input_speed": float(r["input_speed [rpm]"]), "status": r["status [-]"],
                  "kv_max_linear": float(r["kv_max_linear [-]"])})
     plot_sweeps(list(sweeps.items()))
     sys.exit(0)

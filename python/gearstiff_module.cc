@@ -274,20 +274,33 @@ py::dict tables_dict(const Report& report)
   py::dict tables;
   for (const ReportTable& table : report.tables())
   {
-    py::dict units, data;
+    py::dict units, data, categories;
     for (std::size_t c = 0; c < table.columns.size(); ++c)
     {
+      units[py::str(table.columns[c])] = table.units[c];
+      if (table.categories.count(table.columns[c]))
+      {
+        // A categorical column by its names (a NumPy array of str), as in the CSV and JSON.
+        py::list names, allowed;
+        for (std::size_t r = 0; r < table.rows.size(); ++r)
+          names.append(*table.category_name(r, c));
+        for (const auto& [code, name] : table.categories.at(table.columns[c]))
+          allowed.append(name);
+        data[py::str(table.columns[c])] = py::module_::import("numpy").attr("array")(names, "U");
+        categories[py::str(table.columns[c])] = allowed;
+        continue;
+      }
       py::array_t<double> column(static_cast<py::ssize_t>(table.rows.size()));
       auto view = column.mutable_unchecked<1>();
       for (std::size_t r = 0; r < table.rows.size(); ++r)
         view(r) = table.rows[r][c];
-      units[py::str(table.columns[c])] = table.units[c];
       data[py::str(table.columns[c])] = column;
     }
     py::dict entry;
     entry["columns"] = table.columns;
     entry["units"] = units;
     entry["data"] = data;
+    entry["categories"] = categories;
     tables[py::str(table.name)] = entry;
   }
   return tables;
@@ -306,6 +319,8 @@ class NullBuffer : public std::streambuf
 protected:
   int overflow(int c) override { return c; }
 };
+
+py::dict typed_values(const py::dict& declared);
 
 py::dict run_command(const std::string& name, const py::object& params,
                      const py::object& output_directory, bool verbose)
@@ -362,7 +377,7 @@ py::dict run_command(const std::string& name, const py::object& params,
   for (const auto& file : report.output_files())
     files.append(file.first);
   result["files"] = files;
-  result["parameters"] = parameter_json(prm, dealii::ParameterHandler::ShortJSON);
+  result["parameters"] = typed_values(declared_tree(prm));
   py::dict timings;
   timings["run"] = run_seconds;
   timings["total"] =
@@ -406,6 +421,24 @@ py::object typed_default(const std::string& text, const std::string& pattern)
   {
   }
   return py::str(text);
+}
+
+// The parameters in use (the JSON listing's entries) with each value typed by its pattern, as
+// the nested dict of sections a later call accepts: {'Gear pair': {'Pinion': {'teeth': 23}}}.
+py::dict typed_values(const py::dict& declared)
+{
+  py::dict out;
+  for (const auto& item : declared)
+  {
+    if (is_entry(item.second))
+    {
+      const py::dict d = py::reinterpret_borrow<py::dict>(item.second);
+      out[item.first] = typed_default(py::str(d["value"]), py::str(d["pattern_description"]));
+    }
+    else if (py::isinstance<py::dict>(item.second))
+      out[item.first] = typed_values(py::reinterpret_borrow<py::dict>(item.second));
+  }
+  return out;
 }
 
 py::dict describe(const py::dict& declared)
@@ -499,22 +532,47 @@ void define_commands(py::module_& m)
             .c_str());
   }
 }
+
+// "gear_pair, stiffness, ...": every registered command by its Python name.
+std::string command_list()
+{
+  std::string list;
+  for (const auto& [name, command] : command_registry())
+    list += (list.empty() ? "" : ", ") + python_name(name);
+  return list;
+}
 } // namespace
 
 PYBIND11_MODULE(gearstiff, m)
 {
-  m.doc() = "gearstiff: FE mesh stiffness, frictional contact and torsional dynamics of gear "
-            "drives, in-process.\n\nOne function per command of the `gearstiff` command line "
-            "(gear_pair, stiffness, cai, dynamics, kinematics, cycloid, cycloid_loads, mesh, "
-            "contact, run), each\n"
+  // Every table and array the module returns is NumPy's: without it the import fails here, with
+  // the package to install, not at the first call.
+  try
+  {
+    py::module_::import("numpy");
+  }
+  catch (const py::error_already_set& e)
+  {
+    throw py::import_error("gearstiff needs NumPy (Debian: apt-get install python3-numpy; pip: "
+                           "pip install numpy): " +
+                           std::string(e.what()));
+  }
+  m.attr("__version__") = GEARSTIFF_VERSION;
+  m.doc() = "gearstiff " GEARSTIFF_VERSION ": FE mesh stiffness, frictional contact and "
+            "torsional dynamics of gear drives, in-process.\n\nOne function per command of the "
+            "`gearstiff` command line (" +
+            command_list() +
+            "), each\n"
             "    f(params=None, output_directory=None, verbose=False) -> dict\n"
             "params: a nested dict in the .prm's sections and names "
             "({'Gear pair': {'Pinion': {'teeth': 21}}}), or the path of a .prm/.json file; "
             "None runs the built-in default case.\n"
             "The dict returned: 'values' {key: {'value', 'unit', 'description'[, 'published', "
             "'relative_deviation', 'source']}}, 'tables' {name: {'columns', 'units', 'data': "
-            "{column: numpy array}}}, 'text', 'files', 'parameters' (the parameters used, as a "
-            "dict a later call accepts), 'timings' {'run', 'total'} [s].\n"
+            "{column: numpy array; of str for a categorical column}, 'categories' {column: "
+            "[the names it allows]}}}, 'text', 'files', 'parameters' (the parameters used, as a "
+            "dict a later call accepts; numbers as int/float, switches as bool), 'timings' {'run', "
+            "'total'} [s].\n"
             "Errors: gearstiff.InputError (bad input, names the parameter) and "
             "gearstiff.SolverFailure (a numerical method failed).";
 

@@ -195,7 +195,7 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
     if (progress)
       progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
                format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
-               "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + "e6 N/m, " +
+               "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + " N/µm, " +
                std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
                " s" +
                (spec.mesh == SweepMesh::once

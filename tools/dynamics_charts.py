@@ -14,8 +14,8 @@ import matplotlib.pyplot as plt  # noqa: E402,F401  (re-exported to the plot scr
 
 
 def read(path):
-    """The CSV at `path` as (header, {header: [float, ...]}); a cell that is not a number is
-    NaN (rows without a valid value)."""
+    """The CSV at `path` as (header, {header: [float or str, ...]}): numbers as floats ("nan"
+    where a row has no valid value), a categorical column's names ("up", "valid") as str."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     header = [h.strip() for h in rows[0]]
@@ -25,7 +25,7 @@ def read(path):
             try:
                 columns[h].append(float(v))
             except ValueError:
-                columns[h].append(float("nan"))
+                columns[h].append(v)
     return header, columns
 
 

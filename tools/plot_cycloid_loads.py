@@ -6,7 +6,7 @@ usage: plot_cycloid_loads.py MODE TABLE.csv OUT.png
            one colour per profile (nominal, corrected)
   pins     cycloid_pins table: Q_j the same way
   torsion  cycloid_torsion table: output rotation [arcmin] against the output torque [N·m] along
-           the ramp -M_c -> +M_c -> -M_c (column branch: +1 loading, -1 unloading)
+           the ramp -M_c -> +M_c -> -M_c (column branch: loading, unloading)
   hysteresis  cycloid_hysteresis table: the loops with friction, rotation [arcmin] against
            torque [N·m], one colour per profile (column profile), rising solid, falling dashed
   sweep    cycloid_sweep_<profile> table: P_i(φ_h) and Q_j(φ_h) traces
@@ -62,10 +62,10 @@ def torsion(table, png):
     coincide without friction); a profile with play jumps across zero torque by its backlash."""
     fig, ax = plt.subplots(figsize=(7, 5))
     for n, key in enumerate(k for k in table if k.startswith("rotation_")):
-        for branch, style, label in ((1, "o-", "loading"), (-1, "x--", "unloading")):
+        for branch, style in (("loading", "o-"), ("unloading", "x--")):
             rows = [i for i, b in enumerate(table["branch"]) if b == branch]
             ax.plot([table[key][i] for i in rows], [table["torque"][i] for i in rows], style,
-                    color=f"C{n}", label=f"{key[len('rotation_'):]}, {label}")
+                    color=f"C{n}", label=f"{key[len('rotation_'):]}, {branch}")
     finish_torque_rotation(fig, ax, png)
 
 
@@ -73,15 +73,14 @@ def hysteresis(table, png):
     """The loops -M_c -> +M_c -> -M_c with friction: rising branch solid, falling dashed, the
     first loading dotted; a profile with play jumps across zero torque by its backlash."""
     fig, ax = plt.subplots(figsize=(7, 5))
-    names = ["nominal", "corrected"]
-    for p in sorted(set(int(v) for v in table["profile"])):
-        for branch, style, label in ((1, "o-", "rising"), (-1, "x--", "falling"), (0, ".:", "first loading")):
+    for n, name in enumerate(("nominal", "corrected")):
+        for branch, style in (("rising", "o-"), ("falling", "x--"), ("first loading", ".:")):
             rows = [i for i in range(len(table["torque"]))
-                    if int(table["profile"][i]) == p and int(table["branch"][i]) == branch]
+                    if table["profile"][i] == name and table["branch"][i] == branch]
             rows.sort(key=lambda i: table["torque"][i])
             if rows:
                 ax.plot([table["rotation"][i] for i in rows], [table["torque"][i] for i in rows],
-                        style, ms=3, color=f"C{p}", label=f"{names[p] if p < 2 else p}, {label}")
+                        style, ms=3, color=f"C{n}", label=f"{name}, {branch}")
     finish_torque_rotation(fig, ax, png)
 
 

@@ -87,12 +87,12 @@ def resonance(path, png):
     ax.plot(speed, c["kv_max [-]"], "o-", ms=3, lw=1, label="K_v max (simulated)")
     ax.plot(speed, c["kv_iso [-]"], "--", lw=1, label="K_v ISO 6336-1 method B")
     status = c["status [-]"]
-    unstable = [s for s, u in zip(speed, status) if round(u) == 1]
+    unstable = [s for s, u in zip(speed, status) if u == "diverged"]
     if unstable:
         ax.plot(unstable, [1.0] * len(unstable), "rx", label="linear model diverges")
-    # Status 2/3: the linear model's K_v exists but is not a valid result; shown apart.
+    # The linear model's K_v exists but is not a valid result; shown apart.
     invalid = [(s, k) for s, u, k in zip(speed, status, c["kv_max_linear [-]"])
-               if round(u) in (2, 3)]
+               if u in ("contact loss", "not steady")]
     if invalid:
         ax.plot([s for s, _ in invalid], [1.0] * len(invalid), "m+",
                 label="contact loss / not steady (no valid K_v)")

@@ -5,7 +5,8 @@ usage: plot_harris_map.py MAP.csv LABEL [MAP.csv LABEL ...] OUT.png
   MAP.csv   a te_map table (torque [N*m], te_peak_to_peak [um], te_harmonic_1 [um], ...)
   LABEL     the modification set of that table ("base" for the parameter file's own)
 Top: TE peak-to-peak against torque, one line per modification set (Harris 1958: a relief has
-its minimum near the torque whose deflection matches it); bottom: the first mesh harmonic.
+its minimum near the torque whose deflection matches it), each minimum marked with its value and
+torque; bottom: the first mesh harmonic.
 """
 import sys
 
@@ -24,8 +25,15 @@ def main():
     for k in range(0, len(pairs), 2):
         table = read_table(pairs[k])
         label = pairs[k + 1]
-        top.plot(table["torque"], table["te_peak_to_peak"], "o-", label=label)
+        line, = top.plot(table["torque"], table["te_peak_to_peak"], "o-", label=label)
         bottom.plot(table["torque"], table["te_harmonic_1"], "o-", label=label)
+        # The map's point: the torque at which this modification set runs quietest.
+        best = min(range(len(table["torque"])), key=lambda i: table["te_peak_to_peak"][i])
+        torque, te = table["torque"][best], table["te_peak_to_peak"][best]
+        top.plot([torque], [te], "*", ms=14, color=line.get_color())
+        top.annotate(f"min {te:.3g} µm at {torque:.4g} N·m", (torque, te),
+                     textcoords="offset points", xytext=(6, 8), fontsize=8,
+                     color=line.get_color())
     top.set_ylabel("TE peak-to-peak [µm]")
     top.set_title("Harris map: loaded transmission error over one mesh cycle")
     top.legend(fontsize=8, loc="best")

@@ -3,7 +3,10 @@
 
     plot_lateral.py sharing  LOAD_SHARING.csv OUT.png   load sharing factor per planet
     plot_lateral.py campbell CAMPBELL.csv OUT.png       natural frequencies over carrier speed
-    plot_lateral.py orbit    ORBIT.csv OUT.png          orbit of a central member (x, y)
+    plot_lateral.py orbit    ORBIT.csv [FLOOR] OUT.png  orbit of a central member (x, y); an
+                                                        orbit smaller than FLOOR [µm] (1e-9 of
+                                                        the sun's base radius) is round-off:
+                                                        said in words, not drawn
     plot_lateral.py sweep    SWEEP.csv OUT.png          K_v, bearing forces, orbits over speed
 
 CSV headers are "name [unit]" as written by the command; the PNG path is the last argument.
@@ -55,9 +58,20 @@ def campbell(path, png):
     finish(fig, ax, "carrier speed [rpm]", "frequency [Hz]", png)
 
 
-def orbit(path, png):
-    """x against y of the central members over the steady-state window."""
+def orbit(path, png, floor=0.0):
+    """x against y of the central members over the steady-state window; no picture of
+    round-off: when every member's orbit spans less than `floor` [µm], a sentence instead."""
     header, c = read(path)
+    spans = [max(c[h]) - min(c[h]) for h in header[1:]]
+    if max(spans, default=0.0) < floor:
+        fig, ax = plt.subplots(figsize=(6, 3))
+        ax.axis("off")
+        ax.text(0.5, 0.5, "no orbit: every central member moves less than %.3g µm\n"
+                "(1e-9 of the sun's base radius), round-off of a motionless centre"
+                % floor, ha="center", va="center", fontsize=10)
+        ax.set_title("Orbits of the central members")
+        fig.savefig(png, dpi=120)
+        return
     fig, ax = plt.subplots(figsize=(6, 6))
     for i in range(1, len(header) - 1, 2):
         label = header[i].split("_x")[0]
@@ -69,18 +83,17 @@ def orbit(path, png):
 
 def sweep(path, png):
     """K_v, largest bearing forces and orbit amplitudes against input speed; the down sweep
-    (direction 1) dashed, invalid points (status not 0) marked x."""
+    dashed, invalid points (status not valid) marked x."""
     _, c = read(path)
     fig, axes = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
-    for direction, style in ((0, "-o"), (1, "--s")):
-        rows = [i for i, d in enumerate(c["direction [-]"]) if round(d) == direction]
+    for tag, style in (("up", "-o"), ("down", "--s")):
+        rows = [i for i, d in enumerate(c["direction [-]"]) if d == tag]
         if not rows:
             continue
         speed = [c["input_speed [rpm]"][i] for i in rows]
-        tag = "up" if direction == 0 else "down"
         axes[0].plot(speed, [c["kv_max [-]"][i] for i in rows], style, ms=3, color="C0",
                      label="K_v " + tag)
-        bad = [i for i in rows if round(c["status [-]"][i]) != 0]
+        bad = [i for i in rows if c["status [-]"][i] != "valid"]
         axes[0].plot([c["input_speed [rpm]"][i] for i in bad], [c["kv_max [-]"][i] for i in bad],
                      "x", color="k")
         for j, member in enumerate(("carrier", "ring", "sun")):
@@ -106,7 +119,7 @@ def main(argv):
     elif kind == "sweep":
         sweep(argv[2], argv[-1])
     else:
-        orbit(argv[2], argv[-1])
+        orbit(argv[2], argv[-1], float(argv[3]) if len(argv) > 4 else 0.0)
 
 
 if __name__ == "__main__":

@@ -35,7 +35,7 @@ def sweep(path, png):
     separation = column(header, c, "separation_fraction")
     fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True,
                                   gridspec_kw={"height_ratios": [3, 1]})
-    for d, label, style in ((0.0, "up sweep", "o-"), (1.0, "down sweep", "s--")):
+    for d, label, style in (("up", "up sweep", "o-"), ("down", "down sweep", "s--")):
         idx = [i for i, v in enumerate(direction) if v == d]
         if not idx:
             continue
@@ -63,7 +63,7 @@ def waterfall(path, png):
     amplitude = column(header, c, "amplitude")
     mesh = column(header, c, "mesh") if any(h.startswith("mesh") for h in header) \
         else [1.0] * len(speed)
-    directions = sorted(set(direction))
+    directions = [d for d in ("up", "down") if d in direction]
     meshes = sorted(set(mesh))
     fig, axes = plt.subplots(len(meshes), len(directions),
                              figsize=(5 * len(directions) + 1, 3.2 * len(meshes) + 1.3),
@@ -76,7 +76,7 @@ def waterfall(path, png):
             points = ax.scatter([speed[i] for i in idx], [order[i] for i in idx],
                                 c=[max(amplitude[i], top * 1e-4) for i in idx], s=6,
                                 cmap="viridis", norm=norm)
-            ax.set_title(f"mesh {int(m)}, " + ("up sweep" if d == 0.0 else "down sweep"),
+            ax.set_title(f"mesh {int(m)}, {d} sweep",
                          fontsize=9)
             ax.grid(True, lw=0.3)
         axes[row][0].set_ylabel("DTE frequency /\nmesh frequency [-]")

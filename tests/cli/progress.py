@@ -12,6 +12,8 @@ usage: progress.py path/to/gearstiff "MPIEXEC"
 4. `contact --json` (the Hertz case): the set-up and each active-set iteration on stderr.
 5. `dynamics --json`, a 3-speed up-and-down sweep: one line per speed run ("speed sweep i/6",
    the speed, elapsed and "left"), stdout is JSON; with --quiet stderr is empty.
+6. `stiffness` without --json: the progress lines ("solving the single position", "k = …") on
+   stderr only, stdout the report alone; k in the report's unit N/µm, in the sweep's lines too.
 """
 import json
 import re
@@ -37,9 +39,19 @@ def main():
     quiet = run([gearstiff, "stiffness", "--quiet"])
     if quiet.stderr.strip():
         sys.exit(f"progress: --quiet printed on stderr:\n{quiet.stderr}")
+    text = run([gearstiff, "stiffness"])
+    for pattern in (r"stiffness: solving the single position", r"stiffness: k = [0-9.]+ N/µm",
+                    r"stiffness: stage 1/4"):
+        if not re.search(pattern, text.stderr):
+            sys.exit(f"progress: no line like {pattern} on stderr:\n{text.stderr}")
+    leaked = [line for line in text.stdout.splitlines() if line.startswith("stiffness:")]
+    if leaked:
+        sys.exit(f"progress: progress lines on stdout of a text run: {leaked}")
     sweep = run(mpiexec + ["-np", "2", gearstiff, "stiffness", "--json", "--set",
                            "Stiffness/mode=sweep", "--set", "Stiffness/sweep positions=4"])
     json.loads(sweep.stdout)
+    if not re.search(r"stiffness: position \d/4 .*: k = [0-9.]+ N/µm, ", sweep.stderr):
+        sys.exit(f"progress: the sweep's lines give k in another unit than N/µm:\n{sweep.stderr}")
     for rank in (0, 1):
         pattern = rf"stiffness: position \d/4 .*done here of ~2, .* s elapsed, ~.* s left\) \[rank {rank}\]"
         if not re.search(pattern, sweep.stderr):

@@ -15,6 +15,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -82,10 +83,16 @@ def assert_same_as_cli(result, expected, measured=()):
         mine = result["tables"][name]
         assert mine["columns"] == table["columns"]
         assert [mine["units"][c] for c in mine["columns"]] == table["units"]
+        assert mine["categories"] == table.get("categories", {})
         for c, column in enumerate(table["columns"]):
             data = mine["data"][column]
-            assert isinstance(data, np.ndarray) and data.dtype == np.float64
-            assert len(data) == len(table["rows"])
+            assert isinstance(data, np.ndarray) and len(data) == len(table["rows"])
+            if column in mine["categories"]:  # names, as in the CLI's JSON and CSV
+                assert data.dtype.kind == "U"
+                assert list(data) == [row[c] for row in table["rows"]], (name, column)
+                compared += len(data)
+                continue
+            assert data.dtype == np.float64
             if ("column", name, column) in measured:
                 continue
             for r, row in enumerate(table["rows"]):
@@ -117,7 +124,7 @@ def test_dict_equals_set_and_prm_file(tmp_path):
     sets = ["--set", "Gear pair/Pinion/face width=30", "--set", "Gear pair/Pinion/profile shift=0.25",
             "--set", "Gear pair/Wheel/profile shift=-0.25"]
     assert_same_as_cli(result, cli_json("gear-pair", *sets), MEASURED_TIMES["gear-pair"])
-    assert result["parameters"]["Gear pair"]["Pinion"]["face width"] == "30"
+    assert result["parameters"]["Gear pair"]["Pinion"]["face width"] == 30.0
     # The same as a .prm file (str and pathlib.Path) and as the .json the module returned.
     prm = tmp_path / "pair.prm"
     prm.write_text("subsection Gear pair\n  subsection Pinion\n    set face width = 30\n"
@@ -138,7 +145,45 @@ def test_types_of_values():
     assert a["values"]["centre_distance"]["value"] == b["values"]["centre_distance"]["value"]
     assert a["parameters"] == b["parameters"]
     r = gearstiff.stiffness({**COARSE_FE, "Stiffness": {"mode": "single", "published reference": False}})
-    assert r["parameters"]["Stiffness"]["published reference"] == "false"
+    assert r["parameters"]["Stiffness"]["published reference"] is False
+
+
+def test_parameters_are_numbers():
+    # The parameters used come back typed by their patterns (were all str: '23'), and a later
+    # call takes them back.
+    p = gearstiff.gear_pair({"Gear pair": {"Pinion": {"teeth": 23}}})["parameters"]
+    pinion = p["Gear pair"]["Pinion"]
+    assert pinion["teeth"] == 23 and isinstance(pinion["teeth"], int)
+    assert isinstance(pinion["profile shift"], float)
+    assert gearstiff.gear_pair(p)["parameters"] == p
+
+
+def test_version():
+    assert isinstance(gearstiff.__version__, str)
+    assert [part.isdigit() for part in gearstiff.__version__.split(".")] == [True] * 3
+    assert gearstiff.__version__ in gearstiff.__doc__
+
+
+def test_import_fails_clearly_without_numpy():
+    # NumPy hidden (sys.modules entry None makes `import numpy` fail): the import of gearstiff
+    # fails at once naming NumPy, not at the first call.
+    done = subprocess.run([sys.executable, "-c", "import sys; sys.modules['numpy'] = None; "
+                           "import gearstiff"], capture_output=True, text=True, env=ENVIRONMENT)
+    assert done.returncode != 0
+    assert "ImportError: gearstiff needs NumPy" in done.stderr, done.stderr
+
+
+def test_misspelt_selection_value():
+    # A value a selection does not allow is answered with the nearest allowed one, on the
+    # command line and in Python alike.
+    code, _, err = cli("stiffness", "--set", "Stiffness/mode=swep", check=False)
+    assert code == 2
+    assert "did you mean 'sweep'?" in err
+    with pytest.raises(gearstiff.InputError) as raised:
+        gearstiff.stiffness({"Stiffness": {"mode": "swep"}})
+    assert "gearstiff: error: " + str(raised.value) == err.strip()
+    assert str(raised.value) == ("Stiffness/mode: cannot set to 'swep': not one of 'single', "
+                                 "'double', 'roll angle', 'sweep'; did you mean 'sweep'?")
 
 
 # ------------------------------------------------------------------ every command runs
@@ -171,9 +216,10 @@ def test_every_fe_command_runs(command, capfd):
 def test_every_command_has_a_function():
     names = {name.replace("-", "_") for name in gearstiff.commands()}
     assert names >= {"gear_pair", "stiffness", "cai", "dynamics", "kinematics", "cycloid",
-                     "cycloid_loads", "mesh", "contact", "run"}
+                     "cycloid_loads", "mesh", "contact", "run", "faults"}
     for name in names:
         assert callable(getattr(gearstiff, name))
+        assert name in gearstiff.__doc__  # help(gearstiff) lists every command
 
 
 def test_quiet_and_verbose(capfd):
@@ -274,7 +320,8 @@ def test_solver_failure_is_raised():
     assert code == 3, err
     with pytest.raises(gearstiff.SolverFailure) as raised:
         gearstiff.dynamics(settings)
-    assert "gearstiff: solver failure: " + str(raised.value) == err.strip()
+    # The last line: progress lines ("dynamics: simulating ...") come first on stderr.
+    assert "gearstiff: solver failure: " + str(raised.value) == err.strip().splitlines()[-1]
     assert raised.value.method == "RK4"
     assert isinstance(raised.value, RuntimeError)
 

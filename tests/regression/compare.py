@@ -17,7 +17,8 @@ Agreement, field by field (the ASPECT way: the whole output, numeric tolerances)
   WALL_CLOCK_COLUMNS), not by a pattern: `decay_time`, `time_step`, `..._times_width` are
   results and are compared; a new timing field fails here until it is named in the list. Texts
   that only carry timings or paths are ignored (IGNORED_TEXT);
-- everything else (keys, units, column names, row counts, texts, file names) must be identical.
+- everything else (keys, units, column names, the names a categorical column allows and holds,
+  row counts, texts, file names) must be identical.
 """
 import json
 import math
@@ -166,6 +167,9 @@ def compare(stored, actual):
         if s["columns"] != a["columns"] or s["units"] != a["units"]:
             differ(where, f"columns {list(zip(s['columns'], s['units']))} != "
                           f"{list(zip(a['columns'], a['units']))}")
+            continue
+        if s.get("categories", {}) != a.get("categories", {}):
+            differ(where, f"categories {s.get('categories', {})} != {a.get('categories', {})}")
             continue
         if len(s["rows"]) != len(a["rows"]):
             differ(where, f"{len(s['rows'])} rows != {len(a['rows'])}")

@@ -62,8 +62,8 @@ def kahraman(gearstiff, source):
         natural = result["tables"]["dynamics_modes"]["rows"][0][1]
         resonance = 60.0 * natural / 50.0
         rows = result["tables"]["dynamics_nonlinear_sweep"]["rows"]
-        up = {r[0]: r for r in rows if r[2] == 0}
-        down = {r[0]: r for r in rows if r[2] == 1}
+        up = {r[0]: r for r in rows if r[2] == "up"}
+        down = {r[0]: r for r in rows if r[2] == "down"}
         jump = min(s for s, r in up.items() if r[5] > 0.05)  # first separated speed going up
         if not (below < jump <= above and jump < resonance):
             fail(f"ε_α {eps}: the up sweep separates first at {jump} rpm, expected in "
@@ -96,7 +96,7 @@ def waterfall(gearstiff, source):
     speed, direction, mesh, order, amplitude = (columns.index(c) for c in (
         "input_speed", "direction", "mesh", "order", "amplitude"))
     for m in (1, 2):
-        for d in (0, 1):
+        for d in ("up", "down"):
             for s in (20000, 30000):
                 lines = [r for r in table["rows"]
                          if r[mesh] == m and r[direction] == d and r[speed] == s]
