@@ -21,7 +21,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
 
 namespace
@@ -231,14 +230,16 @@ void write_sweep_files(const StiffnessParameters& p, const kinematics::IsoStiffn
   for (const auto& r : sweep.positions)
     sum += r.mesh_stiffness;
   const double mean = sum / sweep.positions.size();
-  {
-    std::ofstream out(context.output_file(
-        "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)"));
-    out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
-        << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
-        << "# Use: gearstiff dynamics stiffness_table.prm\n"
-        << dynamics_table_input(sweep);
-  }
+  context.write_output(
+      "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)",
+      [&](std::ostream& out)
+      {
+        out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
+            << " positions): x = roll position of the last pair to enter [base pitches], k "
+               "[N/mm].\n"
+            << "# Use: gearstiff dynamics stiffness_table.prm\n"
+            << dynamics_table_input(sweep);
+      });
   const TemporaryCsv csv(report, "stiffness_sweep");
   context.plot("plot_stiffness.py",
                {csv.path(),
