@@ -553,7 +553,7 @@ using namespace dynamics_input;
 
 // issue 30: the lateral model's view of a Train mesh (dynamics_parameters.h).
 TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio,
-                                    int teeth_a, int teeth_b, double module)
+                                    int teeth_a, int teeth_b, double module, double centre_distance)
 {
   const std::string section = train_mesh_section(m);
   const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
@@ -567,8 +567,8 @@ TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, doubl
                      std::nullopt,
                      std::nullopt};
   if (physics.file && module > 0.)
-    mean.stiffness_driver = dynamics::match_stiffness_file(*physics.file, teeth_a, teeth_b, module,
-                                                           section + "/stiffness file");
+    mean.stiffness_driver = dynamics::match_stiffness_file(
+        *physics.file, teeth_a, teeth_b, module, centre_distance, section + "/stiffness file");
   prm.enter_subsection("Simulation");
   const bool nonlinear = prm.get("mesh model") == "nonlinear";
   prm.leave_subsection();
@@ -586,7 +586,8 @@ TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, doubl
         [&](const dynamics::StiffnessFile& file, const std::string& parameter)
         {
           if (module > 0.)
-            dynamics::match_stiffness_file(file, teeth_a, teeth_b, module, parameter);
+            dynamics::match_stiffness_file(file, teeth_a, teeth_b, module, centre_distance,
+                                           parameter);
         },
         derived);
   }

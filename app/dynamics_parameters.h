@@ -86,5 +86,5 @@ struct TrainMeshMean
 };
 TrainMeshMean parse_train_mesh_mean(dealii::ParameterHandler& prm, unsigned int m,
                                     double contact_ratio, int teeth_a = 0, int teeth_b = 0,
-                                    double module = 0.);
+                                    double module = 0., double centre_distance = 0.);
 } // namespace gearstiff::app

@@ -206,13 +206,15 @@ void check_train_input_speed(ParameterHandler& prm, const kinematics::GearTrainS
                          "): give the speed there and leave 'input speed' at its default");
 }
 
-// The pair of Train mesh m as standard teeth: contact ratio (for a Cai fit; the model
-// recomputes it), module [m] and teeth of gear a and b.
+// The pair of Train mesh m with standard addenda and its gears' profile shifts: contact ratio
+// (for a Cai fit; the model recomputes it), module [m], teeth of gear a and b and the working
+// centre distance [m] an FE table's pair must have.
 struct TrainMeshPair
 {
   double contact_ratio = 1.5;
   double module = 0.;
   int teeth[2] = {0, 0};
+  double centre_distance = 0.;
 };
 TrainMeshPair train_mesh_pair(const dynamics::TrainDynamicsInput& input, std::size_t m)
 {
@@ -222,12 +224,11 @@ TrainMeshPair train_mesh_pair(const dynamics::TrainDynamicsInput& input, std::si
     for (const auto& b : input.spec.members)
       if (a.name == tm.gear_a && b.name == tm.gear_b && a.module > 0.)
       {
-        pair.contact_ratio =
-            dynamics::standard_mesh(a.teeth, b.teeth, a.module, input.pressure_angle, 0)
-                .contact_ratio;
+        pair.contact_ratio = dynamics::standard_mesh(a, b, input.pressure_angle, 0).contact_ratio;
         pair.module = a.module;
         pair.teeth[0] = a.teeth;
         pair.teeth[1] = b.teeth;
+        pair.centre_distance = kinematics::working_centre_distance(a, b, input.pressure_angle);
       }
   return pair;
 }
@@ -291,16 +292,18 @@ double parse_train_mesh(ParameterHandler& prm, std::size_t m, double iso_face_wi
     mesh.nonlinear = build_nonlinear_mesh(
         physics.nonlinear, section, static_cast<unsigned int>(std::abs(pair.teeth[0])),
         {pair.module, input.pressure_angle},
-        [&](const dynamics::StiffnessFile& file, const std::string& parameter) {
+        [&](const dynamics::StiffnessFile& file, const std::string& parameter)
+        {
           dynamics::match_stiffness_file(file, pair.teeth[0], pair.teeth[1], pair.module,
-                                         parameter);
+                                         pair.centre_distance, parameter);
         },
         p.derived_sizes);
   std::string origin = physics.fit ? " (fitted to the table)" : "";
   if (physics.file)
   {
-    mesh.stiffness_driver = dynamics::match_stiffness_file(
-        *physics.file, pair.teeth[0], pair.teeth[1], pair.module, section + "/stiffness file");
+    mesh.stiffness_driver =
+        dynamics::match_stiffness_file(*physics.file, pair.teeth[0], pair.teeth[1], pair.module,
+                                       pair.centre_distance, section + "/stiffness file");
     // The FE pair's path of contact (its tips) sets the cycle the table is measured on.
     mesh.contact_ratio = physics.file->pair.contact_ratio;
     if (std::isfinite(physics.file->pair.approach_ratio))
@@ -351,6 +354,7 @@ void parse_train_description(ParameterHandler& prm, DynamicsParameters& p)
   check_train_input_speed(prm, input.spec);
   input.input_torque = train.input_torque;
   parse_train_extras(prm, input);
+  input.spec.pressure_angle = input.pressure_angle; // shifted gears' working centre distances
   input.initial_position = p.initial_position;
   if (input.spec.meshes.size() > max_train_meshes)
     throw InputError("Train/meshes", "at most " + std::to_string(max_train_meshes) +

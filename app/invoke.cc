@@ -11,6 +11,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <sstream>
 #include <unistd.h>
@@ -94,7 +95,7 @@ std::string deal_ii_message(const dealii::ExceptionBase& e)
   return text;
 }
 
-void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
+std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
 {
   const std::string name = shortened(file);
   std::error_code error;
@@ -109,15 +110,24 @@ void read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
   // JSON values deal.II would misread (arrays where a value is due) first, then misspelt names:
   // the section and the nearest declared names, not deal.II's message.
   check_json_parameter_file(file);
-  check_parameter_file(declared_parameters(prm), file);
+  OtherCommandNames others;
+  for (const auto& [other_name, other] : command_registry())
+  {
+    dealii::ParameterHandler other_prm;
+    other.declare_parameters(other_prm);
+    merge_declared(others.declared, declared_parameters(other_prm));
+  }
+  check_parameter_file(declared_parameters(prm), file, &others);
   try
   {
-    prm.parse_input(file, "", false, true);
+    // Names only other commands declare were listed above; deal.II skips them.
+    prm.parse_input(file, "", !others.ignored.empty(), true);
   }
   catch (const dealii::ExceptionBase& e)
   {
     throw InputError(name, one_line(deal_ii_message(e)));
   }
+  return others.ignored;
 }
 
 void apply_override(dealii::ParameterHandler& prm, const std::string& path,
@@ -157,7 +167,19 @@ void load_parameters(const Command& command, const Invocation& invocation,
 {
   command.declare_parameters(prm);
   if (!invocation.parameter_file.empty())
-    read_parameter_file(prm, invocation.parameter_file);
+  {
+    const std::vector<std::string> ignored = read_parameter_file(prm, invocation.parameter_file);
+    // One note for a pair file shared with other commands (rank 0; stderr, never the JSON).
+    if (!ignored.empty() && dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      std::string listed;
+      for (std::size_t i = 0; i < ignored.size() && i < 3; ++i)
+        listed += (i == 0 ? "" : ", ") + ignored[i];
+      std::cerr << "gearstiff: note: " << shortened(invocation.parameter_file) << ": "
+                << ignored.size() << " parameter(s) that other commands use ignored by `"
+                << command.name << "` (" << listed << (ignored.size() > 3 ? ", ..." : "") << ")\n";
+    }
+  }
   for (const auto& [path, value] : invocation.overrides)
     apply_override(prm, path, value);
 }

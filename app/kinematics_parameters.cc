@@ -192,7 +192,11 @@ const TrainTextEntry train_structure_entries[] = {
     {"connections", &Text::connections, "rigidly joined members, 'a=b, ...'"},
     {"fixed", &Text::fixed, "members held still, 'name, ...'"},
     {"inputs", &Text::inputs, "driven members and their speeds, 'name: speed, ...' [rpm]"},
-    {"output", &Text::output, "output member (ratio, statics)"}};
+    {"output", &Text::output, "output member (ratio, statics)"},
+    {"profile shifts", &Text::profile_shifts,
+     "'name: x, ...' [-] (optional, default 0): the working centre distances (planet orbits, "
+     "an FE table's pair) follow from them at the dynamics command's Train/pressure angle "
+     "(20° in the kinematics command)"}};
 const TrainTextEntry train_mass_entries[] = {
     {"inertias", &Text::inertias, "'name: J, ...' [kg·m²], one copy about its own axis (optional)"},
     {"masses", &Text::masses,

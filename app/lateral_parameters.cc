@@ -290,12 +290,12 @@ void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
     const kinematics::TrainMember& gear = member(spec, other);
     const double contact_ratio =
         gear.module > 0. && planet.module > 0.
-            ? dynamics::standard_mesh(gear.teeth, planet.teeth, gear.module, pressure_angle, 0)
-                  .contact_ratio
+            ? dynamics::standard_mesh(gear, planet, pressure_angle, 0).contact_ratio
             : 1.5;
-    const TrainMeshMean mean =
-        parse_train_mesh_mean(prm, m, contact_ratio, member(spec, mesh.gear_a).teeth,
-                              member(spec, mesh.gear_b).teeth, gear.module);
+    const kinematics::TrainMember &a = member(spec, mesh.gear_a), &b = member(spec, mesh.gear_b);
+    const TrainMeshMean mean = parse_train_mesh_mean(
+        prm, m, contact_ratio, a.teeth, b.teeth, gear.module,
+        gear.module > 0. ? kinematics::working_centre_distance(a, b, pressure_angle) : 0.);
     const bool sun = other == p.sun;
     // The FE pinion drove in the table; where the other gear drives here the contact runs the
     // path the other way: k(ε_α − x), and the TE likewise (the train model's rule).
@@ -361,11 +361,9 @@ double ring_mesh_offset(const kinematics::GearTrainSpec& spec,
   if (sun.module > 0. && planet.module > 0. && ring.module > 0.)
   {
     sun_approach =
-        dynamics::standard_mesh(sun.teeth, planet.teeth, sun.module, pressure_angle, drives ? 0 : 1)
-            .approach_ratio;
-    ring_approach = dynamics::standard_mesh(ring.teeth, planet.teeth, ring.module, pressure_angle,
-                                            drives ? 1 : 0)
-                        .approach_ratio;
+        dynamics::standard_mesh(sun, planet, pressure_angle, drives ? 0 : 1).approach_ratio;
+    ring_approach =
+        dynamics::standard_mesh(ring, planet, pressure_angle, drives ? 1 : 0).approach_ratio;
   }
   p.notes.push_back(std::string("sun/ring mesh phase of a planet (Parker & Lin 2004): ") +
                     (drives ? "sun drives the planets" : "the planets drive the sun") +
@@ -507,9 +505,10 @@ LateralParameters parse_lateral_parameters(ParameterHandler& prm)
 {
   LateralParameters p;
   const TrainParameters train = parse_train_parameters(prm);
-  const kinematics::GearTrainSpec spec = kinematics::parse_gear_train(train.text);
-  const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
   const LateralEntries entries = read_lateral_entries(prm, p);
+  kinematics::GearTrainSpec spec = kinematics::parse_gear_train(train.text);
+  spec.pressure_angle = entries.pressure_angle; // the working centre distances of shifted gears
+  const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
   const kinematics::TrainMember& planet = find_stage_members(spec, p);
   build_stage(spec, entries, planet, p);
   read_loads(spec, solution, train.input_torque, p);
@@ -586,6 +585,7 @@ LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
                      "not available for a train of several stages (equally spaced copies)");
   dynamics::LateralTrainInput input;
   input.train.spec = kinematics::parse_gear_train(train.text);
+  input.train.spec.pressure_angle = e.pressure_angle;
   input.train.input_torque = train.input_torque;
   input.train.pressure_angle = e.pressure_angle;
   for (const auto& [name, v] : e.suspensions)

@@ -113,10 +113,35 @@ std::string trimmed(const std::string& text)
   return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
 }
 
-void check_prm_file(const DeclaredSection& declared, const std::string& file)
+// Whether `sections`/`key` is declared by another command (then listed as ignored); `key` empty:
+// only the sections.
+bool elsewhere(OtherCommandNames* others, const std::vector<std::string>& sections,
+               const std::string& key)
+{
+  if (others == nullptr || !missing_reason(others->declared, sections, key).empty())
+    return false;
+  if (!key.empty())
+    others->ignored.push_back(joined_path(sections, sections.size()) +
+                              (sections.empty() ? "" : "/") + key);
+  return true;
+}
+
+// Why a name no command declares is refused: with `others` (every command's names) the nearest
+// names of any command, so that a misspelt section of another command is found too.
+std::string any_command_reason(const OtherCommandNames* others,
+                               const std::vector<std::string>& sections, const std::string& key,
+                               const std::string& reason)
+{
+  return others == nullptr ? reason : missing_reason(others->declared, sections, key);
+}
+
+void check_prm_file(const DeclaredSection& declared, const std::string& file,
+                    OtherCommandNames* others)
 {
   std::ifstream in(file);
   std::vector<std::string> sections;
+  // Depth of the outermost open subsection only other commands declare (npos: none).
+  std::size_t foreign = std::string::npos;
   std::string line, logical;
   unsigned int number = 0, first_line = 0;
   while (std::getline(in, line))
@@ -142,15 +167,23 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file)
     if (text.rfind("subsection ", 0) == 0)
     {
       sections.push_back(trimmed(text.substr(11)));
-      const std::string reason = missing_reason(declared, sections, "");
-      if (!reason.empty())
-        throw InputError(where, reason);
+      const std::string reason = foreign != std::string::npos
+                                     ? missing_reason(others->declared, sections, "")
+                                     : missing_reason(declared, sections, "");
+      if (reason.empty())
+        continue;
+      if (foreign == std::string::npos && elsewhere(others, sections, ""))
+        foreign = sections.size() - 1;
+      else
+        throw InputError(where, any_command_reason(others, sections, "", reason));
     }
     else if (text == "end")
     {
       if (sections.empty())
         return; // deal.II reports the unbalanced end
       sections.pop_back();
+      if (foreign != std::string::npos && sections.size() <= foreign)
+        foreign = std::string::npos;
     }
     else if (text.rfind("set ", 0) == 0)
     {
@@ -158,34 +191,43 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file)
       if (equals == std::string::npos)
         continue;
       const std::string key = trimmed(text.substr(4, equals - 4));
-      const std::string reason = missing_reason(declared, sections, key);
-      if (!reason.empty())
-        throw InputError(where, reason);
+      const std::string reason = foreign != std::string::npos
+                                     ? missing_reason(others->declared, sections, key)
+                                     : missing_reason(declared, sections, key);
+      if (!reason.empty() || foreign != std::string::npos)
+        if (!elsewhere(others, sections, key))
+          throw InputError(where, any_command_reason(others, sections, key, reason));
     }
   }
 }
 
+// `foreign`: the tree lies inside a section only other commands declare (checked against
+// theirs).
 void check_json_tree(const DeclaredSection& declared, const boost::property_tree::ptree& tree,
-                     std::vector<std::string>& sections, const std::string& file)
+                     std::vector<std::string>& sections, const std::string& file,
+                     OtherCommandNames* others, bool foreign)
 {
+  const DeclaredSection& names = foreign ? others->declared : declared;
   for (const auto& [name, child] : tree)
   {
     // deal.II's full JSON writes an entry as an object with its "value".
     const bool entry = child.empty() || child.count("value") > 0;
     if (entry)
     {
-      const std::string reason = missing_reason(declared, sections, name);
-      if (!reason.empty())
+      const std::string reason = missing_reason(names, sections, name);
+      if ((!reason.empty() || foreign) && !elsewhere(others, sections, name))
         throw InputError(file + ": " + joined_path(sections, sections.size()) +
                              (sections.empty() ? "" : "/") + name,
-                         reason);
+                         any_command_reason(others, sections, name, reason));
       continue;
     }
     sections.push_back(name);
-    const std::string reason = missing_reason(declared, sections, "");
-    if (!reason.empty())
-      throw InputError(file + ": " + joined_path(sections, sections.size()), reason);
-    check_json_tree(declared, child, sections, file);
+    const std::string reason = missing_reason(names, sections, "");
+    const bool other = !foreign && !reason.empty() && elsewhere(others, sections, "");
+    if (!reason.empty() && !other)
+      throw InputError(file + ": " + joined_path(sections, sections.size()),
+                       any_command_reason(others, sections, "", reason));
+    check_json_tree(declared, child, sections, file, others, foreign || other);
     sections.pop_back();
   }
 }
@@ -233,12 +275,20 @@ void check_parameter_name(const DeclaredSection& declared, const std::vector<std
     throw InputError(parameter, reason);
 }
 
-void check_parameter_file(const DeclaredSection& declared, const std::string& file)
+void merge_declared(DeclaredSection& into, const DeclaredSection& from)
+{
+  into.entries.insert(from.entries.begin(), from.entries.end());
+  for (const auto& [name, section] : from.sections)
+    merge_declared(into.sections[name], section);
+}
+
+void check_parameter_file(const DeclaredSection& declared, const std::string& file,
+                          OtherCommandNames* others)
 {
   const bool json = file.size() > 5 && file.substr(file.size() - 5) == ".json";
   if (!json)
   {
-    check_prm_file(declared, file);
+    check_prm_file(declared, file, others);
     return;
   }
   boost::property_tree::ptree tree;
@@ -251,6 +301,6 @@ void check_parameter_file(const DeclaredSection& declared, const std::string& fi
     return; // not valid JSON: deal.II's parser says where
   }
   std::vector<std::string> sections;
-  check_json_tree(declared, tree, sections, file);
+  check_json_tree(declared, tree, sections, file, others, false);
 }
 } // namespace gearstiff::app

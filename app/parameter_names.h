@@ -33,8 +33,23 @@ std::vector<std::string> nearest_names(const std::string& name,
 void check_parameter_name(const DeclaredSection& declared, const std::vector<std::string>& sections,
                           const std::string& key, const std::string& parameter);
 
+// The names a parameter file may hold although this command does not declare them: those another
+// command declares, so that one pair file serves every command that reads a pair (gear-pair,
+// stiffness, cai, faults, mesh, dynamics). check_parameter_file lists each one it meets in
+// `ignored` ("section/key") instead of refusing it; a name no command declares is still refused
+// with this command's nearest names.
+struct OtherCommandNames
+{
+  DeclaredSection declared;         // the union of the other commands' parameters
+  std::vector<std::string> ignored; // met in the file, in the file's order
+};
+// `into` gains every entry and subsection of `from`.
+void merge_declared(DeclaredSection& into, const DeclaredSection& from);
+
 // The same for every `set` of a .prm file or every key of a .json file; the InputError names
 // the file and line (.prm) or the file and the key's path (.json). Lines it does not understand
-// are left to deal.II's parser.
-void check_parameter_file(const DeclaredSection& declared, const std::string& file);
+// are left to deal.II's parser. With `others`, names only other commands declare are listed
+// there, not refused.
+void check_parameter_file(const DeclaredSection& declared, const std::string& file,
+                          OtherCommandNames* others = nullptr);
 } // namespace gearstiff::app

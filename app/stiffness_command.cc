@@ -220,7 +220,8 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
 }
 
 // The k(x) table for `dynamics` and the k(θ) chart.
-void write_sweep_files(const StiffnessParameters& p, const kinematics::IsoStiffness& iso,
+void write_sweep_files(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                       const kinematics::IsoStiffness& iso,
                        const stiffness::StiffnessSweepResult& sweep, CommandContext& context)
 {
   if (!context.writes_files() || !context.is_root())
@@ -230,16 +231,23 @@ void write_sweep_files(const StiffnessParameters& p, const kinematics::IsoStiffn
   for (const auto& r : sweep.positions)
     sum += r.mesh_stiffness;
   const double mean = sum / sweep.positions.size();
-  context.write_output(
-      "stiffness_table.prm", "k(x) table for `gearstiff dynamics` (Mesh 1 and Mesh 2)",
-      [&](std::ostream& out)
-      {
-        out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
-            << " positions): x = roll position of the last pair to enter [base pitches], k "
-               "[N/mm].\n"
-            << "# Use: gearstiff dynamics stiffness_table.prm\n"
-            << dynamics_table_input(sweep);
-      });
+  {
+    // The built-in pair's table drives the published split-path gearbox (both meshes); an own
+    // pair's drives a train of that pair alone, never the built-in gearbox (issue 41).
+    const bool builtin = kinematics::is_split_path_pair(p.settings.scene.pair);
+    context.write_output(
+        "stiffness_table.prm",
+        builtin ? "k(x) table for `gearstiff dynamics` (the split path's Mesh 1 and Mesh 2)"
+                : "`gearstiff dynamics` input: this pair with its k(x) table",
+        [&](std::ostream& out)
+        {
+          out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
+              << " positions): x = roll position of the last pair to enter [base pitches], k "
+                 "[N/mm].\n"
+              << "# Use: gearstiff dynamics stiffness_table.prm\n"
+              << (builtin ? dynamics_table_input(sweep) : own_pair_dynamics_input(p, pair, sweep));
+        });
+  }
   const TemporaryCsv csv(report, "stiffness_sweep");
   context.plot("plot_stiffness.py",
                {csv.path(),
@@ -267,7 +275,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report_micro_geometry(p, sweep, context);
   add_pair_identity(report, pair);
   report_sweep_summary(p, iso, sweep, report);
-  write_sweep_files(p, iso, sweep, context);
+  write_sweep_files(p, pair, iso, sweep, context);
 }
 
 const CommandRegistration registration(Command{

@@ -5,6 +5,7 @@
 #include "app/kinematics_parameters.h"
 #include "app/parameter_patterns.h"
 #include "app/units.h"
+#include "dynamics/train_model.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
@@ -559,14 +560,14 @@ bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name, const kinematics::GearPairGeometry& pair)
 {
-  ReportTable& table =
-      report.add_table(name,
-                       {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness",
-                        "transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
-                        "max_pressure", "tip_edge_contact", "pinion_root_stress",
-                        "wheel_root_stress", "torque_ratio", "iterations", "dofs", "time", "rank"},
-                       {"-", "deg", "-", "-", "N/um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa",
-                        "-", "-", "-", "s", "-"});
+  ReportTable& table = report.add_table(
+      name,
+      {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness", "transmission_error",
+       "unloaded_transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
+       "max_pressure", "tip_edge_contact", "pinion_root_stress", "wheel_root_stress",
+       "torque_ratio", "iterations", "dofs", "time", "rank"},
+      {"-", "deg", "-", "-", "N/um", "um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa", "-", "-",
+       "-", "s", "-"});
   std::string edges;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
@@ -580,10 +581,10 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
       edges += (edges.empty() ? "" : ", ") + std::to_string(i + 1);
     table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
                    double(r.loaded_pairs), r.mesh_stiffness / 1e6, r.transmission_error * 1e6,
-                   share[0], share[1], share[2], r.max_contact_pressure / 1e6, edge ? 1. : 0.,
-                   r.pinion_root_stress / 1e6, r.wheel_root_stress / 1e6, r.torque_ratio,
-                   double(r.active_set_iterations), double(r.n_dofs), r.total_time,
-                   double(sweep.rank_of_position[i])});
+                   r.unloaded_transmission_error * 1e6, share[0], share[1], share[2],
+                   r.max_contact_pressure / 1e6, edge ? 1. : 0., r.pinion_root_stress / 1e6,
+                   r.wheel_root_stress / 1e6, r.torque_ratio, double(r.active_set_iterations),
+                   double(r.n_dofs), r.total_time, double(sweep.rank_of_position[i])});
   }
   if (!edges.empty())
     report.add_text(name + " tip edge contact",
@@ -657,6 +658,81 @@ std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep)
     text += "subsection " + mesh + "\n  set stiffness source = table\n" +
             "  set stiffness table = " + table + "\nend\n";
   return text;
+}
+
+std::string own_pair_dynamics_input(const StiffnessParameters& p,
+                                    const kinematics::GearPairGeometry& pair,
+                                    const stiffness::StiffnessSweepResult& sweep)
+{
+  const kinematics::GearPairSpec& spec = p.settings.scene.pair;
+  // Steel blanks of the pair's face widths between bore and reference circle (a ring between
+  // its reference circle and its outer diameter): the inertias a user would start from.
+  constexpr double steel_density = 7850.; // kg/m³
+  const auto inertia = [&](const kinematics::GearSpec& gear, const std::string& name)
+  {
+    const int teeth = gear.internal ? -static_cast<int>(gear.teeth) : static_cast<int>(gear.teeth);
+    kinematics::TrainMember member;
+    member.name = name;
+    member.teeth = teeth;
+    member.module = pair.transverse_module;
+    return dynamics::blank_inertia(member, {name, gear.face_width, gear.bore_diameter},
+                                   steel_density, "Gear pair/" + name + "/bore diameter")
+        .moment_of_inertia;
+  };
+  const double j1 = inertia(spec.pinion, "Pinion"), j2 = inertia(spec.wheel, "Wheel");
+  const double r_b1 = 0.5 * pair.pinion.base_diameter, r_b2 = 0.5 * pair.wheel.base_diameter;
+  double sum = 0.;
+  for (const auto& r : sweep.positions)
+    sum += r.mesh_stiffness;
+  const double mean_stiffness = sum / sweep.positions.size(); // N/m
+  // The mesh's equivalent mass along the line of action and its resonance speed n_E1 (ISO
+  // 6336-1 §6.3: the mesh frequency z1·n1/60 at the torsional mode's frequency √(k/m_e)/2π).
+  const double equivalent_mass = j1 * j2 / (j1 * r_b2 * r_b2 + j2 * r_b1 * r_b1);
+  const double natural = std::sqrt(mean_stiffness / equivalent_mass); // rad/s
+  const unsigned int z1 = spec.pinion.teeth;
+  const double resonance_rpm = 30. * natural / (M_PI * z1);
+  // Subcritical (ISO 6336-1: N ≤ 0.85) and below the second harmonic's resonance at N = 0.5.
+  constexpr double speed_ratio = 0.3;
+  constexpr double damping_ratio = 0.05; // the Train meshes' default ζ
+  const double damping = 2. * damping_ratio * std::sqrt(mean_stiffness * equivalent_mass);
+  // The friction force reverses at the pitch point; its arm about each centre there is the
+  // roll length r_b·tan α_wt.
+  const double arm_1 = r_b1 * std::tan(pair.working_pressure_angle);
+  const double arm_2 = r_b2 * std::tan(pair.working_pressure_angle);
+  std::ostringstream out;
+  out << "# This pair: z " << z1 << "/" << (spec.wheel.internal ? "-" : "") << spec.wheel.teeth
+      << ", m_t " << format_number(pair.transverse_module / mm, 6) << " mm, a_w "
+      << format_number(pair.centre_distance / mm, 6) << " mm, x "
+      << format_number(spec.pinion.profile_shift, 4) << "/"
+      << format_number(spec.wheel.profile_shift, 4) << ", eps_alpha "
+      << format_number(pair.transverse_contact_ratio, 6) << ", T1 "
+      << format_number(p.settings.pinion_torque, 6) << " N·m: two gears, one mesh.\n"
+      << "# Inertias: steel blanks (7850 kg/m³) between bore and reference circle; damping: "
+         "zeta = 0.05 of the mean k; friction: the FE's mu, arms r_b·tan(alpha_wt).\n"
+      << "# Input speed: " << speed_ratio
+      << " x the resonance speed n_E1 = " << format_number(resonance_rpm, 6)
+      << " rpm of this pair (ISO 6336-1, subcritical); set your running speed.\n"
+      << "subsection Train\n  set number of gears = 2\n  set input speed = "
+      << format_number(speed_ratio * resonance_rpm, 8)
+      << "\n  set published reference = false\nend\n"
+      << "subsection Gear 1\n  set inertia = " << format_number(j1, 8)
+      << "\n  set torque = " << format_number(p.settings.pinion_torque, 10) << "\nend\n"
+      << "subsection Gear 2\n  set inertia = " << format_number(j2, 8)
+      << "\n  set torque = balance\nend\n"
+      << "subsection Mesh 1\n  set driver gear = 1\n  set driven gear = 2\n"
+      << "  set driver teeth = " << z1
+      << "\n  set driver base radius = " << format_number(r_b1 / mm, 10)
+      << "\n  set driven base radius = " << format_number(r_b2 / mm, 10)
+      << "\n  set contact ratio = " << format_number(pair.transverse_contact_ratio, 10)
+      << "\n  set approach ratio = "
+      << format_number((pair.pitch_point - pair.contact_start) / pair.transverse_base_pitch, 10)
+      << "\n  set damping = " << format_number(damping, 8) << "\n  set friction coefficient = "
+      << format_number(p.settings.contact.friction_coefficient, 8)
+      << "\n  set driver friction arm = " << format_number(arm_1 / mm, 8)
+      << "\n  set driven friction arm = " << format_number(arm_2 / mm, 8)
+      << "\n  set stiffness source = table\n  set stiffness table = "
+      << dynamics_stiffness_table(sweep) << "\nend\n";
+  return out.str();
 }
 
 std::string dynamics_cai_input(const dynamics::CaiParameters& cai)

@@ -111,6 +111,13 @@ std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& swee
 // meshes the sweep's k(x) table (dynamics_stiffness_table), or the Cai curve `cai` (scale
 // written in N/mm).
 std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep);
+// A whole `gearstiff dynamics` parameter file for the sweep's own pair (issue 41): two gears and
+// one mesh with this pair's base radii, ε_α, approach ratio, steel-blank inertias, torque T1,
+// friction arms and the sweep's k(x) table, at a subcritical input speed (0.3 of the pair's
+// resonance speed), its header naming the pair.
+std::string own_pair_dynamics_input(const StiffnessParameters& p,
+                                    const kinematics::GearPairGeometry& pair,
+                                    const stiffness::StiffnessSweepResult& sweep);
 std::string dynamics_cai_input(const dynamics::CaiParameters& cai);
 // Single-pair stiffness samples for the Cai fit: at each position each loaded pair j carries
 // k_j = share_j·k at roll position p_ref + j [base pitches] (all pairs share one deflection,

@@ -255,10 +255,10 @@ StiffnessFile read_stiffness_file(const std::string& path, const std::string& pa
 }
 
 unsigned int match_stiffness_file(const StiffnessFile& file, int teeth_a, int teeth_b,
-                                  double module, const std::string& parameter)
+                                  double module, double centre_distance,
+                                  const std::string& parameter)
 {
   const StiffnessFilePair& p = file.pair;
-  const double centre_distance = 0.5 * module * std::abs(teeth_a + teeth_b);
   const auto close = [](double u, double v) { return std::abs(u - v) <= 1e-6 * std::abs(v); };
   const bool same_size = close(p.module, module) && close(p.centre_distance, centre_distance);
   // An external pinion meshes the internal wheel; two external gears in either order.

@@ -53,10 +53,12 @@ struct StiffnessFile
 // row or is neither gear's tooth count, and for a row flagged lost_contact with a stiffness.
 StiffnessFile read_stiffness_file(const std::string& path, const std::string& parameter);
 
-// Whether the file's pair is the mesh of gears a and b (signed teeth, transverse module
-// [m], standard centre distance m·|z_a + z_b|/2 at x = 0): returns 0 when gear a is the FE
-// pinion, 1 when gear b is. InputError naming `parameter` with both descriptions otherwise
-// (teeth, module or centre distance differ: a table of another pair).
+// Whether the file's pair is the mesh of gears a and b (signed teeth, transverse module [m],
+// working centre distance [m]: kinematics::working_centre_distance, the reference m·|z_a + z_b|/2
+// without profile shifts): returns 0 when gear a is the FE pinion, 1 when gear b is. InputError
+// naming `parameter` with both descriptions otherwise (teeth, module or centre distance differ:
+// a table of another pair, or of this pair with other profile shifts).
 unsigned int match_stiffness_file(const StiffnessFile& file, int teeth_a, int teeth_b,
-                                  double module, const std::string& parameter);
+                                  double module, double centre_distance,
+                                  const std::string& parameter);
 } // namespace gearstiff::dynamics

@@ -274,26 +274,32 @@ BlankInertia blank_inertia(const kinematics::TrainMember& gear, const GearBlank&
           density * blank.face_width * area};
 }
 
-StandardMesh standard_mesh(int teeth_a, int teeth_b, double module, double pressure_angle,
-                           unsigned int driver)
+StandardMesh standard_mesh(const kinematics::TrainMember& a, const kinematics::TrainMember& b,
+                           double pressure_angle, unsigned int driver)
 {
-  // Pitch radii r = m|z|/2, base radii r·cos α, tips r + m (external) or r − m (internal).
-  auto radius = [&](int z) { return 0.5 * module * std::abs(z); };
-  auto tip_length = [&](int z) // from the base-circle tangency point to the tip circle
+  // Signed pitch radii r = m·z/2 (an internal gear's negative), base radii r·cos α; tips
+  // r + m(1 + x) signed as the gear-pair module writes them (an internal tip lies inside).
+  const double module = a.module;
+  const double working_angle =
+      std::acos(0.5 * module * std::abs(a.teeth + b.teeth) * std::cos(pressure_angle) /
+                kinematics::working_centre_distance(a, b, pressure_angle));
+  auto tip_length = [&](const kinematics::TrainMember& g) // base tangency to the tip circle
   {
-    const double tip = radius(z) + (z > 0 ? module : -module);
-    const double base = radius(z) * std::cos(pressure_angle);
+    const double radius = 0.5 * module * g.teeth;
+    const double tip = radius + module * (1. + g.profile_shift); // d_a = d + 2m(1 + x), signed
+    const double base = radius * std::cos(pressure_angle);
     return std::sqrt(std::max(0., tip * tip - base * base));
   };
-  auto pitch_length = [&](int z) { return radius(z) * std::sin(pressure_angle); };
+  auto pitch_length = [&](const kinematics::TrainMember& g)
+  { return 0.5 * module * std::abs(g.teeth) * std::cos(pressure_angle) * std::tan(working_angle); };
   const double base_pitch = M_PI * module * std::cos(pressure_angle);
   // Addendum path of each gear beyond the pitch point (an internal gear's lies before it).
-  auto addendum_path = [&](int z)
-  { return z > 0 ? tip_length(z) - pitch_length(z) : pitch_length(z) - tip_length(z); };
+  auto addendum_path = [&](const kinematics::TrainMember& g)
+  { return g.teeth > 0 ? tip_length(g) - pitch_length(g) : pitch_length(g) - tip_length(g); };
   StandardMesh mesh;
-  mesh.contact_ratio = (addendum_path(teeth_a) + addendum_path(teeth_b)) / base_pitch;
+  mesh.contact_ratio = (addendum_path(a) + addendum_path(b)) / base_pitch;
   // Contact starts where the driven gear's tip cuts the line of action.
-  mesh.approach_ratio = addendum_path(driver == 0 ? teeth_b : teeth_a) / base_pitch;
+  mesh.approach_ratio = addendum_path(driver == 0 ? b : a) / base_pitch;
   return mesh;
 }
 
@@ -440,8 +446,7 @@ void add_meshes(TrainBuild& build)
                            "modelled; use it on a mesh of one pair");
     const double ra = signed_base_radius(gear_a, input.pressure_angle);
     const double rb = signed_base_radius(gear_b, input.pressure_angle);
-    const StandardMesh geometry =
-        standard_mesh(gear_a.teeth, gear_b.teeth, gear_a.module, input.pressure_angle, 0);
+    const StandardMesh geometry = standard_mesh(gear_a, gear_b, input.pressure_angle, 0);
     const double contact_ratio = input.meshes[m].contact_ratio.value_or(geometry.contact_ratio);
     model.spec_mesh_contact_ratio.push_back(contact_ratio);
     for (unsigned int j = 0; j < copies; ++j)
@@ -555,8 +560,7 @@ void add_approach_ratios(TrainBuild& build)
     const auto& gear_a = spec.members[build.solution.index(tm.gear_a)];
     const auto& gear_b = spec.members[build.solution.index(tm.gear_b)];
     model.spec_mesh_approach_ratio.push_back(
-        standard_mesh(gear_a.teeth, gear_b.teeth, gear_a.module, build.input.pressure_angle,
-                      build.a_drives[m] ? 0 : 1)
+        standard_mesh(gear_a, gear_b, build.input.pressure_angle, build.a_drives[m] ? 0 : 1)
             .approach_ratio);
   }
 }

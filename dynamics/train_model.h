@@ -131,16 +131,18 @@ struct TrainModel
 // trains the kinematics rejects, missing modules, zero inertia, copies that do not divide.
 TrainModel build_train_model(const TrainDynamicsInput& input);
 
-// Standard-tooth (x = 0, h_a* = 1) transverse contact ratio and approach ratio ε_f (start of
-// active contact to the pitch point, in base pitches) of gears with signed tooth counts
-// (negative: internal) and module m [m]; `driver` is 0 for the first gear, 1 for the second.
+// Transverse contact ratio and approach ratio ε_f (start of active contact to the pitch point,
+// in base pitches) of gears a and b (signed tooth counts, negative: internal; module; profile
+// shifts x) with standard addenda (h_a* = 1, tips d + 2m(1 + x), signed d) at their
+// zero-backlash working centre distance (kinematics::working_centre_distance); `driver` is 0
+// for a, 1 for b. With x = 0 the standard pair at its reference centre distance.
 struct StandardMesh
 {
   double contact_ratio = 0.;
   double approach_ratio = 0.;
 };
-StandardMesh standard_mesh(int teeth_a, int teeth_b, double module, double pressure_angle,
-                           unsigned int driver);
+StandardMesh standard_mesh(const kinematics::TrainMember& a, const kinematics::TrainMember& b,
+                           double pressure_angle, unsigned int driver);
 
 // Share of each group's kinetic energy in every mode [-]: rows = modes of model.mode_shapes(),
 // columns = groups; group_of_dof[i] is the group of DOF i.

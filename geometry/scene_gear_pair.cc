@@ -33,6 +33,26 @@ InvoluteToothSpec tooth_spec(const kinematics::GearSpec& gear,
   return spec;
 }
 
+// The gear's nominal tooth. The generator knows one tooth, not which gear: its InputError
+// ("Involute tooth/tip diameter") is renamed to the gear's own field ("Gear pair/Wheel/tip
+// diameter"), the name the kinematics' checks of the same gear use.
+ToothProfile gear_tooth(const kinematics::GearSpec& gear, const kinematics::GearGeometry& derived,
+                        const ProfileResolution& resolution, bool wheel)
+{
+  try
+  {
+    return generate_involute_tooth(tooth_spec(gear, derived), resolution);
+  }
+  catch (const InputError& e)
+  {
+    const std::string generator = "Involute tooth/";
+    if (e.parameter().rfind(generator, 0) != 0)
+      throw;
+    throw InputError(kinematics::gear_parameter_name(wheel, e.parameter().substr(generator.size())),
+                     e.reason());
+  }
+}
+
 // Radius of the outline's first point, the middle of the root gap: where the rim begins.
 double outline_root_radius(const ToothProfile& tooth)
 {
@@ -734,36 +754,46 @@ void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPai
   }
 }
 
-// The designed separation of every pair in contact along the line of action (the loaded
-// flanks' removal at the kinematic contact point: both normals lie on the line of action there)
-// and its smallest value, the unloaded transmission error.
+// The designed separation of each pair `pairs` at ℓ = `position` (the loaded flanks' removal at
+// the kinematic contact point: both normals lie on the line of action there), lead
+// modifications (3D) included.
+std::vector<double> pair_separations(const GearPairSceneSpec& spec,
+                                     const kinematics::GearPairGeometry& pair,
+                                     const LineOfAction& line, const PlacedGears& gears,
+                                     double position, const std::vector<int>& pairs)
+{
+  // Lead modifications (3D) add the smallest of the pair's summed lead removal over the face
+  // width, the same for every pair (geometry/tooth_modification_lead.h).
+  const double lead =
+      spec.mesh.dimension == 3
+          ? smallest_lead_separation(spec.pinion_modifications.lead, spec.wheel_modifications.lead,
+                                     pair.common_face_width)
+          : 0.;
+  std::vector<double> separations;
+  for (const int j : pairs)
+  {
+    const double at = position + j * pair.transverse_base_pitch;
+    separations.push_back(
+        gears.pinion_teeth.loaded_flank_removal(j, at) +
+        gears.wheel_teeth.loaded_flank_removal(mate_tooth(gears.wheel, j), std::abs(at - line.t2)) +
+        lead);
+  }
+  return separations;
+}
+
+// The designed separation of every pair in contact and its smallest value, the unloaded
+// transmission error.
 void set_unloaded_transmission_error(const GearPairSceneSpec& spec,
                                      const kinematics::GearPairGeometry& pair,
                                      const LineOfAction& line, const PlacedGears& gears,
                                      GearPairScene& scene)
 {
-  scene.pair_separation.clear();
-  double smallest = std::numeric_limits<double>::max();
-  for (const int j : scene.contact_pairs)
-  {
-    const double position = scene.reference_position + j * pair.transverse_base_pitch;
-    const double separation = gears.pinion_teeth.loaded_flank_removal(j, position) +
-                              gears.wheel_teeth.loaded_flank_removal(mate_tooth(gears.wheel, j),
-                                                                     std::abs(position - line.t2));
-    scene.pair_separation.push_back(separation);
-    smallest = std::min(smallest, separation);
-  }
-  // Lead modifications (3D) add the smallest of the pair's summed lead removal over the face
-  // width, the same for every pair (geometry/tooth_modification_lead.h).
-  if (spec.mesh.dimension == 3)
-  {
-    const double lead = smallest_lead_separation(
-        spec.pinion_modifications.lead, spec.wheel_modifications.lead, pair.common_face_width);
-    for (double& separation : scene.pair_separation)
-      separation += lead;
-    smallest += lead;
-  }
-  scene.unloaded_transmission_error = smallest;
+  scene.pair_separation =
+      pair_separations(spec, pair, line, gears, scene.reference_position, scene.contact_pairs);
+  scene.unloaded_transmission_error =
+      scene.pair_separation.empty()
+          ? 0.
+          : *std::min_element(scene.pair_separation.begin(), scene.pair_separation.end());
 }
 // Lead modifications (3D, geometry/tooth_modification_lead.h): the extruded nodes of each gear
 // turned about its axis by their removal; empty without lead modifications.
@@ -882,10 +912,8 @@ void check_tooth_modifications(const GearPairSceneSpec& spec)
   if (spec.pinion_modifications.empty() && spec.wheel_modifications.empty())
     return;
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
-  const ToothProfile pinion =
-      generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
-  const ToothProfile wheel =
-      generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  const ToothProfile pinion = gear_tooth(spec.pair.pinion, pair.pinion, spec.resolution, false);
+  const ToothProfile wheel = gear_tooth(spec.pair.wheel, pair.wheel, spec.resolution, true);
   ToothProfiles(pinion, spec.pinion_modifications, flank_roll_range(pair, pinion, false),
                 loaded_side(pinion), "Gear pair/Pinion");
   ToothProfiles(wheel, spec.wheel_modifications, flank_roll_range(pair, wheel, true),
@@ -902,9 +930,8 @@ namespace
 PlacedGears generate_teeth(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair)
 {
   PlacedGears gears;
-  gears.pinion =
-      generate_involute_tooth(tooth_spec(spec.pair.pinion, pair.pinion), spec.resolution);
-  gears.wheel = generate_involute_tooth(tooth_spec(spec.pair.wheel, pair.wheel), spec.resolution);
+  gears.pinion = gear_tooth(spec.pair.pinion, pair.pinion, spec.resolution, false);
+  gears.wheel = gear_tooth(spec.pair.wheel, pair.wheel, spec.resolution, true);
   gears.pinion_teeth = ToothProfiles(gears.pinion, spec.pinion_modifications,
                                      flank_roll_range(pair, gears.pinion, false),
                                      loaded_side(gears.pinion), "Gear pair/Pinion");
@@ -1198,6 +1225,26 @@ std::vector<int> carrying_gear_pairs(const GearPairSceneSpec& spec, double posit
   {
     return {};
   }
+}
+
+std::vector<double> unloaded_transmission_errors(const GearPairSceneSpec& spec,
+                                                 const std::vector<double>& positions)
+{
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const PlacedGears gears = generate_teeth(spec, pair);
+  const LineOfAction line = line_of_action(pair);
+  std::vector<double> errors;
+  for (const double position : positions)
+  {
+    const std::vector<double> separations =
+        pair_separations(spec, pair, line, gears, position, pairs_in_contact(pair, position));
+    if (separations.empty())
+      throw InputError(scene_field::swept_positions, "no tooth pair is in contact at " +
+                                                         format_number(position * 1e3, 6) +
+                                                         " mm along the line of action");
+    errors.push_back(*std::min_element(separations.begin(), separations.end()));
+  }
+  return errors;
 }
 
 GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file)

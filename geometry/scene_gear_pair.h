@@ -170,6 +170,12 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::st
 // "Gear pair/Wheel/..."): generates both nominal teeth and checks every modification list
 // against them. Milliseconds; write_gear_pair_scene makes the same checks.
 void check_tooth_modifications(const GearPairSceneSpec& spec);
+// The unloaded transmission error (m) a scene with its reference pair at each ℓ of `positions`
+// (m from T1) would report (GearPairScene::unloaded_transmission_error): a rolling sweep meshes
+// one scene, so each position it turns to takes its own value from here (issue 41: without it
+// every rolled position reported the scene's own value). Generates the teeth once; no mesh.
+std::vector<double> unloaded_transmission_errors(const GearPairSceneSpec& spec,
+                                                 const std::vector<double>& positions);
 // Rolling sweeps: the pairs j in contact (inside the path of contact A–E) with the reference
 // pair at ℓ (m from T1), the same rule as the scene's contact_pairs.
 std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position);

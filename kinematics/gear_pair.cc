@@ -632,10 +632,16 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
     }
   };
   // Short ring teeth fail on ε_α < 1, long ones on interference: find a valid tip from the
-  // reference circle down, then bisect towards the interference limit below it.
+  // reference circle down, then bisect towards the interference limit below it. The teeth are
+  // never longer than the standard d − 2·m_n·(h_aP* + x): the generating cutter's dedendum ends
+  // there (geometry/involute_tooth.cc refuses a deeper tip as topped), so a longer tip would
+  // pass here and fail in every FE scene (found by tests/invariants: a 31/86 ring, x 0.38/0.33,
+  // whose interference limit lay 8 µm beyond its standard tip).
+  const double longest = std::max(
+      base, reference - 2. * m_n * (spec.wheel.addendum_coefficient + spec.wheel.profile_shift));
   const int steps = 400;
   int step = 0;
-  const auto at = [&](int i) { return reference - i * (reference - base) / steps; };
+  const auto at = [&](int i) { return reference - i * (reference - longest) / steps; };
   while (step < steps && !clears(at(step)))
     ++step;
   if (step == steps && tooth_difference)
@@ -644,7 +650,9 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
     throw InputError(parameter, "no ring tip between the base and reference circles clears the "
                                 "pinion's involute with a margin of " +
                                     millimetres(margin) + " at ε_α ≥ 1");
-  double low = base, high = at(step);
+  if (clears(longest)) // the standard tip already clears: the longest teeth allowed
+    return longest;
+  double low = longest, high = at(step);
   while (high - low > 1e-12)
   {
     const double middle = 0.5 * (low + high);

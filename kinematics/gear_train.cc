@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
+#include "kinematics/gear_pair.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -266,8 +267,7 @@ void set_orbit_radii(const GearTrainSpec& spec, TrainSolution& solution)
       throw InputError("Train/planets", "planet " + planet.name + " is an internal gear");
     if (planet.module == 0. || central.module == 0.)
       continue;
-    const double radius = central.teeth > 0 ? pitch_radius(central) + pitch_radius(planet)
-                                            : -pitch_radius(central) - pitch_radius(planet);
+    const double radius = working_centre_distance(central, planet, spec.pressure_angle);
     double& known = solution.orbit_radius[solution.index(planet.name)];
     if (known > 0. && std::abs(known - radius) > 1e-9)
       throw InputError("Train/gears", "the train does not close: planet " + planet.name + " sits " +
@@ -926,7 +926,32 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
     members.existing(spec.output, "output");
   parse_nonnegative(text.inertias, "inertias", "inertia", members, &TrainMember::moment_of_inertia);
   parse_nonnegative(text.masses, "masses", "mass", members, &TrainMember::mass);
+  for (const auto& [name, value] : parse_assignments(text.profile_shifts, "profile shifts"))
+  {
+    TrainMember& gear = members.existing(name, "profile shifts");
+    const double shift = parse_number(value, "Train/profile shifts");
+    // The gear-pair command's range (app/kinematics_parameters.cc): beyond it no tooth exists.
+    if (gear.teeth == 0 || !(std::abs(shift) <= 5.))
+      throw InputError("Train/profile shifts", gear.teeth == 0
+                                                   ? "'" + name + "' has no teeth to shift"
+                                                   : "x of '" + name + "' must lie in [-5, 5]");
+    gear.profile_shift = shift;
+  }
   return spec;
+}
+
+double working_centre_distance(const TrainMember& a, const TrainMember& b, double pressure_angle)
+{
+  const double reference = 0.5 * a.module * std::abs(a.teeth + b.teeth);
+  const double shift_sum = a.profile_shift + b.profile_shift;
+  if (shift_sum == 0.)
+    return reference;
+  const double inv_working = involute(pressure_angle) +
+                             2. * std::tan(pressure_angle) * shift_sum / double(a.teeth + b.teeth);
+  if (!(inv_working > 0.))
+    throw InputError("Train/profile shifts", "the shifts of " + a.name + " and " + b.name +
+                                                 " leave no working pressure angle");
+  return reference * std::cos(pressure_angle) / std::cos(inverse_involute(inv_working));
 }
 
 std::vector<std::string> builtin_train_names()
@@ -937,7 +962,7 @@ std::vector<std::string> builtin_train_names()
 GearTrainText builtin_train(const std::string& name)
 {
   // Each as {gears, modules, carriers, planets, meshes, connections, fixed, inputs, output,
-  // inertias, masses}.
+  // inertias, masses, profile shifts}.
   static const std::map<std::string, GearTrainText> trains = {
       // Drewniak, Garlicka, Kolber 2016 (docs/references.md §2). Each of the three planets 2
       // carries an inner set: sun 3 on planet 2's axis, three planets 4 on inner carrier H, ring 5
@@ -949,19 +974,20 @@ GearTrainText builtin_train(const std::string& name)
        {"1: 21, 2: 81, 3: 21, 4: 24, 5: -69, 6: 21, 7: -72",
         "1: 2, 2: 2, 3: 2, 4: 2, 5: 2, 6: 4, 7: 4", "h, H",
         "2: h*3, 3: h*3, 5: h*3, 6: h*3, H: h*3, 4: H*9", "1-2/h, 3-4/H, 4-5/H, 6-7/h",
-        "3=2, 5=h, H=6", "7", "1: 1470", "h", "", ""}},
+        "3=2, 5=h, H=6", "7", "1: 1470", "h", "", "", ""}},
       {"planetary",
        {"s: 20, p: 10, r: -40", "s: 2, p: 2, r: 2", "c", "p: c*3", "s-p/c, p-r/c", "", "r",
-        "s: 1470", "c", "", ""}},
+        "s: 1470", "c", "", "", ""}},
       // Reszuta & Drewniak 2015 (docs/references.md §1): pinion 1 drives wheels 2 and 3.
       {"split-path",
        {"1: 21, 2: 57, 3: 57", "1: 2.5, 2: 2.5, 3: 2.5", "", "", "1-2, 1-3", "", "", "1: 1450", "2",
-        "", ""}},
+        "", "", ""}},
       // Chmurawa & Łokiec (docs/references.md §4): disc s (19 lobes) on the eccentric e rolls in
       // the fixed ring of 20 rollers k; the pin coupling passes the disc's rotation to `out`. The
       // rolling lobe pair obeys the same Willis relation as a tooth pair.
       {"cycloidal",
-       {"s: 19, k: -20", "", "e, out", "s: e*2", "s-k/e", "out=s", "k", "e: 750", "out", "", ""}}};
+       {"s: 19, k: -20", "", "e, out", "s: e*2", "s-k/e", "out=s", "k", "e: 750", "out", "", "",
+        ""}}};
   const auto found = trains.find(name);
   if (found == trains.end())
     throw InputError("Train/builtin", "unknown built-in train '" + name + "'");

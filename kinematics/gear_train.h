@@ -17,6 +17,7 @@
 // directions of relative power flow are found by iteration from the loss-free solution.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,7 @@ struct TrainMember
   unsigned int copies = 1;       // -, identical copies equally spaced (planets)
   double moment_of_inertia = 0.; // kg·m², one copy about its own axis
   double mass = 0.;              // kg, one copy (counts when its axis moves)
+  double profile_shift = 0.;     // -, x (ISO 21771; internal: the ring's own x, signed as there)
 };
 
 struct TrainMesh
@@ -52,7 +54,17 @@ struct GearTrainSpec
   std::vector<std::string> fixed;                               // members held still
   std::vector<std::pair<std::string, double>> inputs;           // member, speed in rad/s
   std::string output;                                           // member for ratio/statics
+  // rad, α_n of every toothing: with profile shifts it sets the working centre distances
+  // (working_centre_distance); the dynamics command's Train/pressure angle, else 20°.
+  double pressure_angle = 20. * M_PI / 180.;
 };
+
+// m, the zero-backlash working centre distance of meshing gears a and b (ISO 21771: inv α_w =
+// inv α + 2·tan α·(x_a + x_b)/(z_a + z_b), signed z serving internal pairs; a_w = a·cos α/cos
+// α_w): exactly the reference distance m·|z_a + z_b|/2 when the shifts sum to zero. A planet's
+// orbit radius and an FE table's pair (dynamics) are checked against it. InputError naming
+// "Train/profile shifts" when the shifts leave no working pressure angle.
+double working_centre_distance(const TrainMember& a, const TrainMember& b, double pressure_angle);
 
 struct TrainSolution
 {
@@ -152,17 +164,18 @@ double milev_planetary_inertia(double sun_radius, double planet_radius, unsigned
 // comma-separated list; see app/kinematics_command.cc for the syntax shown to users.
 struct GearTrainText
 {
-  std::string gears;       // "1: 21, 5: -69"              name: teeth (negative: internal)
-  std::string modules;     // "1: 2, 5: 2"                 name: module in mm
-  std::string carriers;    // "h, H"                       toothless members
-  std::string planets;     // "2: h*3, 4: H*9"             name: carrier*copies
-  std::string meshes;      // "1-2/h, 3-4/H, 10-11"        a-b/frame (default housing)
-  std::string connections; // "3=2, 5=h"
-  std::string fixed;       // "7"
-  std::string inputs;      // "1: 1470"                    name: speed in rpm
-  std::string output;      // "h"
-  std::string inertias;    // "1: 0.01"                    name: J in kg·m² (one copy)
-  std::string masses;      // "2: 1.5"                     name: mass in kg (one copy)
+  std::string gears;          // "1: 21, 5: -69"              name: teeth (negative: internal)
+  std::string modules;        // "1: 2, 5: 2"                 name: module in mm
+  std::string carriers;       // "h, H"                       toothless members
+  std::string planets;        // "2: h*3, 4: H*9"             name: carrier*copies
+  std::string meshes;         // "1-2/h, 3-4/H, 10-11"        a-b/frame (default housing)
+  std::string connections;    // "3=2, 5=h"
+  std::string fixed;          // "7"
+  std::string inputs;         // "1: 1470"                    name: speed in rpm
+  std::string output;         // "h"
+  std::string inertias;       // "1: 0.01"                    name: J in kg·m² (one copy)
+  std::string masses;         // "2: 1.5"                     name: mass in kg (one copy)
+  std::string profile_shifts; // "1: 0.2, 2: -0.2"          name: x (optional, default 0)
 };
 // Parses and checks the syntax (InputError naming "Train/<key>"); the structure is checked by
 // solve_train_kinematics.

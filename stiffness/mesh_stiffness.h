@@ -248,7 +248,10 @@ private:
   void set_candidate_pairs(double position);
   std::vector<contact::BodyRotation<dim>> body_rotations(double position) const;
   double scene_position = 0.; // m, ℓ_ref of the meshed scene (rolling)
-  double mesh_diameter = 0.;  // m, GridTools::diameter of the mesh (0: not yet computed)
+  // The unloaded TE at ℓ = `position` (m): a rolled position's own, not the meshed scene's.
+  double unloaded_transmission_error_at(double position);
+  std::vector<double> swept_unloaded_errors; // m, at settings.scene.swept_positions (lazily)
+  double mesh_diameter = 0.; // m, GridTools::diameter of the mesh (0: not yet computed)
 
   // The next torque of a torque list: one continuation step from the converged state.
   GearMeshStiffnessResult next_torque(double torque);

@@ -125,6 +125,20 @@ GearMeshStiffness<dim>::body_rotations(double position) const
 }
 
 template <int dim>
+double GearMeshStiffness<dim>::unloaded_transmission_error_at(double position)
+{
+  // The modifications' gap is geometry: every rank computes it (milliseconds, no mesh), once
+  // for every swept position.
+  const std::vector<double>& swept = settings.scene.swept_positions;
+  if (swept_unloaded_errors.size() != swept.size())
+    swept_unloaded_errors = geometry::unloaded_transmission_errors(settings.scene, swept);
+  for (std::size_t i = 0; i < swept.size(); ++i)
+    if (std::abs(swept[i] - position) <= 1e-9) // the same formulas give both
+      return swept_unloaded_errors[i];
+  return geometry::unloaded_transmission_errors(settings.scene, {position}).front();
+}
+
+template <int dim>
 GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
                                                         const std::string& output_base)
 {
@@ -167,6 +181,9 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     // completed only at the fillets and crack faces (and at the contact and support DoFs) from
     // the kept unit responses, the whole field only for VTU.
     problem->complete_only_at(reported_dofs());
+    // The scene's own unloaded TE is that of its reference position; the rolled one's is set
+    // before evaluate() adds it to the deflection.
+    result.unloaded_transmission_error = unloaded_transmission_error_at(position);
     solve_rolled(); // the factorization, then the contact
     evaluate();
   }
@@ -178,6 +195,7 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     add_rolled_pairs(*problem, pair, candidate_pairs, true);
     add_crack_pairs(); // add_rolled_pairs cleared them
     problem->roll(body_rotations(position));
+    result.unloaded_transmission_error = unloaded_transmission_error_at(position);
     solve_rolled();
     result.n_cells = problem->system().triangulation().n_active_cells();
     evaluate();

@@ -86,13 +86,16 @@ TEST(StiffnessFile, RejectsPartialCycle)
 TEST(StiffnessFile, PairCheck)
 {
   const StiffnessFile file = read_stiffness_file(write_summary(8, 1.), "p");
-  EXPECT_EQ(match_stiffness_file(file, 20, 10, 2e-3, "p"), 0u);
-  EXPECT_EQ(match_stiffness_file(file, 10, 20, 2e-3, "p"), 1u);
-  EXPECT_THROW(match_stiffness_file(file, 20, 11, 2e-3, "p"), InputError);
-  EXPECT_THROW(match_stiffness_file(file, 20, 10, 2.5e-3, "p"), InputError);
-  EXPECT_THROW(match_stiffness_file(file, 10, -40, 2e-3, "p"), InputError);
+  // a = m·|z_a + z_b|/2 without profile shifts: 30 mm for 20/10, 31 for 20/11, 37.5 at 2.5 mm.
+  EXPECT_EQ(match_stiffness_file(file, 20, 10, 2e-3, 30e-3, "p"), 0u);
+  EXPECT_EQ(match_stiffness_file(file, 10, 20, 2e-3, 30e-3, "p"), 1u);
+  EXPECT_THROW(match_stiffness_file(file, 20, 11, 2e-3, 31e-3, "p"), InputError);
+  EXPECT_THROW(match_stiffness_file(file, 20, 10, 2.5e-3, 37.5e-3, "p"), InputError);
+  EXPECT_THROW(match_stiffness_file(file, 10, -40, 2e-3, 30e-3, "p"), InputError);
+  // The same teeth with profile shifts that move the centres: another pair.
+  EXPECT_THROW(match_stiffness_file(file, 20, 10, 2e-3, 30.5e-3, "p"), InputError);
   const StiffnessFile ring = read_stiffness_file(write_summary(8, 1., -40), "p");
-  EXPECT_EQ(match_stiffness_file(ring, -40, 20, 2e-3, "p"), 1u);
+  EXPECT_EQ(match_stiffness_file(ring, -40, 20, 2e-3, 20e-3, "p"), 1u);
 }
 
 // Reversal: k'(x) = k(frac(ε_α − x)) for a table, and the Cai bracket mirrored s → 1 − s; both

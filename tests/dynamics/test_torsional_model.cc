@@ -77,7 +77,7 @@ TEST(TorsionalModel, SplitPathGeometryFromKinematics)
   // tips reduced by ~0.2 mm (independent hand calculation, ±0.05 mm for the exact tip radii).
   const SplitPathCase data = split_path_case();
   EXPECT_NEAR(data.base_pitch, 7.380e-3, 0.0005e-3);
-  EXPECT_NEAR(data.contact_ratio, 1.5, 1e-9);
+  EXPECT_NEAR(data.contact_ratio, 1.5, 1e-9); // input echo: the tips are bisected to give it
   EXPECT_NEAR(data.approach_ratio * data.base_pitch, 4.28e-3, 0.05e-3);
 }
 

@@ -6,10 +6,12 @@
 #include "dynamics/iso6336_dynamic_factor.h"
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
+#include "kinematics/gear_pair.h"
 
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <tuple>
 
 using namespace gearstiff;
 using namespace gearstiff::dynamics;
@@ -237,6 +239,7 @@ TEST(TrainModel, IsoPairsOfTrainMeshes)
                                        "1: 1450",
                                        "2",
                                        "1: 1.47e-4, 2: 7.81e-3",
+                                       "",
                                        ""};
   TrainDynamicsInput input;
   input.spec = kinematics::parse_gear_train(text);
@@ -299,5 +302,39 @@ TEST(TrainModel, ModalEnergySharesSumToOne)
   {
     EXPECT_NEAR(share.row(k).sum(), 1., 1e-12) << "mode " << k;
     EXPECT_GE(share.row(k).minCoeff(), 0.);
+  }
+}
+
+// A Train mesh of shifted gears (issue 41) has the contact ratio and approach ratio of the
+// gear-pair module's pair with standard tips d + 2m(1 + x) at its zero-backlash centre
+// distance: the own pair of the issue (z 23/61, m 4 mm, x 0.2/−0.1) and an internal pair
+// (planet 24 in ring 69, x 0.3/0.5: a smaller ring shift interferes at the standard ring tip). Both
+// modules evaluate the same involute geometry by their own formulas: 1e-12.
+TEST(TrainModel, StandardMeshOfShiftedGearsIsTheGearPairs)
+{
+  const double alpha = 20. * M_PI / 180.;
+  for (const auto& [z1, z2, x1, x2, internal] :
+       {std::tuple{23, 61, 0.2, -0.1, false}, std::tuple{24, 69, 0.3, 0.5, true}})
+  {
+    kinematics::GearPairSpec spec;
+    for (kinematics::GearSpec* g : {&spec.pinion, &spec.wheel})
+    {
+      g->normal_module = 4e-3;
+      g->pressure_angle = alpha;
+      g->face_width = 30e-3;
+    }
+    spec.pinion.teeth = z1;
+    spec.wheel.teeth = z2;
+    spec.pinion.profile_shift = x1;
+    spec.wheel.profile_shift = x2;
+    spec.wheel.internal = internal;
+    const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec);
+    const kinematics::TrainMember a{"a", z1, 4e-3, "", 1, 0., 0., x1};
+    const kinematics::TrainMember b{"b", internal ? -z2 : z2, 4e-3, "", 1, 0., 0., x2};
+    const StandardMesh mesh = standard_mesh(a, b, alpha, 0);
+    EXPECT_NEAR(mesh.contact_ratio, pair.transverse_contact_ratio, 1e-12) << z1 << "/" << z2;
+    EXPECT_NEAR(mesh.approach_ratio,
+                (pair.pitch_point - pair.contact_start) / pair.transverse_base_pitch, 1e-12)
+        << z1 << "/" << z2;
   }
 }

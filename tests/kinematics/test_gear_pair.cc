@@ -74,6 +74,9 @@ TEST(GearPair, SplitPathBuiltInContactRatio)
 {
   const GearPairSpec spec = split_path_pair();
   const GearPairGeometry pair = compute_gear_pair(spec);
+  // Input echo, not evidence: split_path_pair() bisects the tips until ε_α = 1.5, so this line
+  // only states the construction. The results checked against the paper are the path of contact
+  // (its print) and the tip reduction (its note), below.
   EXPECT_NEAR(pair.transverse_contact_ratio, 1.500, 1e-9);
   EXPECT_NEAR(pair.path_of_contact, 11.068 * mm, 0.003 * mm);
   // "both tip radii reduced by about 0.2 mm" (§1 note).
@@ -83,7 +86,9 @@ TEST(GearPair, SplitPathBuiltInContactRatio)
 }
 
 // Zones along the line of action for 1 < ε_α < 2: double AB, single BD, double DE with
-// AB = DE = (ε_α − 1)·p_bt and BD = (2 − ε_α)·p_bt (the definition of ε_α).
+// AB = DE = (ε_α − 1)·p_bt and BD = (2 − ε_α)·p_bt (the definition of ε_α). Input echoes of the
+// construction (ε_α = 1.5 by the tips, roll angle = ℓ/r_b1): what this test checks is that the
+// zone bookkeeping (counts, order, B and D, the pitch point's zone) follows the definition.
 TEST(GearPair, SplitPathContactZones)
 {
   const GearPairGeometry pair = compute_gear_pair(split_path_pair());

@@ -3,6 +3,7 @@
 // 2025, planetary J*), §4 (Chmurawa & Łokiec, cycloidal ratio). Printed values are compared with a
 // tolerance of half a unit of their last printed digit unless stated.
 #include "errors/errors.h"
+#include "kinematics/gear_pair.h"
 #include "kinematics/gear_train.h"
 #include "tests/kinematics/input_error_parameter.h"
 
@@ -281,4 +282,71 @@ TEST(ReducedInertia, NestedPlanetCentreSpeed)
       std::hypot(t.solution.speed("h") * 0.102, t.solution.speed("H") * 0.045) / w1;
   EXPECT_NEAR(terms[0].velocity_ratio, expected, 1e-15);
   EXPECT_NEAR(reduced_moment_of_inertia(terms), 9. * expected * expected, 1e-15);
+}
+
+// Profile shifts move a mesh's centres (issue 41: an own pair's FE table must be accepted by its
+// own train). The working centre distance against the gear-pair module's, which solves the same
+// ISO 21771 relation inv α_w = inv α + 2·tan α·Σx/Σz by its own Newton iteration: the own pair of
+// the issue (z 23/61, m 4 mm, x 0.2/−0.1; a_w 168.396 mm as the FE table printed it) and a
+// shifted ring pair; 1e-12 relative (two evaluations of one formula). No shifts: the reference
+// distance exactly.
+TEST(GearTrain, WorkingCentreDistanceOfShiftedGears)
+{
+  const auto pair_centres = [](int z1, int z2, double x1, double x2, bool internal)
+  {
+    GearPairSpec spec;
+    for (GearSpec* g : {&spec.pinion, &spec.wheel})
+    {
+      g->normal_module = 4e-3;
+      g->pressure_angle = 20. * M_PI / 180.;
+      g->face_width = 30e-3;
+    }
+    spec.pinion.teeth = z1;
+    spec.wheel.teeth = z2;
+    spec.pinion.profile_shift = x1;
+    spec.wheel.profile_shift = x2;
+    spec.wheel.internal = internal;
+    return compute_gear_pair(spec).centre_distance;
+  };
+  const double alpha = 20. * M_PI / 180.;
+  const TrainMember pinion{"p", 23, 4e-3, "", 1, 0., 0., 0.2};
+  const TrainMember wheel{"w", 61, 4e-3, "", 1, 0., 0., -0.1};
+  EXPECT_NEAR(working_centre_distance(pinion, wheel, alpha) /
+                  pair_centres(23, 61, 0.2, -0.1, false),
+              1., 1e-12);
+  EXPECT_NEAR(working_centre_distance(pinion, wheel, alpha), 168.396e-3, 0.5e-6); // printed
+  const TrainMember planet{"p", 24, 4e-3, "", 1, 0., 0., 0.3};
+  const TrainMember ring{"r", -69, 4e-3, "", 1, 0., 0., 0.5};
+  EXPECT_NEAR(working_centre_distance(planet, ring, alpha) / pair_centres(24, 69, 0.3, 0.5, true),
+              1., 1e-12);
+  const TrainMember plain_a{"a", 23, 4e-3, "", 1, 0., 0., 0.},
+      plain_b{"b", 61, 4e-3, "", 1, 0., 0., 0.};
+  EXPECT_EQ(working_centre_distance(plain_a, plain_b, alpha), 0.5 * 4e-3 * 84);
+}
+
+// A planetary set closes with shifted gears only at equal working centre distances: sun 20 /
+// planet 10 with x 0.25/0.25 moves the sun–planet centres out, and the ring's shift that gives
+// the same distance (found by the same relation) closes the train; a ring without that shift
+// is refused as "does not close".
+TEST(GearTrain, ShiftedPlanetaryCloses)
+{
+  GearTrainText text = builtin_train("planetary");
+  text.profile_shifts = "s: 0.25, p: 0.25";
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/gears");
+  const double alpha = 20. * M_PI / 180.;
+  const TrainMember sun{"s", 20, 2e-3, "", 1, 0., 0., 0.25};
+  const TrainMember planet{"p", 10, 2e-3, "", 1, 0., 0., 0.25};
+  const double orbit = working_centre_distance(sun, planet, alpha);
+  // The ring shift x_r with a_w(p, r) = orbit: bisection on the monotone relation.
+  double low = -1., high = 1.;
+  for (int i = 0; i < 200; ++i)
+  {
+    const double mid = 0.5 * (low + high);
+    const TrainMember ring{"r", -40, 2e-3, "", 1, 0., 0., mid};
+    // Σz < 0: a larger ring shift lowers inv α_w and so a_w.
+    (working_centre_distance(planet, ring, alpha) > orbit ? low : high) = mid;
+  }
+  text.profile_shifts += ", r: " + std::to_string(0.5 * (low + high));
+  const Solved solved = solve(text);
+  EXPECT_NEAR(solved.solution.orbit_radius[solved.solution.index("p")], orbit, 1e-9);
 }

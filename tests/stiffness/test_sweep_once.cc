@@ -12,6 +12,7 @@
 // default 2D scene, 32 positions over one base pitch, on two MPI ranks (positions over ranks,
 // each rank meshes and factorizes once).
 #include "stiffness/mesh_stiffness_sweep.h"
+#include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/planet_ring.h"
 #include "tests/stiffness/work_file.h"
 
@@ -65,6 +66,10 @@ void compare_results(const StiffnessSweepResult& reference, const StiffnessSweep
                 << dk * 100 << " %), TE " << a.transmission_error * 1e6 << " / "
                 << b.transmission_error * 1e6 << " um, share diff " << dshare << ", iterations "
                 << a.active_set_iterations << " / " << b.active_set_iterations << "\n";
+    // The unloaded TE is geometry (the modifications' gap at the position): identical by
+    // construction, to 1 nm (issue 41: the rolled positions reported the scene's own value).
+    EXPECT_NEAR(b.unloaded_transmission_error, a.unloaded_transmission_error, 1e-9)
+        << "position " << i;
     EXPECT_GE(dk, k_range.first) << "position " << i;
     EXPECT_LE(dk, k_range.second) << "position " << i;
     EXPECT_NEAR(dte, 0., 0.05e-6) << "position " << i;
@@ -119,6 +124,61 @@ TEST(SweepOnce, InternalPairMatchesPerPosition)
   StiffnessSweepSpec spec;
   spec.positions = 16;
   compare_sweeps(settings, spec, "internal");
+}
+
+// Modified teeth (issue 41): the scene is meshed with the modified outlines at its own position
+// and turned; each rolled position must report its own unloaded TE (the modifications' gap
+// there) and the loaded TE built on it. Equal long tip reliefs of 10 µm on both gears (the
+// issue's case: once 0.625 µm against 4.375 µm per position for the unloaded TE peak-to-peak
+// before the fix), 16 positions.
+TEST(SweepOnce, LongTipReliefMatchesPerPosition)
+{
+  GearMeshStiffnessSettings settings;
+  settings.contact.friction_coefficient = 0.01;
+  settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(10e-6)};
+  settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(10e-6)};
+  StiffnessSweepSpec spec;
+  spec.positions = 16;
+  compare_sweeps(settings, spec, "long tip relief");
+}
+
+// Every other profile modification kind at once, on the pinion only or the wheel only: a short
+// parabolic tip relief and profile crowning on the pinion, an arc root relief and a profile
+// slope on the wheel, 12 positions.
+TEST(SweepOnce, ProfileModificationsMatchPerPosition)
+{
+  using geometry::ModificationKind;
+  GearMeshStiffnessSettings settings;
+  settings.contact.friction_coefficient = 0.01;
+  geometry::ToothModification tip, crowning, root, slope;
+  tip.kind = ModificationKind::tip_relief;
+  tip.amount = 8e-6;
+  tip.length = 1.5e-3;
+  tip.shape = geometry::ReliefShape::parabolic;
+  crowning.kind = ModificationKind::profile_crowning;
+  crowning.amount = 3e-6;
+  root.kind = ModificationKind::root_relief;
+  root.amount = 6e-6;
+  root.length = 1e-3;
+  root.shape = geometry::ReliefShape::arc;
+  slope.kind = ModificationKind::profile_slope;
+  slope.amount = -4e-6;
+  settings.scene.pinion_modifications.all_teeth = {tip, crowning};
+  settings.scene.wheel_modifications.all_teeth = {root, slope};
+  StiffnessSweepSpec spec;
+  spec.positions = 12;
+  compare_sweeps(settings, spec, "profile modifications");
+}
+
+// The internal pair with a long tip relief on the planet only: a relief on one gear alone.
+TEST(SweepOnce, InternalReliefMatchesPerPosition)
+{
+  GearMeshStiffnessSettings settings = planet_ring_settings(3., "once_internal_relief");
+  settings.contact.friction_coefficient = 0.01;
+  settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(8e-6)};
+  StiffnessSweepSpec spec;
+  spec.positions = 12;
+  compare_sweeps(settings, spec, "internal relief");
 }
 
 // A torque list (issue 27's Harris map) on the rolling sweep: every position starts from the

@@ -31,13 +31,15 @@ def peak_to_peak(factor):
 coarse, default, fine = (peak_to_peak(f) for f in (math.sqrt(2), 1., 1. / math.sqrt(2)))
 print(f"TE peak-to-peak [um]: x1.41 {coarse:.5f}, default {default:.5f}, x0.71 {fine:.5f}")
 checks = Checks("te_convergence")
-# Measured 2026-11-26: 1.99763, 1.99968, 2.00007 µm (changes 0.0021 then 0.0004 µm). Tolerance
-# 0.002 µm: 5x the measured last change, 0.1 % of the peak-to-peak and 1/25 of the 0.05 µm TE
-# accuracy issue 28 asks of a sweep.
-checks.near("default TE p-p against the 1/sqrt(2) level [um]", default, fine, 0.002,
+# Measured 2026-12-01: 1.65812, 1.65529, 1.65311 µm (changes 0.0028 then 0.0022 µm). (The
+# 2026-11-26 figures, 1.998-2.000 µm, came from the rolling sweep that reported the scene's own
+# unloaded TE at every position, issue 41; the default sweep is rolling.) Tolerance 0.005 µm:
+# about 2x the measured last change (the ladder converges slowly: the changes shrink by 0.8),
+# 0.3 % of the peak-to-peak and 1/10 of the 0.05 µm TE accuracy issue 28 asks of a sweep.
+checks.near("default TE p-p against the 1/sqrt(2) level [um]", default, fine, 0.005,
             relative=False)
-# Converging: the last refinement changes the result less than the one before (measured 0.0004
-# against 0.0021 µm).
+# Converging: the last refinement changes the result less than the one before (measured 0.0022
+# against 0.0028 µm).
 checks.holds(f"converging: last change {abs(default - fine):.5f} um < previous "
              f"{abs(coarse - default):.5f} um", abs(default - fine) < abs(coarse - default))
 checks.done()

@@ -1,0 +1,412 @@
+#!/usr/bin/env python3
+"""Invariants on gears nobody tuned to (issue 41; ctest label `invariants`).
+
+A seeded generator draws own gear pairs -- teeth 17-90, module 1-10 mm, profile shifts
+-0.4...+0.6 within the validity checks of `gearstiff gear-pair`, face widths, friction 0-0.1,
+external and internal, with and without modifications -- and checks on each the identities that
+must hold whatever the gear. None of them compares with a stored number: each is an identity of
+the method (two paths to one answer) or of the geometry, so a case can never be "re-blessed".
+
+    once = per position      a rolling sweep (one mesh, turned) against a mesh per position:
+                             unloaded TE identical (it is geometry: 1 nm), loaded TE within
+                             0.05 um, load shares within 0.005 (issue 41's accuracy), k within
+                             0.5 % (the default meshes' own scatter on generated gears: 0.4 %)
+    zero = none              a modification of amount 0 gives every printed digit of none
+    one-gear relief          a tip relief on one gear only: unloaded TE 0 at every position (the
+                             unmodified pair carries wherever the relieved one separates)
+    tent                     equal long linear tip reliefs C on both gears: the unloaded TE is
+                             C*min(x, e-1-x)/(e-1) in the double-contact zone x in [0, e-1] of
+                             the mesh cycle and 0 in the single-contact zone (e = eps_alpha; the
+                             entering pair's wheel relief falls as the leaving pair's pinion
+                             relief rises over the same length): 1 nm
+    2 ranks = 1 rank         the same sweep on two MPI ranks: k, TE to 1e-6 relative (the warm
+                             start of a position depends on the rank's previous one)
+    Python = command line    gearstiff.stiffness(...) returns the command line's numbers (the
+                             12 printed digits)
+    3D between plane models  straight teeth in 3D: k between plane stress and plane strain
+    own train                the sweep's stiffness_table.prm runs `gearstiff dynamics` on this
+                             pair: its mesh frequency z1*n1/60, its mean stiffness the sweep's,
+                             and K_v = 1 at a quasi-static speed without friction (0.5 %)
+
+A pair `gearstiff gear-pair` accepts must also be one the FE scene accepts (the first defect
+this generator found: an automatic ring tip the tooth generator refused as topped).
+
+Every case prints its seed and its full parameter set, and the command that reproduces it:
+
+    invariants.py GEARSTIFF --seed S --cases 1 --first K
+
+usage: invariants.py GEARSTIFF [--seed S] [--cases N] [--first K] [--mpiexec CMD]
+           [--python-path DIR]
+The number of cases comes from --cases, or GEARSTIFF_INVARIANT_CASES to run more.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import shlex
+import subprocess
+import sys
+import tempfile
+
+MODULES = [1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]  # mm, ISO 54 first choice
+WALL_CLOCK = ("time", "cost", "ranks", "rank")
+
+
+class CaseFailure(Exception):
+    pass
+
+
+class Runner:
+    def __init__(self, gearstiff, mpiexec, python_path, work):
+        self.gearstiff = gearstiff
+        self.mpiexec = mpiexec
+        self.python_path = python_path
+        self.work = work
+        self.runs = 0
+
+    def run(self, command, sets, ranks=1, out=None, allowed=(0,)):
+        """The command's JSON report (and its exit code), one `--set` per entry of `sets`."""
+        args = [self.gearstiff, command, "--json", "--quiet"]
+        for key, value in sets.items():
+            args += ["--set", f"{key}={value}"]
+        if out:
+            args += ["-o", out]
+        if ranks > 1:
+            args = shlex.split(self.mpiexec) + ["-np", str(ranks)] + args
+        self.runs += 1
+        process = subprocess.run(args, capture_output=True, text=True)
+        if process.returncode not in allowed:
+            raise CaseFailure(f"{command} exited {process.returncode}: "
+                              f"{process.stderr.strip()[-600:]}\n  command: {shlex.join(args)}")
+        report = json.loads(process.stdout) if process.stdout.strip() else {}
+        return report, process.returncode, process.stderr
+
+
+def table(report, name):
+    t = report["tables"][name]
+    return [dict(zip(t["columns"], row)) for row in t["rows"]]
+
+
+def value(report, key):
+    return report["values"][key]["value"]
+
+
+# ---- the generator ------------------------------------------------------------------------
+def gear_sets(rng):
+    """One pair's `Gear pair/...` settings (not yet checked for validity)."""
+    internal = rng.random() < 0.25
+    module = rng.choice(MODULES)
+    if internal:
+        z1 = rng.randint(17, 40)
+        z2 = rng.randint(z1 + 15, 90)  # a ring close to its planet interferes at its tips
+        x1, x2 = round(rng.uniform(0.0, 0.6), 2), round(rng.uniform(0.0, 0.4), 2)
+    else:
+        z1 = rng.randint(17, 45)
+        z2 = rng.randint(z1, 90)
+        x1, x2 = round(rng.uniform(-0.4, 0.6), 2), round(rng.uniform(-0.4, 0.6), 2)
+    width = round(module * rng.uniform(6., 12.), 1)
+    sets = {}
+    for gear, z, x in (("Pinion", z1, x1), ("Wheel", z2, x2)):
+        sets[f"Gear pair/{gear}/teeth"] = z
+        sets[f"Gear pair/{gear}/module"] = module
+        sets[f"Gear pair/{gear}/profile shift"] = x
+        sets[f"Gear pair/{gear}/face width"] = width
+    sets["Gear pair/Wheel/internal"] = "true" if internal else "false"
+    return sets
+
+
+def load_sets(rng, pair_report, sets):
+    """A torque that deflects the mesh by 3-8 um at ISO's c' = 14 N/(mm um) over the face width,
+    and a friction coefficient 0-0.1."""
+    width = float(sets["Gear pair/Pinion/face width"])
+    base_radius = value(pair_report, "pinion_base_radius") * 1e-3
+    deflection = rng.uniform(3e-6, 8e-6)
+    torque = 14e6 * width * deflection * base_radius
+    return {"Gear pair scene/pinion torque": round(torque, 3),
+            "Contact/Friction coefficient": round(rng.choice([0., rng.uniform(0., 0.1)]), 3)}
+
+
+MODIFICATIONS = ["none", "long relief both", "relief pinion only", "relief wheel only",
+                 "profile mix"]
+
+
+def modification_sets(rng, kind, module):
+    amount = round(rng.uniform(4., 15.), 1)  # um
+    if kind == "long relief both":
+        return {"Gear pair/Pinion/tip relief": amount, "Gear pair/Wheel/tip relief": amount}
+    if kind == "relief pinion only":
+        return {"Gear pair/Pinion/tip relief": amount}
+    if kind == "relief wheel only":
+        return {"Gear pair/Wheel/tip relief": amount}
+    if kind == "profile mix":
+        return {"Gear pair/Pinion/tip relief": amount,
+                "Gear pair/Pinion/tip relief shape": "parabolic",
+                "Gear pair/Pinion/tip relief length": round(0.35 * module, 3),
+                "Gear pair/Wheel/profile crowning": round(rng.uniform(1., 4.), 1),
+                "Gear pair/Wheel/profile slope": round(rng.uniform(-4., 4.), 1)}
+    return {}
+
+
+def draw_case(rng, runner):
+    """A valid own pair (redrawn until `gearstiff gear-pair` accepts it) with a load and a
+    modification kind."""
+    for attempt in range(50):
+        sets = gear_sets(rng)
+        report, code, _ = runner.run("gear-pair", sets, allowed=(0, 2))
+        if code == 0 and value(report, "transverse_contact_ratio") > 1.05:
+            break
+    else:
+        raise CaseFailure("no valid pair in 50 draws")
+    sets.update(load_sets(rng, report, sets))
+    kind = rng.choice(MODIFICATIONS)
+    module = float(sets["Gear pair/Pinion/module"])
+    return {"pair": sets, "modification": kind,
+            "modifications": modification_sets(rng, kind, module),
+            "contact_ratio": value(report, "transverse_contact_ratio"),
+            "draws": attempt + 1}
+
+
+# ---- the identities -----------------------------------------------------------------------
+def sweep_sets(case, positions, mesh):
+    sets = dict(case["pair"])
+    sets.update(case["modifications"])
+    sets.update({"Stiffness/mode": "sweep", "Stiffness/sweep positions": positions,
+                 "Stiffness/sweep mesh": mesh, "Stiffness/published reference": "false"})
+    return sets
+
+
+def check_close(what, a, b, atol, rtol=0.):
+    if not abs(a - b) <= atol + rtol * max(abs(a), abs(b)):
+        raise CaseFailure(f"{what}: {a!r} against {b!r} (tolerance {atol} + {rtol} relative)")
+
+
+def shares(row):
+    return [row.get(k, 0.) for k in ("share_pair_m1", "share_pair_0", "share_pair_p1")]
+
+
+def once_equals_per_position(case, runner, log):
+    positions = 5  # over one base pitch: both contact zones, and the suite's time in bounds
+    once, _, _ = runner.run("stiffness", sweep_sets(case, positions, "once"))
+    reference, _, _ = runner.run("stiffness", sweep_sets(case, positions, "per position"))
+    rows_once, rows_ref = table(once, "stiffness_sweep"), table(reference, "stiffness_sweep")
+    worst = [0., 0., 0., 0.]
+    for i, (a, b) in enumerate(zip(rows_ref, rows_once)):
+        check_close(f"position {i} unloaded TE [um]", b["unloaded_transmission_error"],
+                    a["unloaded_transmission_error"], 1e-3)
+        check_close(f"position {i} loaded TE [um]", b["transmission_error"],
+                    a["transmission_error"], 0.05)
+        # 0.5 %, not the built-in pair's 0.3 %: the two are different meshes, each with its own
+        # discretisation error, and on generated gears the default per-position mesh alone
+        # scatters more (case 8 of seed 20261201, a 24/34 pair of m 5 mm at 22.82°: per
+        # position 900.44, 903.81, 902.34 N/um at sizes x1, x0.71, x0.5; once 904.15: 0.41 %
+        # from per position, 0.20 % from the finest level).
+        check_close(f"position {i} k [N/um]", b["stiffness"], a["stiffness"], 0., 5e-3)
+        for sa, sb in zip(shares(a), shares(b)):
+            check_close(f"position {i} load share", sb, sa, 5e-3)
+        worst = [max(worst[0], abs(b["unloaded_transmission_error"] -
+                                   a["unloaded_transmission_error"])),
+                 max(worst[1], abs(b["transmission_error"] - a["transmission_error"])),
+                 max(worst[2], abs(b["stiffness"] / a["stiffness"] - 1.)),
+                 max(worst[3], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
+    log(f"once = per position: |dTE0| {worst[0]:.2g} um, |dTE| {worst[1]:.3g} um, "
+        f"|dk| {worst[2] * 100:.3g} %, |dshare| {worst[3]:.2g}")
+    return rows_ref
+
+
+def geometric_te(case, rows, log):
+    """The unloaded TE the modification kind implies, at every position (per-position rows)."""
+    kind = case["modification"]
+    unloaded = [r["unloaded_transmission_error"] for r in rows]
+    if kind in ("none", "relief pinion only", "relief wheel only"):
+        for i, u in enumerate(unloaded):
+            check_close(f"{kind}: position {i} unloaded TE [um]", u, 0., 1e-3)
+        log(f"{kind}: unloaded TE 0 at every position")
+    elif kind == "long relief both":
+        amount = case["modifications"]["Gear pair/Pinion/tip relief"]
+        e = case["contact_ratio"] - 1.
+        for i, r in enumerate(rows):
+            x = r["mesh_position"] % 1.
+            tent = amount * min(x, e - x) / e if x <= e else 0.
+            check_close(f"tent: position {i} (x = {x:.4f}) unloaded TE [um]",
+                        r["unloaded_transmission_error"], tent, 1e-3)
+        log(f"tent: the unloaded TE of equal long reliefs ({amount} um) at every position")
+
+
+def zero_equals_none(case, runner, log):
+    """Zero modifications and a zero crack on a modelled tooth give every printed value of the
+    plain pair. (A crack on a tooth out of mesh is no such identity: the scene refuses a tooth it
+    does not model, and a modelled unloaded tooth's cracked root still feels the rim's bending.)"""
+    sets = dict(case["pair"])
+    plain, _, _ = runner.run("stiffness", sets)
+    variants = [{"Gear pair/Pinion/tip relief": 0}, {"Gear pair/Wheel/profile crowning": 0},
+                {"Gear pair/Pinion/root relief": 0},
+                {"Gear pair/Pinion/faulty tooth": 1, "Gear pair/Pinion/crack depth": 0}]
+    for variant in variants:
+        report, _, _ = runner.run("stiffness", dict(sets, **variant))
+        differences = [k for k, v in plain["values"].items()
+                       if not any(w in k for w in WALL_CLOCK) and
+                       report["values"].get(k, {}).get("value") != v.get("value")]
+        if differences:
+            raise CaseFailure(f"{variant} differs from none in {differences[:5]}")
+    log("zero modification = none, zero crack = healthy: every printed value equal")
+
+
+def ranks_agree(case, runner, log):
+    sets = sweep_sets(case, 4, "per position")
+    one, _, _ = runner.run("stiffness", sets)
+    two, _, _ = runner.run("stiffness", sets, ranks=2)
+    for i, (a, b) in enumerate(zip(table(one, "stiffness_sweep"), table(two, "stiffness_sweep"))):
+        check_close(f"position {i} k [N/um], 2 ranks", b["stiffness"], a["stiffness"], 0., 1e-6)
+        check_close(f"position {i} TE [um], 2 ranks", b["transmission_error"],
+                    a["transmission_error"], 1e-6)
+    log("2 ranks = 1 rank: k and TE to 1e-6")
+
+
+def python_equals_cli(case, runner, log):
+    if not runner.python_path:
+        log("Python = command line: skipped (no --python-path)")
+        return
+    sets = dict(case["pair"])
+    sets.update(case["modifications"])
+    cli, _, _ = runner.run("stiffness", sets)
+    # The module takes the .prm's sections as a nested dict.
+    params = {}
+    for key, v in sets.items():
+        *sections, name = key.split("/")
+        node = params
+        for section in sections:
+            node = node.setdefault(section, {})
+        node[name] = str(v)
+    script = ("import gearstiff, json, sys\n"
+              "r = gearstiff.stiffness(json.loads(sys.argv[1]))\n"
+              "print(json.dumps({'k': r['values']['mesh_stiffness']['value'],"
+              " 'te': r['values']['transmission_error']['value']}))\n")
+    env = dict(os.environ, PYTHONPATH=runner.python_path)
+    process = subprocess.run([sys.executable, "-c", script, json.dumps(params)],
+                             capture_output=True, text=True, env=env)
+    if process.returncode != 0:
+        raise CaseFailure(f"Python: {process.stderr.strip()[-600:]}")
+    python = json.loads(process.stdout.strip().splitlines()[-1])
+    # The command line prints 12 significant digits (app/report.cc): 1e-11 relative.
+    check_close("Python k [N/um]", python["k"], value(cli, "mesh_stiffness"), 0., 1e-11)
+    check_close("Python TE [um]", python["te"], value(cli, "transmission_error"), 0., 1e-11)
+    log("Python = command line: k and TE")
+
+
+def own_train(case, runner, log):
+    """The sweep's stiffness_table.prm runs this pair in `gearstiff dynamics`: its mesh frequency
+    is z1*n1/60, its mean stiffness the sweep's mean k (uniform positions over one base pitch:
+    the mean of the periodic linear interpolation is the mean of the samples), and at a
+    quasi-static speed, without tooth friction (whose moments change the static force by about
+    mu*tan(alpha_w), ~0.5-1 %), the mesh force is the static one: K_v = 1. The residual
+    vibration each stiffness ramp of the table leaves grows with the speed (measured on a 25/40
+    pair, m 8 mm: K_v - 1 = 0.0216, 0.0070, 0.0032, 0.0016 at 5, 2, 1, 0.5 % of the resonance
+    speed); at 0.5 % the tolerance is 0.5 %, three times that."""
+    with tempfile.TemporaryDirectory(dir=runner.work) as folder:
+        out = os.path.join(folder, "sweep")
+        sweep, _, _ = runner.run("stiffness", sweep_sets(case, 6, "once"), out=out)
+        table_file = os.path.join(out, "stiffness_table.prm")
+        with open(table_file) as f:
+            text = f.read()
+        z1 = int(case["pair"]["Gear pair/Pinion/teeth"])
+        if f"z {z1}/" not in text:
+            raise CaseFailure(f"stiffness_table.prm does not name this pair:\n{text[:400]}")
+        resonance = float(text.split("resonance speed n_E1 = ")[1].split()[0])
+        speed = 0.005 * resonance
+        args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
+                "--set", f"Train/input speed={speed:.8g}",
+                "--set", "Mesh 1/friction coefficient=0"]
+        process = subprocess.run(args, capture_output=True, text=True)
+        if process.returncode != 0:
+            raise CaseFailure(f"dynamics on stiffness_table.prm exited {process.returncode}: "
+                              f"{process.stderr.strip()[-600:]}")
+        dynamics = json.loads(process.stdout)
+        check_close("mesh frequency [Hz]", value(dynamics, "mesh_frequency"), z1 * speed / 60.,
+                    0., 1e-6)
+        k = [r["stiffness"] for r in table(sweep, "stiffness_sweep")]
+        check_close("mean stiffness [N/um]", value(dynamics, "mesh1_mean_stiffness"),
+                    sum(k) / len(k), 0., 1e-6)
+        check_close("K_v max at quasi-static speed", value(dynamics, "mesh1_kv_max"), 1., 5e-3)
+        log(f"own train: dynamics runs this pair (f_z {value(dynamics, 'mesh_frequency'):.5g} "
+            f"Hz, mean k {sum(k) / len(k):.5g} N/um, quasi-static K_v "
+            f"{value(dynamics, 'mesh1_kv_max'):.5f})")
+
+
+def three_d_between_plane_models(case, runner, log):
+    """A straight 3D tooth pair is stiffer than plane stress (its middle is held across the face)
+    and softer than plane strain (its end faces are free): k_stress < k_3D < k_strain, all three
+    Q1 on the same in-plane cell sizes."""
+    sets = dict(case["pair"], **{"Finite elements/Element degree": 1,
+                                 "Stiffness/published reference": "false"})
+    k = {}
+    for name, extra in (("plane stress", {"Finite elements/Planar model": "plane stress"}),
+                        ("plane strain", {"Finite elements/Planar model": "plane strain"}),
+                        # 150 iterations: with friction the 3D Tresca fixed point needs more
+                        # than the default 40 (as in test_sweep_once.ThreeDQ1; found here at
+                        # mu = 0.098: exit 3 with no node changing state).
+                        ("3D", {"Mesh/dimension": 3, "Mesh/layers": 4,
+                                "Contact/Max iterations": 150})):
+        report, _, _ = runner.run("stiffness", dict(sets, **extra))
+        k[name] = value(report, "mesh_stiffness")
+    if not k["plane stress"] < k["3D"] < k["plane strain"]:
+        raise CaseFailure(f"3D k {k['3D']} N/um not between plane stress {k['plane stress']} "
+                          f"and plane strain {k['plane strain']} N/um")
+    log(f"3D between the plane models: {k['plane stress']:.5g} < {k['3D']:.5g} < "
+        f"{k['plane strain']:.5g} N/um")
+
+
+# Which identities a case checks: every case the rolling sweep and the geometry of its
+# modification; the costlier ones in turn.
+ROTATION = [zero_equals_none, ranks_agree, python_equals_cli, own_train]
+
+
+def run_case(seed, index, runner):
+    rng = random.Random(f"{seed}:{index}")
+    lines = []
+    log = lines.append
+    case = draw_case(rng, runner)
+    settings = dict(case["pair"], **case["modifications"])
+    print(f"case {index} (seed {seed}): {case['modification']}, eps_alpha "
+          f"{case['contact_ratio']:.4f}; " + "; ".join(f"{k}={v}" for k, v in settings.items()),
+          flush=True)
+    try:
+        rows = once_equals_per_position(case, runner, log)
+        geometric_te(case, rows, log)
+        ROTATION[index % len(ROTATION)](case, runner, log)
+        if index % 10 == 9:  # 3D is the costly one: every tenth case
+            three_d_between_plane_models(case, runner, log)
+    except CaseFailure as failure:
+        for line in lines:
+            print("  " + line)
+        print(f"  FAILED: {failure}")
+        print(f"  reproduce: {sys.argv[0]} {runner.gearstiff} --seed {seed} --cases 1 "
+              f"--first {index}")
+        return False
+    for line in lines:
+        print("  " + line)
+    return True
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("gearstiff")
+    parser.add_argument("--seed", type=int, default=20261201)
+    parser.add_argument("--cases", type=int,
+                        default=int(os.environ.get("GEARSTIFF_INVARIANT_CASES", "6")))
+    parser.add_argument("--first", type=int, default=0)
+    parser.add_argument("--mpiexec", default=os.environ.get("GEARSTIFF_MPIEXEC", "mpiexec"))
+    parser.add_argument("--python-path", default=os.environ.get("GEARSTIFF_PYTHON_PATH", ""))
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix="gearstiff-invariants-") as work:
+        runner = Runner(args.gearstiff, args.mpiexec, args.python_path, work)
+        results = [run_case(args.seed, i, runner)
+                   for i in range(args.first, args.first + args.cases)]
+    failed = results.count(False)
+    print(f"invariants: {len(results)} cases from seed {args.seed} (first {args.first}), "
+          f"{runner.runs} runs: {len(results) - failed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
