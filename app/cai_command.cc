@@ -20,7 +20,6 @@
 #include "errors/errors.h"
 
 #include <cmath>
-#include <fstream>
 
 namespace
 {
@@ -149,13 +148,15 @@ void write_files(CommandContext& context, const dynamics::CaiFit& fit, std::size
 {
   if (!(context.writes_files() && context.is_root()))
     return;
-  std::ofstream out(context.output_file(
-      "cai_calibrated.prm", "calibrated Cai parameters for `gearstiff dynamics` (both meshes)"));
-  out << "# Cai curve calibrated to FE single-pair stiffness (gearstiff cai, " << samples
-      << " samples, rms residual " << format_number(fit.rms_residual / 1e3, 6)
-      << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n"
-      << dynamics_cai_input(fit.parameters);
-  out.close();
+  context.write_output(
+      "cai_calibrated.prm", "calibrated Cai parameters for `gearstiff dynamics` (both meshes)",
+      [&](std::ostream& out)
+      {
+        out << "# Cai curve calibrated to FE single-pair stiffness (gearstiff cai, " << samples
+            << " samples, rms residual " << format_number(fit.rms_residual / 1e3, 6)
+            << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n"
+            << dynamics_cai_input(fit.parameters);
+      });
   const TemporaryCsv sample_csv(context.report, "cai_samples");
   const TemporaryCsv curve_csv(context.report, "cai_curves");
   context.plot("plot_cai.py", {sample_csv.path(), curve_csv.path()}, "cai_calibration.png",

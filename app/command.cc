@@ -3,10 +3,12 @@
 #include "errors/errors.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -14,6 +16,7 @@
 #include <mutex>
 #include <pthread.h>
 #include <sstream>
+#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -107,6 +110,10 @@ void wait_for_signals(sigset_t signals)
       fs::remove_all(staging_to_remove, error);
     for (int pass = 0; pass < 2 && !scratch_to_remove.empty(); ++pass)
       fs::remove_all(scratch_to_remove, error);
+    // An MPI job ends by SIGTERM to every rank when one rank was killed (SIGKILL): that rank's
+    // scratch folder is stale by now (mpirun has reaped it), and the next run would remove it.
+    if (!scratch_to_remove.empty())
+      remove_stale_staging(fs::path(scratch_to_remove).parent_path(), scratch_prefix);
   }
   std::signal(signal_number, SIG_DFL);
   pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
@@ -130,6 +137,27 @@ void install_signal_cleanup()
   }
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   std::thread(wait_for_signals, signals).detach();
+  // Without this, `ulimit -f` killed the process in the middle of the scene mesh (exit 153) and
+  // left its staging folder; ignored, the write fails with EFBIG and is checked like any other.
+  // Child processes (the plot scripts) inherit it: Python then raises OSError [Errno 27].
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
+IoError located(const IoError& error, const std::string& staging_directory,
+                const std::string& output_directory)
+{
+  if (!error.place().empty())
+    return error;
+  const fs::path path(error.path());
+  if (!staging_directory.empty() && error.path().rfind(staging_directory + "/", 0) == 0)
+    return IoError(path.lexically_relative(staging_directory).string(), error.reason(),
+                   "-o " + output_directory);
+  std::error_code ignored;
+  const fs::path temporary = fs::temp_directory_path(ignored);
+  if (!temporary.empty() && error.path().rfind((temporary / scratch_prefix).string(), 0) == 0)
+    return IoError(path.lexically_relative(temporary).string(), error.reason(),
+                   "TMPDIR (" + temporary.string() + ")");
+  return error;
 }
 
 StagedOutput::StagedOutput(const std::string& directory_, MPI_Comm communicator)
@@ -173,19 +201,25 @@ StagedOutput::StagedOutput(const std::string& directory_, MPI_Comm communicator)
       set_staging_to_remove("");
     throw InputError("-o", problem);
   }
-  // The other ranks learn the path (they write their own VTU pieces into it).
+  // The other ranks learn the path (they write their own VTU pieces into it). They remove it on
+  // a signal too: when rank 0 was killed (SIGKILL), mpirun ends them by SIGTERM.
   int length = static_cast<int>(staging.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, communicator);
   staging.resize(length);
   MPI_Bcast(staging.data(), length, MPI_CHAR, 0, communicator);
+  if (!root)
+    set_staging_to_remove(staging);
 }
 
 StagedOutput::~StagedOutput()
 {
-  if (!root || committed)
+  if (committed)
     return;
-  std::error_code error;
-  fs::remove_all(staging, error);
+  if (root)
+  {
+    std::error_code error;
+    fs::remove_all(staging, error);
+  }
   set_staging_to_remove("");
 }
 
@@ -194,7 +228,11 @@ void StagedOutput::commit()
   // Every rank has written its files (VTU pieces) before rank 0 moves them.
   MPI_Barrier(communicator);
   if (!root)
+  {
+    set_staging_to_remove("");
+    committed = true;
     return;
+  }
   std::error_code error;
   if (!fs::exists(directory, error))
   {
@@ -310,9 +348,42 @@ std::string CommandContext::output_file(const std::string& name, const std::stri
   if (staging_directory.empty())
     throw std::logic_error("output_file('" + name + "') called without -o DIR");
   const std::filesystem::path path = std::filesystem::path(staging_directory) / name;
-  std::filesystem::create_directories(path.parent_path());
+  std::error_code error;
+  std::filesystem::create_directories(path.parent_path(), error);
+  if (error)
+    record_write_failure(path.parent_path().string(),
+                         write_failure_reason(path.string(), error.value()));
   report.add_output_file(name, description);
   return path.string();
+}
+
+std::string CommandContext::write_output(const std::string& name, const std::string& description,
+                                         const std::function<void(std::ostream&)>& write)
+{
+  const std::string path = output_file(name, description);
+  if (!write_failure.first.empty())
+    return path; // the run fails already; no need to fill the disk further
+  try
+  {
+    write_file(path, write);
+  }
+  catch (const IoError& e)
+  {
+    record_write_failure(e.path(), e.reason());
+  }
+  return path;
+}
+
+void CommandContext::record_write_failure(const std::string& path, const std::string& reason)
+{
+  if (write_failure.first.empty())
+    write_failure = {path, reason};
+}
+
+void CommandContext::throw_write_failure() const
+{
+  if (!write_failure.first.empty())
+    throw IoError(write_failure.first, write_failure.second);
 }
 
 namespace
@@ -324,12 +395,59 @@ std::string shell_quote(const std::string& s)
     quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
 }
+
+// A finished script: its exit status (as pclose gives it) and everything it printed.
+struct ScriptRun
+{
+  int status = -1;
+  std::string output; // stdout and stderr
+};
+
+// Runs a shell command with its output captured: a plot script's traceback is never passed on.
+ScriptRun run_captured(const std::string& command)
+{
+  ScriptRun run;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr)
+    return run;
+  std::array<char, 4096> buffer{};
+  for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;)
+    run.output.append(buffer.data(), n);
+  run.status = pclose(pipe);
+  return run;
+}
+
+// No python3 (the shell's 127) or no matplotlib/numpy: a chart the machine cannot draw.
+bool python_missing(const ScriptRun& run)
+{
+  return (WIFEXITED(run.status) && WEXITSTATUS(run.status) == 127) ||
+         run.output.find("ModuleNotFoundError") != std::string::npos ||
+         run.output.find("ImportError") != std::string::npos;
+}
+
+// Why a plot script did not write `png`: the errno of its OSError ("OSError: [Errno 28] No space
+// left on device: '...'") in errors/io.h's words, else its last line.
+std::string script_failure_reason(const std::string& script, const std::string& png,
+                                  const ScriptRun& run)
+{
+  std::string line;
+  std::istringstream lines(run.output);
+  for (std::string next; std::getline(lines, next);)
+    if (next.find_first_not_of(" \t\r") != std::string::npos)
+      line = next;
+  const std::size_t at = line.find("[Errno ");
+  if (at != std::string::npos)
+    return write_failure_reason(png, std::atoi(line.c_str() + at + 7));
+  if (line.empty())
+    line = run.status == 0 ? "no chart written" : "exit status " + std::to_string(run.status);
+  return script + " failed: " + line;
+}
 } // namespace
 
 bool CommandContext::plot(const std::string& script, const std::vector<std::string>& arguments,
                           const std::string& png_name, const std::string& description)
 {
-  if (!writes_files() || !is_root())
+  if (!writes_files() || !is_root() || !write_failure.first.empty())
     return false;
   const std::string python =
       std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
@@ -339,20 +457,34 @@ bool CommandContext::plot(const std::string& script, const std::vector<std::stri
     pcout << "note: plot script " << script_path << " not found; " << png_name << " not drawn\n";
     return false;
   }
+  // A table the script would read, cut short by a full scratch disk, is this chart's failure.
+  for (const auto& a : arguments)
+    if (const std::string reason = temporary_write_failure(a); !reason.empty())
+    {
+      record_write_failure(a, reason);
+      return false;
+    }
   const std::string png = (std::filesystem::path(staging_directory) / png_name).string();
   std::ostringstream command;
   command << python << " " << shell_quote(script_path);
   for (const auto& a : arguments)
     command << " " << shell_quote(a);
-  command << " " << shell_quote(png) << (quiet ? " >/dev/null 2>&1" : " 1>&2");
-  const int status = std::system(command.str().c_str());
-  if (status != 0 || !std::filesystem::exists(png))
+  command << " " << shell_quote(png);
+  const ScriptRun run = run_captured(command.str());
+  if (run.status == 0 && std::filesystem::exists(png))
+  {
+    if (!quiet)
+      std::cerr << run.output << std::flush;
+    report.add_output_file(png_name, description);
+    return true;
+  }
+  if (python_missing(run))
   {
     pcout << "note: could not draw " << png_name
           << " (python3 with matplotlib is needed: apt-get install python3-matplotlib)\n";
     return false;
   }
-  report.add_output_file(png_name, description);
-  return true;
+  record_write_failure(png, script_failure_reason(script, png, run));
+  return false;
 }
 } // namespace gearstiff::app

@@ -20,7 +20,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace
@@ -458,16 +457,18 @@ void write_contact_outputs(ParameterHandler& prm, CommandContext& context,
   std::string csv;
   if (context.is_root())
   {
-    csv = context.output_file("contact_surface.csv",
-                              "pressure, shear, gap, slip along each contact surface");
-    std::ofstream out(csv);
-    out << "pair,coordinate_mm,x_mm,y_mm,pressure_MPa,shear_MPa,gap_um,slip_um,state\n";
-    for (unsigned int p = 0; p < result.pairs.size(); ++p)
-      for (const auto& point : result.pairs[p].points)
-        out << p << ',' << point.coordinate * 1e3 << ',' << point.position[0] * 1e3 << ','
-            << point.position[1] * 1e3 << ',' << point.pressure * 1e-6 << ','
-            << point.shear.norm() * 1e-6 << ',' << point.gap * 1e6 << ',' << point.slip.norm() * 1e6
-            << ',' << static_cast<int>(point.state) << '\n';
+    csv = context.write_output(
+        "contact_surface.csv", "pressure, shear, gap, slip along each contact surface",
+        [&](std::ostream& out)
+        {
+          out << "pair,coordinate_mm,x_mm,y_mm,pressure_MPa,shear_MPa,gap_um,slip_um,state\n";
+          for (unsigned int p = 0; p < result.pairs.size(); ++p)
+            for (const auto& point : result.pairs[p].points)
+              out << p << ',' << point.coordinate * 1e3 << ',' << point.position[0] * 1e3 << ','
+                  << point.position[1] * 1e3 << ',' << point.pressure * 1e-6 << ','
+                  << point.shear.norm() * 1e-6 << ',' << point.gap * 1e6 << ','
+                  << point.slip.norm() * 1e6 << ',' << static_cast<int>(point.state) << '\n';
+        });
   }
   prm.enter_subsection("Output");
   const bool vtu = prm.get_bool("VTU");

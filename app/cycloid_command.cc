@@ -14,7 +14,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -59,9 +58,8 @@ std::vector<double> parse_ratios(const std::string& text)
   return ratios;
 }
 
-void write_outline(const std::string& path, const geometry::ToothProfile& lobe)
+void write_outline(std::ostream& out, const geometry::ToothProfile& lobe)
 {
-  std::ofstream out(path);
   out << "x_mm,y_mm,normal_x,normal_y,arc_length_mm\n" << std::setprecision(12);
   for (const geometry::ProfilePoint& p : geometry::full_outline(lobe))
     out << p.position.x() / mm << ',' << p.position.y() / mm << ',' << p.normal.x() << ','
@@ -161,9 +159,11 @@ void correct_for_ratio(CommandContext& context, const geometry::CycloidDiscSpec&
   {
     std::ostringstream file;
     file << "disc_outline_eps_" << eps << ".csv";
-    write_outline(context.output_file(file.str(), "corrected disc outline (points, normals), ε = " +
-                                                      std::to_string(eps)),
-                  geometry::generate_cycloid_disc(corrected, in.points_per_lobe));
+    const geometry::ToothProfile lobe =
+        geometry::generate_cycloid_disc(corrected, in.points_per_lobe);
+    context.write_output(file.str(),
+                         "corrected disc outline (points, normals), ε = " + std::to_string(eps),
+                         [&](std::ostream& out) { write_outline(out, lobe); });
   }
 }
 
@@ -216,8 +216,8 @@ void run(ParameterHandler& prm, CommandContext& context)
   add_clearance_table(report, nominal, clearances);
   report_method(report, in.disc_rotation);
   if (context.writes_files())
-    write_outline(context.output_file("disc_outline_nominal.csv", "nominal disc outline"),
-                  nominal_lobe);
+    context.write_output("disc_outline_nominal.csv", "nominal disc outline",
+                         [&](std::ostream& out) { write_outline(out, nominal_lobe); });
 }
 
 const CommandRegistration registration(

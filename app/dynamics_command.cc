@@ -26,7 +26,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 
@@ -93,10 +92,9 @@ double line_amplitude(const MeshResult& mesh, double frequency)
                                                 : std::numeric_limits<double>::quiet_NaN();
 }
 
-void write_time_series(const std::string& path, const TorsionalModel& model,
+void write_time_series(std::ostream& out, const TorsionalModel& model,
                        const SimulationResult& result, double interval)
 {
-  std::ofstream out(path);
   out << "time [s]";
   for (unsigned int i = 0; i < model.n_dofs(); ++i)
     out << ",phi_" << i + 1 << " [urad]";
@@ -132,9 +130,8 @@ void write_time_series(const std::string& path, const TorsionalModel& model,
   }
 }
 
-void write_spectrum(const std::string& path, const SimulationResult& result)
+void write_spectrum(std::ostream& out, const SimulationResult& result)
 {
-  std::ofstream out(path);
   out << "frequency [Hz]";
   for (const auto& mesh : result.meshes)
     out << ",amplitude_" << mesh.name.substr(mesh.name.find(' ') + 1) << " [N]";
@@ -590,10 +587,11 @@ void write_files(const DynamicsParameters& p, const TorsionalModel& model,
                  const SimulationResult& result, const SweepResult& sweep, CommandContext& context)
 {
   Report& report = context.report;
-  const std::string series = context.output_file("dynamics_time_series.csv",
-                                                 "phi_i(t), mesh forces, K_v(t), mesh stiffness");
-  write_time_series(series, model, result, p.output_interval);
-  write_spectrum(context.output_file("dynamics_spectrum.csv", "mesh-force spectrum"), result);
+  const std::string series = context.write_output(
+      "dynamics_time_series.csv", "phi_i(t), mesh forces, K_v(t), mesh stiffness",
+      [&](std::ostream& out) { write_time_series(out, model, result, p.output_interval); });
+  context.write_output("dynamics_spectrum.csv", "mesh-force spectrum",
+                       [&](std::ostream& out) { write_spectrum(out, result); });
   const std::string window =
       format_number(result.window_start, 8) + "," + format_number(result.window_end, 8);
   context.plot("plot_dynamics.py", {"vibration", series, window}, "dynamics_vibration.png",

@@ -4,12 +4,13 @@
 #include "app/parameter_names.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/io.h"
+#include "fem/parallel.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -36,22 +37,17 @@ std::string shortened_in(std::string message, const std::string& value)
 void write_results(CommandContext& context, const dealii::ParameterHandler& prm,
                    const std::string& command_name)
 {
-  {
-    std::ofstream out(context.output_file("parameters.prm", "parameters actually used"));
-    prm.print_parameters(out, dealii::ParameterHandler::ShortPRM);
-  }
-  {
-    std::ofstream out(context.output_file("parameters.json", "the same, as JSON"));
-    prm.print_parameters(out, dealii::ParameterHandler::ShortJSON);
-  }
+  context.write_output("parameters.prm", "parameters actually used",
+                       [&](std::ostream& out)
+                       { prm.print_parameters(out, dealii::ParameterHandler::ShortPRM); });
+  context.write_output("parameters.json", "the same, as JSON",
+                       [&](std::ostream& out)
+                       { prm.print_parameters(out, dealii::ParameterHandler::ShortJSON); });
   for (const auto& table : context.report.tables())
-  {
-    std::ofstream out(context.output_file(table.name + ".csv", "table " + table.name));
-    context.report.write_table_csv(table, out);
-  }
-  const std::string summary = context.output_file("summary.json", "all results as JSON");
-  std::ofstream out(summary);
-  context.report.print_json(out, command_name);
+    context.write_output(table.name + ".csv", "table " + table.name,
+                         [&](std::ostream& out) { context.report.write_table_csv(table, out); });
+  context.write_output("summary.json", "all results as JSON",
+                       [&](std::ostream& out) { context.report.print_json(out, command_name); });
 }
 } // namespace
 
@@ -199,18 +195,31 @@ Report run_loaded_command(const Command& command, dealii::ParameterHandler& prm,
   std::unique_ptr<StagedOutput> output;
   if (!output_directory.empty())
     output = std::make_unique<StagedOutput>(output_directory, communicator);
-
-  dealii::ConditionalOStream pcout(progress, root && show_progress);
-  CommandContext context(communicator, pcout, output ? output->staging_directory() : "", quiet,
-                         show_progress);
-  command.run(prm, context);
-
-  if (output)
+  const std::string staging = output ? output->staging_directory() : "";
+  try
   {
-    if (root)
-      write_results(context, prm, command.name);
-    output->commit();
+    dealii::ConditionalOStream pcout(progress, root && show_progress);
+    CommandContext context(communicator, pcout, staging, quiet, show_progress);
+    command.run(prm, context);
+    if (output)
+    {
+      // A result or chart that rank 0 could not write whole fails the run on every rank, and
+      // the staging folder goes with `output`: DIR gets all the results or none.
+      const fem::Failure failure = fem::catch_failure(
+          [&]()
+          {
+            if (root)
+              write_results(context, prm, command.name);
+            context.throw_write_failure();
+          });
+      fem::first_failure(communicator, failure).rethrow();
+      output->commit();
+    }
+    return std::move(context.report);
   }
-  return std::move(context.report);
+  catch (const IoError& error)
+  {
+    throw located(error, staging, output_directory);
+  }
 }
 } // namespace gearstiff::app

@@ -5,11 +5,13 @@
 //   gearstiff <command> --help  describes one; --print-parameters lists its parameters
 //
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
-// (names the method and why), 1 anything else. Errors go to stderr as one line.
+// (names the method and why), 1 anything else (an I/O error names the file and why: "no space
+// left on device"). Errors go to stderr as one line.
 #include "app/command.h"
 #include "app/invoke.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/io.h"
 #include "fem/mpi_start.h"
 
 #include <deal.II/base/exceptions.h>
@@ -182,6 +184,12 @@ int main(int argc, char** argv)
     if (root)
       std::cerr << "gearstiff: solver failure: " << one_line(e.what()) << std::endl;
     return 3;
+  }
+  catch (const gearstiff::IoError& e)
+  {
+    if (root)
+      std::cerr << "gearstiff: I/O error: " << one_line(e.what()) << std::endl;
+    return 1;
   }
   catch (const dealii::ExceptionBase& e)
   {

@@ -1,12 +1,14 @@
 #include "app/report.h"
 
 #include "app/command.h"
+#include "errors/io.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -361,18 +363,47 @@ void Report::write_table_csv(const ReportTable& table, std::ostream& out) const
   }
 }
 
+namespace
+{
+// TemporaryCsv files not written whole, by path: the reason (errors/io.h).
+std::mutex failed_temporaries_mutex;
+std::map<std::string, std::string> failed_temporaries;
+} // namespace
+
 TemporaryCsv::TemporaryCsv(const Report& report, const std::string& table_name)
     : file((std::filesystem::path(scratch_directory()) / (table_name + ".csv")).string())
 {
-  std::ofstream out(file);
-  for (const auto& table : report.tables())
-    if (table.name == table_name)
-      report.write_table_csv(table, out);
+  try
+  {
+    write_file(file,
+               [&](std::ostream& out)
+               {
+                 for (const auto& table : report.tables())
+                   if (table.name == table_name)
+                     report.write_table_csv(table, out);
+               });
+  }
+  catch (const IoError& e)
+  {
+    const std::lock_guard<std::mutex> lock(failed_temporaries_mutex);
+    failed_temporaries[file] = e.reason();
+  }
 }
 
 TemporaryCsv::~TemporaryCsv()
 {
+  {
+    const std::lock_guard<std::mutex> lock(failed_temporaries_mutex);
+    failed_temporaries.erase(file);
+  }
   std::error_code ignored; // a leftover temporary file is no reason to fail a command
   std::filesystem::remove(file, ignored);
+}
+
+std::string temporary_write_failure(const std::string& path)
+{
+  const std::lock_guard<std::mutex> lock(failed_temporaries_mutex);
+  const auto found = failed_temporaries.find(path);
+  return found == failed_temporaries.end() ? "" : found->second;
 }
 } // namespace gearstiff::app

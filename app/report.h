@@ -87,7 +87,9 @@ private:
 // The report's table `table_name` as a temporary CSV for a plot script (the report's CSV files
 // appear only after the command returns), removed when this goes out of scope: the plot step of
 // a command is `const TemporaryCsv csv(report, "table"); context.plot(script, {csv.path()}, ...);`.
-// By name: references into the report's tables do not survive a later add_table.
+// By name: references into the report's tables do not survive a later add_table. A write that
+// fails (a full scratch disk) does not throw here, on every rank that made one: the plot that
+// reads the file fails the command (temporary_write_failure), on the rank that draws.
 class TemporaryCsv
 {
 public:
@@ -100,6 +102,9 @@ public:
 private:
   std::string file;
 };
+
+// Why the TemporaryCsv at `path` could not be written whole; empty when it was (or is none).
+std::string temporary_write_failure(const std::string& path);
 
 // JSON string escaping and number formatting shared by every writer in app/.
 std::string json_escape(const std::string& text);

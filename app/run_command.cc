@@ -22,7 +22,6 @@
 
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <fstream>
 #include <sstream>
 
 namespace
@@ -241,12 +240,10 @@ void write_files(CommandContext& context, const stiffness::StiffnessSweepResult&
 {
   if (!(context.writes_files() && context.is_root()))
     return;
-  std::ofstream(
-      context.output_file("cai_calibrated.prm", "calibrated Cai curve for `gearstiff dynamics`"))
-      << dynamics_cai_input(fit.parameters);
-  std::ofstream(
-      context.output_file("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`"))
-      << dynamics_table_input(sweep);
+  context.write_output("cai_calibrated.prm", "calibrated Cai curve for `gearstiff dynamics`",
+                       [&](std::ostream& out) { out << dynamics_cai_input(fit.parameters); });
+  context.write_output("stiffness_table.prm", "FE k(x) table for `gearstiff dynamics`",
+                       [&](std::ostream& out) { out << dynamics_table_input(sweep); });
   const TemporaryCsv csv(context.report, "run_sweep");
   context.plot("plot_stiffness.py",
                {csv.path(), format_number(ansys::single_pair_stiffness / 1e6, 8),

@@ -21,7 +21,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <memory>
 
 namespace
@@ -244,14 +243,18 @@ void write_sweep_files(const StiffnessParameters& p, const kinematics::GearPairG
     // The built-in pair's table drives the published split-path gearbox (both meshes); an own
     // pair's drives a train of that pair alone, never the built-in gearbox (issue 41).
     const bool builtin = kinematics::is_split_path_pair(p.settings.scene.pair);
-    std::ofstream out(context.output_file(
+    context.write_output(
         "stiffness_table.prm",
         builtin ? "k(x) table for `gearstiff dynamics` (the split path's Mesh 1 and Mesh 2)"
-                : "`gearstiff dynamics` input: this pair with its k(x) table"));
-    out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
-        << " positions): x = roll position of the last pair to enter [base pitches], k [N/mm].\n"
-        << "# Use: gearstiff dynamics stiffness_table.prm\n"
-        << (builtin ? dynamics_table_input(sweep) : own_pair_dynamics_input(p, pair, sweep));
+                : "`gearstiff dynamics` input: this pair with its k(x) table",
+        [&](std::ostream& out)
+        {
+          out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
+              << " positions): x = roll position of the last pair to enter [base pitches], k "
+                 "[N/mm].\n"
+              << "# Use: gearstiff dynamics stiffness_table.prm\n"
+              << (builtin ? dynamics_table_input(sweep) : own_pair_dynamics_input(p, pair, sweep));
+        });
   }
   const TemporaryCsv csv(report, "stiffness_sweep");
   context.plot("plot_stiffness.py",

@@ -1,6 +1,8 @@
 // VTU/PVTU output of ElasticSystem: displacement, von Mises stress, material id, MPI subdomain
 // and analysis-specific nodal scalars.
+#include "errors/io.h"
 #include "fem/elastic_system.h"
+#include "fem/parallel.h"
 #include "fem/stress.h"
 
 #include <deal.II/base/utilities.h>
@@ -10,7 +12,6 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
-#include <fstream>
 
 namespace gearstiff::fem
 {
@@ -109,15 +110,18 @@ std::vector<std::string> ElasticSystem<dim>::write_vtu(const Vector<double>& sol
   std::vector<std::string> names;
   for (unsigned int r = 0; r < n_ranks; ++r)
     names.push_back(base + "_" + Utilities::int_to_string(r, 4) + ".vtu");
-  {
-    std::ofstream out(directory + "/" + names[rank]);
-    data_out.write_vtu(out);
-  }
-  if (rank == 0)
-  {
-    std::ofstream out(directory + "/" + base + ".pvtu");
-    data_out.write_pvtu_record(out, names);
-  }
+  // Each rank writes its piece; a rank whose write fails (a full disk) makes every rank throw the
+  // same IoError, so none is left waiting in the next collective call.
+  const Failure failure = catch_failure(
+      [&]()
+      {
+        write_file(directory + "/" + names[rank],
+                   [&](std::ostream& out) { data_out.write_vtu(out); });
+        if (rank == 0)
+          write_file(directory + "/" + base + ".pvtu",
+                     [&](std::ostream& out) { data_out.write_pvtu_record(out, names); });
+      });
+  first_failure(mpi_communicator, failure).rethrow();
   names.push_back(base + ".pvtu");
   scalar_dof_handler.clear();
   return names;

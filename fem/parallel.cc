@@ -1,6 +1,7 @@
 #include "fem/parallel.h"
 
 #include "errors/errors.h"
+#include "errors/io.h"
 
 #include <algorithm>
 #include <boost/serialization/string.hpp>
@@ -18,6 +19,8 @@ void Failure::rethrow(const std::string& context) const
     throw InputError(name, context + reason);
   case solver:
     throw SolverFailure(name, context + reason);
+  case io:
+    throw IoError(name, context + reason, place);
   case stopped:
     throw Stopped();
   default:
@@ -34,19 +37,23 @@ Failure catch_failure(const std::function<void()>& work)
   }
   catch (const InputError& e)
   {
-    failure = {Failure::input, e.parameter(), e.reason()};
+    failure = {Failure::input, e.parameter(), e.reason(), ""};
   }
   catch (const SolverFailure& e)
   {
-    failure = {Failure::solver, e.method(), e.reason()};
+    failure = {Failure::solver, e.method(), e.reason(), ""};
+  }
+  catch (const IoError& e)
+  {
+    failure = {Failure::io, e.path(), e.reason(), e.place()};
   }
   catch (const Stopped& e)
   {
-    failure = {Failure::stopped, "", e.what()};
+    failure = {Failure::stopped, "", e.what(), ""};
   }
   catch (const std::exception& e)
   {
-    failure = {Failure::other, "", e.what()};
+    failure = {Failure::other, "", e.what(), ""};
   }
   return failure;
 }

@@ -35,14 +35,16 @@ struct Failure
   enum Kind : int
   {
     none = 0,
-    input = 1,  // InputError(parameter, reason)
-    solver = 2, // SolverFailure(method, reason)
-    other = 3,  // any other std::exception (reason = what())
-    stopped = 4 // Stopped: another rank failed; never a failure of its own, never sent
+    input = 1,   // InputError(parameter, reason)
+    solver = 2,  // SolverFailure(method, reason)
+    other = 3,   // any other std::exception (reason = what())
+    stopped = 4, // Stopped: another rank failed; never a failure of its own, never sent
+    io = 5       // IoError(path, reason, place) (errors/io.h): a file not written whole
   };
   int kind = none;
-  std::string name;   // the parameter (input) or the method (solver); empty otherwise
+  std::string name;   // the parameter (input), the method (solver) or the path (io); else empty
   std::string reason; // why
+  std::string place;  // io: where the path lives (IoError::place); empty otherwise
 
   // A failure of this rank's own work (not a stop for another rank's failure).
   bool failed() const { return kind != none && kind != stopped; }
@@ -54,7 +56,7 @@ struct Failure
   template <class Archive>
   void serialize(Archive& archive, const unsigned int /*version*/)
   {
-    archive& kind& name& reason;
+    archive& kind& name& reason& place;
   }
 };
 
@@ -66,8 +68,8 @@ public:
   Stopped() : std::runtime_error("stopped because another MPI rank failed") {}
 };
 
-// Runs `work`, catching InputError, SolverFailure, Stopped and other std::exceptions into a
-// Failure.
+// Runs `work`, catching InputError, SolverFailure, IoError, Stopped and other std::exceptions
+// into a Failure.
 Failure catch_failure(const std::function<void()>& work);
 
 // Collective over `communicator`: the failure with the smallest `order` over all ranks (ties:

@@ -1,6 +1,7 @@
 #include "geometry/abaqus_deck.h"
 
 #include "errors/errors.h"
+#include "errors/io.h"
 
 #include <algorithm>
 #include <cctype>
@@ -662,18 +663,17 @@ void write_abaqus_deck(const SceneInfo& info, const AbaqusDeckSpec& spec,
   const DeckLayout layout = deck_layout(mesh, spec);
   if (mesh.dimension == 2 && !(spec.slice_thickness > 0.))
     throw InputError("Abaqus deck/thickness", "must be positive for a 2D scene");
-  std::ofstream out(inp_file);
-  if (!out)
-    throw InputError("Abaqus deck", "cannot write '" + inp_file + "'");
-  out << std::setprecision(12);
-  out << "*HEADING\n" << spec.title << "\n";
-  out << "** Written by gearstiff (geometry/abaqus_deck.h). Units: m, N, Pa.\n";
-  write_nodes(out, mesh, layout, spec.slice_thickness);
-  write_elements(out, mesh, info, layout);
-  write_groups(out, mesh, info, spec, layout);
-  write_model(out, mesh, info, spec, layout);
-  write_steps(out, info, spec, layout);
-  if (!out)
-    throw InputError("Abaqus deck", "writing '" + inp_file + "' failed");
+  write_file(inp_file,
+             [&](std::ostream& out)
+             {
+               out << std::setprecision(12);
+               out << "*HEADING\n" << spec.title << "\n";
+               out << "** Written by gearstiff (geometry/abaqus_deck.h). Units: m, N, Pa.\n";
+               write_nodes(out, mesh, layout, spec.slice_thickness);
+               write_elements(out, mesh, info, layout);
+               write_groups(out, mesh, info, spec, layout);
+               write_model(out, mesh, info, spec, layout);
+               write_steps(out, info, spec, layout);
+             });
 }
 } // namespace gearstiff::geometry

@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "errors/io.h"
 #include "errors/limits.h"
 
 #include <Eigen/Geometry>
@@ -1177,9 +1178,17 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
   gmsh::option::setNumber("Mesh.Binary", 0);
   gmsh::option::setNumber("Mesh.SaveAll", 0);
-  gmsh::write(options.file);
-  if (!std::filesystem::is_regular_file(options.file))
-    throw InputError("mesh file", "cannot write '" + options.file + "'");
+  try
+  {
+    gmsh::write(options.file);
+  }
+  catch (const std::string& message)
+  {
+    throw IoError(options.file, message);
+  }
+  // gmsh does not check its writes: a full file system or the file-size limit leaves a truncated
+  // mesh that the reader would call bad input. A whole .msh ends with an "$End..." line.
+  check_complete_file(options.file, "$End");
   statistics.time_writing = seconds_since(start);
   return statistics;
 }

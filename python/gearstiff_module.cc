@@ -9,7 +9,8 @@
 // dict becomes the `--set section/key=value` overrides of the command line, a str/path is the
 // parameter file, and the result is built from the same Report that `--json` prints. Errors are
 // the command line's: gearstiff.InputError (a ValueError) and gearstiff.SolverFailure (a
-// RuntimeError) with the message the command line prints after "gearstiff: error: ".
+// RuntimeError) with the message the command line prints after "gearstiff: error: "; a file not
+// written whole (a full disk) is an OSError with the command line's "I/O error" message.
 //
 // MPI: the module initialises MPI (and PETSc) on import unless it is running already, and
 // finalises what it started at interpreter exit. Under `mpirun -np N python3 script.py` every
@@ -479,7 +480,7 @@ std::string python_name(const std::string& command) // "gear-pair" → "gear_pai
   return name;
 }
 // gearstiff.InputError and gearstiff.SolverFailure, raised for the C++ exceptions of the same
-// names; deal.II's exceptions as RuntimeError.
+// names; an IoError as OSError; deal.II's exceptions as RuntimeError.
 void register_exceptions(py::module_& m)
 {
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
@@ -505,6 +506,11 @@ void register_exceptions(py::module_& m)
         catch (const SolverFailure& e)
         {
           raise_with(solver_failure_type, one_line(e.what()), "method", e.method());
+        }
+        catch (const IoError& e)
+        {
+          // A file not written whole (a full disk, the file-size limit): Python's OSError.
+          PyErr_SetString(PyExc_OSError, one_line(e.what()).c_str());
         }
         catch (const dealii::ExceptionBase& e)
         {

@@ -13,6 +13,7 @@
 #include "dynamics/stiffness_file.h"
 #include "errors/errors.h"
 #include "single_pair_train.h"
+#include "tests/dynamics/work_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -278,10 +279,9 @@ namespace
 std::string write_faults_summary(unsigned int period, double stated, bool broken,
                                  double broken_k = 0.)
 {
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("gearstiff-test-faults-" + std::to_string(period) + "-" +
-                             std::to_string(stated) + (broken ? "-b" : "") + ".json"))
-                               .string();
+  const std::string path =
+      dynamics_work_file("faults-" + std::to_string(period) + "-" + std::to_string(stated) +
+                         (broken ? "-b" : "") + ".json");
   std::ofstream out(path);
   out << "{\n  \"command\": \"faults\",\n  \"text\": {},\n  \"values\": {\n";
   for (const auto& [key, value] :

@@ -5,6 +5,7 @@
 #include "dynamics/stiffness_file.h"
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
+#include "tests/dynamics/work_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,10 +22,8 @@ namespace
 // base pitches starting at 0.3 (so the positions wrap past 1), k = 400 + 100·cos(2πx) N/µm.
 std::string write_summary(unsigned int n, double span, int wheel_teeth = 10)
 {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("gearstiff-test-summary-" + std::to_string(n) +
-                                                 "-" + std::to_string(wheel_teeth) + ".json"))
-          .string();
+  const std::string path = dynamics_work_file("summary-" + std::to_string(n) + "-" +
+                                              std::to_string(wheel_teeth) + ".json");
   std::ofstream out(path);
   out.precision(17);
   out << "{\n  \"command\": \"stiffness\",\n  \"text\": {},\n  \"values\": {\n"

@@ -9,7 +9,8 @@ Run by ctest (label python) with PYTHONPATH=build/python and GEARSTIFF_EXECUTABL
   '%.12g' of the module's double must be the CLI's text. Measured wall times are the only values
   that differ between two runs; they are named below and compared by unit only.
 - Bad input raises gearstiff.InputError with the message the command line prints after
-  "gearstiff: error: " (the dict is applied through the same `--set` code).
+  "gearstiff: error: " (the dict is applied through the same `--set` code); a file not written
+  whole raises OSError (issue 49).
 """
 import json
 import math
@@ -324,6 +325,27 @@ def test_solver_failure_is_raised():
     assert "gearstiff: solver failure: " + str(raised.value) == err.strip().splitlines()[-1]
     assert raised.value.method == "RK4"
     assert isinstance(raised.value, RuntimeError)
+
+
+def test_failed_write_is_os_error(tmp_path):
+    # Issue 49: a chart beyond the file-size limit (the case of tests/cli/faults.py: charts of
+    # 68 kB and more, files within 48.4 kB, measured 2026-12-01) raises OSError with the command
+    # line's message after "gearstiff: I/O error: ", and nothing is left in -o. Python ignores
+    # SIGXFSZ itself, so the write fails with EFBIG here as it does in `gearstiff`.
+    import resource
+    out = tmp_path / "out"
+    settings = {"Simulation": {"output interval": 2000}}
+    limit = resource.getrlimit(resource.RLIMIT_FSIZE)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (56 * 1024, limit[1]))
+    try:
+        with pytest.raises(OSError) as raised:
+            gearstiff.dynamics(settings, output_directory=out)
+    finally:
+        resource.setrlimit(resource.RLIMIT_FSIZE, limit)
+    assert str(raised.value).startswith(f"-o {out}: cannot write 'dynamics_"), raised.value
+    assert str(raised.value).endswith("': file size limit reached (ulimit -f: 56 kB per file)")
+    assert not out.exists()
+    assert [p for p in os.listdir(tmp_path) if p.startswith(".gearstiff-staging")] == []
 
 
 # ------------------------------------------------------------------ print_parameters
