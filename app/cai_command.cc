@@ -165,6 +165,7 @@ void write_files(CommandContext& context, const dynamics::CaiFit& fit, std::size
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   const StiffnessParameters p = parse_stiffness_parameters(prm);
+  refuse_load_lists(p, "cai");
   const bool fit_shape = parse_fit_shape(prm);
   check_sweep_for_fit(p, fit_shape);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
@@ -181,6 +182,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       dynamics::cai_published_parameters(ansys::single_pair_stiffness);
 
   report_fit(report, p, pair, fit, fit_shape, samples.size(), sweep.positions.size());
+  report_pinion_torque(report, p);
   report_means(report, sweep, fit.parameters, paper, contact_ratio);
   add_cai_tables(report, samples, fit.parameters, paper, contact_ratio);
   write_files(context, fit, samples.size());

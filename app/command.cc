@@ -1,6 +1,7 @@
 #include "app/command.h"
 
 #include "errors/errors.h"
+#include "errors/file_names.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -135,6 +136,7 @@ void install_signal_cleanup()
 StagedOutput::StagedOutput(const std::string& directory_, MPI_Comm communicator)
     : directory(directory_), communicator(communicator)
 {
+  check_file_name(directory, "-o"); // every rank holds the same name: all throw alike
   int rank = 0;
   MPI_Comm_rank(communicator, &rank);
   root = rank == 0;

@@ -133,6 +133,7 @@ void report_summary(Report& report, const stiffness::FaultSweepResult& r, stiffn
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   StiffnessParameters p = parse_stiffness_parameters(prm);
+  refuse_load_lists(p, "faults");
   const stiffness::FaultSweepSpec spec = faulty_tooth(p);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const auto progress = [&context](const std::string& text) { context.progress("faults", text); };
@@ -151,6 +152,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     context.report.add_text("energy method",
                             "not available: " + r.energy_failure + " (its columns hold 0)");
   add_pair_identity(context.report, pair);
+  report_pinion_torque(context.report, p);
   report_summary(context.report, r, spec.mesh);
   report_rows(context.report, r);
 }

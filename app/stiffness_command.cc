@@ -111,9 +111,18 @@ void report_micro_geometry(const StiffnessParameters& p,
 void report_model(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
                   const kinematics::IsoStiffness& iso, Report& report)
 {
+  // With Stiffness/torques the sweep runs the list, not Gear pair scene/pinion torque.
+  std::string torques = format_number(p.settings.pinion_torque, 4) + " N·m";
+  if (!p.settings.torques.empty())
+  {
+    torques.clear();
+    for (const double t : p.settings.torques)
+      torques += (torques.empty() ? "" : ", ") + format_number(t, 6);
+    torques += " N·m (Stiffness/torques; the sweep table at the first)";
+  }
   report.add_text("load case",
-                  "T1 = " + format_number(p.settings.pinion_torque, 4) +
-                      " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
+                  "T1 = " + torques +
+                      " on the pinion (rigid hub, torque-controlled, free only to rotate), "
                       "wheel bore fixed, friction μ = " +
                       format_number(p.settings.contact.friction_coefficient, 4) +
                       "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");

@@ -140,6 +140,7 @@ ParameterNames stiffness_parameter_names()
   names[stiffness::stiffness_parameter::torques] = "Stiffness/torques";
   names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
   names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
+  names[stiffness::stiffness_parameter::start] = "Stiffness/sweep start";
   names[stiffness::stiffness_parameter::sweep_mesh] = "Stiffness/sweep mesh";
   names[geometry::scene_field::swept_positions] = "Stiffness/sweep mesh";
   return names;
@@ -210,6 +211,58 @@ void parse_modification_stage(ParameterHandler& prm, const std::string& variants
   }
   if (!p.variants.empty() && p.mode != StiffnessMode::sweep)
     throw InputError("Stiffness/variants", "applies to mode sweep only");
+  // One position solves at 'Gear pair scene/pinion torque': a list there was ignored.
+  if (!p.settings.torques.empty() && p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/torques", "applies to mode sweep only (one position runs at "
+                                          "Gear pair scene/pinion torque)");
+}
+
+// The work of a sweep (s, on the ranks of MPI_COMM_WORLD), estimated from what it will solve
+// before the positions are allocated, and refused above limits::max_run_seconds naming the
+// parameter that pushed it there (2·10⁹ positions were allocated; a 3D sweep of 5000
+// positions announced 35 h at 25.5 s a position; 10⁵ torques and 10³ variants were not
+// counted). Seconds a position, measured on one rank (bench/contact_speed.md): 2D Q2 per
+// position 18.7 s / 32 = 0.58 s, once 0.07 s (0.08–0.1 s measured 2026-11-26, 128 positions);
+// 3D Q1 8 layers per position 373.0 s / 16 = 23.3 s, once 228.5 s / 16 = 14.3 s (32 positions
+// on 2 ranks, 2026-12-01). Another degree scales them by the unknowns, (p / p_measured)^dim,
+// and more layers in 3D by layers / 8: a lower bound, as the factorization grows faster than
+// the unknowns. Each further torque of a list costs at least 0.15 of a position (8 torques ×
+// 32 positions 21.9 s against 10.5 s, once), each variant at least half the base sweep (15.7 s
+// against 10.5 s). So this is a lower bound: finer meshes take longer.
+double check_sweep_work(const StiffnessParameters& p)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  const bool once = p.sweep.mesh == stiffness::SweepMesh::once;
+  const unsigned int dim = s.scene.mesh.dimension;
+  const double measured_degree = dim == 3 ? 1. : 2.;
+  double per_position = dim == 3 ? (once ? 228.5 / 16. : 373.0 / 16.) : (once ? 0.07 : 18.7 / 32.);
+  per_position *= std::pow(s.elasticity.degree / measured_degree, double(dim));
+  if (dim == 3)
+    per_position *= std::max(1., s.scene.mesh.layers / 8.);
+  const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const double base = std::ceil(double(p.sweep.positions) / ranks) * per_position;
+  const double torque_factor = 1. + 0.15 * (s.torques.empty() ? 0. : double(s.torques.size()) - 1.);
+  const double variant_factor = 1. + 0.5 * double(p.variants.size());
+  const double seconds = base * torque_factor * variant_factor;
+  if (seconds <= limits::max_run_seconds)
+    return seconds;
+  const std::string parameter = base > limits::max_run_seconds    ? "Stiffness/sweep positions"
+                                : torque_factor >= variant_factor ? "Stiffness/torques"
+                                                                  : "Stiffness/variants";
+  throw InputError(
+      parameter, std::to_string(p.sweep.positions) + " positions" +
+                     (s.torques.size() > 1 ? " × " + std::to_string(s.torques.size()) + " torques"
+                                           : std::string()) +
+                     (p.variants.empty()
+                          ? std::string()
+                          : " × " + std::to_string(p.variants.size() + 1) + " modification sets") +
+                     " would take at least " + format_number(seconds / 3600., 3) + " h on " +
+                     std::to_string(ranks) + " rank(s) at " + format_number(per_position, 3) +
+                     " s a position (" + std::to_string(dim) + "D, Q" +
+                     std::to_string(s.elasticity.degree) + (once ? ", once" : ", per position") +
+                     "; limit " + format_number(limits::max_run_seconds / 3600., 2) +
+                     " h, docs/limits.md): fewer positions, torques or variants, or more MPI "
+                     "ranks");
 }
 
 // The checks the analysis makes before it meshes, run at parse time: the library's own (one
@@ -224,25 +277,22 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
     throw InputError(geometry::scene_field::young_modulus, "must be positive");
   if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
     throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
+  // `once` rolls one factorization: the direct solver's Schur complement. The contact module
+  // refused it naming Contact/Iteration solves whatever the user had set.
+  if (p.mode == StiffnessMode::sweep && p.sweep.mesh == stiffness::SweepMesh::once)
+  {
+    if (s.linear_solver.method != fem::LinearSolverMethod::direct_mumps)
+      throw InputError(stiffness::stiffness_parameter::sweep_mesh,
+                       "once needs the direct solver (Linear solver/Method = direct; an "
+                       "iterative one sweeps per position)");
+    if (s.contact.iteration_solves == contact::IterationSolves::full_resolve)
+      throw InputError(stiffness::stiffness_parameter::sweep_mesh,
+                       "once needs the Schur complement (Contact/Iteration solves = auto or "
+                       "Schur complement, not full re-solve)");
+  }
   if (p.mode == StiffnessMode::sweep)
   {
-    // The work before the positions are allocated: a 32-position sweep of the default scene
-    // takes 18.7 s on one rank per position (bench/contact_speed.md), 0.58 s a position, and
-    // a rolling one (`once`) at least 0.07 s a position (0.08–0.1 s measured 2026-11-26,
-    // 128 positions); finer meshes take longer, so this is a lower bound. Refused above
-    // limits::max_run_seconds (2·10⁹ positions were allocated before).
-    const double seconds_per_position =
-        p.sweep.mesh == stiffness::SweepMesh::once ? 0.07 : 18.7 / 32.;
-    const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    const double seconds = std::ceil(double(p.sweep.positions) / ranks) * seconds_per_position;
-    if (seconds > limits::max_run_seconds)
-      throw InputError(stiffness::stiffness_parameter::positions,
-                       std::to_string(p.sweep.positions) + " positions would take at least " +
-                           format_number(seconds / 3600., 3) + " h on " + std::to_string(ranks) +
-                           " rank(s) at " + format_number(seconds_per_position, 2) +
-                           " s a position (limit " +
-                           format_number(limits::max_run_seconds / 3600., 2) +
-                           " h, docs/limits.md): use fewer positions or more MPI ranks");
+    p.estimated_seconds = check_sweep_work(p);
     stiffness::sweep_positions(pair, p.sweep);
   }
   // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
@@ -454,7 +504,8 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
   const std::string stem = scratch_stem(context.mpi_communicator, label, false);
   const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
   context.pcout << label << ": " << p.sweep.positions << " positions over " << p.sweep.base_pitches
-                << " base pitch(es) on " << ranks << " rank(s)" << std::endl;
+                << " base pitch(es) on " << ranks << " rank(s), estimated at least "
+                << format_number(p.estimated_seconds, 2) << " s in all" << std::endl;
   // From the rank that solved the position (each takes its own, fem::distribute_items).
   const auto progress = context.progress_counter(label, double(p.sweep.positions) / ranks);
   return with_parameter_names(
@@ -467,6 +518,26 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
                    : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep,
                                                    stem, progress);
       });
+}
+
+void refuse_load_lists(const StiffnessParameters& p, const std::string& command)
+{
+  if (!p.settings.torques.empty())
+    throw InputError("Stiffness/torques",
+                     "`" + command +
+                         "` runs at one load, Gear pair scene/pinion torque (the list is for "
+                         "`stiffness` in mode sweep)");
+  if (!p.variants.empty())
+    throw InputError("Stiffness/variants", "`" + command +
+                                               "` runs the modifications of Gear pair/Pinion "
+                                               "and Wheel alone (the list is for `stiffness` "
+                                               "in mode sweep)");
+}
+
+void report_pinion_torque(Report& report, const StiffnessParameters& p)
+{
+  report.add_value("pinion_torque", p.settings.pinion_torque, "N·m",
+                   "T1 on the pinion (Gear pair scene/pinion torque), the load of every solve");
 }
 
 void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,

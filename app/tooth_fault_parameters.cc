@@ -202,11 +202,14 @@ void add_tooth_faults(const ModificationText& text, bool wheel, unsigned int dim
     faults.push_back(spall_of(text, wheel, depth, dimension));
   if (const double depth = length_of(text, "crack depth", wheel); depth > 0.)
     faults.push_back(crack_of(text, wheel, depth, dimension));
-  const int index = static_cast<int>(value_of(text, "faulty tooth", wheel, true));
-  if (std::abs(index) > geometry::max_pair_index)
+  // Range-checked as a double, before the cast: 1e20 or 3e9 overflowed an int past the check.
+  const double tooth = value_of(text, "faulty tooth", wheel, true);
+  if (std::abs(tooth) > geometry::max_pair_index)
     throw InputError(path_of(wheel, "faulty tooth"),
-                     "must lie between -" + std::to_string(geometry::max_pair_index) + " and " +
+                     "'" + shortened(text.at("faulty tooth")) + "' must lie between -" +
+                         std::to_string(geometry::max_pair_index) + " and " +
                          std::to_string(geometry::max_pair_index));
+  const int index = static_cast<int>(tooth);
   if (faults.empty())
     return; // no fault: every tooth stays nominal
   auto& list = modifications.by_tooth[index];
