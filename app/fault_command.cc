@@ -134,6 +134,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   StiffnessParameters p = parse_stiffness_parameters(prm);
   refuse_load_lists(p, "faults");
+  // The sweep's checks (its work among them) run in mode sweep alone: another mode was ignored.
+  if (p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/mode", "`faults` sweeps the positions where the faulty tooth "
+                                       "meshes: mode = sweep");
   const stiffness::FaultSweepSpec spec = faulty_tooth(p);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const auto progress = [&context](const std::string& text) { context.progress("faults", text); };
