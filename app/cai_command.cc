@@ -182,7 +182,6 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       dynamics::cai_published_parameters(ansys::single_pair_stiffness);
 
   report_fit(report, p, pair, fit, fit_shape, samples.size(), sweep.positions.size());
-  report_pinion_torque(report, p);
   report_means(report, sweep, fit.parameters, paper, contact_ratio);
   add_cai_tables(report, samples, fit.parameters, paper, contact_ratio);
   write_files(context, fit, samples.size());

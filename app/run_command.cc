@@ -253,7 +253,6 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
   report_geometry(report, pair, iso);
-  report_pinion_torque(report, p);
   const PairPositions positions = solve_pair_positions(p, context, iso);
 
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "sweep");
