@@ -285,19 +285,13 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
     throw InputError(geometry::scene_field::young_modulus, "must be positive");
   if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
     throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
-  // `once` rolls one factorization: the direct solver's Schur complement. The contact module
-  // refused it naming Contact/Iteration solves whatever the user had set.
-  if (p.mode == StiffnessMode::sweep && p.sweep.mesh == stiffness::SweepMesh::once)
-  {
-    if (s.linear_solver.method != fem::LinearSolverMethod::direct_mumps)
-      throw InputError(stiffness::stiffness_parameter::sweep_mesh,
-                       "once needs the direct solver (Linear solver/Method = direct; an "
-                       "iterative one sweeps per position)");
-    if (s.contact.iteration_solves == contact::IterationSolves::full_resolve)
-      throw InputError(stiffness::stiffness_parameter::sweep_mesh,
-                       "once needs the Schur complement (Contact/Iteration solves = auto or "
-                       "Schur complement, not full re-solve)");
-  }
+  // `once` rolls one factorization: the direct solver's Schur complement. With an iterative
+  // solver the contact module refused it naming Contact/Iteration solves, which the user had
+  // not set; full re-solve is refused there under its own name.
+  if (p.mode == StiffnessMode::sweep && p.sweep.mesh == stiffness::SweepMesh::once &&
+      s.linear_solver.method != fem::LinearSolverMethod::direct_mumps)
+    throw InputError("Linear solver/Method", "Stiffness/sweep mesh = once needs the direct "
+                                             "solver (an iterative one sweeps per position)");
   if (p.mode == StiffnessMode::sweep)
   {
     p.estimated_seconds = check_sweep_work(p);
