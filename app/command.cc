@@ -200,9 +200,11 @@ void StagedOutput::commit()
   std::error_code error;
   if (!fs::exists(directory, error))
   {
-    // A new folder appears complete, in one rename.
-    fs::create_directories(fs::absolute(directory).lexically_normal().parent_path(), error);
-    fs::rename(staging, directory);
+    // A new folder appears complete, in one rename; to the normalised path, whose parents were
+    // created ("a/../out" with no folder a failed in the rename, exit 1: cli.fuzz, issue 42).
+    const fs::path target = fs::absolute(directory).lexically_normal();
+    fs::create_directories(target.parent_path(), error);
+    fs::rename(staging, target);
   }
   else
   {
