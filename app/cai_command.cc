@@ -166,6 +166,7 @@ void write_files(CommandContext& context, const dynamics::CaiFit& fit, std::size
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   const StiffnessParameters p = parse_stiffness_parameters(prm);
+  refuse_load_lists(p, "cai");
   const bool fit_shape = parse_fit_shape(prm);
   check_sweep_for_fit(p, fit_shape);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);

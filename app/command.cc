@@ -1,6 +1,7 @@
 #include "app/command.h"
 
 #include "errors/errors.h"
+#include "errors/file_names.h"
 
 #include <algorithm>
 #include <array>
@@ -163,6 +164,7 @@ IoError located(const IoError& error, const std::string& staging_directory,
 StagedOutput::StagedOutput(const std::string& directory_, MPI_Comm communicator)
     : directory(directory_), communicator(communicator)
 {
+  check_file_name(directory, "-o"); // every rank holds the same name: all throw alike
   int rank = 0;
   MPI_Comm_rank(communicator, &rank);
   root = rank == 0;
@@ -236,9 +238,11 @@ void StagedOutput::commit()
   std::error_code error;
   if (!fs::exists(directory, error))
   {
-    // A new folder appears complete, in one rename.
-    fs::create_directories(fs::absolute(directory).lexically_normal().parent_path(), error);
-    fs::rename(staging, directory);
+    // A new folder appears complete, in one rename; to the normalised path, whose parents were
+    // created ("a/../out" with no folder a failed in the rename, exit 1: cli.fuzz, issue 42).
+    const fs::path target = fs::absolute(directory).lexically_normal();
+    fs::create_directories(target.parent_path(), error);
+    fs::rename(staging, target);
   }
   else
   {

@@ -133,6 +133,11 @@ void report_summary(Report& report, const stiffness::FaultSweepResult& r, stiffn
 void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   StiffnessParameters p = parse_stiffness_parameters(prm);
+  refuse_load_lists(p, "faults");
+  // The sweep's checks (its work among them) run in mode sweep alone: another mode was ignored.
+  if (p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/mode", "`faults` sweeps the positions where the faulty tooth "
+                                       "meshes: mode = sweep");
   const stiffness::FaultSweepSpec spec = faulty_tooth(p);
   report_input_sizes(context.report, p);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
@@ -152,6 +157,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     context.report.add_text("energy method",
                             "not available: " + r.energy_failure + " (its columns hold 0)");
   add_pair_identity(context.report, pair);
+  report_pinion_torque(context.report, p);
   report_summary(context.report, r, spec.mesh);
   report_rows(context.report, r);
 }

@@ -19,25 +19,26 @@ namespace
 using dealii::ParameterHandler;
 using NamedValues = std::map<std::string, std::vector<double>>;
 
-// parse_named_numbers (any sign: the model names the parameter of a negative value) as a map, a
-// name given twice refused.
+// parse_named_numbers (any sign: the model names the parameter of a negative value; a name
+// given twice refused) as a map.
 NamedValues named_values(const std::string& text, unsigned int count, const std::string& parameter,
                          const std::string& units)
 {
   NamedValues values;
   for (auto& [name, v] : parse_named_numbers(text, count, parameter, units, NumberSign::any))
-    if (!values.emplace(name, v).second)
-      throw InputError(parameter, "entry '" + name + "' is given twice");
+    values.emplace(name, v);
   return values;
 }
 
+// The member `name`; InputError naming `parameter`, the list that named it, when there is none.
 const kinematics::TrainMember& member(const kinematics::GearTrainSpec& spec,
-                                      const std::string& name)
+                                      const std::string& name,
+                                      const std::string& parameter = "Train/gears")
 {
   for (const kinematics::TrainMember& m : spec.members)
     if (m.name == name)
       return m;
-  throw InputError("Train/gears", "no member '" + name + "'");
+  throw InputError(parameter, "no member '" + name + "' (Train/gears, Train/carriers)");
 }
 
 // The lateral entries of the Train subsection, read and split into their lists.
@@ -110,17 +111,25 @@ const kinematics::TrainMember& find_stage_members(const kinematics::GearTrainSpe
 void check_member_lists(const kinematics::GearTrainSpec& spec, const LateralEntries& e,
                         const LateralParameters& p)
 {
-  for (const auto* list : {&e.bearings, &e.dampings, &e.diameters, &e.radii})
+  for (const auto& [list, parameter] :
+       {std::pair{&e.bearings, "Train/bearing stiffness"},
+        std::pair{&e.dampings, "Train/bearing damping"}, std::pair{&e.radii, "Train/carrier radii"},
+        std::pair{&e.diameters, "Train/base diameters"}})
     for (const auto& [name, v] : *list)
     {
-      member(spec, name); // names a member
+      member(spec, name, parameter); // names a member
       if (v[0] < 0.)
-        throw InputError(list == &e.bearings   ? "Train/bearing stiffness"
-                         : list == &e.dampings ? "Train/bearing damping"
-                         : list == &e.radii    ? "Train/carrier radii"
-                                               : "Train/base diameters",
-                         "'" + name + "' must not be negative");
+        throw InputError(parameter, "'" + name + "' must not be negative");
     }
+  // Entries of the planet alone: another name was ignored.
+  for (const auto& [list, parameter] : {std::pair{&e.pins, "Train/planet pin stiffness"},
+                                        std::pair{&e.angles, "Train/planet angles"}})
+    for (const auto& [name, v] : *list)
+      if (name != p.planet)
+        throw InputError(parameter, "'" + name + "' is not the planet member '" + p.planet + "'");
+  if (e.radii.size() > 1 || (e.radii.size() == 1 && !e.radii.count(p.carrier)))
+    throw InputError("Train/carrier radii",
+                     "names the carrier '" + p.carrier + "' alone (one stage)");
   auto central = [&](const std::string& name)
   { return name == p.sun || name == p.ring || name == p.carrier; };
   for (const auto& [name, c] : e.suspensions)
@@ -189,12 +198,13 @@ double carrier_radius(const kinematics::GearTrainSpec& spec, const LateralEntrie
 unsigned int pin_error_copy(const std::string& name, const std::string& planet, unsigned int n)
 {
   const std::string copy = name.rfind(planet + "#", 0) == 0 ? name.substr(planet.size() + 1) : name;
-  unsigned int k = 0;
+  unsigned long k = 0;
   try
   {
     std::size_t used = 0;
-    k = static_cast<unsigned int>(std::stoul(copy, &used));
-    if (used != copy.size())
+    // Compared with n as read, not after a cast: 4294967297 cast to unsigned int was copy 1.
+    k = std::stoul(copy, &used);
+    if (used != copy.size() || copy.find_first_not_of("0123456789") != std::string::npos)
       k = 0;
   }
   catch (const std::exception&)
@@ -204,7 +214,7 @@ unsigned int pin_error_copy(const std::string& name, const std::string& planet, 
   if (k < 1 || k > n)
     throw InputError("Train/planet pin errors",
                      "'" + name + "' is not a planet copy 1.." + std::to_string(n));
-  return k;
+  return static_cast<unsigned int>(k);
 }
 
 void read_planet_layout(const LateralEntries& e, const kinematics::TrainMember& planet,
@@ -226,9 +236,15 @@ void read_planet_layout(const LateralEntries& e, const kinematics::TrainMember& 
     return;
   stage.pin_error_tangential.assign(n, 0.);
   stage.pin_error_radial.assign(n, 0.);
+  std::map<unsigned int, std::string> spelled; // copy → the entry that named it
   for (const auto& [name, v] : e.errors)
   {
     const unsigned int k = pin_error_copy(name, planet.name, n);
+    // "p#2" and "2" are one copy: two entries for it would keep one silently.
+    if (const auto [at, added] = spelled.emplace(k, name); !added)
+      throw InputError("Train/planet pin errors", "'" + at->second + "' and '" + name +
+                                                      "' name the same planet copy " +
+                                                      std::to_string(k));
     stage.pin_error_tangential[k - 1] = v[0] * 1e-6;
     stage.pin_error_radial[k - 1] = v[1] * 1e-6;
     const double size = std::hypot(v[0], v[1]) * 1e-6;
@@ -239,6 +255,28 @@ void read_planet_layout(const LateralEntries& e, const kinematics::TrainMember& 
                                                       format_number(backlash * 1e6, 4) +
                                                       " µm: the planet could not be assembled");
   }
+}
+
+// The pin circle and the backlash against the stage's gears. A planet's centre lies between
+// the sun's and the ring's base circles (its meshes' centre distances exceed the base radii):
+// a pin circle inside the sun (1 mm) gave modes, one beyond the ring (1 km) failed later naming
+// Simulation/time step. (Lin & Parker's example: 38.7 < 88.4 < 137.5 mm.) A backlash of a base
+// pitch or more leaves no tooth in the gap (1e12 µm was accepted).
+void check_stage_sizes(const dynamics::LateralStage& stage, const kinematics::TrainMember& planet,
+                       double backlash)
+{
+  const double r_c = stage.carrier.radius;
+  if (!(r_c > stage.sun.radius && r_c < stage.ring.radius))
+    throw InputError("Train/carrier radii",
+                     "the pin circle " + format_mm(r_c) +
+                         " must lie between the base radii of sun and ring (" +
+                         format_mm(stage.sun.radius) + " and " + format_mm(stage.ring.radius) +
+                         "): the planets sit between them");
+  const double base_pitch = 2. * M_PI * stage.planet_base_radius / std::abs(planet.teeth);
+  if (!(backlash < base_pitch))
+    throw InputError("Train/backlash", "must be less than the planet's base pitch (" +
+                                           format_number(base_pitch * 1e6, 4) +
+                                           " µm): a gap of a pitch has no tooth in it");
 }
 
 void build_stage(const kinematics::GearTrainSpec& spec, const LateralEntries& e,
@@ -259,6 +297,7 @@ void build_stage(const kinematics::GearTrainSpec& spec, const LateralEntries& e,
                      "give the pin stiffness of '" + planet.name + "' (N/m)");
   stage.pin_stiffness = e.pins.at(planet.name)[0];
   stage.sun_pressure_angle = stage.ring_pressure_angle = e.pressure_angle;
+  check_stage_sizes(stage, planet, p.backlash);
   read_planet_layout(e, planet, p.backlash, stage);
 }
 
@@ -572,6 +611,28 @@ void set_pin_errors(const NamedValues& errors, dynamics::LateralTrain& train)
     body->pin_error_radial = v[1] * 1e-6;
   }
 }
+
+// Settings of the one-stage lateral model that a train of several stages does not use: refused,
+// not dropped. Its planets sit at the orbit radii of the kinematics (Train/modules): a carrier's
+// radius only scaled its coordinate (0, −5, 1e9 gave the same modes).
+void refuse_one_stage_settings(ParameterHandler& prm, const LateralEntries& e,
+                               const LateralParameters& read)
+{
+  const std::string several = "not available for a train of several stages";
+  if (!e.radii.empty())
+    throw InputError("Train/carrier radii", several + " (the planets sit at the orbit radii "
+                                                      "of their meshes, Train/modules)");
+  if (read.backlash != 0.)
+    throw InputError("Train/backlash", several + " (it checks one stage's pin errors)");
+  if (read.gyroscopic)
+    throw InputError("Train/gyroscopic", several + " (a carrier frame at rest)");
+  prm.enter_subsection("Simulation");
+  const bool nonlinear = prm.get("mesh model") == "nonlinear";
+  prm.leave_subsection();
+  if (nonlinear)
+    throw InputError("Simulation/mesh model",
+                     "nonlinear: " + several + " (linear meshes; nonlinear is one stage only)");
+}
 } // namespace
 
 LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
@@ -583,6 +644,7 @@ LateralTrainParameters parse_lateral_train_parameters(ParameterHandler& prm,
   if (!e.angles.empty())
     throw InputError("Train/planet angles",
                      "not available for a train of several stages (equally spaced copies)");
+  refuse_one_stage_settings(prm, e, unused);
   dynamics::LateralTrainInput input;
   input.train.spec = kinematics::parse_gear_train(train.text);
   input.train.spec.pressure_angle = e.pressure_angle;

@@ -11,13 +11,16 @@
 #include "app/invoke.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/file_names.h"
 #include "errors/io.h"
 #include "fem/mpi_start.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
 namespace
 {
@@ -85,10 +88,13 @@ CommandLine parse_command_line(int argc, char** argv)
       line.json = true;
     else if (a == "--quiet" || a == "-q")
       line.quiet = true;
-    else if (a == "-o" || a == "--output")
-      line.output_directory = next_value(a);
-    else if (a.rfind("--output=", 0) == 0)
-      line.output_directory = a.substr(9);
+    else if (a == "-o" || a == "--output" || a.rfind("--output=", 0) == 0)
+    {
+      // An empty name wrote nothing and exited 0; a name too long for the file system ended in
+      // std::filesystem's text.
+      line.output_directory = a.rfind("--output=", 0) == 0 ? a.substr(9) : next_value(a);
+      check_file_name(line.output_directory, "-o");
+    }
     else if (a == "--set" || a.rfind("--set=", 0) == 0)
     {
       const std::string assignment = (a == "--set") ? next_value(a) : a.substr(6);
@@ -105,6 +111,31 @@ CommandLine parse_command_line(int argc, char** argv)
       throw InputError(shortened(a), "a second parameter file was given (only one is read)");
   }
   return line;
+}
+
+// TMPDIR holds Open MPI's session files and gearstiff's scratch: one that is no writable folder
+// failed inside MPI_Init with Open MPI's own text (exit 1). Checked before MPI starts; the
+// problem as an error line, or empty.
+std::string temporary_folder_problem()
+{
+  const char* value = std::getenv("TMPDIR");
+  if (value == nullptr || *value == '\0')
+    return "";
+  try
+  {
+    check_file_name(value, "TMPDIR");
+  }
+  catch (const InputError& e)
+  {
+    return e.what();
+  }
+  std::error_code error;
+  if (!std::filesystem::is_directory(value, error))
+    return "TMPDIR: '" + shortened(value) +
+           "' is not a folder (the temporary folder of Open MPI and of gearstiff's scratch)";
+  if (access(value, W_OK | X_OK) != 0)
+    return "TMPDIR: cannot write into '" + shortened(value) + "'";
+  return "";
 }
 
 int run(int argc, char** argv, MPI_Comm comm)
@@ -165,6 +196,14 @@ int main(int argc, char** argv)
 {
   // First, before MPI or any library starts a thread: every thread inherits the blocked signals.
   gearstiff::app::install_signal_cleanup();
+  if (const std::string problem = temporary_folder_problem(); !problem.empty())
+  {
+    // Before MPI: every process of a launch sees the same TMPDIR; the first rank reports.
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (rank == nullptr || std::string(rank) == "0")
+      std::cerr << "gearstiff: error: " << one_line(problem) << std::endl;
+    return 2;
+  }
   gearstiff::fem::prepare_mpi_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm comm = MPI_COMM_WORLD;

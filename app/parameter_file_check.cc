@@ -1,5 +1,6 @@
 #include "app/parameter_file_check.h"
 
+#include "app/units.h"
 #include "errors/errors.h"
 
 #include <boost/property_tree/json_parser.hpp>
@@ -58,9 +59,15 @@ void check_json_parameter_file(const std::string& file)
   {
     boost::property_tree::read_json(file, tree);
   }
+  catch (const boost::property_tree::json_parser_error& e)
+  {
+    // deal.II's reader wrapped this in "Boost aborted with the following assert message".
+    throw InputError(shortened(file),
+                     "is not JSON (line " + std::to_string(e.line()) + ": " + e.message() + ")");
+  }
   catch (const std::exception&)
   {
-    return; // deal.II's reader reports the syntax error with its line
+    return; // deal.II's reader reports what it finds
   }
   check_node(tree, "");
 }

@@ -256,6 +256,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
 {
   dealii::Timer timer(context.mpi_communicator, true);
   const StiffnessParameters p = parse_stiffness_parameters(prm);
+  refuse_load_lists(p, "run");
   check_chain_parameters(p);
   Report& report = context.report;
 

@@ -141,6 +141,7 @@ ParameterNames stiffness_parameter_names()
   names[stiffness::stiffness_parameter::torques] = "Stiffness/torques";
   names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
   names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
+  names[stiffness::stiffness_parameter::start] = "Stiffness/sweep start";
   names[stiffness::stiffness_parameter::sweep_mesh] = "Stiffness/sweep mesh";
   names[geometry::scene_field::swept_positions] = "Stiffness/sweep mesh";
   return names;
@@ -211,6 +212,66 @@ void parse_modification_stage(ParameterHandler& prm, const std::string& variants
   }
   if (!p.variants.empty() && p.mode != StiffnessMode::sweep)
     throw InputError("Stiffness/variants", "applies to mode sweep only");
+  // One position solves at 'Gear pair scene/pinion torque': a list there was ignored.
+  if (!p.settings.torques.empty() && p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/torques", "applies to mode sweep only (one position runs at "
+                                          "Gear pair scene/pinion torque)");
+}
+
+// The work of a sweep (s, on the ranks of MPI_COMM_WORLD), estimated from what it will solve
+// before the positions are allocated, and refused above limits::max_run_seconds naming the
+// parameter that pushed it there (2·10⁹ positions were allocated; a 3D sweep of 5000
+// positions announced 35 h at 25.5 s a position; 10⁵ torques and 10³ variants were not
+// counted). Seconds a position, measured on one rank (bench/contact_speed.md): 2D Q2 per
+// position 18.7 s / 32 = 0.58 s, once 0.07 s (0.08–0.1 s measured 2026-11-26, 128 positions);
+// 3D Q1 8 layers per position 373.0 s / 16 = 23.3 s, once 228.5 s / 16 = 14.3 s (32 positions
+// on 2 ranks, 2026-12-01). Another degree scales them by the unknowns, (p / p_measured)^dim,
+// and more layers in 3D by layers / 8: a lower bound, as the factorization grows faster than
+// the unknowns. Each further torque of a list costs at least 0.15 of a position (8 torques ×
+// 32 positions 21.9 s against 10.5 s, once), each variant at least half the base sweep (15.7 s
+// against 10.5 s). So this is a lower bound: finer meshes take longer.
+double check_sweep_work(const StiffnessParameters& p)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  const bool once = p.sweep.mesh == stiffness::SweepMesh::once;
+  const unsigned int dim = s.scene.mesh.dimension;
+  const double measured =
+      dim == 3 ? (once ? 228.5 / 16. : 373.0 / 16.) : (once ? 0.07 : 18.7 / 32.);
+  const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const double positions = std::ceil(double(p.sweep.positions) / ranks) * measured;
+  // The factors beyond the measured case, each with the parameter that sets it.
+  const std::vector<std::pair<double, std::string>> factors{
+      {std::pow(s.elasticity.degree / (dim == 3 ? 1. : 2.), double(dim)),
+       "Finite elements/Element degree"},
+      {dim == 3 ? std::max(1., s.scene.mesh.layers / 8.) : 1., "Mesh/layers"},
+      {1. + 0.15 * (s.torques.empty() ? 0. : double(s.torques.size()) - 1.), "Stiffness/torques"},
+      {1. + 0.5 * double(p.variants.size()), "Stiffness/variants"}};
+  double seconds = positions;
+  for (const auto& [factor, name] : factors)
+    seconds *= factor;
+  if (seconds <= limits::max_run_seconds)
+    return seconds;
+  // The positions alone beyond the limit, or else the largest factor, pushed it over.
+  const auto largest = std::max_element(factors.begin(), factors.end());
+  const std::string parameter =
+      positions > limits::max_run_seconds ? "Stiffness/sweep positions" : largest->second;
+  throw InputError(
+      parameter,
+      std::to_string(p.sweep.positions) + " positions" +
+          (s.torques.size() > 1 ? " × " + std::to_string(s.torques.size()) + " torques"
+                                : std::string()) +
+          (p.variants.empty()
+               ? std::string()
+               : " × " + std::to_string(p.variants.size() + 1) + " modification sets") +
+          " would take at least " + format_number(seconds / 3600., 3) + " h on " +
+          std::to_string(ranks) + " rank(s) at " +
+          format_number(measured * factors[0].first * factors[1].first, 3) + " s a position (" +
+          std::to_string(dim) + "D, Q" + std::to_string(s.elasticity.degree) +
+          (dim == 3 ? ", " + std::to_string(s.scene.mesh.layers) + " layers" : std::string()) +
+          (once ? ", once" : ", per position") + "; limit " +
+          format_number(limits::max_run_seconds / 3600., 2) +
+          " h, docs/limits.md): fewer positions, torques, variants or layers, a lower degree, "
+          "or more MPI ranks");
 }
 
 // The relief lengths that read `auto` (the long relief: from the tip to the start of
@@ -263,25 +324,16 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
     throw InputError(geometry::scene_field::young_modulus, "must be positive");
   if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
     throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
+  // `once` rolls one factorization: the direct solver's Schur complement. With an iterative
+  // solver the contact module refused it naming Contact/Iteration solves, which the user had
+  // not set; full re-solve is refused there under its own name.
+  if (p.mode == StiffnessMode::sweep && p.sweep.mesh == stiffness::SweepMesh::once &&
+      s.linear_solver.method != fem::LinearSolverMethod::direct_mumps)
+    throw InputError("Linear solver/Method", "Stiffness/sweep mesh = once needs the direct "
+                                             "solver (an iterative one sweeps per position)");
   if (p.mode == StiffnessMode::sweep)
   {
-    // The work before the positions are allocated: a 32-position sweep of the default scene
-    // takes 18.7 s on one rank per position (bench/contact_speed.md), 0.58 s a position, and
-    // a rolling one (`once`) at least 0.07 s a position (0.08–0.1 s measured 2026-11-26,
-    // 128 positions); finer meshes take longer, so this is a lower bound. Refused above
-    // limits::max_run_seconds (2·10⁹ positions were allocated before).
-    const double seconds_per_position =
-        p.sweep.mesh == stiffness::SweepMesh::once ? 0.07 : 18.7 / 32.;
-    const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    const double seconds = std::ceil(double(p.sweep.positions) / ranks) * seconds_per_position;
-    if (seconds > limits::max_run_seconds)
-      throw InputError(stiffness::stiffness_parameter::positions,
-                       std::to_string(p.sweep.positions) + " positions would take at least " +
-                           format_number(seconds / 3600., 3) + " h on " + std::to_string(ranks) +
-                           " rank(s) at " + format_number(seconds_per_position, 2) +
-                           " s a position (limit " +
-                           format_number(limits::max_run_seconds / 3600., 2) +
-                           " h, docs/limits.md): use fewer positions or more MPI ranks");
+    p.estimated_seconds = check_sweep_work(p);
     stiffness::sweep_positions(pair, p.sweep);
   }
   // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
@@ -494,7 +546,8 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
   const std::string stem = scratch_stem(context.mpi_communicator, label, false);
   const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
   context.pcout << label << ": " << p.sweep.positions << " positions over " << p.sweep.base_pitches
-                << " base pitch(es) on " << ranks << " rank(s)" << std::endl;
+                << " base pitch(es) on " << ranks << " rank(s), estimated at least "
+                << format_number(p.estimated_seconds, 2) << " s in all" << std::endl;
   // From the rank that solved the position (each takes its own, fem::distribute_items).
   const auto progress = context.progress_counter(label, double(p.sweep.positions) / ranks);
   return with_parameter_names(
@@ -507,6 +560,26 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
                    : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep,
                                                    stem, progress);
       });
+}
+
+void refuse_load_lists(const StiffnessParameters& p, const std::string& command)
+{
+  if (!p.settings.torques.empty())
+    throw InputError("Stiffness/torques",
+                     "`" + command +
+                         "` runs at one load, Gear pair scene/pinion torque (the list is for "
+                         "`stiffness` in mode sweep)");
+  if (!p.variants.empty())
+    throw InputError("Stiffness/variants", "`" + command +
+                                               "` runs the modifications of Gear pair/Pinion "
+                                               "and Wheel alone (the list is for `stiffness` "
+                                               "in mode sweep)");
+}
+
+void report_pinion_torque(Report& report, const StiffnessParameters& p)
+{
+  report.add_value("pinion_torque", p.settings.pinion_torque, "N·m",
+                   "T1 on the pinion (Gear pair scene/pinion torque), the load of every solve");
 }
 
 void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,

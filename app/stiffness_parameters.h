@@ -53,6 +53,9 @@ struct StiffnessParameters
   std::vector<std::string> input_notes;
   // `Stiffness/variants`: further modification sets, each swept like the base one.
   std::vector<StiffnessVariant> variants;
+  // s, mode sweep: the lower bound of the sweep's work on the ranks (checked against
+  // limits::max_run_seconds, printed before the sweep starts)
+  double estimated_seconds = 0.;
 };
 
 // Gear pair, scene, mesh, finite elements, linear solver, contact and "Stiffness".
@@ -83,6 +86,12 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
                                                       CommandContext& context,
                                                       const std::string& label);
 
+// `command` (faults, cai, run) solves at the one load Gear pair scene/pinion torque and the base
+// modifications: InputError naming Stiffness/torques or Stiffness/variants when either is set
+// (they were dropped silently).
+void refuse_load_lists(const StiffnessParameters& p, const std::string& command);
+// The report value pinion_torque [N·m]: every report states its load.
+void report_pinion_torque(Report& report, const StiffnessParameters& p);
 // The position's values (prefix + key) in the report: stiffness, rotation, transmission
 // error, torque ratio, pairs, pressures, root stresses and cost.
 void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,

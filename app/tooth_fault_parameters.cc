@@ -3,6 +3,7 @@
 #include "app/parameter_patterns.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_fault.h"
 
@@ -152,6 +153,15 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
   // than the crack-face cells of the default contact sizes.
   if (!(crack.crack_tip_size >= 1e-6 && crack.crack_tip_size <= 0.1e-3))
     throw InputError(path_of(wheel, "crack tip size"), "must lie between 0.001 and 0.1 mm");
+  // A crack of a tip cell or less has no faces to mesh or to fit K on: 1e-9 mm failed in the
+  // scene and 0.01 mm (one default tip cell) in the crack tip factors (exit 3); 1.5 tip cells
+  // ran (measured 2026-12-01, Q1 and Q2).
+  if (depth < 2. * crack.crack_tip_size)
+    throw InputError(path_of(wheel, "crack depth"),
+                     "'" + shortened(text.at("crack depth")) +
+                         "' must be at least twice the crack tip size (" +
+                         format_number(2. * crack.crack_tip_size / mm, 4) +
+                         " mm): a shorter crack has no faces beyond its tip cell");
   const std::string& front = text.at("crack front");
   if (front != "straight" && front != "parabolic")
     throw InputError(path_of(wheel, "crack front"),
@@ -202,11 +212,14 @@ void add_tooth_faults(const ModificationText& text, bool wheel, unsigned int dim
     faults.push_back(spall_of(text, wheel, depth, dimension));
   if (const double depth = length_of(text, "crack depth", wheel); depth > 0.)
     faults.push_back(crack_of(text, wheel, depth, dimension));
-  const int index = static_cast<int>(value_of(text, "faulty tooth", wheel, true));
-  if (std::abs(index) > geometry::max_pair_index)
+  // Range-checked as a double, before the cast: 1e20 or 3e9 overflowed an int past the check.
+  const double tooth = value_of(text, "faulty tooth", wheel, true);
+  if (std::abs(tooth) > geometry::max_pair_index)
     throw InputError(path_of(wheel, "faulty tooth"),
-                     "must lie between -" + std::to_string(geometry::max_pair_index) + " and " +
+                     "'" + shortened(text.at("faulty tooth")) + "' must lie between -" +
+                         std::to_string(geometry::max_pair_index) + " and " +
                          std::to_string(geometry::max_pair_index));
+  const int index = static_cast<int>(tooth);
   if (faults.empty())
     return; // no fault: every tooth stays nominal
   auto& list = modifications.by_tooth[index];

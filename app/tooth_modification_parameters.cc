@@ -196,8 +196,15 @@ std::vector<ModificationVariant> parse_modification_variants(const std::string& 
   std::vector<ModificationVariant> variants;
   if (trim(text).empty())
     return variants;
-  for (const std::string& variant : split(text, ';'))
+  const std::vector<std::string> listed = split(text, ';');
+  for (std::size_t i = 0; i < listed.size(); ++i)
   {
+    const std::string& variant = listed[i];
+    // An empty entry (';;') ran as an unnamed copy of the base.
+    if (variant.empty())
+      throw InputError(parameter, "entry " + std::to_string(i + 1) +
+                                      " between ';' is empty: give 'name = value, ...' or "
+                                      "remove the ';'");
     ModificationVariant v{variant, base};
     for (const std::string& assignment : split(variant, ','))
     {

@@ -61,6 +61,10 @@ parse_named_numbers(const std::string& text, unsigned int count, const std::stri
       throw InputError(parameter,
                        "entry '" + trimmed(entry) + "' is not 'name: " + units + "'" +
                            (sign == NumberSign::any ? "" : " with non-negative numbers"));
+    // A name twice ("7: 1e6 10, 7: 1e5 1") would keep one entry, or add both, silently.
+    for (const auto& [earlier, values] : entries_read)
+      if (earlier == name)
+        throw InputError(parameter, "entry '" + name + "' is given twice");
     entries_read.emplace_back(name, numbers);
   }
   return entries_read;

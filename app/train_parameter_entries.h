@@ -18,7 +18,7 @@ enum class NumberSign
 
 // "name: v1 v2 ..., ..." → (name, numbers) in the order given: `count` finite numbers per name
 // (0: one or more). InputError naming `parameter` for an entry that is not
-// 'name: <units>' (with non-negative numbers unless `sign` is any).
+// 'name: <units>' (with non-negative numbers unless `sign` is any) or that repeats a name.
 std::vector<std::pair<std::string, std::vector<double>>>
 parse_named_numbers(const std::string& text, unsigned int count, const std::string& parameter,
                     const std::string& units, NumberSign sign = NumberSign::non_negative);

@@ -1,6 +1,7 @@
 #include "dynamics/stiffness_file.h"
 
 #include "errors/errors.h"
+#include "errors/file_names.h"
 
 #include <algorithm>
 #include <boost/property_tree/json_parser.hpp>
@@ -30,9 +31,11 @@ ptree read_json(const std::string& path, const std::string& parameter)
   if (path.empty())
     throw InputError(parameter, "names no file (the summary.json of `gearstiff stiffness` or "
                                 "`gearstiff cai` run with -o)");
-  if (std::filesystem::is_directory(path))
+  check_file_name(path, parameter);
+  std::error_code error; // the throwing overloads ended as std::filesystem's text, exit 1
+  if (std::filesystem::is_directory(path, error))
     throw InputError(parameter, "'" + path + "' is a folder, not a file (the summary.json in it?)");
-  if (!std::filesystem::is_regular_file(path))
+  if (!std::filesystem::is_regular_file(path, error))
     throw InputError(parameter, "file '" + path + "' does not exist");
   ptree tree;
   try
@@ -45,6 +48,18 @@ ptree read_json(const std::string& path, const std::string& parameter)
                                     ": " + e.message() + ")");
   }
   return tree;
+}
+
+// Child `key` of a table's node (columns, units, rows): a table without it is no table of
+// `gearstiff stiffness` (get_child's "No such node (rows)" ended with exit 1).
+const ptree& table_part(const ptree& table_node, const std::string& table, const std::string& key,
+                        const std::string& parameter)
+{
+  const auto part = table_node.get_child_optional(key);
+  if (!part)
+    throw InputError(parameter, "table " + table + " has no '" + key +
+                                    "' (a summary.json of `gearstiff stiffness`/`cai` -o?)");
+  return *part;
 }
 
 // values/<key>/value as a number, nothing when absent or null.
@@ -73,8 +88,18 @@ StiffnessFilePair read_pair(const ptree& tree, const std::string& path,
                                       " is not a finite non-zero number of a gear pair");
   StiffnessFilePair pair{static_cast<int>(std::lround(*z1)), static_cast<int>(std::lround(*z2)),
                          *m * 1e-3, *a * 1e-3, *eps};
+  // The model takes both ratios from the file: checked here, so that the message names the
+  // file, not the mesh's own 'contact ratio' (as the torsional model's check did).
+  if (!(pair.contact_ratio >= 1. && pair.contact_ratio < 4.))
+    throw InputError(parameter, "'" + path + "': value contact_ratio = " +
+                                    format(pair.contact_ratio) + " must lie in [1, 4)");
   if (const auto approach = value(tree, "approach_ratio"))
+  {
+    if (!(*approach >= 0. && *approach <= pair.contact_ratio))
+      throw InputError(parameter, "'" + path + "': value approach_ratio = " + format(*approach) +
+                                      " must lie in [0, contact_ratio]");
     pair.approach_ratio = *approach;
+  }
   if (const auto radius = value(tree, "pinion_base_radius"))
     pair.pinion_base_radius = *radius * 1e-3;
   return pair;
@@ -88,16 +113,16 @@ std::vector<double> column(const ptree& tree, const std::string& table, const st
   if (!node)
     return {};
   std::vector<std::string> columns, units;
-  for (const auto& c : node->get_child("columns"))
+  for (const auto& c : table_part(*node, table, "columns", parameter))
     columns.push_back(c.second.data());
-  for (const auto& u : node->get_child("units"))
+  for (const auto& u : table_part(*node, table, "units", parameter))
     units.push_back(u.second.data());
   const auto found = std::find(columns.begin(), columns.end(), name);
   const std::size_t index = found - columns.begin();
   if (found == columns.end() || index >= units.size() || units[index] != unit)
     throw InputError(parameter, "table " + table + " has no column " + name + " [" + unit + "]");
   std::vector<double> values;
-  for (const auto& row : node->get_child("rows"))
+  for (const auto& row : table_part(*node, table, "rows", parameter))
   {
     auto cell = row.second.begin();
     std::advance(cell, std::min(index, row.second.size()));
@@ -120,12 +145,13 @@ std::vector<double> column(const ptree& tree, const std::string& table, const st
   return values;
 }
 
-bool has_column(const ptree& tree, const std::string& table, const std::string& name)
+bool has_column(const ptree& tree, const std::string& table, const std::string& name,
+                const std::string& parameter)
 {
   const auto node = tree.get_child_optional(ptree::path_type("tables/" + table, '/'));
   if (!node)
     return false;
-  for (const auto& c : node->get_child("columns"))
+  for (const auto& c : table_part(*node, table, "columns", parameter))
     if (c.second.data() == name)
       return true;
   return false;
@@ -224,7 +250,7 @@ StiffnessFile read_stiffness_file(const std::string& path, const std::string& pa
   if (!positions.empty())
   {
     const std::vector<double> loaded_error =
-        has_column(tree, "stiffness_sweep", "transmission_error")
+        has_column(tree, "stiffness_sweep", "transmission_error", parameter)
             ? column(tree, "stiffness_sweep", "transmission_error", "um", parameter)
             : std::vector<double>();
     file.stiffness =

@@ -537,6 +537,14 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
                  " GB for a Q2 contact solve"
            : "") +
       "; meshing and solving it could not finish";
+  // In 3D the layers multiply the section: when the section would fit with the default layers,
+  // the layers are what the user raised (1000 layers were blamed on the body size).
+  const double section_cells = estimate.cells / (options.dimension == 3 ? options.layers : 1.);
+  if (options.dimension == 3 && section_cells * MeshOptions().layers <= limit)
+    throw InputError("Mesh/layers", reason + ": use at most " +
+                                        std::to_string(static_cast<unsigned int>(
+                                            std::floor(limit / section_cells))) +
+                                        " layers");
   if (estimate.body_cells > estimate.fine_cells + estimate.graded_cells)
     throw InputError("Mesh/body size", reason + ": use a larger body size");
   throw InputError("Mesh/contact size",

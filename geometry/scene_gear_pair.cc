@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -422,13 +423,22 @@ double reference_position(const GearPairSceneSpec& spec, const kinematics::GearP
     break;
   }
   const double radius = 0.5 * pair.pinion.base_diameter;
+  // The ends are printed to 6 decimals of a degree: a roll angle typed back from the message
+  // (within half a unit of its last digit) is that end. With 6 significant digits "10.9091"
+  // was printed and then refused.
+  const double printed = 0.5e-6 * M_PI / 180.;
+  const double start = pair.contact_start / radius, end = pair.contact_end / radius;
+  if (std::abs(spec.pinion_roll_angle - start) <= printed)
+    return pair.contact_start;
+  if (std::abs(spec.pinion_roll_angle - end) <= printed)
+    return pair.contact_end;
   const double position = spec.pinion_roll_angle * radius;
   if (position < pair.contact_start - path_tolerance ||
       position > pair.contact_end + path_tolerance)
   {
     std::ostringstream range;
-    range << "must lie on the path of contact, between " << pair.contact_start / radius * 180 / M_PI
-          << " and " << pair.contact_end / radius * 180 / M_PI << " degrees";
+    range << std::fixed << std::setprecision(6) << "must lie on the path of contact, between "
+          << start * 180 / M_PI << " and " << end * 180 / M_PI << " degrees";
     throw InputError(scene_field::pinion_roll_angle, range.str());
   }
   return position;

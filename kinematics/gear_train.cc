@@ -21,6 +21,9 @@ namespace gearstiff::kinematics
 namespace
 {
 constexpr double rpm = 3.14159265358979323846 / 30.; // rad/s per rpm
+// -, |teeth| of a train gear: the bound of `gearstiff dynamics`' driver teeth; beyond it no
+// gear, and an int holds the count.
+constexpr int max_gear_teeth = 10000;
 
 std::string trim(const std::string& text)
 {
@@ -790,10 +793,12 @@ void parse_gears_and_carriers(const GearTrainText& text, MemberTable& members)
   for (const auto& [name, value] : parse_assignments(text.gears, "gears"))
   {
     const double teeth = parse_number(value, "Train/gears");
-    if (teeth == 0. || teeth != std::round(teeth))
+    // Bounded before the cast to int (1e20 overflowed it); as `dynamics`' driver teeth.
+    if (teeth == 0. || teeth != std::round(teeth) || std::abs(teeth) > max_gear_teeth)
       throw InputError("Train/gears", "gear '" + name +
                                           "' needs a non-zero whole number of "
-                                          "teeth (negative: internal), got " +
+                                          "teeth (negative: internal) up to " +
+                                          std::to_string(max_gear_teeth) + " in size, got " +
                                           value);
     if (members.has(name))
       throw InputError("Train/gears", "gear '" + name + "' is listed twice");

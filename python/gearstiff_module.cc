@@ -20,6 +20,7 @@
 #include "app/report.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/file_names.h"
 #include "fem/mpi_start.h"
 
 #include <algorithm>
@@ -347,7 +348,11 @@ py::dict run_command(const std::string& name, const py::object& params,
                                "of a .prm/.json file, got " +
                                    python_type(params));
   if (!output_directory.is_none())
+  {
     invocation.output_directory = py::str(fspath(output_directory)).cast<std::string>();
+    // "" wrote nothing; a name too long for the file system raised std::filesystem's text.
+    check_file_name(invocation.output_directory, "output_directory");
+  }
   load_parameters(command, invocation, prm);
 
   Report report;

@@ -169,6 +169,11 @@ void check_torque_list(const std::vector<double>& torques)
                        "every torque must be positive: a torque <= 0 separates the loaded "
                        "flanks (got " +
                            std::to_string(torques[i]) + " N·m)");
+    // inf reached the contact solver and failed there (exit 3).
+    if (!std::isfinite(torques[i]))
+      throw InputError(stiffness_parameter::torques,
+                       "every torque must be a finite number [N·m] (got " +
+                           format_number(torques[i], 6) + ")");
     if (i > 0 && !(torques[i] > torques[i - 1]))
       throw InputError(stiffness_parameter::torques,
                        "the torques must ascend (one monotone loading path)");
@@ -344,7 +349,10 @@ void GearMeshStiffness<dim>::evaluate()
   // A torque far beyond the linear model still returns a number; refuse it.
   if (!(mesh_diameter > 0.)) // one mesh for every position of a rolling sweep
     mesh_diameter = GridTools::diameter(problem->system().get_dof_handler().get_triangulation());
-  fem::check_small_strain(mesh_diameter, problem->solution(), stiffness_parameter::torque);
+  // Under a torque list the load that broke the limit is the list's entry.
+  fem::check_small_strain(mesh_diameter, problem->solution(),
+                          settings.torques.empty() ? stiffness_parameter::torque
+                                                   : stiffness_parameter::torques);
   result.pinion_torque = settings.pinion_torque;
   // Rotation from the unloaded touching configuration: every normal gap of an involute flank
   // closes by r_b1 per radian of pinion rotation (its normals are tangent to the base circle).

@@ -293,6 +293,7 @@ inline const std::string torque = "stiffness.pinion_torque";
 inline const std::string torques = "stiffness.torques";
 inline const std::string positions = "sweep.positions";
 inline const std::string pitches = "sweep.base_pitches";
+inline const std::string start = "sweep.start_position";
 inline const std::string scene_file = "stiffness.scene_file";
 inline const std::string sweep_mesh = "sweep.mesh";
 } // namespace stiffness_parameter

@@ -25,9 +25,19 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
   if (spec.positions == 0)
     throw InputError(stiffness_parameter::positions,
                      "must be at least 1 (a sweep with zero positions computes nothing)");
-  if (!(spec.base_pitches > 0.))
-    throw InputError(stiffness_parameter::pitches, "must be positive");
-  const double start = spec.start_position < 0. ? pair.contact_start : spec.start_position;
+  if (!(spec.base_pitches > 0.) || !std::isfinite(spec.base_pitches))
+    throw InputError(stiffness_parameter::pitches, "must be positive and finite");
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  const bool given_start = spec.start_position >= 0.;
+  const double start = given_start ? spec.start_position : pair.contact_start;
+  // A start off the path is the start's fault, not the span's (inf was blamed on the pitches).
+  if (given_start && !(start >= pair.contact_start && start < pair.contact_end))
+    throw InputError(stiffness_parameter::start,
+                     "the sweep starts off the path of contact: " +
+                         format_number(start / r_b1 * 180. / M_PI, 6) + "°, the path spans " +
+                         format_number(pair.contact_start / r_b1 * 180. / M_PI, 6) + "° to " +
+                         format_number(pair.contact_end / r_b1 * 180. / M_PI, 6) +
+                         "° (negative: its start A)");
   const double length = spec.base_pitches * pair.transverse_base_pitch;
   const double step = length / spec.positions;
   std::vector<double> positions;
@@ -37,7 +47,6 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
   // followed through the sweep.
   if (positions.front() < pair.contact_start || positions.back() > pair.contact_end)
   {
-    const double r_b1 = 0.5 * pair.pinion.base_diameter;
     throw InputError(stiffness_parameter::pitches,
                      "the sweep runs off the path of contact: it spans roll angles " +
                          format_number(positions.front() / r_b1 * 180. / M_PI, 4) + "° to " +

@@ -261,6 +261,9 @@ BAD_VALUES = [
     ("dynamics", {"Simulation": {"simulated time": -1}}, "Simulation/simulated time=-1"),
     ("cycloid", {"Cycloid disc": {"rollers": 2}}, "Cycloid disc/rollers=2"),
     ("kinematics", {"Train": {"input torque": "abc"}}, "Train/input torque=abc"),
+    # issue 42: an int beyond any C++ integer is range-checked before the cast.
+    ("faults", {"Gear pair": {"Pinion": {"faulty tooth": 10 ** 30}}},
+     "Gear pair/Pinion/faulty tooth=" + str(10 ** 30)),
 ]
 
 
@@ -273,6 +276,19 @@ def test_bad_input_same_message_as_command_line(command, params, setting):
     assert "gearstiff: error: " + str(raised.value) == err.strip()
     assert isinstance(raised.value, ValueError)
     assert str(raised.value).startswith(raised.value.parameter + ":")
+
+
+@pytest.mark.parametrize("name,reason", [
+    ("", "names no file or folder"),
+    ("n" * 300, "a name in the path has 300 characters"),
+])
+def test_output_directory_names(tmp_path, name, reason):
+    """Issue 42: "" wrote nothing, a name beyond NAME_MAX raised std::filesystem's RuntimeError."""
+    folder = name if name == "" else str(tmp_path / name)
+    with pytest.raises(gearstiff.InputError) as raised:
+        gearstiff.gear_pair(output_directory=folder)
+    assert raised.value.parameter == "output_directory"
+    assert reason in str(raised.value)
 
 
 def test_missing_parameter_file_same_message(tmp_path):
