@@ -7,6 +7,7 @@
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 #include "kinematics/gear_pair.h"
+#include "tests/kinematics/shifted_pair.h"
 
 #include <algorithm>
 #include <cmath>
@@ -316,19 +317,8 @@ TEST(TrainModel, StandardMeshOfShiftedGearsIsTheGearPairs)
   for (const auto& [z1, z2, x1, x2, internal] :
        {std::tuple{23, 61, 0.2, -0.1, false}, std::tuple{24, 69, 0.3, 0.5, true}})
   {
-    kinematics::GearPairSpec spec;
-    for (kinematics::GearSpec* g : {&spec.pinion, &spec.wheel})
-    {
-      g->normal_module = 4e-3;
-      g->pressure_angle = alpha;
-      g->face_width = 30e-3;
-    }
-    spec.pinion.teeth = z1;
-    spec.wheel.teeth = z2;
-    spec.pinion.profile_shift = x1;
-    spec.wheel.profile_shift = x2;
-    spec.wheel.internal = internal;
-    const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec);
+    const kinematics::GearPairGeometry pair =
+        kinematics::compute_gear_pair(test_support::shifted_pair(z1, z2, x1, x2, internal));
     const kinematics::TrainMember a{"a", z1, 4e-3, "", 1, 0., 0., x1};
     const kinematics::TrainMember b{"b", internal ? -z2 : z2, 4e-3, "", 1, 0., 0., x2};
     const StandardMesh mesh = standard_mesh(a, b, alpha, 0);

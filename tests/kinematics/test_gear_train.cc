@@ -6,6 +6,7 @@
 #include "kinematics/gear_pair.h"
 #include "kinematics/gear_train.h"
 #include "tests/kinematics/input_error_parameter.h"
+#include "tests/kinematics/shifted_pair.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -292,21 +293,8 @@ TEST(ReducedInertia, NestedPlanetCentreSpeed)
 // distance exactly.
 TEST(GearTrain, WorkingCentreDistanceOfShiftedGears)
 {
-  const auto pair_centres = [](int z1, int z2, double x1, double x2, bool internal)
-  {
-    GearPairSpec spec;
-    for (GearSpec* g : {&spec.pinion, &spec.wheel})
-    {
-      g->normal_module = 4e-3;
-      g->pressure_angle = 20. * M_PI / 180.;
-      g->face_width = 30e-3;
-    }
-    spec.pinion.teeth = z1;
-    spec.wheel.teeth = z2;
-    spec.pinion.profile_shift = x1;
-    spec.wheel.profile_shift = x2;
-    spec.wheel.internal = internal;
-    return compute_gear_pair(spec).centre_distance;
+  const auto pair_centres = [](int z1, int z2, double x1, double x2, bool internal) {
+    return compute_gear_pair(test_support::shifted_pair(z1, z2, x1, x2, internal)).centre_distance;
   };
   const double alpha = 20. * M_PI / 180.;
   const TrainMember pinion{"p", 23, 4e-3, "", 1, 0., 0., 0.2};
