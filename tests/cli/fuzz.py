@@ -295,7 +295,9 @@ def run_case(binary, command, overrides, timeout, work, deck=None, output=None, 
         if left:
             problems.append(f"failed run left {left}")
     else:
-        if not os.path.isdir(os.path.join(work, out_dir)):
+        # The folder as the command names it: "a/../out" is "out" (the command normalises the
+        # path; the file system cannot resolve "a/.." while "a" does not exist).
+        if not os.path.isdir(os.path.normpath(os.path.join(work, out_dir))):
             problems.append("successful run with -o created no folder")
         stale = [n for n in os.listdir(work) if n.startswith(".gearstiff-staging")]
         if stale:
