@@ -185,10 +185,15 @@ def shares(row):
     return [row.get(k, 0.) for k in ("share_pair_m1", "share_pair_0", "share_pair_p1")]
 
 
-def once_equals_per_position(case, runner, log):
-    positions = 5  # over one base pitch: both contact zones, and the suite's time in bounds
-    once, _, _ = runner.run("stiffness", sweep_sets(case, positions, "once"))
-    reference, _, _ = runner.run("stiffness", sweep_sets(case, positions, "per position"))
+SWEEP_POSITIONS = 5  # over one base pitch: both contact zones, and the suite's time in bounds
+
+
+def once_equals_per_position(case, runner, log, once_out=None):
+    """Returns both sweeps' reports: the later identities reuse them (issue 43: each FE sweep of
+    a case runs once)."""
+    once, _, _ = runner.run("stiffness", sweep_sets(case, SWEEP_POSITIONS, "once"), out=once_out)
+    reference, _, _ = runner.run("stiffness",
+                                 sweep_sets(case, SWEEP_POSITIONS, "per position"))
     rows_once, rows_ref = table(once, "stiffness_sweep"), table(reference, "stiffness_sweep")
     worst = [0., 0., 0., 0.]
     for i, (a, b) in enumerate(zip(rows_ref, rows_once)):
@@ -211,7 +216,7 @@ def once_equals_per_position(case, runner, log):
                  max(worst[3], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
     log(f"once = per position: |dTE0| {worst[0]:.2g} um, |dTE| {worst[1]:.3g} um, "
         f"|dk| {worst[2] * 100:.3g} %, |dshare| {worst[3]:.2g}")
-    return rows_ref
+    return {"once": once, "per position": reference, "once_out": once_out}
 
 
 def geometric_te(case, rows, log):
@@ -233,7 +238,7 @@ def geometric_te(case, rows, log):
         log(f"tent: the unloaded TE of equal long reliefs ({amount} um) at every position")
 
 
-def zero_equals_none(case, runner, log):
+def zero_equals_none(case, runner, log, sweeps):
     """Zero modifications and a zero crack on a modelled tooth give every printed value of the
     plain pair. (A crack on a tooth out of mesh is no such identity: the scene refuses a tooth it
     does not model, and a modelled unloaded tooth's cracked root still feels the rim's bending.)"""
@@ -252,10 +257,11 @@ def zero_equals_none(case, runner, log):
     log("zero modification = none, zero crack = healthy: every printed value equal")
 
 
-def ranks_agree(case, runner, log):
-    sets = sweep_sets(case, 4, "per position")
-    one, _, _ = runner.run("stiffness", sets)
-    two, _, _ = runner.run("stiffness", sets, ranks=2)
+def ranks_agree(case, runner, log, sweeps):
+    # The one-rank run is the per-position sweep of once = per position (same settings).
+    one = sweeps["per position"]
+    two, _, _ = runner.run("stiffness", sweep_sets(case, SWEEP_POSITIONS, "per position"),
+                           ranks=2)
     for i, (a, b) in enumerate(zip(table(one, "stiffness_sweep"), table(two, "stiffness_sweep"))):
         check_close(f"position {i} k [N/um], 2 ranks", b["stiffness"], a["stiffness"], 0., 1e-6)
         check_close(f"position {i} TE [um], 2 ranks", b["transmission_error"],
@@ -263,7 +269,7 @@ def ranks_agree(case, runner, log):
     log("2 ranks = 1 rank: k and TE to 1e-6")
 
 
-def python_equals_cli(case, runner, log):
+def python_equals_cli(case, runner, log, sweeps):
     if not runner.python_path:
         log("Python = command line: skipped (no --python-path)")
         return
@@ -294,7 +300,7 @@ def python_equals_cli(case, runner, log):
     log("Python = command line: k and TE")
 
 
-def own_train(case, runner, log):
+def own_train(case, runner, log, sweeps):
     """The sweep's stiffness_table.prm runs this pair in `gearstiff dynamics`: its mesh frequency
     is z1*n1/60, its mean stiffness the sweep's mean k (uniform positions over one base pitch:
     the mean of the periodic linear interpolation is the mean of the samples), and at a
@@ -302,35 +308,34 @@ def own_train(case, runner, log):
     mu*tan(alpha_w), ~0.5-1 %), the mesh force is the static one: K_v = 1. The residual
     vibration each stiffness ramp of the table leaves grows with the speed (measured on a 25/40
     pair, m 8 mm: K_v - 1 = 0.0216, 0.0070, 0.0032, 0.0016 at 5, 2, 1, 0.5 % of the resonance
-    speed); at 0.5 % the tolerance is 0.5 %, three times that."""
-    with tempfile.TemporaryDirectory(dir=runner.work) as folder:
-        out = os.path.join(folder, "sweep")
-        sweep, _, _ = runner.run("stiffness", sweep_sets(case, 6, "once"), out=out)
-        table_file = os.path.join(out, "stiffness_table.prm")
-        with open(table_file) as f:
-            text = f.read()
-        z1 = int(case["pair"]["Gear pair/Pinion/teeth"])
-        if f"z {z1}/" not in text:
-            raise CaseFailure(f"stiffness_table.prm does not name this pair:\n{text[:400]}")
-        resonance = float(text.split("resonance speed n_E1 = ")[1].split()[0])
-        speed = 0.005 * resonance
-        args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
-                "--set", f"Train/input speed={speed:.8g}",
-                "--set", "Mesh 1/friction coefficient=0"]
-        process = subprocess.run(args, capture_output=True, text=True)
-        if process.returncode != 0:
-            raise CaseFailure(f"dynamics on stiffness_table.prm exited {process.returncode}: "
-                              f"{process.stderr.strip()[-600:]}")
-        dynamics = json.loads(process.stdout)
-        check_close("mesh frequency [Hz]", value(dynamics, "mesh_frequency"), z1 * speed / 60.,
-                    0., 1e-6)
-        k = [r["stiffness"] for r in table(sweep, "stiffness_sweep")]
-        check_close("mean stiffness [N/um]", value(dynamics, "mesh1_mean_stiffness"),
-                    sum(k) / len(k), 0., 1e-6)
-        check_close("K_v max at quasi-static speed", value(dynamics, "mesh1_kv_max"), 1., 5e-3)
-        log(f"own train: dynamics runs this pair (f_z {value(dynamics, 'mesh_frequency'):.5g} "
-            f"Hz, mean k {sum(k) / len(k):.5g} N/um, quasi-static K_v "
-            f"{value(dynamics, 'mesh1_kv_max'):.5f})")
+    speed); at 0.5 % the tolerance is 0.5 %, three times that. The sweep is the rolling one of
+    once = per position, written to a folder for this identity."""
+    sweep, out = sweeps["once"], sweeps["once_out"]
+    table_file = os.path.join(out, "stiffness_table.prm")
+    with open(table_file) as f:
+        text = f.read()
+    z1 = int(case["pair"]["Gear pair/Pinion/teeth"])
+    if f"z {z1}/" not in text:
+        raise CaseFailure(f"stiffness_table.prm does not name this pair:\n{text[:400]}")
+    resonance = float(text.split("resonance speed n_E1 = ")[1].split()[0])
+    speed = 0.005 * resonance
+    args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
+            "--set", f"Train/input speed={speed:.8g}",
+            "--set", "Mesh 1/friction coefficient=0"]
+    process = subprocess.run(args, capture_output=True, text=True)
+    if process.returncode != 0:
+        raise CaseFailure(f"dynamics on stiffness_table.prm exited {process.returncode}: "
+                          f"{process.stderr.strip()[-600:]}")
+    dynamics = json.loads(process.stdout)
+    check_close("mesh frequency [Hz]", value(dynamics, "mesh_frequency"), z1 * speed / 60.,
+                0., 1e-6)
+    k = [r["stiffness"] for r in table(sweep, "stiffness_sweep")]
+    check_close("mean stiffness [N/um]", value(dynamics, "mesh1_mean_stiffness"),
+                sum(k) / len(k), 0., 1e-6)
+    check_close("K_v max at quasi-static speed", value(dynamics, "mesh1_kv_max"), 1., 5e-3)
+    log(f"own train: dynamics runs this pair (f_z {value(dynamics, 'mesh_frequency'):.5g} "
+        f"Hz, mean k {sum(k) / len(k):.5g} N/um, quasi-static K_v "
+        f"{value(dynamics, 'mesh1_kv_max'):.5f})")
 
 
 def three_d_between_plane_models(case, runner, log):
@@ -376,9 +381,11 @@ def run_case(seed, index, runner):
           f"{case['contact_ratio']:.4f}; " + "; ".join(f"{k}={v}" for k, v in settings.items()),
           flush=True)
     try:
-        rows = once_equals_per_position(case, runner, log)
-        geometric_te(case, rows, log)
-        ROTATION[index % len(ROTATION)](case, runner, log)
+        identity = ROTATION[index % len(ROTATION)]
+        once_out = os.path.join(runner.work, f"case{index}") if identity is own_train else None
+        sweeps = once_equals_per_position(case, runner, log, once_out)
+        geometric_te(case, table(sweeps["per position"], "stiffness_sweep"), log)
+        identity(case, runner, log, sweeps)
         if index % 10 == 9:  # 3D is the costly one: every tenth case
             three_d_between_plane_models(case, runner, log)
     except CaseFailure as failure:
