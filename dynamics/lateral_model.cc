@@ -497,10 +497,16 @@ LateralModes LateralModel::modes(double relative_tolerance) const
   return result;
 }
 
-std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) const
+namespace
+{
+// Eigenvalues of the first-order form [q; q̇]' = A [q; q̇] of the free coordinates.
+Eigen::VectorXcd first_order_eigenvalues(const Eigen::VectorXd& mass_diagonal,
+                                         const Eigen::MatrixXd& stiffness_matrix,
+                                         const Eigen::MatrixXd& g, const Eigen::MatrixXd& kc,
+                                         const std::vector<unsigned int>& free,
+                                         double carrier_speed)
 {
   const unsigned int nf = free.size();
-  const Eigen::MatrixXd g = gyroscopic(), kc = centripetal();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * nf, 2 * nf);
   for (unsigned int i = 0; i < nf; ++i)
   {
@@ -517,15 +523,44 @@ std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) c
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, false);
   if (solver.info() != Eigen::Success)
     throw SolverFailure("lateral gyroscopic modes", "the eigensolver did not converge");
+  return solver.eigenvalues();
+}
+} // namespace
+
+std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) const
+{
+  const Eigen::VectorXcd roots = first_order_eigenvalues(
+      mass_diagonal, stiffness_matrix, gyroscopic(), centripetal(), free, carrier_speed);
   std::vector<double> all;
-  for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i)
-    all.push_back(std::abs(solver.eigenvalues()[i].imag()) / (2. * M_PI));
+  for (Eigen::Index i = 0; i < roots.size(); ++i)
+    all.push_back(std::abs(roots[i].imag()) / (2. * M_PI));
   std::sort(all.begin(), all.end());
   // Each frequency appears as a conjugate pair (a divergent or rigid mode as two real roots).
   std::vector<double> frequencies;
   for (std::size_t i = 0; i < all.size(); i += 2)
     frequencies.push_back(0.5 * (all[i] + all[i + 1]));
   return frequencies;
+}
+
+GyroscopicStability LateralModel::gyroscopic_stability(double carrier_speed) const
+{
+  const Eigen::VectorXcd roots = first_order_eigenvalues(
+      mass_diagonal, stiffness_matrix, gyroscopic(), centripetal(), free, carrier_speed);
+  double largest = 0.;
+  Eigen::Index fastest = 0;
+  for (Eigen::Index i = 0; i < roots.size(); ++i)
+  {
+    largest = std::max(largest, std::abs(roots[i]));
+    if (roots[i].real() > roots[fastest].real())
+      fastest = i;
+  }
+  GyroscopicStability result;
+  if (roots.size() == 0 || !(roots[fastest].real() > 1e-5 * largest))
+    return result;
+  result.stable = false;
+  result.growth_rate = roots[fastest].real();
+  result.oscillating = std::abs(roots[fastest].imag()) > 1e-5 * largest;
+  return result;
 }
 
 Eigen::VectorXd constrained_deflection(const Eigen::VectorXd& mass,
