@@ -243,10 +243,11 @@ void report_sweep(const LateralParameters& p, const LateralModel& model, double 
                            " (" + format_number(seconds_per_step * 1e6, 3) +
                            " µs an RK4 step, measured on the response run)";
   if (estimate > limits::max_run_seconds)
-    throw InputError("Speed sweep/points", "the sweep would take " + work + ", over the limit of " +
-                                               format_number(limits::max_run_seconds, 4) +
-                                               " s (docs/limits.md): fewer points, a shorter Simulation/steady "
-                                               "state start or more damping");
+    throw InputError("Speed sweep/points",
+                     "the sweep would take " + work + ", over the limit of " +
+                         format_number(limits::max_run_seconds, 4) +
+                         " s (docs/limits.md): fewer points, a shorter Simulation/steady "
+                         "state start or more damping");
   context.progress("dynamics lateral sweep", "estimate: " + work);
   const auto progress = context.progress_counter("dynamics lateral sweep", runs);
   const LateralSweepResult sweep =
@@ -392,8 +393,8 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
       std::vector<std::string> arguments{"campbell", csv.path()};
       std::optional<TemporaryCsv> crossings;
       const auto& tables = report.tables();
-      if (std::any_of(tables.begin(), tables.end(), [](const ReportTable& t)
-                      { return t.name == "lateral_campbell_crossings"; }))
+      if (std::any_of(tables.begin(), tables.end(),
+                      [](const ReportTable& t) { return t.name == "lateral_campbell_crossings"; }))
         arguments.push_back(crossings.emplace(report, "lateral_campbell_crossings").path());
       context.plot("plot_lateral.py", arguments, "lateral_campbell.png",
                    "natural frequencies over carrier speed (gyroscopic), crossings circled, "

@@ -2,12 +2,11 @@
 // simulation, the speed sweep and the ISO 6336-1 method B comparison. Parameter files use
 // engineering units (rpm, mm, N/mm, µs, degrees); parse_dynamics_parameters converts to SI.
 #pragma once
-#include <cmath>
-
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/simulation.h"
 #include "dynamics/train_model.h"
 
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <optional>
 #include <string>

@@ -138,9 +138,9 @@ void report_summary(Report& report, const stiffness::FaultSweepResult& r, stiffn
 // fault, so an own case's table could not be told from the built-in crack's).
 std::string fault_description(const StiffnessParameters& p, const stiffness::FaultSweepSpec& spec)
 {
-  const auto& by_tooth = (spec.wheel ? p.settings.scene.wheel_modifications
-                                     : p.settings.scene.pinion_modifications)
-                             .by_tooth;
+  const auto& by_tooth =
+      (spec.wheel ? p.settings.scene.wheel_modifications : p.settings.scene.pinion_modifications)
+          .by_tooth;
   std::string text = std::string(spec.wheel ? "wheel" : "pinion") + " tooth " +
                      std::to_string(spec.faulty_tooth) + ":";
   for (const auto& m : by_tooth.at(spec.faulty_tooth))

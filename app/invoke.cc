@@ -8,10 +8,10 @@
 #include "errors/io.h"
 #include "fem/parallel.h"
 
+#include <cstdlib>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>

@@ -349,9 +349,9 @@ std::map<std::string, double> apply_blanks(ParameterHandler& prm, kinematics::Ge
   }
   for (const auto& [name, width] : face_widths)
   {
-    const auto m = std::find_if(spec.members.begin(), spec.members.end(),
-                                [&, n = name](const kinematics::TrainMember& t)
-                                { return t.name == n; });
+    const auto m =
+        std::find_if(spec.members.begin(), spec.members.end(),
+                     [&, n = name](const kinematics::TrainMember& t) { return t.name == n; });
     if (m == spec.members.end())
       throw InputError("Train/face widths", "'" + name + "' is not a gear of the train");
     const dynamics::BlankInertia blank = dynamics::blank_inertia(
@@ -401,11 +401,11 @@ void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
         gear.module > 0. ? kinematics::working_centre_distance(a, b, pressure_angle) : 0.,
         iso_approximate_single_stiffness * width);
     if (automatic_stiffness_used(prm, m))
-      p.notes.push_back("Train mesh " + std::to_string(m + 1) + "/stiffness = " +
-                        format_number(iso_approximate_single_stiffness * width / 1e6, 5) +
-                        " N/µm (auto: ISO 6336-1 c' = 14 N/(mm·µm) × b = " +
-                        format_number(width / mm, 5) + " mm from " +
-                        (own_width ? "Train/face widths" : "ISO 6336/face width") + ")");
+      p.notes.push_back(
+          "Train mesh " + std::to_string(m + 1) +
+          "/stiffness = " + format_number(iso_approximate_single_stiffness * width / 1e6, 5) +
+          " N/µm (auto: ISO 6336-1 c' = 14 N/(mm·µm) × b = " + format_number(width / mm, 5) +
+          " mm from " + (own_width ? "Train/face widths" : "ISO 6336/face width") + ")");
     const bool sun = other == p.sun;
     // The FE pinion drove in the table; where the other gear drives here the contact runs the
     // path the other way: k(ε_α − x), and the TE likewise (the train model's rule).

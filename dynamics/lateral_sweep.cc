@@ -56,7 +56,8 @@ LateralSweepPoint diverged_point(const SolverFailure& failure)
       frequency = modes.frequencies[k];
       break;
     }
-  const std::string mode = "the " + format_number(frequency, 5) + " Hz mode has no damping, so "
+  const std::string mode = "the " + format_number(frequency, 5) +
+                           " Hz mode has no damping, so "
                            "the start-up transient never decays";
   const LateralStage& stage = model.stage();
   if (stage.sun_mesh_damping > 0. && stage.ring_mesh_damping > 0.)
