@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <sstream>
 
 namespace gearstiff::dynamics
@@ -544,22 +545,33 @@ std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) c
 
 GyroscopicStability LateralModel::gyroscopic_stability(double carrier_speed) const
 {
-  const Eigen::VectorXcd roots = first_order_eigenvalues(
-      mass_diagonal, stiffness_matrix, gyroscopic(), centripetal(), free, carrier_speed);
+  const Eigen::MatrixXd g = gyroscopic(), kc = centripetal();
+  const Eigen::VectorXcd roots =
+      first_order_eigenvalues(mass_diagonal, stiffness_matrix, g, kc, free, carrier_speed);
+  const Eigen::VectorXcd still =
+      first_order_eigenvalues(mass_diagonal, stiffness_matrix, g, kc, free, 0.);
   double largest = 0.;
-  Eigen::Index fastest = 0;
-  for (Eigen::Index i = 0; i < roots.size(); ++i)
-  {
-    largest = std::max(largest, std::abs(roots[i]));
-    if (roots[i].real() > roots[fastest].real())
-      fastest = i;
-  }
+  for (Eigen::Index i = 0; i < still.size(); ++i)
+    largest = std::max(largest, std::abs(still[i]));
+  // The rigid rotation's double zero root turns into a real pair ±a·Ω with the carrier turning
+  // (a ≈ 0.46 on Lin & Parker's stage, whatever the pins): a drift of the free rotation, not an
+  // instability of the elastic stage. The roots that are zero at standstill are set aside, the
+  // smallest |λ| at this speed standing for them.
+  std::size_t rigid = 0;
+  for (Eigen::Index i = 0; i < still.size(); ++i)
+    rigid += std::abs(still[i]) <= 1e-5 * largest;
+  std::vector<std::complex<double>> sorted(roots.data(), roots.data() + roots.size());
+  std::sort(sorted.begin(), sorted.end(),
+            [](const std::complex<double>& a, const std::complex<double>& b)
+            { return std::abs(a) < std::abs(b); });
   GyroscopicStability result;
-  if (roots.size() == 0 || !(roots[fastest].real() > 1e-5 * largest))
-    return result;
-  result.stable = false;
-  result.growth_rate = roots[fastest].real();
-  result.oscillating = std::abs(roots[fastest].imag()) > 1e-5 * largest;
+  for (std::size_t i = rigid; i < sorted.size(); ++i)
+    if (sorted[i].real() > 1e-5 * largest && sorted[i].real() > result.growth_rate)
+    {
+      result.stable = false;
+      result.growth_rate = sorted[i].real();
+      result.oscillating = std::abs(sorted[i].imag()) > 1e-5 * largest;
+    }
   return result;
 }
 

@@ -133,9 +133,10 @@ struct LateralStaticState
 };
 
 // Stability of the undamped stage with the gyroscopic and centripetal terms at one carrier
-// speed. Unstable when the largest real part of the eigenvalues λ of the first-order form
-// exceeds 1e-5 of the largest |λ|: the rigid rotation's double zero root scatters by
-// √round-off (1e-3 Hz, tests/dynamics/test_lateral_model.cc), far below that.
+// speed. Unstable when a real part of the eigenvalues λ of the first-order form exceeds 1e-5 of
+// the largest |λ| at standstill (round-off: the rigid rotation's double zero root scatters by
+// √round-off, 1e-3 Hz, tests/dynamics/test_lateral_model.cc); the roots of the rigid rotation
+// itself are set aside (a drift of the free stage, not an instability).
 struct GyroscopicStability
 {
   bool stable = true;
