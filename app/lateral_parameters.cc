@@ -328,6 +328,36 @@ bool automatic_stiffness_used(ParameterHandler& prm, unsigned int m)
   return automatic;
 }
 
+// damping = auto of Train mesh m+1 (issue 44: the lateral stage read it as no damping at all,
+// so no speed sweep could settle): c = 2ζ·√(k·m_e), m_e = 1/(r_b,g²/J_g + r_b,p²/J_p) of the
+// mesh's gears (a member without J adds nothing), as the train model's damping ratio does.
+double automatic_damping(ParameterHandler& prm, unsigned int m, double stiffness,
+                         const dynamics::LateralCentralMember& gear,
+                         const dynamics::LateralStage& stage, LateralParameters& p)
+{
+  prm.enter_subsection(train_mesh_section(m));
+  const bool automatic = prm.get("damping") == "auto";
+  const double ratio = prm.get_double("damping ratio");
+  prm.leave_subsection();
+  if (!automatic)
+    return 0.;
+  double compliance = 0.; // Σ r_b²/J [1/kg]
+  if (gear.moment_of_inertia > 0.)
+    compliance += gear.radius * gear.radius / gear.moment_of_inertia;
+  if (stage.planet_moment_of_inertia > 0.)
+    compliance +=
+        stage.planet_base_radius * stage.planet_base_radius / stage.planet_moment_of_inertia;
+  if (!(compliance > 0.))
+    throw InputError(train_mesh_section(m) + "/damping",
+                     "auto needs the inertias of the mesh's gears (Train/inertias or a blank in "
+                     "Train/face widths); or give the damping in N·s/m");
+  const double damping = 2. * ratio * std::sqrt(stiffness / compliance);
+  p.notes.push_back(train_mesh_section(m) + "/damping = " + format_number(damping, 5) +
+                    " N·s/m (auto: ζ = " + format_number(ratio, 3) +
+                    " of the mean stiffness and the gears' inertias)");
+  return damping;
+}
+
 // Train/face widths and bore diameters: the J and mass of a member that Train/inertias and
 // masses leave at 0 come from its steel blank, as in the train model (issue 44: "the mass of
 // the ring must be positive (is 0)" although its blank was given). Returns the face widths [m].
@@ -427,7 +457,10 @@ void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
     (sun ? p.excitation.sun_mesh : p.excitation.ring_mesh) = law.curve;
     (sun ? p.excitation.sun_contact_ratio : p.excitation.ring_contact_ratio) = mean.contact_ratio;
     (sun ? stage.sun_mesh_stiffness : stage.ring_mesh_stiffness) = mean.stiffness;
-    (sun ? stage.sun_mesh_damping : stage.ring_mesh_damping) = mean.damping;
+    (sun ? stage.sun_mesh_damping : stage.ring_mesh_damping) =
+        mean.damping > 0.
+            ? mean.damping
+            : automatic_damping(prm, m, mean.stiffness, sun ? stage.sun : stage.ring, stage, p);
     p.notes.push_back("Train mesh " + std::to_string(m + 1) + " (" + other + "-" + planet.name +
                       "): " + mean.description);
   }
