@@ -29,7 +29,7 @@ from scipy.optimize import brentq
 parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                  formatter_class=argparse.ArgumentDefaultsHelpFormatter)
 parser.add_argument("pair", nargs="?", default=None,
-                    help="your pair's .prm file (default: the built-in split-path pair)")
+                    help="your pair's .prm file; None: the built-in split-path pair")
 parser.add_argument("--target", type=float, default=None,
                     help="target k'_j [N/µm] (default: ISO 6336-1 c'·b of the pair)")
 parser.add_argument("--chart", default="pinion_bore.png", help="PNG of k'_j(bore)")

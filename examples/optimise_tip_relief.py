@@ -32,7 +32,7 @@ from scipy.optimize import minimize_scalar
 parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                  formatter_class=argparse.ArgumentDefaultsHelpFormatter)
 parser.add_argument("pair", nargs="?", default=None,
-                    help="your pair's .prm file (default: the built-in split-path pair)")
+                    help="your pair's .prm file; None: the built-in split-path pair")
 parser.add_argument("--torque", type=float, default=400.0, help="design pinion torque [N·m]")
 parser.add_argument("--max-relief", type=float, default=40.0, help="upper bound of C_a [µm]")
 parser.add_argument("--positions", type=int, default=8, help="sweep positions per evaluation")

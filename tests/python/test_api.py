@@ -392,6 +392,22 @@ def test_tmpdir_not_a_folder_same_message(tmp_path, kind):
     assert not out.exists()
 
 
+@pytest.mark.parametrize("script,default", [("optimise_tip_relief.py", "(default: 400.0)"),
+                                            ("design_pinion_bore.py", "(default: pinion_bore.png)")])
+def test_examples_take_a_pair_file_and_show_defaults(tmp_path, script, default):
+    """Issue 44: the examples ran the built-in pair only and their --help showed no defaults."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "examples", script)
+    done = subprocess.run([sys.executable, path, "--help"], capture_output=True, text=True,
+                          timeout=120, env=ENVIRONMENT)
+    assert done.returncode == 0, done.stderr
+    assert default in " ".join(done.stdout.split()), done.stdout
+    assert "your pair's .prm file" in done.stdout
+    missing = str(tmp_path / "nothing.prm")
+    done = subprocess.run([sys.executable, path, missing], capture_output=True, text=True,
+                          timeout=120, env=ENVIRONMENT)
+    assert done.returncode == 1 and missing in done.stderr, done.stderr
+
+
 # ------------------------------------------------------------------ print_parameters
 
 def test_print_parameters():
