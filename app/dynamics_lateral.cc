@@ -9,10 +9,12 @@
 #include "dynamics/lateral_sweep.h"
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "errors/limits.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace gearstiff::app
 {
@@ -159,6 +161,20 @@ void report_crossings(const LateralParameters& p, const LateralModel& model,
                    "mesh frequency per carrier speed (order 1 line)");
 }
 
+// The Campbell table's unstable speeds (`first_unstable` [rad/s], −1: none) in words.
+void report_instability(unsigned int unstable, double first_unstable, unsigned int points,
+                        Report& report)
+{
+  report.add_value("campbell_unstable_speeds", unstable, "-",
+                   "carrier speeds of the Campbell table (of " + std::to_string(points) +
+                       ") where the undamped stage is unstable (divergence or flutter)");
+  if (unstable > 0)
+    report.add_text("campbell stability",
+                    "unstable from a carrier speed of " + format_number(first_unstable / rpm, 6) +
+                        " rpm: the frequencies there are |Im λ| of growing roots, not "
+                        "vibration frequencies (column stability, growth_rate)");
+}
+
 void report_campbell(const LateralParameters& p, const LateralModel& model, Report& report)
 {
   // From standstill to twice the nominal carrier speed (or 1000 rpm when the carrier is held).
@@ -177,19 +193,32 @@ void report_campbell(const LateralParameters& p, const LateralModel& model, Repo
     columns.push_back("mesh_order_" + std::to_string(k));
     units.push_back("Hz");
   }
+  // |Im λ| alone reads a divergent or fluttering mode as a frequency: each speed says whether
+  // the undamped stage is stable there.
+  columns.insert(columns.end(), {"stability", "growth_rate"});
+  units.insert(units.end(), {"-", "1/s"});
   auto& table = report.add_table("lateral_campbell", columns, units);
+  table.set_categories("stability", {{0, "stable"}, {1, "divergence"}, {2, "flutter"}});
   std::vector<double> speeds;
   std::vector<std::vector<double>> frequencies;
+  double first_unstable = -1.;
+  unsigned int unstable = 0;
   for (unsigned int i = 0; i < points; ++i)
   {
     speeds.push_back(top * i / (points - 1));
     frequencies.push_back(model.gyroscopic_frequencies(speeds.back()));
+    const dynamics::GyroscopicStability stability = model.gyroscopic_stability(speeds.back());
     std::vector<double> row{speeds.back() / rpm};
     row.insert(row.end(), frequencies.back().begin(), frequencies.back().end());
     for (unsigned int k = 1; orders && k <= campbell_mesh_orders; ++k)
       row.push_back(k * p.excitation.mesh_frequency * speeds.back() / std::abs(p.carrier_speed));
+    row.push_back(stability.stable ? 0. : stability.oscillating ? 2. : 1.);
+    row.push_back(stability.growth_rate);
     table.add_row(row);
+    if (!stability.stable && unstable++ == 0)
+      first_unstable = speeds.back();
   }
+  report_instability(unstable, first_unstable, points, report);
   if (orders)
     report_crossings(p, model, speeds, frequencies, report);
   const std::vector<double> nominal = model.gyroscopic_frequencies(p.carrier_speed);
@@ -200,11 +229,26 @@ void report_campbell(const LateralParameters& p, const LateralModel& model, Repo
 }
 
 // Speed sweep: K_v, bearing forces and orbit amplitudes against the input speed.
-void report_sweep(const LateralParameters& p, const LateralModel& model, CommandContext& context)
+// `seconds_per_step` [s]: measured on this model by the response run, so the estimate stated
+// (and checked) before the first speed holds for this stage's size and mesh law.
+void report_sweep(const LateralParameters& p, const LateralModel& model, double seconds_per_step,
+                  CommandContext& context)
 {
   Report& report = context.report;
   const unsigned int runs =
       p.sweep_points * (p.sweep.direction == dynamics::SweepDirection::both ? 2 : 1);
+  const double estimate =
+      lateral_sweep_work(model, p.excitation, p.run, p.sweep).steps * seconds_per_step;
+  const std::string work = std::to_string(runs) + " runs, ~" + format_number(estimate, 3) + " s" +
+                           " (" + format_number(seconds_per_step * 1e6, 3) +
+                           " µs an RK4 step, measured on the response run)";
+  if (estimate > limits::max_run_seconds)
+    throw InputError("Speed sweep/points",
+                     "the sweep would take " + work + ", over the limit of " +
+                         format_number(limits::max_run_seconds, 4) +
+                         " s (docs/limits.md): fewer points, a shorter Simulation/steady "
+                         "state start or more damping");
+  context.progress("dynamics lateral sweep", "estimate: " + work);
   const auto progress = context.progress_counter("dynamics lateral sweep", runs);
   const LateralSweepResult sweep =
       lateral_speed_sweep(model, p.load, p.excitation, p.run, p.sweep, progress);
@@ -250,7 +294,8 @@ void report_sweep(const LateralParameters& p, const LateralModel& model, Command
 }
 
 // RK4 on the lateral stage: orbits and bearing forces of the central members.
-void report_response(const LateralParameters& p, const LateralModel& model, Report& report)
+// Returns the measured wall time of one RK4 step [s].
+double report_response(const LateralParameters& p, const LateralModel& model, Report& report)
 {
   const LateralResponse r = integrate_lateral(model, p.load, p.excitation, p.run);
   auto& orbit = report.add_table(
@@ -287,6 +332,7 @@ void report_response(const LateralParameters& p, const LateralModel& model, Repo
                    "RK4 stability limit of the lateral model (largest mesh stiffness)");
   report.add_value("steps", double(r.steps), "-", "integration steps");
   report.add_value("integration_time", r.wall_time * 1e3, "ms", "wall time of the integration");
+  return r.steps > 0 ? r.wall_time / double(r.steps) : 0.;
 }
 } // namespace
 
@@ -315,11 +361,11 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
   report_statics(p, model, report);
   if (p.gyroscopic)
     report_campbell(p, model, report);
-  report_response(p, model, report);
+  const double seconds_per_step = report_response(p, model, report);
   report.add_value("ring_mesh_offset", p.ring_mesh_offset, "base pitches",
                    "each planet's ring mesh after its sun mesh (Parker & Lin 2004 phasing)");
   if (p.sweep_points > 0)
-    report_sweep(p, model, context);
+    report_sweep(p, model, seconds_per_step, context);
 
   if (context.writes_files())
   {
@@ -344,8 +390,15 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
     if (p.gyroscopic)
     {
       const TemporaryCsv csv(report, "lateral_campbell");
-      context.plot("plot_lateral.py", {"campbell", csv.path()}, "lateral_campbell.png",
-                   "natural frequencies over carrier speed (gyroscopic)");
+      std::vector<std::string> arguments{"campbell", csv.path()};
+      std::optional<TemporaryCsv> crossings;
+      const auto& tables = report.tables();
+      if (std::any_of(tables.begin(), tables.end(),
+                      [](const ReportTable& t) { return t.name == "lateral_campbell_crossings"; }))
+        arguments.push_back(crossings.emplace(report, "lateral_campbell_crossings").path());
+      context.plot("plot_lateral.py", arguments, "lateral_campbell.png",
+                   "natural frequencies over carrier speed (gyroscopic), crossings circled, "
+                   "unstable speeds shaded");
     }
   }
 }

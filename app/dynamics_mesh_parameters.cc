@@ -553,10 +553,12 @@ using namespace dynamics_input;
 
 // issue 30: the lateral model's view of a Train mesh (dynamics_parameters.h).
 TrainMeshMean parse_train_mesh_mean(ParameterHandler& prm, unsigned int m, double contact_ratio,
-                                    int teeth_a, int teeth_b, double module, double centre_distance)
+                                    int teeth_a, int teeth_b, double module, double centre_distance,
+                                    double automatic_stiffness)
 {
   const std::string section = train_mesh_section(m);
-  const MeshPhysics physics = parse_mesh_physics_section(prm, section, contact_ratio);
+  const MeshPhysics physics =
+      parse_mesh_physics_section(prm, section, contact_ratio, automatic_stiffness);
   const double ratio = physics.file ? physics.file->pair.contact_ratio : contact_ratio;
   TrainMeshMean mean{physics.stiffness.mean_stiffness(ratio),
                      physics.damping,

@@ -2,11 +2,11 @@
 // simulation, the speed sweep and the ISO 6336-1 method B comparison. Parameter files use
 // engineering units (rpm, mm, N/mm, µs, degrees); parse_dynamics_parameters converts to SI.
 #pragma once
-
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/simulation.h"
 #include "dynamics/train_model.h"
 
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <optional>
 #include <string>
@@ -84,7 +84,9 @@ struct TrainMeshMean
   // pinion (drove), 1 when gear b was; empty otherwise.
   std::optional<unsigned int> stiffness_driver;
 };
+// `automatic_stiffness` [N/m]: what 'stiffness = auto' stands for (NaN: auto not offered).
 TrainMeshMean parse_train_mesh_mean(dealii::ParameterHandler& prm, unsigned int m,
                                     double contact_ratio, int teeth_a = 0, int teeth_b = 0,
-                                    double module = 0., double centre_distance = 0.);
+                                    double module = 0., double centre_distance = 0.,
+                                    double automatic_stiffness = std::nan(""));
 } // namespace gearstiff::app

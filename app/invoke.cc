@@ -4,9 +4,11 @@
 #include "app/parameter_names.h"
 #include "app/units.h"
 #include "errors/errors.h"
+#include "errors/file_names.h"
 #include "errors/io.h"
 #include "fem/parallel.h"
 
+#include <cstdlib>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -125,6 +127,9 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
   }
   catch (const dealii::ExceptionBase& e)
   {
+    // deal.II's text ("does not match the given pattern: [Selection ...]") named neither the
+    // parameter nor the nearest value: a refused selection value is told as --set tells it.
+    check_selection_values(prm, file);
     throw InputError(name, one_line(deal_ii_message(e)));
   }
   return others.ignored;
@@ -186,11 +191,28 @@ void load_parameters(const Command& command, const Invocation& invocation,
     apply_override(prm, path, value);
 }
 
+void check_temporary_folder()
+{
+  const char* value = std::getenv("TMPDIR");
+  if (value == nullptr || *value == '\0')
+    return;
+  check_file_name(value, "TMPDIR");
+  std::error_code error;
+  if (!std::filesystem::is_directory(value, error))
+    throw InputError("TMPDIR", "'" + shortened(value) +
+                                   "' is not a folder (the temporary folder of Open MPI and of "
+                                   "gearstiff's scratch)");
+  if (access(value, W_OK | X_OK) != 0)
+    throw InputError("TMPDIR", "cannot write into '" + shortened(value) + "'");
+}
+
 Report run_loaded_command(const Command& command, dealii::ParameterHandler& prm,
                           const std::string& output_directory, MPI_Comm communicator,
                           std::ostream& progress, bool show_progress, bool quiet)
 {
   const bool root = dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
+  // The Python module reaches here without main's check (and TMPDIR may change in-process).
+  check_temporary_folder();
   // Output folder (checked before any work; created only on success).
   std::unique_ptr<StagedOutput> output;
   if (!output_directory.empty())

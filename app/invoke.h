@@ -44,6 +44,10 @@ struct Invocation
 void load_parameters(const Command& command, const Invocation& invocation,
                      dealii::ParameterHandler& prm);
 
+// TMPDIR holds Open MPI's session files and gearstiff's scratch: unset, empty or a writable
+// folder; else InputError("TMPDIR"). The command line checks it before MPI starts, and every run
+// (the Python module's too) before its first file.
+void check_temporary_folder();
 // Runs `command` with the loaded parameters (collective over `communicator`): the -o folder is
 // checked first and filled only on success. Progress goes to `progress` on rank 0 when
 // `show_progress`; `quiet` silences the plot scripts (as --json does). Returns the report.

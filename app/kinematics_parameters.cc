@@ -4,6 +4,9 @@
 #include "app/units.h"
 #include "errors/errors.h"
 
+#include <algorithm>
+#include <set>
+#include <sstream>
 #include <string>
 
 namespace gearstiff::app
@@ -203,6 +206,24 @@ const TrainTextEntry train_mass_entries[] = {
      "'name: m, ...' [kg], one copy, counts where its axis moves (optional)"}};
 } // namespace
 
+namespace
+{
+// The names of a 'name: value, ...' or 'name, ...' list.
+std::set<std::string> listed_names(const std::string& text)
+{
+  std::set<std::string> names;
+  std::istringstream items(text);
+  for (std::string item; std::getline(items, item, ',');)
+  {
+    item = item.substr(0, item.find(':'));
+    const auto first = item.find_first_not_of(" \t");
+    if (first != std::string::npos)
+      names.insert(item.substr(first, item.find_last_not_of(" \t") + 1 - first));
+  }
+  return names;
+}
+} // namespace
+
 void declare_train_parameters(dealii::ParameterHandler& prm)
 {
   const kinematics::GearTrainText train = kinematics::builtin_train("bi-planetary");
@@ -233,6 +254,20 @@ TrainParameters parse_train_parameters(dealii::ParameterHandler& prm)
   p.tooth_friction = prm.get_double("tooth friction coefficient");
   p.reduce_to = prm.get("reduce inertia to");
   prm.leave_subsection();
+  // Optional lists left at defaults that name the built-in train's members (1 … 7, h, H) mean
+  // nothing once Train/gears and carriers name others (issue 44: "Train/modules: unknown member
+  // '1'" for a user who never set modules): such a default is read as empty.
+  const kinematics::GearTrainText builtin = kinematics::builtin_train("bi-planetary");
+  const std::set<std::string> members = listed_names(p.text.gears + "," + p.text.carriers);
+  for (std::string Text::*text :
+       {&Text::modules, &Text::profile_shifts, &Text::inertias, &Text::masses})
+  {
+    if (p.text.*text != builtin.*text)
+      continue;
+    const std::set<std::string> named = listed_names(p.text.*text);
+    if (!std::includes(members.begin(), members.end(), named.begin(), named.end()))
+      p.text.*text = "";
+  }
   return p;
 }
 } // namespace gearstiff::app

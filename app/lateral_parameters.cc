@@ -1,6 +1,7 @@
 #include "app/lateral_parameters.h"
 
 #include "app/dynamics_parameters.h"
+#include "app/dynamics_parameters_internal.h"
 #include "app/kinematics_parameters.h"
 #include "app/train_parameter_entries.h"
 #include "app/units.h"
@@ -18,6 +19,8 @@ namespace
 {
 using dealii::ParameterHandler;
 using NamedValues = std::map<std::string, std::vector<double>>;
+using dynamics_input::iso_approximate_single_stiffness;
+using dynamics_input::train_mesh_section;
 
 // parse_named_numbers (any sign: the model names the parameter of a negative value; a name
 // given twice refused) as a map.
@@ -316,12 +319,94 @@ bool sun_drives(const kinematics::GearTrainSpec& spec, const kinematics::TrainSo
   return sun_per_input * p.load.input_torque * (solution.speed(p.sun) - p.carrier_speed) > 0.;
 }
 
+// Whether Train mesh m+1 reads `stiffness = auto`.
+bool automatic_stiffness_used(ParameterHandler& prm, unsigned int m)
+{
+  prm.enter_subsection(train_mesh_section(m));
+  const bool automatic = prm.get("stiffness") == "auto";
+  prm.leave_subsection();
+  return automatic;
+}
+
+// damping = auto of Train mesh m+1 (issue 44: the lateral stage read it as no damping at all,
+// so no speed sweep could settle): c = 2ζ·√(k·m_e), m_e = 1/(r_b,g²/J_g + r_b,p²/J_p) of the
+// mesh's gears (a member without J adds nothing), as the train model's damping ratio does.
+double automatic_damping(ParameterHandler& prm, unsigned int m, double stiffness,
+                         const dynamics::LateralCentralMember& gear,
+                         const dynamics::LateralStage& stage, LateralParameters& p)
+{
+  prm.enter_subsection(train_mesh_section(m));
+  const bool automatic = prm.get("damping") == "auto";
+  const double ratio = prm.get_double("damping ratio");
+  prm.leave_subsection();
+  if (!automatic)
+    return 0.;
+  double compliance = 0.; // Σ r_b²/J [1/kg]
+  if (gear.moment_of_inertia > 0.)
+    compliance += gear.radius * gear.radius / gear.moment_of_inertia;
+  if (stage.planet_moment_of_inertia > 0.)
+    compliance +=
+        stage.planet_base_radius * stage.planet_base_radius / stage.planet_moment_of_inertia;
+  if (!(compliance > 0.))
+    throw InputError(train_mesh_section(m) + "/damping",
+                     "auto needs the inertias of the mesh's gears (Train/inertias or a blank in "
+                     "Train/face widths); or give the damping in N·s/m");
+  const double damping = 2. * ratio * std::sqrt(stiffness / compliance);
+  p.notes.push_back(train_mesh_section(m) + "/damping = " + format_number(damping, 5) +
+                    " N·s/m (auto: ζ = " + format_number(ratio, 3) +
+                    " of the mean stiffness and the gears' inertias)");
+  return damping;
+}
+
+// Train/face widths and bore diameters: the J and mass of a member that Train/inertias and
+// masses leave at 0 come from its steel blank, as in the train model (issue 44: "the mass of
+// the ring must be positive (is 0)" although its blank was given). Returns the face widths [m].
+std::map<std::string, double> apply_blanks(ParameterHandler& prm, kinematics::GearTrainSpec& spec,
+                                           LateralParameters& p)
+{
+  prm.enter_subsection("Train");
+  const std::string widths = prm.get("face widths"), bores = prm.get("bore diameters");
+  const double density = prm.get_double("density");
+  prm.leave_subsection();
+  std::map<std::string, double> face_widths, bore_diameters;
+  for (const auto& [name, v] : parse_named_numbers(widths, 1, "Train/face widths", "b"))
+    face_widths[name] = v[0] * mm;
+  for (const auto& [name, v] : parse_named_numbers(bores, 1, "Train/bore diameters", "d"))
+  {
+    if (!face_widths.count(name))
+      throw InputError("Train/bore diameters", "'" + name + "' has no face width");
+    bore_diameters[name] = v[0] * mm;
+  }
+  for (const auto& [name, width] : face_widths)
+  {
+    const auto m =
+        std::find_if(spec.members.begin(), spec.members.end(),
+                     [&, n = name](const kinematics::TrainMember& t) { return t.name == n; });
+    if (m == spec.members.end())
+      throw InputError("Train/face widths", "'" + name + "' is not a gear of the train");
+    const dynamics::BlankInertia blank = dynamics::blank_inertia(
+        *m, {name, width, bore_diameters.count(name) ? bore_diameters.at(name) : 0.}, density,
+        "Train/bore diameters");
+    if (!(m->moment_of_inertia > 0.))
+      m->moment_of_inertia = blank.moment_of_inertia;
+    if (!(m->mass > 0.))
+      m->mass = blank.mass;
+    p.notes.push_back("blank of " + name + ": J = " + format_number(m->moment_of_inertia, 6) +
+                      " kg·m², m = " + format_number(m->mass, 6) + " kg (b = " +
+                      format_number(width / mm, 5) + " mm; Train/inertias and masses win)");
+  }
+  return face_widths;
+}
+
 // Meshes: the mean stiffness of Train mesh 1 and 2 along the lines of action.
 void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
                  const kinematics::TrainMember& planet, double pressure_angle, bool drives,
-                 LateralParameters& p)
+                 LateralParameters& p, const std::map<std::string, double>& face_widths = {})
 {
   dynamics::LateralStage& stage = p.stage;
+  prm.enter_subsection("ISO 6336");
+  const double iso_face_width = prm.get_double("face width") * mm;
+  prm.leave_subsection();
   for (std::size_t m = 0; m < spec.meshes.size(); ++m)
   {
     const kinematics::TrainMesh& mesh = spec.meshes[m];
@@ -332,9 +417,25 @@ void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
             ? dynamics::standard_mesh(gear, planet, pressure_angle, 0).contact_ratio
             : 1.5;
     const kinematics::TrainMember &a = member(spec, mesh.gear_a), &b = member(spec, mesh.gear_b);
+    // stiffness = auto, as for a train mesh: ISO 6336-1's c' times the smaller face width of
+    // the two gears (Train/face widths), else ISO 6336/face width.
+    double width = 0.;
+    for (const std::string& name : {mesh.gear_a, mesh.gear_b})
+      if (face_widths.count(name) && (width == 0. || face_widths.at(name) < width))
+        width = face_widths.at(name);
+    const bool own_width = width > 0.;
+    if (!own_width)
+      width = iso_face_width;
     const TrainMeshMean mean = parse_train_mesh_mean(
         prm, m, contact_ratio, a.teeth, b.teeth, gear.module,
-        gear.module > 0. ? kinematics::working_centre_distance(a, b, pressure_angle) : 0.);
+        gear.module > 0. ? kinematics::working_centre_distance(a, b, pressure_angle) : 0.,
+        iso_approximate_single_stiffness * width);
+    if (automatic_stiffness_used(prm, m))
+      p.notes.push_back(
+          "Train mesh " + std::to_string(m + 1) +
+          "/stiffness = " + format_number(iso_approximate_single_stiffness * width / 1e6, 5) +
+          " N/µm (auto: ISO 6336-1 c' = 14 N/(mm·µm) × b = " + format_number(width / mm, 5) +
+          " mm from " + (own_width ? "Train/face widths" : "ISO 6336/face width") + ")");
     const bool sun = other == p.sun;
     // The FE pinion drove in the table; where the other gear drives here the contact runs the
     // path the other way: k(ε_α − x), and the TE likewise (the train model's rule).
@@ -356,7 +457,10 @@ void read_meshes(ParameterHandler& prm, const kinematics::GearTrainSpec& spec,
     (sun ? p.excitation.sun_mesh : p.excitation.ring_mesh) = law.curve;
     (sun ? p.excitation.sun_contact_ratio : p.excitation.ring_contact_ratio) = mean.contact_ratio;
     (sun ? stage.sun_mesh_stiffness : stage.ring_mesh_stiffness) = mean.stiffness;
-    (sun ? stage.sun_mesh_damping : stage.ring_mesh_damping) = mean.damping;
+    (sun ? stage.sun_mesh_damping : stage.ring_mesh_damping) =
+        mean.damping > 0.
+            ? mean.damping
+            : automatic_damping(prm, m, mean.stiffness, sun ? stage.sun : stage.ring, stage, p);
     p.notes.push_back("Train mesh " + std::to_string(m + 1) + " (" + other + "-" + planet.name +
                       "): " + mean.description);
   }
@@ -547,11 +651,13 @@ LateralParameters parse_lateral_parameters(ParameterHandler& prm)
   const LateralEntries entries = read_lateral_entries(prm, p);
   kinematics::GearTrainSpec spec = kinematics::parse_gear_train(train.text);
   spec.pressure_angle = entries.pressure_angle; // the working centre distances of shifted gears
+  const std::map<std::string, double> face_widths = apply_blanks(prm, spec, p);
   const kinematics::TrainSolution solution = kinematics::solve_train_kinematics(spec);
   const kinematics::TrainMember& planet = find_stage_members(spec, p);
   build_stage(spec, entries, planet, p);
   read_loads(spec, solution, train.input_torque, p);
-  read_meshes(prm, spec, planet, entries.pressure_angle, sun_drives(spec, solution, p), p);
+  read_meshes(prm, spec, planet, entries.pressure_angle, sun_drives(spec, solution, p), p,
+              face_widths);
   phase_meshes(spec, solution, entries.pressure_angle, p);
   read_run_settings(prm, p);
   read_sweep_settings(prm, p);

@@ -118,23 +118,14 @@ CommandLine parse_command_line(int argc, char** argv)
 // problem as an error line, or empty.
 std::string temporary_folder_problem()
 {
-  const char* value = std::getenv("TMPDIR");
-  if (value == nullptr || *value == '\0')
-    return "";
   try
   {
-    check_file_name(value, "TMPDIR");
+    check_temporary_folder();
   }
   catch (const InputError& e)
   {
     return e.what();
   }
-  std::error_code error;
-  if (!std::filesystem::is_directory(value, error))
-    return "TMPDIR: '" + shortened(value) +
-           "' is not a folder (the temporary folder of Open MPI and of gearstiff's scratch)";
-  if (access(value, W_OK | X_OK) != 0)
-    return "TMPDIR: cannot write into '" + shortened(value) + "'";
   return "";
 }
 

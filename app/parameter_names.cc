@@ -365,4 +365,72 @@ void check_parameter_file(const DeclaredSection& declared, const std::string& fi
   std::vector<std::string> sections;
   check_json_tree(declared, tree, sections, file, others, false);
 }
+namespace
+{
+// The selection value at `path` that its pattern refuses, as an InputError naming the parameter
+// (`where`: the file and line, or the file).
+void check_selection(const dealii::ParameterHandler& prm, const std::vector<std::string>& sections,
+                     const std::string& key, const std::string& value, const std::string& where)
+{
+  const std::string reason = selection_mismatch(prm, sections, key, value);
+  if (!reason.empty() && reason.find("'" + value + "'") == std::string::npos)
+    throw InputError(joined_path(sections, sections.size()) + (sections.empty() ? "" : "/") + key,
+                     "'" + value + "' (" + where + ") is " + reason);
+}
+
+void check_json_selections(const dealii::ParameterHandler& prm,
+                           const boost::property_tree::ptree& tree,
+                           std::vector<std::string>& sections, const std::string& file)
+{
+  for (const auto& [name, child] : tree)
+  {
+    if (child.empty() || child.count("value") > 0)
+    {
+      check_selection(prm, sections, name, child.empty() ? child.data() : child.get("value", ""),
+                      file);
+      continue;
+    }
+    sections.push_back(name);
+    check_json_selections(prm, child, sections, file);
+    sections.pop_back();
+  }
+}
+} // namespace
+
+void check_selection_values(const dealii::ParameterHandler& prm, const std::string& file)
+{
+  if (file.size() > 5 && file.substr(file.size() - 5) == ".json")
+  {
+    boost::property_tree::ptree tree;
+    try
+    {
+      boost::property_tree::read_json(file, tree);
+    }
+    catch (const std::exception&)
+    {
+      return;
+    }
+    std::vector<std::string> sections;
+    check_json_selections(prm, tree, sections, file);
+    return;
+  }
+  std::ifstream in(file);
+  std::vector<std::string> sections;
+  std::string line;
+  for (unsigned int number = 1; std::getline(in, line); ++number)
+  {
+    std::string text = line.substr(0, line.find('#'));
+    text = trimmed(text);
+    if (text.rfind("subsection ", 0) == 0)
+      sections.push_back(trimmed(text.substr(11)));
+    else if (text == "end" && !sections.empty())
+      sections.pop_back();
+    else if (text.rfind("set ", 0) == 0 && text.find('=') != std::string::npos)
+    {
+      const std::size_t equals = text.find('=');
+      check_selection(prm, sections, trimmed(text.substr(4, equals - 4)),
+                      trimmed(text.substr(equals + 1)), file + " line " + std::to_string(number));
+    }
+  }
+}
 } // namespace gearstiff::app

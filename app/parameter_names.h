@@ -53,6 +53,11 @@ std::string selection_mismatch(const dealii::ParameterHandler& prm,
                                const std::vector<std::string>& sections, const std::string& key,
                                const std::string& value);
 
+// After deal.II refused parameter file `file`: InputError naming the parameter (and the file
+// and line) for the first selection value (`set mode = swep`) its pattern does not allow, with
+// the allowed values and the nearest one; nothing when every selection value is allowed.
+void check_selection_values(const dealii::ParameterHandler& prm, const std::string& file);
+
 // The same for every `set` of a .prm file or every key of a .json file; the InputError names
 // the file and line (.prm) or the file and the key's path (.json). Lines it does not understand
 // are left to deal.II's parser. With `others`, names only other commands declare are listed

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <sstream>
 
 namespace gearstiff::dynamics
@@ -497,10 +498,16 @@ LateralModes LateralModel::modes(double relative_tolerance) const
   return result;
 }
 
-std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) const
+namespace
+{
+// Eigenvalues of the first-order form [q; q̇]' = A [q; q̇] of the free coordinates.
+Eigen::VectorXcd first_order_eigenvalues(const Eigen::VectorXd& mass_diagonal,
+                                         const Eigen::MatrixXd& stiffness_matrix,
+                                         const Eigen::MatrixXd& g, const Eigen::MatrixXd& kc,
+                                         const std::vector<unsigned int>& free,
+                                         double carrier_speed)
 {
   const unsigned int nf = free.size();
-  const Eigen::MatrixXd g = gyroscopic(), kc = centripetal();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * nf, 2 * nf);
   for (unsigned int i = 0; i < nf; ++i)
   {
@@ -517,15 +524,55 @@ std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) c
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, false);
   if (solver.info() != Eigen::Success)
     throw SolverFailure("lateral gyroscopic modes", "the eigensolver did not converge");
+  return solver.eigenvalues();
+}
+} // namespace
+
+std::vector<double> LateralModel::gyroscopic_frequencies(double carrier_speed) const
+{
+  const Eigen::VectorXcd roots = first_order_eigenvalues(
+      mass_diagonal, stiffness_matrix, gyroscopic(), centripetal(), free, carrier_speed);
   std::vector<double> all;
-  for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i)
-    all.push_back(std::abs(solver.eigenvalues()[i].imag()) / (2. * M_PI));
+  for (Eigen::Index i = 0; i < roots.size(); ++i)
+    all.push_back(std::abs(roots[i].imag()) / (2. * M_PI));
   std::sort(all.begin(), all.end());
   // Each frequency appears as a conjugate pair (a divergent or rigid mode as two real roots).
   std::vector<double> frequencies;
   for (std::size_t i = 0; i < all.size(); i += 2)
     frequencies.push_back(0.5 * (all[i] + all[i + 1]));
   return frequencies;
+}
+
+GyroscopicStability LateralModel::gyroscopic_stability(double carrier_speed) const
+{
+  const Eigen::MatrixXd g = gyroscopic(), kc = centripetal();
+  const Eigen::VectorXcd roots =
+      first_order_eigenvalues(mass_diagonal, stiffness_matrix, g, kc, free, carrier_speed);
+  const Eigen::VectorXcd still =
+      first_order_eigenvalues(mass_diagonal, stiffness_matrix, g, kc, free, 0.);
+  double largest = 0.;
+  for (Eigen::Index i = 0; i < still.size(); ++i)
+    largest = std::max(largest, std::abs(still[i]));
+  // The rigid rotation's double zero root turns into a real pair ±a·Ω with the carrier turning
+  // (a ≈ 0.46 on Lin & Parker's stage, whatever the pins): a drift of the free rotation, not an
+  // instability of the elastic stage. The roots that are zero at standstill are set aside, the
+  // smallest |λ| at this speed standing for them.
+  std::size_t rigid = 0;
+  for (Eigen::Index i = 0; i < still.size(); ++i)
+    rigid += std::abs(still[i]) <= 1e-5 * largest;
+  std::vector<std::complex<double>> sorted(roots.data(), roots.data() + roots.size());
+  std::sort(sorted.begin(), sorted.end(),
+            [](const std::complex<double>& a, const std::complex<double>& b)
+            { return std::abs(a) < std::abs(b); });
+  GyroscopicStability result;
+  for (std::size_t i = rigid; i < sorted.size(); ++i)
+    if (sorted[i].real() > 1e-5 * largest && sorted[i].real() > result.growth_rate)
+    {
+      result.stable = false;
+      result.growth_rate = sorted[i].real();
+      result.oscillating = std::abs(sorted[i].imag()) > 1e-5 * largest;
+    }
+  return result;
 }
 
 Eigen::VectorXd constrained_deflection(const Eigen::VectorXd& mass,

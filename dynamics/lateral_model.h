@@ -132,6 +132,18 @@ struct LateralStaticState
   std::vector<double> sun_load_sharing, ring_load_sharing;
 };
 
+// Stability of the undamped stage with the gyroscopic and centripetal terms at one carrier
+// speed. Unstable when a real part of the eigenvalues λ of the first-order form exceeds 1e-5 of
+// the largest |λ| at standstill (round-off: the rigid rotation's double zero root scatters by
+// √round-off, 1e-3 Hz, tests/dynamics/test_lateral_model.cc); the roots of the rigid rotation
+// itself are set aside (a drift of the free stage, not an instability).
+struct GyroscopicStability
+{
+  bool stable = true;
+  double growth_rate = 0.;  // largest Re λ [1/s] (0 when stable)
+  bool oscillating = false; // that root is complex (flutter); else real (divergence)
+};
+
 class LateralModel
 {
 public:
@@ -172,6 +184,9 @@ public:
   // `carrier_speed` [rad/s] (undamped, ascending, each complex pair once); a zero or imaginary
   // frequency (divergence) is returned as 0.
   std::vector<double> gyroscopic_frequencies(double carrier_speed) const;
+  // Whether the undamped stage at carrier speed `carrier_speed` [rad/s] is stable: |Im λ| alone
+  // reads a divergent or fluttering mode as a frequency (issue 42).
+  GyroscopicStability gyroscopic_stability(double carrier_speed) const;
 
   // Static solution; SolverFailure when the stage moves freely (a free translation).
   LateralStaticState static_state(const LateralStaticLoad& load) const;

@@ -43,7 +43,60 @@ LateralSweepPoint diverged_point(const SolverFailure& failure)
   s.orbit_amplitude.setConstant(nan);
   return point;
 }
+// The slowest mode has no damping: named by what would damp it. With mesh damping given the
+// undamped mode moves bearings only (issue 44: the message blamed the damped meshes).
+[[noreturn]] void throw_undamped(const LateralModel& model)
+{
+  const LateralModes modes = model.modes();
+  double frequency = 0.;
+  for (Eigen::Index k = 0; k < modes.frequencies.size(); ++k)
+    if (modes.frequencies[k] > 0. &&
+        !(modes.shapes.col(k).dot(model.damping() * modes.shapes.col(k)) > 0.))
+    {
+      frequency = modes.frequencies[k];
+      break;
+    }
+  const std::string mode = "the " + format_number(frequency, 5) +
+                           " Hz mode has no damping, so "
+                           "the start-up transient never decays";
+  const LateralStage& stage = model.stage();
+  if (stage.sun_mesh_damping > 0. && stage.ring_mesh_damping > 0.)
+    throw InputError("Train/bearing damping",
+                     mode + " (the meshes' damping does not reach it: it moves the bearings); "
+                            "give bearing damping 'name: c, ...' (N·s/m) for sun, ring and "
+                            "carrier, or Simulation/steady state start");
+  throw InputError("Train mesh 1/damping",
+                   mode + ": give the meshes' damping (Train mesh 1 and 2) or Simulation/steady "
+                          "state start");
+}
 } // namespace
+
+LateralSweepWork lateral_sweep_work(const LateralModel& model,
+                                    const LateralMeshExcitation& excitation,
+                                    const LateralRunSettings& run,
+                                    const LateralSweepSettings& sweep)
+{
+  if (!(sweep.nominal_input_speed != 0.) || !(excitation.mesh_frequency > 0.))
+    throw InputError("Speed sweep/points", "the stage's input and meshes must turn for a sweep");
+  LateralSweepWork work;
+  work.settle_time = sweep.settle_time >= 0. ? sweep.settle_time : lateral_decay_time(model);
+  if (!std::isfinite(work.settle_time))
+    throw_undamped(model);
+  const double directions = sweep.direction == SweepDirection::both ? 2. : 1.;
+  for (const double w : sweep.input_speeds)
+  {
+    const double f = excitation.mesh_frequency * std::abs(w / sweep.nominal_input_speed);
+    const double h = std::min(run.time_step, 1. / (f * sweep.steps_per_mesh_period));
+    work.steps += directions * (work.settle_time + sweep.window_periods / f) / h;
+  }
+  if (work.steps > 2e8)
+    throw InputError("Simulation/steady state start",
+                     "the sweep would need " + format_number(work.steps, 3) +
+                         " steps (limit 2e8): the slowest mode decays in " +
+                         format_number(work.settle_time, 3) +
+                         " s; give more damping or a shorter steady state start");
+  return work;
+}
 
 LateralSweepResult lateral_speed_sweep(const LateralModel& model, const LateralStaticLoad& load,
                                        const LateralMeshExcitation& excitation,
@@ -51,28 +104,8 @@ LateralSweepResult lateral_speed_sweep(const LateralModel& model, const LateralS
                                        const LateralSweepSettings& sweep,
                                        const std::function<void(const std::string&)>& progress)
 {
-  if (!(sweep.nominal_input_speed != 0.) || !(excitation.mesh_frequency > 0.))
-    throw InputError("Speed sweep/points", "the stage's input and meshes must turn for a sweep");
   LateralSweepResult result;
-  result.settle_time = sweep.settle_time >= 0. ? sweep.settle_time : lateral_decay_time(model);
-  if (!std::isfinite(result.settle_time))
-    throw InputError("Train mesh 1/damping", "without damping the start-up transient never "
-                                             "decays: give damping or Simulation/steady state "
-                                             "start");
-  double steps = 0.; // of the whole sweep, each speed at its own step
-  for (const double w : sweep.input_speeds)
-  {
-    const double f = excitation.mesh_frequency * std::abs(w / sweep.nominal_input_speed);
-    const double h = std::min(run.time_step, 1. / (f * sweep.steps_per_mesh_period));
-    steps += (result.settle_time + sweep.window_periods / f) / h;
-  }
-  if (steps > 2e8)
-    throw InputError("Simulation/steady state start",
-                     "the sweep would need " + format_number(steps, 3) +
-                         " steps (limit 2e8): the "
-                         "slowest mode decays in " +
-                         format_number(result.settle_time, 3) +
-                         " s; give more damping or a shorter steady state start");
+  result.settle_time = lateral_sweep_work(model, excitation, run, sweep).settle_time;
   std::vector<std::pair<double, bool>> order; // speed, descending
   if (sweep.direction != SweepDirection::down)
     for (const double w : sweep.input_speeds)

@@ -57,6 +57,19 @@ struct LateralSweepResult
   double settle_time = 0.; // [s] used before each window
 };
 
+// What a sweep will integrate, known before it starts: RK4 steps of every run (each speed at its
+// own step, both directions counted) and the settle time before each window [s]. Throws
+// InputError when the slowest mode never decays or the steps exceed 2e8.
+struct LateralSweepWork
+{
+  double steps = 0.;       // [-]
+  double settle_time = 0.; // [s]
+};
+LateralSweepWork lateral_sweep_work(const LateralModel& model,
+                                    const LateralMeshExcitation& excitation,
+                                    const LateralRunSettings& run,
+                                    const LateralSweepSettings& sweep);
+
 // `progress` (may be empty) is called after each speed with a line of text. A diverged speed
 // is recorded and the sweep goes on (continuation restarts from the static state); bad input
 // throws.

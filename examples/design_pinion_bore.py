@@ -8,18 +8,28 @@ which the single-pair mesh stiffness k'_j of the split-path pair (docs/reference
 a target — by default ISO 6336-1's c'·b for the same pair (from `gearstiff.gear_pair`), whose
 blank assumption the FE model then matches — and draws k'_j(bore).
 
-    PYTHONPATH=build/python /usr/bin/python3 examples/design_pinion_bore.py [--target 330] [--chart bore.png]
+    PYTHONPATH=build/python /usr/bin/python3 examples/design_pinion_bore.py [PAIR.prm] [--target 330] [--chart bore.png]
+
+PAIR.prm is your own pair (a .prm file as `gearstiff stiffness --print-parameters` writes it);
+without it, the built-in split-path pair. Each evaluation's settings are appended to a copy of
+it (the last `set` wins).
 
 Each evaluation is one in-process FE contact solve (2D, Q2 elements by default; --coarse: Q1 on a
 coarse mesh, for a quick look). Under `mpirun -np N` every rank runs the same script; only rank 0
 prints and draws. (examples/optimise_tip_relief.py is the tip-relief study that needs issue 27.)
 """
 import argparse
+import os
+import sys
+import tempfile
 
 import gearstiff
 from scipy.optimize import brentq
 
-parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+parser.add_argument("pair", nargs="?", default=None,
+                    help="your pair's .prm file; None: the built-in split-path pair")
 parser.add_argument("--target", type=float, default=None,
                     help="target k'_j [N/µm] (default: ISO 6336-1 c'·b of the pair)")
 parser.add_argument("--chart", default="pinion_bore.png", help="PNG of k'_j(bore)")
@@ -32,7 +42,37 @@ if arguments.coarse:
     base["Mesh"] = {"contact size": 0.2, "fine radius": 0.5, "body size": 1, "rim size": 3}
     base["Finite elements"] = {"Element degree": 1}
 
-pair = gearstiff.gear_pair()
+if arguments.pair and not (arguments.pair.endswith(".prm") and os.path.isfile(arguments.pair)):
+    sys.exit(f"{arguments.pair}: give your pair as an existing .prm file")
+PAIR_TEXT = open(arguments.pair).read() if arguments.pair else ""
+CASE = f"pair of {os.path.basename(arguments.pair)}" if arguments.pair else "split-path pair"
+
+
+def prm_text(settings, indent=""):
+    """A settings dict as .prm subsections."""
+    lines = []
+    for name, value in settings.items():
+        if isinstance(value, dict):
+            lines += [f"{indent}subsection {name}", prm_text(value, indent + "  "), f"{indent}end"]
+        else:
+            text = str(value).lower() if isinstance(value, bool) else str(value)
+            lines.append(f"{indent}set {name} = {text}")
+    return "\n".join(lines)
+
+
+def run(command, settings):
+    """gearstiff.<command> on the pair file (settings appended) or the built-in pair."""
+    if not arguments.pair:
+        return command(settings)
+    with tempfile.NamedTemporaryFile("w", suffix=".prm", delete=False) as f:
+        f.write(PAIR_TEXT + "\n" + prm_text(settings) + "\n")
+    try:
+        return command(f.name)
+    finally:
+        os.unlink(f.name)
+
+
+pair = run(gearstiff.gear_pair, {})
 root_diameter = pair["values"]["pinion_root_diameter"]["value"]  # mm
 module = float(pair["parameters"]["Gear pair"]["Pinion"]["module"])  # mm
 evaluations = []  # (bore [mm], k'_j [N/µm])
@@ -41,7 +81,7 @@ evaluations = []  # (bore [mm], k'_j [N/µm])
 def stiffness(bore):
     """Single-pair mesh stiffness k'_j [N/µm] with a pinion bore of `bore` mm."""
     params = {**base, "Gear pair": {"Pinion": {"bore diameter": bore}}}
-    k = gearstiff.stiffness(params)["values"]["mesh_stiffness"]["value"]
+    k = run(gearstiff.stiffness, params)["values"]["mesh_stiffness"]["value"]
     evaluations.append((bore, k))
     if root:
         print(f"  bore {bore:7.3f} mm: k'_j = {k:.4f} N/µm", flush=True)
@@ -80,7 +120,7 @@ if root and arguments.chart:
         ax.axvline(bore, color="C3", ls=":", label=f"bore {bore:.2f} mm")
         ax.set_xlabel("pinion bore diameter [mm]")
         ax.set_ylabel("single-pair mesh stiffness k'_j [N/µm]")
-        ax.set_title("Split-path pair: pinion shaft diameter against mesh stiffness")
+        ax.set_title(f"{CASE}: pinion shaft diameter against mesh stiffness", fontsize=9)
         ax.legend()
         fig.tight_layout()
         fig.savefig(arguments.chart, dpi=120)

@@ -7,7 +7,11 @@ carries alone for longer — the peak-to-peak transmission error (TE) has a mini
 relief that depends on the torque. This finds it with scipy.optimize.minimize_scalar (bounded) on
 FE k(θ) sweeps of `gearstiff.stiffness`, and draws TE peak-to-peak against C_a.
 
-    PYTHONPATH=build/python /usr/bin/python3 examples/optimise_tip_relief.py [--torque 400] [--chart te.png]
+    PYTHONPATH=build/python /usr/bin/python3 examples/optimise_tip_relief.py [PAIR.prm] [--torque 400] [--chart te.png]
+
+PAIR.prm is your own pair (a .prm as `gearstiff stiffness --print-parameters` writes it, or the
+pair file every command reads); without it, the built-in split-path pair. The relief and the
+sweep settings are appended to a copy of it for each evaluation (the last `set` wins).
 
 NEEDS the tip relief parameters of issue 27 (`Gear pair/Pinion/tip relief` [µm], `Stiffness/torques`,
 table `te_map`, column `te_peak_to_peak`): the script checks for them and stops with a message if
@@ -18,12 +22,17 @@ Every evaluation is one in-process sweep (positions over a base pitch); under `m
 rank runs the script and each sweep's positions are shared by the ranks (only rank 0 prints).
 """
 import argparse
+import os
 import sys
+import tempfile
 
 import gearstiff
 from scipy.optimize import minimize_scalar
 
-parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+parser.add_argument("pair", nargs="?", default=None,
+                    help="your pair's .prm file; None: the built-in split-path pair")
 parser.add_argument("--torque", type=float, default=400.0, help="design pinion torque [N·m]")
 parser.add_argument("--max-relief", type=float, default=40.0, help="upper bound of C_a [µm]")
 parser.add_argument("--positions", type=int, default=8, help="sweep positions per evaluation")
@@ -39,13 +48,38 @@ if "tip relief" not in declared["Gear pair"]["Pinion"] or "torques" not in decla
 evaluations = []  # (C_a [µm], TE peak-to-peak [µm])
 
 
+if arguments.pair and not arguments.pair.endswith(".prm"):
+    sys.exit(f"{arguments.pair}: give the pair as a .prm file (the settings are appended to it)")
+if arguments.pair and not os.path.isfile(arguments.pair):
+    sys.exit(f"{arguments.pair}: no such file")
+PAIR_TEXT = open(arguments.pair).read() if arguments.pair else ""
+CASE = (f"pair of {os.path.basename(arguments.pair)}" if arguments.pair
+        else "built-in split-path pair")
+
+
 def te_peak_to_peak(relief):
-    params = {
+    settings = {
         "Gear pair": {"Pinion": {"tip relief": relief}, "Wheel": {"tip relief": relief}},
         "Stiffness": {"mode": "sweep", "sweep positions": arguments.positions,
                       "torques": [arguments.torque], "published reference": False},
     }
-    te = gearstiff.stiffness(params)["tables"]["te_map"]
+    if arguments.pair:
+        # The user's pair with this evaluation's settings appended: deal.II keeps the last set.
+        text = PAIR_TEXT + (
+            f"\nsubsection Gear pair\n  subsection Pinion\n    set tip relief = {relief}\n  end\n"
+            f"  subsection Wheel\n    set tip relief = {relief}\n  end\nend\n"
+            f"subsection Stiffness\n  set mode = sweep\n"
+            f"  set sweep positions = {arguments.positions}\n"
+            f"  set torques = {arguments.torque}\n  set published reference = false\nend\n")
+        with tempfile.NamedTemporaryFile("w", suffix=".prm", delete=False) as f:
+            f.write(text)
+        try:
+            result = gearstiff.stiffness(f.name)
+        finally:
+            os.unlink(f.name)
+    else:
+        result = gearstiff.stiffness(settings)
+    te = result["tables"]["te_map"]
     value = float(te["data"]["te_peak_to_peak"][0])
     evaluations.append((relief, value))
     if root:
@@ -57,7 +91,8 @@ def te_peak_to_peak(relief):
 best = minimize_scalar(te_peak_to_peak, bounds=(0.0, arguments.max_relief), method="bounded",
                        options={"xatol": 0.5})
 if root:
-    print(f"tip relief minimising TE peak-to-peak at {arguments.torque:g} N·m: C_a = {best.x:.1f} µm "
+    print(f"{CASE}: tip relief minimising TE peak-to-peak at {arguments.torque:g} N·m: "
+          f"C_a = {best.x:.1f} µm "
           f"(TE p-p {best.fun:.4f} µm; without relief {te_peak_to_peak(0.0):.4f} µm), "
           f"{len(evaluations)} FE sweeps")
 
@@ -74,7 +109,7 @@ if root and arguments.chart:
     ax.axvline(best.x, color="C3", ls=":", label=f"optimum C_a = {best.x:.1f} µm")
     ax.set_xlabel("tip relief C_a [µm]")
     ax.set_ylabel("TE peak-to-peak [µm]")
-    ax.set_title(f"Split-path pair at {arguments.torque:g} N·m")
+    ax.set_title(f"Tip relief against TE: {CASE} at {arguments.torque:g} N·m", fontsize=9)
     ax.legend()
     fig.tight_layout()
     fig.savefig(arguments.chart, dpi=120)

@@ -5,8 +5,9 @@
 
 The VTU files are what `gearstiff stiffness` writes for a position (one per rank, deal.II
 DataOut: points, cells, point data `displacement`, `von_mises_stress`, `contact_pressure`; ASCII or
-zlib-compressed base64 binary). Left: the deformed bodies, displacement magnified so that the
-largest one shows as 2 % of the scene, coloured by von Mises stress. Right: a zoom on the
+zlib-compressed base64 binary), coordinates in mm. Left: the teeth about the loaded contact (a
+quarter of the scene across), displacement magnified so that the largest there shows as 2 % of
+the view, coloured by von Mises stress. Right: a zoom on the
 contact with the largest pressure, the contact pressure at the closed nodes as coloured dots
 over the deformed cells (true scale there). Plane (2D) scenes; for 3D the z = 0 face is drawn.
 Matplotlib, Agg backend; the PNG path is the last argument. Standard library otherwise.
@@ -102,11 +103,21 @@ def main():
             for i, p in enumerate(pressure):
                 if p > 0. and abs(xyz[i][2]) < 1e-12:
                     contact.append((xyz[i][0] + disp[i][0], xyz[i][1] + disp[i][1], p / 1e6))
+    # Millimetres: a gear's teeth are millimetres wide; metres made them specks on the axes.
+    base = [[(1e3 * x, 1e3 * y, 1e3 * dx, 1e3 * dy) for x, y, dx, dy in cell] for cell in base]
+    contact = [(1e3 * x, 1e3 * y, p) for x, y, p in contact]
     xs = [x for cell in base for x, _, _, _ in cell]
     ys = [y for cell in base for _, y, _, _ in cell]
     extent = max(max(xs) - min(xs), max(ys) - min(ys))
-    largest = max(max(abs(dx), abs(dy)) for cell in base for _, _, dx, dy in cell) or 1.
-    scale = 0.02 * extent / largest
+    peak = max(contact, key=lambda c: c[2]) if contact else None
+    # Left: the teeth about the loaded contact (a quarter of the scene across), not whole gears.
+    centre = (peak[0], peak[1]) if peak else (0.5 * (max(xs) + min(xs)), 0.5 * (max(ys) + min(ys)))
+    window = 0.125 * extent
+    near = [cell for cell in base
+            if any(abs(x - centre[0]) <= window and abs(y - centre[1]) <= window
+                   for x, y, _, _ in cell)] or base
+    largest = max(max(abs(dx), abs(dy)) for cell in near for _, _, dx, dy in cell) or 1.
+    scale = 0.02 * 2 * window / largest
     fig, (whole, zoom) = plt.subplots(1, 2, figsize=(13, 5.5))
     for ax, factor in ((whole, scale), (zoom, 1.)):
         shapes = [[(x + factor * dx, y + factor * dy) for x, y, dx, dy in cell] for cell in base]
@@ -117,12 +128,14 @@ def main():
         ax.add_collection(collection)
         ax.set_aspect("equal")
         ax.autoscale_view()
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("y [m]")
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel("y [mm]")
+    whole.set_xlim(centre[0] - window, centre[0] + window)
+    whole.set_ylim(centre[1] - window, centre[1] + window)
     fig.colorbar(whole.collections[0], ax=whole, label="von Mises stress [MPa]")
-    whole.set_title(f"deformed shape, displacement ×{scale:.3g}", fontsize=10)
+    whole.set_title(f"teeth about the contact, deformed, displacement ×{scale:.3g} "
+                    f"(largest {largest * 1e3:.3g} µm)", fontsize=10)
     if contact:
-        peak = max(contact, key=lambda c: c[2])
         # A few tenths of a millimetre: the loaded zone of a tooth contact and its cells.
         half = 0.004 * extent
         zoom.set_xlim(peak[0] - half, peak[0] + half)
@@ -134,6 +147,7 @@ def main():
                        "scale", fontsize=10)
     else:
         zoom.set_title("no closed contact node", fontsize=10)
+    fig.suptitle("Deformed teeth and contact pressure of the solved position", fontsize=11)
     fig.tight_layout()
     fig.savefig(png, dpi=130)
 

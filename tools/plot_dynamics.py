@@ -58,9 +58,37 @@ def kv_chart(path, window, png):
     fig.savefig(png, dpi=120)
 
 
+def vibration_chart(path, window, png, title=""):
+    """phi_i(t) in the steady-state window about each angle's straight-line fit: a free train's
+    angles drift (a rigid rotation at a slightly different mean speed, the static wind-up), which
+    on one axis hid the vibration; the removed drift rate is in the legend."""
+    header, c = read(path)
+    t = c[header[0]]
+    start, end = (float(x) for x in window.split(",")[:2])
+    rows = [i for i, time in enumerate(t) if start <= time <= end]
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    times = [t[i] for i in rows]
+    for h in header[1:]:
+        if not h.startswith("phi_") or len(rows) < 2:
+            continue
+        values = [c[h][i] for i in rows]
+        tm, vm = sum(times) / len(times), sum(values) / len(values)
+        sxx = sum((x - tm) ** 2 for x in times)
+        rate = sum((x - tm) * (v - vm) for x, v in zip(times, values)) / sxx if sxx > 0 else 0.
+        ax.plot(times, [v - vm - rate * (x - tm) for x, v in zip(times, values)], lw=0.7,
+                label="%s (mean %.4g µrad, drift %.4g µrad/s removed)" % (h.split(" [")[0], vm,
+                                                                           rate))
+    ax.set_title("Torsional vibration in the steady-state window, about each angle's mean and "
+                 "linear drift" + (" — " + title if title else ""), fontsize=9)
+    finish(fig, ax, "time [s]", "angle about its mean and drift [µrad]", png, "upper right", 7)
+
+
 def time_series(kind, path, window, png):
     if kind == "kv":
         kv_chart(path, window, png)
+        return
+    if kind == "vibration":
+        vibration_chart(path, window, png)
         return
     header, c = read(path)
     t = c[header[0]]
@@ -80,12 +108,30 @@ def time_series(kind, path, window, png):
             "stiffness": "mesh stiffness [N/µm]"}[kind], png)
 
 
-def resonance(path, png):
+def sweep_legs(speed):
+    """The row ranges of each sweep direction: a sweep `both` runs up, then down from the top
+    speed; drawn as one line it zig-zags back over the up sweep."""
+    if len(speed) > 1 and speed[1] < speed[0]:
+        return [("down", range(len(speed)))]
+    turn = next((i for i in range(1, len(speed)) if speed[i] <= speed[i - 1]), len(speed))
+    legs = [("up" if turn < len(speed) else "", range(0, turn))]
+    if turn < len(speed):
+        legs.append(("down", range(turn, len(speed))))
+    return legs
+
+
+def resonance(path, png, title=""):
     header, c = read(path)
     speed = c["input_speed [rpm]"]
     fig, ax = plt.subplots(figsize=(9, 4.5))
-    ax.plot(speed, c["kv_max [-]"], "o-", ms=3, lw=1, label="K_v max (simulated)")
-    ax.plot(speed, c["kv_iso [-]"], "--", lw=1, label="K_v ISO 6336-1 method B")
+    for tag, rows in sweep_legs(speed):
+        ax.plot([speed[i] for i in rows], [c["kv_max [-]"][i] for i in rows],
+                "o-" if tag != "down" else "s--", ms=3, lw=1,
+                color="C0" if tag != "down" else "C3",
+                label="K_v max (simulated%s)" % (", sweep " + tag if tag else ""))
+    first = sweep_legs(speed)[0][1]  # ISO K_v depends on the speed alone: one leg
+    ax.plot([speed[i] for i in first], [c["kv_iso [-]"][i] for i in first], "--", lw=1,
+            color="C1", label="K_v ISO 6336-1 method B")
     status = c["status [-]"]
     unstable = [s for s, u in zip(speed, status) if u == "diverged"]
     if unstable:
@@ -106,6 +152,8 @@ def resonance(path, png):
         if clipped:
             ax.plot(clipped, [top * 0.98] * len(clipped), "^", color="C0",
                     label="K_v max beyond the scale")
+    ax.set_title("Resonance chart: K_v max against input speed" + (" — " + title if title else ""),
+                 fontsize=10)
     finish(fig, ax, "input speed n1 [rpm]", "dynamic factor K_v [-]", png)
 
 

@@ -2,7 +2,9 @@
 """Charts of `gearstiff dynamics` with Train/model = lateral.
 
     plot_lateral.py sharing  LOAD_SHARING.csv OUT.png   load sharing factor per planet
-    plot_lateral.py campbell CAMPBELL.csv OUT.png       natural frequencies over carrier speed
+    plot_lateral.py campbell CAMPBELL.csv [CROSSINGS.csv] OUT.png
+                                                        natural frequencies over carrier speed,
+                                                        crossings circled, unstable speeds shaded
     plot_lateral.py orbit    ORBIT.csv [FLOOR] OUT.png  orbit of a central member (x, y); an
                                                         orbit smaller than FLOOR [µm] (1e-9 of
                                                         the sun's base radius) is round-off:
@@ -39,12 +41,15 @@ def sharing(path, png):
     finish(fig, ax, "planet", "load sharing factor [-]", png)
 
 
-def campbell(path, png):
-    """Every natural frequency against carrier speed (rotating carrier frame)."""
+def campbell(path, png, crossings_path=None):
+    """Every natural frequency against carrier speed (rotating carrier frame); the mesh orders'
+    crossings with them circled, the speeds where the undamped stage is unstable shaded (there
+    a "frequency" is |Im λ| of a growing root)."""
     header, c = read(path)
     speed = c[header[0]]
     fig, ax = plt.subplots(figsize=(8, 5))
-    modes = [n for n in header[1:] if not n.startswith("mesh_order_")]
+    extra = ("mesh_order_", "stability", "growth_rate")
+    modes = [n for n in header[1:] if not n.startswith(extra)]
     orders = [n for n in header[1:] if n.startswith("mesh_order_")]
     for name in modes:
         ax.plot(speed, c[name], color="C0", lw=0.8)
@@ -52,8 +57,22 @@ def campbell(path, png):
     for i, name in enumerate(orders):
         ax.plot(speed, c[name], color="C%d" % (i + 1), lw=1.0, ls="--",
                 label="mesh order %s" % name.split("_")[-1].split(" ")[0])
+    stability = c.get("stability [-]", [])
+    step = (speed[1] - speed[0]) if len(speed) > 1 else 0.0
+    shaded = False
+    for s, state in zip(speed, stability):
+        if state != "stable":
+            ax.axvspan(s - step / 2, s + step / 2, color="C3", alpha=0.2, lw=0,
+                       label=None if shaded else "unstable (divergence or flutter)")
+            shaded = True
+    if crossings_path:
+        _, x = read(crossings_path)
+        if x.get("carrier_speed [rpm]"):
+            ax.plot(x["carrier_speed [rpm]"], x["frequency [Hz]"], "o", mfc="none", color="k",
+                    ms=6, label="crossing (%d)" % len(x["carrier_speed [rpm]"]))
     ax.set_ylim(0, 1.05 * top)
-    ax.set_title("Natural frequencies with gyroscopic and centripetal terms")
+    ax.set_title("Campbell chart of the lateral stage: natural frequencies with gyroscopic and "
+                 "centripetal terms", fontsize=9)
     ax.plot([], [], color="C0", lw=0.8, label="natural frequencies")
     finish(fig, ax, "carrier speed [rpm]", "frequency [Hz]", png)
 
@@ -115,7 +134,7 @@ def main(argv):
     if kind == "sharing":
         sharing(argv[2], argv[-1])
     elif kind == "campbell":
-        campbell(argv[2], argv[-1])
+        campbell(argv[2], argv[-1], argv[3] if len(argv) > 4 else None)
     elif kind == "sweep":
         sweep(argv[2], argv[-1])
     else:

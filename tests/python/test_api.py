@@ -364,6 +364,50 @@ def test_failed_write_is_os_error(tmp_path):
     assert [p for p in os.listdir(tmp_path) if p.startswith(".gearstiff-staging")] == []
 
 
+@pytest.mark.parametrize("kind", ["file", "missing"])
+def test_tmpdir_not_a_folder_same_message(tmp_path, kind):
+    """Issue 42: TMPDIR naming a file (or nothing) is gearstiff.InputError naming TMPDIR, with
+    the command line's message and exit 2 there, and nothing written."""
+    target = tmp_path / "a_file"
+    if kind == "file":
+        target.write_text("not a folder")
+    out = tmp_path / "out"
+    environment = dict(ENVIRONMENT, TMPDIR=str(target))
+    done = subprocess.run([EXECUTABLE, "gear-pair", "-o", str(out)], capture_output=True,
+                          text=True, timeout=60, env=environment)
+    assert done.returncode == 2, done.stderr
+    saved = os.environ.get("TMPDIR")
+    os.environ["TMPDIR"] = str(target)
+    try:
+        with pytest.raises(gearstiff.InputError) as raised:
+            gearstiff.gear_pair(output_directory=out)
+    finally:
+        if saved is None:
+            del os.environ["TMPDIR"]
+        else:
+            os.environ["TMPDIR"] = saved
+    assert raised.value.parameter == "TMPDIR"
+    assert "gearstiff: error: " + str(raised.value) == done.stderr.strip()
+    assert "is not a folder" in str(raised.value)
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("script,default", [("optimise_tip_relief.py", "(default: 400.0)"),
+                                            ("design_pinion_bore.py", "(default: pinion_bore.png)")])
+def test_examples_take_a_pair_file_and_show_defaults(tmp_path, script, default):
+    """Issue 44: the examples ran the built-in pair only and their --help showed no defaults."""
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "examples", script)
+    done = subprocess.run([sys.executable, path, "--help"], capture_output=True, text=True,
+                          timeout=120, env=ENVIRONMENT)
+    assert done.returncode == 0, done.stderr
+    assert default in " ".join(done.stdout.split()), done.stdout
+    assert "your pair's .prm file" in done.stdout
+    missing = str(tmp_path / "nothing.prm")
+    done = subprocess.run([sys.executable, path, missing], capture_output=True, text=True,
+                          timeout=120, env=ENVIRONMENT)
+    assert done.returncode == 1 and missing in done.stderr, done.stderr
+
+
 # ------------------------------------------------------------------ print_parameters
 
 def test_print_parameters():
