@@ -25,6 +25,7 @@ fails. The line that `cli.calculix_stiffness_scene` runs command for command (th
 line) is left to that test, which checks its k against gearstiff's to 0.1 % (SHARED).
 """
 import json
+import math
 import os
 import re
 import shutil
@@ -55,7 +56,16 @@ SHARED = {
 # on the line as run here (SMALLER), unless another source is named; the solvers are
 # deterministic, so 1e-6 relative is the regression tests' own tolerance
 # (tests/regression/compare.py).
-NUMBERS = {}
+#   The gear-pair lines: d = z·m_n and r_b = d/2·cos 20° (exact: the pinion z = 21 and 24, m_n =
+#   2.5 mm; a profile shift changes neither), to the printed 6 digits.
+NUMBERS = {
+    'gear-pair --set "Gear pair/Pinion/profile shift=0.5"': [
+        ("printed", "pinion reference diameter d", 52.5, 1e-9),
+        ("printed", "pinion base radius r_b", 26.25 * math.cos(math.radians(20.)), 1e-5)],
+    "# a ring–planet pair": [
+        ("printed", "pinion reference diameter d", 60., 1e-9),
+        ("printed", "pinion base radius r_b", 30. * math.cos(math.radians(20.)), 1e-5)],
+}
 
 
 def readme_commands(readme):
@@ -94,6 +104,7 @@ def prepared(line, source):
 def printed_value(stdout, description):
     """The first number after `description` at the start of a report line."""
     for line in stdout.splitlines():
+        line = line.strip()
         if line.startswith(description):
             match = re.search(r"[-+]?\d+(\.\d*)?([eE][-+]?\d+)?", line[len(description):])
             if match:
