@@ -6,8 +6,9 @@ usage: calculix_stiffness_scene.py path/to/gearstiff SOURCE_DIR WORK_FOLDER
 Runs what docs/calculix.md shows: `gearstiff mesh --set "Scene/gear pair defaults=stiffness"
 --set "Mesh/format=inp"`, `ccx -i scene` in the deck's folder, tools/calculix_stiffness.py on it,
 and `gearstiff stiffness` with FE_Q(1) (the element the deck's C3D8 slice reproduces) on the same
-pair and position. Tolerance 1 %: the issue's target; measured +0.03 % on this scene
-(docs/calculix.md, bench/calculix_compare.sh), the penalty K = 50·E/h_c costing ccx ~0.02 %.
+pair and position. Tolerance 0.1 %: measured +0.03 % on this scene (docs/calculix.md,
+bench/calculix_compare.sh; both solvers deterministic, so the same in every run), three times
+that; the penalty K = 50·E/h_c costs ccx ~0.02 % of it (issue 25's target was 1 %).
 Exit 77 (ctest: skipped) without ccx.
 """
 import json
@@ -40,8 +41,8 @@ def main():
     k_fe = fe["values"]["mesh_stiffness"]["value"]
     deviation = k_fe / k_ccx - 1.
     print(f"calculix_stiffness_scene: k gearstiff Q1 {k_fe:.6g} N/um, CalculiX {k_ccx:.6g} N/um "
-          f"({deviation * 100:+.3f} %)")
-    return 0 if abs(deviation) < 0.01 else 1
+          f"({deviation * 100:+.3f} %, tolerance 0.1 %)")
+    return 0 if abs(deviation) < 0.001 else 1
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Runs a `gearstiff` command with --json and compares numbers of its output with references.
 
-usage: check_json.py WORKDIR [--check SPEC]... [--expect-file NAME]... -- command args...
+usage: check_json.py WORKDIR [--check SPEC]... [--expect-file NAME]... [--text REGEX]...
+                     [--stderr REGEX] -- command args...
 
 WORKDIR is emptied first and is the command's working directory; "@WORK@" and "@SRC@" in the
 arguments expand to it and to the source tree. The command must exit 0 and print one JSON
@@ -16,16 +17,19 @@ over the column), or `text:NAME` compared as a string with REFERENCE (no toleran
 The reference and where it comes from are the caller's business: every test that uses this
 script states its source beside the SPEC (tests/*/CMakeLists.txt). Each check prints the
 measured value and its deviation, so a test's log carries the figure its comment quotes.
+--text REGEX must match one line "NAME: text" of the output's text entries (a note, a model
+description: what a command says beside its numbers), --stderr REGEX the command's stderr.
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 
 
 def parse_arguments(argv):
-    work, checks, files = argv[1], [], []
+    work, checks, files, patterns = argv[1], [], [], {"--text": [], "--stderr": []}
     i = 2
     while i < len(argv) and argv[i] != "--":
         if argv[i] == "--check":
@@ -34,9 +38,29 @@ def parse_arguments(argv):
         elif argv[i] == "--expect-file":
             files.append(argv[i + 1])
             i += 2
+        elif argv[i] in patterns:
+            patterns[argv[i]].append(argv[i + 1])
+            i += 2
         else:
             sys.exit(f"check_json: unknown option {argv[i]}")
-    return work, checks, files, argv[i + 1:]
+    return work, checks, files, patterns, argv[i + 1:]
+
+
+def check_patterns(summary, stderr, patterns):
+    """The --text and --stderr regular expressions; returns the number that failed."""
+    lines = [f"{name}: {text}" for name, text in summary.get("text", {}).items()]
+    failed = 0
+    for pattern in patterns["--text"]:
+        ok = any(re.search(pattern, line) for line in lines)
+        print(f"{'ok  ' if ok else 'FAIL'} text /{pattern}/")
+        failed += not ok
+    for pattern in patterns["--stderr"]:
+        ok = re.search(pattern, stderr) is not None
+        print(f"{'ok  ' if ok else 'FAIL'} stderr /{pattern}/")
+        failed += not ok
+    if failed:
+        print("--- text entries:\n" + "\n".join(lines) + "\n--- stderr:\n" + stderr[-2000:])
+    return failed
 
 
 def lookup(summary, key):
@@ -61,7 +85,7 @@ def lookup(summary, key):
 
 
 def main():
-    work, checks, files, command = parse_arguments(sys.argv)
+    work, checks, files, patterns, command = parse_arguments(sys.argv)
     src = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", ".."))
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
@@ -71,7 +95,7 @@ def main():
         sys.exit(f"check_json: exit code {run.returncode}\n--- command: {' '.join(command)}\n"
                  f"--- stderr:\n{run.stderr[-3000:]}")
     summary = json.loads(run.stdout[run.stdout.index("{"):])
-    failed = 0
+    failed = check_patterns(summary, run.stderr, patterns)
     for spec in checks:
         key, reference, tolerance = spec[0], spec[1], spec[2]
         try:
@@ -105,7 +129,8 @@ def main():
         print(f"{'ok  ' if ok else 'FAIL'} file {name}")
         failed += not ok
     if failed:
-        sys.exit(f"check_json: {failed} of {len(checks) + len(files)} checks failed\n"
+        total = len(checks) + len(files) + len(patterns["--text"]) + len(patterns["--stderr"])
+        sys.exit(f"check_json: {failed} of {total} checks failed\n"
                  f"--- command: {' '.join(command)}")
 
 

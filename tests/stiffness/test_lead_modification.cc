@@ -143,4 +143,15 @@ TEST(LeadModification, SlopeMovesLoadToOneEnd)
               (s.z[i] - s.z[i - 1]);
   EXPECT_LT(moment / s.force, face_width() / 3.);
   EXPECT_NEAR(s.factor, 2.070, 0.01);
+  // verification.face_load_iso: ISO 6336-1 method C (docs/references.md §15) for the linear gap
+  // it is written for, F_βy = f_Hβ = 10 µm, with c_γβ = 0.85·c_γα = 15.69 N/(mm·µm) (method B,
+  // `gearstiff gear-pair`) and F_m/b = 78.41 N/mm: 1 + F_βy·c_γβ/(2F_m/b) > 2, so
+  // K_Hβ = √(2F_βy·c_γβ/(F_m/b)) = 2.001 (docs/micro-geometry.md). Measured 2026-11-26: FE 2.070,
+  // +3.5 %. Held within 5 %: ISO's elastic foundation against the FE's plate is a model
+  // difference, not a discretisation error (the crowned face differs by +12 to +38 %), and the
+  // 5 % band is the claim docs/accuracy.md states for the slope.
+  const double iso = std::sqrt(2. * 10. * 15.69 / 78.41);
+  std::cout << "K_Hbeta FE " << s.factor << " against ISO 6336-1 method C " << iso << ": "
+            << 100. * (s.factor / iso - 1.) << " % (tolerance 5 %)\n";
+  EXPECT_NEAR(s.factor / iso, 1., 0.05);
 }

@@ -56,11 +56,13 @@ checks = Checks("calculix_cycloid")
 # (docs/calculix.md on the default mesh: −0.28 %, −0.00 %, +0.03 %, −0.19 %). ccx's own scatter
 # is ~0.3 %: its Newton iteration stops at a residual of 0.5 % of the mean force, and its P_i and
 # R move by up to 0.3 % between penalties without a 1/K trend (docs/calculix.md). Tolerances:
-# three times the measured difference, but not below that 0.3 %.
+# three times the measured difference, but not below that 0.3 % for P, θ and R; Q_max, which
+# agrees to 0.02 % on both meshes, to 0.1 %: five times the measured, not below the 1/K
+# extrapolation's own ~0.1 % (calculix_gear_pair.py).
 checks.near(f"P_max (roller {p}) gearstiff / ccx", g["rollers"][p],
             extrapolated(lambda r: r["rollers"][p]), 0.012)
 checks.near(f"Q_max (pin {q}) gearstiff / ccx", g["pins"][q], extrapolated(lambda r: r["pins"][q]),
-            0.003)
+            0.001)
 checks.near("output rotation gearstiff / ccx", g["theta"], extrapolated(lambda r: r["theta"]), 0.004)
 checks.near("bearing force gearstiff / ccx", g["bearing"], extrapolated(lambda r: r["bearing"]),
             0.003)

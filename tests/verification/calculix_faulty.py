@@ -38,13 +38,15 @@ print(f"healthy gearstiff Q1 {healthy['k']:.4f} N/um; cracked gearstiff Q1 {g['k
       f"({runs[0]['time']:.1f} + {runs[1]['time']:.1f} s); K -> inf {k_inf:.4f} N/um")
 
 checks = Checks("calculix_faulty")
-# The healthy scene agrees to −0.145 % (calculix_gear_pair.py, tolerance 0.45 %: ccx's Newton
-# tolerance and the 1/K extrapolation, about 0.1 %); the same tolerance here.
-checks.near("k gearstiff / k ccx(K->inf), 1 mm crack", g["k"], k_inf, 0.0045)
+# Measured 2026-11-26: −0.043 % (the healthy scene −0.145 %, calculix_gear_pair.py). Tolerance
+# 0.15 %: three times the measured difference, and above ccx's own scatter of about 0.1 % (its
+# Newton tolerance and the 1/K extrapolation, docs/calculix.md).
+checks.near("k gearstiff / k ccx(K->inf), 1 mm crack", g["k"], k_inf, 0.0015)
 # The crack matters at this depth (else the first check would not test the deck's slit): ccx's
-# reduction against the healthy gearstiff k equals gearstiff's within the same 0.45 % of k.
+# reduction against the healthy gearstiff k equals gearstiff's (measured 0.041 % of k apart),
+# within the same 0.15 % of k.
 checks.near("(k ccx(K->inf) - k healthy)/k healthy vs gearstiff's", k_inf / healthy["k"] - 1.,
-            g["k"] / healthy["k"] - 1., 0.0045, relative=False)
+            g["k"] / healthy["k"] - 1., 0.0015, relative=False)
 if not g["k"] < 0.99 * healthy["k"]:
     sys.exit(f"calculix_faulty: the 1 mm crack lowers gearstiff's k by less than 1 %")
 checks.done()

@@ -70,6 +70,9 @@ te_inf = (factors[0] * tes[0] - factors[1] * tes[1]) / (factors[0] - factors[1])
 print(f"gearstiff Q1 TE {te_gearstiff:.4f} um; ccx K -> inf {te_inf:.4f} um")
 
 checks = Checks("calculix_relief_te" + ("_both" if both else ""))
-# Issue 27's tolerance, 2 %; the unmodified pair's k agrees to 0.15 % (calculix_gear_pair.py).
-checks.near("TE gearstiff / TE ccx(K->inf)", te_gearstiff, te_inf, 0.02)
+# Relief on the pinion: measured +0.082 % (2026-11-26), held to 0.25 %, three times that (the
+# unmodified pair's k agrees to 0.15 %, calculix_gear_pair.py). Relief on both gears: measured
+# +1.21 %, the elastic part 2.4 % off and not explained yet (the docstring): issue 27's 2 %, the
+# target, not three times the measured difference.
+checks.near("TE gearstiff / TE ccx(K->inf)", te_gearstiff, te_inf, 0.02 if both else 0.0025)
 checks.done()
