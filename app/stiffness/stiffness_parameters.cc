@@ -1,0 +1,886 @@
+#include "app/stiffness/stiffness_parameters.h"
+
+#include "app/core/parameter_patterns.h"
+#include "app/core/units.h"
+#include "app/kinematics/kinematics_parameters.h"
+#include "app/scenes/fe_contact_parameters.h"
+#include "app/scenes/geometry_parameters.h"
+#include "dynamics/train_model.h"
+#include "errors/errors.h"
+#include "errors/format.h"
+#include "errors/limits.h"
+#include "geometry/tooth_fault.h"
+#include "kinematics/gear_pair.h"
+#include "stiffness/transmission_error.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <sstream>
+#include <unistd.h>
+
+namespace gearstiff::app
+{
+void declare_stiffness_parameters(ParameterHandler& prm)
+{
+  declare_gear_pair_parameters(prm);
+  declare_tooth_modification_parameters(prm);
+  const geometry::GearPairSceneSpec scene = stiffness::default_stiffness_scene();
+  // The sector cut faces are left free by the stiffness analysis.
+  declare_gear_scene_parameters(prm, scene, true);
+  declare_scene_mesh_parameters(prm, scene.mesh, true);
+
+  declare_fe_contact_parameters(prm);
+  prm.enter_subsection("Finite elements");
+  // Q2 on the default scene: docs/accuracy.md.
+  prm.set("Element degree", std::to_string(stiffness::default_stiffness_elasticity().degree));
+  prm.leave_subsection();
+  prm.enter_subsection("Contact");
+  // docs/references.md §1: the ANSYS model used μ = 0.01 between the teeth.
+  prm.set("Friction coefficient",
+          format_number(kinematics::split_path_published::tooth_friction, 10));
+  prm.leave_subsection();
+
+  // The load has one name in every command that builds the scene (mesh, stiffness, cai, run).
+  prm.enter_subsection("Gear pair scene");
+  prm.declare_entry("pinion torque", "49.4", Double(),
+                    "T1 on the pinion [N·m], > 0 (drives the loaded flanks into contact); "
+                    "docs/references.md §1: 7.5 kW at 1450 rpm");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Stiffness");
+  prm.declare_entry("mode", "single", Selection("single|double|roll angle|sweep"),
+                    "single: the pitch point if it lies in the single-contact zone, else that "
+                    "zone's middle; double: middle of the first double-contact zone; roll "
+                    "angle: the 'pinion roll angle' below; sweep: k(θ) at 'sweep positions' "
+                    "positions over 'sweep base pitches'");
+  prm.declare_entry("pinion roll angle", "20", Double(),
+                    "mode roll angle: pinion roll angle ℓ/r_b1 of the reference pair, ℓ from "
+                    "T1 along the line of action [deg]; must lie on the path of contact");
+  declare_elastic_constants(prm, "both gears");
+  prm.declare_entry("sweep start", "-1", Double(),
+                    "pinion roll angle of the first sweep interval's start [deg]; negative: "
+                    "the start of active contact A");
+  prm.declare_entry("sweep base pitches", "1", Double(),
+                    "span of the sweep in transverse base pitches [-] (1: one mesh period)");
+  prm.declare_entry("sweep positions", "32", Integer(),
+                    "N, positions of the sweep [-], at the middles of N equal intervals");
+  // Micro-geometry studies (issue 27): a list of torques, further modification sets.
+  prm.declare_entry(
+      "torques", "", Anything(),
+      "pinion torques [N·m], comma-separated, ascending, each > 0; empty = 'Gear pair "
+      "scene/pinion torque' alone. A sweep then gives TE(θ), k(θ), load sharing and pressure "
+      "per torque and the Harris-map table te_map (one scene and factorization "
+      "per position for all torques)");
+  prm.declare_entry("variants", "", Anything(),
+                    "further modification sets swept like the base one, ';'-separated, each "
+                    "'name = value, ...' of Gear pair/Pinion and Wheel entries ('tip relief = "
+                    "10' both gears, 'Pinion/tip relief = 10' one), e.g. 'tip relief = 5; tip "
+                    "relief = 10'; empty = none");
+  prm.declare_entry(
+      "sweep mesh", "automatic", Selection("automatic|per position|once"),
+      "per position: every sweep position builds, meshes and factorizes its own scene (the "
+      "reference); once: each rank meshes one scene, refined along every flank contact of the "
+      "sweep, factorizes it once and turns the bodies rigidly to each position (the contact "
+      "paired afresh there, warm-started from the neighbour; what a position reports is "
+      "completed from the kept unit responses in 2D, by one back-substitution in 3D; needs "
+      "the direct solver's Schur complement); automatic (the default): once in 2D, per "
+      "position in 3D and for scenes with a broken, chipped or spalled tooth (root cracks "
+      "roll: every flank stays whole) or without the direct solver's Schur complement. "
+      "In 2D once meets the accuracy of per position (k within 0.3 %, TE 0.05 µm, load share "
+      "0.5 %: external and internal pairs, μ = 0.01, a torque list, 2 MPI ranks) at ~0.04 s a "
+      "position after ~3-4 s once (default pair, 128 positions, 1 rank: ~9 s, 16x faster than "
+      "per position); in 3D once is within 0.5 % of per position, nearer the converged k, but "
+      "only ~1.6x faster for 2.5x the memory (docs: bench/contact_speed.md), so 3D stays per "
+      "position");
+  prm.declare_entry("write vtu", "false", Bool(),
+                    "write VTU/PVTU of every solved position into the -o folder");
+  prm.declare_entry("published reference", "true", Bool(),
+                    "print the ANSYS values of docs/references.md §1 (Reszuta & Drewniak 2015) "
+                    "beside ours when the pair is that case (decided from the geometry: teeth, "
+                    "face widths, tip diameters); false: never");
+  prm.leave_subsection();
+}
+
+void declare_stiffness_sweep_parameters(ParameterHandler& prm, unsigned int positions)
+{
+  declare_stiffness_parameters(prm);
+  prm.enter_subsection("Stiffness");
+  prm.set("mode", "sweep");
+  prm.set("sweep positions", std::to_string(positions));
+  prm.leave_subsection();
+}
+
+std::string mode_name(StiffnessMode mode)
+{
+  switch (mode)
+  {
+  case StiffnessMode::single:
+    return "single";
+  case StiffnessMode::double_pair:
+    return "double";
+  case StiffnessMode::roll_angle:
+    return "roll angle";
+  case StiffnessMode::sweep:
+    break;
+  }
+  return "sweep";
+}
+
+ParameterNames stiffness_parameter_names()
+{
+  ParameterNames names = gear_scene_parameter_names();
+  names[geometry::scene_field::position] = "Stiffness/mode";
+  names[geometry::scene_field::pinion_roll_angle] = "Stiffness/pinion roll angle";
+  names[geometry::scene_field::young_modulus] = "Stiffness/Young's modulus";
+  names[geometry::scene_field::poisson_ratio] = "Stiffness/Poisson's ratio";
+  names[stiffness::stiffness_parameter::torque] = "Gear pair scene/pinion torque";
+  names[stiffness::stiffness_parameter::torques] = "Stiffness/torques";
+  names[stiffness::stiffness_parameter::positions] = "Stiffness/sweep positions";
+  names[stiffness::stiffness_parameter::pitches] = "Stiffness/sweep base pitches";
+  names[stiffness::stiffness_parameter::start] = "Stiffness/sweep start";
+  names[stiffness::stiffness_parameter::sweep_mesh] = "Stiffness/sweep mesh";
+  names[geometry::scene_field::swept_positions] = "Stiffness/sweep mesh";
+  return names;
+}
+
+namespace
+{
+StiffnessMode parse_mode(const std::string& text)
+{
+  for (const StiffnessMode mode : {StiffnessMode::single, StiffnessMode::double_pair,
+                                   StiffnessMode::roll_angle, StiffnessMode::sweep})
+    if (text == mode_name(mode))
+      return mode;
+  throw InputError("Stiffness/mode",
+                   "'" + text + "' is not one of single, double, roll angle, sweep");
+}
+
+// "Stiffness/torques": comma-separated numbers (N·m); empty: none. The analysis checks sign and
+// order (stiffness::check_torque_list).
+std::vector<double> parse_torque_list(const std::string& text)
+{
+  std::vector<double> torques;
+  if (text.find_first_not_of(" \t") == std::string::npos)
+    return torques;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    std::size_t used = 0;
+    double value = 0.;
+    try
+    {
+      value = std::stod(item, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
+      throw InputError("Stiffness/torques", "'" + item + "' is not a torque [N·m]");
+    torques.push_back(value);
+  }
+  with_parameter_names(stiffness_parameter_names(), [&] { stiffness::check_torque_list(torques); });
+  return torques;
+}
+
+// The micro-geometry of both gears (Gear pair/Pinion, Gear pair/Wheel) and the variants of
+// "Stiffness/variants", each checked against the generated teeth before anything is meshed.
+void parse_modification_stage(ParameterHandler& prm, const std::string& variants,
+                              StiffnessParameters& p)
+{
+  geometry::GearPairSceneSpec& scene = p.settings.scene;
+  const PairModificationText text = read_tooth_modification_text(prm);
+  const unsigned int dimension = scene.mesh.dimension;
+  scene.pinion_modifications = parse_gear_modifications(text.pinion, false, dimension);
+  scene.wheel_modifications = parse_gear_modifications(text.wheel, true, dimension);
+  geometry::check_tooth_modifications(scene);
+  for (const ModificationVariant& v :
+       parse_modification_variants(variants, text, "Stiffness/variants"))
+  {
+    StiffnessVariant variant{v.label, parse_gear_modifications(v.text.pinion, false, dimension),
+                             parse_gear_modifications(v.text.wheel, true, dimension)};
+    geometry::GearPairSceneSpec checked = scene;
+    checked.pinion_modifications = variant.pinion;
+    checked.wheel_modifications = variant.wheel;
+    geometry::check_tooth_modifications(checked);
+    p.variants.push_back(variant);
+  }
+  if (!p.variants.empty() && p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/variants", "applies to mode sweep only");
+  // One position solves at 'Gear pair scene/pinion torque': a list there was ignored.
+  if (!p.settings.torques.empty() && p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/torques", "applies to mode sweep only (one position runs at "
+                                          "Gear pair scene/pinion torque)");
+}
+
+// The work of a sweep (s, on the ranks of MPI_COMM_WORLD), estimated from what it will solve
+// before the positions are allocated, and refused above limits::max_run_seconds naming the
+// parameter that pushed it there (2·10⁹ positions were allocated; a 3D sweep of 5000
+// positions announced 35 h at 25.5 s a position; 10⁵ torques and 10³ variants were not
+// counted). Seconds a position, measured on one rank (bench/contact_speed.md): 2D Q2 per
+// position 18.7 s / 32 = 0.58 s, once 0.07 s (0.08–0.1 s measured 2026-11-26, 128 positions);
+// 3D Q1 8 layers per position 373.0 s / 16 = 23.3 s, once 228.5 s / 16 = 14.3 s (32 positions
+// on 2 ranks, 2026-12-01). Another degree scales them by the unknowns, (p / p_measured)^dim,
+// and more layers in 3D by layers / 8: a lower bound, as the factorization grows faster than
+// the unknowns. Each further torque of a list costs at least 0.15 of a position (8 torques ×
+// 32 positions 21.9 s against 10.5 s, once), each variant at least half the base sweep (15.7 s
+// against 10.5 s). So this is a lower bound: finer meshes take longer.
+double check_sweep_work(const StiffnessParameters& p)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  const bool once = p.sweep.mesh == stiffness::SweepMesh::once;
+  const unsigned int dim = s.scene.mesh.dimension;
+  const double measured =
+      dim == 3 ? (once ? 228.5 / 16. : 373.0 / 16.) : (once ? 0.07 : 18.7 / 32.);
+  const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  const double positions = std::ceil(double(p.sweep.positions) / ranks) * measured;
+  // The factors beyond the measured case, each with the parameter that sets it.
+  const std::vector<std::pair<double, std::string>> factors{
+      {std::pow(s.elasticity.degree / (dim == 3 ? 1. : 2.), double(dim)),
+       "Finite elements/Element degree"},
+      {dim == 3 ? std::max(1., s.scene.mesh.layers / 8.) : 1., "Mesh/layers"},
+      {1. + 0.15 * (s.torques.empty() ? 0. : double(s.torques.size()) - 1.), "Stiffness/torques"},
+      {1. + 0.5 * double(p.variants.size()), "Stiffness/variants"}};
+  double seconds = positions;
+  for (const auto& [factor, name] : factors)
+    seconds *= factor;
+  if (seconds <= limits::max_run_seconds)
+    return seconds;
+  // The positions alone beyond the limit, or else the largest factor, pushed it over.
+  const auto largest = std::max_element(factors.begin(), factors.end());
+  const std::string parameter =
+      positions > limits::max_run_seconds ? "Stiffness/sweep positions" : largest->second;
+  throw InputError(
+      parameter,
+      std::to_string(p.sweep.positions) + " positions" +
+          (s.torques.size() > 1 ? " × " + std::to_string(s.torques.size()) + " torques"
+                                : std::string()) +
+          (p.variants.empty()
+               ? std::string()
+               : " × " + std::to_string(p.variants.size() + 1) + " modification sets") +
+          " would take at least " + format_number(seconds / 3600., 3) + " h on " +
+          std::to_string(ranks) + " rank(s) at " +
+          format_number(measured * factors[0].first * factors[1].first, 3) + " s a position (" +
+          std::to_string(dim) + "D, Q" + std::to_string(s.elasticity.degree) +
+          (dim == 3 ? ", " + std::to_string(s.scene.mesh.layers) + " layers" : std::string()) +
+          (once ? ", once" : ", per position") + "; limit " +
+          format_number(limits::max_run_seconds / 3600., 2) +
+          " h, docs/limits.md): fewer positions, torques, variants or layers, a lower degree, "
+          "or more MPI ranks");
+}
+
+// The relief lengths that read `auto` (the long relief: from the tip to the start of
+// single-tooth contact, (ε_α − 1)·p_bt along the path of contact for either gear) as derived
+// sizes, and a note for a relief amount that looks like a unit slip: below 0.1 µm (a
+// relief typed in mm) or from 5 % of m_n up (more than any relief removes: mm, or a relief
+// meant for a larger gear). The run goes on: such a value is possible, only unlikely.
+void note_relief_sizes(const kinematics::GearPairGeometry& pair, StiffnessParameters& p)
+{
+  const geometry::GearPairSceneSpec& scene = p.settings.scene;
+  const double tip_side[2] = {pair.contact_end - pair.single_contact_end(),
+                              pair.single_contact_start() - pair.contact_start};
+  for (const bool wheel : {false, true})
+  {
+    const std::string gear = wheel ? "Gear pair/Wheel/" : "Gear pair/Pinion/";
+    const geometry::GearModifications& m =
+        wheel ? scene.wheel_modifications : scene.pinion_modifications;
+    const double module = (wheel ? scene.pair.wheel : scene.pair.pinion).normal_module;
+    for (const geometry::ToothModification& t : m.all_teeth)
+    {
+      const bool tip = t.kind == geometry::ModificationKind::tip_relief;
+      if (!(tip || t.kind == geometry::ModificationKind::root_relief) || !(t.amount > 0.))
+        continue;
+      const std::string name = gear + (tip ? "tip relief" : "root relief");
+      if (tip && t.length < 0.)
+        p.derived_sizes.push_back({name + " length", tip_side[wheel ? 1 : 0],
+                                   "auto: from the tip to the start of single-tooth contact, "
+                                   "(ε_α − 1)·p_bt along the path of contact"});
+      if (t.amount < 0.1e-6)
+        p.input_notes.push_back(name + " = " + format_number(t.amount * 1e6, 4) +
+                                " µm is below 0.1 µm, far less than any relief removes: was it "
+                                "given in mm? (the unit is µm)");
+      else if (t.amount >= 0.05 * module * (1. - 1e-12)) // 200 µm on 4 mm: from µm and mm
+        p.input_notes.push_back(name + " = " + format_number(t.amount * 1e6, 4) +
+                                " µm is 5 % of m_n = " + format_number(module * 1e3, 4) +
+                                " mm or more, more than a relief removes: check the unit (µm)");
+    }
+  }
+}
+
+// The checks the analysis makes before it meshes, run at parse time: the library's own (one
+// copy each), their field names mapped to the parameters by the caller.
+void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPairGeometry& pair)
+{
+  stiffness::GearMeshStiffnessSettings& s = p.settings;
+  stiffness::check_stiffness_settings(s);
+  // The pattern admits the closed interval; ν = 0.5 makes λ infinite (incompressible) and
+  // E = 0 no material at all.
+  if (!(s.material.youngs_modulus > 0.))
+    throw InputError(geometry::scene_field::young_modulus, "must be positive");
+  if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
+    throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
+  // `once` rolls one factorization: the direct solver's Schur complement. With an iterative
+  // solver the contact module refused it naming Contact/Iteration solves, which the user had
+  // not set; full re-solve is refused there under its own name.
+  if (p.mode == StiffnessMode::sweep && p.sweep.mesh == stiffness::SweepMesh::once &&
+      s.linear_solver.method != fem::LinearSolverMethod::direct_mumps)
+    throw InputError("Linear solver/Method", "Stiffness/sweep mesh = once needs the direct "
+                                             "solver (an iterative one sweeps per position)");
+  if (p.mode == StiffnessMode::sweep)
+  {
+    p.estimated_seconds = check_sweep_work(p);
+    stiffness::sweep_positions(pair, p.sweep);
+  }
+  // Off the path of contact A..E no tooth pair touches: there is no mesh to be stiff.
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  // The ends as printed below (6 decimals of a degree) must be accepted: a roll angle within
+  // half a unit of the last printed digit of an end is that end.
+  const double printed = 0.5e-6 * degree;
+  const double start_angle = pair.contact_start / r_b1, end_angle = pair.contact_end / r_b1;
+  if (p.mode == StiffnessMode::roll_angle)
+  {
+    if (std::abs(s.scene.pinion_roll_angle - start_angle) <= printed)
+      s.scene.pinion_roll_angle = start_angle;
+    if (std::abs(s.scene.pinion_roll_angle - end_angle) <= printed)
+      s.scene.pinion_roll_angle = end_angle;
+  }
+  const double position = s.scene.pinion_roll_angle * r_b1;
+  if (p.mode == StiffnessMode::roll_angle &&
+      (position < pair.contact_start - 1e-12 || position > pair.contact_end + 1e-12))
+    throw InputError(
+        geometry::scene_field::pinion_roll_angle,
+        "no tooth pair is in contact at " + std::to_string(s.scene.pinion_roll_angle / degree) +
+            "°: the path of contact spans " + std::to_string(pair.contact_start / r_b1 / degree) +
+            "° to " + std::to_string(pair.contact_end / r_b1 / degree) + "°");
+}
+} // namespace
+
+namespace
+{
+// `Stiffness/sweep mesh = automatic`: once where it has shown the accuracy of per position (2D)
+// and can run — the Schur complement with the direct solver, and every flank whole: no tooth
+// faults, or root cracks only (test_fault_stiffness CrackedSweepOnceMatchesPerPosition). A broken,
+// chipped or spalled tooth changes which pairs carry from one position to the next: meshed per
+// position.
+bool once_by_default(const StiffnessParameters& p)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  bool whole = geometry::flanks_whole(s.scene.pinion_modifications) &&
+               geometry::flanks_whole(s.scene.wheel_modifications);
+  for (const StiffnessVariant& variant : p.variants)
+    whole =
+        whole && geometry::flanks_whole(variant.pinion) && geometry::flanks_whole(variant.wheel);
+  return s.scene.mesh.dimension == 2 && whole &&
+         s.contact.iteration_solves != contact::IterationSolves::full_resolve &&
+         s.linear_solver.method == fem::LinearSolverMethod::direct_mumps;
+}
+} // namespace
+
+StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
+{
+  StiffnessParameters p;
+  stiffness::GearMeshStiffnessSettings& s = p.settings;
+  s.scene = stiffness::default_stiffness_scene();
+  s.scene.pair = parse_gear_pair_parameters(prm, p.derived_sizes);
+  parse_gear_scene_parameters(prm, s.scene);
+  prm.enter_subsection("Gear pair scene");
+  s.pinion_torque = prm.get_double("pinion torque");
+  prm.leave_subsection();
+  s.scene.mesh = parse_scene_mesh_parameters(prm, s.scene.mesh, mesh_module_scale(s.scene.pair),
+                                             &p.derived_sizes);
+  parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
+
+  prm.enter_subsection("Stiffness");
+  p.mode = parse_mode(prm.get("mode"));
+  s.scene.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;
+  parse_elastic_constants(prm, s.material.youngs_modulus, s.material.poisson_ratio);
+  const double start = prm.get_double("sweep start");
+  p.sweep.base_pitches = prm.get_double("sweep base pitches");
+  const long positions = prm.get_integer("sweep positions");
+  const std::string sweep_mesh = prm.get("sweep mesh");
+  p.write_vtu = prm.get_bool("write vtu");
+  p.published_reference =
+      prm.get_bool("published reference") && kinematics::is_split_path_pair(s.scene.pair);
+  const std::string torques = prm.get("torques");
+  const std::string variants = prm.get("variants");
+  prm.leave_subsection();
+  s.torques = parse_torque_list(torques);
+  parse_modification_stage(prm, variants, p);
+  p.sweep.mesh = sweep_mesh == "once" || (sweep_mesh == "automatic" && once_by_default(p))
+                     ? stiffness::SweepMesh::once
+                     : stiffness::SweepMesh::per_position;
+
+  // A count below one becomes 0, which the sweep's own check (stiffness::sweep_positions)
+  // refuses in mode sweep; the other modes do not use it.
+  p.sweep.positions = static_cast<unsigned int>(std::clamp<long>(positions, 0, UINT_MAX));
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(s.scene.pair);
+  note_relief_sizes(pair, p);
+  if (start >= 0.)
+    p.sweep.start_position = start * degree * 0.5 * pair.pinion.base_diameter;
+  switch (p.mode)
+  {
+  case StiffnessMode::single:
+    s.scene.position = geometry::PairPosition::single;
+    break;
+  case StiffnessMode::double_pair:
+    s.scene.position = geometry::PairPosition::double_pair;
+    break;
+  case StiffnessMode::roll_angle:
+  case StiffnessMode::sweep:
+    s.scene.position = geometry::PairPosition::roll_angle;
+    break;
+  }
+  with_parameter_names(stiffness_parameter_names(), [&] { check_stiffness_parameters(p, pair); });
+  return p;
+}
+
+namespace
+{
+// A scratch path in the temporary folder; with `shared` every rank gets rank 0's name (one
+// distributed solve reads one file), otherwise each rank its own.
+std::string scratch_stem(MPI_Comm communicator, const std::string& name, bool shared)
+{
+  // In the process's scratch folder (removed at exit and on signals); shared: rank 0's.
+  const std::string folder = shared ? shared_scratch_directory(communicator) : scratch_directory();
+  return (std::filesystem::path(folder) / name).string();
+}
+
+// VTU files go straight into vtu/ of the staging folder; registering each position's PVTU
+// record also yields the folder.
+std::string vtu_directory(const StiffnessParameters& p, CommandContext& context,
+                          const std::vector<std::string>& bases)
+{
+  if (!p.write_vtu || !context.writes_files())
+    return "";
+  std::string directory;
+  for (const auto& base : bases)
+    directory =
+        std::filesystem::path(context.output_file("vtu/" + base + ".pvtu",
+                                                  "displacement, stress, contact state (VTU)"))
+            .parent_path()
+            .string();
+  return directory;
+}
+} // namespace
+
+stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
+                                                            CommandContext& context,
+                                                            const std::string& label)
+{
+  stiffness::GearMeshStiffnessSettings settings = p.settings;
+  settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
+  settings.output_directory = vtu_directory(p, context, {label});
+  settings.output_base = label;
+  // The stages of the one position (a 3D Q2 scene takes minutes): meshing, setup, solve.
+  settings.progress = [&context, &label](const std::string& line)
+  { context.progress(label, line); };
+  // A 2D position is solved on rank 0 alone: distributed over 2 ranks the default Q2 scene
+  // (53k DoFs) took 6.3 s against 6.6 s on one (tests/stiffness, DistributedPositionEqualsSerial
+  // checks they agree). A 3D position is distributed over all ranks.
+  // With -o, a 2D position also gets a picture of its deformed shape and contact pressure
+  // (tools/plot_deformed.py), drawn from its VTU: written to scratch when 'write vtu' is off.
+  const bool picture = context.writes_files() && settings.scene.mesh.dimension == 2;
+  std::filesystem::path scratch_vtu;
+  if (picture && settings.output_directory.empty())
+  {
+    scratch_vtu = scratch_stem(context.mpi_communicator, label + "-vtu", true);
+    if (context.is_root())
+      std::filesystem::create_directories(scratch_vtu);
+    settings.output_directory = scratch_vtu.string();
+  }
+  const auto remove_scratch = [&]()
+  {
+    if (!scratch_vtu.empty() && context.is_root())
+      std::filesystem::remove_all(scratch_vtu);
+  };
+  stiffness::GearMeshStiffnessResult result;
+  try
+  {
+    result = with_parameter_names(
+        stiffness_parameter_names(),
+        [&]
+        {
+          return settings.scene.mesh.dimension == 3
+                     ? stiffness::GearMeshStiffness<3>(context.mpi_communicator, settings).run()
+                     : stiffness::solve_on_first_rank<2>(context.mpi_communicator, settings);
+        });
+  }
+  catch (...)
+  {
+    if (context.is_root())
+      std::filesystem::remove(settings.scene_file);
+    remove_scratch();
+    throw;
+  }
+  if (context.is_root())
+    std::filesystem::remove(settings.scene_file);
+  if (picture && context.is_root())
+  {
+    std::vector<std::string> pieces;
+    for (const std::string& file : result.output_files)
+      if (std::filesystem::path(file).extension() == ".vtu")
+        pieces.push_back((std::filesystem::path(settings.output_directory) / file).string());
+    if (!pieces.empty())
+      context.plot("plot_deformed.py", pieces, label + "_deformed.png",
+                   label + ": deformed shape (von Mises) and contact pressure at the position");
+  }
+  remove_scratch();
+  return result;
+}
+
+stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
+                                                      CommandContext& context,
+                                                      const std::string& label)
+{
+  stiffness::GearMeshStiffnessSettings settings = p.settings;
+  std::vector<std::string> bases;
+  for (unsigned int i = 0; i < p.sweep.positions; ++i)
+    bases.push_back(label + "_" + dealii::Utilities::int_to_string(i, 3));
+  settings.output_directory = vtu_directory(p, context, bases);
+  settings.output_base = label;
+  const std::string stem = scratch_stem(context.mpi_communicator, label, false);
+  const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+  context.pcout << label << ": " << p.sweep.positions << " positions over " << p.sweep.base_pitches
+                << " base pitch(es) on " << ranks << " rank(s), estimated at least "
+                << format_number(p.estimated_seconds, 2) << " s in all" << std::endl;
+  // From the rank that solved the position (each takes its own, fem::distribute_items).
+  const auto progress = context.progress_counter(label, double(p.sweep.positions) / ranks);
+  return with_parameter_names(
+      stiffness_parameter_names(),
+      [&]
+      {
+        return settings.scene.mesh.dimension == 3
+                   ? stiffness::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep,
+                                                   stem, progress)
+                   : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep,
+                                                   stem, progress);
+      });
+}
+
+void refuse_load_lists(const StiffnessParameters& p, const std::string& command)
+{
+  if (!p.settings.torques.empty())
+    throw InputError("Stiffness/torques",
+                     "`" + command +
+                         "` runs at one load, Gear pair scene/pinion torque (the list is for "
+                         "`stiffness` in mode sweep)");
+  if (!p.variants.empty())
+    throw InputError("Stiffness/variants", "`" + command +
+                                               "` runs the modifications of Gear pair/Pinion "
+                                               "and Wheel alone (the list is for `stiffness` "
+                                               "in mode sweep)");
+}
+
+void report_pinion_torque(Report& report, const StiffnessParameters& p)
+{
+  report.add_value("pinion_torque", p.settings.pinion_torque, "N·m",
+                   "T1 on the pinion (Gear pair scene/pinion torque), the load of every solve");
+}
+
+void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnessResult& r,
+                               const std::string& prefix, const std::string& label)
+{
+  report.add_value(prefix + "pinion_roll_angle", r.pinion_roll_angle / degree, "deg",
+                   label + ": pinion roll angle ℓ/r_b1 of the reference pair");
+  report.add_value(prefix + "mesh_position", r.mesh_position, "-",
+                   label + ": reference pair's roll position from A (base pitches)");
+  report.add_value(
+      prefix + "loaded_pairs", r.loaded_pairs, "-",
+      label + ": tooth pairs carrying load (kinematic: " + std::to_string(r.kinematic_pairs) + ")");
+  report.add_value(prefix + "pinion_rotation", r.pinion_rotation * 1e6, "µrad",
+                   label + ": pinion rotation Δφ under T1");
+  report.add_value(prefix + "transmission_error", r.transmission_error * 1e6, "µm",
+                   label + ": loaded transmission error r_b1·Δφ");
+  report.add_value(prefix + "torque_ratio", r.torque_ratio, "-",
+                   label + ": |T_wheel/T1| (r_b2/r_b1 = " +
+                       format_number(r.wheel_base_radius / r.pinion_base_radius, 6) +
+                       " without friction)");
+  for (const auto& pair : r.pairs)
+    report.add_value(
+        prefix + "load_share_pair_" +
+            (pair.pair < 0 ? "m" + std::to_string(-pair.pair) : std::to_string(pair.pair)),
+        pair.load_share, "-",
+        label + ": load share of tooth pair " + std::to_string(pair.pair) + " (at " +
+            format_number(pair.position * 1e3, 5) + " mm from T1)");
+  report.add_value(prefix + "max_contact_pressure", r.max_contact_pressure / 1e6, "MPa",
+                   label + ": largest nodal contact pressure (Q2: an estimate, docs/accuracy.md)");
+  if (!r.pairs.empty())
+  {
+    // The most loaded pair's closed zone: its width across the profile is 2a of Hertz's line
+    // contact to within one contact cell (the edge lies between a closed and an open node).
+    const auto loaded =
+        std::max_element(r.pairs.begin(), r.pairs.end(),
+                         [](auto& a, auto& b) { return a.normal_force < b.normal_force; });
+    report.add_value(prefix + "contact_width", loaded->contact_length * 1e3, "mm",
+                     label + ": extent of the closed nodes of the most loaded pair");
+    report.add_value(prefix + "contact_normal_force", loaded->normal_force, "N",
+                     label + ": normal force of the most loaded pair");
+  }
+  report.add_value(prefix + "pinion_root_stress", r.pinion_root_stress / 1e6, "MPa",
+                   label + ": largest first principal stress on the pinion fillets");
+  report.add_value(prefix + "wheel_root_stress", r.wheel_root_stress / 1e6, "MPa",
+                   label + ": largest first principal stress on the wheel fillets");
+  report.add_value(prefix + "cells", r.n_cells, "-", label + ": cells");
+  report.add_value(prefix + "dofs", r.n_dofs, "-", label + ": degrees of freedom");
+  report.add_value(prefix + "contact_size", r.contact_size * 1e3, "mm",
+                   label + ": h_c, cell size at the contacts");
+  report.add_value(prefix + "active_set_iterations", r.active_set_iterations, "-",
+                   label + ": contact active-set iterations (linear solves)");
+  report.add_value(prefix + "time_scene", r.scene_time, "s", label + ": scene and meshing");
+  report.add_value(prefix + "time_setup", r.setup_time, "s",
+                   label + ": DoFs, stiffness matrix, mortar coupling");
+  report.add_value(prefix + "time_solve", r.solve_time, "s",
+                   label + ": contact iterations (assembly + solves)");
+  report.add_value(prefix + "time_total", r.total_time, "s", label + ": wall time");
+}
+
+void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair)
+{
+  const double wheel_sign = pair.spec.wheel.internal ? -1. : 1.;
+  report.add_value("pinion_teeth", pair.spec.pinion.teeth, "-", "z1 of the pair (drives)");
+  report.add_value("wheel_teeth", wheel_sign * pair.spec.wheel.teeth, "-",
+                   "z2 of the pair (negative: internal)");
+  report.add_value("transverse_module", pair.transverse_module / mm, "mm", "m_t of the pair");
+  report.add_value("centre_distance", pair.centre_distance / mm, "mm", "a_w of the pair");
+  report.add_value("contact_ratio", pair.transverse_contact_ratio, "-", "ε_α of the pair");
+  // Where the pitch point lies on the path (the train model's mesh phasing needs it).
+  report.add_value("approach_ratio",
+                   (pair.pitch_point - pair.contact_start) / pair.transverse_base_pitch, "-",
+                   "ε_f = AC/p_bt, start of contact to the pitch point (pinion drives)");
+}
+
+bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
+                      const kinematics::GearPairGeometry& pair)
+{
+  // A loaded pair whose closed pinion nodes reach within one contact cell of either end of the
+  // path of contact, A (the wheel tip) or E (the pinion tip), touches at a tip corner: the
+  // pressure there is an edge singularity, not a Hertz pressure, and grows with refinement.
+  const double tolerance = r.contact_size;
+  for (const auto& load : r.pairs)
+    if (load.normal_force > 0. && load.closed_nodes > 0 &&
+        (load.closed_roll_min <= pair.contact_start + tolerance ||
+         load.closed_roll_max >= pair.contact_end - tolerance))
+      return true;
+  return false;
+}
+
+void report_input_sizes(Report& report, const StiffnessParameters& p)
+{
+  if (!p.derived_sizes.empty())
+    report.add_text("derived sizes", kinematics::derived_sizes_text(p.derived_sizes));
+  std::string notes;
+  for (const std::string& note : p.input_notes)
+    notes += (notes.empty() ? "" : "; ") + note;
+  if (!notes.empty())
+    report.add_text("input notes", notes);
+}
+
+void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                               const std::string& name, const kinematics::GearPairGeometry& pair)
+{
+  ReportTable& table = report.add_table(
+      name,
+      {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness", "transmission_error",
+       "unloaded_transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
+       "max_pressure", "tip_edge_contact", "pinion_root_stress", "wheel_root_stress",
+       "torque_ratio", "iterations", "dofs", "time", "rank"},
+      {"-", "deg", "-", "-", "N/um", "um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa", "-", "-",
+       "-", "s", "-"});
+  std::string edges;
+  for (unsigned int i = 0; i < sweep.positions.size(); ++i)
+  {
+    const stiffness::GearMeshStiffnessResult& r = sweep.positions[i];
+    double share[3] = {0., 0., 0.};
+    for (const auto& load : r.pairs)
+      if (load.pair >= -1 && load.pair <= 1)
+        share[load.pair + 1] = load.load_share;
+    const bool edge = tip_edge_contact(r, pair);
+    if (edge)
+      edges += (edges.empty() ? "" : ", ") + std::to_string(i + 1);
+    table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
+                   double(r.loaded_pairs), r.mesh_stiffness / 1e6, r.transmission_error * 1e6,
+                   r.unloaded_transmission_error * 1e6, share[0], share[1], share[2],
+                   r.max_contact_pressure / 1e6, edge ? 1. : 0., r.pinion_root_stress / 1e6,
+                   r.wheel_root_stress / 1e6, r.torque_ratio, double(r.active_set_iterations),
+                   double(r.n_dofs), r.total_time, double(sweep.rank_of_position[i])});
+  }
+  if (!edges.empty())
+    report.add_text(name + " tip edge contact",
+                    "positions " + edges +
+                        ": a loaded pair touches at a tip corner (closed nodes within one contact "
+                        "cell of A or E); their max_pressure is an edge pressure that grows with "
+                        "refinement, not a Hertz pressure (column tip_edge_contact)");
+}
+
+void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                       const std::string& name, const std::string& map_name)
+{
+  ReportTable& table = report.add_table(
+      name,
+      {"torque", "position", "roll_angle", "mesh_position", "transmission_error",
+       "unloaded_transmission_error", "stiffness", "share_pair_m1", "share_pair_0", "share_pair_p1",
+       "max_pressure", "pinion_root_stress", "wheel_root_stress", "iterations", "time"},
+      {"N*m", "-", "deg", "-", "um", "um", "N/um", "-", "-", "-", "MPa", "MPa", "MPa", "-", "s"});
+  ReportTable& map =
+      report.add_table(map_name,
+                       {"torque", "te_peak_to_peak", "te_mean", "te_harmonic_1", "te_harmonic_2",
+                        "te_harmonic_3", "stiffness_mean", "max_pressure"},
+                       {"N*m", "um", "um", "um", "um", "um", "N/um", "MPa"});
+  for (unsigned int t = 0; t < sweep.by_torque.size(); ++t)
+  {
+    for (unsigned int i = 0; i < sweep.by_torque[t].size(); ++i)
+    {
+      const stiffness::GearMeshStiffnessResult& r = sweep.by_torque[t][i];
+      double share[3] = {0., 0., 0.};
+      for (const auto& pair : r.pairs)
+        if (pair.pair >= -1 && pair.pair <= 1)
+          share[pair.pair + 1] = pair.load_share;
+      table.add_row({sweep.torques[t], double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
+                     r.transmission_error * 1e6, r.unloaded_transmission_error * 1e6,
+                     r.mesh_stiffness / 1e6, share[0], share[1], share[2],
+                     r.max_contact_pressure / 1e6, r.pinion_root_stress / 1e6,
+                     r.wheel_root_stress / 1e6, double(r.active_set_iterations), r.total_time});
+    }
+    const stiffness::TransmissionErrorSummary s =
+        stiffness::summarize_transmission_error(sweep.by_torque[t]);
+    map.add_row({sweep.torques[t], s.peak_to_peak * 1e6, s.mean * 1e6, s.harmonics[0] * 1e6,
+                 s.harmonics[1] * 1e6, s.harmonics[2] * 1e6, s.stiffness_mean / 1e6,
+                 s.max_pressure / 1e6});
+  }
+}
+
+std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& sweep)
+{
+  std::vector<std::pair<double, double>> samples; // x [base pitches], k [N/mm]
+  for (const auto& r : sweep.positions)
+    samples.emplace_back(r.mesh_position - std::floor(r.mesh_position), r.mesh_stiffness / 1e3);
+  std::sort(samples.begin(), samples.end());
+  std::ostringstream text;
+  text.precision(10);
+  double last = -1.;
+  for (const auto& [x, k] : samples)
+  {
+    if (x - last < 1e-9)
+      continue;
+    text << (last < 0. ? "" : ", ") << x << ":" << k;
+    last = x;
+  }
+  return text.str();
+}
+
+std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep)
+{
+  const std::string table = dynamics_stiffness_table(sweep);
+  std::string text;
+  for (const std::string mesh : {"Mesh 1", "Mesh 2"})
+    text += "subsection " + mesh + "\n  set stiffness source = table\n" +
+            "  set stiffness table = " + table + "\nend\n";
+  return text;
+}
+
+std::string own_pair_dynamics_input(const StiffnessParameters& p,
+                                    const kinematics::GearPairGeometry& pair,
+                                    const stiffness::StiffnessSweepResult& sweep)
+{
+  const kinematics::GearPairSpec& spec = p.settings.scene.pair;
+  // Steel blanks of the pair's face widths between bore and reference circle (a ring between
+  // its reference circle and its outer diameter): the inertias a user would start from.
+  constexpr double steel_density = 7850.; // kg/m³
+  const auto inertia = [&](const kinematics::GearSpec& gear, const std::string& name)
+  {
+    const int teeth = gear.internal ? -static_cast<int>(gear.teeth) : static_cast<int>(gear.teeth);
+    kinematics::TrainMember member;
+    member.name = name;
+    member.teeth = teeth;
+    member.module = pair.transverse_module;
+    return dynamics::blank_inertia(member, {name, gear.face_width, gear.bore_diameter},
+                                   steel_density, "Gear pair/" + name + "/bore diameter")
+        .moment_of_inertia;
+  };
+  const double j1 = inertia(spec.pinion, "Pinion"), j2 = inertia(spec.wheel, "Wheel");
+  const double r_b1 = 0.5 * pair.pinion.base_diameter, r_b2 = 0.5 * pair.wheel.base_diameter;
+  double sum = 0.;
+  for (const auto& r : sweep.positions)
+    sum += r.mesh_stiffness;
+  const double mean_stiffness = sum / sweep.positions.size(); // N/m
+  // The mesh's equivalent mass along the line of action and its resonance speed n_E1 (ISO
+  // 6336-1 §6.3: the mesh frequency z1·n1/60 at the torsional mode's frequency √(k/m_e)/2π).
+  const double equivalent_mass = j1 * j2 / (j1 * r_b2 * r_b2 + j2 * r_b1 * r_b1);
+  const double natural = std::sqrt(mean_stiffness / equivalent_mass); // rad/s
+  const unsigned int z1 = spec.pinion.teeth;
+  const double resonance_rpm = 30. * natural / (M_PI * z1);
+  // Subcritical (ISO 6336-1: N ≤ 0.85) and below the second harmonic's resonance at N = 0.5.
+  constexpr double speed_ratio = 0.3;
+  constexpr double damping_ratio = 0.05; // the Train meshes' default ζ
+  const double damping = 2. * damping_ratio * std::sqrt(mean_stiffness * equivalent_mass);
+  // The friction force reverses at the pitch point; its arm about each centre there is the
+  // roll length r_b·tan α_wt.
+  const double arm_1 = r_b1 * std::tan(pair.working_pressure_angle);
+  const double arm_2 = r_b2 * std::tan(pair.working_pressure_angle);
+  std::ostringstream out;
+  out << "# This pair: z " << z1 << "/" << (spec.wheel.internal ? "-" : "") << spec.wheel.teeth
+      << ", m_t " << format_number(pair.transverse_module / mm, 6) << " mm, a_w "
+      << format_number(pair.centre_distance / mm, 6) << " mm, x "
+      << format_number(spec.pinion.profile_shift, 4) << "/"
+      << format_number(spec.wheel.profile_shift, 4) << ", eps_alpha "
+      << format_number(pair.transverse_contact_ratio, 6) << ", T1 "
+      << format_number(p.settings.pinion_torque, 6) << " N·m: two gears, one mesh.\n"
+      << "# Inertias: steel blanks (7850 kg/m³) between bore and reference circle; damping: "
+         "zeta = 0.05 of the mean k; friction: the FE's mu, arms r_b·tan(alpha_wt).\n"
+      << "# Input speed: " << speed_ratio
+      << " x the resonance speed n_E1 = " << format_number(resonance_rpm, 6)
+      << " rpm of this pair (ISO 6336-1, subcritical); set your running speed.\n"
+      << "subsection Train\n  set number of gears = 2\n  set input speed = "
+      << format_number(speed_ratio * resonance_rpm, 8)
+      << "\n  set published reference = false\nend\n"
+      << "subsection Gear 1\n  set inertia = " << format_number(j1, 8)
+      << "\n  set torque = " << format_number(p.settings.pinion_torque, 10) << "\nend\n"
+      << "subsection Gear 2\n  set inertia = " << format_number(j2, 8)
+      << "\n  set torque = balance\nend\n"
+      << "subsection Mesh 1\n  set driver gear = 1\n  set driven gear = 2\n"
+      << "  set driver teeth = " << z1
+      << "\n  set driver base radius = " << format_number(r_b1 / mm, 10)
+      << "\n  set driven base radius = " << format_number(r_b2 / mm, 10)
+      << "\n  set contact ratio = " << format_number(pair.transverse_contact_ratio, 10)
+      << "\n  set approach ratio = "
+      << format_number((pair.pitch_point - pair.contact_start) / pair.transverse_base_pitch, 10)
+      << "\n  set damping = " << format_number(damping, 8) << "\n  set friction coefficient = "
+      << format_number(p.settings.contact.friction_coefficient, 8)
+      << "\n  set driver friction arm = " << format_number(arm_1 / mm, 8)
+      << "\n  set driven friction arm = " << format_number(arm_2 / mm, 8)
+      << "\n  set stiffness source = table\n  set stiffness table = "
+      << dynamics_stiffness_table(sweep) << "\nend\n";
+  return out.str();
+}
+
+std::string dynamics_cai_input(const dynamics::CaiParameters& cai)
+{
+  std::string text;
+  for (const std::string mesh : {"Mesh 1", "Mesh 2"})
+    text += "subsection " + mesh + "\n  set stiffness source = cai\n" +
+            "  set stiffness = " + format_number(cai.scale / 1e3, 10) + "\n" +
+            "  set cai shape = " + format_number(cai.shape[0], 10) + ", " +
+            format_number(cai.shape[1], 10) + ", " + format_number(cai.shape[2], 10) + "\nend\n";
+  return text;
+}
+
+std::vector<std::pair<double, double>>
+pair_stiffness_samples(const stiffness::StiffnessSweepResult& sweep, double contact_ratio)
+{
+  std::vector<std::pair<double, double>> samples;
+  for (const auto& r : sweep.positions)
+    for (const auto& pair : r.pairs)
+    {
+      const double position = r.mesh_position + pair.pair;
+      if (pair.load_share > 1e-6 && position >= 0. && position < contact_ratio)
+        samples.emplace_back(position, pair.load_share * r.mesh_stiffness);
+    }
+  std::sort(samples.begin(), samples.end());
+  return samples;
+}
+} // namespace gearstiff::app
