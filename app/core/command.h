@@ -1,5 +1,6 @@
 // The `gearstiff` command line: one Command per sub-command, registered by a static
-// CommandRegistration in its own app/*_command.cc file, so adding a command touches no other file.
+// CommandRegistration in its own app/<wing>/*_command.cc file, so adding a command touches no other
+// file.
 //
 // Every command:
 //  - declares its parameters (one subsection per parameter struct, units in each documentation
@@ -14,6 +15,7 @@
 #pragma once
 
 #include "app/core/report.h"
+#include "app/core/scratch.h"
 #include "errors/io.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -136,14 +138,6 @@ void install_signal_cleanup();
 // named under TMPDIR.
 IoError located(const IoError& error, const std::string& staging_directory,
                 const std::string& output_directory);
-
-// The process's folder for scratch files (scene meshes, temporary CSV): a hidden
-// `gearstiff-scratch-<pid>` in the temporary folder, created on first use. It is removed at exit,
-// by SIGINT/SIGTERM/SIGHUP (install_signal_cleanup) and, after a SIGKILL, by the next run, so no
-// scratch file outlives the process (a cycloid-loads run stopped by SIGTERM left 1.9 MB meshes).
-std::string scratch_directory();
-// scratch_directory() of rank 0 on every rank (a file rank 0 writes and every rank reads).
-std::string shared_scratch_directory(MPI_Comm communicator);
 
 // Directory holding tools/ (plot scripts), set at configure time; overridable by
 // GEARSTIFF_TOOLS_DIR in the environment.

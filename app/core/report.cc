@@ -1,6 +1,6 @@
 #include "app/core/report.h"
 
-#include "app/core/command.h"
+#include "app/core/scratch.h"
 #include "errors/io.h"
 
 #include <algorithm>

@@ -16,7 +16,8 @@
 // A size of 0 is no fault: the tooth stays the nominal outline, bit for bit.
 #pragma once
 
-#include "app/scenes/tooth_modification_parameters.h"
+#include "app/scenes/modification_text.h"
+#include "geometry/tooth_modification.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>

@@ -5,6 +5,7 @@
 // entries (app/kinematics_parameters.cc), which the gear-pair and kinematics commands share.
 #pragma once
 
+#include "app/scenes/modification_text.h"
 #include "geometry/tooth_modification.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -17,12 +18,6 @@ namespace gearstiff::app
 // The entries in Gear pair/Pinion and Gear pair/Wheel (all 0: unmodified).
 void declare_tooth_modification_parameters(dealii::ParameterHandler& prm);
 
-// The entries of one gear as written (name → text), so that a variant can override some.
-using ModificationText = std::map<std::string, std::string>;
-struct PairModificationText
-{
-  ModificationText pinion, wheel;
-};
 PairModificationText read_tooth_modification_text(dealii::ParameterHandler& prm);
 
 // The modification list of one gear (`wheel` names the parameters "Gear pair/Wheel/...");
