@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "fem/parallel.h"
+#include "geometry/tooth_fault.h"
 
 #include <algorithm>
 #include <boost/serialization/string.hpp>
@@ -292,4 +293,17 @@ template StiffnessSweepResult stiffness_sweep<2>(MPI_Comm, const GearMeshStiffne
 template StiffnessSweepResult stiffness_sweep<3>(MPI_Comm, const GearMeshStiffnessSettings&,
                                                  const StiffnessSweepSpec&, const std::string&,
                                                  const std::function<void(const std::string&)>&);
+bool once_sweep_valid(
+    const GearMeshStiffnessSettings& settings,
+    const std::vector<std::pair<geometry::GearModifications, geometry::GearModifications>>&
+        variants)
+{
+  bool whole = geometry::flanks_whole(settings.scene.pinion_modifications) &&
+               geometry::flanks_whole(settings.scene.wheel_modifications);
+  for (const auto& [pinion, wheel] : variants)
+    whole = whole && geometry::flanks_whole(pinion) && geometry::flanks_whole(wheel);
+  return settings.scene.mesh.dimension == 2 && whole &&
+         settings.contact.iteration_solves != contact::IterationSolves::full_resolve &&
+         settings.linear_solver.method == fem::LinearSolverMethod::direct_mumps;
+}
 } // namespace gearstiff::stiffness

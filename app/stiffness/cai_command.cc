@@ -15,6 +15,8 @@
 #include "app/core/parameter_patterns.h"
 #include "app/core/units.h"
 #include "app/stiffness/stiffness_parameters.h"
+#include "app/stiffness/stiffness_report.h"
+#include "app/stiffness/stiffness_solve.h"
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/mesh_stiffness.h"
 #include "errors/errors.h"

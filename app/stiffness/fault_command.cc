@@ -12,6 +12,7 @@
 #include "app/core/command.h"
 #include "app/core/units.h"
 #include "app/stiffness/stiffness_parameters.h"
+#include "app/stiffness/stiffness_report.h"
 #include "errors/errors.h"
 #include "geometry/tooth_fault.h"
 #include "stiffness/fault_sweep.h"

@@ -14,6 +14,8 @@
 #include "app/core/command.h"
 #include "app/core/units.h"
 #include "app/stiffness/stiffness_parameters.h"
+#include "app/stiffness/stiffness_report.h"
+#include "app/stiffness/stiffness_solve.h"
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/simulation.h"
 #include "dynamics/split_path_case.h"

@@ -15,6 +15,8 @@
 #include "app/core/units.h"
 #include "app/stiffness/face_load_report.h"
 #include "app/stiffness/stiffness_parameters.h"
+#include "app/stiffness/stiffness_report.h"
+#include "app/stiffness/stiffness_solve.h"
 #include "errors/errors.h"
 #include "kinematics/iso_stiffness.h"
 #include "stiffness/transmission_error.h"
