@@ -2,6 +2,7 @@
 
 #include "app/core/parameter_file_check.h"
 #include "app/core/parameter_names.h"
+#include "app/core/renamed_parameters.h"
 #include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/io.h"
@@ -11,6 +12,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -117,11 +119,26 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
     other.declare_parameters(other_prm);
     merge_declared(others.declared, declared_parameters(other_prm));
   }
-  check_parameter_file(declared_parameters(prm), file, &others);
+  // Renamed parameters read under their new names (one note each, rank 0).
+  std::ifstream in(file);
+  const std::string original{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const bool json = file.size() > 5 && file.substr(file.size() - 5) == ".json";
+  std::vector<std::string> renamed;
+  const std::string text = with_current_names(original, json, renamed);
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    for (const std::string& old_path : renamed)
+      std::cerr << renamed_note(name, old_path) << "\n";
+  check_parameter_file(declared_parameters(prm), file, &others, renamed.empty() ? nullptr : &text);
   try
   {
     // Names only other commands declare were listed above; deal.II skips them.
-    prm.parse_input(file, "", !others.ignored.empty(), true);
+    std::istringstream renamed_text(text);
+    if (renamed.empty())
+      prm.parse_input(file, "", !others.ignored.empty(), true);
+    else if (json)
+      prm.parse_input_from_json(renamed_text, !others.ignored.empty());
+    else
+      prm.parse_input(renamed_text, file, "", !others.ignored.empty());
   }
   catch (const dealii::ExceptionBase& e)
   {
@@ -130,9 +147,13 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
   return others.ignored;
 }
 
-void apply_override(dealii::ParameterHandler& prm, const std::string& path,
+void apply_override(dealii::ParameterHandler& prm, const std::string& typed_path,
                     const std::string& value)
 {
+  // A renamed parameter is set under its new name, with a note (rank 0).
+  const std::string path = current_parameter_path(typed_path);
+  if (path != typed_path && dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::cerr << renamed_note("--set", typed_path) << "\n";
   std::vector<std::string> parts;
   std::size_t start = 0;
   for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1)

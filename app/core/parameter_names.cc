@@ -153,9 +153,8 @@ std::string any_command_reason(const OtherCommandNames* others,
 }
 
 void check_prm_file(const DeclaredSection& declared, const std::string& file,
-                    OtherCommandNames* others)
+                    OtherCommandNames* others, std::istream& in)
 {
-  std::ifstream in(file);
   std::vector<std::string> sections;
   std::vector<unsigned int> opened_at; // the line of each open subsection
   // Depth of the outermost open subsection only other commands declare (npos: none).
@@ -345,18 +344,25 @@ void merge_declared(DeclaredSection& into, const DeclaredSection& from)
 }
 
 void check_parameter_file(const DeclaredSection& declared, const std::string& file,
-                          OtherCommandNames* others)
+                          OtherCommandNames* others, const std::string* text)
 {
   const bool json = file.size() > 5 && file.substr(file.size() - 5) == ".json";
+  std::ifstream from_file;
+  std::istringstream from_text;
+  if (text != nullptr)
+    from_text.str(*text);
+  else
+    from_file.open(file);
+  std::istream& in = text != nullptr ? static_cast<std::istream&>(from_text) : from_file;
   if (!json)
   {
-    check_prm_file(declared, file, others);
+    check_prm_file(declared, file, others, in);
     return;
   }
   boost::property_tree::ptree tree;
   try
   {
-    boost::property_tree::read_json(file, tree);
+    boost::property_tree::read_json(in, tree);
   }
   catch (const std::exception&)
   {

@@ -56,7 +56,8 @@ std::string selection_mismatch(const dealii::ParameterHandler& prm,
 // The same for every `set` of a .prm file or every key of a .json file; the InputError names
 // the file and line (.prm) or the file and the key's path (.json). Lines it does not understand
 // are left to deal.II's parser. With `others`, names only other commands declare are listed
-// there, not refused.
+// there, not refused. With `text`, that is the file's content (the file's text with renamed
+// parameters under their new names, app/core/renamed_parameters.h); messages still name `file`.
 void check_parameter_file(const DeclaredSection& declared, const std::string& file,
-                          OtherCommandNames* others = nullptr);
+                          OtherCommandNames* others = nullptr, const std::string* text = nullptr);
 } // namespace gearstiff::app

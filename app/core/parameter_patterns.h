@@ -15,9 +15,10 @@ using dealii::Patterns::Integer;
 using dealii::Patterns::List;
 using dealii::Patterns::Selection;
 
-// Every Coulomb friction coefficient of the parameter files (contact, the CalculiX deck, tooth
-// friction in the dynamics) takes the same range: 0 (frictionless) to 1 (dry steel on steel is
-// about 0.6; lubricated gear teeth 0.01–0.1).
+// Every Coulomb friction coefficient of the parameter files (Contact/Friction coefficient, the
+// CalculiX deck's, the dynamics meshes' and the train's pair efficiencies', all named `friction
+// coefficient`, capitalised in the Contact section as its other entries) takes the same range: 0
+// (frictionless) to 1 (dry steel on steel is about 0.6; lubricated gear teeth 0.01–0.1).
 inline Double friction_coefficient_pattern()
 {
   return Double(0., 1.);

@@ -212,8 +212,9 @@ void declare_train_parameters(dealii::ParameterHandler& prm)
   prm.declare_entry(
       "input torque", "120.2", Double(),
       "torque on the first input [N·m] (docs/references.md §2: 120.2); 0 = no statics");
-  prm.declare_entry("tooth friction coefficient", "0.08", Double(0., 0.5),
-                    "μ_z for the pair efficiencies [-] (docs/references.md §2: 0.08)");
+  prm.declare_entry("friction coefficient", "0.08", friction_coefficient_pattern(),
+                    "μ_z for the pair efficiencies [-] (docs/references.md §2: 0.08; was `tooth "
+                    "friction coefficient`)");
   for (const TrainTextEntry& entry : train_mass_entries)
     prm.declare_entry(entry.name, train.*entry.text, Anything(), entry.documentation);
   prm.declare_entry("reduce inertia to", "", Anything(),
@@ -230,7 +231,7 @@ TrainParameters parse_train_parameters(dealii::ParameterHandler& prm)
   for (const TrainTextEntry& entry : train_mass_entries)
     p.text.*entry.text = prm.get(entry.name);
   p.input_torque = prm.get_double("input torque");
-  p.tooth_friction = prm.get_double("tooth friction coefficient");
+  p.tooth_friction = prm.get_double("friction coefficient");
   p.reduce_to = prm.get("reduce inertia to");
   prm.leave_subsection();
   return p;
