@@ -43,6 +43,27 @@ LateralSweepPoint diverged_point(const SolverFailure& failure)
   s.orbit_amplitude.setConstant(nan);
   return point;
 }
+
+// InputError when the whole sweep, each speed at its own step and settling for `settle_time`
+// [s], would take more than 2e8 steps.
+void check_sweep_steps(const LateralMeshExcitation& excitation, const LateralRunSettings& run,
+                       const LateralSweepSettings& sweep, double settle_time)
+{
+  double steps = 0.;
+  for (const double w : sweep.input_speeds)
+  {
+    const double f = excitation.mesh_frequency * std::abs(w / sweep.nominal_input_speed);
+    const double h = std::min(run.time_step, 1. / (f * sweep.steps_per_mesh_period));
+    steps += (settle_time + sweep.window_periods / f) / h;
+  }
+  if (steps > 2e8)
+    throw InputError("Simulation/steady state start",
+                     "the sweep would need " + format_number(steps, 3) +
+                         " steps (limit 2e8): the "
+                         "slowest mode decays in " +
+                         format_number(settle_time, 3) +
+                         " s; give more damping or a shorter steady state start");
+}
 } // namespace
 
 LateralSweepResult lateral_speed_sweep(const LateralModel& model, const LateralStaticLoad& load,
@@ -59,20 +80,7 @@ LateralSweepResult lateral_speed_sweep(const LateralModel& model, const LateralS
     throw InputError("Train mesh 1/damping", "without damping the start-up transient never "
                                              "decays: give damping or Simulation/steady state "
                                              "start");
-  double steps = 0.; // of the whole sweep, each speed at its own step
-  for (const double w : sweep.input_speeds)
-  {
-    const double f = excitation.mesh_frequency * std::abs(w / sweep.nominal_input_speed);
-    const double h = std::min(run.time_step, 1. / (f * sweep.steps_per_mesh_period));
-    steps += (result.settle_time + sweep.window_periods / f) / h;
-  }
-  if (steps > 2e8)
-    throw InputError("Simulation/steady state start",
-                     "the sweep would need " + format_number(steps, 3) +
-                         " steps (limit 2e8): the "
-                         "slowest mode decays in " +
-                         format_number(result.settle_time, 3) +
-                         " s; give more damping or a shorter steady state start");
+  check_sweep_steps(excitation, run, sweep, result.settle_time);
   std::vector<std::pair<double, bool>> order; // speed, descending
   if (sweep.direction != SweepDirection::down)
     for (const double w : sweep.input_speeds)

@@ -154,6 +154,20 @@ StiffnessSweepResult gather_positions(
   return result;
 }
 
+// The progress line of position i of n (`once`: with its mesh, set-up and contact times).
+std::string position_line(const GearMeshStiffnessResult& r, unsigned int i, unsigned int n,
+                          bool once)
+{
+  return "position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
+         format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
+         "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + " N/µm, " +
+         std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) + " s" +
+         (once ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
+                     format_number(r.setup_time, 3) + " s, contact " +
+                     format_number(r.solve_time, 3) + " s)"
+               : std::string());
+}
+
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
@@ -203,17 +217,8 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
     const GearMeshStiffnessResult& r = all.front();
     mine.emplace_back(i, all);
     if (progress)
-      progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
-               format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
-               "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + " N/µm, " +
-               std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
-               " s" +
-               (spec.mesh == SweepMesh::once
-                    ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
-                          format_number(r.setup_time, 3) + " s, contact " +
-                          format_number(r.solve_time, 3) + " s)"
-                    : std::string()) +
-               " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) + " solved]");
+      progress(position_line(r, i, n, spec.mesh == SweepMesh::once) + " [rank " +
+               std::to_string(rank) + ": " + std::to_string(mine.size()) + " solved]");
   };
   fem::distribute_items(mpi_communicator, (n + block - 1) / block,
                         [&](const unsigned int item)

@@ -93,27 +93,37 @@ def family(path):
     return "other", top
 
 
+CONTROL = re.compile(r"(if|for|while|switch|else|do|try|catch|return)\b")
+
+
 def long_functions(path, lines):
-    """(name, first line, length) of every function body longer than the limit."""
+    """(name, first line, length) of every function body longer than the limit: a `{` alone on
+    its line after a signature (at any indent: methods defined in a class count too), to the `}`
+    at the same indent; lengths from the signature's first line. Lambdas and control blocks are
+    not functions of their own."""
     found = []
     i = 0
     while i < len(lines):
-        if lines[i] != "{":
+        if lines[i].strip() != "{":
             i += 1
             continue
-        # The signature: back to the line that opens it (the first line of the statement).
-        j = i - 1
-        while j > 0 and lines[j].strip() and not lines[j - 1].rstrip().endswith(
-                (";", "}", "{")) and not lines[j - 1].lstrip().startswith(("//", "#")) \
-                and lines[j - 1].strip():
+        indent = len(lines[i]) - len(lines[i].lstrip())
+        j = i
+        while j > 0 and lines[j - 1].strip() and not lines[j - 1].rstrip().endswith(
+                (";", "}", "{", ":")) and not lines[j - 1].lstrip().startswith(("//", "#")):
             j -= 1
+        # "public:" ends a run; an initializer list's ": a(b)" line does not end in ':'
         head = " ".join(l.strip() for l in lines[j:i])
-        end = i + 1
-        while end < len(lines) and not lines[end].startswith("}"):
-            end += 1
-        if re.match(r"(namespace|struct|class|enum|union)\b", head) or "(" not in head:
-            i += 1  # a namespace or type body: its functions have their own column-0 braces
+        is_function = ("(" in head and not CONTROL.match(head) and "[" not in head.split("(")[0]
+                       and "](" not in head and not re.match(r"(namespace|struct|class|enum|union)\b", head)
+                       and not head.endswith((",", "=")))
+        if not is_function:
+            i += 1
             continue
+        end = i + 1
+        while end < len(lines) and not (lines[end].startswith(" " * indent + "}") and (
+                len(lines[end]) - len(lines[end].lstrip()) == indent)):
+            end += 1
         length = end - j + 1
         if length > FUNCTION_LIMIT:
             name = re.search(r"([A-Za-z_][A-Za-z_0-9:~]*)\s*\(", head)

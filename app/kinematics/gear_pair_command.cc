@@ -20,32 +20,27 @@ namespace
 {
 const std::string split_path_source = "docs/references.md §1 (Reszuta & Drewniak 2015)";
 
-void run(dealii::ParameterHandler& prm, CommandContext& context)
+// A value of the report, compared with its published reference when the pair is the built-in
+// one (`published`) and a reference exists (not NaN).
+struct PublishedValue
 {
-  std::vector<kinematics::DerivedSize> derived;
-  const kinematics::GearPairSpec spec = parse_gear_pair_parameters(prm, derived);
-  const kinematics::IsoStiffnessOptions options = parse_iso_parameters(prm);
-  const auto start = std::chrono::steady_clock::now();
-  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec);
-  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair, options);
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  // The published values belong to the built-in pair alone, recognised by its geometry.
-  const bool published = kinematics::is_split_path_pair(spec);
-  Report& report = context.report;
-  if (!derived.empty())
-    report.add_text("derived sizes", kinematics::derived_sizes_text(derived));
-  auto value = [&](const std::string& key, double v, double reference, const std::string& unit,
-                   const std::string& description, const std::string& source)
+  Report& report;
+  bool published;
+  void operator()(const std::string& key, double v, double reference, const std::string& unit,
+                  const std::string& description, const std::string& source) const
   {
     if (published && !std::isnan(reference))
       report.add_compared_value(key, v, reference, unit, description, source);
     else
       report.add_value(key, v, unit, description);
-  };
-  const double none = std::nan("");
+  }
+};
 
+// Each gear's diameters and tip thickness.
+void report_gears(const kinematics::GearPairGeometry& pair, const PublishedValue& value)
+{
+  Report& report = value.report;
+  const double none = std::nan("");
   for (const bool wheel : {false, true})
   {
     const kinematics::GearGeometry& g = wheel ? pair.wheel : pair.pinion;
@@ -64,6 +59,14 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     report.add_value(p + "tip_thickness", g.tip_thickness / mm, "mm",
                      name + " normal tooth thickness at the tip s_an");
   }
+}
+
+// The pair: centre distance, pressure angle, pitch, contact path and ratios, clearances,
+// contact zones.
+void report_pair(const kinematics::GearPairGeometry& pair, const PublishedValue& value)
+{
+  Report& report = value.report;
+  const bool published = value.published;
   value("centre_distance", pair.centre_distance / mm, 97.5, "mm", "centre distance a_w",
         split_path_source);
   value("working_pressure_angle", pair.working_pressure_angle / degree, 20., "deg",
@@ -96,8 +99,14 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   for (const kinematics::ContactZone& zone : pair.contact_zones)
     zones.add_row({zone.start / mm, zone.end / mm, double(zone.pairs),
                    zone.pinion_roll_start / degree, zone.pinion_roll_end / degree});
+}
 
-  // ISO 6336-1 method B.
+// ISO 6336-1 method B.
+void report_iso(const kinematics::IsoStiffness& iso, const kinematics::IsoStiffnessOptions& options,
+                const PublishedValue& value)
+{
+  Report& report = value.report;
+  const bool published = value.published;
   report.add_value("iso_flexibility", iso.flexibility * 1e9, "mm·µm/N", "ISO q'");
   report.add_value("iso_theoretical_single_stiffness", iso.theoretical_single * 1e-9, "N/(mm·µm)",
                    "ISO c'_th");
@@ -129,7 +138,27 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     report.add_text("iso_note", "the paper takes C_B = 1 (rack h_fP = 1.2·m_n) and gets c' ≈ 13.8 "
                                 "N/(mm·µm), c'·b ≈ 330 N/µm; the built-in ISO 53 A rack "
                                 "(h_fP = 1.25·m_n) gives C_B = 0.975");
-  report.add_value(
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  std::vector<kinematics::DerivedSize> derived;
+  const kinematics::GearPairSpec spec = parse_gear_pair_parameters(prm, derived);
+  const kinematics::IsoStiffnessOptions options = parse_iso_parameters(prm);
+  const auto start = std::chrono::steady_clock::now();
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec);
+  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair, options);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // The published values belong to the built-in pair alone, recognised by its geometry.
+  const PublishedValue value{context.report, kinematics::is_split_path_pair(spec)};
+  if (!derived.empty())
+    context.report.add_text("derived sizes", kinematics::derived_sizes_text(derived));
+  report_gears(pair, value);
+  report_pair(pair, value);
+  report_iso(iso, options, value);
+  context.report.add_value(
       "cost", elapsed * 1e6, "µs",
       "wall time: closed-form geometry and ISO formulas, one Newton solve for inv α_wt");
 }
