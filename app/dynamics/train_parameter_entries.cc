@@ -69,11 +69,4 @@ parse_named_numbers(const std::string& text, unsigned int count, const std::stri
   }
   return entries_read;
 }
-
-void declare_text_entries(dealii::ParameterHandler& prm, const std::vector<TextEntry>& entries)
-{
-  for (const TextEntry& entry : entries)
-    prm.declare_entry(entry.name, entry.default_value, dealii::Patterns::Anything(),
-                      entry.documentation);
-}
 } // namespace gearstiff::app

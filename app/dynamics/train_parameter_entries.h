@@ -1,7 +1,9 @@
 // Entries of the Train subsection that the rotational (`Train/model = train`) and the lateral
 // (`Train/model = lateral`) dynamics share: lists of "name: v1 v2 ..., ..." and plain text
-// entries declared from a table.
+// entries declared from a table (app/core/parameter_table.h).
 #pragma once
+
+#include "app/core/parameter_table.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
@@ -22,13 +24,4 @@ enum class NumberSign
 std::vector<std::pair<std::string, std::vector<double>>>
 parse_named_numbers(const std::string& text, unsigned int count, const std::string& parameter,
                     const std::string& units, NumberSign sign = NumberSign::non_negative);
-
-// A free-text entry (Patterns::Anything) of a parameter table.
-struct TextEntry
-{
-  const char* name;
-  const char* default_value;
-  const char* documentation;
-};
-void declare_text_entries(dealii::ParameterHandler& prm, const std::vector<TextEntry>& entries);
 } // namespace gearstiff::app

@@ -1,6 +1,7 @@
 #include "app/scenes/tooth_fault_parameters.h"
 
 #include "app/core/parameter_patterns.h"
+#include "app/core/parameter_table.h"
 #include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/format.h"
@@ -16,7 +17,7 @@ namespace
 {
 // Name, default and documentation of each entry: the names of issue 31; shapes and sources in
 // geometry/tooth_fault.h (docs/references.md §13).
-const char* const fault_entries[][3] = {
+const std::vector<TextEntry> fault_entries = {
     {"faulty tooth", "0",
      "index of the faulty tooth: 0 = the tooth at the pitch point at pinion angle 0, counted "
      "counter-clockwise in the gear's own frame"},
@@ -176,21 +177,12 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
 
 void declare_tooth_fault_entries(ParameterHandler& prm)
 {
-  for (const auto& [name, default_value, documentation] : fault_entries)
-    prm.declare_entry(name, default_value, Anything(), documentation);
+  declare_text_entries(prm, fault_entries);
 }
 
 void read_tooth_fault_entries(ParameterHandler& prm, ModificationText& text)
 {
-  for (const auto& entry : fault_entries)
-  {
-    const std::string name = entry[0];
-    const std::string value = prm.get(name);
-    const auto first = value.find_first_not_of(" \t");
-    text[name] = first == std::string::npos
-                     ? ""
-                     : value.substr(first, value.find_last_not_of(" \t") - first + 1);
-  }
+  read_text_entries(prm, fault_entries, text);
 }
 
 void add_tooth_faults(const ModificationText& text, bool wheel, unsigned int dimension,

@@ -1,6 +1,7 @@
 #include "app/scenes/tooth_modification_parameters.h"
 
 #include "app/core/parameter_patterns.h"
+#include "app/core/parameter_table.h"
 #include "app/core/units.h"
 #include "app/scenes/tooth_fault_parameters.h"
 #include "errors/errors.h"
@@ -13,15 +14,8 @@ namespace gearstiff::app
 {
 namespace
 {
-struct Entry
-{
-  const char* name;
-  const char* default_value;
-  const char* documentation;
-};
-
 // The entries of one gear, ISO 21771 terms (docs/references.md §8).
-const Entry entries[] = {
+const std::vector<TextEntry> entries = {
     {"tip relief", "0", "C_a, material removed normal to the flank at the tip [µm]; 0 = none"},
     {"tip relief length", "auto",
      "L_a along the path of contact from the tip [mm]; auto = from the start of single-tooth "
@@ -123,8 +117,7 @@ void declare_tooth_modification_parameters(ParameterHandler& prm)
   for (const char* gear : {"Pinion", "Wheel"})
   {
     prm.enter_subsection(gear);
-    for (const Entry& e : entries)
-      prm.declare_entry(e.name, e.default_value, Anything(), e.documentation);
+    declare_text_entries(prm, entries);
     declare_tooth_fault_entries(prm); // issue 31, app/tooth_fault_parameters.cc
     prm.leave_subsection();
   }
@@ -138,8 +131,7 @@ PairModificationText read_tooth_modification_text(ParameterHandler& prm)
   for (const bool wheel : {false, true})
   {
     prm.enter_subsection(wheel ? "Wheel" : "Pinion");
-    for (const Entry& e : entries)
-      (wheel ? text.wheel : text.pinion)[e.name] = trim(prm.get(e.name));
+    read_text_entries(prm, entries, wheel ? text.wheel : text.pinion);
     read_tooth_fault_entries(prm, wheel ? text.wheel : text.pinion);
     prm.leave_subsection();
   }
