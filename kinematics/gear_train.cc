@@ -680,7 +680,8 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
   {
     TrainMember& gear = members.existing(name, "profile shifts");
     const double shift = parse_number(value, "Train/profile shifts");
-    // The gear-pair command's range (app/kinematics_parameters.cc): beyond it no tooth exists.
+    // The gear-pair command's range (app/kinematics/kinematics_parameters.cc): beyond it no tooth
+    // exists.
     if (gear.teeth == 0 || !(std::abs(shift) <= 5.))
       throw InputError("Train/profile shifts", gear.teeth == 0
                                                    ? "'" + name + "' has no teeth to shift"

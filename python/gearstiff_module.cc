@@ -5,7 +5,7 @@
 //   r = gearstiff.gear_pair({"Gear pair": {"Pinion": {"teeth": 21}}})
 //   r["values"]["transverse_contact_ratio"]["value"]; r["tables"]["contact_zones"]["data"]["start"]
 //
-// A command runs through the same functions as `gearstiff <command>` (app/invoke.h): a nested
+// A command runs through the same functions as `gearstiff <command>` (app/core/invoke.h): a nested
 // dict becomes the `--set section/key=value` overrides of the command line, a str/path is the
 // parameter file, and the result is built from the same Report that `--json` prints. Errors are
 // the command line's: gearstiff.InputError (a ValueError) and gearstiff.SolverFailure (a

@@ -1,6 +1,6 @@
-// The "Cycloid disc" (the ring, app/geometry_parameters.h) and "Cycloid scene" subsections — bore,
-// output pins and holes, roller pins, disc width, contact clearance, outline resolution (mm and
-// counts in the file, SI in geometry::CycloidSceneSpec) — declared and parsed once for every
+// The "Cycloid disc" (the ring, app/scenes/geometry_parameters.h) and "Cycloid scene" subsections —
+// bore, output pins and holes, roller pins, disc width, contact clearance, outline resolution (mm
+// and counts in the file, SI in geometry::CycloidSceneSpec) — declared and parsed once for every
 // command that builds a cycloid scene: `gearstiff mesh` (Scene/type = cycloid) and `gearstiff
 // cycloid-loads`. A command adds its own entries to the same subsection after calling
 // declare_cycloid_scene_parameters.

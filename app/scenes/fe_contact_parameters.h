@@ -1,5 +1,5 @@
 // Parameter-file form of the FE contact model, shared by the `contact` command and the
-// stiffness analyses (app/stiffness_parameters.h): subsections "Finite elements"
+// stiffness analyses (app/stiffness/stiffness_parameters.h): subsections "Finite elements"
 // (fem::ElasticityParameters), "Linear solver" (fem::LinearSolverParameters) and "Contact"
 // (contact::ContactParameters), each declared and parsed by its own struct. A command may set
 // other defaults or declare further entries in these subsections after declaring them.

@@ -62,7 +62,8 @@ void declare_deck_parameters(ParameterHandler& prm)
 
 void declare_parameters(ParameterHandler& prm)
 {
-  // Scene/type offers every registered scene type (app/scene.h), each declaring its sections.
+  // Scene/type offers every registered scene type (app/scenes/scene.h), each declaring its
+  // sections.
   std::string names, descriptions;
   for (const auto& [name, type] : scene_registry())
   {

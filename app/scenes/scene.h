@@ -1,6 +1,6 @@
-// Scene types of `gearstiff mesh`, registered by name as commands are (app/command.h): each type
-// supplies its parameters (declare/parse), its mesh, its CalculiX/Abaqus deck and the values it
-// reports beyond the common ones, in its own app/scene_<type>.cc. Adding a drive type is adding
+// Scene types of `gearstiff mesh`, registered by name as commands are (app/core/command.h): each
+// type supplies its parameters (declare/parse), its mesh, its CalculiX/Abaqus deck and the values
+// it reports beyond the common ones, in its own app/scene_<type>.cc. Adding a drive type is adding
 // files: geometry/scene_<type>.{h,cc} (the geometry and mesh, SI) and app/scene_<type>.cc (the
 // parameters and the registration); `Scene/type` lists every registered name.
 #pragma once

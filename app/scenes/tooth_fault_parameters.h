@@ -1,6 +1,6 @@
 // Parameter-file form of the tooth faults (geometry/tooth_fault.h, issue 31), in
 // "Gear pair/Pinion" and "Gear pair/Wheel" beside the micro-geometry entries
-// (app/tooth_modification_parameters.h), read into the same per-gear text so that
+// (app/scenes/tooth_modification_parameters.h), read into the same per-gear text so that
 // `Stiffness/variants` can vary them ("crack depth = 0; crack depth = 1").
 //
 //   faulty tooth  index of the faulty tooth (0: the tooth at the pitch point at θ = 0, positive

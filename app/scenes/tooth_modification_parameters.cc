@@ -118,7 +118,7 @@ void declare_tooth_modification_parameters(ParameterHandler& prm)
   {
     prm.enter_subsection(gear);
     declare_text_entries(prm, entries);
-    declare_tooth_fault_entries(prm); // issue 31, app/tooth_fault_parameters.cc
+    declare_tooth_fault_entries(prm); // issue 31, app/scenes/tooth_fault_parameters.cc
     prm.leave_subsection();
   }
   prm.leave_subsection();

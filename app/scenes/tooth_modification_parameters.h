@@ -2,7 +2,8 @@
 // "Gear pair/Pinion" and "Gear pair/Wheel" (ISO 21771 terms; amounts in µm, lengths in mm), and
 // the variants of `Stiffness/variants` (one modification set each). Declared by the commands
 // that build a gear-pair scene (mesh, stiffness, cai, run); kept apart from the gear's own
-// entries (app/kinematics_parameters.cc), which the gear-pair and kinematics commands share.
+// entries (app/kinematics/kinematics_parameters.cc), which the gear-pair and kinematics commands
+// share.
 #pragma once
 
 #include "app/scenes/modification_text.h"

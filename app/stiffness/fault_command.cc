@@ -8,7 +8,8 @@
 //   pair/Wheel/spall length=1"
 //
 // The fault entries are those of Gear pair/Pinion and Gear pair/Wheel
-// (app/tooth_fault_parameters.h); Stiffness/sweep positions is N, the positions per base pitch.
+// (app/scenes/tooth_fault_parameters.h); Stiffness/sweep positions is N, the positions per base
+// pitch.
 #include "app/core/command.h"
 #include "app/core/units.h"
 #include "app/stiffness/stiffness_parameters.h"

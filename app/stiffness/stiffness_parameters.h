@@ -1,10 +1,10 @@
 // Parameter-file form of the FE mesh-stiffness analysis (stiffness/mesh_stiffness.h), shared by the
-// `stiffness`, `cai` and `run` commands: the gear pair (app/kinematics_parameters.h), the scene
-// (subsections "Gear pair scene" and "Mesh" of app/geometry_parameters.h, mm and degrees), the FE
-// model ("Finite elements", "Linear solver", "Contact" of app/fe_contact_parameters.h) and the
-// load case and sweep ("Stiffness").
-// Defaults: the split-path pair of docs/references.md §1 under its published load case (T1 = 49.4
-// N·m, μ = 0.01, pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
+// `stiffness`, `cai` and `run` commands: the gear pair (app/kinematics/kinematics_parameters.h),
+// the scene (subsections "Gear pair scene" and "Mesh" of app/scenes/geometry_parameters.h, mm and
+// degrees), the FE model ("Finite elements", "Linear solver", "Contact" of
+// app/scenes/fe_contact_parameters.h) and the load case and sweep ("Stiffness"). Defaults: the
+// split-path pair of docs/references.md §1 under its published load case (T1 = 49.4 N·m, μ = 0.01,
+// pinion bore free to rotate, wheel bore fixed) on the default scene chosen by the
 // accuracy-versus-cost study (docs/accuracy.md).
 #pragma once
 
