@@ -1,5 +1,6 @@
 #include "app/scenes/tooth_modification_parameters.h"
 
+#include "app/core/number_text.h"
 #include "app/core/parameter_patterns.h"
 #include "app/core/parameter_table.h"
 #include "app/core/units.h"
@@ -48,20 +49,10 @@ std::string gear_path(bool wheel, const std::string& name)
 double number(const ModificationText& text, const std::string& name, bool wheel)
 {
   const std::string& value = text.at(name);
-  std::size_t used = 0;
-  double result = 0.;
-  try
-  {
-    result = std::stod(value, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used == 0 || value.find_first_not_of(" \t", used) != std::string::npos ||
-      !std::isfinite(result))
+  const std::optional<double> result = number_in(value);
+  if (!result || !std::isfinite(*result))
     throw InputError(gear_path(wheel, name), "'" + value + "' is not a number");
-  return result;
+  return *result;
 }
 
 // A relief length: "auto" (−1) or a length ≥ 0 in mm, in m.

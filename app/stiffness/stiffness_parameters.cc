@@ -1,5 +1,6 @@
 #include "app/stiffness/stiffness_parameters.h"
 
+#include "app/core/number_text.h"
 #include "app/core/parameter_patterns.h"
 #include "app/core/units.h"
 #include "app/kinematics/kinematics_parameters.h"
@@ -170,19 +171,10 @@ std::vector<double> parse_torque_list(const std::string& text)
   std::string item;
   while (std::getline(stream, item, ','))
   {
-    std::size_t used = 0;
-    double value = 0.;
-    try
-    {
-      value = std::stod(item, &used);
-    }
-    catch (const std::exception&)
-    {
-      used = 0;
-    }
-    if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
+    const std::optional<double> value = number_in(item);
+    if (!value)
       throw InputError("Stiffness/torques", "'" + item + "' is not a torque [N·m]");
-    torques.push_back(value);
+    torques.push_back(*value);
   }
   with_parameter_names(stiffness_parameter_names(), [&] { stiffness::check_torque_list(torques); });
   return torques;
