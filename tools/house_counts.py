@@ -81,7 +81,7 @@ def tree_files():
 
 def read_lines(path):
     with open(os.path.join(ROOT, path), encoding="utf-8", errors="replace") as f:
-        return f.read().split("\n")[:-1] if True else []
+        return f.read().split("\n")[:-1]
 
 
 def family(path):
@@ -214,103 +214,100 @@ def upward(graph, allowed):
                   if b not in allowed.get(a, set()))
 
 
-def block():
-    sources = {f: read_lines(f) for f in tree_files()}
-    out = []
-    by_family = defaultdict(lambda: [0, 0])
-    by_module = defaultdict(lambda: [0, 0])
+def count_sizes(sources):
+    """Files and lines per family (production, tests, ...), per module and per app wing."""
+    sizes = {"family": defaultdict(lambda: [0, 0]), "module": defaultdict(lambda: [0, 0]),
+             "wing": defaultdict(lambda: [0, 0])}
     for path, lines in sources.items():
         kind, module = family(path)
-        by_family[kind][0] += 1
-        by_family[kind][1] += len(lines)
-        if kind == "production":
-            by_module[module][0] += 1
-            by_module[module][1] += len(lines)
-    out.append("C++ files (`.cc`, `.h`) and their lines:")
-    out.append("")
-    out.append("| module | files | lines |")
-    out.append("|---|---:|---:|")
-    for module in MODULES:
-        if module in by_module:
-            out.append(f"| {module}/ | {by_module[module][0]} | {by_module[module][1]} |")
-    for kind in ("production", "tests", "bench", "examples", "other"):
-        if kind in by_family:
-            label = "**all production code**" if kind == "production" else kind + "/"
-            out.append(f"| {label} | {by_family[kind][0]} | {by_family[kind][1]} |")
-    wing_sizes = defaultdict(lambda: [0, 0])
-    for path, lines in sources.items():
         parts = path.split("/")
+        keys = [("family", kind)]
+        if kind == "production":
+            keys.append(("module", module))
         if parts[0] == "app" and len(parts) >= 3:
-            wing_sizes[parts[1]][0] += 1
-            wing_sizes[parts[1]][1] += len(lines)
-    if wing_sizes:
-        out.append("")
-        out.append("app/ wings: " + ", ".join(
-            f"{w}/ {wing_sizes[w][0]} files {wing_sizes[w][1]} lines" for w in WINGS
-            if w in wing_sizes) + ".")
+            keys.append(("wing", parts[1]))
+        for table, key in keys:
+            sizes[table][key][0] += 1
+            sizes[table][key][1] += len(lines)
+    return sizes
 
+
+def size_lines(sizes):
+    out = ["C++ files (`.cc`, `.h`) and their lines:", "", "| module | files | lines |",
+           "|---|---:|---:|"]
+    rows = [(m + "/", sizes["module"][m]) for m in MODULES if m in sizes["module"]]
+    rows += [("**all production code**" if k == "production" else k + "/", sizes["family"][k])
+             for k in ("production", "tests", "bench", "examples", "other")
+             if k in sizes["family"]]
+    out += [f"| {label} | {files} | {lines} |" for label, (files, lines) in rows]
+    wings = sizes["wing"]
+    if wings:
+        out += ["", "app/ wings: " + ", ".join(f"{w}/ {wings[w][0]} files {wings[w][1]} lines"
+                                               for w in WINGS if w in wings) + "."]
+    return out
+
+
+def listed(items):
+    items = list(items)
+    return "" if not items else " — " + ", ".join(items)
+
+
+def house_lines(sources, sizes):
     modules, wings, plain_dealii = include_graph(sources)
-    up_modules = upward(modules, ALLOWED)
-    up_wings = upward(wings, WINGS_ALLOWED)
-    out.append("")
-    out.append("The house (each module and the modules it includes; app/'s wings apart):")
-    out.append("")
-    for module in MODULES:
-        if module in by_module:
-            out.append(f"    {module:<15}-> {', '.join(sorted(modules.get(module, []))) or '-'}")
-    for wing in WINGS:
-        if wing in wing_sizes:
-            targets = ", ".join("app/" + w for w in sorted(wings.get(wing, []))) or "-"
-            out.append(f"    {'app/' + wing:<15}-> {targets}")
-    out.append("")
-    out.append(f"Upward arrows (an include the layer table of tools/house_counts.py does not allow): "
-               f"{len(up_modules) + len(up_wings)}"
-               + ("" if not (up_modules or up_wings) else " — " + ", ".join(
-                   f"{a} -> {b}" for a, b in up_modules + [("app/" + a, "app/" + b)
-                                                           for a, b in up_wings])) + ".")
+    up = upward(modules, ALLOWED) + [("app/" + a, "app/" + b) for a, b in upward(wings,
+                                                                              WINGS_ALLOWED)]
     mutual = mutual_includes(sources)
-    out.append(f"Components (x.h with x.cc) that include each other: {len(mutual)}"
-               + ("" if not mutual else " — " + ", ".join(f"{a} <-> {b}" for a, b in mutual))
-               + ".")
-    out.append(f"deal.II included by a deal.II-free module: {len(plain_dealii)}"
-               + ("" if not plain_dealii else " — " + ", ".join(plain_dealii)) + ".")
+    out = ["", "The house (each module and the modules it includes; app/'s wings apart):", ""]
+    rows = [(m, sorted(modules.get(m, []))) for m in MODULES if m in sizes["module"]]
+    rows += [("app/" + w, ["app/" + t for t in sorted(wings.get(w, []))]) for w in WINGS
+             if w in sizes["wing"]]
+    out += [f"    {name:<15}-> {', '.join(targets) or '-'}" for name, targets in rows]
+    out += ["", "Upward arrows (an include the layer table of tools/house_counts.py does not "
+                f"allow): {len(up)}" + listed(f"{a} -> {b}" for a, b in up) + ".",
+            f"Components (x.h with x.cc) that include each other: {len(mutual)}"
+            + listed(f"{a} <-> {b}" for a, b in mutual) + ".",
+            f"deal.II included by a deal.II-free module: {len(plain_dealii)}"
+            + listed(plain_dealii) + "."]
+    return out
 
-    functions = []
-    for path, lines in sources.items():
-        for name, line, length in long_functions(path, lines):
-            functions.append((length, path, line, name))
-    functions.sort(key=lambda f: (-f[0], f[1]))
+
+def size_limit_lines(sources):
+    functions = sorted(((length, path, line, name) for path, lines in sources.items()
+                        for name, line, length in long_functions(path, lines)),
+                       key=lambda f: (-f[0], f[1]))
     tables = [f for f in functions if f[3].split("::")[-1].startswith("declare_")]
     others = [f for f in functions if f not in tables]
-    out.append("")
-    out.append(f"Functions over {FUNCTION_LIMIT} lines outside parameter declaration tables: "
-               f"{len(others)}" + ("" if not others else " — " + "; ".join(
-                   f"`{n}` {p}:{l} ({length})" for length, p, l, n in others)) + ".")
-    out.append(f"Parameter declaration tables over {FUNCTION_LIMIT} lines (allowed): {len(tables)}"
-               + ("" if not tables else " — " + "; ".join(
-                   f"`{n}` {p}:{l} ({length})" for length, p, l, n in tables)) + ".")
-    big = []
-    for path, lines in sources.items():
-        kind, module = family(path)
-        limit = FILE_LIMITS.get(module, FILE_LIMIT)
-        if kind == "production" and len(lines) > limit:
-            big.append(f"{path} ({len(lines)} > {limit})")
+    big = sorted(f"{path} ({len(lines)} > {FILE_LIMITS.get(family(path)[1], FILE_LIMIT)})"
+                 for path, lines in sources.items() if family(path)[0] == "production"
+                 and len(lines) > FILE_LIMITS.get(family(path)[1], FILE_LIMIT))
     largest = max(((len(l), p) for p, l in sources.items() if family(p)[0] == "production"),
                   default=(0, "-"))
-    out.append(f"Production files over their limit ({FILE_LIMIT} lines; contact/ "
-               f"{FILE_LIMITS['contact']}): {len(big)}" + ("" if not big else " — " + ", ".join(
-                   sorted(big))) + f". Largest: {largest[1]} ({largest[0]} lines).")
+    return ["", f"Functions over {FUNCTION_LIMIT} lines outside parameter declaration tables: "
+                f"{len(others)}" + listed(f"`{n}` {p}:{l} ({k})" for k, p, l, n in others) + ".",
+            f"Parameter declaration tables over {FUNCTION_LIMIT} lines (allowed): {len(tables)}"
+            + listed(f"`{n}` {p}:{l} ({k})" for k, p, l, n in tables) + ".",
+            f"Production files over their limit ({FILE_LIMIT} lines; contact/ "
+            f"{FILE_LIMITS['contact']}): {len(big)}" + listed(big)
+            + f". Largest: {largest[1]} ({largest[0]} lines)."]
+
+
+def repeat_lines(sources):
     rows = repeats(sources)
-    production_rows = [r for r in rows if family(r[0])[0] == "production" or
-                       family(r[3])[0] == "production"]
-    out.append("")
-    out.append(f"Runs of {REPEAT_LINES} or more code lines repeated to the letter (comments, "
+    production = [r for r in rows if "production" in (family(r[0])[0], family(r[3])[0])]
+    out = ["", f"Runs of {REPEAT_LINES} or more code lines repeated to the letter (comments, "
                f"includes and lone braces skipped; runs in more than 8 places are idioms): "
-               f"{len(rows)} pairs of places, {len(production_rows)} touching production code.")
-    for fa, sa, ea, fb, sb, eb in production_rows[:12]:
-        out.append(f"- {fa}:{sa}-{ea} ~ {fb}:{sb}-{eb}")
-    if len(production_rows) > 12:
-        out.append(f"- (+{len(production_rows) - 12} more)")
+               f"{len(rows)} pairs of places, {len(production)} touching production code."]
+    out += [f"- {fa}:{sa}-{ea} ~ {fb}:{sb}-{eb}" for fa, sa, ea, fb, sb, eb in production[:12]]
+    if len(production) > 12:
+        out.append(f"- (+{len(production) - 12} more)")
+    return out
+
+
+def block():
+    sources = {f: read_lines(f) for f in tree_files()}
+    sizes = count_sizes(sources)
+    out = (size_lines(sizes) + house_lines(sources, sizes) + size_limit_lines(sources)
+           + repeat_lines(sources))
     return "\n".join(out) + "\n"
 
 
