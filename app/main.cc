@@ -7,9 +7,9 @@
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else (an I/O error names the file and why: "no space
 // left on device"). Errors go to stderr as one line.
-#include "app/command.h"
-#include "app/invoke.h"
-#include "app/units.h"
+#include "app/core/command.h"
+#include "app/core/invoke.h"
+#include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/file_names.h"
 #include "errors/io.h"

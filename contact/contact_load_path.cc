@@ -47,7 +47,7 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
       const double h = dim == 2 ? node.area / elastic.depth() : std::sqrt(node.area);
       observation.trial_stiffness = stiffness / h;
       const NodeUpdate update =
-          update_node_state(pair.memory[k], observation, friction, tolerances);
+          update_node_state(pair.memory[k], observation, applied_friction(), tolerances);
       changed += update.changed ? 1 : 0;
       if (largest_normal_force > 0.)
         direction_change = std::max(direction_change, update.direction_turn / largest_normal_force);
@@ -58,7 +58,7 @@ unsigned int ContactProblem<dim>::update_states(const Vector<double>& residual)
 template <int dim>
 double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residual)
 {
-  if (friction == 0.)
+  if (applied_friction() == 0.)
     return 0.;
   double largest_normal_force = 0., largest_change = 0.;
   for (auto& pair : pairs)
@@ -67,8 +67,8 @@ double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residua
       const Tensor<1, dim> force = nodal_force(pair.nodes[k], residual); // N, on the slave
       const double normal_force = std::max(-(force * pair.nodes[k].normal), 0.);
       largest_normal_force = std::max(largest_normal_force, normal_force);
-      largest_change =
-          std::max(largest_change, update_friction_bound(pair.memory[k], normal_force, friction));
+      largest_change = std::max(
+          largest_change, update_friction_bound(pair.memory[k], normal_force, applied_friction()));
     }
   return largest_normal_force > 0. ? largest_change / largest_normal_force : 0.;
 }
@@ -76,14 +76,14 @@ double ContactProblem<dim>::update_friction_bounds(const Vector<double>& residua
 template <int dim>
 void ContactProblem<dim>::start_friction(const Vector<double>& residual)
 {
-  friction = parameters.friction_coefficient;
+  friction_in_force = true;
   for (auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
     {
       const SlaveNode<dim>& node = pair.nodes[k];
       const Tensor<1, dim> force = nodal_force(node, residual); // N, on the slave
-      start_node_friction(pair.memory[k], -(force * node.normal), step_slip(node), friction,
-                          round_off_gap());
+      start_node_friction(pair.memory[k], -(force * node.normal), step_slip(node),
+                          applied_friction(), round_off_gap());
     }
 }
 
@@ -179,7 +179,7 @@ void ContactProblem<dim>::solve_load_steps(Vector<double>& residual)
   // directions and zone hardly change), where starting every closed node in stick made the
   // whole zone swing between stick and slip. A body held only by friction has no frictionless
   // equilibrium; the step then starts again with the closed nodes in stick.
-  friction = 0.;
+  friction_in_force = false;
   std::vector<std::vector<NodeState>> initial_states;
   for (const auto& pair : pairs)
   {
@@ -221,9 +221,9 @@ void ContactProblem<dim>::solve_load_step(unsigned int step,
     catch (const SolverFailure&)
     {
       // A failed factorization (memory) would only fail again: no restart in stick.
-      if (friction > 0. || mu == 0. || (use_schur_complement() && !condensed))
+      if (friction_in_force || mu == 0. || (use_schur_complement() && !condensed))
         throw;
-      friction = mu;
+      friction_in_force = true;
       for (unsigned int p = 0; p < pairs.size(); ++p)
         for (unsigned int k = 0; k < pairs[p].nodes.size(); ++k)
           pairs[p].memory[k].state =
@@ -232,7 +232,7 @@ void ContactProblem<dim>::solve_load_step(unsigned int step,
       continue;
     }
     unsigned int changes = update_states(residual);
-    if (changes == 0 && friction == 0. && mu > 0.)
+    if (changes == 0 && !friction_in_force && mu > 0.)
     {
       start_friction(residual);
       changes = 1; // a new problem: not converged

@@ -503,7 +503,7 @@ Vector<double> ContactProblem<dim>::make_point_loads(double load_factor) const
       support.hub->add_loads(loads, load_factor);
   for (const auto& pair : pairs)
     for (unsigned int k = 0; k < pair.nodes.size(); ++k)
-      if (pair.memory[k].state == NodeState::slip && friction > 0.)
+      if (pair.memory[k].state == NodeState::slip && applied_friction() > 0.)
       {
         // Coulomb: μ λ_n along the friction direction on the slave, the reaction on the
         // master distributed with the mortar weights.

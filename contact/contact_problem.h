@@ -56,7 +56,7 @@ enum class IterationSolves
 };
 
 // The contact controls (their parameter-file form, subsection "Contact", is declared in
-// app/fe_contact_parameters.cc).
+// app/scenes/fe_contact_parameters.cc).
 struct ContactParameters
 {
   IterationSolves iteration_solves = IterationSolves::automatic;
@@ -387,7 +387,14 @@ private:
   dealii::Vector<double> step_start;      // m, converged solution of the previous step
   dealii::Vector<double> residual_forces; // N, r = K u − f of the converged solution
   double characteristic_length = 1.;      // m, mesh diameter
-  double friction = 0.;                   // -, μ in force (0 during a frictionless start)
+  // Whether Coulomb friction is in force (false during a frictionless start); μ itself is kept
+  // once, in parameters.friction_coefficient.
+  bool friction_in_force = false;
+  // -, the μ the active set applies now: parameters.friction_coefficient once in force, else 0
+  double applied_friction() const
+  {
+    return friction_in_force ? parameters.friction_coefficient : 0.;
+  }
   // -, largest turn of a slip force in the last update_states, relative to the largest normal
   // force (3D: slip directions converge as a fixed point with the bounds).
   double direction_change = 0.;

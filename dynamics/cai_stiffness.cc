@@ -75,14 +75,17 @@ double cai_mesh_stiffness(const CaiParameters& parameters, double mesh_position,
   return stiffness;
 }
 
-CaiFit fit_cai_parameters(const std::vector<StiffnessSample>& samples, double contact_ratio,
-                          StiffnessSampleKind kind, bool fit_shape)
+namespace
+{
+// InputError for a contact ratio below 1, too few samples for `n_unknowns`, a position outside
+// the sample kind's range or a stiffness that is not positive.
+void check_samples(const std::vector<StiffnessSample>& samples, double contact_ratio,
+                   StiffnessSampleKind kind, unsigned int n_unknowns)
 {
   const std::string parameter = "stiffness samples";
   if (!(contact_ratio >= 1.))
     throw InputError("contact ratio", "must be at least 1 for continuous meshing, got " +
                                           std::to_string(contact_ratio));
-  const unsigned int n_unknowns = fit_shape ? 3 : 1;
   if (samples.size() < n_unknowns)
     throw InputError(parameter, "need at least " + std::to_string(n_unknowns) +
                                     " samples for this fit, got " + std::to_string(samples.size()));
@@ -97,6 +100,13 @@ CaiFit fit_cai_parameters(const std::vector<StiffnessSample>& samples, double co
       throw InputError(parameter, "stiffness must be positive, got " +
                                       std::to_string(sample.stiffness) + " N/m");
   }
+}
+} // namespace
+
+CaiFit fit_cai_parameters(const std::vector<StiffnessSample>& samples, double contact_ratio,
+                          StiffnessSampleKind kind, bool fit_shape)
+{
+  check_samples(samples, contact_ratio, kind, fit_shape ? 3 : 1);
 
   // Scale the unknowns to O(1) so the QR rank decision is not fooled by N/m magnitudes.
   double reference = 0.;

@@ -543,11 +543,7 @@ ModalProperties TorsionalModel::modal_properties() const
       modes.natural_frequencies.push_back(std::sqrt(std::abs(value)) / (2. * M_PI));
   std::sort(modes.natural_frequencies.begin(), modes.natural_frequencies.end());
 
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n_gears, 2 * n_gears);
-  A.topRightCorner(n_gears, n_gears).setIdentity();
-  A.bottomLeftCorner(n_gears, n_gears) = -Minv * K;
-  A.bottomRightCorner(n_gears, n_gears) = -Minv * C;
-  const Eigen::VectorXcd damped = A.eigenvalues();
+  const Eigen::VectorXcd damped = state_matrix(K, C).eigenvalues();
   double largest_damped = 0.;
   for (const auto& value : damped)
     largest_damped = std::max(largest_damped, std::abs(value));
@@ -561,13 +557,29 @@ ModalProperties TorsionalModel::modal_properties() const
   return modes;
 }
 
-double TorsionalModel::highest_natural_frequency() const
+void TorsionalModel::assemble_at_largest_stiffness(Eigen::MatrixXd& K, Eigen::MatrixXd& C) const
 {
   std::vector<double> k(meshes.size()), sigma(meshes.size(), 1.);
   for (unsigned int m = 0; m < meshes.size(); ++m)
     k[m] = largest_stiffness(meshes[m]);
-  Eigen::MatrixXd K, C;
   assemble(k, sigma, K, C);
+}
+
+Eigen::MatrixXd TorsionalModel::state_matrix(const Eigen::MatrixXd& K,
+                                             const Eigen::MatrixXd& C) const
+{
+  const Eigen::MatrixXd Minv = inertia.cwiseInverse().asDiagonal();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n_gears, 2 * n_gears);
+  A.topRightCorner(n_gears, n_gears).setIdentity();
+  A.bottomLeftCorner(n_gears, n_gears) = -Minv * K;
+  A.bottomRightCorner(n_gears, n_gears) = -Minv * C;
+  return A;
+}
+
+double TorsionalModel::highest_natural_frequency() const
+{
+  Eigen::MatrixXd K, C;
+  assemble_at_largest_stiffness(K, C);
   const Eigen::VectorXcd values = (inertia.cwiseInverse().asDiagonal() * K).eigenvalues();
   double largest = 0.;
   for (const auto& value : values)
@@ -577,12 +589,7 @@ double TorsionalModel::highest_natural_frequency() const
 
 double TorsionalModel::rk4_limit_for(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C) const
 {
-  const Eigen::MatrixXd Minv = inertia.cwiseInverse().asDiagonal();
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n_gears, 2 * n_gears);
-  A.topRightCorner(n_gears, n_gears).setIdentity();
-  A.bottomLeftCorner(n_gears, n_gears) = -Minv * K;
-  A.bottomRightCorner(n_gears, n_gears) = -Minv * C;
-  const Eigen::VectorXcd values = A.eigenvalues();
+  const Eigen::VectorXcd values = state_matrix(K, C).eigenvalues();
   double largest = 0.;
   for (const auto& value : values)
     largest = std::max(largest, std::abs(value));
@@ -620,11 +627,8 @@ double TorsionalModel::rk4_limit_for(const Eigen::MatrixXd& K, const Eigen::Matr
 
 double TorsionalModel::rk4_step_limit() const
 {
-  std::vector<double> k(meshes.size()), sigma(meshes.size(), 1.);
-  for (unsigned int m = 0; m < meshes.size(); ++m)
-    k[m] = largest_stiffness(meshes[m]);
   Eigen::MatrixXd K, C;
-  assemble(k, sigma, K, C);
+  assemble_at_largest_stiffness(K, C);
   return rk4_limit_for(K, C);
 }
 

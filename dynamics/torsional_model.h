@@ -250,6 +250,11 @@ private:
   std::vector<double> solve_static(const std::vector<double>& sigma, double& rigid_acceleration,
                                    std::vector<double>& angle_out) const;
   double rk4_limit_for(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C) const;
+  // K and C with every mesh at its largest stiffness and in contact (the stiffest instant: the
+  // highest frequency and the tightest explicit step).
+  void assemble_at_largest_stiffness(Eigen::MatrixXd& K, Eigen::MatrixXd& C) const;
+  // The first-order system matrix [[0, I], [−M⁻¹K, −M⁻¹C]] of the gears' angles and speeds.
+  Eigen::MatrixXd state_matrix(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C) const;
   double deflection(const CompiledMesh& mesh, const double* angle) const;
   std::vector<double> solve_static_general(const std::vector<double>& sigma,
                                            double& rigid_acceleration,

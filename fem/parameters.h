@@ -2,7 +2,7 @@
 // the kinematic model (plane strain, plane stress, 3D), the element degree, the materials of the
 // bodies and the linear solver, in SI. Their parameter-file form (subsections "Finite elements"
 // and "Linear solver", units in the documentation strings) is declared and parsed in
-// app/fe_contact_parameters.cc, as every parameter of the project is in app/.
+// app/scenes/fe_contact_parameters.cc, as every parameter of the project is in app/.
 #pragma once
 
 #include <map>

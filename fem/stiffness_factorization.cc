@@ -189,6 +189,31 @@ struct StiffnessFactorization<dim>::Implementation
     return {{dof, 1.}};
   }
 
+  // MUMPS's selected entries of K⁻¹ at the pattern of `transposed` (Bᵀ, MatMumpsGetInverse),
+  // the solver's settings restored afterwards.
+  void selected_inverse(Mat transposed, bool serial) const
+  {
+    // Right-hand sides per block of the solve (ICNTL(27)): with 512 instead of MUMPS's
+    // automatic choice the entries of the 3D contact DoFs took 3.4 s instead of 4.9 s
+    // (1026 columns, 190k DoFs, 2 ranks; 8: 10 s, 2048: 4.4 s).
+    PetscInt block = 0;
+    check(MatMumpsGetIcntl(factor, 27, &block), "MatMumpsGetIcntl");
+    check(MatMumpsSetIcntl(factor, 27, 512), "MatMumpsSetIcntl");
+    PetscErrorCode code = 0;
+    const auto get_inverse = [&]()
+    {
+      code = MatMumpsGetInverse(factor, transposed);
+      // Back to the settings of the ordinary solves: no inverse entries; several ranks keep
+      // the solution distributed.
+      MatMumpsSetIcntl(factor, 27, block);
+      MatMumpsSetIcntl(factor, 30, 0);
+      if (!serial)
+        MatMumpsSetIcntl(factor, 21, 1);
+      return code;
+    };
+    call_mumps(get_inverse, "MatMumpsGetInverse");
+  }
+
   // (K⁻¹)_{rows, columns} of the condensed K, column by column (result[j·|rows| + i] =
   // (K⁻¹)_{rows[i], columns[j]}), on every rank. MUMPS computes selected entries of the
   // inverse (ICNTL(30)) with sparse right-hand sides and prunes the triangular solves to the
@@ -244,25 +269,7 @@ struct StiffnessFactorization<dim>::Implementation
                                         column_index.data(), values.data(), &pattern),
               "MatCreateMPIAIJWithArrays");
       check(MatCreateTranspose(pattern, &transposed), "MatCreateTranspose");
-      // Right-hand sides per block of the solve (ICNTL(27)): with 512 instead of MUMPS's
-      // automatic choice the entries of the 3D contact DoFs took 3.4 s instead of 4.9 s
-      // (1026 columns, 190k DoFs, 2 ranks; 8: 10 s, 2048: 4.4 s).
-      PetscInt block = 0;
-      check(MatMumpsGetIcntl(factor, 27, &block), "MatMumpsGetIcntl");
-      check(MatMumpsSetIcntl(factor, 27, 512), "MatMumpsSetIcntl");
-      PetscErrorCode code = 0;
-      const auto get_inverse = [&]()
-      {
-        code = MatMumpsGetInverse(factor, transposed);
-        // Back to the settings of the ordinary solves: no inverse entries; several ranks keep
-        // the solution distributed.
-        MatMumpsSetIcntl(factor, 27, block);
-        MatMumpsSetIcntl(factor, 30, 0);
-        if (!serial)
-          MatMumpsSetIcntl(factor, 21, 1);
-        return code;
-      };
-      call_mumps(get_inverse, "MatMumpsGetInverse");
+      selected_inverse(transposed, serial);
       if (root)
       {
         Mat local = pattern;

@@ -604,6 +604,52 @@ TipRelief tip_relief(const InvoluteToothSpec& spec, const ResolvedSpec& g,
   return relief;
 }
 
+// The trochoidal fillet of the half outline: the generating envelope from `fillet_start` to the
+// root, points evenly spaced in the cutter's rotation.
+void append_fillet(const ProfileResolution& resolution, const GeneratingMotion& motion,
+                   double fillet_start, const FilletRange& range, std::vector<HalfPoint>& half)
+{
+  const unsigned int n = std::max(2u, resolution.fillet_points);
+  auto speed = [&](double phi)
+  {
+    const double h = 1e-6;
+    return (envelope_point(motion, phi + h).position - envelope_point(motion, phi - h).position)
+               .norm() /
+           (2. * h);
+  };
+  double previous = fillet_start;
+  for (unsigned int i = 1; i < n; ++i)
+  {
+    const double phi = fillet_start + (range.root_rotation - fillet_start) * i / (n - 1);
+    const EnvelopePoint p = envelope_point(motion, phi);
+    half.push_back(
+        {p.position, p.normal, ProfileSegment::fillet, arc_length(speed, previous, phi)});
+    previous = phi;
+  }
+}
+
+// The root arc of the half outline from the fillet's end to the middle of the gap.
+void append_root(const ProfileResolution& resolution, const GeneratingMotion& motion,
+                 double angular_pitch, double sigma, std::vector<HalfPoint>& half)
+{
+  const Vector fillet_end = half.back().position;
+  const double start_angle = std::atan2(fillet_end.y(), fillet_end.x());
+  const double end_angle = angular_pitch / 2.;
+  if (end_angle - start_angle < -1e-12)
+    throw SolverFailure("involute fillet generation", "the fillet passes the middle of the gap");
+  const unsigned int n = std::max(2u, resolution.root_points);
+  if (end_angle - start_angle > 1e-12)
+    for (unsigned int i = 1; i < n; ++i)
+    {
+      const double angle = start_angle + (end_angle - start_angle) * i / (n - 1);
+      half.push_back({polar(motion.root_radius, angle), rotate(Vector(sigma, 0.), angle),
+                      ProfileSegment::root,
+                      motion.root_radius * (end_angle - start_angle) / (n - 1)});
+    }
+  else // a full-round cutter tip: the two fillets meet in the gap middle
+    half.back().position = polar(half.back().position.norm(), end_angle);
+}
+
 // The +y half, from the tooth axis on the tip circle to the middle of the gap.
 // A point shared by two segments carries the one nearer the tip.
 std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const ResolvedSpec& g,
@@ -650,44 +696,8 @@ std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const R
       previous = t;
     }
   }
-  {
-    const unsigned int n = std::max(2u, resolution.fillet_points);
-    auto speed = [&](double phi)
-    {
-      const double h = 1e-6;
-      return (envelope_point(motion, phi + h).position - envelope_point(motion, phi - h).position)
-                 .norm() /
-             (2. * h);
-    };
-    double previous = fillet_start;
-    for (unsigned int i = 1; i < n; ++i)
-    {
-      const double phi = fillet_start + (range.root_rotation - fillet_start) * i / (n - 1);
-      const EnvelopePoint p = envelope_point(motion, phi);
-      half.push_back(
-          {p.position, p.normal, ProfileSegment::fillet, arc_length(speed, previous, phi)});
-      previous = phi;
-    }
-  }
-  {
-    const Vector fillet_end = half.back().position;
-    const double start_angle = std::atan2(fillet_end.y(), fillet_end.x());
-    const double end_angle = angular_pitch / 2.;
-    if (end_angle - start_angle < -1e-12)
-      throw SolverFailure("involute fillet generation", "the fillet passes the middle of the gap");
-    const unsigned int n = std::max(2u, resolution.root_points);
-    if (end_angle - start_angle > 1e-12)
-      for (unsigned int i = 1; i < n; ++i)
-      {
-        const double angle = start_angle + (end_angle - start_angle) * i / (n - 1);
-        half.push_back({polar(motion.root_radius, angle), rotate(Vector(sigma, 0.), angle),
-                        ProfileSegment::root,
-                        motion.root_radius * (end_angle - start_angle) / (n - 1)});
-      }
-    else // a full-round cutter tip: the two fillets meet in the gap middle
-      half.back().position = polar(half.back().position.norm(), end_angle);
-  }
-
+  append_fillet(resolution, motion, fillet_start, range, half);
+  append_root(resolution, motion, angular_pitch, sigma, half);
   return half;
 }
 

@@ -1,8 +1,9 @@
 // Tooth faults (issue 31) as modification kinds of geometry/tooth_modification.h: a chipped tip,
 // a broken tooth, a spall (pit) on the loaded flank and a root crack, each applied to one tooth
 // (GearModifications::by_tooth) after its profile modifications. The 2D outline is extruded
-// through the face in 3D, so every fault here runs through the whole face width (a partial-width
-// spall or crack is refused by the parameters, app/tooth_fault_parameters.cc).
+// through the face in 3D; a fault over part of the face width (a crack width fraction below 1, a
+// spall or chipped corner narrower than the face) is a fill of the extruded body
+// (FaultFill, fault_fills below), so only the through-the-face faults change the outline here.
 //
 // Shapes (tooth frame of geometry/tooth_profile.h, external gears only):
 //  - tip chipping h: the tooth cut by the circle r_a − h (a flat, radial-normal new tip);
@@ -29,8 +30,10 @@
 //    flanks, with the mouth and that point as corners); the mesh's outline runs along that cut
 //    and the material beyond it is a fill (fault_fills, geometry/mesh_planar.h PlanarFill) sharing
 //    the cut's curves, so every quadrilateral mesh follows the crack. The mesh is then split
-//    along mouth → tip (the tip node stays shared), its two faces a frictionless contact pair
-//    of the body with itself, so they may close under compression (docs/faults.md).
+//    along mouth → tip (the tip node stays shared), its two faces a contact pair of the body
+//    with itself with the contact's friction coefficient (0 by default: frictionless;
+//    stiffness/mesh_stiffness.cc add_crack_pairs), so they may close under compression
+//    (docs/faults.md).
 // Every kink a fault makes (spall walls, slit mouth, faces, tip) is a ProfilePoint::corner, so
 // the scene starts a new outline piece there.
 #pragma once

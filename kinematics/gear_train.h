@@ -161,7 +161,7 @@ double milev_planetary_inertia(double sun_radius, double planet_radius, unsigned
                                double carrier_thickness_ratio);
 
 // Raw text of a train as written in a parameter file (subsection "Train"). Each string is a
-// comma-separated list; see app/kinematics_command.cc for the syntax shown to users.
+// comma-separated list; see app/kinematics/kinematics_command.cc for the syntax shown to users.
 struct GearTrainText
 {
   std::string gears;          // "1: 21, 5: -69"              name: teeth (negative: internal)

@@ -5,7 +5,7 @@
 //   r = gearstiff.gear_pair({"Gear pair": {"Pinion": {"teeth": 21}}})
 //   r["values"]["transverse_contact_ratio"]["value"]; r["tables"]["contact_zones"]["data"]["start"]
 //
-// A command runs through the same functions as `gearstiff <command>` (app/invoke.h): a nested
+// A command runs through the same functions as `gearstiff <command>` (app/core/invoke.h): a nested
 // dict becomes the `--set section/key=value` overrides of the command line, a str/path is the
 // parameter file, and the result is built from the same Report that `--json` prints. Errors are
 // the command line's: gearstiff.InputError (a ValueError) and gearstiff.SolverFailure (a
@@ -15,10 +15,10 @@
 // MPI: the module initialises MPI (and PETSc) on import unless it is running already, and
 // finalises what it started at interpreter exit. Under `mpirun -np N python3 script.py` every
 // rank calls the same functions and a sweep is distributed over the ranks as by the command line.
-#include "app/command.h"
-#include "app/invoke.h"
-#include "app/report.h"
-#include "app/units.h"
+#include "app/core/command.h"
+#include "app/core/invoke.h"
+#include "app/core/report.h"
+#include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/file_names.h"
 #include "fem/mpi_start.h"

@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "fem/parallel.h"
+#include "geometry/tooth_fault.h"
 
 #include <algorithm>
 #include <boost/serialization/string.hpp>
@@ -153,6 +154,20 @@ StiffnessSweepResult gather_positions(
   return result;
 }
 
+// The progress line of position i of n (`once`: with its mesh, set-up and contact times).
+std::string position_line(const GearMeshStiffnessResult& r, unsigned int i, unsigned int n,
+                          bool once)
+{
+  return "position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
+         format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
+         "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + " N/µm, " +
+         std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) + " s" +
+         (once ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
+                     format_number(r.setup_time, 3) + " s, contact " +
+                     format_number(r.solve_time, 3) + " s)"
+               : std::string());
+}
+
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
@@ -202,17 +217,8 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
     const GearMeshStiffnessResult& r = all.front();
     mine.emplace_back(i, all);
     if (progress)
-      progress("position " + std::to_string(i + 1) + "/" + std::to_string(n) + " (roll angle " +
-               format_number(r.pinion_roll_angle * 180. / M_PI, 5) +
-               "°): k = " + format_number(r.mesh_stiffness / 1e6, 5) + " N/µm, " +
-               std::to_string(r.loaded_pairs) + " pair(s), " + format_number(r.total_time, 3) +
-               " s" +
-               (spec.mesh == SweepMesh::once
-                    ? " (mesh " + format_number(r.scene_time, 3) + " s, set-up " +
-                          format_number(r.setup_time, 3) + " s, contact " +
-                          format_number(r.solve_time, 3) + " s)"
-                    : std::string()) +
-               " [rank " + std::to_string(rank) + ": " + std::to_string(mine.size()) + " solved]");
+      progress(position_line(r, i, n, spec.mesh == SweepMesh::once) + " [rank " +
+               std::to_string(rank) + ": " + std::to_string(mine.size()) + " solved]");
   };
   fem::distribute_items(mpi_communicator, (n + block - 1) / block,
                         [&](const unsigned int item)
@@ -292,4 +298,17 @@ template StiffnessSweepResult stiffness_sweep<2>(MPI_Comm, const GearMeshStiffne
 template StiffnessSweepResult stiffness_sweep<3>(MPI_Comm, const GearMeshStiffnessSettings&,
                                                  const StiffnessSweepSpec&, const std::string&,
                                                  const std::function<void(const std::string&)>&);
+bool once_sweep_valid(
+    const GearMeshStiffnessSettings& settings,
+    const std::vector<std::pair<geometry::GearModifications, geometry::GearModifications>>&
+        variants)
+{
+  bool whole = geometry::flanks_whole(settings.scene.pinion_modifications) &&
+               geometry::flanks_whole(settings.scene.wheel_modifications);
+  for (const auto& [pinion, wheel] : variants)
+    whole = whole && geometry::flanks_whole(pinion) && geometry::flanks_whole(wheel);
+  return settings.scene.mesh.dimension == 2 && whole &&
+         settings.contact.iteration_solves != contact::IterationSolves::full_resolve &&
+         settings.linear_solver.method == fem::LinearSolverMethod::direct_mumps;
+}
 } // namespace gearstiff::stiffness

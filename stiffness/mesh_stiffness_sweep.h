@@ -10,6 +10,7 @@
 #include <functional>
 #include <mpi.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gearstiff::stiffness
@@ -47,6 +48,17 @@ struct StiffnessSweepResult
   double once_time = 0.;
   double per_position_time = 0.;
 };
+
+// Whether a rolling sweep (SweepMesh::once) holds for `settings` and the further modification
+// sets `variants` (each a pinion and a wheel set): where it has shown the accuracy of per position
+// (2D) and can run — the Schur complement with the direct solver, and every flank whole: no tooth
+// faults, or root cracks only (test_fault_stiffness CrackedSweepOnceMatchesPerPosition). A
+// broken, chipped or spalled tooth changes which pairs carry from one position to the next: meshed
+// per position. The rule of `Stiffness/sweep mesh = automatic`.
+bool once_sweep_valid(
+    const GearMeshStiffnessSettings& settings,
+    const std::vector<std::pair<geometry::GearModifications, geometry::GearModifications>>&
+        variants);
 
 // Reference-pair positions (m from T1) of the sweep; InputError for zero positions, a
 // non-positive span or a start outside the path of contact.

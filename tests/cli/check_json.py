@@ -6,7 +6,7 @@ usage: check_json.py WORKDIR [--check SPEC]... [--expect-file NAME]... [--text R
 
 WORKDIR is emptied first and is the command's working directory; "@WORK@" and "@SRC@" in the
 arguments expand to it and to the source tree. The command must exit 0 and print one JSON
-object (app/report.cc). Each SPEC is
+object (app/core/report.cc). Each SPEC is
 
     KEY REFERENCE TOLERANCE        |value − REFERENCE| ≤ TOLERANCE (absolute, in KEY's unit)
     KEY REFERENCE TOLERANCE%       |value/REFERENCE − 1| ≤ TOLERANCE/100

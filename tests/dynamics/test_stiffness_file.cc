@@ -1,5 +1,5 @@
 // FE stiffness results as plain data for the train model (dynamics/stiffness_file.h): reading
-// the summary that `gearstiff stiffness`/`cai` write with -o (the layout of app/report.cc's
+// the summary that `gearstiff stiffness`/`cai` write with -o (the layout of app/core/report.cc's
 // Report::print_json, written here by hand with known numbers), the pair check, the cycle
 // cover check, the reversal for the other gear driving, and gear-blank inertias.
 #include "dynamics/stiffness_file.h"

@@ -302,7 +302,7 @@ def python_equals_cli(case, runner, log, sweeps):
     if process.returncode != 0:
         raise CaseFailure(f"Python: {process.stderr.strip()[-600:]}")
     python = json.loads(process.stdout.strip().splitlines()[-1])
-    # The command line prints 12 significant digits (app/report.cc): 1e-11 relative.
+    # The command line prints 12 significant digits (app/core/report.cc): 1e-11 relative.
     check_close("Python k [N/um]", python["k"], value(cli, "mesh_stiffness"), 0., 1e-11)
     check_close("Python TE [um]", python["te"], value(cli, "transmission_error"), 0., 1e-11)
     log("Python = command line: k and TE")

@@ -13,7 +13,8 @@ namespace
 {
 constexpr double mm = 1e-3;
 const AutomaticSizes all{true, true, true, true};
-constexpr double margin = 0.05e-3; // m, the ring tip margin default (app/kinematics_parameters.cc)
+constexpr double margin =
+    0.05e-3; // m, the ring tip margin default (app/kinematics/kinematics_parameters.cc)
 
 // The own pair of issue 25: z 30/45, m = 3 mm, face width 20 mm, the rest the built-in defaults
 // (x ±0.29, 20°, ISO 53 A rack).

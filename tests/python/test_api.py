@@ -5,7 +5,7 @@ Run by ctest (label python) with PYTHONPATH=build/python and GEARSTIFF_EXECUTABL
 
 - Every command runs in-process on its default case (the FE ones on a coarse scene).
 - The fast commands' results equal `gearstiff <command> --json` to every printed digit: both come
-  from the same Report, the CLI prints 12 significant digits (app/report.cc json_number), so
+  from the same Report, the CLI prints 12 significant digits (app/core/report.cc json_number), so
   '%.12g' of the module's double must be the CLI's text. Measured wall times are the only values
   that differ between two runs; they are named below and compared by unit only.
 - Bad input raises gearstiff.InputError with the message the command line prints after
@@ -58,7 +58,7 @@ def cli_json(command, *arguments):
 
 
 def printed(x):
-    """A double as app/report.cc json_number prints it (std::setprecision(12), null for nan)."""
+    """A double as app/core/report.cc json_number prints it (std::setprecision(12), null for nan)."""
     return "null" if not math.isfinite(x) else "%.12g" % x
 
 

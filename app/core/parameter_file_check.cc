@@ -1,0 +1,74 @@
+#include "app/core/parameter_file_check.h"
+
+#include "app/core/units.h"
+#include "errors/errors.h"
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <cctype>
+
+namespace gearstiff::app
+{
+namespace
+{
+using boost::property_tree::ptree;
+
+// deal.II's JSON keys encode characters as _XX (hex): "Gear_20pair" is "Gear pair".
+std::string unmangled(const std::string& key)
+{
+  std::string name;
+  for (std::size_t i = 0; i < key.size(); ++i)
+    if (key[i] == '_' && i + 2 < key.size() &&
+        std::isxdigit(static_cast<unsigned char>(key[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(key[i + 2])))
+    {
+      name += static_cast<char>(std::stoi(key.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    }
+    else
+      name += key[i];
+  return name;
+}
+
+void check_node(const ptree& node, const std::string& path)
+{
+  for (const auto& [key, child] : node)
+  {
+    const std::string name = path.empty() ? unmangled(key) : path + "/" + unmangled(key);
+    if (key.empty())
+      throw InputError(path.empty() ? "parameter file" : path,
+                       "a JSON array is not a parameter value: give the value as one string "
+                       "(e.g. \"s: 20, p: 10\")");
+    // deal.II's JSON form: a subsection is an object, an entry an object with a "value" (the
+    // long form) or a string.
+    if (!child.empty() && child.count("value") == 0)
+      check_node(child, name);
+    else if (const auto value = child.get_child_optional("value"); value && !value->empty())
+      throw InputError(name, "a JSON array or object is not a parameter value: give the value "
+                             "as one string");
+  }
+}
+} // namespace
+
+void check_json_parameter_file(const std::string& file)
+{
+  if (file.size() < 5 || file.compare(file.size() - 5, 5, ".json") != 0)
+    return;
+  ptree tree;
+  try
+  {
+    boost::property_tree::read_json(file, tree);
+  }
+  catch (const boost::property_tree::json_parser_error& e)
+  {
+    // deal.II's reader wrapped this in "Boost aborted with the following assert message".
+    throw InputError(shortened(file),
+                     "is not JSON (line " + std::to_string(e.line()) + ": " + e.message() + ")");
+  }
+  catch (const std::exception&)
+  {
+    return; // deal.II's reader reports what it finds
+  }
+  check_node(tree, "");
+}
+} // namespace gearstiff::app

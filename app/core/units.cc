@@ -1,0 +1,39 @@
+#include "app/core/units.h"
+
+#include "errors/errors.h"
+
+namespace gearstiff::app
+{
+std::string shortened(const std::string& text, const unsigned int length)
+{
+  if (text.size() <= length)
+    return text;
+  // Cut at a character boundary of UTF-8 (never inside a multi-byte sequence).
+  std::size_t end = length;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
+    --end;
+  return text.substr(0, end) + "… (" + std::to_string(text.size()) + " characters)";
+}
+
+bool read_length_or_auto(const std::string& text, const std::string& parameter,
+                         const std::string& what, double& value)
+{
+  if (text == "auto")
+    return true;
+  std::size_t used = 0;
+  double number = -1.;
+  try
+  {
+    number = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !(number >= 0.))
+    throw InputError(parameter,
+                     "'" + shortened(text) + "' is neither a " + what + " >= 0 [mm] nor auto");
+  value = number * mm;
+  return false;
+}
+} // namespace gearstiff::app

@@ -1,0 +1,16 @@
+// Report of the load across the face width of a 3D stiffness solve (issue 27,
+// stiffness/face_load.h): K_Hβ and the peak line load with where it acts, the tables `face_load`
+// (line load w(z) at every solved position) and `face_load_factor` (K_Hβ per position), and the
+// contact-pattern chart (tools/plot_contact_pattern.py). Nothing in 2D.
+#pragma once
+
+#include "app/core/command.h"
+#include "stiffness/mesh_stiffness.h"
+
+#include <vector>
+
+namespace gearstiff::app
+{
+void report_face_load(CommandContext& context,
+                      const std::vector<stiffness::GearMeshStiffnessResult>& positions);
+} // namespace gearstiff::app

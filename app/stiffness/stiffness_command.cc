@@ -1,0 +1,317 @@
+// `gearstiff stiffness [case.prm]`: gear mesh stiffness from a frictional FE contact solve under
+// the published load case of docs/references.md §1 (Reszuta & Drewniak 2015): torque T1 on the
+// pinion, pinion bore free only to rotate, wheel bore fixed, μ = 0.01; k = T1/(r_b1²·Δφ) at exactly
+// T1.
+//
+//   gearstiff stiffness                                       single-pair position (pitch point)
+//   gearstiff stiffness --set "Stiffness/mode=double"          first double-contact zone
+//   gearstiff stiffness --set "Stiffness/mode=sweep" -o out    k(θ) over one base pitch, 32
+//   positions mpirun -np 2 gearstiff stiffness sweep.prm -o out          the sweep's positions
+//   split over ranks gearstiff stiffness --set "Finite elements/Planar model=plane stress"
+//
+// Files with -o: the sweep table (CSV), k(x) for the dynamics command (stiffness_table.prm),
+// the k(θ) chart (PNG), VTU of every position with "Stiffness/write vtu=true".
+#include "app/core/command.h"
+#include "app/core/units.h"
+#include "app/stiffness/face_load_report.h"
+#include "app/stiffness/stiffness_parameters.h"
+#include "app/stiffness/stiffness_report.h"
+#include "app/stiffness/stiffness_solve.h"
+#include "errors/errors.h"
+#include "kinematics/iso_stiffness.h"
+#include "stiffness/transmission_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace
+{
+namespace ansys = gearstiff::kinematics::split_path_published; // the published FE values
+using namespace gearstiff;
+using namespace gearstiff::app;
+
+// Which position a mode solves, and why it stands for that mode.
+std::string position_reason(StiffnessMode mode, const kinematics::GearPairGeometry& pair,
+                            const stiffness::GearMeshStiffnessResult& r)
+{
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  const auto mm = [](double v) { return format_number(v * 1e3, 5) + " mm"; };
+  const std::string zone = "single-contact zone [B, D] = [" + mm(pair.single_contact_start()) +
+                           ", " + mm(pair.single_contact_end()) + "] from T1";
+  if (mode == StiffnessMode::single)
+  {
+    const bool at_pitch = std::abs(r.reference_position - pair.pitch_point) < 1e-12;
+    return (at_pitch
+                ? "the pitch point C (" + mm(pair.pitch_point) + " from T1, roll angle " +
+                      format_number(r.pinion_roll_angle / degree, 5) + "°) lies in the " + zone +
+                      ": one pair carries the whole load, and the friction force (which "
+                      "reverses at C) has no moment there"
+                : "the middle of the " + zone + " (the pitch point lies outside it)");
+  }
+  if (mode == StiffnessMode::double_pair)
+    return "the middle of the first double-contact zone [A, B] (" + mm(r.reference_position) +
+           " from T1); the second pair sits one base pitch further, in the middle of [D, E]";
+  return "roll angle " + format_number(r.pinion_roll_angle / degree, 6) + "° (" +
+         mm(r.pinion_roll_angle * r_b1) + " from T1)";
+}
+
+// The TE of the sweep (per torque with a torque list: te_sweep, te_map), the unloaded TE, and
+// every variant of Stiffness/variants swept the same way (te_map_variant_<k>), with the Harris
+// map (te_peak_to_peak against torque, one line per modification set) as a PNG.
+void report_micro_geometry(const StiffnessParameters& p,
+                           const stiffness::StiffnessSweepResult& sweep, CommandContext& context)
+{
+  Report& report = context.report;
+  const stiffness::TransmissionErrorSummary base =
+      stiffness::summarize_transmission_error(sweep.positions);
+  const double first_torque =
+      sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+  report.add_value("te_peak_to_peak", base.peak_to_peak * 1e6, "µm",
+                   "peak-to-peak of the loaded TE over the sweep at T1 = " +
+                       format_number(first_torque, 4) + " N·m");
+  report.add_value("te_unloaded_peak_to_peak", base.unloaded_peak_to_peak * 1e6, "µm",
+                   "peak-to-peak of the unloaded (geometric) TE of the modifications");
+  if (sweep.by_torque.empty() && p.variants.empty())
+    return;
+  std::vector<std::pair<std::string, std::string>> maps{{"te_map", "base"}};
+  stiffness::StiffnessSweepResult one_torque = sweep;
+  if (one_torque.by_torque.empty())
+  {
+    one_torque.torques = {p.settings.pinion_torque};
+    one_torque.by_torque = {sweep.positions};
+  }
+  add_torque_tables(report, one_torque, "te_sweep", "te_map");
+  for (unsigned int v = 0; v < p.variants.size(); ++v)
+  {
+    StiffnessParameters variant = p;
+    variant.variants.clear();
+    variant.settings.scene.pinion_modifications = p.variants[v].pinion;
+    variant.settings.scene.wheel_modifications = p.variants[v].wheel;
+    if (variant.settings.torques.empty())
+      variant.settings.torques = {p.settings.pinion_torque};
+    const std::string name = "variant_" + std::to_string(v + 1);
+    const stiffness::StiffnessSweepResult result =
+        solve_stiffness_sweep(variant, context, "stiffness_" + name);
+    add_torque_tables(report, result, "te_sweep_" + name, "te_map_" + name);
+    report.add_text(name, p.variants[v].label);
+    maps.emplace_back("te_map_" + name, p.variants[v].label);
+  }
+  if (!context.writes_files() || !context.is_root())
+    return;
+  std::vector<std::unique_ptr<TemporaryCsv>> files;
+  std::vector<std::string> arguments;
+  for (const auto& [table, label] : maps)
+  {
+    files.push_back(std::make_unique<TemporaryCsv>(report, table));
+    arguments.push_back(files.back()->path());
+    arguments.push_back(label);
+  }
+  context.plot("plot_harris_map.py", arguments, "harris_map.png",
+               "Harris map: TE peak-to-peak against torque, one line per modification set");
+}
+
+// The load case, the model and the ISO values every mode reports.
+void report_model(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                  const kinematics::IsoStiffness& iso, Report& report)
+{
+  // With a torque list the sweep runs at each listed torque, not at `pinion torque`.
+  std::string torques;
+  for (const double t : p.settings.torques)
+    torques += (torques.empty() ? "" : ", ") + format_number(t, 4);
+  report.add_text(
+      "load case",
+      "T1 = " + (torques.empty() ? format_number(p.settings.pinion_torque, 4) : torques) +
+          " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
+          "wheel bore fixed, friction μ = " +
+          format_number(p.settings.contact.friction_coefficient, 4) +
+          "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");
+  const bool planar = p.settings.scene.mesh.dimension == 2;
+  report.add_text("model",
+                  std::string(planar ? fem::to_string(p.settings.elasticity.model) + " 2D"
+                                     : std::string("3D")) +
+                      ", Q" + std::to_string(p.settings.elasticity.degree) +
+                      ", E = " + format_number(p.settings.material.youngs_modulus / 1e9, 4) +
+                      " GPa, ν = " + format_number(p.settings.material.poisson_ratio, 4) +
+                      " (assumed: not published)" +
+                      (planar ? ", thickness = common face width " +
+                                    format_number(pair.common_face_width * 1e3, 4) + " mm"
+                              : std::string("")) +
+                      ", " + std::to_string(p.settings.scene.pinion_teeth_modelled) + "/" +
+                      std::to_string(p.settings.scene.wheel_teeth_modelled) + " teeth modelled, " +
+                      (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") +
+                      " rims");
+  // The published figures belong to the built-in pair alone (issue 25: never beside another gear).
+  const bool published = p.published_reference;
+  report.add_value("pinion_base_radius", 0.5 * pair.pinion.base_diameter * 1e3, "mm",
+                   published ? "r_b1 (docs/references.md §1 states 24.667 mm)" : "r_b1");
+  report.add_value("iso_single_stiffness", iso.single_per_width / 1e6, "N/µm",
+                   published ? "ISO 6336-1 method B c'·b (docs/references.md §5: ≈ 330 N/µm)"
+                             : "ISO 6336-1 method B c'·b");
+  report.add_value("iso_mesh_stiffness", iso.mesh_alpha_per_width / 1e6, "N/µm",
+                   "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
+}
+
+// One position (single, double, roll angle).
+void run_position(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                  const kinematics::IsoStiffness& iso, CommandContext& context)
+{
+  Report& report = context.report;
+  context.pcout << "stiffness: solving the " << mode_name(p.mode) << " position on "
+                << dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator) << " rank(s)"
+                << std::endl;
+  const stiffness::GearMeshStiffnessResult r = solve_stiffness_position(p, context, "stiffness");
+  report.add_text("position", position_reason(p.mode, pair, r));
+  const double reference =
+      p.mode == StiffnessMode::single ? ansys::single_pair_stiffness : ansys::double_pair_stiffness;
+  const bool compare = p.published_reference && p.mode != StiffnessMode::roll_angle;
+  if (compare)
+    report.add_compared_value("mesh_stiffness", r.mesh_stiffness / 1e6, reference / 1e6, "N/µm",
+                              p.mode == StiffnessMode::single ? "single-pair mesh stiffness k'_j"
+                                                              : "double-pair mesh stiffness k'_d",
+                              ansys::source);
+  else
+    report.add_value("mesh_stiffness", r.mesh_stiffness / 1e6, "N/µm",
+                     "mesh stiffness T1/(r_b1²·Δφ)");
+  report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100., "%",
+                   "k against ISO 6336-1 c'·b");
+  report_stiffness_position(report, r, "", mode_name(p.mode));
+  report_face_load(context, {r});
+  context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
+                << " s (" << r.n_dofs << " DoFs)" << std::endl;
+}
+
+// The sweep's summary values: k statistics, comparisons, cost and what was done once.
+void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoStiffness& iso,
+                          const stiffness::StiffnessSweepResult& sweep, Report& report)
+{
+  double sum = 0., lowest = 1e300, highest = 0., worst_oracle = 0., cost = 0.;
+  for (const auto& r : sweep.positions)
+  {
+    sum += r.mesh_stiffness;
+    lowest = std::min(lowest, r.mesh_stiffness);
+    highest = std::max(highest, r.mesh_stiffness);
+    worst_oracle = std::max(
+        worst_oracle, std::abs(r.torque_ratio / (r.wheel_base_radius / r.pinion_base_radius) - 1.));
+    cost += r.total_time;
+  }
+  const double mean = sum / sweep.positions.size();
+  report.add_value("positions", sweep.positions.size(), "-", "positions in the sweep");
+  report.add_value("mean_stiffness", mean / 1e6, "N/µm",
+                   "mean of k over the positions (a mesh-period mean for a 1-pitch sweep)");
+  report.add_value("min_stiffness", lowest / 1e6, "N/µm", "smallest k (single-contact zone)");
+  report.add_value("max_stiffness", highest / 1e6, "N/µm", "largest k (double-contact zone)");
+  if (p.published_reference)
+  {
+    report.add_compared_value("min_vs_ansys_single", lowest / 1e6,
+                              ansys::single_pair_stiffness / 1e6, "N/µm",
+                              "smallest k against the ANSYS single-pair value", ansys::source);
+    report.add_compared_value("max_vs_ansys_double", highest / 1e6,
+                              ansys::double_pair_stiffness / 1e6, "N/µm",
+                              "largest k against the ANSYS double-pair value", ansys::source);
+  }
+  report.add_value("mean_vs_iso", (mean / iso.mesh_alpha_per_width - 1.) * 100., "%",
+                   "mean k against ISO 6336-1 c_γα·b");
+  report.add_value("torque_ratio_deviation", worst_oracle, "-",
+                   "largest | |T_wheel/T1| / (r_b2/r_b1) − 1 | (0 without friction)");
+  report.add_value("sweep_ranks", sweep.n_ranks, "-", "MPI ranks sharing the positions");
+  report.add_value("sweep_cpu_time", cost, "s", "sum of the positions' wall times");
+  report.add_value("sweep_wall_time", sweep.wall_time, "s", "wall time of the sweep");
+  const bool once = sweep.mesh == stiffness::SweepMesh::once;
+  report.add_value("sweep_mesh", once ? 1. : 0., "-",
+                   once ? "1: once (each rank meshed and factorized one scene and turned it)"
+                        : "0: per position (a scene, mesh and factorization per position)");
+  report.add_value("sweep_once_time", sweep.once_time, "s",
+                   "done once (per rank, summed): meshing, set-up of K, factorization");
+  report.add_value("sweep_per_position_time", sweep.per_position_time / sweep.positions.size(), "s",
+                   once ? "per position, mean: turning, pairing, contact solve, evaluation "
+                          "(2D: from the kept unit responses; 3D: one back-substitution)"
+                        : "per position, mean: everything");
+}
+
+// The k(x) table for `dynamics` and the k(θ) chart.
+void write_sweep_files(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                       const kinematics::IsoStiffness& iso,
+                       const stiffness::StiffnessSweepResult& sweep, CommandContext& context)
+{
+  if (!context.writes_files() || !context.is_root())
+    return;
+  Report& report = context.report;
+  double sum = 0.;
+  for (const auto& r : sweep.positions)
+    sum += r.mesh_stiffness;
+  const double mean = sum / sweep.positions.size();
+  {
+    // The built-in pair's table drives the published split-path gearbox (both meshes); an own
+    // pair's drives a train of that pair alone, never the built-in gearbox (issue 41).
+    const bool builtin = kinematics::is_split_path_pair(p.settings.scene.pair);
+    context.write_output(
+        "stiffness_table.prm",
+        builtin ? "k(x) table for `gearstiff dynamics` (the split path's Mesh 1 and Mesh 2)"
+                : "`gearstiff dynamics` input: this pair with its k(x) table",
+        [&](std::ostream& out)
+        {
+          out << "# Mesh stiffness k(x) from `gearstiff stiffness` (FE, " << sweep.positions.size()
+              << " positions): x = roll position of the last pair to enter [base pitches], k "
+                 "[N/mm].\n"
+              << "# Use: gearstiff dynamics stiffness_table.prm\n"
+              << (builtin ? dynamics_table_input(sweep) : own_pair_dynamics_input(p, pair, sweep));
+        });
+  }
+  const TemporaryCsv csv(report, "stiffness_sweep");
+  context.plot("plot_stiffness.py",
+               {csv.path(),
+                format_number(p.published_reference ? ansys::single_pair_stiffness / 1e6 : 0., 8),
+                format_number(p.published_reference ? ansys::double_pair_stiffness / 1e6 : 0., 8),
+                format_number(iso.mesh_alpha_per_width / 1e6, 8), format_number(mean / 1e6, 8)},
+               "stiffness_sweep.png",
+               p.published_reference
+                   ? "k(θ) with the ANSYS single/double-pair values and the ISO 6336 mean"
+                   : "k(θ) with its mean and the ISO 6336 mean");
+  // The TE chart names the case and the torque the positions were solved at (a torque list's
+  // first: the te_map table and harris_map.png show the others).
+  const kinematics::GearPairSpec& gears = p.settings.scene.pair;
+  const double torque = sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+  const std::string torque_text = "T1 = " + format_number(torque, 4) + " N·m";
+  context.plot("plot_transmission_error.py",
+               {csv.path(), "z " + std::to_string(gears.pinion.teeth) + "/" +
+                                std::to_string(gears.wheel.teeth) + ", m_n " +
+                                format_number(gears.pinion.normal_module * 1e3, 4) + " mm, " +
+                                torque_text},
+               "transmission_error.png", "loaded TE(θ) at " + torque_text);
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  const StiffnessParameters p = parse_stiffness_parameters(prm);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
+  const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
+  Report& report = context.report;
+  report_input_sizes(report, p);
+  report_model(p, pair, iso, report);
+  if (p.mode != StiffnessMode::sweep)
+    return run_position(p, pair, iso, context);
+  const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
+  add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
+  report_face_load(context, sweep.positions);
+  report_micro_geometry(p, sweep, context);
+  add_pair_identity(report, pair);
+  report_sweep_summary(p, iso, sweep, report);
+  write_sweep_files(p, pair, iso, sweep, context);
+}
+
+const CommandRegistration registration(Command{
+    "stiffness",
+    "gear mesh stiffness from frictional FE contact: single, double, roll angle or k(θ) sweep",
+    "Builds the gear-pair scene (geometry module), solves the frictional contact (dual mortar,\n"
+    "active set) with the published load case of docs/references.md §1: torque T1 on the pinion\n"
+    "(bore free only to rotate), wheel bore fixed, μ = 0.01, and reports the mesh stiffness\n"
+    "k = T1/(r_b1²·Δφ) at exactly T1 (torque-controlled), the transmission error, the load\n"
+    "share of every tooth pair, the largest contact pressure and root stress, and the cost.\n"
+    "Modes: single (pitch point in the single-contact zone), double (first double-contact\n"
+    "zone), roll angle (any position), sweep (N positions over one or more base pitches,\n"
+    "distributed over the MPI ranks: mpirun -np 2 gearstiff stiffness ...). Compared with\n"
+    "ISO 6336-1 c'·b, and with the published values of docs/references.md §1 only when the pair\n"
+    "is that built-in split-path pair.",
+    declare_stiffness_parameters, run});
+} // namespace
