@@ -175,7 +175,9 @@ std::vector<double> pair_separations(const GearPairSceneSpec& spec,
   std::vector<double> separations;
   for (const int j : pairs)
   {
-    const double at = position + j * pair.transverse_base_pitch;
+    // A helical pair not in contact in the model section: where it touches nearest to it.
+    const double at = position + j * pair.transverse_base_pitch +
+                      (is_helical_pair(pair) ? nearest_roll(pair, position, j) : 0.);
     separations.push_back(
         gears.pinion_teeth.loaded_flank_removal(j, at) +
         gears.wheel_teeth.loaded_flank_removal(mate_tooth(gears.wheel, j), std::abs(at - line.t2)) +
