@@ -433,9 +433,6 @@ void check_scene_spec(const GearPairSceneSpec& spec)
                      "applies to an internal wheel only (external gears: bore radius)");
   check_wheel_supports(spec);
   check_wheel_bolt_holes(spec);
-  if (spec.pair.pinion.helix_angle != 0. || spec.pair.wheel.helix_angle != 0.)
-    throw InputError(kinematics::gear_parameter_name(false, "helix angle"),
-                     "the gear-pair scene models spur gears only (helix angle 0)");
   if (!(spec.pinion_torque > 0.))
     throw InputError(scene_field::pinion_torque, "must be positive");
   if (!(spec.young_modulus > 0.))

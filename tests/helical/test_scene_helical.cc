@@ -23,6 +23,8 @@ GearPairSceneSpec helical_spec(double beta_degrees, unsigned int dimension = 3)
   GearPairSceneSpec spec;
   spec.pair.pinion.helix_angle = beta_degrees * degree; // right hand
   spec.pair.wheel.helix_angle = -beta_degrees * degree; // left hand (external pair)
+  // Standard tips (the command's `auto`): the published tips are the spur pair's.
+  spec.pair.pinion.tip_diameter = spec.pair.wheel.tip_diameter = 0.;
   spec.mesh.dimension = dimension;
   spec.mesh.layers = 8;
   // Coarse sizes: the test checks the geometry, not a converged mesh.
