@@ -366,7 +366,7 @@ def helical_statics(case, runner, log):
     opposite, internal the same), beta 8-25 deg drawn from its own stream (the case's own draws
     stay as they were), 3D Q1 with the fewest layers the twist allows, frictionless. Without
     friction every contact force is normal to the involute helicoid: |F_a|/F_bt = tan beta_b
-    (0.5 %) and the torques balance (1e-9)."""
+    (0.5 %) and the torques balance (1.2e-4: the faceted flank normals)."""
     rng = random.Random(f"{case['seed']}:{case['index']}:helix")
     beta = round(rng.uniform(8., 25.), 1)
     internal = case["pair"]["Gear pair/Wheel/internal"] == "true"
@@ -380,7 +380,9 @@ def helical_statics(case, runner, log):
     report, _, _ = runner.run("stiffness", sets)
     ratio, tan_b = value(report, "axial_over_tangential"), value(report, "tan_base_helix")
     check_close("|F_a|/F_bt against tan beta_b", ratio, tan_b, 0., 5e-3)
-    check_close("torque balance", value(report, "torque_balance_deviation"), 0., 1e-9)
+    # Not solver precision: the faceted helicoid's normals (tests/helical/CMakeLists.txt: 3.8e-5
+    # measured on the built-in pair at beta 15 deg, 7 layers).
+    check_close("torque balance", value(report, "torque_balance_deviation"), 0., 1.2e-4)
     log(f"helical beta {beta} deg, {sets['Mesh/layers']} layers: |F_a|/F_bt {ratio:.6f}, "
         f"tan beta_b {tan_b:.6f}")
 
