@@ -412,8 +412,6 @@ double involute_function(double angle)
 
 InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double tip_diameter)
 {
-  if (gear.helix_angle != 0.)
-    throw InputError("helix angle", "the involute tooth generator handles spur gears only");
   InvoluteToothSpec spec;
   spec.teeth = gear.teeth;
   spec.module = gear.normal_module;
@@ -425,6 +423,25 @@ InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double t
   std::tie(spec.cutter_addendum, spec.cutter_dedendum, spec.cutter_tip_radius) = std::tuple{
       gear.dedendum_coefficient, gear.addendum_coefficient, gear.root_radius_coefficient};
   spec.gear_addendum = gear.addendum_coefficient;
+  if (gear.helix_angle != 0.)
+  {
+    // A helical gear's transverse section is cut by the transverse section of its normal rack
+    // (ISO 21771): module m_t = m_n/cos β, flank angle α_t = arctan(tan α_n/cos β), the same
+    // addendum, dedendum and shift in metres (x·m_n = x_t·m_t), so every coefficient of m_n
+    // becomes cos β times the coefficient of m_t. The rack's tip round of radius ρ_fP·m_n is a
+    // circular cylinder along the normal rack's teeth; its transverse section is an ellipse
+    // with semi-axes ρ_fP·m_n (depth) and ρ_fP·m_n/cos β (along the pitch line): the cutter tip
+    // round here keeps the depth radius ρ_fP·m_n, exact for β = 0 and a fillet slightly sharper
+    // than the real one otherwise (docs/helical.md, limits).
+    const double c = std::cos(gear.helix_angle);
+    spec.module = gear.normal_module / c;
+    spec.pressure_angle = std::atan(std::tan(gear.pressure_angle) / c);
+    spec.profile_shift *= c;
+    spec.cutter_addendum *= c;
+    spec.cutter_dedendum *= c;
+    spec.cutter_tip_radius *= c;
+    spec.gear_addendum *= c;
+  }
   spec.internal = gear.internal;
   return spec;
 }

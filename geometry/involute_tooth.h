@@ -23,7 +23,7 @@ enum class TipReliefShape
 struct InvoluteToothSpec
 {
   unsigned int teeth = 0;     // number of teeth (positive also for internal gears), ≥ 3
-  double module = 0.;         // m, normal = transverse module (spur gears)
+  double module = 0.;         // m, transverse module (spur gears: = normal module)
   double pressure_angle = 0.; // rad, reference (cutter) pressure angle, 0 < α < 45°
   double profile_shift = 0.;  // -, coefficient x (convention above)
   // m, tip-circle diameter; 0 selects the standard d ± 2·m·(h_aP ± x) (see tip_diameter()).
@@ -55,10 +55,9 @@ struct InvoluteToothSpec
 // The tip diameter actually used: spec.tip_diameter or the standard one, in m.
 double tip_diameter(const InvoluteToothSpec& spec);
 
-// The tooth of one gear of kinematics' pair (spur gears; a helical gear is rejected: its
-// transverse profile needs the transverse module and pressure angle, not done here). The
-// cutter is the gear's basic rack (addendum h_fP*, dedendum h_aP*, tip round ρ_fP*); tip
-// diameter as the pair uses it.
+// The tooth of one gear of kinematics' pair; a helical gear's transverse tooth (m_t, α_t,
+// x·m_n, the transverse section of its rack: involute_tooth.cc). The cutter is the gear's basic
+// rack (addendum h_fP*, dedendum h_aP*, tip round ρ_fP*); tip diameter as the pair uses it.
 // `required_form_diameter` is left 0 (kinematics checks the form circle against its mate).
 InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double tip_diameter);
 

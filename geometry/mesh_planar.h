@@ -73,6 +73,19 @@ struct PlanarFill
 // any deflection the faces see (µm), and the contact takes the faces as touching.
 constexpr double crack_face_parting = 1e-10;
 
+// 3D: a body twisted about its axis along the face width: the section at height z is the
+// transverse model turned counter-clockwise by φ(z) = rate·(z − origin) about `axis` (a helical
+// gear's lead: rate = tan β_b / r_b, signed by the hand and the side the gear turns).
+struct BodyTwist
+{
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero(); // m, scene frame
+  double rate = 0.;                               // rad/m, dφ/dz
+  double origin = 0.;                             // m, z where the section is the model's
+  double angle(double z) const { return rate * (z - origin); }             // rad
+  Eigen::Vector2d turned(const Eigen::Vector2d& point, double z) const;    // m
+  Eigen::Vector2d untwisted(const Eigen::Vector2d& point, double z) const; // m, the inverse
+};
+
 struct PlanarBody
 {
   std::string name;                // physical group name, e.g. "pinion body"
@@ -90,6 +103,9 @@ struct PlanarModel
   // node_offset(m, x) (m; x the node, m): the lead modifications of gear teeth
   // (geometry/tooth_modification_lead.h). Empty: no node moves.
   std::function<Eigen::Vector2d(int, const Eigen::Vector3d&)> node_offset;
+  // 3D only, the extrusion path (geometry/face_width.cc): the bodies listed by material id are
+  // twisted along z (helical gears); the others are extruded straight.
+  std::map<int, BodyTwist> twist;
 };
 
 // A point where the mesh must be fine (a predicted contact): cells of `size` within `radius`.
@@ -173,7 +189,7 @@ struct MeshEstimate
 // size; each focus's part is capped at the whole area at its size. Foci that overlap (a rolling
 // sweep's band of foci along every flank) are counted once: the same integral over their union,
 // sampled on a grid, when it is smaller than the per-focus sum. Measured against gmsh's
-// counts on the scenes: 0.66 to 3.4 times the real count (mesh_planar.cc), enough to refuse a
+// counts on the scenes: 0.66 to 3.4 times the real count (mesh_size.cc), enough to refuse a
 // mesh far beyond the limit; not a cost prediction.
 MeshEstimate estimate_mesh(const PlanarModel& model, const SizeGrading& grading,
                            const MeshOptions& options);

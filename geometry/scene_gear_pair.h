@@ -1,7 +1,7 @@
-// The FE scene of a spur gear pair at one pinion position: a few teeth of each gear around the
-// predicted contacts, their rim down to the bore (a sector with cut faces, or the full rim with
-// the other teeth removed, as in the ANSYS model of Reszuta & Drewniak 2015), the wheel placed in
-// mesh, contact points predicted along the line of action.
+// The FE scene of a spur or helical gear pair at one pinion position: a few teeth of each gear
+// around the predicted contacts, their rim down to the bore (a sector with cut faces, or the full
+// rim with the other teeth removed, as in the ANSYS model of Reszuta & Drewniak 2015), the wheel
+// placed in mesh, contact points predicted along the line of action.
 //
 // Internal pairs (ring wheel): the ring centre at (−a_w, 0), its rim held (boundary id "wheel
 // bore") on its outer circle — the whole circle, or N pads of it (a ring splined into a rigid
@@ -132,6 +132,18 @@ int wheel_flank_id(int pair);
 // tooth `tooth` (|tooth| ≤ max_pair_index, the gear's own frame): crack_face_id and + 1.
 int crack_face_id(bool wheel, int tooth);
 
+// Where a pair's flanks touch across the face at the scene's position (unloaded, kinematic): a
+// straight line in the plane of action, parallel to the axis for a spur pair and inclined at
+// β_b to it for a helical one, over the part of the face where the pair lies inside the path of
+// contact A–E (geometry/gear_pair_helix.cc). Scene frame, z from 0 to the face width.
+struct ContactLine
+{
+  int pair = 0;                                    // -, j
+  Eigen::Vector3d start = Eigen::Vector3d::Zero(); // m, the end at the smaller z
+  Eigen::Vector3d end = Eigen::Vector3d::Zero();   // m
+  double start_position = 0., end_position = 0.;   // m, ℓ from T1 at start and end
+};
+
 // A written gear-pair scene: the common SceneInfo and what this scene adds, by name.
 struct GearPairScene
 {
@@ -155,7 +167,20 @@ struct GearPairScene
   // δ_wheel(ρ2) at each pair's kinematic contact point (0 without modifications).
   double unloaded_transmission_error = 0.; // m
   std::vector<double> pair_separation;     // m, of each pair in contact_pairs, same order
+  // The contact line of each pair in contact_pairs (a helical pair's contact_pairs are every pair
+  // in contact in some section across the face).
+  std::vector<ContactLine> contact_lines;
 };
+
+// Helical pairs (ISO 21771; docs/helical.md): the sign of Gear pair/.../helix angle is the hand
+// (β > 0 right hand). A helical pair is meshed in 3D only, its transverse section at the middle
+// of the face twisted along the face by the lead.
+bool is_helical(const GearPairSceneSpec& spec);
+// The spec whose modification amounts are transverse: ISO 21771 gives them normal to the flank
+// (δ_n), the transverse outline removes δ_t = δ_n / cos β_b. The spec itself for a spur pair.
+GearPairSceneSpec transverse_section_spec(const GearPairSceneSpec& spec);
+// -, the fewest layers across the face that follow a helical pair's twist: 8 per unit of ε_β.
+unsigned int layers_for_twist(const kinematics::GearPairGeometry& pair);
 
 // The roll-length ranges of the pinion (wheel = false) or the wheel flank against its mate
 // (geometry/tooth_modification.h), from the pair and the generated tooth.

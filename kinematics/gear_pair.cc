@@ -180,6 +180,15 @@ void check_pair_spec(const GearPairSpec& spec)
   if (std::abs(std::abs(g1.helix_angle) - std::abs(g2.helix_angle)) > 1e-12)
     throw InputError(gear_parameter_name(true, "helix angle"),
                      "differs in magnitude from the pinion's");
+  // The sign is the hand (ISO 21771): β > 0 right hand, β < 0 left hand.
+  if (g1.helix_angle != 0. && !g2.internal && (g1.helix_angle > 0.) == (g2.helix_angle > 0.))
+    throw InputError(gear_parameter_name(true, "helix angle"),
+                     "has the pinion's hand: an external pair meshes with opposite hands (β > 0 "
+                     "right hand, β < 0 left hand; give the wheel −β)");
+  if (g1.helix_angle != 0. && g2.internal && (g1.helix_angle > 0.) != (g2.helix_angle > 0.))
+    throw InputError(gear_parameter_name(true, "helix angle"),
+                     "has the other hand than the pinion's: an internal pair meshes with the same "
+                     "hand (β > 0 right hand, β < 0 left hand)");
   if (g2.internal && g2.teeth <= g1.teeth)
     throw InputError(gear_parameter_name(true, "teeth"),
                      "an internal wheel needs more teeth than its pinion (" +

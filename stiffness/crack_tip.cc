@@ -118,7 +118,7 @@ CrackTipFactors crack_tip_factors(const DoFHandler<2>& dof_handler, const Mappin
   result.tip_y = tip[1];
   result.length = length;
   const double scale = plane_strain_modulus / 8.;
-  // Coincident nodes of the two faces (parted by 0.1 nm in the mesh, geometry/mesh_planar.cc).
+  // Coincident nodes of the two faces (parted by 0.1 nm in the mesh, geometry/mesh_crack.cc).
   const double tolerance = 1e-9;
   std::vector<std::pair<double, double>> mode_one, mode_two;
   std::set<std::pair<long, long>> seen;

@@ -69,6 +69,37 @@ void locate_load(const contact::PairResult<dim>& contact, double working_pressur
   if (load.closed_roll_min > load.closed_roll_max)
     load.closed_roll_min = load.closed_roll_max = load.position; // no closed node
 }
+// 3D: the mesh forces on the pinion and their tilting moment (GearMeshStiffnessResult).
+template <int dim>
+void mesh_forces(const contact::ContactResults<dim>& contact, unsigned int n_pairs,
+                 double working_pressure_angle, double mid_face, GearMeshStiffnessResult& result)
+{
+  result.tangential_force = result.axial_force = 0.;
+  double moment_x = 0., moment_y = 0.;
+  for (unsigned int k = 0; k < n_pairs; ++k)
+  {
+    const contact::PairResult<dim>& pair = contact.pairs[k];
+    const Tensor<1, dim>& f = pair.force_on_slave;
+    result.tangential_force -=
+        f[0] * std::sin(working_pressure_angle) + f[1] * std::cos(working_pressure_angle);
+    result.axial_force += f[dim - 1];
+    Point<dim> centre;
+    double weight = 0.;
+    for (const auto& point : pair.points)
+      if (point.state != contact::NodeState::open && point.pressure > 0.)
+      {
+        centre += point.pressure * point.position;
+        weight += point.pressure;
+      }
+    if (!(weight > 0.) || dim != 3)
+      continue;
+    centre /= weight;
+    const double z = centre[dim - 1] - mid_face;
+    moment_x += centre[1] * f[dim - 1] - z * f[1];
+    moment_y += z * f[0] - centre[0] * f[dim - 1];
+  }
+  result.tilting_moment = std::hypot(moment_x, moment_y);
+}
 } // namespace
 
 geometry::GearPairSceneSpec default_stiffness_scene()
@@ -431,6 +462,8 @@ void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& 
       append_face_load(contact.pairs[k], candidate_pairs[k].pair, result.pinion_base_radius,
                        result.face_load);
     result.face_load_factor = summarise_face_load(result.face_load).factor;
+    mesh_forces(contact, candidate_pairs.size(), pair.working_pressure_angle,
+                0.5 * pair.common_face_width, result);
   }
 }
 

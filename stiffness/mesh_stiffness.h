@@ -146,6 +146,14 @@ struct GearMeshStiffnessResult
   // K_Hβ = peak/mean of the pairs' summed line load (-; 2D: empty and 0).
   std::vector<FaceLoadPoint> face_load;
   double face_load_factor = 0.;
+  // 3D: the forces of the mesh on the pinion (Σ of the pairs' contact resultants): along the
+  // line of action (F_bt, > 0 against the pinion's turn), along +z (F_a, a helical pair's axial
+  // force; 0 for spur), and the magnitude of their moment about the x and y axes through the
+  // pinion centre at the middle of the face (tilting moment; the closed nodes' pressure-weighted
+  // centre as each pair's point of action).
+  double tangential_force = 0.; // N
+  double axial_force = 0.;      // N
+  double tilting_moment = 0.;   // N·m
   // Model and cost.
   unsigned int dimension = 2;
   unsigned int n_cells = 0;
@@ -187,6 +195,9 @@ struct GearMeshStiffnessResult
     visit("crack_tips", self.crack_tips);
     visit("face_load", self.face_load);
     visit("face_load_factor", self.face_load_factor);
+    visit("tangential_force", self.tangential_force);
+    visit("axial_force", self.axial_force);
+    visit("tilting_moment", self.tilting_moment);
     visit("dimension", self.dimension);
     visit("n_cells", self.n_cells);
     visit("n_dofs", self.n_dofs);

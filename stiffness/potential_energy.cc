@@ -40,6 +40,10 @@ public:
              double bore_radius, const geometry::ProfileResolution& resolution, bool wheel)
       : bore(bore_radius > 0. ? bore_radius : 0.5 * spec.bore_diameter)
   {
+    // The section rule integrates a spur tooth's slices (the helical scene is FE only).
+    if (spec.helix_angle != 0.)
+      throw InputError(kinematics::gear_parameter_name(wheel, "helix angle"),
+                       "the potential-energy method models spur gears only (helix angle 0)");
     geometry::InvoluteToothSpec tooth = geometry::involute_tooth_spec(spec, derived.tip_diameter);
     tooth.required_form_diameter = derived.active_profile_start;
     nominal = geometry::generate_involute_tooth(tooth, resolution);

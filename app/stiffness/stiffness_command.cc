@@ -176,6 +176,25 @@ void run_position(const StiffnessParameters& p, const kinematics::GearPairGeomet
   report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100., "%",
                    "k against ISO 6336-1 c'·b");
   report_stiffness_position(report, r, "", mode_name(p.mode));
+  if (p.settings.scene.pair.pinion.helix_angle != 0.) // docs/helical.md: the helix's forces
+  {
+    report.add_value("tangential_force", r.tangential_force, "N",
+                     "F_bt, the mesh force on the pinion along the transverse line of action");
+    report.add_value("axial_force", r.axial_force, "N",
+                     "F_a, the mesh force on the pinion along its axis (ISO 21771: F_bt·tan β_b)");
+    report.add_value("axial_over_tangential", std::abs(r.axial_force) / r.tangential_force, "-",
+                     "|F_a|/F_bt (statics of the involute helicoid without friction: tan β_b)");
+    report.add_value("tan_base_helix", std::tan(pair.base_helix_angle), "-", "tan β_b (ISO 21771)");
+    report.add_value("torque_balance_deviation",
+                     r.torque_ratio / (r.wheel_base_radius / r.pinion_base_radius) - 1., "-",
+                     "|T_wheel/T1| / (r_b2/r_b1) − 1 (0 without friction)");
+    report.add_value(
+        "tilting_moment", r.tilting_moment, "N·m",
+        "moment of the mesh forces on the pinion about the axes normal to its axis "
+        "(mid-face); F_a·r_w1 = " +
+            format_number(std::abs(r.axial_force) * 0.5 * pair.pinion.working_diameter, 6) +
+            " N·m");
+  }
   report_face_load(context, {r});
   context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
                 << " s (" << r.n_dofs << " DoFs)" << std::endl;
@@ -212,6 +231,13 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
   }
   report.add_value("mean_vs_iso", (mean / iso.mesh_alpha_per_width - 1.) * 100., "%",
                    "mean k against ISO 6336-1 c_γα·b");
+  if (p.settings.scene.pair.pinion.helix_angle != 0.) // ISO 6336-1: c_γβ = 0.85·c_γα
+  {
+    report.add_value("iso_mesh_stiffness_beta", iso.mesh_beta * iso.face_width / 1e6, "N/µm",
+                     "ISO 6336-1 c_γβ·b (helical pairs)");
+    report.add_value("mean_vs_iso_beta", (mean / (iso.mesh_beta * iso.face_width) - 1.) * 100., "%",
+                     "mean k against ISO 6336-1 c_γβ·b (a difference, not a tolerance)");
+  }
   report.add_value("torque_ratio_deviation", worst_oracle, "-",
                    "largest | |T_wheel/T1| / (r_b2/r_b1) − 1 | (0 without friction)");
   report.add_value("sweep_ranks", sweep.n_ranks, "-", "MPI ranks sharing the positions");

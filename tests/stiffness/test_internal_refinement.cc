@@ -61,7 +61,7 @@ TEST(InternalRefinement, DefaultWithinStatedErrorOfFinerLevel)
 // plane strain, and above plane stress (σ_zz = 0, the thin-gear limit) — the bound of
 // test_stiffness_sweep.cc for the external pair. Measured 376.9 between 384.5 and 356.7 N/um.
 // (Before, the ring's flank faces got wrong ids in 3D: gmsh lists a hole's lateral surfaces in
-// reverse, geometry/mesh_planar.cc.)
+// reverse, geometry/face_width.cc.)
 TEST(InternalRefinement, ThreeDimensionalLiesBetweenPlaneStrainAndPlaneStress)
 {
   GearMeshStiffnessSettings settings = planet_ring(5.);

@@ -1,7 +1,7 @@
 // Tooth modifications on an internal pair (issue 27): the planet–ring pair of planet_ring.h
 // (z = 24 in 69, docs/references.md §2), 2D. The zero-load rule of the external pair
 // (test_micro_geometry.cc) holds with the ring's own roll lengths (its distance from T2 on the
-// line of action, geometry/scene_gear_pair.cc): with equal linear long tip reliefs C on the
+// line of action, geometry/gear_pair_contacts.cc): with equal linear long tip reliefs C on the
 // planet and the ring the unloaded TE is the tent min(C·s, C·(1 − s)) in the first double zone
 // [A, B] (the entering pair relieved by the ring tip, which bounds the path at A; the leaving one
 // by the planet tip) and 0 in the single zone; relief on one gear only leaves 0 everywhere. The

@@ -1,0 +1,199 @@
+// The helical part of the gear-pair scene (ISO 21771:2007, docs/references.md; docs/helical.md).
+// The transverse model at the middle of the face (z₀ = b/2) is the spur scene of the transverse
+// section; the face-width stage (geometry/face_width.cc) turns every section of each gear about
+// its axis by its lead, φ(z) = σ·(z − z₀)·tan β_b / r_b (σ = +1 for a right-hand pinion; the
+// wheel turns the other way on an external pair, the same way on an internal one). A turned
+// section is the transverse model rolled by φ: its pair j touches the line of action at
+// ℓ_j(z) = ℓ_j + σ·(z − z₀)·tan β_b, so the contact lines lie in the plane of action, inclined at
+// β_b to the axis, and every section meets the pairs the rolled transverse model meets.
+#include "errors/errors.h"
+#include "errors/format.h"
+#include "geometry/gear_pair_internal.h"
+#include "geometry/scene_gear_pair.h"
+#include "geometry/tooth_fault.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace gearstiff::geometry
+{
+namespace
+{
+// -, layers per unit of overlap ratio: a contact line then moves by at most p_bt/8 along the
+// line of action from one layer to the next, and each pair's line crosses at least 8·ε_α layers
+// (the load along it is resolved like the spur scene's 8 layers across the face).
+constexpr double layers_per_overlap = 8.;
+
+// -, sin β_b = sin β·cos α_n (ISO 21771), from the pinion's signed β.
+double cos_base_helix(const kinematics::GearPairSpec& pair)
+{
+  const double sin_b = std::sin(pair.pinion.helix_angle) * std::cos(pair.pinion.pressure_angle);
+  return std::sqrt(1. - sin_b * sin_b);
+}
+
+void scale_amounts(GearModifications& modifications, double factor)
+{
+  for (ToothModification& m : modifications.all_teeth)
+    m.amount *= factor;
+  for (auto& [index, list] : modifications.by_tooth)
+    for (ToothModification& m : list)
+      m.amount *= factor;
+  modifications.lead.crowning *= factor;
+  modifications.lead.slope *= factor;
+  modifications.lead.end_relief *= factor;
+}
+} // namespace
+
+bool is_helical(const GearPairSceneSpec& spec)
+{
+  return spec.pair.pinion.helix_angle != 0.;
+}
+
+GearPairSceneSpec transverse_section_spec(const GearPairSceneSpec& spec)
+{
+  if (!is_helical(spec))
+    return spec;
+  GearPairSceneSpec section = spec;
+  const double factor = 1. / cos_base_helix(spec.pair); // δ_t = δ_n / cos β_b
+  scale_amounts(section.pinion_modifications, factor);
+  scale_amounts(section.wheel_modifications, factor);
+  return section;
+}
+
+unsigned int layers_for_twist(const kinematics::GearPairGeometry& pair)
+{
+  return static_cast<unsigned int>(std::ceil(layers_per_overlap * pair.overlap_ratio - 1e-9));
+}
+
+namespace detail
+{
+void check_helical_scene(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair)
+{
+  if (!is_helical(spec))
+    return;
+  const double beta = std::abs(spec.pair.pinion.helix_angle);
+  if (!(beta < M_PI / 4.))
+    throw InputError(kinematics::gear_parameter_name(false, "helix angle"),
+                     "must lie below 45° in magnitude for the FE scene (its hexahedra follow the "
+                     "twist; " +
+                         format_number(beta * 180. / M_PI, 6) + "° given)");
+  if (spec.mesh.dimension != 3)
+    throw InputError("Mesh/dimension", "must be 3 for a helical pair (helix angle " +
+                                           format_number(beta * 180. / M_PI, 6) +
+                                           "°): its teeth twist along the face width");
+  const unsigned int needed = layers_for_twist(pair);
+  if (spec.mesh.layers < needed)
+    throw InputError("Mesh/layers", "must be at least " + std::to_string(needed) +
+                                        " to follow the twist of this helical pair (8 per unit "
+                                        "of overlap ratio ε_β = " +
+                                        format_number(pair.overlap_ratio, 4) + "), got " +
+                                        std::to_string(spec.mesh.layers));
+  if (!spec.swept_positions.empty())
+    throw InputError(scene_field::swept_positions,
+                     "a helical pair is meshed per position: rolling one mesh through the sweep "
+                     "is not verified on twisted teeth");
+  for (const GearModifications* m : {&spec.pinion_modifications, &spec.wheel_modifications})
+    for (const auto& [index, list] : m->by_tooth)
+      if (has_faults(list))
+        throw InputError(
+            kinematics::gear_parameter_name(m == &spec.wheel_modifications, "faulty tooth"),
+            "tooth faults are modelled on spur pairs only (helix angle 0)");
+}
+
+double contact_shift_rate(const kinematics::GearPairGeometry& pair)
+{
+  const double sigma = pair.spec.pinion.helix_angle > 0. ? 1. : -1.;
+  return is_helical_pair(pair) ? sigma * std::tan(pair.base_helix_angle) : 0.;
+}
+
+bool is_helical_pair(const kinematics::GearPairGeometry& pair)
+{
+  return pair.spec.pinion.helix_angle != 0.;
+}
+
+double model_section(const kinematics::GearPairGeometry& pair)
+{
+  return 0.5 * pair.common_face_width;
+}
+
+std::vector<double> face_positions(const kinematics::GearPairGeometry& pair, double reference)
+{
+  const double half = 0.5 * pair.common_face_width * std::abs(contact_shift_rate(pair));
+  const double from = std::max(reference - half, pair.contact_start);
+  const double to = std::min(reference + half, pair.contact_end);
+  const double step = 0.25 * pair.transverse_base_pitch;
+  const unsigned int n = static_cast<unsigned int>(std::ceil((to - from) / step)) + 1;
+  std::vector<double> positions;
+  for (unsigned int k = 0; k < n; ++k)
+    positions.push_back(n == 1 ? from : from + (to - from) * k / (n - 1));
+  return positions;
+}
+
+std::vector<int> pairs_across_face(const kinematics::GearPairGeometry& pair, double reference)
+{
+  std::vector<int> pairs;
+  for (const double position : face_positions(pair, reference))
+    for (const int j : pairs_in_contact(pair, position))
+      pairs.push_back(j);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+double nearest_roll(const kinematics::GearPairGeometry& pair, double reference, int j)
+{
+  // Kept a hundredth of a base pitch inside the path: the line of action meets both flanks.
+  const double margin = 0.01 * pair.transverse_base_pitch;
+  const double at = reference + j * pair.transverse_base_pitch;
+  const double inside = std::clamp(at, pair.contact_start + margin, pair.contact_end - margin);
+  return inside - at;
+}
+
+std::map<int, BodyTwist> gear_twists(const kinematics::GearPairGeometry& pair,
+                                     const PlacedGears& gears)
+{
+  if (!is_helical_pair(pair))
+    return {};
+  const double rate = contact_shift_rate(pair);
+  const double r_b1 = 0.5 * std::abs(pair.pinion.base_diameter);
+  const double r_b2 = 0.5 * std::abs(pair.wheel.base_diameter);
+  const double wheel_sense = gears.wheel.internal ? 1. : -1.;
+  return {{scene_ids::pinion_body, {gears.pinion_centre, rate / r_b1, model_section(pair)}},
+          {scene_ids::wheel_body,
+           {gears.wheel_centre, wheel_sense * rate / r_b2, model_section(pair)}}};
+}
+
+std::vector<ContactLine> contact_lines(const kinematics::GearPairGeometry& pair,
+                                       const LineOfAction& line, double reference,
+                                       const std::vector<int>& pairs)
+{
+  const double rate = contact_shift_rate(pair), b = pair.common_face_width;
+  const double z0 = model_section(pair);
+  std::vector<ContactLine> lines;
+  for (const int j : pairs)
+  {
+    const double at = reference + j * pair.transverse_base_pitch;
+    double z_from = 0., z_to = b;
+    if (rate != 0.)
+    {
+      const double za = z0 + (pair.contact_start - at) / rate;
+      const double ze = z0 + (pair.contact_end - at) / rate;
+      z_from = std::max(0., std::min(za, ze));
+      z_to = std::min(b, std::max(za, ze));
+    }
+    if (!(z_to > z_from))
+      continue;
+    ContactLine l;
+    l.pair = j;
+    l.start_position = at + rate * (z_from - z0);
+    l.end_position = at + rate * (z_to - z0);
+    const Eigen::Vector2d p = line.at(l.start_position), q = line.at(l.end_position);
+    l.start = Eigen::Vector3d(p.x(), p.y(), z_from);
+    l.end = Eigen::Vector3d(q.x(), q.y(), z_to);
+    lines.push_back(l);
+  }
+  return lines;
+}
+} // namespace detail
+} // namespace gearstiff::geometry

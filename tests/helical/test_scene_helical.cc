@@ -1,0 +1,156 @@
+// The helical gear-pair scene (issue 46, docs/helical.md): the split-path pair of
+// docs/references.md §1 with β = ±15° (ISO 21771:2007 formulas in the comments), meshed coarsely
+// in 3D. Checks the contact lines the scene exposes across the face, the pairs it models, that the
+// twisted mesh passes the cell checks, and the refusals before gmsh runs.
+#include "errors/errors.h"
+#include "geometry/scene_gear_pair.h"
+#include "kinematics/gear_pair.h"
+
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+
+namespace
+{
+using namespace gearstiff;
+using namespace gearstiff::geometry;
+
+constexpr double degree = M_PI / 180.;
+
+GearPairSceneSpec helical_spec(double beta_degrees, unsigned int dimension = 3)
+{
+  GearPairSceneSpec spec;
+  spec.pair.pinion.helix_angle = beta_degrees * degree; // right hand
+  spec.pair.wheel.helix_angle = -beta_degrees * degree; // left hand (external pair)
+  // Standard tips (the command's `auto`): the published tips are the spur pair's.
+  spec.pair.pinion.tip_diameter = spec.pair.wheel.tip_diameter = 0.;
+  spec.mesh.dimension = dimension;
+  spec.mesh.layers = 8;
+  // Coarse sizes: the test checks the geometry, not a converged mesh.
+  spec.mesh.contact_size = 0.2e-3;
+  spec.mesh.body_size = 1.0e-3;
+  return spec;
+}
+
+std::string scene_file(const std::string& name)
+{
+  return (std::filesystem::temp_directory_path() / ("gearstiff_helical_" + name + ".msh")).string();
+}
+
+std::string refusal(const GearPairSceneSpec& spec)
+{
+  try
+  {
+    write_gear_pair_scene(spec, scene_file("refused"));
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_FALSE(std::filesystem::exists(scene_file("refused")));
+    return e.parameter();
+  }
+  return "";
+}
+
+// The contact lines lie in the plane of action, inclined at β_b to the axis: along the face the
+// transverse contact moves by tan β_b per unit z (ISO 21771: tan β_b = tan β·cos α_t), and every
+// pair touches over the part of the face where it lies inside the path of contact.
+TEST(HelicalScene, ContactLinesAreInclinedAtTheBaseHelixAngle)
+{
+  std::filesystem::remove(scene_file("lines"));
+  const GearPairSceneSpec spec = helical_spec(15.);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const GearPairScene scene = write_gear_pair_scene(spec, scene_file("lines"));
+  const double tan_beta_b = std::tan(pair.base_helix_angle);
+  EXPECT_NEAR(tan_beta_b, std::tan(15. * degree) * std::cos(pair.transverse_pressure_angle), 1e-15);
+  ASSERT_EQ(scene.contact_lines.size(), scene.contact_pairs.size());
+  // ε_α + ε_β = 1.75 + 0.79: three pairs touch somewhere across the face.
+  EXPECT_EQ(scene.contact_pairs.size(), 3u);
+  const double b = pair.common_face_width;
+  double total = 0.;
+  for (const ContactLine& line : scene.contact_lines)
+  {
+    const double dz = line.end.z() - line.start.z();
+    ASSERT_GT(dz, 0.);
+    EXPECT_NEAR((line.end_position - line.start_position) / dz, tan_beta_b, 1e-12);
+    EXPECT_NEAR((line.end - line.start).head<2>().norm() / dz, tan_beta_b, 1e-12);
+    EXPECT_GE(line.start.z(), 0.);
+    EXPECT_LE(line.end.z(), b);
+    EXPECT_GE(std::min(line.start_position, line.end_position), pair.contact_start - 1e-12);
+    EXPECT_LE(std::max(line.start_position, line.end_position), pair.contact_end + 1e-12);
+    total += dz;
+  }
+  // The lines' axial extents add up to the face width times ε_α when no line is cut by a face
+  // end within the path; here they are cut, so only the bounds hold: ε_α·b·(1 ± ε_β/ε_α).
+  EXPECT_GT(total, b);
+  EXPECT_LT(total, (pair.transverse_contact_ratio + pair.overlap_ratio) * b);
+  EXPECT_TRUE(std::filesystem::exists(scene_file("lines")));
+  EXPECT_GT(scene.info.mesh.min_scaled_jacobian, 0.);
+  EXPECT_LE(scene.info.mesh.largest_edge_ratio_at_focus, 1.05);
+}
+
+// A spur pair's lines are parallel to the axis over the whole face, one per pair in contact.
+TEST(HelicalScene, SpurContactLinesAreAxial)
+{
+  GearPairSceneSpec spec = helical_spec(0.);
+  spec.mesh.layers = 2;
+  const GearPairScene scene = write_gear_pair_scene(spec, scene_file("spur"));
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  ASSERT_EQ(scene.contact_lines.size(), scene.contact_pairs.size());
+  for (const ContactLine& line : scene.contact_lines)
+  {
+    EXPECT_EQ(line.start_position, line.end_position);
+    EXPECT_EQ(line.start.z(), 0.);
+    EXPECT_EQ(line.end.z(), pair.common_face_width);
+  }
+}
+
+// Refused before gmsh runs, each naming the parameter the user typed.
+TEST(HelicalScene, RefusesWhatItCannotMesh)
+{
+  EXPECT_EQ(refusal(helical_spec(15., 2)), "Mesh/dimension");
+  GearPairSceneSpec few = helical_spec(15.);
+  few.mesh.layers = 6; // 8·ε_β = 6.33 needs 7
+  EXPECT_EQ(refusal(few), "Mesh/layers");
+  few.mesh.layers = 7;
+  EXPECT_EQ(layers_for_twist(kinematics::compute_gear_pair(few.pair)), 7u);
+  EXPECT_EQ(refusal(helical_spec(45.)), "Gear pair/Pinion/helix angle");
+  GearPairSceneSpec swept = helical_spec(15.);
+  swept.swept_positions = {0.01};
+  EXPECT_EQ(refusal(swept), scene_field::swept_positions);
+}
+
+// ISO 21771 hands: an external pair with one hand, an internal pair with two.
+TEST(HelicalScene, RefusesWrongHands)
+{
+  kinematics::GearPairSpec pair = helical_spec(15.).pair;
+  pair.wheel.helix_angle = pair.pinion.helix_angle;
+  try
+  {
+    kinematics::compute_gear_pair(pair);
+    FAIL() << "same hands accepted on an external pair";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_EQ(e.parameter(), "Gear pair/Wheel/helix angle");
+  }
+}
+
+// δ_t = δ_n / cos β_b: the transverse outline removes more than the normal amount given.
+TEST(HelicalScene, ModificationsAreConvertedToTheTransverseSection)
+{
+  GearPairSceneSpec spec = helical_spec(15.);
+  ToothModification relief;
+  relief.kind = ModificationKind::tip_relief;
+  relief.amount = 10e-6;
+  relief.length = 1e-3;
+  spec.pinion_modifications.all_teeth.push_back(relief);
+  spec.pinion_modifications.lead.crowning = 5e-6;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const GearPairSceneSpec section = transverse_section_spec(spec);
+  const double c = std::cos(pair.base_helix_angle);
+  EXPECT_NEAR(section.pinion_modifications.all_teeth.front().amount, 10e-6 / c, 1e-18);
+  EXPECT_NEAR(section.pinion_modifications.lead.crowning, 5e-6 / c, 1e-18);
+  EXPECT_EQ(transverse_section_spec(helical_spec(0.)).pinion_modifications.all_teeth.size(), 0u);
+}
+} // namespace
