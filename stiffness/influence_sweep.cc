@@ -151,7 +151,7 @@ std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
     for (const int j : geometry::gear_pairs_in_contact(pair, position))
     {
       const double at = position + j * pair.transverse_base_pitch;
-      auto [it, added] = spans.emplace(j, std::make_pair(at, at));
+      const auto it = spans.emplace(j, std::make_pair(at, at)).first;
       it->second.first = std::min(it->second.first, at);
       it->second.second = std::max(it->second.second, at);
     }
@@ -284,8 +284,8 @@ private:
       if (grid.pair == j)
       {
         const double x = (at - grid.first) / step;
-        // 1e-9: the positions and the grid come from the same formulas.
-        if (x < -1e-9 || x > grid.count - 1 + 1e-9)
+        // 1e-9 m: the positions and the grid come from the same formulas.
+        if (at < grid.first - 1e-9 || at > grid.first + (grid.count - 1) * step + 1e-9)
           throw InputError(stiffness_parameter::sweep_mesh,
                            "influence coefficients: pair " + std::to_string(j) + " at " +
                                format_number(at * 1e3, 6) +
@@ -527,7 +527,8 @@ InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
   info.flank_cell_size = flank_cell_modules * pair.spec.pinion.normal_module;
   info.matching_depth = matching_depth_cells * info.flank_cell_size;
   info.grid_step = pair.path_of_contact / (info.grid_points - 1);
-  PairFrame frame{pair};
+  PairFrame frame;
+  frame.pair = pair;
   frame.t2 = pair.spec.wheel.internal ? -pair.line_of_action_length : pair.line_of_action_length;
   frame.wheel_centre[0] = pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
   frame.u[0] = std::sin(pair.working_pressure_angle);
@@ -621,7 +622,6 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   result.wall_time = seconds_since(start);
   return result;
 }
-} // namespace
 
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {

@@ -152,7 +152,7 @@ MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
     f *= problem.total_force / total;
   double& approach = solution.approach;
   approach = 0.;
-  for (unsigned int pass = 0; pass < 4 * n + 8; ++pass)
+  for (int pass = 0; pass < 4 * n + 8; ++pass)
   {
     ++solution.active_set_passes;
     std::vector<int> active;
