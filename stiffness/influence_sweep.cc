@@ -239,8 +239,11 @@ std::vector<std::vector<double>> body_coefficients(const BodyModel& model,
 class FlankCompliance
 {
 public:
+  // `removal(ℓ, wheel)` (m): the profile modification's depth at the flank point, by which the
+  // meshed flank lies under the nominal involute.
   FlankCompliance(const BodyModel& model, const PairFrame& frame, std::vector<FlankGrid> grids,
-                  double step, double depth, double inset)
+                  double step, double depth, double inset,
+                  const std::function<double(double, bool)>& removal)
       : grids(std::move(grids)), step(step)
   {
     for (const bool wheel : {false, true})
@@ -248,7 +251,11 @@ public:
       std::vector<FlankPoint> points;
       for (const FlankGrid& grid : this->grids)
         for (unsigned int g = 0; g < grid.count; ++g)
-          points.push_back(flank_point(frame, grid.pair, grid.first + g * step, wheel));
+        {
+          const double at = grid.first + g * step;
+          points.push_back(flank_point(frame, grid.pair, at, wheel));
+          points.back().surface += removal(at, wheel) * points.back().inward;
+        }
       (wheel ? wheel_c : pinion_c) = body_coefficients(model, points, depth, inset);
     }
   }
@@ -327,10 +334,12 @@ public:
           geometry::flank_roll_range(frame.pair, tooth, is_wheel);
     }
   }
-  double operator()(double at) const
+  double operator()(double at) const { return removal(at, false) + removal(at, true); }
+  // The depth removed from one gear's loaded flank where it touches at ℓ.
+  double removal(double at, bool of_wheel) const
   {
-    return geometry::removed_depth(pinion, pinion_range, at, true) +
-           geometry::removed_depth(wheel, wheel_range, std::abs(at - t2), true);
+    return of_wheel ? geometry::removed_depth(wheel, wheel_range, std::abs(at - t2), true)
+                    : geometry::removed_depth(pinion, pinion_range, at, true);
   }
   // The shortest relief length of either gear (m; infinity without reliefs): a kink of the gap.
   double shortest_relief() const
@@ -555,8 +564,9 @@ InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
   start = std::chrono::steady_clock::now();
   const std::vector<FlankGrid> grids = flank_grids(pair, positions, info.grid_step);
   info.flanks = 2 * grids.size();
-  const FlankCompliance compliance(model, frame, grids, info.grid_step, info.matching_depth,
-                                   1e-3 * info.flank_cell_size);
+  const FlankCompliance compliance(
+      model, frame, grids, info.grid_step, info.matching_depth, 1e-3 * info.flank_cell_size,
+      [&separation](double at, bool wheel) { return separation.removal(at, wheel); });
   info.coefficient_time = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
