@@ -43,6 +43,13 @@ geometry::GearPairSceneSpec default_stiffness_scene();
 // Plane strain with Q2 elements.
 fem::ElasticityParameters default_stiffness_elasticity();
 
+// How the contact of the flanks is solved (Stiffness/contact model, docs/ltca.md).
+enum class ContactModel
+{
+  finite_element,        // mortar contact on a mesh that resolves the Hertz zone (the reference)
+  influence_coefficients // a coarse FE body's influence coefficients + the analytic near field
+};
+
 struct GearMeshStiffnessSettings
 {
   // Gear pair, position, teeth modelled, bores, rim and mesh sizes (SI, see the header).
@@ -50,7 +57,10 @@ struct GearMeshStiffnessSettings
   fem::ElasticityParameters elasticity = default_stiffness_elasticity(); // thickness: face width
   fem::LinearSolverParameters linear_solver;
   contact::ContactParameters contact; // μ and the active-set controls
-  double pinion_torque = 49.4;        // N·m, T1 > 0 drives the pinion counter-clockwise
+  ContactModel contact_model = ContactModel::finite_element;
+  // -, influence coefficients: grid points per flank over the path of contact (docs/ltca.md §2)
+  unsigned int influence_grid_points = 64;
+  double pinion_torque = 49.4; // N·m, T1 > 0 drives the pinion counter-clockwise
   // N·m, ascending: a sweep solves every position under each (GearMeshStiffness::run_torques);
   // empty: pinion_torque alone.
   std::vector<double> torques;
@@ -307,6 +317,8 @@ inline const std::string pitches = "sweep.base_pitches";
 inline const std::string start = "sweep.start_position";
 inline const std::string scene_file = "stiffness.scene_file";
 inline const std::string sweep_mesh = "sweep.mesh";
+inline const std::string contact_model = "stiffness.contact_model";
+inline const std::string influence_grid_points = "stiffness.influence_grid_points";
 } // namespace stiffness_parameter
 
 // The checks of the settings the constructor makes before anything is meshed (InputError

@@ -4,6 +4,7 @@
 #include "errors/format.h"
 #include "fem/parallel.h"
 #include "geometry/tooth_fault.h"
+#include "stiffness/influence_sweep.h"
 
 #include <algorithm>
 #include <boost/serialization/string.hpp>
@@ -174,6 +175,8 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                 const StiffnessSweepSpec& spec, const std::string& scene_file_stem,
                 const std::function<void(const std::string&)>& progress)
 {
+  if (settings.contact_model == ContactModel::influence_coefficients) // docs/ltca.md
+    return influence_sweep<dim>(mpi_communicator, settings, spec, scene_file_stem, progress);
   Timer timer(mpi_communicator, true);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
   const std::vector<double> positions = sweep_positions(pair, spec);

@@ -32,6 +32,29 @@ struct StiffnessSweepSpec
   SweepMesh mesh = SweepMesh::per_position;
 };
 
+// What the influence-coefficient model used and where its time went.
+struct InfluenceModelInfo
+{
+  unsigned int grid_points = 0;   // -, G per flank over the path of contact
+  unsigned int flanks = 0;        // -, flanks with a grid (both gears)
+  double grid_step = 0.;          // m, along the line of action
+  double flank_cell_size = 0.;    // m, h_f of the FE body at the flanks
+  double matching_depth = 0.;     // m, h: FE below, analytic Hertz layer above
+  unsigned int n_dofs = 0;        // -, of the FE body model
+  double scene_time = 0.;         // s, wall: geometry and meshing
+  double factorization_time = 0.; // s, wall: set-up of K and its factorization
+  double coefficient_time = 0.;   // s, wall: the back-substitutions for the coefficients
+  double contact_time = 0.;       // s, wall: every position's contact problem (all torques)
+  unsigned int newton_steps = 0;  // -, summed over positions and torques
+
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& grid_points& flanks& grid_step& flank_cell_size& matching_depth& n_dofs& scene_time&
+        factorization_time& coefficient_time& contact_time& newton_steps;
+  }
+};
+
 struct StiffnessSweepResult
 {
   std::vector<GearMeshStiffnessResult> positions; // in sweep order, complete on every rank
@@ -47,6 +70,10 @@ struct StiffnessSweepResult
   // pairing, contact solve, evaluation (per position: everything).
   double once_time = 0.;
   double per_position_time = 0.;
+  // The contact model that ran and, for influence coefficients, its grid and FE body
+  // (docs/ltca.md); zeros for the finite-element model.
+  ContactModel contact_model = ContactModel::finite_element;
+  InfluenceModelInfo influence;
 };
 
 // Whether a rolling sweep (SweepMesh::once) holds for `settings` and the further modification

@@ -255,6 +255,38 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
                         : "per position, mean: everything");
 }
 
+// Which contact model ran; for influence coefficients its grid, FE body and where the time went
+// (docs/ltca.md).
+void report_contact_model(const stiffness::StiffnessSweepResult& sweep, Report& report)
+{
+  const bool influence = sweep.contact_model == stiffness::ContactModel::influence_coefficients;
+  report.add_text("contact_model",
+                  influence ? "influence coefficients (docs/ltca.md): coarse FE body below a "
+                              "matching depth, analytic plane-strain Hertz layer above it, "
+                              "frictionless"
+                            : "finite element (mortar contact resolving the Hertz zone)");
+  if (!influence)
+    return;
+  const stiffness::InfluenceModelInfo& info = sweep.influence;
+  report.add_value("influence_grid_points", info.grid_points, "-",
+                   "grid points per flank over the path of contact");
+  report.add_value("influence_grid_flanks", info.flanks, "-", "flanks with a grid (both gears)");
+  report.add_value("influence_grid_step", info.grid_step * 1e3, "mm",
+                   "grid step along the line of action");
+  report.add_value("influence_flank_cell_size", info.flank_cell_size * 1e3, "mm",
+                   "FE body's cell size at the flanks");
+  report.add_value("influence_matching_depth", info.matching_depth * 1e3, "mm",
+                   "depth h: FE below, analytic Hertz layer above");
+  report.add_value("influence_fe_dofs", info.n_dofs, "-", "DoFs of the FE body model");
+  report.add_value("influence_scene_time", info.scene_time, "s", "once: geometry and meshing");
+  report.add_value("influence_factorization_time", info.factorization_time, "s",
+                   "once: set-up of K and its factorization");
+  report.add_value("influence_coefficient_time", info.coefficient_time, "s",
+                   "once: back-substitutions for the influence coefficients");
+  report.add_value("influence_contact_time", info.contact_time, "s",
+                   "every position's contact problem (all torques)");
+}
+
 // The k(x) table for `dynamics` and the k(θ) chart.
 void write_sweep_files(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
                        const kinematics::IsoStiffness& iso,
@@ -323,6 +355,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report_micro_geometry(p, sweep, context);
   add_pair_identity(report, pair);
   report_sweep_summary(p, iso, sweep, report);
+  report_contact_model(sweep, report);
   write_sweep_files(p, pair, iso, sweep, context);
 }
 

@@ -12,6 +12,7 @@
 #include "errors/limits.h"
 #include "geometry/tooth_fault.h"
 #include "kinematics/gear_pair.h"
+#include "stiffness/influence_sweep.h"
 #include "stiffness/transmission_error.h"
 
 #include <algorithm>
@@ -97,6 +98,18 @@ void declare_stiffness_parameters(ParameterHandler& prm)
       "per position); in 3D once is within 0.5 % of per position, nearer the converged k, but "
       "only ~1.6x faster for 2.5x the memory (docs: bench/contact_speed.md), so 3D stays per "
       "position");
+  prm.declare_entry(
+      "contact model", "finite element", Selection("finite element|influence coefficients"),
+      "finite element: mortar contact on a mesh that resolves the Hertz zone (the reference); "
+      "influence coefficients (mode sweep, 2D, frictionless, no tooth faults): a FE body of both "
+      "gears with flank cells of 0.04·m_n factored once, the influence coefficients of a grid "
+      "on every meshing flank read 0.12·m_n under the surface, the analytic plane-strain Hertz "
+      "layer above that depth, one small contact problem per position (docs/ltca.md); root "
+      "stresses are not evaluated (0)");
+  prm.declare_entry("influence grid points", "64", Integer(8, 10000),
+                    "contact model influence coefficients: grid points per flank over the path "
+                    "of contact [-]; the step must not exceed the matching depth 0.12·m_n nor "
+                    "half the shortest relief length");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
@@ -145,6 +158,8 @@ ParameterNames stiffness_parameter_names()
   names[stiffness::stiffness_parameter::start] = "Stiffness/sweep start";
   names[stiffness::stiffness_parameter::sweep_mesh] = "Stiffness/sweep mesh";
   names[geometry::scene_field::swept_positions] = "Stiffness/sweep mesh";
+  names[stiffness::stiffness_parameter::contact_model] = "Stiffness/contact model";
+  names[stiffness::stiffness_parameter::influence_grid_points] = "Stiffness/influence grid points";
   return names;
 }
 
@@ -304,6 +319,29 @@ void note_relief_sizes(const kinematics::GearPairGeometry& pair, StiffnessParame
   }
 }
 
+// Influence coefficients (docs/ltca.md): a sweep model; what it cannot carry is refused here,
+// before anything is meshed. Friction is not applied (a note in the report).
+void check_influence_parameters(StiffnessParameters& p)
+{
+  if (p.mode != StiffnessMode::sweep)
+    throw InputError("Stiffness/contact model", "influence coefficients runs in Stiffness/mode = "
+                                                "sweep only (a single position: finite element)");
+  if (p.write_vtu)
+    throw InputError("Stiffness/write vtu",
+                     "influence coefficients solve no FE field per position: nothing to write");
+  stiffness::check_influence_settings(p.settings);
+  for (const StiffnessVariant& variant : p.variants)
+    if (!variant.pinion.by_tooth.empty() || !variant.wheel.by_tooth.empty())
+      throw InputError("Stiffness/contact model", "influence coefficients cannot carry a tooth "
+                                                  "fault of Stiffness/variants");
+  if (p.settings.contact.friction_coefficient > 0.)
+    p.input_notes.push_back(
+        "Contact/Friction coefficient = " +
+        format_number(p.settings.contact.friction_coefficient, 4) +
+        " is not applied by Stiffness/contact model = influence coefficients: its contact "
+        "problem is frictionless (docs/ltca.md)");
+}
+
 // The checks the analysis makes before it meshes, run at parse time: the library's own (one
 // copy each), their field names mapped to the parameters by the caller.
 void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPairGeometry& pair)
@@ -323,6 +361,8 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
       s.linear_solver.method != fem::LinearSolverMethod::direct_mumps)
     throw InputError("Linear solver/Method", "Stiffness/sweep mesh = once needs the direct "
                                              "solver (an iterative one sweeps per position)");
+  if (s.contact_model == stiffness::ContactModel::influence_coefficients)
+    check_influence_parameters(p);
   if (p.mode == StiffnessMode::sweep)
   {
     p.estimated_seconds = check_sweep_work(p);
@@ -388,6 +428,10 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   p.sweep.base_pitches = prm.get_double("sweep base pitches");
   const long positions = prm.get_integer("sweep positions");
   const std::string sweep_mesh = prm.get("sweep mesh");
+  s.contact_model = prm.get("contact model") == "influence coefficients"
+                        ? stiffness::ContactModel::influence_coefficients
+                        : stiffness::ContactModel::finite_element;
+  s.influence_grid_points = prm.get_integer("influence grid points");
   p.write_vtu = prm.get_bool("write vtu");
   p.published_reference =
       prm.get_bool("published reference") && kinematics::is_split_path_pair(s.scene.pair);

@@ -1,0 +1,665 @@
+// The influence-coefficient sweep (docs/ltca.md): FE body below a matching depth, analytic
+// Hertz layer above it, one small contact problem per position and torque.
+#include "stiffness/influence_sweep.h"
+
+#include "errors/errors.h"
+#include "errors/format.h"
+#include "fem/elastic_system.h"
+#include "fem/mesh.h"
+#include "fem/parallel.h"
+#include "fem/stiffness_factorization.h"
+#include "fem/supports.h"
+#include "geometry/involute_tooth.h"
+#include "stiffness/ltca_contact.h"
+
+#include <algorithm>
+#include <boost/serialization/vector.hpp>
+#include <chrono>
+#include <cmath>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/grid_tools.h>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <memory>
+
+namespace gearstiff::stiffness
+{
+using namespace dealii;
+
+namespace
+{
+// h_f, the FE body's cell size at the flanks, in normal modules: 0.1 mm for the default pair,
+// 3.3x the exact scene's contact size; the body is sized for tooth bending (docs/ltca.md §1).
+constexpr double flank_cell_modules = 0.04;
+// h = 3·h_f: a point load's FE response on Q2 cells is wrong within a cell or two of the load
+// and right at three cells' distance (docs/ltca.md §2: measured by the accuracy test).
+constexpr double matching_depth_cells = 3.;
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Where the flanks of the pair are, as the geometry module places them (scene frame of
+// geometry/scene_gear_pair.h: pinion centre at the origin, line of action T1 + ℓ·u).
+struct PairFrame
+{
+  kinematics::GearPairGeometry pair;
+  double scene_position = 0.; // m, ℓ_s of the meshed scene's reference pair
+  double t2 = 0.;             // m, T2 from T1 (a ring's behind T1: negative)
+  Point<2> wheel_centre;
+  Tensor<1, 2> u; // the line of action's direction: the pinion's outward flank normal
+
+  double pinion_base_radius() const { return 0.5 * pair.pinion.base_diameter; }
+  double wheel_base_radius() const { return 0.5 * pair.wheel.base_diameter; }
+};
+
+Point<2> rotated(const Point<2>& p, const Point<2>& centre, double angle)
+{
+  const double c = std::cos(angle), s = std::sin(angle);
+  const Tensor<1, 2> d = p - centre;
+  Tensor<1, 2> turned;
+  turned[0] = c * d[0] - s * d[1];
+  turned[1] = s * d[0] + c * d[1];
+  return centre + turned;
+}
+
+// A flank point: the point of pair j's pinion (or wheel) flank that touches at ℓ, in the
+// meshed scene's frame, the direction of the force the mate exerts on it, and its body.
+struct FlankPoint
+{
+  Point<2> surface;
+  Tensor<1, 2> inward; // unit: the mate's force on this flank, into the body
+  types::material_id body;
+};
+
+FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel)
+{
+  const double roll = position - j * frame.pair.transverse_base_pitch - frame.scene_position;
+  const Eigen::Vector2d at = geometry::line_of_action_point(frame.pair, position);
+  const Point<2> contact(at.x(), at.y());
+  FlankPoint point;
+  // The gear turns by its roll from the scene's position to where pair j touches at ℓ; the
+  // flank point in the scene frame is the contact point turned back (mesh_stiffness_rolling.cc:
+  // body_rotations); involute normals stay on the turned line of action.
+  const double angle =
+      wheel ? (frame.pair.spec.wheel.internal ? -1. : 1.) * roll / frame.wheel_base_radius()
+            : -roll / frame.pinion_base_radius();
+  const Point<2> centre = wheel ? frame.wheel_centre : Point<2>();
+  point.surface = rotated(contact, centre, angle);
+  const Point<2> tip = rotated(contact + frame.u, centre, angle);
+  point.inward = (wheel ? 1. : -1.) * (tip - point.surface);
+  point.body = wheel ? geometry::scene_ids::wheel_body : geometry::scene_ids::pinion_body;
+  return point;
+}
+
+// u(x)·d = Σ_i w_i·u_i: the DoFs and weights of the FE field's component along `direction` at
+// `point`, which must lie in `body`.
+struct PointFunctional
+{
+  std::vector<types::global_dof_index> dofs;
+  std::vector<double> weights;
+};
+
+PointFunctional point_functional(const fem::ElasticSystem<2>& system, const Point<2>& point,
+                                 const Tensor<1, 2>& direction, types::material_id body)
+{
+  std::pair<DoFHandler<2>::active_cell_iterator, Point<2>> found;
+  try
+  {
+    found = GridTools::find_active_cell_around_point(system.get_mapping(), system.get_dof_handler(),
+                                                     point);
+  }
+  catch (const ExceptionBase&)
+  {
+    found.first = system.get_dof_handler().end();
+  }
+  const auto& cell = found.first;
+  if (cell.state() != IteratorState::valid || cell->material_id() != body)
+    throw SolverFailure("influence coefficients",
+                        "a flank grid point (" + format_number(point[0] * 1e3, 6) + ", " +
+                            format_number(point[1] * 1e3, 6) +
+                            ") mm lies outside its gear's mesh (the matching depth reaches "
+                            "through the tooth)");
+  const FiniteElement<2>& fe = system.get_fe();
+  PointFunctional functional;
+  functional.dofs.resize(fe.n_dofs_per_cell());
+  cell->get_dof_indices(functional.dofs);
+  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+    functional.weights.push_back(fe.shape_value(i, found.second) *
+                                 direction[fe.system_to_component_index(i).first]);
+  return functional;
+}
+
+// The grid of one pair's flanks: G_j points at ℓ = first + g·step.
+struct FlankGrid
+{
+  int pair = 0;
+  double first = 0.; // m
+  unsigned int count = 0;
+};
+
+// Every pair in contact at a position gets the grid points that cover the ℓ it takes in the
+// sweep (one step of margin each side, within the path of contact A–E).
+std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
+                                   const std::vector<double>& positions, double step)
+{
+  std::map<int, std::pair<double, double>> spans;
+  for (const double position : positions)
+    for (const int j : geometry::gear_pairs_in_contact(pair, position))
+    {
+      const double at = position + j * pair.transverse_base_pitch;
+      const auto it = spans.emplace(j, std::make_pair(at, at)).first;
+      it->second.first = std::min(it->second.first, at);
+      it->second.second = std::max(it->second.second, at);
+    }
+  std::vector<FlankGrid> grids;
+  for (const auto& [j, span] : spans)
+  {
+    const double low = std::floor((span.first - pair.contact_start) / step) - 1.;
+    const double high = std::ceil((span.second - pair.contact_start) / step) + 1.;
+    const double last = std::round((pair.contact_end - pair.contact_start) / step);
+    const double from = std::max(0., low), to = std::min(last, high);
+    grids.push_back(
+        {j, pair.contact_start + from * step, static_cast<unsigned int>(to - from) + 1});
+  }
+  return grids;
+}
+
+// The FE body model: both gears of one scene, both bores clamped (the pinion's rigid turn is
+// the contact problem's approach e), K factored once.
+struct BodyModel
+{
+  std::unique_ptr<fem::ElasticSystem<2>> system;
+  std::unique_ptr<fem::StiffnessFactorization<2>> factorization;
+};
+
+BodyModel factor_body_model(const GearMeshStiffnessSettings& settings, const std::string& file)
+{
+  BodyModel model;
+  fem::LinearSolverParameters direct = settings.linear_solver;
+  direct.method = fem::LinearSolverMethod::direct_mumps; // the coefficients need a factorization
+  model.system =
+      std::make_unique<fem::ElasticSystem<2>>(MPI_COMM_SELF, settings.elasticity, direct);
+  fem::read_msh<2>(file, 1., model.system->triangulation(), "scene file");
+  model.system->set_materials({{geometry::scene_ids::pinion_body, settings.material},
+                               {geometry::scene_ids::wheel_body, settings.material}},
+                              "material");
+  model.system->setup_system();
+  AffineConstraints<double> constraints;
+  fem::add_prescribed_displacement(
+      fem::boundary_nodes(model.system->get_dof_handler(),
+                          {static_cast<types::boundary_id>(geometry::scene_ids::pinion_bore),
+                           static_cast<types::boundary_id>(geometry::scene_ids::wheel_bore)}),
+      Tensor<1, 2>(), constraints);
+  constraints.close();
+  model.factorization = std::make_unique<fem::StiffnessFactorization<2>>(*model.system, constraints,
+                                                                         Vector<double>());
+  return model;
+}
+
+// C (m/N) of one gear between every pair of its grid points: a unit force along the flank
+// normal at the surface point, the displacement along it read at the matching depth.
+// coefficients[a][b]: load at point a, read at point b (symmetric up to the depth offset).
+std::vector<std::vector<double>> body_coefficients(const BodyModel& model,
+                                                   const std::vector<FlankPoint>& points,
+                                                   double depth, double inset)
+{
+  std::vector<fem::SparseLoad> loads;
+  std::vector<PointFunctional> reads;
+  std::map<types::global_dof_index, unsigned int> row_of;
+  std::vector<types::global_dof_index> rows;
+  for (const FlankPoint& p : points)
+  {
+    // The load a hair inside the surface: the meshed flank is a chord polygon of the involute.
+    const PointFunctional load =
+        point_functional(*model.system, p.surface + inset * p.inward, p.inward, p.body);
+    loads.emplace_back();
+    for (std::size_t i = 0; i < load.dofs.size(); ++i)
+      loads.back().emplace_back(load.dofs[i], load.weights[i]);
+    reads.push_back(
+        point_functional(*model.system, p.surface + depth * p.inward, p.inward, p.body));
+    for (const types::global_dof_index dof : reads.back().dofs)
+      if (row_of.emplace(dof, rows.size()).second)
+        rows.push_back(dof);
+  }
+  const std::vector<std::vector<double>> responses = model.factorization->responses(loads, rows);
+  std::vector<std::vector<double>> coefficients(points.size(),
+                                                std::vector<double>(points.size(), 0.));
+  for (std::size_t a = 0; a < points.size(); ++a)
+    for (std::size_t b = 0; b < points.size(); ++b)
+      for (std::size_t i = 0; i < reads[b].dofs.size(); ++i)
+        coefficients[a][b] += reads[b].weights[i] * responses[a][row_of.at(reads[b].dofs[i])];
+  return coefficients;
+}
+
+// The influence coefficients of both gears on their flank grids, interpolated to any ℓ.
+class FlankCompliance
+{
+public:
+  // `removal(ℓ, wheel)` (m): the profile modification's depth at the flank point, by which the
+  // meshed flank lies under the nominal involute.
+  FlankCompliance(const BodyModel& model, const PairFrame& frame, std::vector<FlankGrid> grids,
+                  double step, double depth, double inset,
+                  const std::function<double(double, bool)>& removal)
+      : grids(std::move(grids)), step(step)
+  {
+    for (const bool wheel : {false, true})
+    {
+      std::vector<FlankPoint> points;
+      for (const FlankGrid& grid : this->grids)
+        for (unsigned int g = 0; g < grid.count; ++g)
+        {
+          const double at = grid.first + g * step;
+          points.push_back(flank_point(frame, grid.pair, at, wheel));
+          points.back().surface += removal(at, wheel) * points.back().inward;
+        }
+      (wheel ? wheel_c : pinion_c) = body_coefficients(model, points, depth, inset);
+    }
+  }
+
+  // C_jk (m/N), both gears, pair j at ℓ_j, pair k at ℓ_k. The same flank along its diagonal
+  // samples (its near field varies over the depth h, not over the grid step); different flanks
+  // bilinearly (smooth).
+  double operator()(int j, double at_j, int k, double at_k) const
+  {
+    const auto [first_j, u_j] = locate(j, at_j);
+    const auto [first_k, u_k] = locate(k, at_k);
+    double c = 0.;
+    for (const auto* body : {&pinion_c, &wheel_c})
+    {
+      const auto& m = *body;
+      if (j == k)
+        c += (1. - u_j) * m[first_j][first_j] + u_j * m[first_j + 1][first_j + 1];
+      else
+        c += (1. - u_j) * ((1. - u_k) * m[first_j][first_k] + u_k * m[first_j][first_k + 1]) +
+             u_j * ((1. - u_k) * m[first_j + 1][first_k] + u_k * m[first_j + 1][first_k + 1]);
+    }
+    return c;
+  }
+  std::size_t n_points() const { return pinion_c.size(); }
+
+private:
+  // The grid interval of pair j holding ℓ: its first point's index and the fraction past it.
+  std::pair<std::size_t, double> locate(int j, double at) const
+  {
+    std::size_t offset = 0;
+    for (const FlankGrid& grid : grids)
+    {
+      if (grid.pair == j)
+      {
+        const double x = (at - grid.first) / step;
+        // 1e-9 m: the positions and the grid come from the same formulas.
+        if (at < grid.first - 1e-9 || at > grid.first + (grid.count - 1) * step + 1e-9)
+          throw InputError(stiffness_parameter::sweep_mesh,
+                           "influence coefficients: pair " + std::to_string(j) + " at " +
+                               format_number(at * 1e3, 6) +
+                               " mm along the line of action lies off its flank grid");
+        const double clamped = std::clamp(x, 0., grid.count - 1. - 1e-12);
+        const auto index = static_cast<std::size_t>(clamped);
+        return {offset + index, clamped - index};
+      }
+      offset += grid.count;
+    }
+    throw InputError(stiffness_parameter::sweep_mesh,
+                     "influence coefficients: pair " + std::to_string(j) + " has no flank grid");
+  }
+
+  std::vector<FlankGrid> grids;
+  double step;
+  std::vector<std::vector<double>> pinion_c, wheel_c;
+};
+
+// The designed separation of a pair at ℓ: both loaded flanks' removal at their roll lengths
+// (the same on every tooth: faults are refused), as geometry::unloaded_transmission_errors.
+class PairSeparation
+{
+public:
+  PairSeparation(const GearMeshStiffnessSettings& settings, const PairFrame& frame)
+      : pinion(settings.scene.pinion_modifications.all_teeth),
+        wheel(settings.scene.wheel_modifications.all_teeth), t2(frame.t2)
+  {
+    for (const bool is_wheel : {false, true})
+    {
+      const kinematics::GearSpec& gear =
+          is_wheel ? settings.scene.pair.wheel : settings.scene.pair.pinion;
+      const kinematics::GearGeometry& derived = is_wheel ? frame.pair.wheel : frame.pair.pinion;
+      geometry::InvoluteToothSpec spec = geometry::involute_tooth_spec(gear, derived.tip_diameter);
+      spec.required_form_diameter = derived.active_profile_start;
+      const geometry::ToothProfile tooth =
+          geometry::generate_involute_tooth(spec, settings.scene.resolution);
+      (is_wheel ? wheel_range : pinion_range) =
+          geometry::flank_roll_range(frame.pair, tooth, is_wheel);
+    }
+  }
+  double operator()(double at) const { return removal(at, false) + removal(at, true); }
+  // The depth removed from one gear's loaded flank where it touches at ℓ.
+  double removal(double at, bool of_wheel) const
+  {
+    return of_wheel ? geometry::removed_depth(wheel, wheel_range, std::abs(at - t2), true)
+                    : geometry::removed_depth(pinion, pinion_range, at, true);
+  }
+  // The shortest relief length of either gear (m; infinity without reliefs): a kink of the gap.
+  double shortest_relief() const
+  {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const auto& [list, range] :
+         {std::pair(&pinion, &pinion_range), std::pair(&wheel, &wheel_range)})
+      for (const geometry::ToothModification& m : *list)
+        if (m.kind == geometry::ModificationKind::tip_relief ||
+            m.kind == geometry::ModificationKind::root_relief)
+          shortest = std::min(shortest, m.length >= 0. ? m.length
+                                        : m.kind == geometry::ModificationKind::tip_relief
+                                            ? std::abs(range->tip - range->single_tip)
+                                            : std::abs(range->single_root - range->form));
+    return shortest;
+  }
+
+private:
+  std::vector<geometry::ToothModification> pinion, wheel;
+  geometry::FlankRollRange pinion_range, wheel_range;
+  double t2;
+};
+
+// What every position needs: where the flanks are, their coefficients, gaps and near field.
+struct PositionModel
+{
+  const PairFrame& frame;
+  const FlankCompliance& compliance;
+  const PairSeparation& separation;
+  LayerBody pinion, wheel;
+  double face_width = 0.; // m
+};
+
+// The result of one position at one torque, as GearMeshStiffness reports it (root stresses 0:
+// not evaluated by this model).
+GearMeshStiffnessResult position_result(const PositionModel& model, double position,
+                                        const std::vector<int>& pairs,
+                                        const MeshContactProblem& problem,
+                                        const MeshContactSolution& solution, double torque)
+{
+  const kinematics::GearPairGeometry& pair = model.frame.pair;
+  const double r_b1 = model.frame.pinion_base_radius(), r_b2 = model.frame.wheel_base_radius();
+  GearMeshStiffnessResult r;
+  r.dimension = 2;
+  r.reference_position = position;
+  r.pinion_roll_angle = position / r_b1;
+  r.mesh_position = (position - pair.contact_start) / pair.transverse_base_pitch;
+  r.kinematic_pairs = pairs.size();
+  r.pinion_torque = torque;
+  r.pinion_base_radius = r_b1;
+  r.wheel_base_radius = r_b2;
+  r.unloaded_transmission_error =
+      *std::min_element(problem.separation.begin(), problem.separation.end());
+  r.transmission_error = solution.approach;
+  r.pinion_rotation = (solution.approach - r.unloaded_transmission_error) / r_b1;
+  if (!(r.pinion_rotation > 0.))
+    throw SolverFailure("influence-coefficient contact",
+                        "the pinion did not rotate forward under the torque");
+  r.mesh_stiffness = torque / (r_b1 * r_b1 * r.pinion_rotation);
+  // Frictionless: every force on the line of action (geometry/scene_gear_pair.h: an external
+  // wheel's centre lies across the line of action from the pinion's, a ring's on its side).
+  r.torque_ratio = r_b2 / r_b1;
+  r.wheel_torque = (pair.spec.wheel.internal ? -1. : 1.) * torque * r_b2 / r_b1;
+  r.pinion_hub_torque = -torque;
+  double total = 0.;
+  for (const double f : solution.force)
+    total += f;
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+  {
+    ToothPairLoad load;
+    load.pair = pairs[k];
+    load.position = position + pairs[k] * pair.transverse_base_pitch;
+    load.normal_force = load.resultant = solution.force[k];
+    load.load_share = solution.force[k] / total;
+    load.max_pressure = solution.contact[k].peak_pressure;
+    load.contact_length = 2. * solution.contact[k].half_width;
+    load.closed_roll_min = load.position - solution.contact[k].half_width;
+    load.closed_roll_max = load.position + solution.contact[k].half_width;
+    r.loaded_pairs += load.load_share > 1e-6;
+    r.max_contact_pressure = std::max(r.max_contact_pressure, load.max_pressure);
+    r.pairs.push_back(load);
+  }
+  r.active_set_iterations = solution.active_set_passes;
+  return r;
+}
+
+// One position under every torque (ascending), each warm-started from the previous solve
+// (`warm`: force per pair j, carried from position to position).
+std::vector<GearMeshStiffnessResult> solve_position(const PositionModel& model, double position,
+                                                    const std::vector<double>& torques,
+                                                    std::map<int, double>& warm,
+                                                    unsigned int& newton_steps)
+{
+  const kinematics::GearPairGeometry& pair = model.frame.pair;
+  const std::vector<int> pairs = geometry::gear_pairs_in_contact(pair, position);
+  MeshContactProblem problem;
+  problem.face_width = model.face_width;
+  problem.pinion = model.pinion;
+  problem.wheel = model.wheel;
+  std::vector<double> at;
+  for (const int j : pairs)
+  {
+    at.push_back(position + j * pair.transverse_base_pitch);
+    problem.separation.push_back(model.separation(at.back()));
+    // ρ1 = ℓ, ρ2 = |ℓ − T1T2|; a ring's flank is concave (docs/ltca.md §3).
+    const double rho1 = at.back(), rho2 = std::abs(at.back() - model.frame.t2);
+    problem.relative_radius.push_back(1. /
+                                      (1. / rho1 + (pair.spec.wheel.internal ? -1. : 1.) / rho2));
+  }
+  for (std::size_t a = 0; a < pairs.size(); ++a)
+  {
+    problem.compliance.emplace_back();
+    for (std::size_t b = 0; b < pairs.size(); ++b)
+      problem.compliance.back().push_back(model.compliance(pairs[a], at[a], pairs[b], at[b]));
+  }
+  std::vector<GearMeshStiffnessResult> results;
+  for (const double torque : torques)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    problem.total_force = torque / model.frame.pinion_base_radius();
+    std::vector<double> guess;
+    for (const int j : pairs)
+      guess.push_back(warm.count(j) ? warm.at(j) : 0.);
+    const MeshContactSolution solution = solve_mesh_contact(problem, guess);
+    newton_steps += solution.newton_steps;
+    if (results.empty()) // the next position starts from this one's first torque
+      for (std::size_t k = 0; k < pairs.size(); ++k)
+        warm[pairs[k]] = solution.force[k];
+    results.push_back(position_result(model, position, pairs, problem, solution, torque));
+    results.back().solve_time = results.back().total_time = seconds_since(start);
+  }
+  return results;
+}
+
+// Rank 0's whole run: scene, FE body, coefficients, positions.
+struct InfluenceRun
+{
+  std::vector<std::vector<GearMeshStiffnessResult>> by_torque; // [torque][position]
+  InfluenceModelInfo info;
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& by_torque;
+    archive& info;
+  }
+};
+
+// The scene of the FE body: the sweep's first position, every flank that meshes in the sweep
+// refined along its contacts at h_f out to below the matching depth.
+geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
+                                       const std::vector<double>& positions, double r_b1,
+                                       double cell, double depth)
+{
+  geometry::GearPairSceneSpec scene = settings.scene;
+  scene.mesh.dimension = 2;
+  scene.position = geometry::PairPosition::roll_angle;
+  scene.pinion_roll_angle = positions.front() / r_b1;
+  scene.swept_positions = positions;
+  scene.pinion_torque = settings.pinion_torque;
+  scene.mesh.contact_size = cell;
+  scene.mesh.fine_radius = depth + 2. * cell;
+  return scene;
+}
+
+// The grid step must follow the gap's kinks and the near field's depth (docs/ltca.md, limits).
+void check_grid_step(double step, double depth, const PairSeparation& separation)
+{
+  if (step > depth)
+    throw InputError(stiffness_parameter::influence_grid_points,
+                     "too coarse: the grid step " + format_number(step * 1e3, 4) +
+                         " mm along the line of action exceeds the matching depth " +
+                         format_number(depth * 1e3, 4) +
+                         " mm (the same-flank coefficients "
+                         "vary over that depth); use more points");
+  const double relief = separation.shortest_relief();
+  if (step > 0.5 * relief)
+    throw InputError(stiffness_parameter::influence_grid_points,
+                     "too coarse for the relief of length " + format_number(relief * 1e3, 4) +
+                         " mm: the grid step " + format_number(step * 1e3, 4) +
+                         " mm must be at most half of it; use more points");
+}
+
+InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
+                           const kinematics::GearPairGeometry& pair,
+                           const std::vector<double>& positions, const std::vector<double>& torques,
+                           const std::string& file,
+                           const std::function<void(const std::string&)>& progress)
+{
+  GearMeshStiffnessSettings settings = given;
+  settings.elasticity.thickness = pair.common_face_width; // as GearMeshStiffness: b
+  InfluenceRun run;
+  InfluenceModelInfo& info = run.info;
+  info.grid_points = settings.influence_grid_points;
+  info.flank_cell_size = flank_cell_modules * pair.spec.pinion.normal_module;
+  info.matching_depth = matching_depth_cells * info.flank_cell_size;
+  info.grid_step = pair.path_of_contact / (info.grid_points - 1);
+  PairFrame frame;
+  frame.pair = pair;
+  frame.t2 = pair.spec.wheel.internal ? -pair.line_of_action_length : pair.line_of_action_length;
+  frame.wheel_centre[0] = pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
+  frame.u[0] = std::sin(pair.working_pressure_angle);
+  frame.u[1] = std::cos(pair.working_pressure_angle);
+  const PairSeparation separation(settings, frame);
+  check_grid_step(info.grid_step, info.matching_depth, separation);
+
+  auto start = std::chrono::steady_clock::now();
+  const double r_b1 = frame.pinion_base_radius();
+  const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
+      body_scene(settings, positions, r_b1, info.flank_cell_size, info.matching_depth), file);
+  info.scene_time = seconds_since(start);
+  frame.scene_position = scene.reference_position;
+
+  start = std::chrono::steady_clock::now();
+  const BodyModel model = factor_body_model(settings, file);
+  info.n_dofs = model.system->get_dof_handler().n_dofs();
+  info.factorization_time = seconds_since(start);
+  if (progress)
+    progress("influence coefficients: FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
+             format_number(info.flank_cell_size * 1e3, 3) + " mm, factored in " +
+             format_number(info.factorization_time, 3) + " s");
+
+  start = std::chrono::steady_clock::now();
+  const std::vector<FlankGrid> grids = flank_grids(pair, positions, info.grid_step);
+  info.flanks = 2 * grids.size();
+  const FlankCompliance compliance(
+      model, frame, grids, info.grid_step, info.matching_depth, 1e-3 * info.flank_cell_size,
+      [&separation](double at, bool wheel) { return separation.removal(at, wheel); });
+  info.coefficient_time = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  const LayerBody body{settings.material.youngs_modulus, settings.material.poisson_ratio,
+                       info.matching_depth};
+  const PositionModel position_model{frame, compliance, separation,
+                                     body,  body,       pair.common_face_width};
+  run.by_torque.assign(torques.size(), {});
+  std::map<int, double> warm;
+  for (const double position : positions)
+  {
+    const std::vector<GearMeshStiffnessResult> results =
+        solve_position(position_model, position, torques, warm, info.newton_steps);
+    for (std::size_t t = 0; t < torques.size(); ++t)
+      run.by_torque[t].push_back(results[t]);
+  }
+  info.contact_time = seconds_since(start);
+  return run;
+}
+} // namespace
+
+template <int dim>
+StiffnessSweepResult
+influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
+                const StiffnessSweepSpec& spec, const std::string& scene_file_stem,
+                const std::function<void(const std::string&)>& progress)
+{
+  const auto start = std::chrono::steady_clock::now();
+  check_influence_settings(settings);
+  check_stiffness_settings(settings);
+  if (!settings.torques.empty())
+    check_torque_list(settings.torques);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
+  const std::vector<double> positions = sweep_positions(pair, spec);
+  const std::vector<double> torques =
+      settings.torques.empty() ? std::vector<double>{settings.pinion_torque} : settings.torques;
+  const std::string file = scene_file_stem + "_influence.msh";
+  const InfluenceRun run = fem::run_on_root(
+      mpi_communicator,
+      [&]()
+      {
+        InfluenceRun local;
+        const fem::Failure failure = fem::catch_failure(
+            [&]() { local = run_influence(settings, pair, positions, torques, file, progress); });
+        std::filesystem::remove(file);
+        failure.rethrow("");
+        return local;
+      });
+  StiffnessSweepResult result;
+  result.positions = run.by_torque.front();
+  if (!settings.torques.empty())
+  {
+    result.torques = settings.torques;
+    result.by_torque = run.by_torque;
+  }
+  result.n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+  result.rank_of_position.assign(positions.size(), 0);
+  result.mesh = SweepMesh::once; // one FE body for every position
+  result.contact_model = ContactModel::influence_coefficients;
+  result.influence = run.info;
+  result.once_time = run.info.scene_time + run.info.factorization_time + run.info.coefficient_time;
+  result.per_position_time = run.info.contact_time;
+  result.wall_time = seconds_since(start);
+  return result;
+}
+
+void check_influence_settings(const GearMeshStiffnessSettings& settings)
+{
+  if (settings.scene.mesh.dimension != 2)
+    throw InputError("Mesh/dimension",
+                     "the influence-coefficient contact model is built for 2D only (its 3D "
+                     "near field is designed in docs/ltca.md, not built); use Stiffness/contact "
+                     "model = finite element in 3D");
+  for (const auto* gear :
+       {&settings.scene.pinion_modifications, &settings.scene.wheel_modifications})
+    if (!gear->by_tooth.empty())
+      throw InputError(stiffness_parameter::contact_model,
+                       "influence coefficients cannot carry a tooth fault (the flank grid assumes "
+                       "every tooth alike; a cracked tooth's compliance needs its cracked mesh): "
+                       "use finite element");
+  if (settings.influence_grid_points < 8)
+    throw InputError(stiffness_parameter::influence_grid_points,
+                     "must be at least 8 points over the path of contact");
+  if (settings.elasticity.model != fem::PlanarModel::plane_strain)
+    throw InputError(stiffness_parameter::contact_model,
+                     "the analytic near field of influence coefficients is plane strain; set "
+                     "Finite elements/Planar model = plane strain or use finite element");
+}
+
+template StiffnessSweepResult influence_sweep<2>(MPI_Comm, const GearMeshStiffnessSettings&,
+                                                 const StiffnessSweepSpec&, const std::string&,
+                                                 const std::function<void(const std::string&)>&);
+template StiffnessSweepResult influence_sweep<3>(MPI_Comm, const GearMeshStiffnessSettings&,
+                                                 const StiffnessSweepSpec&, const std::string&,
+                                                 const std::function<void(const std::string&)>&);
+} // namespace gearstiff::stiffness

@@ -1,0 +1,34 @@
+// The k(θ) sweep of the influence-coefficient contact model (Stiffness/contact model =
+// influence coefficients, docs/ltca.md): one FE model of both gears whose flank cells are sized
+// for bending, not for the Hertz zone, factored once; the influence coefficients of a grid on
+// every flank that meshes in the sweep, read at a matching depth under the flank; the analytic
+// plane-strain Hertz layer above that depth (stiffness/ltca_contact.h); at each position and
+// torque a complementarity problem of a few unknowns. Same results as the exact sweep
+// (stiffness/mesh_stiffness_sweep.h), root stresses aside (0: not evaluated).
+//
+//   settings.contact_model = ContactModel::influence_coefficients;
+//   StiffnessSweepResult r = influence_sweep<2>(MPI_COMM_WORLD, settings, spec, "/tmp/scene");
+#pragma once
+
+#include "stiffness/mesh_stiffness_sweep.h"
+
+#include <functional>
+#include <mpi.h>
+#include <string>
+
+namespace gearstiff::stiffness
+{
+// Rank 0 computes, every rank receives every position. InputError (naming the field of
+// stiffness_parameter or geometry::scene_field) for what the model cannot carry: 3D, tooth
+// faults, a grid too coarse for the path or a modification, a position off the grid;
+// SolverFailure when the FE or a contact problem fails. `scene_file_stem` gets
+// "_influence.msh" appended (removed afterwards).
+template <int dim>
+StiffnessSweepResult
+influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,
+                const StiffnessSweepSpec& spec, const std::string& scene_file_stem,
+                const std::function<void(const std::string&)>& progress = {});
+
+// The checks influence_sweep makes before anything is meshed (InputError naming the field).
+void check_influence_settings(const GearMeshStiffnessSettings& settings);
+} // namespace gearstiff::stiffness

@@ -1,0 +1,66 @@
+// The small contact problem of one gear-mesh position in the influence-coefficient model
+// (docs/ltca.md §3–4): the analytic near field of a plane-strain Hertz line contact down to a
+// matching depth, and the complementarity problem of the pairs in contact
+//
+//     g_j = e − s_j − Σ_k C_jk·F_k − δ(F_j) ≤ 0,  F_j ≥ 0,  F_j·g_j = 0,  Σ F_j = W
+//
+// (Conry & Seireg 1971, docs/references.md §19). Plain arithmetic, no deal.II: the FE side
+// (stiffness/influence_sweep.h) supplies C.
+#pragma once
+
+#include <vector>
+
+namespace gearstiff::stiffness
+{
+// One body's elastic constants and the depth (m) at which the FE takes over from the analytic
+// layer under its flank.
+struct LayerBody
+{
+  double young_modulus = 210e9; // Pa
+  double poisson_ratio = 0.3;   // -
+  double matching_depth = 0.;   // m, h
+};
+
+// The compression (m) of the layer 0 ≤ z ≤ h of a plane-strain half-space under a Hertzian
+// pressure of peak p0 (Pa) and half-width a (m), on the symmetry axis: the integral of ε_z of
+// the axis stresses (Johnson 1985 §2.6, docs/ltca.md §3); Weber's formula for h ≫ a.
+double hertz_layer_compression(double peak_pressure, double half_width, const LayerBody& body);
+
+// A Hertz line contact of force F (N) over face width b (m) between two bodies with relative
+// radius of curvature R (m, > 0), each compressed down to its matching depth.
+struct LineContact
+{
+  double half_width = 0.;    // m, a = √(4wR/(πE*)), w = F/b
+  double peak_pressure = 0.; // Pa, p0 = 2w/(πa)
+  double approach = 0.;      // m, δ₁(h₁) + δ₂(h₂)
+  double compliance = 0.;    // m/N, dδ/dF
+};
+LineContact hertz_line_contact(double force, double face_width, double relative_radius,
+                               const LayerBody& first, const LayerBody& second);
+
+// The problem of one position: n pairs in contact by the kinematics.
+struct MeshContactProblem
+{
+  std::vector<std::vector<double>> compliance; // m/N, C_jk of the bodies below the depths
+  std::vector<double> separation;              // m, s_j: designed gap of pair j (≥ 0)
+  std::vector<double> relative_radius;         // m, R_j at the pair's contact point
+  double total_force = 0.;                     // N, W = T1/r_b1
+  double face_width = 0.;                      // m, b
+  LayerBody pinion, wheel;
+};
+
+struct MeshContactSolution
+{
+  std::vector<double> force;          // N, F_j
+  std::vector<LineContact> contact;   // each loaded pair's near field (zero when unloaded)
+  double approach = 0.;               // m, e: rigid approach of the flanks along the line of action
+  unsigned int active_set_passes = 0; // -
+  unsigned int newton_steps = 0;      // -
+};
+
+// Newton on the loaded pairs (δ is nonlinear in F), the active set updated until it repeats.
+// `start` (N, may be empty or of another size): the neighbouring position's forces, a warm start
+// of the active set and the Newton iteration. SolverFailure when it does not converge.
+MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
+                                       const std::vector<double>& start);
+} // namespace gearstiff::stiffness
