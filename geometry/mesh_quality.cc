@@ -65,6 +65,18 @@ std::unordered_map<std::size_t, Eigen::Vector3d> node_coordinates()
   return nodes;
 }
 
+// gmsh can give up on one body's surface and still write the others (an 800 µm tip relief
+// left the pinion's tip 116 µm wide): the file then references nodes it never wrote, which
+// only deal.II's reader noticed. Refused here, and retried finer like leftover triangles.
+void check_every_body_meshed(const std::vector<std::pair<int, int>>& entities,
+                             MeshStatistics& statistics)
+{
+  for (const auto& [entity, material_id] : entities)
+    if (statistics.cells_per_body[material_id] == 0)
+      throw SolverFailure("gmsh quadrilateral meshing",
+                          "no cells in the body with material id " + std::to_string(material_id));
+}
+
 // Every cell must be a quadrilateral (hexahedron) with positive scaled Jacobian: deal.II's
 // parallel::distributed::Triangulation accepts nothing else, and an inverted cell would
 // silently corrupt every stiffness computed on the mesh. Fills the cell counts and quality.
@@ -142,13 +154,7 @@ void check_cells(const MeshOptions& options, const SizeGrading& grading,
   }
   if (statistics.n_cells == 0)
     throw SolverFailure("gmsh mesh generation", "produced no cells");
-  // gmsh can give up on one body's surface and still write the others (an 800 µm tip relief
-  // left the pinion's tip 116 µm wide): the file then references nodes it never wrote, which
-  // only deal.II's reader noticed. Refused here, and retried finer like leftover triangles.
-  for (const auto& [entity, material_id] : entities)
-    if (statistics.cells_per_body[material_id] == 0)
-      throw SolverFailure("gmsh quadrilateral meshing",
-                          "no cells in the body with material id " + std::to_string(material_id));
+  check_every_body_meshed(entities, statistics);
   statistics.mean_scaled_jacobian = jacobian_sum / statistics.n_cells;
   if (!(statistics.min_scaled_jacobian > 0.))
     throw SolverFailure("gmsh mesh generation",
