@@ -373,8 +373,9 @@ struct PositionModel
   double face_width = 0.; // m
 };
 
-// The result of one position at one torque, as GearMeshStiffness reports it (root stresses 0:
-// not evaluated by this model).
+// The result of one position at one torque, as GearMeshStiffness reports it. Root stresses are
+// not evaluated by this model: NaN (printed "nan", null in JSON), never a number that could be
+// read as a stress.
 GearMeshStiffnessResult position_result(const PositionModel& model, double position,
                                         const std::vector<int>& pairs,
                                         const MeshContactProblem& problem,
@@ -391,6 +392,7 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
   r.pinion_torque = torque;
   r.pinion_base_radius = r_b1;
   r.wheel_base_radius = r_b2;
+  r.pinion_root_stress = r.wheel_root_stress = std::numeric_limits<double>::quiet_NaN();
   r.unloaded_transmission_error =
       *std::min_element(problem.separation.begin(), problem.separation.end());
   r.transmission_error = solution.approach;

@@ -105,7 +105,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
       "gears with flank cells of 0.04·m_n factored once, the influence coefficients of a grid "
       "on every meshing flank read 0.12·m_n under the surface, the analytic plane-strain Hertz "
       "layer above that depth, one small contact problem per position (docs/ltca.md); root "
-      "stresses are not evaluated (0)");
+      "stresses are not evaluated (nan in the tables, null in JSON)");
   prm.declare_entry("influence grid points", "64", Integer(8, 10000),
                     "contact model influence coefficients: grid points per flank over the path "
                     "of contact [-]; the step must not exceed the matching depth 0.12·m_n nor "
