@@ -390,7 +390,10 @@ def helical_statics(case, runner, log):
                                  "Mesh/dimension": 3, "Finite elements/Element degree": 1,
                                  "Contact/Friction coefficient": 0,
                                  "Stiffness/published reference": "false"})
-    pair, _, _ = runner.run("gear-pair", sets)
+    # gear-pair takes the pair's own settings only (--set of another command's section is bad
+    # input there; only parameter files carry other sections, with a note).
+    pair_sets = {k: v for k, v in sets.items() if k.startswith("Gear pair/")}
+    pair, _, _ = runner.run("gear-pair", pair_sets)
     sets["Mesh/layers"] = max(2, math.ceil(8 * value(pair, "overlap_ratio") - 1e-9))
     report, _, _ = runner.run("stiffness", sets)
     ratio, tan_b = value(report, "axial_over_tangential"), value(report, "tan_base_helix")
