@@ -358,11 +358,7 @@ def three_d_between_plane_models(case, runner, log):
     # of the 3D frictional solver, not of this identity.
     sets = dict(case["pair"], **{"Finite elements/Element degree": 1,
                                  "Contact/Friction coefficient": 0,
-                                 "Stiffness/published reference": "false",
-                                 # A 3D helical scene has layers × the 2D cells: the body coarse
-                                 # (the identities hold on any mesh) keeps it under the 2e5
-                                 # hexahedra limit (case 14 had 2.6e5 at the default body size).
-                                 "Mesh/body size": 1.2 * float(case["pair"]["Gear pair/Pinion/module"])})
+                                 "Stiffness/published reference": "false"})
     k = {}
     for name, extra in (("plane stress", {"Finite elements/Planar model": "plane stress"}),
                         ("plane strain", {"Finite elements/Planar model": "plane strain"}),
