@@ -383,6 +383,7 @@ def helical_statics(case, runner, log):
     friction every contact force is normal to the involute helicoid: |F_a|/F_bt = tan beta_b
     (0.5 %) and the torques balance (1.2e-4: the faceted flank normals)."""
     rng = random.Random(f"{case['seed']}:{case['index']}:helix")
+    module = float(case["pair"]["Gear pair/Pinion/module"])
     beta = round(rng.uniform(8., 25.), 1)
     internal = case["pair"]["Gear pair/Wheel/internal"] == "true"
     sets = dict(case["pair"], **{"Gear pair/Pinion/helix angle": beta,
@@ -393,7 +394,8 @@ def helical_statics(case, runner, log):
                                  # A 3D helical scene has layers × the 2D cells: the body coarse
                                  # (the identities hold on any mesh) keeps it under the 2e5
                                  # hexahedra limit (case 14 had 2.6e5 at the default body size).
-                                 "Mesh/body size": 1.2 * float(case["pair"]["Gear pair/Pinion/module"])})
+                                 "Mesh/body size": 1.2 * module,
+                                 "Mesh/rim size": 3. * module})
     # gear-pair takes the pair's own settings only (--set of another command's section is bad
     # input there; only parameter files carry other sections, with a note).
     pair_sets = {k: v for k, v in sets.items() if k.startswith("Gear pair/")}
