@@ -383,25 +383,29 @@ def helical_statics(case, runner, log):
     friction every contact force is normal to the involute helicoid: |F_a|/F_bt = tan beta_b
     (0.5 %) and the torques balance (1.2e-4: the faceted flank normals)."""
     rng = random.Random(f"{case['seed']}:{case['index']}:helix")
-    module = float(case["pair"]["Gear pair/Pinion/module"])
     beta = round(rng.uniform(8., 25.), 1)
     internal = case["pair"]["Gear pair/Wheel/internal"] == "true"
     sets = dict(case["pair"], **{"Gear pair/Pinion/helix angle": beta,
                                  "Gear pair/Wheel/helix angle": beta if internal else -beta,
                                  "Mesh/dimension": 3, "Finite elements/Element degree": 1,
                                  "Contact/Friction coefficient": 0,
-                                 "Stiffness/published reference": "false",
-                                 # A 3D helical scene has layers × the 2D cells: the body coarse
-                                 # (the identities hold on any mesh) keeps it under the 2e5
-                                 # hexahedra limit (case 14 had 2.6e5 at the default body size).
-                                 "Mesh/body size": 1.2 * module,
-                                 "Mesh/rim size": 3. * module})
+                                 "Stiffness/published reference": "false"})
     # gear-pair takes the pair's own settings only (--set of another command's section is bad
     # input there; only parameter files carry other sections, with a note).
     pair_sets = {k: v for k, v in sets.items() if k.startswith("Gear pair/")}
     pair, _, _ = runner.run("gear-pair", pair_sets)
     sets["Mesh/layers"] = max(2, math.ceil(8 * value(pair, "overlap_ratio") - 1e-9))
-    report, _, _ = runner.run("stiffness", sets)
+    # A 3D helical scene has layers × the 2D cells: one over the 2e5 hexahedra limit is refused
+    # (exit 2 naming Mesh/body size, as it must be) and skipped here, printed. A coarser body is
+    # no way round it: at 1.2·m_n the faceted helicoids overlapped by 1.7 µm (cases 14 and 24 of
+    # seed 20261201, exit 2 "the bodies overlap ... beyond the overlap tolerance of 0.001 mm",
+    # measured 2026-12-01) — a limit of the helical scene on coarse meshes, kept for issue 46.
+    report, code, stderr = runner.run("stiffness", sets, allowed=(0, 2))
+    if code == 2:
+        if "the mesh would have about" not in stderr:
+            raise CaseFailure(f"stiffness exited 2: {stderr.strip()[-600:]}")
+        log(f"helical beta {beta} deg: skipped, the 3D scene is over the cell limit")
+        return
     ratio, tan_b = value(report, "axial_over_tangential"), value(report, "tan_base_helix")
     check_close("|F_a|/F_bt against tan beta_b", ratio, tan_b, 0., 5e-3)
     # Not solver precision: the faceted helicoid's normals (tests/helical/CMakeLists.txt: 3.8e-5
