@@ -11,6 +11,7 @@
 #include "stiffness/influence_sweep.h"
 #include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
+#include "tests/stiffness/load_share.h"
 #include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/planet_ring.h"
 #include "tests/stiffness/work_file.h"
@@ -26,13 +27,7 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-double share_of(const GearMeshStiffnessResult& r, int pair)
-{
-  for (const auto& load : r.pairs)
-    if (load.pair == pair)
-      return load.load_share;
-  return 0.;
-}
+using test_support::share_of;
 
 struct Tolerances
 {

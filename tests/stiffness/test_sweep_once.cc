@@ -12,6 +12,7 @@
 // default 2D scene, 32 positions over one base pitch, on two MPI ranks (positions over ranks,
 // each rank meshes and factorizes once).
 #include "stiffness/mesh_stiffness_sweep.h"
+#include "tests/stiffness/load_share.h"
 #include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/planet_ring.h"
 #include "tests/stiffness/work_file.h"
@@ -29,13 +30,7 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-double share_of(const GearMeshStiffnessResult& r, int pair)
-{
-  for (const auto& load : r.pairs)
-    if (load.pair == pair)
-      return load.load_share;
-  return 0.;
-}
+using test_support::share_of;
 
 // The accuracy (k 0.3 %, TE 0.05 µm, load share 0.5 %) at every position of `torque`
 // (index into the torque list; the positions when there is none); k_range: the bounds of
