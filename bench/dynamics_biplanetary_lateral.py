@@ -147,11 +147,11 @@ print()
 print("| variant | lowest natural frequencies [Hz] (class: r rotational ×1, t translational ×2) |"
       " rotational / translational / planet / mixed groups |")
 print("|---|---|---|")
-names = {0: "r", 1: "t", 2: "p", 3: "m"}
+names = {"rotational": "r", "translational": "t", "planet": "p", "mixed": "m"}
 for label, single, *_ in perfect:
     groups = {}
     for r in table(single, "lateral_train_modes"):
-        groups.setdefault(r["group"], (r["frequency"], names[round(r["class"])]))
+        groups.setdefault(r["group"], (r["frequency"], names[r["class"]]))
     low = [f"{f:.0f} {c}" for f, c in list(groups.values())[:12]]
     counts = " / ".join(f"{value(single, k):.0f}" for k in (
         "rotational_groups", "translational_groups", "planet_groups", "mixed_groups"))

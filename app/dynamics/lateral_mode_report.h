@@ -18,6 +18,10 @@ void report_mode_classes(const Modes& modes, const std::string& table_name,
   auto& table =
       report.add_table(table_name, {"mode", "frequency", "class", "multiplicity", "group"},
                        {"-", "Hz", "-", "-", "-"});
+  // The class is a name in every table writer (CSV, JSON, Python), not a code explained only in
+  // the text report.
+  table.set_categories("class",
+                       {{0, "rotational"}, {1, "translational"}, {2, "planet"}, {3, "mixed"}});
   unsigned int counts[4] = {0, 0, 0, 0};
   for (std::size_t g = 0; g < modes.groups.size(); ++g)
   {
@@ -27,9 +31,9 @@ void report_mode_classes(const Modes& modes, const std::string& table_name,
       table.add_row({double(k + 1), modes.frequencies[k], double(static_cast<int>(group.type)),
                      double(group.modes.size()), double(g + 1)});
   }
-  report.add_text("mode classes", "0 = rotational (central members only rotate), 1 = "
-                                  "translational (central members only translate), 2 = planet "
-                                  "(central members still), 3 = mixed" +
+  report.add_text("mode classes", "rotational (central members only rotate), translational "
+                                  "(central members only translate), planet (central members "
+                                  "still), mixed" +
                                       theory);
   report.add_value("rotational_groups", counts[0], "-", "rotational frequencies");
   report.add_value("translational_groups", counts[1], "-", "translational frequencies");

@@ -26,12 +26,14 @@ EXPECTED = {
     "status": STATUS,
     "branch": None,
     "profile": ["nominal", "corrected"],
+    "class": ["rotational", "translational", "planet", "mixed"],
 }
 # Tables of the default commands and of the runs below that must show up with their categories.
 REQUIRED = {("run_kv", "source"), ("dynamics_speed_sweep", "status"),
             ("cycloid_torsion", "branch"), ("dynamics_nonlinear_sweep", "direction"),
             ("dynamics_nonlinear_sweep", "status"), ("dynamics_dte_waterfall", "direction"),
-            ("lateral_speed_sweep", "direction"), ("lateral_speed_sweep", "status")}
+            ("lateral_speed_sweep", "direction"), ("lateral_speed_sweep", "status"),
+            ("lateral_modes", "class")}
 
 
 def is_number(text):
