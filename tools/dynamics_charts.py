@@ -10,6 +10,7 @@ import csv
 import matplotlib
 
 matplotlib.use("Agg")
+import chart_case  # noqa: E402,F401  (every figure names its case in a footer)
 import matplotlib.pyplot as plt  # noqa: E402,F401  (re-exported to the plot scripts)
 
 

@@ -8,6 +8,7 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")
+import chart_case  # noqa: E402,F401  (every figure names its case in a footer)
 import matplotlib.pyplot as plt  # noqa: E402
 
 

@@ -21,6 +21,7 @@ import zlib
 import matplotlib
 
 matplotlib.use("Agg")
+import chart_case  # noqa: E402,F401  (every figure names its case in a footer)
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
@@ -133,7 +134,7 @@ def main():
     whole.set_xlim(centre[0] - window, centre[0] + window)
     whole.set_ylim(centre[1] - window, centre[1] + window)
     fig.colorbar(whole.collections[0], ax=whole, label="von Mises stress [MPa]")
-    whole.set_title(f"teeth about the contact, deformed, displacement ×{scale:.3g} "
+    whole.set_title(f"teeth about the contact, displacement ×{scale:.3g}\n"
                     f"(largest {largest * 1e3:.3g} µm)", fontsize=10)
     if contact:
         # A few tenths of a millimetre: the loaded zone of a tooth contact and its cells.

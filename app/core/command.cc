@@ -470,6 +470,8 @@ bool CommandContext::plot(const std::string& script, const std::vector<std::stri
     }
   const std::string png = (std::filesystem::path(staging_directory) / png_name).string();
   std::ostringstream command;
+  if (!chart_case.empty())
+    command << "GEARSTIFF_CHART_CASE=" << shell_quote(chart_case) << " ";
   command << python << " " << shell_quote(script_path);
   for (const auto& a : arguments)
     command << " " << shell_quote(a);

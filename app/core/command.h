@@ -59,6 +59,10 @@ public:
   // reason from its last line, never its traceback.
   bool plot(const std::string& script, const std::vector<std::string>& arguments,
             const std::string& png_name, const std::string& description);
+  // The case every chart names in a footer line (tools/chart_case.py), e.g. "z 23/61, m_n 4 mm,
+  // b 30 mm, x 0.2/-0.1, T1 = 300 N·m": a chart copied into a slide or a report still says what
+  // it shows. Set by the command once its parameters are read; empty: no footer.
+  std::string chart_case;
   // Throws the first failed write of this rank (write_output, plot), if any.
   void throw_write_failure() const;
   bool is_root() const;

@@ -629,6 +629,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   }
   const DynamicsParameters p = parse_dynamics_parameters(prm);
   const TorsionalModel model(p.train);
+  context.chart_case = "torsional model, " + std::to_string(model.n_dofs()) + " DOF, " +
+                       std::to_string(p.train.meshes.size()) + " meshes, input " +
+                       format_number(p.train.input_speed / rpm, 5) + " rpm, " +
+                       format_number(std::abs(p.train.gears.front().torque), 5) + " N·m";
   Report& report = context.report;
   report_case(p, model, report);
 

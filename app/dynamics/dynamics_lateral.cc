@@ -340,6 +340,12 @@ void run_lateral_dynamics(dealii::ParameterHandler& prm, CommandContext& context
 {
   const LateralParameters p = parse_lateral_parameters(prm);
   const LateralModel model(p.stage);
+  context.chart_case = "lateral stage, " + std::to_string(model.n_planets()) + " planets, input " +
+                       format_number(std::abs(p.input_speed) / rpm, 5) + " rpm, " +
+                       format_number(std::abs(p.load.input_torque), 5) + " N·m on the " +
+                       (p.load.input == dynamics::LateralMember::sun       ? "sun"
+                        : p.load.input == dynamics::LateralMember::carrier ? "carrier"
+                                                                           : "ring");
   Report& report = context.report;
   report.add_text(
       "model",

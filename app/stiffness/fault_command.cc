@@ -199,6 +199,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
                                        "meshes: mode = sweep");
   const stiffness::FaultSweepSpec spec = faulty_tooth(p);
   report_input_sizes(context.report, p);
+  context.chart_case = pair_chart_case(p);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const auto progress = [&context](const std::string& text) { context.progress("faults", text); };
   const std::string stem = shared_scratch_directory(context.mpi_communicator) + "/fault_scene";

@@ -343,6 +343,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const StiffnessParameters p = parse_stiffness_parameters(prm);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const kinematics::IsoStiffness iso = kinematics::iso_mesh_stiffness(pair);
+  context.chart_case = pair_chart_case(p);
   Report& report = context.report;
   report_input_sizes(report, p);
   report_model(p, pair, iso, report);

@@ -38,6 +38,26 @@ void refuse_load_lists(const StiffnessParameters& p, const std::string& command)
                                                "in mode sweep)");
 }
 
+std::string pair_chart_case(const StiffnessParameters& p)
+{
+  const kinematics::GearPairSpec& pair = p.settings.scene.pair;
+  const auto both = [](double a, double b, double scale, int digits)
+  { return format_number(a * scale, digits) + "/" + format_number(b * scale, digits); };
+  std::string text = "z " + std::to_string(pair.pinion.teeth) + "/" +
+                     (pair.wheel.internal ? "-" : "") + std::to_string(pair.wheel.teeth) +
+                     ", m_n " + format_number(pair.pinion.normal_module * 1e3, 4) + " mm, b " +
+                     both(pair.pinion.face_width, pair.wheel.face_width, 1e3, 4) + " mm, x " +
+                     both(pair.pinion.profile_shift, pair.wheel.profile_shift, 1., 4);
+  if (pair.pinion.helix_angle != 0.)
+    text += ", β " + format_number(pair.pinion.helix_angle / degree, 4) + "°";
+  std::string torques;
+  for (const double t : p.settings.torques)
+    torques += (torques.empty() ? "" : ", ") + format_number(t, 4);
+  return text +
+         ", T1 = " + (torques.empty() ? format_number(p.settings.pinion_torque, 4) : torques) +
+         " N·m";
+}
+
 void report_pinion_torque(Report& report, const StiffnessParameters& p)
 {
   report.add_value("pinion_torque", p.settings.pinion_torque, "N·m",

@@ -11,6 +11,10 @@ namespace gearstiff::app
 // modifications: InputError naming Stiffness/torques or Stiffness/variants when either is set
 // (they were dropped silently).
 void refuse_load_lists(const StiffnessParameters& p, const std::string& command);
+// The case a chart names (CommandContext::chart_case): "z 23/61, m_n 4 mm, b 30 mm,
+// x 0.2/-0.1, T1 = 300 N·m" (an internal wheel's teeth negative, β where helical, every torque
+// of a torque list).
+std::string pair_chart_case(const StiffnessParameters& p);
 // The report value pinion_torque [N·m]: every report states its load.
 void report_pinion_torque(Report& report, const StiffnessParameters& p);
 // The position's values (prefix + key) in the report: stiffness, rotation, transmission
