@@ -534,6 +534,10 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const CycloidLoadsParameters p = parse_cycloid_loads_parameters(prm);
   Report& report = context.report;
   const double torque = p.settings.output_torque;
+  const geometry::CycloidDiscSpec& ring = p.settings.scene.ring;
+  context.chart_case = "cycloid drive, z_k " + std::to_string(ring.rollers) + " rollers, e " +
+                       format_number(ring.eccentricity * 1e3, 4) +
+                       " mm, M_c = " + format_number(torque, 5) + " N·m";
   report_load_case(report, p);
   if (p.settings.scene.mesh.dimension != 2)
     throw InputError("Mesh/dimension", "the cycloid load analysis runs in 2D (3D: not yet)");

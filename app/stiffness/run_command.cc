@@ -260,6 +260,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const StiffnessParameters p = parse_stiffness_parameters(prm);
   refuse_load_lists(p, "run");
   check_chain_parameters(p);
+  context.chart_case = "split-path gearbox of Reszuta & Drewniak (2015), " + pair_chart_case(p);
   Report& report = context.report;
 
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
