@@ -33,12 +33,9 @@ void ContactProblem<dim>::add_displacement(types::boundary_id boundary, const Te
                                            const std::string& name,
                                            const std::vector<bool>& components)
 {
-  Support support;
-  support.name = name;
-  support.boundary = boundary;
-  support.displacement = value;
-  support.components = components;
-  supports.push_back(std::move(support));
+  // Every member named, in Support's order: a displacement support holds no hub.
+  const auto unused = fem::RigidHub<dim>::Control::rotation;
+  supports.push_back(Support{name, boundary, value, components, false, {}, unused, 0., {}, {}});
 }
 
 template <int dim>
@@ -46,14 +43,8 @@ void ContactProblem<dim>::add_rigid_hub(types::boundary_id boundary, const Point
                                         typename fem::RigidHub<dim>::Control control, double value,
                                         const std::string& name)
 {
-  Support support;
-  support.name = name;
-  support.boundary = boundary;
-  support.is_hub = true;
-  support.axis = axis;
-  support.control = control;
-  support.value = value;
-  supports.push_back(std::move(support));
+  supports.push_back(
+      Support{name, boundary, Tensor<1, dim>(), {}, true, axis, control, value, {}, nullptr});
 }
 
 template <int dim>
@@ -62,13 +53,7 @@ void ContactProblem<dim>::add_contact_pair(const std::vector<types::boundary_id>
                                            const std::string& name,
                                            const PairingWindow<dim>& window, bool within_one_body)
 {
-  Pair pair;
-  pair.name = name;
-  pair.slave = slave;
-  pair.master = master;
-  pair.window = window;
-  pair.within_one_body = within_one_body;
-  pairs.push_back(std::move(pair));
+  pairs.push_back(Pair{name, slave, master, window, within_one_body, {}, {}});
 }
 
 template <int dim>

@@ -1,5 +1,6 @@
 #include "dynamics/fault_signature.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 
 #include <algorithm>
@@ -40,7 +41,7 @@ void time_measures(const SimulationResult& result, const MeshResult& mesh, doubl
   const double mesh_period = 1. / mesh.mesh_frequency;
   const double spacing = time.size() > 1 ? time[1] - time[0] : INFINITY;
   if (!(spacing <= mesh_period / 8.))
-    throw InputError("Simulation/output interval",
+    throw InputError(field::simulation("output_interval"),
                      "the stored series has " + std::to_string(mesh_period / spacing) +
                          " samples per mesh period; the fault signature needs at least 8");
   const double tolerance = 1e-9 * mesh_period;

@@ -1,5 +1,6 @@
 #include "dynamics/integrators.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 
 #include <algorithm>
@@ -355,7 +356,7 @@ void run_hht(const TorsionalModel& model, std::vector<double> angle, std::vector
 {
   const double alpha = settings.hht_alpha;
   if (!(alpha >= -1. / 3. && alpha <= 0.))
-    throw InputError("Simulation/HHT alpha",
+    throw InputError(field::simulation("hht_alpha"),
                      "must lie in [-1/3, 0] for unconditional stability, got " +
                          std::to_string(alpha));
   const double beta = 0.25 * (1. - alpha) * (1. - alpha);
@@ -477,7 +478,7 @@ void run_adaptive(const TorsionalModel& model, const std::vector<double>& angle,
 {
   const double rtol = settings.relative_tolerance;
   if (!(rtol > 0. && rtol < 1e-1))
-    throw InputError("Simulation/relative tolerance", "must lie in (0, 0.1)");
+    throw InputError(field::simulation("relative_tolerance"), "must lie in (0, 0.1)");
   const unsigned int n = model.n_dofs();
   const unsigned int size = 2 * n;
   std::vector<double> y(size), y_new(size), stage(size);
@@ -568,12 +569,12 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
   if (initial_angle.size() != model.n_dofs() || initial_velocity.size() != model.n_dofs())
     throw InputError("initial state", "needs one angle and one speed per gear");
   if (!(settings.time_step > 0.) || !std::isfinite(settings.time_step))
-    throw InputError("Simulation/time step", "must be positive");
+    throw InputError(field::simulation("time_step"), "must be positive");
   if (!(settings.end_time >= settings.time_step))
-    throw InputError("Simulation/simulated time", "must be at least one time step");
+    throw InputError(field::simulation("simulated_time"), "must be at least one time step");
   if (settings.record_stride == 0)
-    throw InputError("Simulation/output stride", "must be at least 1");
-  check_work(estimate_work(model, settings), "Simulation/time step",
+    throw InputError(field::simulation("output_stride"), "must be at least 1");
+  check_work(estimate_work(model, settings), field::simulation("time_step"),
              "enlarge the time step or shorten the simulated time");
 
   Trajectory trajectory;
@@ -592,11 +593,11 @@ Trajectory integrate(const TorsionalModel& model, const std::vector<double>& ini
            << trajectory.highest_frequency / (2. * M_PI)
            << " Hz); use a smaller step, the implicit HHT-alpha method, or set "
               "'Simulation/allow unstable step = true' to run anyway";
-    throw InputError("Simulation/time step", reason.str());
+    throw InputError(field::simulation("time_step"), reason.str());
   }
 
   if (model.has_nonlinear_meshes() && settings.type != IntegratorType::rk4)
-    throw InputError("Simulation/integrator",
+    throw InputError(field::simulation("integrator"),
                      "the nonlinear mesh model needs RK4 (with located contact changes); " +
                          integrator_name(settings.type) + " would step over them");
 

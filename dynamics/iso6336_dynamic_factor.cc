@@ -1,5 +1,6 @@
 #include "dynamics/iso6336_dynamic_factor.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 
 #include <cmath>
@@ -57,18 +58,19 @@ IsoDynamicFactor iso6336_dynamic_factor(const IsoDynamicFactorInput& in)
                        "must be positive for ISO 6336-1 method B, got " + std::to_string(value));
   };
   if (in.pinion_teeth == 0)
-    throw InputError("ISO 6336/pinion teeth", "must be positive");
-  positive(in.pinion_speed, "ISO 6336/pinion speed");
-  positive(in.mesh_stiffness, "ISO 6336/mesh stiffness c_gamma_alpha");
-  positive(in.single_stiffness, "ISO 6336/single stiffness c'");
-  positive(in.face_width, "ISO 6336/face width");
-  positive(in.reduced_mass, "ISO 6336/reduced mass");
-  positive(in.tangential_force, "ISO 6336/tangential force");
-  positive(in.application_factor, "ISO 6336/application factor");
+    throw InputError(field::iso6336("pinion_teeth"), "must be positive");
+  positive(in.pinion_speed, field::iso6336("pinion_speed"));
+  positive(in.mesh_stiffness, field::iso6336("mesh_stiffness"));
+  positive(in.single_stiffness, field::iso6336("single_stiffness"));
+  positive(in.face_width, field::iso6336("face_width"));
+  positive(in.reduced_mass, field::iso6336("reduced_mass"));
+  positive(in.tangential_force, field::iso6336("tangential_force"));
+  positive(in.application_factor, field::iso6336("application_factor"));
   if (!(in.total_contact_ratio >= 1.))
-    throw InputError("ISO 6336/contact ratio", "must be at least 1");
+    throw InputError(field::iso6336("contact_ratio"), "must be at least 1");
   if (in.pitch_deviation < 0. || in.profile_deviation < 0. || in.tip_relief < 0.)
-    throw InputError("ISO 6336/deviations", "f_pb,eff, f_f,eff and C_a must not be negative");
+    throw InputError(field::iso6336("deviations"),
+                     "f_pb,eff, f_f,eff and C_a must not be negative");
 
   IsoDynamicFactor out;
   // Resonance speed n_E1 = 30000/(π·z1)·sqrt(c_γα/m_red) [rpm] with per-face-width quantities in

@@ -1,5 +1,6 @@
 #include "dynamics/lateral_model.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -118,29 +119,38 @@ void check_member_data(const LateralStage& stage)
   {
     const LateralCentralMember& m = member_data(stage, j);
     const std::string name = lateral_member_name(j);
-    require_positive(m.mass, "Train/masses", "the mass of the " + name);
+    require_positive(m.mass, field::train("masses"), "the mass of the " + name);
     require_positive(m.radius,
-                     j == LateralMember::carrier ? "Train/carrier radii" : "Train/base diameters",
+                     j == LateralMember::carrier ? field::train("carrier_radii")
+                                                 : field::train("base_diameters"),
                      "the radius of the " + name);
     if (!m.held)
-      require_positive(m.moment_of_inertia, "Train/inertias", "J of the " + name);
-    require_non_negative(m.bearing_stiffness, "Train/bearing stiffness", "the " + name + "'s");
-    require_non_negative(m.bearing_damping, "Train/bearing damping", "the " + name + "'s");
-    require_non_negative(m.torsional_stiffness, "Train/suspended members", "the " + name + "'s");
-    require_non_negative(m.torsional_damping, "Train/suspended members", "the " + name + "'s");
+      require_positive(m.moment_of_inertia, field::train("inertias"), "J of the " + name);
+    require_non_negative(m.bearing_stiffness, field::train("bearing_stiffness"),
+                         "the " + name + "'s");
+    require_non_negative(m.bearing_damping, field::train("bearing_damping"), "the " + name + "'s");
+    require_non_negative(m.torsional_stiffness, field::train("suspended_members"),
+                         "the " + name + "'s");
+    require_non_negative(m.torsional_damping, field::train("suspended_members"),
+                         "the " + name + "'s");
   }
-  require_positive(stage.planet_mass, "Train/masses", "the planet mass");
-  require_positive(stage.planet_moment_of_inertia, "Train/inertias", "J of the planet");
-  require_positive(stage.planet_base_radius, "Train/base diameters", "the planet base radius");
-  require_positive(stage.pin_stiffness, "Train/planet pin stiffness", "the pin stiffness");
-  require_non_negative(stage.pin_damping, "Train/planet pin stiffness", "the pin damping");
-  require_positive(stage.sun_mesh_stiffness, "Train mesh 1/stiffness", "the sun mesh stiffness");
-  require_positive(stage.ring_mesh_stiffness, "Train mesh 2/stiffness", "the ring mesh stiffness");
-  require_non_negative(stage.sun_mesh_damping, "Train mesh 1/damping", "the sun mesh damping");
-  require_non_negative(stage.ring_mesh_damping, "Train mesh 2/damping", "the ring mesh damping");
+  require_positive(stage.planet_mass, field::train("masses"), "the planet mass");
+  require_positive(stage.planet_moment_of_inertia, field::train("inertias"), "J of the planet");
+  require_positive(stage.planet_base_radius, field::train("base_diameters"),
+                   "the planet base radius");
+  require_positive(stage.pin_stiffness, field::train("planet_pin_stiffness"), "the pin stiffness");
+  require_non_negative(stage.pin_damping, field::train("planet_pin_stiffness"), "the pin damping");
+  require_positive(stage.sun_mesh_stiffness, field::train_mesh(0, "stiffness"),
+                   "the sun mesh stiffness");
+  require_positive(stage.ring_mesh_stiffness, field::train_mesh(1, "stiffness"),
+                   "the ring mesh stiffness");
+  require_non_negative(stage.sun_mesh_damping, field::train_mesh(0, "damping"),
+                       "the sun mesh damping");
+  require_non_negative(stage.ring_mesh_damping, field::train_mesh(1, "damping"),
+                       "the ring mesh damping");
   for (const double alpha : {stage.sun_pressure_angle, stage.ring_pressure_angle})
     if (!(alpha >= 0. && alpha < 0.5 * M_PI))
-      throw InputError("Train/pressure angle", "must lie in [0, 90) deg");
+      throw InputError(field::train("pressure_angle"), "must lie in [0, 90) deg");
 }
 
 // Planets must not overlap: centres 2·r_c·sin(Δψ/2) apart, at least two tip radii; pin errors
@@ -161,7 +171,7 @@ void check_planet_layout(const LateralStage& data)
         n + 1 < n_planet ? sorted[n + 1] - sorted[n] : sorted.front() + 2. * M_PI - sorted.back();
     const double distance = 2. * data.carrier.radius * std::sin(0.5 * gap);
     if (distance <= 2. * tip)
-      throw InputError("Train/planet angles",
+      throw InputError(field::train("planet_angles"),
                        "planets at " + format(sorted[n] * 180. / M_PI) + " and " +
                            format(sorted[(n + 1) % n_planet] * 180. / M_PI) +
                            " deg collide: centres " + format(distance * 1e3) +
@@ -170,11 +180,11 @@ void check_planet_layout(const LateralStage& data)
   for (const auto* errors : {&data.pin_error_tangential, &data.pin_error_radial})
   {
     if (!errors->empty() && errors->size() != n_planet)
-      throw InputError("Train/planet pin errors",
+      throw InputError(field::train("planet_pin_errors"),
                        "needs one value per planet (" + std::to_string(n_planet) + ")");
     for (const double e : *errors)
       if (!std::isfinite(e))
-        throw InputError("Train/planet pin errors", "must be finite");
+        throw InputError(field::train("planet_pin_errors"), "must be finite");
   }
 }
 
@@ -271,7 +281,7 @@ void refuse_free_translation(const LateralModes& free_modes)
       }
     }
     if (translation > 1e-6)
-      throw InputError("Train/bearing stiffness",
+      throw InputError(field::train("bearing_stiffness"),
                        "the " + lateral_member_name(LateralMember(body)) +
                            " translates freely: zero bearing stiffness with nothing else "
                            "holding the stage in x and y");
@@ -283,7 +293,7 @@ LateralModel::LateralModel(const LateralStage& stage)
     : data(stage), n_planet(static_cast<unsigned int>(stage.planet_angles.size()))
 {
   if (n_planet < 1)
-    throw InputError("Train/planets", "the lateral model needs at least one planet");
+    throw InputError(field::train("planets"), "the lateral model needs at least one planet");
   check_member_data(stage);
   check_planet_layout(stage);
 
@@ -650,9 +660,10 @@ LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) con
   const LateralCentralMember& in = member_data(data, load.input);
   const LateralCentralMember& out = member_data(data, load.output);
   if (in.held)
-    throw InputError("Train/inputs", "the input " + lateral_member_name(load.input) + " is held");
+    throw InputError(field::train("inputs"),
+                     "the input " + lateral_member_name(load.input) + " is held");
   if (out.held || load.output == load.input)
-    throw InputError("Train/output",
+    throw InputError(field::train("output"),
                      "the output " + lateral_member_name(load.output) + " must turn");
   Eigen::VectorXd f = error_force;
   f[central_dof(load.input, 2)] += load.input_torque / in.radius;
@@ -664,8 +675,8 @@ LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) con
   for (Eigen::Index k = 0; k < m.frequencies.size() && m.frequencies[k] == 0.; ++k)
     rigid.push_back(m.shapes.col(k));
   if (rigid.size() > 1)
-    throw InputError("Train/fixed", "the stage has " + std::to_string(rigid.size()) +
-                                        " free rotations: hold or suspend a member");
+    throw InputError(field::train("fixed"), "the stage has " + std::to_string(rigid.size()) +
+                                                " free rotations: hold or suspend a member");
   const unsigned int uo = central_dof(load.output, 2);
   double output_torque = 0.;
   if (!rigid.empty())
@@ -673,7 +684,7 @@ LateralStaticState LateralModel::static_state(const LateralStaticLoad& load) con
     // The load on the output that balances the input in the rigid rotation: v0ᵀ·f = 0.
     const Eigen::VectorXd& v0 = rigid.front();
     if (std::abs(v0[uo]) < 1e-12 * v0.cwiseAbs().maxCoeff())
-      throw InputError("Train/output", "the output does not turn with the stage");
+      throw InputError(field::train("output"), "the output does not turn with the stage");
     output_torque = -v0.dot(f) / v0[uo] * out.radius;
     f[uo] += output_torque / out.radius;
   }

@@ -1,5 +1,6 @@
 #include "dynamics/lateral_response.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -301,7 +302,8 @@ void initial_state(const LateralModel& model, const LateralRunSettings& settings
   if (!settings.initial_position.empty())
   {
     if (settings.initial_position.size() != nf || settings.initial_velocity.size() != nf)
-      throw InputError("Speed sweep/direction", "the continued state does not fit the model");
+      throw InputError(field::speed_sweep("direction"),
+                       "the continued state does not fit the model");
     q = Eigen::Map<const Eigen::VectorXd>(settings.initial_position.data(), nf);
     v = Eigen::Map<const Eigen::VectorXd>(settings.initial_velocity.data(), nf);
   }
@@ -369,9 +371,10 @@ LateralResponse integrate_lateral(const LateralModel& model, const LateralStatic
   LateralResponse response;
   response.rk4_step_limit = rk4_step_limit(model, system, excitation);
   if (!(settings.time_step > 0.) || !(settings.end_time > 0.))
-    throw InputError("Simulation/time step", "time step and simulated time must be positive");
+    throw InputError(field::simulation("time_step"),
+                     "time step and simulated time must be positive");
   if (settings.time_step > response.rk4_step_limit && !settings.allow_unstable_step)
-    throw InputError("Simulation/time step",
+    throw InputError(field::simulation("time_step"),
                      format(settings.time_step * 1e6) +
                          " µs exceeds the RK4 stability limit of the lateral model, " +
                          format(response.rk4_step_limit * 1e6) + " µs");

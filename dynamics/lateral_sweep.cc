@@ -1,5 +1,6 @@
 #include "dynamics/lateral_sweep.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -61,11 +62,11 @@ LateralSweepPoint diverged_point(const SolverFailure& failure)
                            "the start-up transient never decays";
   const LateralStage& stage = model.stage();
   if (stage.sun_mesh_damping > 0. && stage.ring_mesh_damping > 0.)
-    throw InputError("Train/bearing damping",
+    throw InputError(field::train("bearing_damping"),
                      mode + " (the meshes' damping does not reach it: it moves the bearings); "
                             "give bearing damping 'name: c, ...' (N·s/m) for sun, ring and "
                             "carrier, or Simulation/steady state start");
-  throw InputError("Train mesh 1/damping",
+  throw InputError(field::train_mesh(0, "damping"),
                    mode + ": give the meshes' damping (Train mesh 1 and 2) or Simulation/steady "
                           "state start");
 }
@@ -77,7 +78,8 @@ LateralSweepWork lateral_sweep_work(const LateralModel& model,
                                     const LateralSweepSettings& sweep)
 {
   if (!(sweep.nominal_input_speed != 0.) || !(excitation.mesh_frequency > 0.))
-    throw InputError("Speed sweep/points", "the stage's input and meshes must turn for a sweep");
+    throw InputError(field::speed_sweep("points"),
+                     "the stage's input and meshes must turn for a sweep");
   LateralSweepWork work;
   work.settle_time = sweep.settle_time >= 0. ? sweep.settle_time : lateral_decay_time(model);
   if (!std::isfinite(work.settle_time))
@@ -90,7 +92,7 @@ LateralSweepWork lateral_sweep_work(const LateralModel& model,
     work.steps += directions * (work.settle_time + sweep.window_periods / f) / h;
   }
   if (work.steps > 2e8)
-    throw InputError("Simulation/steady state start",
+    throw InputError(field::simulation("steady_state_start"),
                      "the sweep would need " + format_number(work.steps, 3) +
                          " steps (limit 2e8): the slowest mode decays in " +
                          format_number(work.settle_time, 3) +

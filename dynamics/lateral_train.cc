@@ -1,5 +1,6 @@
 #include "dynamics/lateral_train.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -26,25 +27,30 @@ void require_non_negative(double value, const std::string& parameter, const std:
 
 void check_body(const LateralTrain& train, const LateralBody& b)
 {
-  require_positive(b.mass, "Train/masses", "the mass of '" + b.name + "'");
-  require_positive(b.radius, "Train/base diameters", "the radius of '" + b.name + "'");
+  require_positive(b.mass, field::train("masses"), "the mass of '" + b.name + "'");
+  require_positive(b.radius, field::train("base_diameters"), "the radius of '" + b.name + "'");
   if (!b.held)
-    require_positive(b.moment_of_inertia, "Train/inertias", "J of '" + b.name + "'");
-  require_non_negative(b.bearing_stiffness, "Train/bearing stiffness", "'" + b.name + "'");
-  require_non_negative(b.bearing_damping, "Train/bearing damping", "'" + b.name + "'");
-  require_non_negative(b.torsional_stiffness, "Train/suspended members", "'" + b.name + "'");
-  require_non_negative(b.torsional_damping, "Train/suspended members", "'" + b.name + "'");
+    require_positive(b.moment_of_inertia, field::train("inertias"), "J of '" + b.name + "'");
+  require_non_negative(b.bearing_stiffness, field::train("bearing_stiffness"), "'" + b.name + "'");
+  require_non_negative(b.bearing_damping, field::train("bearing_damping"), "'" + b.name + "'");
+  require_non_negative(b.torsional_stiffness, field::train("suspended_members"),
+                       "'" + b.name + "'");
+  require_non_negative(b.torsional_damping, field::train("suspended_members"), "'" + b.name + "'");
   if (b.carrier < 0)
     return;
   if (b.carrier >= static_cast<int>(train.bodies.size()))
-    throw InputError("Train/planets", "'" + b.name + "' rides on an unknown carrier");
-  require_positive(b.pin_stiffness, "Train/planet pin stiffness", "the pin of '" + b.name + "'");
-  require_non_negative(b.pin_damping, "Train/planet pin stiffness", "the pin of '" + b.name + "'");
-  require_positive(b.orbit_radius, "Train/carrier radii", "the orbit radius of '" + b.name + "'");
+    throw InputError(field::train("planets"), "'" + b.name + "' rides on an unknown carrier");
+  require_positive(b.pin_stiffness, field::train("planet_pin_stiffness"),
+                   "the pin of '" + b.name + "'");
+  require_non_negative(b.pin_damping, field::train("planet_pin_stiffness"),
+                       "the pin of '" + b.name + "'");
+  require_positive(b.orbit_radius, field::train("carrier_radii"),
+                   "the orbit radius of '" + b.name + "'");
   if (b.bearing_stiffness > 0. || b.bearing_damping > 0.)
-    throw InputError("Train/bearing stiffness", "'" + b.name +
-                                                    "' rides on a carrier: its support is the "
-                                                    "pin (Train/planet pin stiffness)");
+    throw InputError(field::train("bearing_stiffness"),
+                     "'" + b.name +
+                         "' rides on a carrier: its support is the "
+                         "pin (Train/planet pin stiffness)");
 }
 
 // Body b's translation (q1, q2) projected on the unit vector at angle `angle`.
@@ -71,7 +77,7 @@ void refuse_free_translation(const LateralTrain& train, const LateralTrainModes&
           largest = e, body = b;
       }
     if (translation > 1e-6)
-      throw InputError("Train/bearing stiffness",
+      throw InputError(field::train("bearing_stiffness"),
                        "'" + train.bodies[body].name +
                            "' translates freely: zero bearing stiffness with nothing else "
                            "holding it in x and y");
@@ -219,7 +225,7 @@ void LateralTrainModel::add_springs()
                      "Train mesh " + std::to_string(line.spec_mesh + 1) + "/stiffness",
                      "the stiffness of " + line.name);
     if (line.body_a == line.body_b || line.body_a >= n_bodies() || line.body_b >= n_bodies())
-      throw InputError("Train/meshes", line.name + " must join two bodies");
+      throw InputError(field::train("meshes"), line.name + " must join two bodies");
     const LateralBody& a = data.bodies[line.body_a];
     const LateralBody& b = data.bodies[line.body_b];
     Spring s{3, m, line.stiffness, line.damping, 0., {}};
@@ -251,7 +257,7 @@ void LateralTrainModel::assemble()
 LateralTrainModel::LateralTrainModel(LateralTrain train) : data(std::move(train))
 {
   if (data.bodies.empty())
-    throw InputError("Train/gears", "the lateral model needs bodies");
+    throw InputError(field::train("gears"), "the lateral model needs bodies");
   for (const LateralBody& b : data.bodies)
     check_body(data, b);
   add_springs();
@@ -294,9 +300,9 @@ LateralTrainStatics LateralTrainModel::static_state(unsigned int input, unsigned
                                                     double input_torque) const
 {
   if (input >= n_bodies() || data.bodies[input].held)
-    throw InputError("Train/inputs", "the input must be a body that turns");
+    throw InputError(field::train("inputs"), "the input must be a body that turns");
   if (output >= n_bodies() || data.bodies[output].held || output == input)
-    throw InputError("Train/output", "the output must be another body that turns");
+    throw InputError(field::train("output"), "the output must be another body that turns");
   Eigen::VectorXd f = error_force;
   f[dof(input, 2)] += input_torque / data.bodies[input].radius;
   const LateralTrainModes m = modes();
@@ -304,8 +310,8 @@ LateralTrainStatics LateralTrainModel::static_state(unsigned int input, unsigned
   for (Eigen::Index k = 0; k < m.frequencies.size() && m.frequencies[k] == 0.; ++k)
     rigid.push_back(k);
   if (rigid.size() > 1)
-    throw InputError("Train/fixed", "the train has " + std::to_string(rigid.size()) +
-                                        " free motions: hold or suspend a member");
+    throw InputError(field::train("fixed"), "the train has " + std::to_string(rigid.size()) +
+                                                " free motions: hold or suspend a member");
   LateralTrainStatics state;
   const unsigned int uo = dof(output, 2), extra = rigid.size();
   if (extra)
@@ -313,7 +319,7 @@ LateralTrainStatics LateralTrainModel::static_state(unsigned int input, unsigned
     // The load on the output that balances the input in the rigid rotation: v0ᵀ·f = 0.
     const Eigen::VectorXd v0 = m.shapes.col(rigid.front());
     if (std::abs(v0[uo]) < 1e-12 * v0.cwiseAbs().maxCoeff())
-      throw InputError("Train/output", "the output does not turn with the train");
+      throw InputError(field::train("output"), "the output does not turn with the train");
     state.output_torque = -v0.dot(f) / v0[uo] * data.bodies[output].radius;
     f[uo] += state.output_torque / data.bodies[output].radius;
   }

@@ -1,5 +1,6 @@
 #include "dynamics/lateral_train_build.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "kinematics/gear_train.h"
 
@@ -32,7 +33,8 @@ struct Layout
     for (std::size_t i = 0; i < spec.members.size(); ++i)
       if (spec.members[i].name == name)
         return i;
-    throw InputError("Train/gears", "lateral: no member '" + name + "' (the housing has no body)");
+    throw InputError(field::train("gears"),
+                     "lateral: no member '" + name + "' (the housing has no body)");
   }
   unsigned int copies(std::size_t i) const { return spec.members[i].copies; }
   Placement place(std::size_t i, unsigned int k, unsigned int depth = 0) const
@@ -41,7 +43,7 @@ struct Layout
     if (m.carrier.empty() || m.carrier == kinematics::housing_name)
       return {};
     if (depth > spec.members.size())
-      throw InputError("Train/planets", "carriers form a loop at '" + m.name + "'");
+      throw InputError(field::train("planets"), "carriers form a loop at '" + m.name + "'");
     const std::size_t c = index(m.carrier);
     const unsigned int per = copies(i) / std::max(1u, copies(c));
     const Placement carrier = place(c, k / per, depth + 1);
@@ -118,7 +120,7 @@ double body_radius(const LateralTrainInput& input, const Layout& layout, std::si
       if (layout.spec.members[j].carrier == layout.spec.members[i].name && layout.label[i] == l)
         radius = std::max(radius, layout.solution.orbit_radius[j]);
   if (!(radius > 0.))
-    throw InputError("Train/carrier radii", "'" + m.name + "' needs its pin-circle radius");
+    throw InputError(field::train("carrier_radii"), "'" + m.name + "' needs its pin-circle radius");
   return radius;
 }
 
@@ -248,8 +250,9 @@ void add_meshes(const LateralTrainInput& input, const Layout& layout, LateralTra
     const unsigned int m = setup.rotational.spec_mesh[i], j = setup.rotational.mesh_copy[i];
     const kinematics::TrainMesh& tm = spec.meshes[m];
     if (tm.frame == kinematics::housing_name)
-      throw InputError("Train/meshes", "lateral: fixed-axis mesh " + tm.gear_a + "-" + tm.gear_b +
-                                           " (only planetary meshes, on a carrier)");
+      throw InputError(field::train("meshes"), "lateral: fixed-axis mesh " + tm.gear_a + "-" +
+                                                   tm.gear_b +
+                                                   " (only planetary meshes, on a carrier)");
     const std::size_t a = layout.index(tm.gear_a), b = layout.index(tm.gear_b),
                       c = layout.index(tm.frame);
     const unsigned int copies = std::max({layout.copies(a), layout.copies(b), layout.copies(c)});

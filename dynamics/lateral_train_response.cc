@@ -1,5 +1,6 @@
 #include "dynamics/lateral_train_response.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -153,7 +154,7 @@ LateralTrainResponse integrate_lateral_train(const LateralTrainSetup& setup,
   response.rk4_step_limit = lateral_train_step_limit(setup);
   if (!(run.time_step > 0.) ||
       (run.time_step > response.rk4_step_limit && !run.allow_unstable_step))
-    throw InputError("Simulation/time step",
+    throw InputError(field::simulation("time_step"),
                      format_number(run.time_step * 1e6, 4) + " µs is above the RK4 limit " +
                          format_number(response.rk4_step_limit * 1e6, 4) +
                          " µs of the lateral model (highest mode at the largest mesh stiffness)");

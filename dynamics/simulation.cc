@@ -1,5 +1,6 @@
 #include "dynamics/simulation.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 
 #include <algorithm>
@@ -111,16 +112,16 @@ void check_simulation_work(const TorsionalModel& model, const SimulationSettings
   const double sensible_step = std::min(model.rk4_step_limit(), mesh_period / 20.);
   const bool span_too_long = integrator.end_time / sensible_step > max_integration_steps;
   if (!span_too_long)
-    check_work(work, "Simulation/time step",
+    check_work(work, field::simulation("time_step"),
                "the step " + std::to_string(integrator.time_step) +
                    " s is far below what the model needs (RK4 limit " +
                    std::to_string(model.rk4_step_limit()) + " s): enlarge it");
   else if (settings.end_time > 0.)
-    check_work(work, "Simulation/simulated time", "shorten it");
+    check_work(work, field::simulation("simulated_time"), "shorten it");
   else if (!result.window_automatic)
-    check_work(work, "Simulation/steady state start", "start the window earlier");
+    check_work(work, field::simulation("steady_state_start"), "start the window earlier");
   else
-    check_work(work, "Simulation/steady state start",
+    check_work(work, field::simulation("steady_state_start"),
                "the automatic window waits " + std::to_string(result.decay_time) +
                    " s for the slowest mode to decay to 1/1000 (mesh damping too light): give "
                    "the window start or more damping");
@@ -200,7 +201,7 @@ double plan_window(const TorsionalModel& model, const SimulationSettings& settin
   }
   const double end_time = settings.end_time > 0. ? settings.end_time : window_origin + window;
   if (!(end_time > requested_start + h))
-    throw InputError("Simulation/steady state start",
+    throw InputError(field::simulation("steady_state_start"),
                      "the steady-state window [" + std::to_string(requested_start) + ", " +
                          std::to_string(end_time) + "] s is empty; lengthen the simulated time");
 

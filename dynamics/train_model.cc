@@ -1,5 +1,6 @@
 #include "dynamics/train_model.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -75,7 +76,7 @@ Bodies find_bodies(const kinematics::GearTrainSpec& spec, const kinematics::Trai
   }
   for (std::size_t i = 0; i < n; ++i)
     if (member_copies(spec, i) % bodies.copies[bodies.body_of_member[i]] != 0)
-      throw InputError("Train/planets",
+      throw InputError(field::train("planets"),
                        "member '" + solution.names[i] + "' has " +
                            std::to_string(member_copies(spec, i)) +
                            " copies, not a multiple of the " +
@@ -106,11 +107,12 @@ void number_dofs(Bodies& bodies, const kinematics::TrainSolution& solution,
   for (const TrainSuspension& s : suspensions)
   {
     if (std::find(solution.names.begin(), solution.names.end(), s.member) == solution.names.end())
-      throw InputError("Train/suspended members",
+      throw InputError(field::train("suspended_members"),
                        "unknown member '" + s.member + "' (declare it in gears or carriers)");
     const std::size_t body = bodies.body_of_member[solution.index(s.member)];
     if (!bodies.fixed[body] || s.member == kinematics::housing_name)
-      throw InputError("Train/suspended members", "'" + s.member + "' is not a fixed member");
+      throw InputError(field::train("suspended_members"),
+                       "'" + s.member + "' is not a fixed member");
     suspended[body] = true;
   }
   bodies.first_dof.assign(bodies.copies.size(), -1);
@@ -155,11 +157,12 @@ std::vector<double> dof_inertias(const kinematics::GearTrainSpec& spec,
     for (unsigned int depth = 0; !spec.members[current].carrier.empty(); ++depth)
     {
       if (depth > spec.members.size())
-        throw InputError("Train/planets", "carriers form a loop at '" + member.name + "'");
+        throw InputError(field::train("planets"), "carriers form a loop at '" + member.name + "'");
       const double radius = solution.orbit_radius[current];
       if (radius == 0.)
-        throw InputError("Train/modules", "the orbit radius of '" + spec.members[current].name +
-                                              "' is unknown: give the modules of its mesh");
+        throw InputError(field::train("modules"), "the orbit radius of '" +
+                                                      spec.members[current].name +
+                                                      "' is unknown: give the modules of its mesh");
       const std::size_t carrier = solution.index(spec.members[current].carrier);
       // Copy k of the member rides on copy k/(C_i/C_carrier) of its carrier.
       for (unsigned int k = 0; k < member.copies; ++k)
@@ -316,9 +319,10 @@ kinematics::GearTrainSpec with_blank_inertias(const TrainDynamicsInput& input,
         std::find_if(spec.members.begin(), spec.members.end(),
                      [&](const kinematics::TrainMember& m) { return m.name == blank.member; });
     if (member == spec.members.end())
-      throw InputError("Train/face widths", "'" + blank.member + "' is not a gear of the train");
+      throw InputError(field::train("face_widths"),
+                       "'" + blank.member + "' is not a gear of the train");
     const BlankInertia blank_values =
-        blank_inertia(*member, blank, input.density, "Train/bore diameters");
+        blank_inertia(*member, blank, input.density, field::train("bore_diameters"));
     const bool given_j = member->moment_of_inertia > 0., given_m = member->mass > 0.;
     if (!given_j)
       member->moment_of_inertia = blank_values.moment_of_inertia;
@@ -361,7 +365,7 @@ void add_gears(TrainBuild& build)
   TrainModel& model = build.model;
   const TrainDynamicsInput& input = build.input;
   if (spec.inputs.size() != 1 || spec.output.empty())
-    throw InputError("Train/inputs", "the dynamics needs exactly one input and an output");
+    throw InputError(field::train("inputs"), "the dynamics needs exactly one input and an output");
   if (input.meshes.size() != spec.meshes.size())
     throw InputError(input.mesh_section, "one set of mesh data per Train mesh is needed");
   Bodies& bodies = build.bodies;
@@ -369,7 +373,7 @@ void add_gears(TrainBuild& build)
   const std::size_t input_member = solution.index(spec.inputs.front().first);
   const std::size_t input_body = bodies.body_of_member[input_member];
   if (bodies.fixed[input_body] || bodies.copies[input_body] != 1)
-    throw InputError("Train/inputs", "the input must be a single member that turns");
+    throw InputError(field::train("inputs"), "the input must be a single member that turns");
   number_dofs(bodies, solution, input.suspensions, input_body, model);
   const std::size_t n_dofs = model.dof_names.size();
   const double input_speed = build.input_speed = spec.inputs.front().second;
@@ -385,7 +389,7 @@ void add_gears(TrainBuild& build)
   for (std::size_t i = 0; i < n_dofs; ++i)
   {
     if (!(inertia[i] > 0.))
-      throw InputError("Train/inertias",
+      throw InputError(field::train("inertias"),
                        "'" + model.dof_names[i] +
                            "' has zero inertia: give J of its members (Train/inertias) or the "
                            "masses of planets riding on it");
@@ -395,7 +399,7 @@ void add_gears(TrainBuild& build)
   const std::size_t output_member = solution.index(spec.output);
   const int output_dof = dof_of(bodies, spec, output_member, 0);
   if (output_dof < 0 || bodies.copies[bodies.body_of_member[output_member]] != 1)
-    throw InputError("Train/output", "the output must be a single member that turns");
+    throw InputError(field::train("output"), "the output must be a single member that turns");
   const double input_sign = input_speed > 0. ? 1. : -1.;
   train.gears[0].torque = input_sign * input.input_torque;
   train.gears[output_dof].torque -=
@@ -425,14 +429,16 @@ void add_meshes(TrainBuild& build)
     const kinematics::TrainMember& gear_a = spec.members[a];
     const kinematics::TrainMember& gear_b = spec.members[b];
     if (!(gear_a.module > 0. && gear_b.module > 0.))
-      throw InputError("Train/modules", "mesh " + tm.gear_a + "-" + tm.gear_b +
-                                            " needs the modules of both gears (base radii)");
+      throw InputError(field::train("modules"),
+                       "mesh " + tm.gear_a + "-" + tm.gear_b +
+                           " needs the modules of both gears (base radii)");
     const unsigned int copies =
         std::max({member_copies(spec, a), member_copies(spec, b), member_copies(spec, c)});
     for (const std::size_t i : {a, b, c})
       if (copies % member_copies(spec, i) != 0)
-        throw InputError("Train/planets", "mesh " + tm.gear_a + "-" + tm.gear_b + "/" + tm.frame +
-                                              ": copies of its members do not divide");
+        throw InputError(field::train("planets"), "mesh " + tm.gear_a + "-" + tm.gear_b + "/" +
+                                                      tm.frame +
+                                                      ": copies of its members do not divide");
     // A whole-revolution table (docs/faults.md) follows one faulty tooth through one pair; the
     // copies of a planetary mesh meet that tooth at different times, which one table with one
     // phase per copy does not say.

@@ -1,6 +1,7 @@
 #include "kinematics/automatic_sizes.h"
 
 #include "errors/format.h"
+#include "kinematics/fields.h"
 
 #include <cmath>
 
@@ -95,10 +96,10 @@ void resolve_automatic_sizes(GearPairSpec& spec, const AutomaticSizes& automatic
     spec.wheel.tip_diameter = geometry.wheel.tip_diameter;
 
   if (automatic.pinion_tip)
-    derived.push_back({gear_parameter_name(false, "tip diameter"), spec.pinion.tip_diameter,
+    derived.push_back({field::gear(false, "tip_diameter"), spec.pinion.tip_diameter,
                        builtin_teeth ? published_tip : standard_tip});
   if (automatic.wheel_tip)
-    derived.push_back({gear_parameter_name(true, "tip diameter"), spec.wheel.tip_diameter,
+    derived.push_back({field::gear(true, "tip_diameter"), spec.wheel.tip_diameter,
                        spec.wheel.internal
                            ? "the longest ring teeth that clear the pinion's involute by 'Gear "
                              "pair/ring tip margin'"
@@ -110,7 +111,7 @@ void resolve_automatic_sizes(GearPairSpec& spec, const AutomaticSizes& automatic
   {
     spec.pinion.bore_diameter =
         builtin_teeth ? builtin.pinion.bore_diameter : 0.5 * geometry.pinion.root_diameter;
-    derived.push_back({gear_parameter_name(false, "bore diameter"), spec.pinion.bore_diameter,
+    derived.push_back({field::gear(false, "bore_diameter"), spec.pinion.bore_diameter,
                        builtin_teeth ? builtin_bore : "half the root diameter d_f/2"});
   }
   if (automatic.wheel_bore)
@@ -122,7 +123,7 @@ void resolve_automatic_sizes(GearPairSpec& spec, const AutomaticSizes& automatic
     else
       spec.wheel.bore_diameter =
           builtin_teeth ? builtin.wheel.bore_diameter : 0.5 * geometry.wheel.root_diameter;
-    derived.push_back({gear_parameter_name(true, "bore diameter"), spec.wheel.bore_diameter,
+    derived.push_back({field::gear(true, "bore_diameter"), spec.wheel.bore_diameter,
                        spec.wheel.internal
                            ? "the ring's outer diameter: root diameter + 2·4·m_n (a rim of four "
                              "modules)"

@@ -24,7 +24,7 @@ bool is_split_path_pair(const GearPairSpec& spec);
 // One size the program derived instead of reading it: the parameter, the value, the rule.
 struct DerivedSize
 {
-  std::string parameter; // as the user writes it, e.g. "Gear pair/Pinion/bore diameter"
+  std::string parameter; // the field (kinematics/fields.h), e.g. "pinion.bore_diameter"
   double value = 0.;     // m
   std::string rule;      // the rule that gave it, in words
 };

@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "kinematics/fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,25 +22,25 @@ std::string millimetres(double metres)
 
 void check_gear(const GearSpec& gear, bool wheel)
 {
-  auto name = [&](const std::string& key) { return gear_parameter_name(wheel, key); };
+  auto name = [&](const std::string& member) { return field::gear(wheel, member); };
   if (gear.teeth < 3)
     throw InputError(name("teeth"), "must be at least 3, got " + std::to_string(gear.teeth));
   if (!(gear.normal_module > 0.))
-    throw InputError(name("module"), "must be positive");
+    throw InputError(name("normal_module"), "must be positive");
   if (!(gear.pressure_angle > 0. && gear.pressure_angle < 0.5 * pi / 2.))
-    throw InputError(name("pressure angle"), "must lie in (0°, 45°)");
+    throw InputError(name("pressure_angle"), "must lie in (0°, 45°)");
   if (!(std::abs(gear.helix_angle) < pi / 3.))
-    throw InputError(name("helix angle"), "must lie in (−60°, 60°)");
+    throw InputError(name("helix_angle"), "must lie in (−60°, 60°)");
   if (!(gear.face_width > 0.))
-    throw InputError(name("face width"), "must be positive");
+    throw InputError(name("face_width"), "must be positive");
   if (!(gear.tip_diameter >= 0.))
-    throw InputError(name("tip diameter"), "must be 0 (standard) or positive");
+    throw InputError(name("tip_diameter"), "must be 0 (standard) or positive");
   if (!(gear.addendum_coefficient > 0.) || !(gear.dedendum_coefficient > 0.) ||
       !(gear.root_radius_coefficient >= 0.))
-    throw InputError(name("dedendum coefficient"), "basic rack coefficients must be positive");
+    throw InputError(name("dedendum_coefficient"), "basic rack coefficients must be positive");
   if (!(gear.dedendum_coefficient >
         gear.root_radius_coefficient * (1. - std::sin(gear.pressure_angle))))
-    throw InputError(name("root radius coefficient"),
+    throw InputError(name("root_radius_coefficient"),
                      "the rack tip round does not fit into the rack dedendum");
 }
 
@@ -77,11 +78,11 @@ void check_contact_ratio(const GearPairGeometry& result)
             "action (no path of "
             "contact)";
   if (result.spec.centre_distance > 0. && result.backlash > 0.)
-    throw InputError("Gear pair/centre distance", millimetres(result.centre_distance) +
-                                                      " exceeds the zero-backlash distance "
-                                                      "(backlash " +
-                                                      millimetres(result.backlash) + "): " + path);
-  throw InputError(gear_parameter_name(false, "tip diameter"),
+    throw InputError(field::centre_distance, millimetres(result.centre_distance) +
+                                                 " exceeds the zero-backlash distance "
+                                                 "(backlash " +
+                                                 millimetres(result.backlash) + "): " + path);
+  throw InputError(field::gear(false, "tip_diameter"),
                    path + ": the tips are too short for continuous contact");
 }
 
@@ -94,9 +95,9 @@ void check_bore(const GearSpec& gear, bool wheel, double root_diameter)
   if (gear.bore_diameter == 0. || gear.internal)
     return;
   if (!(gear.bore_diameter > 0.))
-    throw InputError(gear_parameter_name(wheel, "bore diameter"), "must be 0 or positive");
+    throw InputError(field::gear(wheel, "bore_diameter"), "must be 0 or positive");
   if (gear.internal ? gear.bore_diameter <= root_diameter : gear.bore_diameter >= root_diameter)
-    throw InputError(gear_parameter_name(wheel, "bore diameter"),
+    throw InputError(field::gear(wheel, "bore_diameter"),
                      millimetres(gear.bore_diameter) + " lies " +
                          (gear.internal ? "inside" : "outside") + " the root circle " +
                          millimetres(root_diameter) + ": no gear body is left");
@@ -105,7 +106,9 @@ void check_bore(const GearSpec& gear, bool wheel, double root_diameter)
 
 std::string gear_parameter_name(bool wheel, const std::string& key)
 {
-  return std::string("Gear pair/") + (wheel ? "Wheel/" : "Pinion/") + key;
+  std::string member = key == "module" ? "normal_module" : key;
+  std::replace(member.begin(), member.end(), ' ', '_');
+  return field::gear(wheel, member);
 }
 
 double involute(double angle)
@@ -164,37 +167,36 @@ void check_pair_spec(const GearPairSpec& spec)
   check_gear(spec.pinion, false);
   check_gear(spec.wheel, true);
   if (spec.pinion.internal)
-    throw InputError(gear_parameter_name(false, "internal"),
+    throw InputError(field::gear(false, "internal"),
                      "the pinion must be external (make the wheel the ring gear)");
   const GearSpec& g1 = spec.pinion;
   const GearSpec& g2 = spec.wheel;
   if (g1.normal_module != g2.normal_module)
-    throw InputError(gear_parameter_name(true, "module"),
+    throw InputError(field::gear(true, "normal_module"),
                      "differs from the pinion's: meshing gears share the normal module");
   if (g1.pressure_angle != g2.pressure_angle)
-    throw InputError(gear_parameter_name(true, "pressure angle"),
+    throw InputError(field::gear(true, "pressure_angle"),
                      "differs from the pinion's: meshing gears share the basic rack");
   // Meshing external helical gears have opposite hands, internal ones the same
   // hand; the pair is described by the pinion's β, the wheel's must have the
   // same magnitude.
   if (std::abs(std::abs(g1.helix_angle) - std::abs(g2.helix_angle)) > 1e-12)
-    throw InputError(gear_parameter_name(true, "helix angle"),
-                     "differs in magnitude from the pinion's");
+    throw InputError(field::gear(true, "helix_angle"), "differs in magnitude from the pinion's");
   // The sign is the hand (ISO 21771): β > 0 right hand, β < 0 left hand.
   if (g1.helix_angle != 0. && !g2.internal && (g1.helix_angle > 0.) == (g2.helix_angle > 0.))
-    throw InputError(gear_parameter_name(true, "helix angle"),
+    throw InputError(field::gear(true, "helix_angle"),
                      "has the pinion's hand: an external pair meshes with opposite hands (β > 0 "
                      "right hand, β < 0 left hand; give the wheel −β)");
   if (g1.helix_angle != 0. && g2.internal && (g1.helix_angle > 0.) != (g2.helix_angle > 0.))
-    throw InputError(gear_parameter_name(true, "helix angle"),
+    throw InputError(field::gear(true, "helix_angle"),
                      "has the other hand than the pinion's: an internal pair meshes with the same "
                      "hand (β > 0 right hand, β < 0 left hand)");
   if (g2.internal && g2.teeth <= g1.teeth)
-    throw InputError(gear_parameter_name(true, "teeth"),
+    throw InputError(field::gear(true, "teeth"),
                      "an internal wheel needs more teeth than its pinion (" +
                          std::to_string(g2.teeth) + " ≤ " + std::to_string(g1.teeth) + ")");
   if (!(spec.centre_distance >= 0.))
-    throw InputError("Gear pair/centre distance", "must be 0 (from the shifts) or positive");
+    throw InputError(field::centre_distance, "must be 0 (from the shifts) or positive");
 }
 
 // The pair's basic quantities with the DIN 3960 signs: the internal wheel has
@@ -256,9 +258,8 @@ void set_working_pressure_angle(const GearPairSpec& spec, const SignedPair& p,
   const double inv_alpha_zero_backlash =
       involute(p.alpha_t) + 2. * std::tan(p.alpha_n) * p.x_sum / (p.z1 + p.z2);
   if (!(inv_alpha_zero_backlash > 0.))
-    throw InputError(gear_parameter_name(true, "profile shift"),
-                     "x1 + x2 = " + format_number(p.x_sum, 4) +
-                         " leaves no working pressure angle");
+    throw InputError(field::gear(true, "profile_shift"), "x1 + x2 = " + format_number(p.x_sum, 4) +
+                                                             " leaves no working pressure angle");
   const double reference_centre_distance = 0.5 * (p.d1 + p.d2);
   result.reference_centre_distance = std::abs(reference_centre_distance);
 
@@ -273,7 +274,7 @@ void set_working_pressure_angle(const GearPairSpec& spec, const SignedPair& p,
     const double cos_alpha_wt =
         std::abs(reference_centre_distance) * std::cos(p.alpha_t) / spec.centre_distance;
     if (!(cos_alpha_wt > 0.2 && cos_alpha_wt < 1.))
-      throw InputError("Gear pair/centre distance",
+      throw InputError(field::centre_distance,
                        millimetres(spec.centre_distance) +
                            " is incompatible with the reference centre distance " +
                            millimetres(std::abs(reference_centre_distance)));
@@ -284,7 +285,7 @@ void set_working_pressure_angle(const GearPairSpec& spec, const SignedPair& p,
         (involute(alpha_wt) - involute(p.alpha_t)) * (p.z1 + p.z2) / (2. * std::tan(p.alpha_n));
     result.backlash = 2. * p.m_n * std::sin(p.alpha_n) * (x_sum_zero_backlash - p.x_sum);
     if (result.backlash < -1e-9)
-      throw InputError("Gear pair/centre distance",
+      throw InputError(field::centre_distance,
                        millimetres(spec.centre_distance) +
                            " is too small for the profile shifts (negative backlash " +
                            millimetres(result.backlash) + ")");
@@ -310,7 +311,7 @@ void check_tips_and_bores(const GearPairSpec& spec, const SignedPair& p)
     // first.
     const bool tip_beyond_root = g.internal ? std::abs(da) >= std::abs(df) : da <= df;
     if (g.tip_diameter > 0. && tip_beyond_root)
-      throw InputError(gear_parameter_name(wheel, "module"),
+      throw InputError(field::gear(wheel, "normal_module"),
                        format_number(g.normal_module * 1e3, 4) + " mm with " +
                            std::to_string(g.teeth) + " teeth puts the root circle at " +
                            millimetres(std::abs(df)) + ", " + (g.internal ? "inside" : "outside") +
@@ -318,13 +319,13 @@ void check_tips_and_bores(const GearPairSpec& spec, const SignedPair& p)
                            " (tip diameter auto takes the standard tip of this module)");
     // A tip inside the base circle has no involute to run on.
     if (!(std::abs(da) > std::abs(db)))
-      throw InputError(gear_parameter_name(wheel, "tip diameter"),
-                       millimetres(std::abs(da)) + " is not outside the base circle " +
-                           millimetres(std::abs(db)));
+      throw InputError(field::gear(wheel, "tip_diameter"), millimetres(std::abs(da)) +
+                                                               " is not outside the base circle " +
+                                                               millimetres(std::abs(db)));
     if (!(g.internal ? std::abs(da) < std::abs(df) : da > df))
-      throw InputError(gear_parameter_name(wheel, "tip diameter"),
-                       millimetres(std::abs(da)) + " lies beyond the root circle " +
-                           millimetres(std::abs(df)));
+      throw InputError(field::gear(wheel, "tip_diameter"), millimetres(std::abs(da)) +
+                                                               " lies beyond the root circle " +
+                                                               millimetres(std::abs(df)));
     check_bore(g, wheel, std::abs(df));
   }
 }
@@ -356,10 +357,9 @@ void check_tip_thickness(const GearPairSpec& spec, const SignedPair& p)
     const GearSpec& g = wheel ? spec.wheel : spec.pinion;
     const double tip_thickness = normal_tip_thickness(g, p, wheel);
     if (!(tip_thickness > 0.))
-      throw InputError(
-          gear_parameter_name(wheel, g.tip_diameter > 0. ? "tip diameter" : "profile shift"),
-          "the tooth comes to a point before the tip circle (tip thickness " +
-              millimetres(tip_thickness) + ")");
+      throw InputError(field::gear(wheel, g.tip_diameter > 0. ? "tip_diameter" : "profile_shift"),
+                       "the tooth comes to a point before the tip circle (tip thickness " +
+                           millimetres(tip_thickness) + ")");
   }
 }
 
@@ -408,13 +408,13 @@ std::pair<double, double> check_undercut_and_interference(const GearPairSpec& sp
         z * std::sin(p.alpha_t) * std::sin(p.alpha_t) / (2. * std::cos(p.beta));
     (wheel ? result.wheel : result.pinion).minimum_profile_shift = x_min;
     if ((wheel ? form2 : form1) < 0.)
-      throw InputError(gear_parameter_name(wheel, "profile shift"),
+      throw InputError(field::gear(wheel, "profile_shift"),
                        "x = " + format_number(g.profile_shift, 4) +
                            " undercuts the tooth (x_min = " + format_number(x_min, 4) +
                            " for z = " + std::to_string(g.teeth) + ")");
   }
   if (result.contact_start < form1)
-    throw InputError(gear_parameter_name(true, "tip diameter"),
+    throw InputError(field::gear(true, "tip_diameter"),
                      "the wheel tip reaches below the pinion's involute (involute "
                      "interference: contact starts " +
                          millimetres(result.contact_start) +
@@ -426,7 +426,7 @@ std::pair<double, double> check_undercut_and_interference(const GearPairSpec& sp
                                 "wheel tip diameter"));
   const double wheel_roll_at_end = wheel_roll_length(p, result, result.contact_end);
   if (spec.wheel.internal ? wheel_roll_at_end > form2 : wheel_roll_at_end < form2)
-    throw InputError(gear_parameter_name(false, "tip diameter"),
+    throw InputError(field::gear(false, "tip_diameter"),
                      "the pinion tip reaches beyond the wheel's involute (involute "
                      "interference at roll length " +
                          millimetres(wheel_roll_at_end) + ", wheel form limit " +
@@ -448,11 +448,11 @@ void check_tip_clearances(const GearPairSpec& spec, const SignedPair& p, GearPai
   result.tip_clearance_wheel =
       internal ? ra2 - result.centre_distance - rf1 : result.centre_distance - ra2 - rf1;
   if (result.tip_clearance_pinion < 0.)
-    throw InputError(gear_parameter_name(false, "tip diameter"),
+    throw InputError(field::gear(false, "tip_diameter"),
                      "the pinion tip hits the wheel root (clearance " +
                          millimetres(result.tip_clearance_pinion) + ")");
   if (result.tip_clearance_wheel < 0.)
-    throw InputError(gear_parameter_name(true, "tip diameter"),
+    throw InputError(field::gear(true, "tip_diameter"),
                      "the wheel tip hits the pinion root (clearance " +
                          millimetres(result.tip_clearance_wheel) + ")");
 }
@@ -476,7 +476,7 @@ void check_internal_tip_interference(const GearPairSpec& spec, const SignedPair&
   const double a = result.centre_distance;
   const int difference = spec.wheel.teeth - spec.pinion.teeth;
   if (ra1 - a >= ra2)
-    throw InputError(gear_parameter_name(true, "teeth"),
+    throw InputError(field::gear(true, "teeth"),
                      "a tooth difference of " + std::to_string(difference) +
                          " is too small for these tips: the pinion's tip circle (d_a1 = " +
                          millimetres(2. * ra1) + " at a = " + millimetres(a) +
@@ -496,7 +496,7 @@ void check_internal_tip_interference(const GearPairSpec& spec, const SignedPair&
       theta1 * spec.pinion.teeth / spec.wheel.teeth + inv(alpha_w) - inv(alpha_a2) - theta2;
   if (margin < 0.)
     throw InputError(
-        gear_parameter_name(true, "teeth"),
+        field::gear(true, "teeth"),
         "a tooth difference of " + std::to_string(difference) +
             " gives tip interference away from the mesh: the ring's tips cut the "
             "pinion's tips as they leave (trochoid interference, margin " +
@@ -607,7 +607,7 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
 
 double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
 {
-  const std::string parameter = gear_parameter_name(true, "tip diameter");
+  const std::string parameter = field::gear(true, "tip_diameter");
   if (!spec.wheel.internal)
     throw InputError(parameter, "an automatic tip is offered for internal wheels only");
   check_gear(spec.wheel, true);
@@ -634,8 +634,8 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin)
     {
       // A failure that names another parameter than the ring's tip (a pointed pinion, a bore,
       // the tooth difference) is the pair's own: no tip can mend it.
-      if (e.parameter() != parameter &&
-          e.parameter() != gear_parameter_name(false, "tip diameter") && !tooth_difference)
+      if (e.parameter() != parameter && e.parameter() != field::gear(false, "tip_diameter") &&
+          !tooth_difference)
         tooth_difference = e;
       return false;
     }

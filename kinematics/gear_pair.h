@@ -118,8 +118,9 @@ struct GearPairGeometry
   double single_contact_end() const;   // m, D = A + p_bt
 };
 
-// Names of the parameters as the user writes them ("Gear pair/Pinion/teeth"): InputError
-// names these so the message points at the line to fix.
+// The field (kinematics/fields.h) of a per-gear key written the user's way ("tip diameter",
+// "module"): field::gear(wheel, "tip_diameter"). For the callers in geometry/ and stiffness/
+// that still name a gear's field by its key; kinematics/ names its fields directly.
 std::string gear_parameter_name(bool wheel, const std::string& key);
 
 // Checks the pair and derives every quantity above. Throws InputError (naming the parameter)

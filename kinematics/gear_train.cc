@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
+#include "kinematics/fields.h"
 #include "kinematics/gear_pair.h"
 #include "kinematics/gear_train_internal.h"
 
@@ -75,7 +76,7 @@ double parse_number(const std::string& text, const std::string& parameter)
 std::vector<std::pair<std::string, std::string>> parse_assignments(const std::string& text,
                                                                    const std::string& key)
 {
-  const std::string parameter = "Train/" + key;
+  const std::string parameter = field::train(key);
   std::vector<std::pair<std::string, std::string>> entries;
   if (trim(text).empty())
     return entries;
@@ -98,7 +99,7 @@ std::vector<std::string> parse_names(const std::string& text, const std::string&
     return names;
   for (const std::string& name : split(text, ','))
   {
-    check_name(name, "Train/" + key);
+    check_name(name, field::train(key));
     names.push_back(name);
   }
   return names;
@@ -120,7 +121,7 @@ void check_mesh_frames(const GearTrainSpec& spec, const TrainSolution& solution)
         continue;
       const std::string frame_axis =
           carrier_of(mesh.frame).empty() ? "the housing" : carrier_of(mesh.frame);
-      throw InputError("Train/planets",
+      throw InputError(field::train("planets"),
                        "gear '" + name + "' rides on " +
                            (carrier.empty() ? std::string("the housing") : "'" + carrier + "'") +
                            " but its mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" + mesh.frame +
@@ -129,9 +130,9 @@ void check_mesh_frames(const GearTrainSpec& spec, const TrainSolution& solution)
     }
   for (const TrainMember& member : spec.members)
     if (member.copies > 1 && member.carrier.empty())
-      throw InputError("Train/planets", "member '" + member.name + "' has " +
-                                            std::to_string(member.copies) +
-                                            " copies but no carrier to ride on");
+      throw InputError(field::train("planets"), "member '" + member.name + "' has " +
+                                                    std::to_string(member.copies) +
+                                                    " copies but no carrier to ride on");
 }
 
 void check_members(const GearTrainSpec& spec)
@@ -140,17 +141,17 @@ void check_members(const GearTrainSpec& spec)
   for (const TrainMember& member : spec.members)
   {
     if (member.name == housing_name)
-      throw InputError("Train/gears", "'housing' is reserved for the fixed frame");
+      throw InputError(field::train("gears"), "'housing' is reserved for the fixed frame");
     if (!seen.insert(member.name).second)
-      throw InputError("Train/gears", "member '" + member.name + "' is declared twice");
+      throw InputError(field::train("gears"), "member '" + member.name + "' is declared twice");
     if (member.teeth != 0 && std::abs(member.teeth) < 3)
-      throw InputError("Train/gears", "gear '" + member.name + "' has " +
-                                          std::to_string(member.teeth) +
-                                          " teeth; at least 3 are needed");
+      throw InputError(field::train("gears"), "gear '" + member.name + "' has " +
+                                                  std::to_string(member.teeth) +
+                                                  " teeth; at least 3 are needed");
     if (member.copies == 0)
-      throw InputError("Train/planets", "member '" + member.name + "' has zero copies");
+      throw InputError(field::train("planets"), "member '" + member.name + "' has zero copies");
     if (member.module < 0. || member.mass < 0. || member.moment_of_inertia < 0.)
-      throw InputError("Train/modules",
+      throw InputError(field::train("modules"),
                        "member '" + member.name + "' has a negative module, mass or inertia");
   }
 }
@@ -158,7 +159,7 @@ void check_members(const GearTrainSpec& spec)
 void require_member(const TrainSolution& solution, const std::string& name, const std::string& key)
 {
   if (std::find(solution.names.begin(), solution.names.end(), name) == solution.names.end())
-    throw InputError("Train/" + key, "unknown member '" + name + "'");
+    throw InputError(field::train(key), "unknown member '" + name + "'");
 }
 
 // Every member named by a carrier, connection, fixed member, input or the output exists.
@@ -169,7 +170,7 @@ void check_references(const GearTrainSpec& spec, const TrainSolution& solution)
     {
       require_member(solution, member.carrier, "planets");
       if (member.carrier == member.name)
-        throw InputError("Train/planets", "'" + member.name + "' cannot carry itself");
+        throw InputError(field::train("planets"), "'" + member.name + "' cannot carry itself");
     }
   for (const auto& [a, b] : spec.connections)
   {
@@ -192,26 +193,27 @@ void check_mesh(const GearTrainSpec& spec, const TrainSolution& solution, const 
   require_member(solution, mesh.gear_b, "meshes");
   require_member(solution, mesh.frame, "meshes");
   if (mesh.gear_a == mesh.gear_b || mesh.frame == mesh.gear_a || mesh.frame == mesh.gear_b)
-    throw InputError("Train/meshes", "mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" + mesh.frame +
-                                         " names a member twice");
+    throw InputError(field::train("meshes"), "mesh " + mesh.gear_a + "-" + mesh.gear_b + "/" +
+                                                 mesh.frame + " names a member twice");
   for (const std::string& name : {mesh.gear_a, mesh.gear_b})
     if (name == housing_name || member_of(spec, solution, name).teeth == 0)
-      throw InputError("Train/meshes", "'" + name + "' in mesh " + mesh.gear_a + "-" + mesh.gear_b +
-                                           " has no teeth (list it in gears)");
+      throw InputError(field::train("meshes"), "'" + name + "' in mesh " + mesh.gear_a + "-" +
+                                                   mesh.gear_b +
+                                                   " has no teeth (list it in gears)");
   const TrainMember& a = member_of(spec, solution, mesh.gear_a);
   const TrainMember& b = member_of(spec, solution, mesh.gear_b);
   if (a.teeth < 0 && b.teeth < 0)
-    throw InputError("Train/meshes",
+    throw InputError(field::train("meshes"),
                      "two internal gears " + a.name + " and " + b.name + " cannot mesh");
   const TrainMember& inner = a.teeth < 0 ? b : a;
   const TrainMember& outer = a.teeth < 0 ? a : b;
   if (outer.teeth < 0 && -outer.teeth <= inner.teeth)
-    throw InputError("Train/gears", "internal gear " + outer.name + " (" +
-                                        std::to_string(-outer.teeth) +
-                                        " teeth) must have more teeth than " + inner.name + " (" +
-                                        std::to_string(inner.teeth) + ") that runs inside it");
+    throw InputError(field::train("gears"),
+                     "internal gear " + outer.name + " (" + std::to_string(-outer.teeth) +
+                         " teeth) must have more teeth than " + inner.name + " (" +
+                         std::to_string(inner.teeth) + ") that runs inside it");
   if (a.module > 0. && b.module > 0. && std::abs(a.module - b.module) > 1e-12)
-    throw InputError("Train/modules",
+    throw InputError(field::train("modules"),
                      "gears " + a.name + " and " + b.name + " mesh but have different modules");
 }
 
@@ -237,17 +239,17 @@ void set_orbit_radii(const GearTrainSpec& spec, TrainSolution& solution)
     const TrainMember& central = a_planet ? b : a;
     solution.mesh_copies[m] = planet.copies;
     if (planet.teeth < 0)
-      throw InputError("Train/planets", "planet " + planet.name + " is an internal gear");
+      throw InputError(field::train("planets"), "planet " + planet.name + " is an internal gear");
     if (planet.module == 0. || central.module == 0.)
       continue;
     const double radius = working_centre_distance(central, planet, spec.pressure_angle);
     double& known = solution.orbit_radius[solution.index(planet.name)];
     if (known > 0. && std::abs(known - radius) > 1e-9)
-      throw InputError("Train/gears", "the train does not close: planet " + planet.name + " sits " +
-                                          format_number(known * 1e3, 5) + " mm from the axis of " +
-                                          mesh.frame + " by one mesh and " +
-                                          format_number(radius * 1e3, 5) + " mm by mesh " +
-                                          mesh.gear_a + "-" + mesh.gear_b);
+      throw InputError(field::train("gears"),
+                       "the train does not close: planet " + planet.name + " sits " +
+                           format_number(known * 1e3, 5) + " mm from the axis of " + mesh.frame +
+                           " by one mesh and " + format_number(radius * 1e3, 5) + " mm by mesh " +
+                           mesh.gear_a + "-" + mesh.gear_b);
     known = radius;
   }
   // Members rigid with a planet and riding on the same carrier share its axis.
@@ -280,7 +282,7 @@ std::size_t TrainSolution::index(const std::string& member) const
 {
   const auto found = std::find(names.begin(), names.end(), member);
   if (found == names.end())
-    throw InputError("Train", "unknown member '" + member + "'");
+    throw InputError(field::train_members, "unknown member '" + member + "'");
   return static_cast<std::size_t>(found - names.begin());
 }
 
@@ -351,11 +353,11 @@ SpeedEquations speed_equations(const GearTrainSpec& spec, const TrainSolution& s
   for (std::size_t i = 0; i < solution.names.size(); ++i)
     if (kernel.row(i).norm() > 1e-9)
       free_members += (free_members.empty() ? "" : ", ") + solution.names[i];
-  throw InputError("Train/inputs", "under-constrained: the train has " +
-                                       std::to_string(solution.degrees_of_freedom) +
-                                       " degree(s) of freedom but " +
-                                       std::to_string(spec.inputs.size()) +
-                                       " input(s) fix fewer; undetermined: " + free_members);
+  throw InputError(field::train("inputs"),
+                   "under-constrained: the train has " +
+                       std::to_string(solution.degrees_of_freedom) + " degree(s) of freedom but " +
+                       std::to_string(spec.inputs.size()) +
+                       " input(s) fix fewer; undetermined: " + free_members);
 }
 } // namespace
 
@@ -364,7 +366,7 @@ TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
   TrainSolution solution;
   check_structure(spec, solution);
   if (spec.inputs.empty())
-    throw InputError("Train/inputs", "no input speed given");
+    throw InputError(field::train("inputs"), "no input speed given");
 
   const std::size_t n = solution.names.size();
   const SpeedEquations equations = speed_equations(spec, solution);
@@ -386,20 +388,20 @@ TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
   if ((matrix * speeds - right_hand_side).norm() > 1e-9 * scale)
   {
     if (solution.degrees_of_freedom == 0)
-      throw InputError("Train/meshes",
+      throw InputError(field::train("meshes"),
                        "over-constrained: meshes, connections and fixed members lock the "
                        "train (it does not close with any motion)");
-    throw InputError("Train/inputs", "over-constrained: " + std::to_string(spec.inputs.size()) +
-                                         " input speeds contradict a train with " +
-                                         std::to_string(solution.degrees_of_freedom) +
-                                         " degree(s) of freedom");
+    throw InputError(field::train("inputs"),
+                     "over-constrained: " + std::to_string(spec.inputs.size()) +
+                         " input speeds contradict a train with " +
+                         std::to_string(solution.degrees_of_freedom) + " degree(s) of freedom");
   }
   solution.speeds.assign(speeds.data(), speeds.data() + n);
   if (!spec.output.empty())
   {
     const double output_speed = solution.speed(spec.output);
     if (std::abs(output_speed) < 1e-12 * scale)
-      throw InputError("Train/output", "'" + spec.output + "' does not turn");
+      throw InputError(field::train("output"), "'" + spec.output + "' does not turn");
     solution.ratio = spec.inputs.front().second / output_speed;
   }
   return solution;
@@ -418,11 +420,11 @@ double epicyclic_efficiency(double base_ratio, double base_efficiency)
 CarrierMethodEfficiency carrier_method_efficiency(const GearTrainSpec& spec, double tooth_friction)
 {
   if (spec.fixed.size() != 1 || spec.inputs.size() != 1 || spec.output.empty())
-    throw InputError("Train/fixed", "the carrier method needs one fixed member, one input "
-                                    "and an output carrier");
+    throw InputError(field::train("fixed"), "the carrier method needs one fixed member, one input "
+                                            "and an output carrier");
   if (std::none_of(spec.meshes.begin(), spec.meshes.end(),
                    [&](const TrainMesh& mesh) { return mesh.frame == spec.output; }))
-    throw InputError("Train/output", "the carrier method needs the output to be a carrier");
+    throw InputError(field::train("output"), "the carrier method needs the output to be a carrier");
   const TrainSolution solution = solve_train_kinematics(spec);
   const std::string& fixed = spec.fixed.front();
   const double carrier_speed = solution.speed(spec.output);
@@ -455,7 +457,7 @@ std::vector<InertiaTerm> inertia_terms(const GearTrainSpec& spec, const TrainSol
 {
   const double reference = solution.speed(member);
   if (reference == 0.)
-    throw InputError("Train/reduce inertia to", "'" + member + "' does not turn");
+    throw InputError(field::train("reduce_inertia_to"), "'" + member + "' does not turn");
   std::vector<InertiaTerm> terms;
   for (std::size_t i = 0; i < spec.members.size(); ++i)
   {
@@ -475,11 +477,12 @@ std::vector<InertiaTerm> inertia_terms(const GearTrainSpec& spec, const TrainSol
     for (unsigned int depth = 0; !spec.members[current].carrier.empty(); ++depth)
     {
       if (depth > spec.members.size())
-        throw InputError("Train/planets", "carriers form a loop at '" + body.name + "'");
+        throw InputError(field::train("planets"), "carriers form a loop at '" + body.name + "'");
       const double radius = solution.orbit_radius[current];
       if (radius == 0. && body.mass > 0.)
-        throw InputError("Train/modules", "the orbit radius of '" + spec.members[current].name +
-                                              "' is unknown: give the modules of its mesh");
+        throw InputError(field::train("modules"), "the orbit radius of '" +
+                                                      spec.members[current].name +
+                                                      "' is unknown: give the modules of its mesh");
       const std::size_t carrier = solution.index(spec.members[current].carrier);
       velocity_squared += std::pow(solution.speeds[carrier] * radius, 2);
       if (carrier == solution.names.size() - 1)
@@ -523,7 +526,7 @@ public:
   TrainMember& existing(const std::string& name, const std::string& key)
   {
     if (!index.count(name))
-      throw InputError("Train/" + key,
+      throw InputError(field::train(key),
                        "unknown member '" + name + "' (declare it in gears or carriers)");
     return spec.members[index[name]];
   }
@@ -537,22 +540,22 @@ void parse_gears_and_carriers(const GearTrainText& text, MemberTable& members)
 {
   for (const auto& [name, value] : parse_assignments(text.gears, "gears"))
   {
-    const double teeth = parse_number(value, "Train/gears");
+    const double teeth = parse_number(value, field::train("gears"));
     // Bounded before the cast to int (1e20 overflowed it); as `dynamics`' driver teeth.
     if (teeth == 0. || teeth != std::round(teeth) || std::abs(teeth) > max_gear_teeth)
-      throw InputError("Train/gears", "gear '" + name +
-                                          "' needs a non-zero whole number of "
-                                          "teeth (negative: internal) up to " +
-                                          std::to_string(max_gear_teeth) + " in size, got " +
-                                          value);
+      throw InputError(field::train("gears"), "gear '" + name +
+                                                  "' needs a non-zero whole number of "
+                                                  "teeth (negative: internal) up to " +
+                                                  std::to_string(max_gear_teeth) +
+                                                  " in size, got " + value);
     if (members.has(name))
-      throw InputError("Train/gears", "gear '" + name + "' is listed twice");
+      throw InputError(field::train("gears"), "gear '" + name + "' is listed twice");
     members.declare(name).teeth = static_cast<int>(teeth);
   }
   for (const std::string& name : parse_names(text.carriers, "carriers"))
   {
     if (members.has(name))
-      throw InputError("Train/carriers", "'" + name + "' is already a gear");
+      throw InputError(field::train("carriers"), "'" + name + "' is already a gear");
     members.declare(name);
   }
 }
@@ -564,18 +567,19 @@ void parse_planets(const std::string& text, MemberTable& members)
   {
     const auto star = value.find('*');
     const std::string carrier = trim(value.substr(0, star));
-    check_name(carrier, "Train/planets");
+    check_name(carrier, field::train("planets"));
     TrainMember& planet = members.existing(name, "planets");
     members.existing(carrier, "planets");
     planet.carrier = carrier;
     if (star == std::string::npos)
       continue;
-    const double copies = parse_number(trim(value.substr(star + 1)), "Train/planets");
+    const double copies = parse_number(trim(value.substr(star + 1)), field::train("planets"));
     if (!(copies >= 1.) || copies != std::round(copies))
-      throw InputError("Train/planets", "copies of '" + name + "' must be a whole number ≥ 1");
+      throw InputError(field::train("planets"),
+                       "copies of '" + name + "' must be a whole number ≥ 1");
     // Before any member is allocated per copy (2·10⁹ copies filled 24 GB).
     if (copies > limits::max_train_members)
-      throw InputError("Train/planets",
+      throw InputError(field::train("planets"),
                        "'" + name + "' has " + trim(value.substr(star + 1)) +
                            " copies, more than the " + std::to_string(limits::max_train_members) +
                            " members a train model holds (limit, docs/limits.md; a planetary "
@@ -599,7 +603,8 @@ std::vector<TrainMesh> parse_meshes(const std::string& text, MemberTable& member
       mesh.frame = trim(entry.substr(slash + 1));
     const auto dash = pair.find('-');
     if (dash == std::string::npos)
-      throw InputError("Train/meshes", "entry '" + entry + "' is not of the form a-b/frame");
+      throw InputError(field::train("meshes"),
+                       "entry '" + entry + "' is not of the form a-b/frame");
     mesh.gear_a = trim(pair.substr(0, dash));
     mesh.gear_b = trim(pair.substr(dash + 1));
     for (const std::string& name : {mesh.gear_a, mesh.gear_b})
@@ -622,7 +627,7 @@ std::vector<std::pair<std::string, std::string>> parse_connections(const std::st
   {
     const auto equals = entry.find('=');
     if (equals == std::string::npos)
-      throw InputError("Train/connections", "entry '" + entry + "' is not of the form a=b");
+      throw InputError(field::train("connections"), "entry '" + entry + "' is not of the form a=b");
     const std::string a = trim(entry.substr(0, equals));
     const std::string b = trim(entry.substr(equals + 1));
     members.existing(a, "connections");
@@ -638,9 +643,9 @@ void parse_nonnegative(const std::string& text, const std::string& key, const st
 {
   for (const auto& [name, value] : parse_assignments(text, key))
   {
-    const double number = parse_number(value, "Train/" + key);
+    const double number = parse_number(value, field::train(key));
     if (number < 0.)
-      throw InputError("Train/" + key, what + " of '" + name + "' is negative");
+      throw InputError(field::train(key), what + " of '" + name + "' is negative");
     members.existing(name, key).*field = number;
   }
 }
@@ -653,9 +658,9 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
   parse_gears_and_carriers(text, members);
   for (const auto& [name, value] : parse_assignments(text.modules, "modules"))
   {
-    const double module = parse_number(value, "Train/modules");
+    const double module = parse_number(value, field::train("modules"));
     if (!(module > 0.))
-      throw InputError("Train/modules", "module of '" + name + "' must be positive");
+      throw InputError(field::train("modules"), "module of '" + name + "' must be positive");
     members.existing(name, "modules").module = module * 1e-3;
   }
   parse_planets(text.planets, members);
@@ -669,23 +674,23 @@ GearTrainSpec parse_gear_train(const GearTrainText& text)
   for (const auto& [name, value] : parse_assignments(text.inputs, "inputs"))
   {
     members.existing(name, "inputs");
-    spec.inputs.emplace_back(name, parse_number(value, "Train/inputs") * rpm);
+    spec.inputs.emplace_back(name, parse_number(value, field::train("inputs")) * rpm);
   }
   spec.output = trim(text.output);
   if (!spec.output.empty())
     members.existing(spec.output, "output");
   parse_nonnegative(text.inertias, "inertias", "inertia", members, &TrainMember::moment_of_inertia);
   parse_nonnegative(text.masses, "masses", "mass", members, &TrainMember::mass);
-  for (const auto& [name, value] : parse_assignments(text.profile_shifts, "profile shifts"))
+  for (const auto& [name, value] : parse_assignments(text.profile_shifts, "profile_shifts"))
   {
-    TrainMember& gear = members.existing(name, "profile shifts");
-    const double shift = parse_number(value, "Train/profile shifts");
+    TrainMember& gear = members.existing(name, "profile_shifts");
+    const double shift = parse_number(value, field::train("profile_shifts"));
     // The gear-pair command's range (app/kinematics/kinematics_parameters.cc): beyond it no tooth
     // exists.
     if (gear.teeth == 0 || !(std::abs(shift) <= 5.))
-      throw InputError("Train/profile shifts", gear.teeth == 0
-                                                   ? "'" + name + "' has no teeth to shift"
-                                                   : "x of '" + name + "' must lie in [-5, 5]");
+      throw InputError(field::train("profile_shifts"),
+                       gear.teeth == 0 ? "'" + name + "' has no teeth to shift"
+                                       : "x of '" + name + "' must lie in [-5, 5]");
     gear.profile_shift = shift;
   }
   return spec;
@@ -700,8 +705,8 @@ double working_centre_distance(const TrainMember& a, const TrainMember& b, doubl
   const double inv_working = involute(pressure_angle) +
                              2. * std::tan(pressure_angle) * shift_sum / double(a.teeth + b.teeth);
   if (!(inv_working > 0.))
-    throw InputError("Train/profile shifts", "the shifts of " + a.name + " and " + b.name +
-                                                 " leave no working pressure angle");
+    throw InputError(field::train("profile_shifts"), "the shifts of " + a.name + " and " + b.name +
+                                                         " leave no working pressure angle");
   return reference * std::cos(pressure_angle) / std::cos(inverse_involute(inv_working));
 }
 
@@ -741,7 +746,7 @@ GearTrainText builtin_train(const std::string& name)
         ""}}};
   const auto found = trains.find(name);
   if (found == trains.end())
-    throw InputError("Train/builtin", "unknown built-in train '" + name + "'");
+    throw InputError(field::train("builtin"), "unknown built-in train '" + name + "'");
   return found->second;
 }
 } // namespace gearstiff::kinematics

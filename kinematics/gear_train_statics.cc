@@ -4,6 +4,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
+#include "kinematics/fields.h"
 #include "kinematics/gear_pair.h"
 #include "kinematics/gear_train.h"
 #include "kinematics/gear_train_internal.h"
@@ -49,16 +50,16 @@ StaticsBodies statics_bodies(const GearTrainSpec& spec, const TrainSolution& sol
   for (const std::string& name : spec.fixed)
     b.grounded[b.bodies.find(solution.index(name))] = true;
   if (b.bodies.find(input) == b.bodies.find(output))
-    throw InputError("Train/output", "input and output are the same rigid body");
+    throw InputError(field::train("output"), "input and output are the same rigid body");
   if (b.held(output) || b.held(input))
-    throw InputError("Train/output", "input or output is held fixed");
+    throw InputError(field::train("output"), "input or output is held fixed");
 
   for (std::size_t i = 0; i < n; ++i)
     if (!b.held(i) && !b.equation_of.count(b.bodies.find(i)))
       b.equation_of.emplace(b.bodies.find(i), b.equation_of.size());
   const std::size_t meshes = spec.meshes.size();
   if (b.equation_of.size() != meshes + 1)
-    throw InputError("Train/output",
+    throw InputError(field::train("output"),
                      "statics undetermined: " + std::to_string(b.equation_of.size()) +
                          " free bodies for " + std::to_string(meshes) +
                          " mesh torques and one output torque (one degree of freedom needed)");
@@ -96,8 +97,8 @@ Eigen::VectorXd solve_torque_balances(const GearTrainSpec& spec, const TrainSolu
   Eigen::FullPivLU<Eigen::MatrixXd> lu(matrix);
   lu.setThreshold(1e-10);
   if (lu.rank() < static_cast<Eigen::Index>(meshes + 1))
-    throw InputError("Train/output", "statics undetermined: the torque equations are "
-                                     "singular for this input/output choice");
+    throw InputError(field::train("output"), "statics undetermined: the torque equations are "
+                                             "singular for this input/output choice");
   return lu.solve(right_hand_side);
 }
 
@@ -228,7 +229,7 @@ TrainStatics solve_train_statics(const GearTrainSpec& spec, const TrainSolution&
                                  double input_torque, double tooth_friction)
 {
   if (spec.inputs.size() != 1 || spec.output.empty())
-    throw InputError("Train/inputs", "statics need exactly one input and an output");
+    throw InputError(field::train("inputs"), "statics need exactly one input and an output");
   const std::size_t n = solution.names.size();
   const std::size_t input = solution.index(spec.inputs.front().first);
   const std::size_t output = solution.index(spec.output);

@@ -58,6 +58,19 @@ WINGS_ALLOWED = {
 }
 # Modules whose code must not include deal.II (they build without it).
 PLAIN = {"errors", "kinematics", "dynamics", "geometry"}
+# The naming contract (app/core/field_names.h): library code names its own fields, app/ maps them
+# to the parameter paths users write. A string literal that is such a path ("Train/output",
+# "Simulation/time step", or a section head "Train/" a key is appended to) in a library module
+# is counted; in the modules listed here it fails --check.
+NAMED_BY_FIELD = ["kinematics", "dynamics"]
+LIBRARIES = ["kinematics", "dynamics", "geometry", "fem", "contact", "stiffness"]
+USER_PATH = re.compile(r'"((?:[A-Z][a-z]+|ISO)(?: [A-Za-z0-9\']+)*)/([A-Za-z][A-Za-z0-9_\' ]*)?"')
+# The field helpers of kinematics/fields.h and dynamics/fields.h and the member lists app/ maps
+# (field_family over each list): a member a library names must be in its list.
+FIELD_LISTS = {"gear": ["gear_members"], "train": ["train_fields"],
+               "simulation": ["simulation_fields"], "iso6336": ["iso6336_fields"],
+               "speed_sweep": ["speed_sweep_fields"], "train_mesh": ["train_mesh_fields"]}
+FIELD_CALL = re.compile(r'field::(\w+)\((?:[^,()]+, )?"(\w+)"\)')
 FUNCTION_LIMIT = 80  # lines
 FILE_LIMIT = 900  # lines
 FILE_LIMITS = {"contact": 600}  # lines, stricter per module
@@ -303,11 +316,63 @@ def repeat_lines(sources):
     return out
 
 
+def user_paths(sources):
+    """module -> [(path, line, literal)] of the user parameter paths its code spells."""
+    found = defaultdict(list)
+    for path, lines in sources.items():
+        kind, module = family(path)
+        if kind != "production" or module not in LIBRARIES:
+            continue
+        for number, line in enumerate(lines, 1):
+            code = line.split("//")[0] if not line.lstrip().startswith("//") else ""
+            for match in USER_PATH.finditer(code):
+                found[module].append((path, number, match.group(0)))
+    return found
+
+
+def unlisted_fields(sources):
+    """(path, line, helper, member) of each field a library names that its list lacks."""
+    lists = defaultdict(set)
+    for header in ("kinematics/fields.h", "dynamics/fields.h"):
+        text = "\n".join(sources.get(header, []))
+        for name, body in re.findall(r"(\w+)\(\)\s*\{\s*static const std::vector<std::string> "
+                                     r"members = \{([^}]*)\}", text):
+            lists[name] |= set(re.findall(r'"(\w+)"', body))
+    missing = []
+    for path, lines in sources.items():
+        if family(path)[1] not in NAMED_BY_FIELD:
+            continue
+        for number, line in enumerate(lines, 1):
+            for helper, member in FIELD_CALL.findall(line):
+                allowed = set().union(*(lists[n] for n in FIELD_LISTS.get(helper, [])))
+                if helper in FIELD_LISTS and member not in allowed:
+                    missing.append((path, number, helper, member))
+    return missing
+
+
+def naming_lines(sources):
+    found = user_paths(sources)
+    counts = ", ".join(f"{m} {len(found.get(m, []))}" for m in LIBRARIES)
+    out = ["", "User parameter paths spelt in library code (string literals such as "
+               f'`"Train/output"`; app/ maps library fields to them): {counts}. Modules that name '
+               f"fields only (the check fails otherwise): {', '.join(NAMED_BY_FIELD)}."]
+    return out
+
+
+def naming_failures(sources):
+    found = user_paths(sources)
+    failures = [f"{p}:{n}: {lit} (library code names its field; app/ maps it)"
+                for m in NAMED_BY_FIELD for p, n, lit in found.get(m, [])]
+    failures += [f"{p}:{n}: field::{h}(\"{m}\") is in no member list of the fields headers, so "
+                 f"app/ does not map it" for p, n, h, m in unlisted_fields(sources)]
+    return failures
+
+
 def block():
     sources = {f: read_lines(f) for f in tree_files()}
     sizes = count_sizes(sources)
     out = (size_lines(sizes) + house_lines(sources, sizes) + size_limit_lines(sources)
-           + repeat_lines(sources))
+           + repeat_lines(sources) + naming_lines(sources))
     return "\n".join(out) + "\n"
 
 
@@ -326,6 +391,12 @@ def main():
     group.add_argument("--write", action="store_true", help="rewrite the doc's block")
     args = parser.parse_args()
     generated = block()
+    if args.check:
+        failures = naming_failures({f: read_lines(f) for f in tree_files()})
+        for failure in failures:
+            print(failure)
+        if failures:
+            return 1
     if not (args.check or args.write):
         sys.stdout.write(generated)
         return 0

@@ -119,7 +119,7 @@ def sweep(path, png):
         for j, member in enumerate(("carrier", "ring", "sun")):
             axes[1].plot(speed, [c["bearing_force_%s [N]" % member][i] for i in rows], style,
                          ms=3, color="C%d" % j, label="%s %s" % (member, tag))
-            axes[2].plot(speed, [c["orbit_%s [µm]" % member][i] for i in rows], style, ms=3,
+            axes[2].plot(speed, [c["orbit_%s [um]" % member][i] for i in rows], style, ms=3,
                          color="C%d" % j, label="%s %s" % (member, tag))
     axes[0].set_ylabel("K_v max [-]")
     axes[1].set_ylabel("largest bearing force [N]")

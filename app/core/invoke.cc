@@ -1,5 +1,6 @@
 #include "app/core/invoke.h"
 
+#include "app/core/field_names.h"
 #include "app/core/parameter_file_check.h"
 #include "app/core/parameter_names.h"
 #include "app/core/renamed_parameters.h"
@@ -244,7 +245,8 @@ Report run_loaded_command(const Command& command, dealii::ParameterHandler& prm,
   {
     dealii::ConditionalOStream pcout(progress, root && show_progress);
     CommandContext context(communicator, pcout, staging, quiet, show_progress);
-    command.run(prm, context);
+    // Library errors name library fields; the user reads the parameter they wrote.
+    with_registered_field_names([&] { command.run(prm, context); });
     if (output)
     {
       // A result or chart that rank 0 could not write whole fails the run on every rank, and

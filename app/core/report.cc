@@ -1,6 +1,7 @@
 #include "app/core/report.h"
 
 #include "app/core/scratch.h"
+#include "app/core/units.h"
 #include "errors/io.h"
 
 #include <algorithm>
@@ -78,7 +79,10 @@ ReportTable& Report::add_table(const std::string& name, const std::vector<std::s
 {
   if (columns.size() != units.size())
     throw std::logic_error("table '" + name + "': columns and units differ in number");
-  table_list.push_back(ReportTable{name, columns, units, {}, {}});
+  std::vector<std::string> ascii_units;
+  for (const std::string& unit : units)
+    ascii_units.push_back(table_unit(unit));
+  table_list.push_back(ReportTable{name, columns, ascii_units, {}, {}});
   return table_list.back();
 }
 

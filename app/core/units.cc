@@ -36,4 +36,17 @@ bool read_length_or_auto(const std::string& text, const std::string& parameter,
   value = number * mm;
   return false;
 }
+std::string table_unit(const std::string& unit)
+{
+  static const std::pair<const char*, const char*> ascii[] = {
+      {"µ", "u"}, {"·", "*"}, {"²", "^2"}, {"³", "^3"}, {"°", "deg"}};
+  std::string text = unit;
+  for (const auto& [symbol, replacement] : ascii)
+    for (auto at = text.find(symbol); at != std::string::npos; at = text.find(symbol, at))
+    {
+      text.replace(at, std::string(symbol).size(), replacement);
+      at += std::string(replacement).size();
+    }
+  return text;
+}
 } // namespace gearstiff::app

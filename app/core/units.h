@@ -15,6 +15,14 @@ constexpr double mm = 1e-3;            // m
 constexpr double degree = M_PI / 180.; // rad
 constexpr double rpm = M_PI / 30.;     // rad/s
 
+// Units are written one way (docs/developers.md "Units"): UTF-8 symbols in report values and
+// texts, parameter documentation and charts (µm, N/µm, N·m, kg·m², µs), ASCII in table headers —
+// the CSV files and the tables of summary.json, which scripts read back and users type (um,
+// N/um, N*m, kg*m^2, us). The table spelling of `unit`: µ -> u, · -> *, ² -> ^2, ³ -> ^3,
+// ° -> deg; Report::add_table applies it, so a table written with a report's symbol still
+// follows the rule.
+std::string table_unit(const std::string& unit);
+
 // A user's text as echoed in a message: at most `length` characters, longer text cut with "…"
 // and its size, so that a 200 kB value does not become a 200 kB error line.
 std::string shortened(const std::string& text, unsigned int length = limits::echoed_value_length);

@@ -42,7 +42,7 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry("clearance limit", "0.01", Double(0.),
                     "Delta r, largest clearance to the nominal profile over the contact arc (mm)");
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
-                    "disc rotation psi at which the roller clearances are evaluated (degrees)");
+                    "disc rotation psi at which the roller clearances are evaluated [deg]");
   prm.declare_entry("outline points per lobe", "121", Integer(5, 100000),
                     "points per lobe of the disc outline written with -o (-)");
   prm.leave_subsection();

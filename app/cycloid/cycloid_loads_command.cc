@@ -245,7 +245,7 @@ void add_torsion_table(Report& report, const std::vector<double>& levels,
                        const std::vector<ProfileCases>& profiles,
                        const std::vector<stiffness::CycloidLoadResult>& results)
 {
-  std::vector<std::string> columns{"torque", "branch"}, units{"N·m", "-"};
+  std::vector<std::string> columns{"torque", "branch"}, units{"N*m", "-"};
   for (const auto& pc : profiles)
     columns.push_back("rotation_" + pc.name), units.push_back("arcmin");
   ReportTable& table = report.add_table("cycloid_torsion", columns, units);
@@ -270,7 +270,7 @@ void add_hysteresis_table(Report& report, const std::vector<ProfileCases>& profi
 {
   ReportTable& table =
       report.add_table("cycloid_hysteresis", {"profile", "torque", "rotation", "branch"},
-                       {"-", "N·m", "arcmin", "-"});
+                       {"-", "N*m", "arcmin", "-"});
   table.set_categories("profile", {{0, "nominal"}, {1, "corrected"}});
   table.set_categories("branch", {{-1, "falling"}, {0, "first loading"}, {1, "rising"}});
   for (unsigned int b = 0; b < profiles.size(); ++b)

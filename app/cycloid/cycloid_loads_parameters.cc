@@ -34,7 +34,7 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
                     "shared by two discs");
   prm.declare_entry("crank angle", "0", Double(-360., 360.),
                     "phi_h, direction of the eccentric: disc centre at e(cos phi_h, sin phi_h) "
-                    "(degrees)");
+                    "[deg]");
   prm.declare_entry("profiles", "both", Selection("nominal|corrected|both"),
                     "disc profiles solved: nominal equidistant, corrected (r_k, q_k, delta), both");
   prm.declare_entry("contact arc ratio", "0.27", Double(),
@@ -43,7 +43,7 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
   prm.declare_entry("sweep positions", "0", Integer(0, 10000),
                     "crank angles of the sweep, spread over the MPI ranks (-); 0: no sweep");
   prm.declare_entry("sweep span", "18", Double(0., 360.),
-                    "crank-angle span of the sweep (degrees); 360/z_k repeats the roller pattern");
+                    "crank-angle span of the sweep [deg]; 360/z_k repeats the roller pattern");
   prm.declare_entry("torque steps", "0", Integer(0, 1000),
                     "steps of the torque ramp -M_c -> +M_c for the torsional stiffness and "
                     "lost motion (-); 0: only the +-3%, 50%, 100% levels they need");

@@ -24,7 +24,7 @@ void declare_parameters(ParameterHandler& prm)
   declare_cycloid_scene_parameters(prm, geometry::CycloidSceneSpec());
   prm.enter_subsection("Cycloid scene");
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
-                    "disc rotation ψ about its own centre (degrees); the disc centre follows "
+                    "disc rotation ψ about its own centre [deg]; the disc centre follows "
                     "the eccentric with the ring fixed");
   prm.declare_entry("roller force", "auto", Anything(),
                     "roller force for the Hertz estimate of automatic contact cells (N), or auto: "

@@ -263,13 +263,13 @@ void report_nonlinear_sweep(const DynamicsParameters& p, const SweepResult& swee
                                  {"input_speed", "mesh_frequency", "direction", "dynamic_factor",
                                   "kv_min", "separation_fraction", "separations", "back_impacts",
                                   "mean_dte", "dte_rms", "status"},
-                                 {"rpm", "Hz", "-", "-", "-", "-", "-", "-", "µm", "µm", "-"});
+                                 {"rpm", "Hz", "-", "-", "-", "-", "-", "-", "um", "um", "-"});
   table.set_categories("direction", sweep_direction_categories());
   table.set_categories("status", sweep_status_categories());
   // Every mesh's DTE spectrum; a train's copies of a Train mesh are one pair: its first copy.
   auto& waterfall = report.add_table("dynamics_dte_waterfall",
                                      {"input_speed", "direction", "mesh", "order", "amplitude"},
-                                     {"rpm", "-", "-", "-", "µm"});
+                                     {"rpm", "-", "-", "-", "um"});
   waterfall.set_categories("direction", sweep_direction_categories());
   unsigned int impacts = 0, separated = 0;
   for (const SweepPoint& point : sweep.points)
@@ -492,7 +492,7 @@ void report_speed_sweep(const DynamicsParameters& p, const SweepResult& sweep, R
   auto& table = report.add_table("dynamics_speed_sweep",
                                  {"input_speed", "mesh_frequency", "resonance_ratio", "kv_max",
                                   "kv_min", "kv_iso", "status", "time_step", "kv_max_linear"},
-                                 {"rpm", "Hz", "-", "-", "-", "-", "-", "µs", "-"});
+                                 {"rpm", "Hz", "-", "-", "-", "-", "-", "us", "-"});
   table.set_categories("status", sweep_status_categories());
   unsigned int unstable = 0, separated = 0, not_steady = 0;
   unsigned long steps = 0;

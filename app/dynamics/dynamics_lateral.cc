@@ -77,7 +77,7 @@ void report_statics(const LateralParameters& p, const LateralModel& model, Repor
                                  {"planet", "angle", "pin_error_tangential", "pin_error_radial",
                                   "sun_mesh_force", "ring_mesh_force", "lsf_sun", "lsf_ring",
                                   "pin_force_radial", "pin_force_tangential"},
-                                 {"-", "deg", "µm", "µm", "N", "N", "-", "-", "N", "N"});
+                                 {"-", "deg", "um", "um", "N", "N", "-", "-", "N", "N"});
   const LateralStage& stage = p.stage;
   double largest = 0.;
   for (unsigned int k = 0; k < n; ++k)
@@ -258,7 +258,7 @@ void report_sweep(const LateralParameters& p, const LateralModel& model, double 
        "sun_mesh_force_max", "ring_mesh_force_max", "bearing_force_carrier", "bearing_force_ring",
        "bearing_force_sun", "orbit_carrier", "orbit_ring", "orbit_sun", "separation_fraction",
        "time_step"},
-      {"rpm", "rpm", "Hz", "-", "-", "-", "N", "N", "N", "N", "N", "µm", "µm", "µm", "-", "µs"});
+      {"rpm", "rpm", "Hz", "-", "-", "-", "N", "N", "N", "N", "N", "um", "um", "um", "-", "us"});
   table.set_categories("direction", sweep_direction_categories());
   table.set_categories("status", sweep_status_categories());
   unsigned int counts[4] = {0, 0, 0, 0};
@@ -300,7 +300,7 @@ double report_response(const LateralParameters& p, const LateralModel& model, Re
   const LateralResponse r = integrate_lateral(model, p.load, p.excitation, p.run);
   auto& orbit = report.add_table(
       "lateral_orbit", {"time", "carrier_x", "carrier_y", "ring_x", "ring_y", "sun_x", "sun_y"},
-      {"s", "µm", "µm", "µm", "µm", "µm", "µm"});
+      {"s", "um", "um", "um", "um", "um", "um"});
   auto& forces = report.add_table(
       "lateral_bearing_forces",
       {"time", "carrier_fx", "carrier_fy", "ring_fx", "ring_fy", "sun_fx", "sun_fy"},

@@ -123,7 +123,7 @@ void report_response(const LateralTrainParameters& p, double settle, Report& rep
     for (const char* axis : {"_x", "_y"})
     {
       columns.push_back(p.setup.train.bodies[b].name + axis);
-      units.push_back("µm");
+      units.push_back("um");
     }
   auto& orbit = report.add_table("lateral_train_orbit", columns, units);
   for (std::size_t i = 0; i < r.time.size(); ++i)
@@ -156,7 +156,7 @@ void report_sweep(const LateralTrainParameters& p, double settle, Report& report
   const auto start = std::chrono::steady_clock::now();
   const std::vector<LateralTrainSweepPoint> points = lateral_train_sweep(
       p.setup, p.sweep_speeds, settle, p.window_periods, p.steps_per_mesh_period);
-  std::vector<std::string> columns{"input_speed", "status", "time_step"}, units{"rpm", "-", "µs"};
+  std::vector<std::string> columns{"input_speed", "status", "time_step"}, units{"rpm", "-", "us"};
   const std::size_t n_meshes = p.setup.rotational.spec_mesh_contact_ratio.size();
   for (std::size_t m = 0; m < n_meshes; ++m)
   {
@@ -168,7 +168,7 @@ void report_sweep(const LateralTrainParameters& p, double settle, Report& report
     for (const unsigned int b : central)
     {
       columns.push_back(what + p.setup.train.bodies[b].name);
-      units.push_back(what[0] == 'o' ? "µm" : "N");
+      units.push_back(what[0] == 'o' ? "um" : "N");
     }
   auto& table = report.add_table("lateral_train_speed_sweep", columns, units);
   table.set_categories("status", sweep_status_categories());

@@ -93,7 +93,7 @@ void declare_nonlinear_mesh_entries(ParameterHandler& prm, bool train_mesh)
                         ", a once-per-revolution sinusoid of this peak-to-peak (µm)");
   prm.declare_entry("transmission error harmonics", "", Anything(),
                     "mesh model nonlinear: further TE sinusoids 'order: amplitude[: phase], "
-                    "...' (mesh orders, µm, degrees)");
+                    "...' (mesh orders, µm, deg)");
 }
 
 NonlinearMeshEntries parse_nonlinear_mesh_entries(ParameterHandler& prm, const std::string& section)
@@ -149,7 +149,7 @@ NonlinearMeshEntries parse_nonlinear_mesh_entries(ParameterHandler& prm, const s
     }
     if (numbers.size() < 2 || numbers.size() > 3)
       throw InputError(parameter,
-                       "entry '" + entry + "' is not 'order: amplitude[: phase]' (-, µm, degrees)");
+                       "entry '" + entry + "' is not 'order: amplitude[: phase]' (-, µm, deg)");
     entries.harmonics.push_back(
         {numbers[0], numbers[1] * micrometre, numbers.size() == 3 ? numbers[2] * degree : 0.});
   }

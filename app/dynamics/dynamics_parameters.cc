@@ -28,7 +28,7 @@ struct IsoEntry
 const IsoEntry iso_entries[] = {
     {"face width", &IsoParameters::face_width, mm, Double(0.), "b, common face width (mm)"},
     {"transverse pressure angle", &IsoParameters::pressure_angle, degree, Double(0., 45.),
-     "alpha_t: F_t = F_bt·cos alpha_t (degrees)"},
+     "alpha_t: F_t = F_bt·cos alpha_t [deg]"},
     {"single stiffness", &IsoParameters::single_stiffness, newton_per_mm_micrometre, Double(0.),
      "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)"},
     {"mesh stiffness", &IsoParameters::mesh_stiffness, newton_per_mm_micrometre, Double(0.),
@@ -64,7 +64,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "model (Lin & Parker 1999: modes, classes, load sharing, bearing forces)");
   prm.declare_entry("pressure angle", "20", Double(0., 45.),
                     "train model: pressure angle of the standard teeth (x = 0, h_a* = 1) for "
-                    "base radii, contact and approach ratios (degrees)");
+                    "base radii, contact and approach ratios [deg]");
   prm.declare_entry("suspended members", "", Anything(),
                     "train model: fixed members hung on a torsional spring and damper to the "
                     "housing, 'name: stiffness damping, ...' (N·m/rad, N·m·s/rad)");
@@ -123,7 +123,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
     prm.declare_entry("placement angle", m == 1 ? "180" : "0", Double(-360., 360.),
                       "theta, angle of the driven gear's centre around the driver axis, "
                       "against the driver's rotation, from the driven gear of the first mesh "
-                      "of the same driver (degrees); sets the phase frac(z·theta/360°)");
+                      "of the same driver [deg]; sets the phase frac(z·theta/360°)");
     declare_mesh_physics(prm, data.single_pair_stiffness, data.mesh_damping,
                          data.friction_coefficient, data.pinion_friction_arm,
                          data.wheel_friction_arm, false);

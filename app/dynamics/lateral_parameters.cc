@@ -622,7 +622,7 @@ void declare_lateral_parameters(ParameterHandler& prm)
         "distance m·(z_s + z_p)/2"},
        {"planet angles", "",
         "lateral model: position angles of the planet copies on the carrier, "
-        "'planet: psi1 psi2 ...' (degrees); default equally spaced"},
+        "'planet: psi1 psi2 ...' [deg]; default equally spaced"},
        {"planet pin errors", "",
         "lateral model: carrier pin position errors, 'copy: tangential radial, ...' (µm; copy = "
         "planet number 1..N or name#number; several stages: member#copy as the report lists the "

@@ -121,7 +121,7 @@ void report_lossless_statics(const TrainReport& r)
   }
   ReportTable& loads = r.report.add_table(
       "mesh_loads", {"mesh", "torque_a", "torque_b", "torque_frame", "tangential_force_per_copy"},
-      {"-", "N·m", "N·m", "N·m", "N"});
+      {"-", "N*m", "N*m", "N*m", "N"});
   for (std::size_t m = 0; m < ideal.meshes.size(); ++m)
     loads.add_row({double(m + 1), ideal.meshes[m].on_a, ideal.meshes[m].on_b,
                    ideal.meshes[m].on_frame, ideal.meshes[m].tangential_force});

@@ -1,5 +1,6 @@
 #include "app/kinematics/kinematics_parameters.h"
 
+#include "app/core/field_names.h"
 #include "app/core/parameter_patterns.h"
 #include "app/core/units.h"
 #include "errors/errors.h"
@@ -60,8 +61,7 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
 bool parse_automatic_diameter(const std::string& text, bool wheel, const std::string& key,
                               double& diameter)
 {
-  return read_length_or_auto(text, kinematics::gear_parameter_name(wheel, key), "diameter",
-                             diameter);
+  return read_length_or_auto(text, gear_pair_parameter(wheel, key), "diameter", diameter);
 }
 
 // `automatic_tip`/`automatic_bore` are set when the diameter reads "auto" (resolved once both
@@ -76,13 +76,13 @@ kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm, bool wheel, bool&
   // (0.003 for 3 mm in metres), blamed on the module rather than on what it makes too small.
   const double module_mm = gear.normal_module / mm;
   if (module_mm > 0. && module_mm < 0.05)
-    throw InputError(kinematics::gear_parameter_name(wheel, "module"),
+    throw InputError(gear_pair_parameter(wheel, "module"),
                      format_number(module_mm, 6) +
                          " mm is below every standard module (DIN 780: 0.05 to 60 mm); modules "
                          "are in mm (metres given? " +
                          format_number(module_mm * 1e3, 6) + " mm)");
   if (module_mm > 100.)
-    throw InputError(kinematics::gear_parameter_name(wheel, "module"),
+    throw InputError(gear_pair_parameter(wheel, "module"),
                      format_number(module_mm, 6) +
                          " mm is above every standard module (DIN 780: 0.05 to 60 mm); modules "
                          "are in mm (micrometres given? " +
@@ -130,6 +130,11 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm)
   prm.leave_subsection();
 }
 
+std::string gear_pair_parameter(bool wheel, const std::string& key)
+{
+  return std::string("Gear pair/") + (wheel ? "Wheel/" : "Pinion/") + key;
+}
+
 kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm)
 {
   std::vector<kinematics::DerivedSize> derived;
@@ -154,6 +159,8 @@ kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& pr
   // The rules of kinematics/automatic_sizes.h; InputError naming the parameter for a pair the
   // geometry refuses.
   kinematics::resolve_automatic_sizes(pair, automatic, ring_tip_margin, derived);
+  for (kinematics::DerivedSize& size : derived)
+    size.parameter = parameter_of_field(size.parameter);
   return pair;
 }
 

@@ -21,6 +21,8 @@ void declare_gear_pair_parameters(dealii::ParameterHandler& prm);
 kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm);
 kinematics::GearPairSpec parse_gear_pair_parameters(dealii::ParameterHandler& prm,
                                                     std::vector<kinematics::DerivedSize>& derived);
+// The parameter path of a per-gear key: "Gear pair/Pinion/<key>" (wheel: "Gear pair/Wheel/").
+std::string gear_pair_parameter(bool wheel, const std::string& key);
 // Subsection "ISO 6336": C_M and the specific load.
 kinematics::IsoStiffnessOptions parse_iso_parameters(dealii::ParameterHandler& prm);
 

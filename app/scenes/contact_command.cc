@@ -285,7 +285,7 @@ std::map<types::material_id, fem::Material> parse_bodies(ParameterHandler& prm,
 }
 
 // Supports/: fixed faces, prescribed displacements [mm], tractions [MPa], rigid hubs turned by
-// an angle [°] or loaded by a torque [N·m] about an axis [mm].
+// an angle [deg] or loaded by a torque [N·m] about an axis [mm].
 template <int dim>
 void add_supports(ParameterHandler& prm, const fem::PhysicalNames& names,
                   contact::ContactProblem<dim>& problem)

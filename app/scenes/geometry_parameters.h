@@ -4,6 +4,7 @@
 // Lengths in mm; parse_* convert to SI.
 #pragma once
 
+#include "app/core/field_names.h"
 #include "errors/errors.h"
 #include "geometry/cycloid_disc.h"
 #include "geometry/scene_gear_pair.h"
@@ -53,28 +54,8 @@ void declare_elastic_constants(dealii::ParameterHandler& prm, const std::string&
 void parse_elastic_constants(dealii::ParameterHandler& prm, double& young_modulus,
                              double& poisson_ratio);
 
-// The libraries name the fields of their specs in an InputError ("scene.pinion_bore_radius",
-// geometry::scene_field); a command names the parameter the user writes. Library field ->
-// parameter path of one command.
-using ParameterNames = std::map<std::string, std::string>;
-// The gear-pair scene's fields as the `mesh` command declares them ("Gear pair scene/...").
+// The gear-pair scene's fields (geometry::scene_field) as the `mesh` command declares them
+// ("Gear pair scene/..."): mapped at the call (app/core/field_names.h), since `stiffness` names
+// them otherwise.
 ParameterNames gear_scene_parameter_names();
-
-// Runs `work`; an InputError naming a field of `names` is thrown again under its parameter
-// path, any other error passes unchanged.
-template <typename Work>
-auto with_parameter_names(const ParameterNames& names, Work&& work) -> decltype(work())
-{
-  try
-  {
-    return work();
-  }
-  catch (const InputError& e)
-  {
-    const auto found = names.find(e.parameter());
-    if (found == names.end())
-      throw;
-    throw InputError(found->second, e.reason());
-  }
-}
 } // namespace gearstiff::app

@@ -104,6 +104,20 @@ double face_extent(const ModificationText& text, const std::string& name, bool w
   return width;
 }
 
+// `field` = read() unless entry `key` reads `keyword` (the default the field keeps); InputError
+// `message` naming the entry unless the number read is positive.
+template <typename Read>
+void set_positive_unless(double& field, const ModificationText& text, bool wheel,
+                         const std::string& key, const std::string& keyword, Read read,
+                         const std::string& message)
+{
+  if (text.at(key) == keyword)
+    return;
+  field = read();
+  if (!(field > 0.))
+    throw InputError(path_of(wheel, key), message);
+}
+
 geometry::ToothModification spall_of(const ModificationText& text, bool wheel, double depth,
                                      unsigned int dimension)
 {
@@ -112,13 +126,10 @@ geometry::ToothModification spall_of(const ModificationText& text, bool wheel, d
   spall.amount = depth;
   spall.length = length_of(text, "spall length", wheel);
   spall.width = face_extent(text, "spall width", wheel, dimension);
-  if (text.at("spall position") != "reference circle")
-  {
-    spall.position = value_of(text, "spall position", wheel) * degree;
-    if (!(spall.position > 0.))
-      throw InputError(path_of(wheel, "spall position"),
-                       "must be a positive roll angle [deg] or 'reference circle'");
-  }
+  set_positive_unless(
+      spall.position, text, wheel, "spall position", "reference circle",
+      [&] { return value_of(text, "spall position", wheel) * degree; },
+      "must be a positive roll angle [deg] or 'reference circle'");
   return spall;
 }
 
@@ -129,13 +140,10 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
   crack.kind = geometry::ModificationKind::root_crack;
   crack.amount = depth;
   crack.angle = value_of(text, "crack angle", wheel) * degree;
-  if (text.at("crack start") != "critical section")
-  {
-    crack.position = 0.5 * length_of(text, "crack start", wheel);
-    if (!(crack.position > 0.))
-      throw InputError(path_of(wheel, "crack start"),
-                       "must be 'critical section' or a positive diameter [mm]");
-  }
+  set_positive_unless(
+      crack.position, text, wheel, "crack start", "critical section",
+      [&] { return 0.5 * length_of(text, "crack start", wheel); },
+      "must be 'critical section' or a positive diameter [mm]");
   crack.width_fraction = value_of(text, "crack width fraction", wheel);
   if (!(crack.width_fraction > 0. && crack.width_fraction <= 1.))
     throw InputError(path_of(wheel, "crack width fraction"),

@@ -155,7 +155,7 @@ TEST(Integrators, Rk4AboveTheStabilityLimitIsRefusedOrDetected)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Simulation/time step");
+    EXPECT_EQ(e.parameter(), "simulation.time_step");
   }
 
   settings.allow_unstable_step = true;

@@ -391,12 +391,12 @@ TEST(LateralModel, BadInput)
   };
   LateralStage colliding = standard_stage(3, 1e8, 1e8);
   colliding.planet_angles = {0., 0.5, M_PI};
-  EXPECT_NE(parameter_of(colliding).find("Train/planet angles"), std::string::npos);
+  EXPECT_NE(parameter_of(colliding).find("train.planet_angles"), std::string::npos);
   LateralStage drifting = standard_stage(3, 0., 1e8);
-  EXPECT_NE(parameter_of(drifting).find("Train/bearing stiffness"), std::string::npos);
+  EXPECT_NE(parameter_of(drifting).find("train.bearing_stiffness"), std::string::npos);
   LateralStage errors = standard_stage(3, 1e8, 1e8);
   errors.pin_error_radial = {1e-6, 2e-6};
-  EXPECT_NE(parameter_of(errors).find("Train/planet pin errors"), std::string::npos);
+  EXPECT_NE(parameter_of(errors).find("train.planet_pin_errors"), std::string::npos);
 }
 
 // Time response (lateral_response.h). Started from the static deflection under constant mesh
@@ -452,7 +452,7 @@ TEST(LateralModel, ResponseRefusesUnstableStep)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Simulation/time step");
+    EXPECT_EQ(e.parameter(), "simulation.time_step");
   }
   // The limit is that of the highest mode, 11775.3 Hz (Lin & Parker's N = 3 table):
   // 2√2/(2π·11775.3) = 38.23 µs.

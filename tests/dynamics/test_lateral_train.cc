@@ -272,14 +272,14 @@ TEST(LateralTrain, BadInput)
     return std::string("no error");
   };
   LateralTrainInput drifting = biplanetary(0., 1e8);
-  EXPECT_NE(error_of(drifting).find("Train/bearing stiffness"), std::string::npos)
+  EXPECT_NE(error_of(drifting).find("train.bearing_stiffness"), std::string::npos)
       << error_of(drifting);
   LateralTrainInput no_pin = biplanetary(1e8, 1e8);
   no_pin.pin_stiffness.erase("4");
-  EXPECT_NE(error_of(no_pin).find("Train/planet pin stiffness"), std::string::npos);
+  EXPECT_NE(error_of(no_pin).find("train.planet_pin_stiffness"), std::string::npos);
   LateralTrainInput planet_bearing = biplanetary(1e8, 1e8);
   planet_bearing.bearing_stiffness["2"] = 1e8;
-  EXPECT_NE(error_of(planet_bearing).find("Train/bearing stiffness"), std::string::npos);
+  EXPECT_NE(error_of(planet_bearing).find("train.bearing_stiffness"), std::string::npos);
   LateralTrainInput floating = biplanetary(1e8, 1e8);
   floating.bearing_stiffness.erase("1");
   EXPECT_EQ(error_of(floating), "no error");
@@ -308,6 +308,6 @@ TEST(LateralTrain, ResponseKeepsStatics)
   }
   catch (const InputError& e)
   {
-    EXPECT_NE(std::string(e.what()).find("Simulation/time step"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("simulation.time_step"), std::string::npos);
   }
 }

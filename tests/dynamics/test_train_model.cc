@@ -215,7 +215,7 @@ TEST(TrainModel, BadInput)
   }
   catch (const InputError& error)
   {
-    EXPECT_EQ(error.parameter(), "Train/inertias");
+    EXPECT_EQ(error.parameter(), "train.inertias");
   }
   input = planetary(3);
   input.spec.members[1].module = 0.; // the planet

@@ -24,6 +24,9 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
     Python = command line    gearstiff.stiffness(...) returns the command line's numbers (the
                              12 printed digits)
     3D between plane models  straight teeth in 3D: k between plane stress and plane strain
+    errors name parameters   a wheel of two teeth (gear-pair) and a 1 mm centre distance (mesh)
+                             fail with one line naming the parameter typed, not the library's
+                             field (issue 45)
     own train                the sweep's stiffness_table.prm runs `gearstiff dynamics` on this
                              pair: its mesh frequency z1*n1/60, its mean stiffness the sweep's,
                              and K_v = 1 at a quasi-static speed without friction (0.5 %)
@@ -424,6 +427,25 @@ def helical_statics(case, runner, log):
         f"tan beta_b {tan_b:.6f}")
 
 
+def errors_name_parameters(case, runner, log):
+    """Library errors name library fields ("wheel.teeth", "pair.centre_distance"); the command
+    maps each to the parameter the user typed (app/core/field_names.h). On this pair: a wheel of
+    two teeth (`gear-pair`) and a centre distance far below the pair's (`mesh`, which reads the
+    same pair) each give one line naming the typed parameter, exit 2, no field name."""
+    for command, key, bad, expected in (
+            ("gear-pair", "Gear pair/Wheel/teeth", "2",
+             "Gear pair/Wheel/teeth: must be at least 3"),
+            ("mesh", "Gear pair/centre distance", "1", "Gear pair/centre distance: ")):
+        pair = {k: v for k, v in case["pair"].items() if k.startswith("Gear pair/")}
+        _, code, stderr = runner.run(command, dict(pair, **{key: bad}), allowed=(2,))
+        lines = [line for line in stderr.splitlines() if line.strip()]
+        if len(lines) != 1 or f"gearstiff: error: {expected}" not in lines[0]:
+            raise CaseFailure(f"{command} with {key}={bad}: expected one line naming {key}, "
+                              f"got {stderr.strip()[-300:]!r}")
+    log("errors name the parameters typed: Gear pair/Wheel/teeth (gear-pair), "
+        "Gear pair/centre distance (mesh)")
+
+
 # Which identities a case checks: every case the rolling sweep and the geometry of its
 # modification; the costlier ones in turn.
 ROTATION = [zero_equals_none, ranks_agree, python_equals_cli, own_train]
@@ -448,6 +470,7 @@ def check_case(seed, index, runner):
     try:
         identity = ROTATION[index % len(ROTATION)]
         once_out = os.path.join(runner.work, f"case{index}") if identity is own_train else None
+        errors_name_parameters(case, runner, log)
         sweeps = once_equals_per_position(case, runner, log, once_out)
         geometric_te(case, table(sweeps["per position"], "stiffness_sweep"), log)
         identity(case, runner, log, sweeps)

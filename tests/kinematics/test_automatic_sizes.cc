@@ -66,7 +66,7 @@ TEST(AutomaticSizes, OwnPairGetsStandardTipsAndHalfRootBores)
   EXPECT_NEAR(spec.pinion.bore_diameter, 42.12 * mm, 1e-9);
   EXPECT_NEAR(spec.wheel.bore_diameter, 62.88 * mm, 1e-9);
   ASSERT_EQ(derived.size(), 4u);
-  EXPECT_EQ(derived[0].parameter, "Gear pair/Pinion/tip diameter");
+  EXPECT_EQ(derived[0].parameter, "pinion.tip_diameter");
   EXPECT_NE(derived_sizes_text(derived).find("half the root diameter"), std::string::npos);
   EXPECT_FALSE(is_split_path_pair(spec));
   EXPECT_FALSE(has_split_path_teeth(spec));

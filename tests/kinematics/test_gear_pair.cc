@@ -138,7 +138,7 @@ TEST(GearPair, ShiftedWorkingPressureAngle)
   spec.centre_distance = pair.centre_distance + 0.1 * mm;
   EXPECT_GT(compute_gear_pair(spec).backlash, 0.);
   spec.centre_distance = pair.centre_distance - 0.1 * mm;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/centre distance");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pair.centre_distance");
 }
 
 // An internal pair (24/69, m 2.5): with a standard ring tip the ring tip digs into the pinion
@@ -147,8 +147,7 @@ TEST(GearPair, ShiftedWorkingPressureAngle)
 TEST(GearPair, InternalPair)
 {
   GearPairSpec spec = internal_24_69_pair();
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
-            "Gear pair/Wheel/tip diameter");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "wheel.tip_diameter");
   spec.wheel.tip_diameter = (69. * 2.5 - 2. * 2.5 * 0.5) * mm; // addendum 0.5·m
   const GearPairGeometry pair = compute_gear_pair(spec);
   EXPECT_NEAR(pair.centre_distance, 0.5 * (69. - 24.) * 2.5 * mm, 1e-12);
@@ -178,7 +177,7 @@ TEST(GearPair, ClearingRingTip)
             << " mm, eps_alpha = " << pair.transverse_contact_ratio << "\n";
   spec.wheel.internal = false;
   EXPECT_EQ(input_error_parameter([&] { clearing_ring_tip_diameter(spec, margin); }),
-            "Gear pair/Wheel/tip diameter");
+            "wheel.tip_diameter");
 }
 
 // Issue 11: the parameter to fix is named. A given centre distance beyond the zero-backlash
@@ -187,14 +186,13 @@ TEST(GearPair, NamesTheParameterToFix)
 {
   GearPairSpec spec = split_path_pair();
   spec.centre_distance = 99. * mm; // zero-backlash 97.5 mm (docs/references.md §1)
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/centre distance");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pair.centre_distance");
   spec = split_path_pair();
   spec.pinion.bore_diameter = 100. * mm;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
-            "Gear pair/Pinion/bore diameter");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.bore_diameter");
   spec = split_path_pair();
   spec.pinion.normal_module = spec.wheel.normal_module = 1.; // 1 m with the 58.55 mm tip
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/Pinion/module");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.normal_module");
 }
 
 TEST(GearPair, RejectsBadInput)
@@ -202,13 +200,12 @@ TEST(GearPair, RejectsBadInput)
   const GearPairSpec base = split_path_pair();
   GearPairSpec spec = base;
   spec.pinion.teeth = 0;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/Pinion/teeth");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.teeth");
   // Undercut: x_min = 1.25 − 0.38·(1 − sin 20°) − z·sin²α/2 = −0.228 for z = 21.
   spec = standard_tips(base);
   spec.pinion.profile_shift = -0.3;
   spec.wheel.profile_shift = 0.3;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
-            "Gear pair/Pinion/profile shift");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.profile_shift");
   EXPECT_NEAR(compute_gear_pair(standard_tips(base)).pinion.minimum_profile_shift,
               1.25 - 0.38 * (1. - std::sin(20. * degree)) -
                   21. * std::pow(std::sin(20. * degree), 2) / 2.,
@@ -217,17 +214,15 @@ TEST(GearPair, RejectsBadInput)
   spec = standard_tips(base);
   spec.pinion.profile_shift = 1.3;
   spec.wheel.profile_shift = -1.3;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
-            "Gear pair/Pinion/profile shift");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.profile_shift");
   // Internal wheel with fewer teeth than the pinion.
   spec = standard_tips(base);
   spec.wheel.internal = true;
   spec.wheel.teeth = 20;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "Gear pair/Wheel/teeth");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "wheel.teeth");
   // ε_α < 1: tips cut down to 1 mm above the reference circle.
   spec = base;
   spec.pinion.tip_diameter = 54.5 * mm;
   spec.wheel.tip_diameter = 144.5 * mm;
-  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }),
-            "Gear pair/Pinion/tip diameter");
+  EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.tip_diameter");
 }

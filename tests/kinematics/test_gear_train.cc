@@ -186,32 +186,32 @@ TEST(GearTrain, RejectsTrainsThatDoNotClose)
 {
   GearTrainText text = builtin_train("bi-planetary");
   text.fixed = "";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/inputs"); // under-constrained
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.inputs"); // under-constrained
 
   text = builtin_train("planetary");
   text.inputs = "s: 1470, c: 100";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/inputs"); // contradictory
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.inputs"); // contradictory
   text.inputs = "s: 1470, c: 490";                                        // consistent
   EXPECT_NEAR(solve(text).solution.ratio, 3., 1e-12);
 
   text = builtin_train("planetary");
   text.fixed = "r, c";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/meshes"); // locked
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.meshes"); // locked
 
   text = builtin_train("planetary");
   text.gears = "s: 20, p: 10, r: -42"; // ring ≠ sun + 2·planet: planet axis radius 30 vs 32 mm
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/gears");
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.gears");
 
   text = builtin_train("planetary");
   text.gears = "s: 20, p: 10, r: -8";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/gears");
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.gears");
   text.gears = "s: 0, p: 10, r: -40";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/gears");
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.gears");
   text.gears = "s: twenty, p: 10, r: -40";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/gears");
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.gears");
   text = builtin_train("planetary");
   text.meshes = "s-q/c, p-r/c";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/meshes");
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.meshes");
 }
 
 // §3 check rows (k = 4): J*/(ρπh) = 0.239 (R_a 0.5, R_c 0.25, N 3), 0.282 (N 4), 3.228 (R_a 0.8,
@@ -320,7 +320,7 @@ TEST(GearTrain, ShiftedPlanetaryCloses)
 {
   GearTrainText text = builtin_train("planetary");
   text.profile_shifts = "s: 0.25, p: 0.25";
-  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "Train/gears");
+  EXPECT_EQ(input_error_parameter([&] { solve(text); }), "train.gears");
   const double alpha = 20. * M_PI / 180.;
   const TrainMember sun{"s", 20, 2e-3, "", 1, 0., 0., 0.25};
   const TrainMember planet{"p", 10, 2e-3, "", 1, 0., 0., 0.25};

@@ -56,13 +56,14 @@ IGNORED_TEXT = re.compile(r"(^|_)(time|timing|timings|path|directory|file|host|d
 UNIT_KIND = {
     "N": ("force", 1.), "kN": ("force", 1e3),
     "m": ("length", 1.), "mm": ("length", 1e-3), "µm": ("length", 1e-6), "um": ("length", 1e-6),
-    "N·m": ("moment", 1.), "N·mm": ("moment", 1e-3), "Nm": ("moment", 1.),
+    "N·m": ("moment", 1.), "N·mm": ("moment", 1e-3), "Nm": ("moment", 1.), "N*m": ("moment", 1.),
     "Pa": ("stress", 1.), "MPa": ("stress", 1e6), "GPa": ("stress", 1e9),
     "N/m": ("stiffness", 1.), "N/µm": ("stiffness", 1e6), "N/um": ("stiffness", 1e6),
     "N/mm": ("line load", 1e3), "N/(mm·µm)": ("stiffness per length", 1e9),
     "rad": ("angle", 1.), "deg": ("angle", math.pi / 180), "arcmin": ("angle", math.pi / 10800),
-    "µrad": ("angle", 1e-6), "1e-4 rad": ("angle", 1e-4),
+    "µrad": ("angle", 1e-6), "urad": ("angle", 1e-6), "1e-4 rad": ("angle", 1e-4),
     "s": ("duration", 1.), "ms": ("duration", 1e-3), "µs": ("duration", 1e-6),
+    "us": ("duration", 1e-6),
 }
 
 
