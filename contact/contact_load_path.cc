@@ -158,14 +158,45 @@ const ContactResults<dim>& ContactProblem<dim>::solve()
         throw; // the factorization failed: a cold start would fail the same way
       result.warm_start = false;
       restore_cold_start();
-      solve_load_steps(residual);
+      solve_refining_load_steps(residual);
     }
   else
-    solve_load_steps(residual);
+    solve_refining_load_steps(residual);
   complete_solution(residual);
   collect_results(residual);
   result.total_time = total.wall_time() + result.setup_time;
   return result;
+}
+
+template <int dim>
+void ContactProblem<dim>::solve_refining_load_steps(Vector<double>& residual)
+{
+  // The active set of a frictional contact can cycle on one load step where a finer load path
+  // converges: an own pair (z 23/61, m_n 4 mm) with 5.84 µm tip relief cycled at 300 N·m, its
+  // stick/slip front at the relief start, and converged in 2 steps (2026-12-02). The same
+  // proportional load then goes on in 2 and 4 equal steps from the cold start (friction follows
+  // the load path more closely; result.load_steps says how many). A failed factorization would
+  // only fail again.
+  const unsigned int asked = parameters.load_steps;
+  for (unsigned int steps = asked;; steps *= 2)
+  {
+    parameters.load_steps = steps;
+    try
+    {
+      solve_load_steps(residual);
+      parameters.load_steps = asked;
+      return;
+    }
+    catch (const SolverFailure&)
+    {
+      if (steps >= 4 * asked || (use_schur_complement() && !condensed))
+      {
+        parameters.load_steps = asked;
+        throw;
+      }
+      restore_cold_start();
+    }
+  }
 }
 
 template <int dim>

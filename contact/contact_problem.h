@@ -306,6 +306,8 @@ private:
 
   // The load steps from the current states; SolverFailure when one does not converge.
   void solve_load_steps(dealii::Vector<double>& residual);
+  // solve_load_steps, and on a failure again from the cold start with 2× and 4× the load steps.
+  void solve_refining_load_steps(dealii::Vector<double>& residual);
   void solve_load_step(unsigned int step, const std::vector<std::vector<NodeState>>& initial_states,
                        dealii::Vector<double>& residual);
   // Schur complement: the particular solution and mode loads follow a hub target changed by

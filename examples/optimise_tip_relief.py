@@ -88,8 +88,15 @@ def te_peak_to_peak(relief):
     return value
 
 
-best = minimize_scalar(te_peak_to_peak, bounds=(0.0, arguments.max_relief), method="bounded",
-                       options={"xatol": 0.5})
+try:
+    best = minimize_scalar(te_peak_to_peak, bounds=(0.0, arguments.max_relief), method="bounded",
+                           options={"xatol": 0.5})
+except gearstiff.SolverFailure as failure:
+    # No number from a failed FE solve: the search stops and says where, as the command line
+    # does (exit 3).
+    if root:
+        print(f"{CASE}: the search stopped: {failure}", file=sys.stderr)
+    sys.exit(3)
 if root:
     print(f"{CASE}: tip relief minimising TE peak-to-peak at {arguments.torque:g} N·m: "
           f"C_a = {best.x:.1f} µm "
