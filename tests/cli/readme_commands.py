@@ -174,6 +174,8 @@ def main():
                   f"stderr:\n{process.stderr[-3000:]}\nstdout:\n{process.stdout[-2000:]}")
             return 1
         print(f"ok {elapsed:6.1f} s: {line}")
+        with open(os.path.join(work, f"line{commands.index(line):02d}.stdout"), "w") as f:
+            f.write(line + "\n" + process.stdout)  # what its checks read, kept for a failure
         failures = check_numbers(line, process.stdout, work)
         if failures:
             print(f"FAILED (numbers): {line}\n  " + "\n  ".join(failures))
