@@ -3,6 +3,7 @@
 
 usage: check_json.py WORKDIR [--check SPEC]... [--expect-file NAME]... [--text REGEX]...
                      [--stderr REGEX] -- command args...
+       check_json.py WORKDIR --summary FILE [--check SPEC]... [--text REGEX]...
 
 WORKDIR is emptied first and is the command's working directory; "@WORK@" and "@SRC@" in the
 arguments expand to it and to the source tree. The command must exit 0 and print one JSON
@@ -19,6 +20,8 @@ script states its source beside the SPEC (tests/*/CMakeLists.txt). Each check pr
 measured value and its deviation, so a test's log carries the figure its comment quotes.
 --text REGEX must match one line "NAME: text" of the output's text entries (a note, a model
 description: what a command says beside its numbers), --stderr REGEX the command's stderr.
+--summary FILE checks the summary.json another test wrote (a ctest fixture, e.g. a regression
+case's run) instead of running the same command again (issue 43: the suite's time).
 """
 import json
 import os
@@ -29,7 +32,8 @@ import sys
 
 
 def parse_arguments(argv):
-    work, checks, files, patterns = argv[1], [], [], {"--text": [], "--stderr": []}
+    work, checks, files = argv[1], [], []
+    patterns = {"--text": [], "--stderr": [], "--summary": []}
     i = 2
     while i < len(argv) and argv[i] != "--":
         if argv[i] == "--check":
@@ -84,8 +88,8 @@ def lookup(summary, key):
     return entry["value"] if isinstance(entry, dict) else entry
 
 
-def main():
-    work, checks, files, patterns, command = parse_arguments(sys.argv)
+def run_command(work, command):
+    """Runs the command with --json in an emptied WORKDIR: its summary, stderr and command line."""
     src = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", ".."))
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
@@ -94,8 +98,18 @@ def main():
     if run.returncode != 0:
         sys.exit(f"check_json: exit code {run.returncode}\n--- command: {' '.join(command)}\n"
                  f"--- stderr:\n{run.stderr[-3000:]}")
-    summary = json.loads(run.stdout[run.stdout.index("{"):])
-    failed = check_patterns(summary, run.stderr, patterns)
+    return json.loads(run.stdout[run.stdout.index("{"):]), run.stderr, command
+
+
+def main():
+    work, checks, files, patterns, command = parse_arguments(sys.argv)
+    if patterns["--summary"]:
+        command = [f"(summary {patterns['--summary'][0]})"]
+        with open(patterns["--summary"][0], encoding="utf-8") as stored:
+            summary, stderr = json.load(stored), ""
+    else:
+        summary, stderr, command = run_command(work, command)
+    failed = check_patterns(summary, stderr, patterns)
     for spec in checks:
         key, reference, tolerance = spec[0], spec[1], spec[2]
         try:
