@@ -48,5 +48,5 @@ for key in ("influence_fe_dofs", "influence_grid_points", "influence_grid_step",
             "influence_scene_time", "influence_factorization_time",
             "influence_coefficient_time", "influence_contact_time", "sweep_wall_time"):
     v = values[key]
-    print(f"  {key}: {v[\"value\"] if isinstance(v, dict) else v}")
+    print("  %s: %s" % (key, v["value"] if isinstance(v, dict) else v))
 '
