@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Speed of `Stiffness/contact model = influence coefficients` (issue 47, docs/ltca.md) beside the
-# exact rolling sweep, 2D default pair, 128 positions, 1 rank (target: ≤ 2 s for the fast model):
+# exact rolling sweep, 2D default pair, 32 and 128 positions, 1 rank (target: ≤ 2 s for the fast
+# model at 128):
 # process wall time and peak memory (/usr/bin/time -v), medians of 3, and how the fast model's
 # time splits (scene, factorization, coefficients, contact problems) from its report.
 # usage: bench/ltca_speed.sh [path/to/gearstiff]   (default build/app/gearstiff); run it under
@@ -8,7 +9,7 @@
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
 export OMP_NUM_THREADS=1
-sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=128")
+positions_list=${LTCA_POSITIONS:-32 128}
 # wall seconds and peak RSS (MB) of one run
 measure() {
   local log
@@ -30,11 +31,15 @@ median3() { # label, command...
     echo "$label: wall $wall s (median of 3: $(printf '%s ' "${runs[@]%% *}")), peak RSS $mem MB"
   }
 }
-median3 "influence coefficients, 128 positions, 1 rank" \
-  "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients"
-median3 "finite element (exact, sweep mesh once), 128 positions, 1 rank" \
-  "$gearstiff" "${sweep[@]}" --set "Contact/Friction coefficient=0"
-echo "time split of the fast model (its report):"
+for positions in $positions_list; do
+  sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=$positions")
+  median3 "influence coefficients, $positions positions, 1 rank" \
+    "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients"
+  median3 "finite element (exact, sweep mesh once), $positions positions, 1 rank" \
+    "$gearstiff" "${sweep[@]}" --set "Contact/Friction coefficient=0"
+done
+echo "time split of the fast model (its report, 128 positions):"
+sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=128")
 "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients" --json |
   python3 -c '
 import json, sys
@@ -43,5 +48,5 @@ for key in ("influence_fe_dofs", "influence_grid_points", "influence_grid_step",
             "influence_scene_time", "influence_factorization_time",
             "influence_coefficient_time", "influence_contact_time", "sweep_wall_time"):
     v = values[key]
-    print(f"  {key}: {v[\"value\"] if isinstance(v, dict) else v}")
+    print("  %s: %s" % (key, v["value"] if isinstance(v, dict) else v))
 '

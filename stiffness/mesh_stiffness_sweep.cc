@@ -4,7 +4,6 @@
 #include "errors/format.h"
 #include "fem/parallel.h"
 #include "geometry/tooth_fault.h"
-#include "stiffness/influence_sweep.h"
 
 #include <algorithm>
 #include <boost/serialization/string.hpp>
@@ -175,8 +174,10 @@ stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
                 const StiffnessSweepSpec& spec, const std::string& scene_file_stem,
                 const std::function<void(const std::string&)>& progress)
 {
-  if (settings.contact_model == ContactModel::influence_coefficients) // docs/ltca.md
-    return influence_sweep<dim>(mpi_communicator, settings, spec, scene_file_stem, progress);
+  if (settings.contact_model == ContactModel::influence_coefficients)
+    throw InputError(stiffness_parameter::contact_model,
+                     "influence coefficients run through stiffness::influence_sweep "
+                     "(stiffness/influence_sweep.h), not the finite-element sweep");
   Timer timer(mpi_communicator, true);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
   const std::vector<double> positions = sweep_positions(pair, spec);

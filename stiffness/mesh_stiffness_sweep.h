@@ -97,6 +97,8 @@ std::vector<double> sweep_positions(const kinematics::GearPairGeometry& pair,
 // set, each position writes VTU as "<output_base>_<position>". `progress` (may be empty) is
 // called on rank 0 after each of its positions with a one-line message. A position that fails
 // stops the sweep on every rank with that position's exception (InputError or SolverFailure).
+// The finite-element contact model only (InputError for influence coefficients: those run
+// through stiffness/influence_sweep.h, the caller picks).
 template <int dim>
 StiffnessSweepResult
 stiffness_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,

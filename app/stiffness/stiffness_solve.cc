@@ -11,6 +11,7 @@
 #include "errors/limits.h"
 #include "geometry/tooth_fault.h"
 #include "kinematics/gear_pair.h"
+#include "stiffness/influence_sweep.h"
 #include "stiffness/transmission_error.h"
 
 #include <algorithm>
@@ -139,6 +140,14 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
       stiffness_parameter_names(),
       [&]
       {
+        // The two contact models are separate sweeps (neither stiffness module includes the
+        // other): the choice is the command's.
+        if (settings.contact_model == stiffness::ContactModel::influence_coefficients)
+          return settings.scene.mesh.dimension == 3
+                     ? stiffness::influence_sweep<3>(context.mpi_communicator, settings, p.sweep,
+                                                     stem, progress)
+                     : stiffness::influence_sweep<2>(context.mpi_communicator, settings, p.sweep,
+                                                     stem, progress);
         return settings.scene.mesh.dimension == 3
                    ? stiffness::stiffness_sweep<3>(context.mpi_communicator, settings, p.sweep,
                                                    stem, progress)
