@@ -172,9 +172,9 @@ void ContactProblem<dim>::check_candidates(const Pair& pair) const
   if (worst->initial_gap < -parameters.overlap_tolerance)
   {
     std::ostringstream where;
-    where << "the bodies overlap by " << -worst->initial_gap * 1e3 << " mm at ("
-          << worst->node.position * 1e3 << ") mm, beyond the overlap tolerance of "
-          << parameters.overlap_tolerance * 1e3 << " mm";
+    where << overlap_reason << -worst->initial_gap * 1e3 << " mm at (" << worst->node.position * 1e3
+          << ") mm, beyond the overlap tolerance of " << parameters.overlap_tolerance * 1e3
+          << " mm";
     throw InputError(pair.name, where.str());
   }
 }

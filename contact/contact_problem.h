@@ -69,6 +69,11 @@ struct ContactParameters
   bool warm_start = true; // analyses of similar scenes (sweeps) start from their neighbour's zone
 };
 
+// How the reason of the InputError for an initial overlap beyond `overlap_tolerance` begins,
+// followed by the overlap in mm: an analysis that knows which of its parameters cures an overlap
+// (a helical scene's layers: stiffness/mesh_stiffness.cc) names that parameter instead.
+inline constexpr const char* overlap_reason = "the bodies overlap by ";
+
 // One slave node of a contact pair in the result.
 template <int dim>
 struct SurfacePoint
