@@ -114,7 +114,7 @@ TEST(HelicalScene, RefusesWhatItCannotMesh)
   EXPECT_EQ(refusal(few), "Mesh/layers");
   few.mesh.layers = 7;
   EXPECT_EQ(layers_for_twist(kinematics::compute_gear_pair(few.pair)), 7u);
-  EXPECT_EQ(refusal(helical_spec(45.)), "Gear pair/Pinion/helix angle");
+  EXPECT_EQ(refusal(helical_spec(45.)), "pinion.helix_angle");
   GearPairSceneSpec swept = helical_spec(15.);
   swept.swept_positions = {0.01};
   EXPECT_EQ(refusal(swept), scene_field::swept_positions);
@@ -132,7 +132,7 @@ TEST(HelicalScene, RefusesWrongHands)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Gear pair/Wheel/helix angle");
+    EXPECT_EQ(e.parameter(), "wheel.helix_angle");
   }
 }
 
