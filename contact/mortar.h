@@ -14,6 +14,7 @@
 // rule instead of an exact segmentation (the patch test then holds to the quadrature error).
 #pragma once
 
+#include "contact/pairing_window.h"
 #include "fem/elastic_system.h"
 
 #include <cmath>
@@ -45,22 +46,6 @@ struct SlaveNode
   // DoF pair into component c of the frame of `normal`. Unused (identity) unless `rotated`.
   bool rotated = false;
   dealii::Tensor<2, dim> slave_frame, master_frame;
-};
-
-// A pairing restricted to the surfaces near where the contact can be (rolling sweeps pair
-// long swept flanks at every position: contact/contact_problem.h). Distances are measured in
-// the x–y plane: in 3D the window is a cylinder parallel to z (a spur gear's contact lines).
-template <int dim>
-struct PairingWindow
-{
-  dealii::Point<dim> centre; // m, in the frame the pairing is made in (z ignored)
-  double radius = 0.;        // m; 0: no window, the whole surfaces are paired
-
-  // m, distance of p from the centre in the x–y plane
-  double distance(const dealii::Point<dim>& p) const
-  {
-    return std::hypot(p[0] - centre[0], p[1] - centre[1]);
-  }
 };
 
 // Couples every slave node whose dual support projects onto the master surface within

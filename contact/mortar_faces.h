@@ -4,7 +4,7 @@
 // integrates the dual mortar coupling over them (contact/mortar.h).
 #pragma once
 
-#include "contact/mortar.h"
+#include "contact/pairing_window.h"
 
 #include <array>
 #include <deal.II/base/point.h>
