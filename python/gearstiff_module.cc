@@ -324,6 +324,30 @@ protected:
 
 py::dict typed_values(const py::dict& declared);
 
+// Notes on the input that the command line prints on stderr (a renamed parameter, sections of a
+// shared pair file that other commands use) become Python warnings (UserWarning): nothing is
+// printed unless verbose=True, and a script can filter them or turn them into errors.
+void load_input_with_warnings(const Command& command, const Invocation& invocation,
+                              dealii::ParameterHandler& prm)
+{
+  std::ostringstream notes;
+  std::streambuf* const cerr_buffer = std::cerr.rdbuf(notes.rdbuf());
+  try
+  {
+    load_parameters(command, invocation, prm);
+  }
+  catch (...)
+  {
+    std::cerr.rdbuf(cerr_buffer);
+    throw;
+  }
+  std::cerr.rdbuf(cerr_buffer);
+  std::istringstream lines(notes.str());
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0)
+      throw py::error_already_set(); // warnings turned into errors
+}
+
 py::dict run_command(const std::string& name, const py::object& params,
                      const py::object& output_directory, bool verbose)
 {
@@ -353,7 +377,7 @@ py::dict run_command(const std::string& name, const py::object& params,
     // "" wrote nothing; a name too long for the file system raised std::filesystem's text.
     check_file_name(invocation.output_directory, "output_directory");
   }
-  load_parameters(command, invocation, prm);
+  load_input_with_warnings(command, invocation, prm);
 
   Report report;
   double run_seconds = 0.;

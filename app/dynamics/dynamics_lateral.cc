@@ -93,13 +93,20 @@ void report_statics(const LateralParameters& p, const LateralModel& model, Repor
                    "largest planet load sharing factor N·F_sn/ΣF_s (1 = equal shares)");
   report.add_value("output_torque", s.output_torque, "N·m",
                    "load on the output balancing the input torque");
+  // A bearing force below 1e-9 of the largest mesh force is the round-off of a member the
+  // planets balance (equal, equally spaced planets): reported as 0, not as a 1e-13 N value.
+  double scale = 0.; // N
+  for (std::size_t k = 0; k < s.sun_mesh_force.size(); ++k)
+    scale = std::max({scale, std::abs(s.sun_mesh_force[k]), std::abs(s.ring_mesh_force[k])});
+  const auto force = [&](unsigned int j, unsigned int axis)
+  { return std::abs(s.bearing_force(j, axis)) < 1e-9 * scale ? 0. : s.bearing_force(j, axis); };
   const char* names[3] = {"carrier", "ring", "sun"};
   for (unsigned int j = 0; j < 3; ++j)
-    report.add_value(std::string("bearing_force_") + names[j],
-                     std::hypot(s.bearing_force(j, 0), s.bearing_force(j, 1)), "N",
+    report.add_value(std::string("bearing_force_") + names[j], std::hypot(force(j, 0), force(j, 1)),
+                     "N",
                      std::string("static bearing force on the ") + names[j] + " (x " +
-                         format_number(s.bearing_force(j, 0), 6) + " N, y " +
-                         format_number(s.bearing_force(j, 1), 6) + " N)");
+                         format_number(force(j, 0), 6) + " N, y " + format_number(force(j, 1), 6) +
+                         " N; below 1e-9 of the largest mesh force: 0, balanced)");
 }
 
 // Mesh orders drawn on the Campbell chart and searched for crossings.

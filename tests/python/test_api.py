@@ -452,3 +452,15 @@ def test_print_parameters():
         gearstiff.gear_pair()["values"]["centre_distance"]["value"]
     with pytest.raises(gearstiff.InputError, match="unknown command"):
         gearstiff.print_parameters("frobnicate")
+
+
+def test_input_notes_are_warnings(tmp_path, capfd):
+    # A pair file shared with other commands: the command line notes on stderr that `gear-pair`
+    # ignores the scene's torque; the module raises the same note as a UserWarning and prints
+    # nothing (README: nothing is printed unless verbose=True).
+    pair = tmp_path / "pair.prm"
+    pair.write_text("subsection Gear pair scene\n  set pinion torque = 300\nend\n")
+    with pytest.warns(UserWarning, match="other commands use ignored by `gear-pair`"):
+        gearstiff.gear_pair(str(pair))
+    out, err = capfd.readouterr()
+    assert out == "" and err == ""
