@@ -284,7 +284,7 @@ TEST(ToothFault, FaultyToothOutsideTheModelIsRefused)
   GearPairSceneSpec spec;
   spec.pinion_modifications.by_tooth[7] = {fault(ModificationKind::tip_chipping, 0.5e-3)};
   EXPECT_EQ(error_parameter([&] { write_gear_pair_scene(spec, work_file("fault_out.msh")); }),
-            "pinion.faulty_tooth");
+            "Gear pair/Pinion/faulty tooth");
 }
 
 // The pinion's volume (m³) outside minus inside the z-range `removed` (half the face) in the 3D
