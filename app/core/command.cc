@@ -1,5 +1,6 @@
 #include "app/core/command.h"
 
+#include "app/core/tools_directory.h"
 #include "errors/errors.h"
 #include "errors/file_names.h"
 
@@ -286,13 +287,6 @@ std::string shared_scratch_directory(MPI_Comm communicator)
   folder.resize(length);
   MPI_Bcast(folder.data(), length, MPI_CHAR, 0, communicator);
   return folder;
-}
-
-std::string tools_directory()
-{
-  if (const char* dir = std::getenv("GEARSTIFF_TOOLS_DIR"))
-    return dir;
-  return GEARSTIFF_TOOLS_DIR;
 }
 
 CommandContext::CommandContext(MPI_Comm communicator, dealii::ConditionalOStream& pcout,

@@ -142,8 +142,4 @@ void install_signal_cleanup();
 // named under TMPDIR.
 IoError located(const IoError& error, const std::string& staging_directory,
                 const std::string& output_directory);
-
-// Directory holding tools/ (plot scripts), set at configure time; overridable by
-// GEARSTIFF_TOOLS_DIR in the environment.
-std::string tools_directory();
 } // namespace gearstiff::app

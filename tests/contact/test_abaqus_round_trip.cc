@@ -9,6 +9,7 @@
 #include "geometry/abaqus_deck.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
+#include "tests/test_paths.h"
 
 #include <deal.II/grid/tria.h>
 #include <filesystem>
@@ -21,9 +22,7 @@ using namespace gearstiff;
 
 std::string work_file(const std::string& name)
 {
-  const std::filesystem::path folder =
-      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "contact" / "abaqus-work";
-  std::filesystem::create_directories(folder);
+  const auto folder = test_support::build_work_folder("tests/contact/abaqus-work");
   return (folder / name).string();
 }
 

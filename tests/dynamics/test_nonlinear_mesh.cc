@@ -10,6 +10,7 @@
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 #include "single_pair_train.h"
+#include "tests/test_paths.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,7 @@ using namespace gearstiff::test_support;
 namespace
 {
 const std::string fe_fixture =
-    std::string(GEARSTIFF_SOURCE_DIR) + "/tests/dynamics/cli/stiffness_sun_planet.json";
+    (source_dir() / "tests/dynamics/cli/stiffness_sun_planet.json").string();
 
 // The split-path pinion and wheel (single_pair_train.h) with constant stiffness k [N/m], mesh
 // damping ratio ζ of the relative mode (c = 2ζ·sqrt(k·m), m = 1/(r1²/J1 + r2²/J2)), the given

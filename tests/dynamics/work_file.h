@@ -3,12 +3,13 @@
 // temporary folder (they were /tmp/gearstiff-test-*.json, never removed; issue 49).
 #pragma once
 
+#include "tests/test_paths.h"
+
 #include <filesystem>
 #include <string>
 
 inline std::string dynamics_work_file(const std::string& name)
 {
-  const auto folder = std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "dynamics" / "work";
-  std::filesystem::create_directories(folder);
+  const auto folder = gearstiff::test_support::build_work_folder("tests/dynamics/work");
   return (folder / name).string();
 }

@@ -2,6 +2,8 @@
 // the mesh read back with deal.II's GridIn::read_msh with its material and boundary ids.
 #pragma once
 
+#include "tests/test_paths.h"
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <deal.II/grid/grid_in.h>
@@ -16,9 +18,7 @@ namespace gearstiff::test_support
 // `name` in the build tree's tests/geometry/scene-work (created on first use).
 inline std::string work_file(const std::string& name)
 {
-  const std::filesystem::path folder =
-      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "geometry" / "scene-work";
-  std::filesystem::create_directories(folder);
+  const auto folder = build_work_folder("tests/geometry/scene-work");
   return (folder / name).string();
 }
 

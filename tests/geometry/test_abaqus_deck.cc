@@ -9,6 +9,7 @@
 #include "geometry/abaqus_deck.h"
 #include "geometry/scene_cylinders.h"
 #include "geometry/scene_gear_pair.h"
+#include "tests/test_paths.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,9 +30,7 @@ using namespace gearstiff::geometry;
 // `name` in the build tree's tests/geometry/deck-work (the deck test has no deal.II).
 std::string work_file(const std::string& name)
 {
-  const std::filesystem::path folder =
-      std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "geometry" / "deck-work";
-  std::filesystem::create_directories(folder);
+  const auto folder = test_support::build_work_folder("tests/geometry/deck-work");
   return (folder / name).string();
 }
 

@@ -2,6 +2,8 @@
 // with rank 0's process id on every rank (a distributed solve reads the file rank 0 writes).
 #pragma once
 
+#include "tests/test_paths.h"
+
 #include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <string>
@@ -9,8 +11,7 @@
 
 inline std::string stiffness_work_stem(const std::string& name)
 {
-  const auto folder = std::filesystem::path(GEARSTIFF_BINARY_DIR) / "tests" / "stiffness" / "work";
-  std::filesystem::create_directories(folder);
+  const auto folder = gearstiff::test_support::build_work_folder("tests/stiffness/work");
   const int pid = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, static_cast<int>(getpid()), 0);
   return (folder / (name + "-" + std::to_string(pid))).string();
 }
