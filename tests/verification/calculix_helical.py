@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Claim (docs/helical.md, docs/calculix.md, issue 46): on the same twisted 3D mesh of a helical
+pair gearstiff's mesh stiffness equals CalculiX's penalty-corrected one within 1 % at a
+single-contact and at a double-contact position.
+
+The small coarse helical pair of tests/helical/sweep_dynamics.py (z 19/29, m_n 2 mm, β ±10°,
+b 8 mm, 5 layers, Q1, frictionless) at `Gear pair scene/position` single and double: solved by
+`gearstiff stiffness` (FE_Q(1): the trilinear hexahedron ccx's C3D8 is) and by ccx on the deck
+`gearstiff mesh --set Mesh/format=inp` writes from the same scene and mesh (docs/calculix.md:
+pinion bore a rigid body turned by T1 about its axis, held axially and in tilt as gearstiff's
+rigid hub is; the wheel bore held), at the contact penalties K = 10 and 100 E/h_c, extrapolated
+to K → ∞ in 1/K as verification.calculix_gear_pair does (k(K) = k_∞ + a/K).
+k = T1/(r_b1²·Δφ) with Δφ the rotation of the deck's ROT NODE (tools/calculix_stiffness.py).
+
+usage: calculix_helical.py GEARSTIFF WORKDIR
+
+NOT YET REGISTERED in tests/verification/CMakeLists.txt (no row in docs/accuracy.md): measured
+2026-12-02 with this script, single position −0.026 % (100.974 against ccx 101.000 N/µm, 1 loaded
+pair), double position −2.02 % (141.544 against 144.463 N/µm, 2 loaded pairs; ccx at K = 10 and
+100 E/h_c: 143.219, 144.338): the double position fails the 1 % bound and is not explained yet
+(to check first: whether the deck pairs more tooth pairs than gearstiff's candidate pairs, e.g. a
+pair touching only at a tip corner or face end, which gearstiff leaves free).
+"""
+import os
+import sys
+
+from verify import Checks, require_ccx, run_json, value, work_folder
+
+require_ccx()
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import calculix_compare as bench  # noqa: E402  (bench/, on the path through verify)
+from calculix_stiffness import rotation_node  # noqa: E402
+
+# The pair and mesh of tests/helical/sweep_dynamics.py (its CASE, frictionless, Q1).
+PAIR = ["Gear pair/Pinion/teeth=19", "Gear pair/Wheel/teeth=29",
+        "Gear pair/Pinion/module=2", "Gear pair/Wheel/module=2",
+        "Gear pair/Pinion/profile shift=0", "Gear pair/Wheel/profile shift=0",
+        "Gear pair/Pinion/face width=8", "Gear pair/Wheel/face width=8",
+        "Gear pair/Pinion/helix angle=10", "Gear pair/Wheel/helix angle=-10",
+        "Gear pair scene/pinion torque=20"]
+MESH = ["Mesh/dimension=3", "Mesh/layers=5", "Mesh/contact size=0.15", "Mesh/fine radius=0.4",
+        "Mesh/body size=0.75", "Mesh/rim size=2.5"]
+TORQUE = 20.  # N·m, T1 of both commands (PAIR)
+FACTORS = (10., 100.)
+
+gearstiff, work = os.path.realpath(sys.argv[1]), work_folder(sys.argv[2])
+env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
+pair = run_json(gearstiff, "gear-pair", [s for s in PAIR if s.startswith("Gear pair/")])
+r_b1 = 1e-3 * value(pair, "pinion_base_radius")
+
+
+def gearstiff_k(position):
+    report = run_json(gearstiff, "stiffness", PAIR + MESH + [
+        f"Stiffness/mode={position}",
+        "Finite elements/Element degree=1", "Contact/Friction coefficient=0",
+        "Stiffness/published reference=false"], ["--quiet"])
+    return value(report, "mesh_stiffness"), report["values"].get("loaded_pairs", {}).get("value")
+
+
+def ccx_k(position, factor):
+    folder = os.path.join(work, f"{position}_f{factor:g}")
+    run_json(gearstiff, "mesh", PAIR + MESH + [
+        "Scene/gear pair defaults=stiffness", f"Gear pair scene/position={position}",
+        "Mesh/format=inp", f"Abaqus deck/penalty factor={factor:g}",
+        "Abaqus deck/friction coefficient=0"], ["--quiet", "-o", folder])
+    _, wall, _, _ = bench.run_timed(["ccx", "-i", "scene"], cwd=folder, env=env)
+    rotation = abs(bench.last_rotation(os.path.join(folder, "scene.dat"),
+                                       rotation_node(os.path.join(folder, "scene.inp"))))
+    return TORQUE / (r_b1 ** 2 * rotation) / 1e6, wall
+
+
+checks = Checks("calculix_helical")
+for position in ("single", "double"):
+    k, loaded = gearstiff_k(position)
+    runs = [ccx_k(position, f) for f in FACTORS]
+    ks = [run[0] for run in runs]
+    k_inf = (FACTORS[0] * ks[0] - FACTORS[1] * ks[1]) / (FACTORS[0] - FACTORS[1])
+    print(f"{position}: gearstiff Q1 {k:.5f} N/um ({loaded} loaded pairs); ccx K = 10, 100 "
+          f"E/h_c: {ks[0]:.5f}, {ks[1]:.5f} N/um ({runs[0][1]:.1f} + {runs[1][1]:.1f} s); "
+          f"K -> inf {k_inf:.5f} N/um")
+    # The issue's bound (1 %); measured: see docs/accuracy.md's row.
+    checks.near(f"{position}: k gearstiff / k ccx(K->inf)", k, k_inf, 0.01)
+checks.done()
