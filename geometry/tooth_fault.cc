@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "geometry/fields.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -53,9 +54,9 @@ std::pair<double, double> spall_rolls(const ToothModification& spall, const Toot
   return {low > 0. ? std::sqrt(2. * base_radius * low) : -1., std::sqrt(2. * base_radius * high)};
 }
 
-std::string entry(const std::string& parameter, const std::string& name)
+std::string entry(const std::string& gear, const std::string& name)
 {
-  return parameter + "/" + name;
+  return field::gear_entry(gear, name);
 }
 
 ProfilePoint lerp(const ProfilePoint& a, const ProfilePoint& b, double w)

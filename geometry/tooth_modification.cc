@@ -1,6 +1,7 @@
 #include "geometry/tooth_modification.h"
 
 #include "errors/errors.h"
+#include "geometry/fields.h"
 #include "geometry/tooth_fault.h"
 
 #include <Eigen/Geometry>
@@ -220,7 +221,7 @@ void check_modifications(const std::vector<ToothModification>& modifications,
   {
     if (is_fault(m.kind)) // checked by check_faults (geometry/tooth_fault.h)
       continue;
-    const std::string name = parameter + "/" + kind_name(m.kind);
+    const std::string name = field::gear_entry(parameter, kind_name(m.kind));
     if (m.kind != ModificationKind::profile_slope && !(m.amount >= 0.))
       throw InputError(name, "must be 0 or positive (material removed, µm)");
     if (!std::isfinite(m.amount))
@@ -229,9 +230,9 @@ void check_modifications(const std::vector<ToothModification>& modifications,
     {
       const double length = relief_length(m, range);
       if (m.amount > 0. && !(length > 0.))
-        throw InputError(name + " length", "must be positive (mm) or auto");
+        throw InputError(name + "_length", "must be positive (mm) or auto");
       if (length > active * (1. + 1e-9))
-        throw InputError(name + " length", mm(length) + " is longer than the active profile (" +
+        throw InputError(name + "_length", mm(length) + " is longer than the active profile (" +
                                                mm(active) + " along the path of contact)");
     }
     const double removal = (m.flanks == ModifiedFlanks::both ? 2. : 1.) *
@@ -247,7 +248,7 @@ void check_modifications(const std::vector<ToothModification>& modifications,
                                  um(nominal.tip_thickness) + ")");
   }
   if (tip_removal >= nominal.tip_thickness)
-    throw InputError(parameter + "/" + kind_name(modifications.front().kind),
+    throw InputError(field::gear_entry(parameter, kind_name(modifications.front().kind)),
                      "the modifications together remove " + um(tip_removal) +
                          " across the tooth, beyond its tip thickness " +
                          um(nominal.tip_thickness));

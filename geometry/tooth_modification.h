@@ -118,16 +118,17 @@ double removed_depth(const std::vector<ToothModification>& modifications,
                      const FlankRollRange& range, double roll, bool loaded);
 
 // The nominal outline with the modifications applied to its flanks (side `loaded_side` is the
-// loaded flank). `parameter` prefixes the InputError of a modification that does not fit the
-// tooth: a relief longer than the active profile, a negative amount, removal that reaches the
-// tooth thickness.
+// loaded flank). `parameter` is the gear whose fields an InputError names
+// (geometry::field::modified_gear: "pinion.tip_relief_length", geometry/fields.h) for a
+// modification that does not fit the tooth: a relief longer than the active profile, a negative
+// amount, removal that reaches the tooth thickness.
 ToothProfile modified_tooth(const ToothProfile& nominal,
                             const std::vector<ToothModification>& modifications,
                             const FlankRollRange& range, int loaded_side,
                             const std::string& parameter);
 
-// The checks of modified_tooth without building (InputError naming parameter + "/tip relief"
-// etc.).
+// The checks of modified_tooth without building (InputError naming
+// field::gear_entry(parameter, "tip relief") etc.).
 void check_modifications(const std::vector<ToothModification>& modifications,
                          const ToothProfile& nominal, const FlankRollRange& range,
                          const std::string& parameter);
