@@ -57,16 +57,11 @@ constexpr double crack_face_size = 0.5 * crack_opening;
 // m, the cell size at a crack's tip: its crack_tip_size, or the default crack_tip_size.
 double crack_tip_cell_size(const ToothModification& crack);
 
-bool is_fault(ModificationKind kind);
-bool has_faults(const std::vector<ToothModification>& modifications);
 // Whether every fault of the gear (by_tooth) is a root crack, or it has none: every flank is
 // whole, so the pairs in contact carry at every position and a scene rolls with its cracked
 // tooth (`Stiffness/sweep mesh = once`). A broken, chipped or spalled tooth changes which pairs
 // carry from one position to the next.
 bool flanks_whole(const GearModifications& modifications);
-// The parameter word of a fault's size ("tip chipping", "broken tooth", "spall depth",
-// "crack depth").
-std::string fault_name(ModificationKind kind);
 
 // The faults' checks against the nominal tooth (InputError naming the gear's field of the entry,
 // field::gear_entry(parameter, "spall depth") = "pinion.spall_depth", geometry/fields.h):

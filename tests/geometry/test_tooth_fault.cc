@@ -7,6 +7,7 @@
 #include "geometry/involute_tooth.h"
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_fault.h"
+#include "geometry/tooth_profiles.h"
 #include "kinematics/gear_pair.h"
 #include "tests/geometry/scene_test_support.h"
 
