@@ -221,8 +221,7 @@ void LateralTrainModel::add_springs()
   for (unsigned int m = 0; m < data.meshes.size(); ++m)
   {
     const LateralMeshLine& line = data.meshes[m];
-    require_positive(line.stiffness,
-                     "Train mesh " + std::to_string(line.spec_mesh + 1) + "/stiffness",
+    require_positive(line.stiffness, field::train_mesh(line.spec_mesh, "stiffness"),
                      "the stiffness of " + line.name);
     if (line.body_a == line.body_b || line.body_a >= n_bodies() || line.body_b >= n_bodies())
       throw InputError(field::train("meshes"), line.name + " must join two bodies");

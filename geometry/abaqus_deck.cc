@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/io.h"
+#include "geometry/fields.h"
 
 #include <algorithm>
 #include <cctype>
@@ -244,7 +245,7 @@ void write_groups(std::ostream& out, const SceneMesh& mesh, const SceneInfo& inf
   for (const AbaqusSurfacePart& part : spec.surface_parts)
   {
     if (part.index >= part.centres.size())
-      throw InputError("Abaqus deck/surface parts",
+      throw InputError(field::deck("surface_parts"),
                        part.name + ": no centre " + std::to_string(part.index));
     out << "*SURFACE, NAME=" << part.name << ", TYPE=ELEMENT\n";
     write_faces(part.boundary_id, [&](const CellFace& f)
@@ -293,7 +294,7 @@ void write_contact(std::ostream& out, const SceneInfo& info, const AbaqusDeckSpe
   const auto surface = [&](const std::string& name) -> const std::string&
   {
     if (surfaces.count(name) == 0)
-      throw InputError("Abaqus deck/contact pairs", "no surface named " + name);
+      throw InputError(field::deck("contact_pairs"), "no surface named " + name);
     return name;
   };
   out << "*SURFACE INTERACTION, NAME=CONTACT\n"
@@ -323,7 +324,8 @@ void write_rigid_bodies(std::ostream& out, const SceneMesh& mesh, const SceneInf
         << ref << ", " << c.x() << ", " << c.y() << ", 0\n"
         << "*NODE, NSET=" << body.name << "_ROT\n"
         << rot << ", " << c.x() << ", " << c.y() << ", 0\n"
-        << "*RIGID BODY, NSET=" << boundary_name(info, body.boundary_id, "Abaqus deck/rigid bodies")
+        << "*RIGID BODY, NSET="
+        << boundary_name(info, body.boundary_id, field::deck("rigid_bodies"))
         << "_NODES, REF NODE=" << ref << ", ROT NODE=" << rot << "\n";
     const auto nodes = boundary_nodes(mesh, layout, body.boundary_id);
     rigid_nodes.insert(nodes.begin(), nodes.end());
@@ -349,7 +351,7 @@ void write_model(std::ostream& out, const SceneMesh& mesh, const SceneInfo& info
   write_rigid_bodies(out, mesh, info, spec, layout);
   // The supports are written per step with the group names; a bad id stops here, named.
   for (const int id : spec.fixed_bores)
-    boundary_name(info, id, "Abaqus deck/fixed bores");
+    boundary_name(info, id, field::deck("fixed_bores"));
 }
 
 // The supports of both steps: the fixed bores, the reference nodes, the out-of-plane rotations.
@@ -541,13 +543,13 @@ AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& 
                                  const double output_torque, const double penalty_factor)
 {
   if (spec.output_pins == 0)
-    throw InputError("Cycloid scene/output pins",
+    throw InputError(field::cycloid_scene("output_pins"),
                      "the deck ties the output pins to the output member: at least one is needed");
   if (!spec.output_pin_bodies)
-    throw InputError("Cycloid scene/output pin bodies",
+    throw InputError(field::cycloid_scene("output_pin_bodies"),
                      "the deck ties the output pins to the output member: mesh them");
   if (!(std::abs(output_torque) > 0.) || !std::isfinite(output_torque))
-    throw InputError("Abaqus deck/output torque",
+    throw InputError(field::deck("output_torque"),
                      "must not be zero: without a torque nothing is loaded (N·m)");
   // Frictionless, plane stress: the load case of stiffness/cycloid_loads.h.
   AbaqusDeckSpec deck =
@@ -662,7 +664,7 @@ void write_abaqus_deck(const SceneInfo& info, const AbaqusDeckSpec& spec,
   const SceneMesh mesh = read_scene_mesh(info.file, info.dimension);
   const DeckLayout layout = deck_layout(mesh, spec);
   if (mesh.dimension == 2 && !(spec.slice_thickness > 0.))
-    throw InputError("Abaqus deck/thickness", "must be positive for a 2D scene");
+    throw InputError(field::deck("thickness"), "must be positive for a 2D scene");
   write_file(inp_file,
              [&](std::ostream& out)
              {

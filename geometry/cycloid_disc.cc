@@ -11,6 +11,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "geometry/fields.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -30,8 +31,6 @@ Vector unit(double angle)
 {
   return Vector(std::cos(angle), std::sin(angle));
 }
-
-const std::string parameter_prefix = "Cycloid disc/";
 
 // The shortened epicycloid of the roller centres and its equidistant, for one disc spec.
 struct Equidistant
@@ -85,22 +84,22 @@ struct Equidistant
 void check_disc(const CycloidDiscSpec& spec)
 {
   if (spec.rollers < 3)
-    throw InputError(parameter_prefix + "rollers", "at least 3 rollers");
+    throw InputError(field::disc("rollers"), "at least 3 rollers");
   if (!(spec.roller_circle_radius > 0.))
-    throw InputError(parameter_prefix + "roller circle radius", "must be positive");
+    throw InputError(field::disc("roller_circle_radius"), "must be positive");
   if (!(spec.eccentricity > 0.))
-    throw InputError(parameter_prefix + "eccentricity", "must be positive");
+    throw InputError(field::disc("eccentricity"), "must be positive");
   if (!(spec.roller_radius > 0.))
-    throw InputError(parameter_prefix + "roller radius", "must be positive");
+    throw InputError(field::disc("roller_radius"), "must be positive");
   const Equidistant curve(spec);
   if (!(curve.m() < 1.))
-    throw InputError(parameter_prefix + "eccentricity",
+    throw InputError(field::disc("eccentricity"),
                      "m = e·z_k/r = " + std::to_string(curve.m()) +
                          " must stay below 1 (the epicycloid would loop)");
   // Neighbouring rollers may not overlap.
   const double pitch_limit = spec.roller_circle_radius * std::sin(M_PI / spec.rollers);
   if (!(spec.roller_radius < pitch_limit))
-    throw InputError(parameter_prefix + "roller radius",
+    throw InputError(field::disc("roller_radius"),
                      "rollers overlap: q must stay below r·sin(π/z_k) = " + format_mm(pitch_limit));
   // The equidistant stays free of loops only where q is below the epicycloid's radius of
   // curvature on its convex stretches (the lobe tips). One half lobe suffices (symmetry).
@@ -115,7 +114,7 @@ void check_disc(const CycloidDiscSpec& spec)
       smallest_radius = std::min(smallest_radius, std::pow(d1.norm(), 3) / turning);
   }
   if (!(spec.roller_radius < smallest_radius))
-    throw InputError(parameter_prefix + "roller radius",
+    throw InputError(field::disc("roller_radius"),
                      "larger than the smallest radius of curvature of the epicycloid (" +
                          format_mm(smallest_radius) + "): the disc profile would loop");
 }
@@ -370,13 +369,13 @@ CycloidCorrection solve_cycloid_correction(const CycloidDiscSpec& nominal, doubl
 {
   check_disc(nominal);
   if (nominal.rotation != 0.)
-    throw InputError(parameter_prefix + "rotation", "the nominal disc is not rotated");
+    throw InputError(field::disc("rotation"), "the nominal disc is not rotated");
   // The contact arc lies on one flank, which spans half a lobe pitch.
   if (!(contact_arc_ratio > 0. && contact_arc_ratio < 0.5))
-    throw InputError("Cycloid correction/contact arc ratios",
+    throw InputError(field::correction("contact_arc_ratios"),
                      "ε must lie between 0 and 0.5 (the arc must fit on one flank)");
   if (!(clearance_limit > 0. && clearance_limit < 0.1 * nominal.roller_radius))
-    throw InputError("Cycloid correction/clearance limit", "must be positive and small against q");
+    throw InputError(field::correction("clearance_limit"), "must be positive and small against q");
 
   const unsigned int lobes = nominal.rollers - 1;
   const double m = shortening_coefficient(nominal);

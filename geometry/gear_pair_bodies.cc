@@ -4,6 +4,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
+#include "geometry/fields.h"
 #include "geometry/gear_pair_internal.h"
 #include "geometry/involute_tooth.h"
 #include "geometry/scene_gear_pair.h"
@@ -35,24 +36,11 @@ InvoluteToothSpec tooth_spec(const kinematics::GearSpec& gear,
   return spec;
 }
 
-// The gear's nominal tooth. The generator knows one tooth, not which gear: its InputError
-// ("Involute tooth/tip diameter") is renamed to the gear's own field ("Gear pair/Wheel/tip
-// diameter"), the name the kinematics' checks of the same gear use.
+// The gear's nominal tooth, its errors naming the gear's fields.
 ToothProfile gear_tooth(const kinematics::GearSpec& gear, const kinematics::GearGeometry& derived,
                         const ProfileResolution& resolution, bool wheel)
 {
-  try
-  {
-    return generate_involute_tooth(tooth_spec(gear, derived), resolution);
-  }
-  catch (const InputError& e)
-  {
-    const std::string generator = "Involute tooth/";
-    if (e.parameter().rfind(generator, 0) != 0)
-      throw;
-    throw InputError(kinematics::gear_parameter_name(wheel, e.parameter().substr(generator.size())),
-                     e.reason());
-  }
+  return generate_gear_tooth(tooth_spec(gear, derived), resolution, wheel);
 }
 
 } // namespace
@@ -277,9 +265,8 @@ PlanarBody gear_body(const GearBodySpec& body_spec, const ToothProfiles& teeth,
   PlanarBody body;
   body.name = body_spec.name;
   body.material_id = body_spec.material_id;
-  const std::string parameter =
-      body_spec.material_id == scene_ids::pinion_body ? "Gear pair/Pinion" : "Gear pair/Wheel";
   const bool wheel = body_spec.material_id == scene_ids::wheel_body;
+  const std::string parameter = field::modified_gear(wheel);
   body.outer.pieces = teeth_pieces(
       teeth, centre, rotation, first, last, body_spec.flank_id,
       [wheel](int k) { return crack_face_id(wheel, k); }, both_flanks, face_width, parameter,
@@ -559,9 +546,9 @@ void check_tooth_modifications(const GearPairSceneSpec& given)
   const ToothProfile pinion = gear_tooth(spec.pair.pinion, pair.pinion, spec.resolution, false);
   const ToothProfile wheel = gear_tooth(spec.pair.wheel, pair.wheel, spec.resolution, true);
   ToothProfiles(pinion, spec.pinion_modifications, flank_roll_range(pair, pinion, false),
-                loaded_side(pinion), "Gear pair/Pinion");
+                loaded_side(pinion), field::modified_gear(false));
   ToothProfiles(wheel, spec.wheel_modifications, flank_roll_range(pair, wheel, true),
-                loaded_side(wheel), "Gear pair/Wheel");
+                loaded_side(wheel), field::modified_gear(true));
   check_lead_modification(spec.pinion_modifications.lead, pinion, pair.common_face_width,
                           "Gear pair/Pinion");
   check_lead_modification(spec.wheel_modifications.lead, wheel, pair.common_face_width,
@@ -578,22 +565,22 @@ PlacedGears generate_teeth(const GearPairSceneSpec& spec, const kinematics::Gear
   gears.wheel = gear_tooth(spec.pair.wheel, pair.wheel, spec.resolution, true);
   gears.pinion_teeth = ToothProfiles(gears.pinion, spec.pinion_modifications,
                                      flank_roll_range(pair, gears.pinion, false),
-                                     loaded_side(gears.pinion), "Gear pair/Pinion");
+                                     loaded_side(gears.pinion), field::modified_gear(false));
   gears.wheel_teeth = ToothProfiles(gears.wheel, spec.wheel_modifications,
                                     flank_roll_range(pair, gears.wheel, true),
-                                    loaded_side(gears.wheel), "Gear pair/Wheel");
+                                    loaded_side(gears.wheel), field::modified_gear(true));
   const auto whole = [](GearModifications modifications)
   {
     for (auto& [index, list] : modifications.by_tooth)
       list.erase(std::remove_if(list.begin(), list.end(), is_partial_width), list.end());
     return modifications;
   };
-  gears.pinion_contact_teeth = ToothProfiles(gears.pinion, whole(spec.pinion_modifications),
-                                             flank_roll_range(pair, gears.pinion, false),
-                                             loaded_side(gears.pinion), "Gear pair/Pinion");
+  gears.pinion_contact_teeth = ToothProfiles(
+      gears.pinion, whole(spec.pinion_modifications), flank_roll_range(pair, gears.pinion, false),
+      loaded_side(gears.pinion), field::modified_gear(false));
   gears.wheel_contact_teeth = ToothProfiles(gears.wheel, whole(spec.wheel_modifications),
                                             flank_roll_range(pair, gears.wheel, true),
-                                            loaded_side(gears.wheel), "Gear pair/Wheel");
+                                            loaded_side(gears.wheel), field::modified_gear(true));
   return gears;
 }
 

@@ -8,6 +8,7 @@
 
 #include "geometry/mesh_planar.h"
 #include "geometry/scene_gear_pair.h"
+#include "geometry/tooth_profiles.h"
 
 #include <Eigen/Core>
 #include <map>

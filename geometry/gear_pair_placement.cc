@@ -9,6 +9,7 @@
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_fault.h"
 #include "geometry/tooth_modification_lead.h"
+#include "kinematics/fields.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -321,11 +322,11 @@ namespace
 {
 // A faulty tooth outside the modelled teeth would be silently healthy: refused by its index.
 void check_faulty_teeth_modelled(const GearModifications& modifications, int first, int last,
-                                 const std::string& gear)
+                                 bool wheel)
 {
   for (const auto& [index, list] : modifications.by_tooth)
     if (has_faults(list) && (index < first || index > last))
-      throw InputError("Gear pair/" + gear + "/faulty tooth",
+      throw InputError(kinematics::field::gear(wheel, "faulty_tooth"),
                        "tooth " + std::to_string(index) + " is not among the modelled teeth (" +
                            std::to_string(first) + " to " + std::to_string(last) +
                            ") at this position");
@@ -350,8 +351,8 @@ ModelWindows model_windows(const GearPairSceneSpec& spec, const PlacedGears& gea
   const int b = mate_tooth(gears.wheel, w.wheel_last_pair);
   w.wheel_first = std::min(a, b);
   w.wheel_last = std::max(a, b);
-  check_faulty_teeth_modelled(spec.pinion_modifications, w.pinion_first, w.pinion_last, "Pinion");
-  check_faulty_teeth_modelled(spec.wheel_modifications, w.wheel_first, w.wheel_last, "Wheel");
+  check_faulty_teeth_modelled(spec.pinion_modifications, w.pinion_first, w.pinion_last, false);
+  check_faulty_teeth_modelled(spec.wheel_modifications, w.wheel_first, w.wheel_last, true);
   return w;
 }
 

@@ -27,8 +27,10 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "geometry/fields.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -40,11 +42,12 @@ namespace
 {
 using Vector = Eigen::Vector2d;
 
-const char* const spec_name = "Involute tooth/";
-
-std::string parameter(const std::string& key)
+// The spec's field of a member written with spaces ("cutter tip radius").
+std::string parameter(const std::string& words)
 {
-  return spec_name + key;
+  std::string member = words;
+  std::replace(member.begin(), member.end(), ' ', '_');
+  return field::tooth(member);
 }
 
 Vector polar(double radius, double angle)
@@ -792,5 +795,23 @@ ToothProfile generate_involute_tooth(const InvoluteToothSpec& spec,
                            fillet_start, range, angular_pitch, tip_half_angle),
               tooth);
   return tooth;
+}
+
+ToothProfile generate_gear_tooth(const InvoluteToothSpec& spec, const ProfileResolution& resolution,
+                                 bool wheel)
+{
+  try
+  {
+    return generate_involute_tooth(spec, resolution);
+  }
+  catch (const InputError& e)
+  {
+    if (e.parameter().rfind(field::tooth_prefix, 0) != 0)
+      throw;
+    // the spec's `module` is the gear's `normal_module`
+    throw InputError(
+        kinematics::gear_parameter_name(wheel, e.parameter().substr(field::tooth_prefix.size())),
+        e.reason());
+  }
 }
 } // namespace gearstiff::geometry

@@ -69,4 +69,11 @@ double involute_function(double angle);
 // and generates one tooth. Cost: microseconds to a millisecond.
 ToothProfile generate_involute_tooth(const InvoluteToothSpec& spec,
                                      const ProfileResolution& resolution = ProfileResolution());
+
+// generate_involute_tooth for the pinion's (wheel = false) or wheel's tooth: the generator
+// knows one tooth, not which gear, so its fields ("tooth.tip_diameter", geometry/fields.h) are
+// named as the gear's own ("wheel.tip_diameter", kinematics/fields.h), the name the
+// kinematics' checks of the same gear use.
+ToothProfile generate_gear_tooth(const InvoluteToothSpec& spec, const ProfileResolution& resolution,
+                                 bool wheel);
 } // namespace gearstiff::geometry

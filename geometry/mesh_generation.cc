@@ -4,6 +4,7 @@
 #include "errors/format.h"
 #include "errors/io.h"
 #include "errors/limits.h"
+#include "geometry/fields.h"
 #include "geometry/mesh_internal.h"
 #include "geometry/mesh_planar.h"
 
@@ -233,21 +234,22 @@ void check_mesh_input(const PlanarModel& model, const SizeGrading& grading,
   if (model.bodies.empty())
     throw InputError("scene", "has no bodies to mesh");
   if (options.dimension != 2 && options.dimension != 3)
-    throw InputError("Mesh/dimension", "must be 2 or 3");
+    throw InputError(field::mesh("dimension"), "must be 2 or 3");
   if (options.dimension == 3 && !(options.face_width > 0.))
-    throw InputError("Mesh/face width", "must be positive for a 3D mesh");
+    throw InputError(field::mesh("face_width"), "must be positive for a 3D mesh");
   if (options.dimension == 3 && options.layers < 1)
-    throw InputError("Mesh/layers", "must be at least 1 for a 3D mesh");
+    throw InputError(field::mesh("layers"), "must be at least 1 for a 3D mesh");
   bool foci_valid = true;
   for (const auto& focus : grading.foci)
     foci_valid &= focus.size > 0. && focus.size <= grading.body_size && focus.radius >= 0. &&
                   focus.point.allFinite();
   if (!foci_valid || !(grading.body_size > 0.) || !(grading.largest_size >= grading.body_size) ||
       !(grading.growth_rate > 0.))
-    throw InputError("Mesh/contact size", "needs 0 < contact size <= body size, a positive growth "
-                                          "rate and a non-negative fine radius");
+    throw InputError(field::mesh("contact_size"),
+                     "needs 0 < contact size <= body size, a positive growth "
+                     "rate and a non-negative fine radius");
   if (options.file.empty())
-    throw InputError("Scene/mesh file", "no output file given");
+    throw InputError(field::mesh("file"), "no output file given");
   for (const auto& body : model.bodies)
   {
     if (body.material_id <= 0)

@@ -77,6 +77,49 @@ void check_every_body_meshed(const std::vector<std::pair<int, int>>& entities,
                           "no cells in the body with material id " + std::to_string(material_id));
 }
 
+// A cell type other than the quadrilateral (hexahedron) gmsh was asked for: what recombination
+// left over, refused by its name.
+[[noreturn]] void refuse_leftover_cells(int type, std::size_t count, int material_id)
+{
+  std::string type_name;
+  int type_dim, order, n_nodes, n_primary;
+  std::vector<double> local;
+  gmsh::model::mesh::getElementProperties(type, type_name, type_dim, order, n_nodes, local,
+                                          n_primary);
+  throw SolverFailure("gmsh quadrilateral meshing",
+                      std::to_string(count) + " leftover " + type_name +
+                          " cells in body with material id " + std::to_string(material_id));
+}
+
+// One cell's scaled Jacobian (the worst one's centre kept) and, for a cell at a contact focus,
+// its edges against the focus size. `in_model` turns a corner back into the transverse model.
+template <typename InModel>
+void measure_cell(const std::vector<Eigen::Vector3d>& corners, const SizeGrading& grading,
+                  const InModel& in_model, double& jacobian_sum, MeshStatistics& statistics)
+{
+  const double q =
+      corners.size() == 4 ? scaled_jacobian_quad(corners) : scaled_jacobian_hex(corners);
+  if (q < statistics.min_scaled_jacobian)
+  {
+    statistics.min_scaled_jacobian = q;
+    statistics.worst_cell_centre = Eigen::Vector3d::Zero();
+    for (const auto& corner : corners)
+      statistics.worst_cell_centre += corner / static_cast<double>(corners.size());
+  }
+  jacobian_sum += q;
+  for (const auto& focus : grading.foci)
+  {
+    bool at_focus = false;
+    for (unsigned int c = 0; c < 4; ++c)
+      at_focus |= (in_model(corners[c]) - focus.point).norm() <= focus.size;
+    if (at_focus)
+      for (unsigned int c = 0; c < 4; ++c)
+        statistics.largest_edge_ratio_at_focus =
+            std::max(statistics.largest_edge_ratio_at_focus,
+                     (corners[(c + 1) % 4] - corners[c]).norm() / focus.size);
+  }
+}
+
 // Every cell must be a quadrilateral (hexahedron) with positive scaled Jacobian: deal.II's
 // parallel::distributed::Triangulation accepts nothing else, and an inverted cell would
 // silently corrupt every stiffness computed on the mesh. Fills the cell counts and quality.
@@ -112,41 +155,13 @@ void check_cells(const MeshOptions& options, const SizeGrading& grading,
     for (std::size_t t = 0; t < types.size(); ++t)
     {
       if (types[t] != cell_type)
-      {
-        std::string type_name;
-        int type_dim, order, n_nodes, n_primary;
-        std::vector<double> local;
-        gmsh::model::mesh::getElementProperties(types[t], type_name, type_dim, order, n_nodes,
-                                                local, n_primary);
-        throw SolverFailure("gmsh quadrilateral meshing",
-                            std::to_string(element_tags[t].size()) + " leftover " + type_name +
-                                " cells in body with material id " + std::to_string(material_id));
-      }
+        refuse_leftover_cells(types[t], element_tags[t].size(), material_id);
       std::vector<Eigen::Vector3d> corners(n_corners);
       for (std::size_t e = 0; e < element_tags[t].size(); ++e)
       {
         for (unsigned int c = 0; c < n_corners; ++c)
           corners[c] = nodes.at(element_nodes[t][n_corners * e + c]);
-        const double q = (dim == 2) ? scaled_jacobian_quad(corners) : scaled_jacobian_hex(corners);
-        if (q < statistics.min_scaled_jacobian)
-        {
-          statistics.min_scaled_jacobian = q;
-          statistics.worst_cell_centre = Eigen::Vector3d::Zero();
-          for (const auto& corner : corners)
-            statistics.worst_cell_centre += corner / n_corners;
-        }
-        jacobian_sum += q;
-        for (const auto& focus : grading.foci)
-        {
-          bool at_focus = false;
-          for (unsigned int c = 0; c < 4; ++c)
-            at_focus |= (in_model(corners[c]) - focus.point).norm() <= focus.size;
-          if (at_focus)
-            for (unsigned int c = 0; c < 4; ++c)
-              statistics.largest_edge_ratio_at_focus =
-                  std::max(statistics.largest_edge_ratio_at_focus,
-                           (corners[(c + 1) % 4] - corners[c]).norm() / focus.size);
-        }
+        measure_cell(corners, grading, in_model, jacobian_sum, statistics);
       }
       statistics.cells_per_body[material_id] += element_tags[t].size();
       statistics.n_cells += element_tags[t].size();

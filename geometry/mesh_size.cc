@@ -3,6 +3,7 @@
 #include "errors/format.h"
 #include "errors/io.h"
 #include "errors/limits.h"
+#include "geometry/fields.h"
 #include "geometry/mesh_internal.h"
 #include "geometry/mesh_planar.h"
 
@@ -190,13 +191,13 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
   // the layers are what the user raised (1000 layers were blamed on the body size).
   const double section_cells = estimate.cells / (options.dimension == 3 ? options.layers : 1.);
   if (options.dimension == 3 && section_cells * MeshOptions().layers <= limit)
-    throw InputError("Mesh/layers", reason + ": use at most " +
-                                        std::to_string(static_cast<unsigned int>(
-                                            std::floor(limit / section_cells))) +
-                                        " layers");
+    throw InputError(field::mesh("layers"), reason + ": use at most " +
+                                                std::to_string(static_cast<unsigned int>(
+                                                    std::floor(limit / section_cells))) +
+                                                " layers");
   if (estimate.body_cells > estimate.fine_cells + estimate.graded_cells)
-    throw InputError("Mesh/body size", reason + ": use a larger body size");
-  throw InputError("Mesh/contact size",
+    throw InputError(field::mesh("body_size"), reason + ": use a larger body size");
+  throw InputError(field::mesh("contact_size"),
                    reason + ": use a larger contact size, a smaller fine radius or a smaller load");
 }
 } // namespace gearstiff::geometry

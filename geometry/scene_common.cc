@@ -1,6 +1,7 @@
 #include "geometry/scene_common.h"
 
 #include "errors/errors.h"
+#include "geometry/fields.h"
 #include "kinematics/hertz.h"
 
 #include <algorithm>
@@ -40,7 +41,8 @@ contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact
     else if (have_width)
       contact.contact_size = 0.1 * contact.hertz_half_width; // ten cells across the half-width
     else
-      throw InputError("Mesh/contact size", "must be given when the scene has no Hertz estimate");
+      throw InputError(field::mesh("contact_size"),
+                       "must be given when the scene has no Hertz estimate");
     if (settings.fine_radius > 0.)
       contact.fine_radius = settings.fine_radius;
     else
@@ -48,9 +50,9 @@ contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact
           have_width ? 1.5 * contact.hertz_half_width : 10. * contact.contact_size;
     grading.foci.push_back({contact.point, contact.contact_size, contact.fine_radius});
     if (!(settings.body_size > 0.) || !std::isfinite(settings.body_size))
-      throw InputError("Mesh/body size", "must be a positive number (mm)");
+      throw InputError(field::mesh("body_size"), "must be a positive number (mm)");
     if (!std::isfinite(contact.contact_size) || !std::isfinite(contact.fine_radius))
-      throw InputError("Mesh/contact size", "must be a finite number (mm)");
+      throw InputError(field::mesh("contact_size"), "must be a finite number (mm)");
     // The parameter the user set is the one named: a given contact size larger than the body
     // size, or the automatic one (a tenth of the Hertz half-width) at a large load.
     if (!(settings.body_size >= contact.contact_size))
@@ -59,15 +61,16 @@ contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact
                                 " mm, body size " + std::to_string(settings.body_size * 1e3) +
                                 " mm";
       if (settings.contact_size > 0.)
-        throw InputError("Mesh/contact size", "must not exceed the body size (" + sizes + ")");
-      throw InputError("Mesh/body size", "must not be smaller than the automatic contact size, a "
-                                         "tenth of the Hertz half-width at this load (" +
-                                             sizes +
-                                             "): give a larger body size or a contact size");
+        throw InputError(field::mesh("contact_size"),
+                         "must not exceed the body size (" + sizes + ")");
+      throw InputError(field::mesh("body_size"),
+                       "must not be smaller than the automatic contact size, a "
+                       "tenth of the Hertz half-width at this load (" +
+                           sizes + "): give a larger body size or a contact size");
     }
   }
   if (!(settings.growth_rate > 0.))
-    throw InputError("Mesh/growth rate", "must be positive");
+    throw InputError(field::mesh("growth_rate"), "must be positive");
   grading.growth_rate = settings.growth_rate;
   grading.body_size = settings.body_size;
   grading.largest_size = grading.body_size;
@@ -76,7 +79,7 @@ contact_size_grading(const SceneMeshSettings& settings, std::vector<SceneContact
   {
     grading.largest_size = settings.rim_size > 0. ? settings.rim_size : 4. * settings.body_size;
     if (!(grading.largest_size >= grading.body_size))
-      throw InputError("Mesh/rim size", "must not be smaller than the body size");
+      throw InputError(field::mesh("rim_size"), "must not be smaller than the body size");
     grading.coarse_size = [depth_below_surface, body = grading.body_size,
                            rate = grading.growth_rate](const Eigen::Vector2d& point)
     { return body + rate * std::max(0., depth_below_surface(point)); };

@@ -1,6 +1,7 @@
 #include "geometry/scene_cycloid.h"
 
 #include "errors/errors.h"
+#include "geometry/fields.h"
 
 #include <Eigen/Geometry>
 #include <chrono>
@@ -12,8 +13,6 @@ namespace gearstiff::geometry
 {
 namespace
 {
-const std::string section = "Cycloid scene/";
-
 Eigen::Vector2d unit(double angle)
 {
   return Eigen::Vector2d(std::cos(angle), std::sin(angle));
@@ -78,17 +77,17 @@ void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_c
 void check_output_pin_bodies(const CycloidSceneSpec& spec)
 {
   if (!(spec.output_pin_radius + spec.ring.eccentricity <= spec.output_pin_hole_radius + 1e-12))
-    throw InputError(section + "output pin radius",
+    throw InputError(field::cycloid_scene("output_pin_radius"),
                      "the pins do not fit their holes: pin radius + e = " +
                          std::to_string((spec.output_pin_radius + spec.ring.eccentricity) * 1e3) +
                          " mm exceeds the hole radius " +
                          std::to_string(spec.output_pin_hole_radius * 1e3) + " mm");
   if (!(spec.output_pin_bore_radius > 0. &&
         spec.output_pin_bore_radius < spec.output_pin_radius - 1e-3))
-    throw InputError(section + "output pin bore radius",
+    throw InputError(field::cycloid_scene("output_pin_bore_radius"),
                      "must be positive and leave 1 mm of pin around it");
   if (!(spec.pin_force > 0.))
-    throw InputError(section + "pin force", "must be positive");
+    throw InputError(field::cycloid_scene("pin_force"), "must be positive");
 }
 
 // Checks the scene's dimensions against the disc outline; returns the lobe root radius (m).
@@ -97,13 +96,13 @@ double check_cycloid_scene(const CycloidSceneSpec& spec, const CycloidDiscSpec& 
 {
   const CycloidDiscSpec& ring = spec.ring;
   if (disc.rollers != ring.rollers || std::abs(disc.eccentricity - ring.eccentricity) > 1e-12)
-    throw InputError(section + "disc", "must have the ring's rollers and eccentricity");
+    throw InputError(field::cycloid_scene("disc"), "must have the ring's rollers and eccentricity");
 
   double lobe_root = std::numeric_limits<double>::infinity();
   for (const auto& p : lobe.points)
     lobe_root = std::min(lobe_root, p.position.norm());
   if (!(spec.bore_radius > 0.))
-    throw InputError(section + "bore radius", "must be positive");
+    throw InputError(field::cycloid_scene("bore_radius"), "must be positive");
   if (spec.output_pins > 0)
   {
     const double outer = spec.output_pin_circle_radius + spec.output_pin_hole_radius;
@@ -112,28 +111,29 @@ double check_cycloid_scene(const CycloidSceneSpec& spec, const CycloidDiscSpec& 
     // drawing anyone would build, and they mesh into slivers.
     const double web = 1e-3;
     if (!(spec.output_pin_hole_radius > 0.) || outer > lobe_root - web)
-      throw InputError(section + "output pin hole radius",
+      throw InputError(field::cycloid_scene("output_pin_hole_radius"),
                        "the holes must end 1 mm inside the lobe roots (" +
                            std::to_string(lobe_root * 1e3) + " mm)");
     if (inner < spec.bore_radius + web)
-      throw InputError(section + "output pin circle radius",
+      throw InputError(field::cycloid_scene("output_pin_circle_radius"),
                        "the holes must stay 1 mm clear of the bore");
     // A single pin has no neighbour.
     if (spec.output_pins > 1 &&
         2. * spec.output_pin_circle_radius * std::sin(M_PI / spec.output_pins) <
             2. * spec.output_pin_hole_radius + web)
-      throw InputError(section + "output pins", "neighbouring holes overlap");
+      throw InputError(field::cycloid_scene("output_pins"), "neighbouring holes overlap");
   }
   else if (spec.bore_radius > lobe_root - 1e-3)
-    throw InputError(section + "bore radius", "leaves no disc material under the lobes");
+    throw InputError(field::cycloid_scene("bore_radius"),
+                     "leaves no disc material under the lobes");
   if (spec.output_pin_bodies && spec.output_pins > 0)
     check_output_pin_bodies(spec);
   if (!(spec.roller_pin_radius > 0. && spec.roller_pin_radius < 0.8 * ring.roller_radius))
-    throw InputError(section + "roller pin radius", "must lie in (0, 0.8·q)");
+    throw InputError(field::cycloid_scene("roller_pin_radius"), "must lie in (0, 0.8·q)");
   if (!(spec.disc_width > 0.))
-    throw InputError(section + "disc width", "must be positive");
+    throw InputError(field::cycloid_scene("disc_width"), "must be positive");
   if (!(spec.roller_force > 0.))
-    throw InputError(section + "roller force", "must be positive");
+    throw InputError(field::cycloid_scene("roller_force"), "must be positive");
   return lobe_root;
 }
 
@@ -223,7 +223,7 @@ RollerContacts roller_contacts(const CycloidSceneSpec& spec, const CycloidDiscSp
     result.contacts.push_back(contact);
   }
   if (result.contacts.empty())
-    throw InputError(section + "contact clearance",
+    throw InputError(field::cycloid_scene("contact_clearance"),
                      "no roller lies within it at this disc rotation");
   return result;
 }

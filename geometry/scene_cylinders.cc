@@ -1,6 +1,7 @@
 #include "geometry/scene_cylinders.h"
 
 #include "errors/errors.h"
+#include "geometry/fields.h"
 
 #include <chrono>
 #include <cmath>
@@ -46,23 +47,22 @@ PlanarBody cylinder_body(const std::string& name, int material_id, double radius
 SceneInfo write_cylinders_scene(const CylindersSceneSpec& spec, const std::string& file)
 {
   const auto start = std::chrono::steady_clock::now();
-  const std::string p = "Cylinders/";
-  for (const auto& [value, bore, name] : {std::tuple{spec.radius_1, spec.bore_radius_1, "1"},
-                                          std::tuple{spec.radius_2, spec.bore_radius_2, "2"}})
+  for (const auto& [value, bore, name] : {std::tuple{spec.radius_1, spec.bore_radius_1, "_1"},
+                                          std::tuple{spec.radius_2, spec.bore_radius_2, "_2"}})
   {
     if (!(value > 0.))
-      throw InputError(p + "radius " + name, "must be positive");
+      throw InputError(field::cylinders(std::string("radius") + name), "must be positive");
     if (!(bore >= 0. && bore < 0.8 * value))
-      throw InputError(p + "bore radius " + name,
+      throw InputError(field::cylinders(std::string("bore_radius") + name),
                        "must be 0 (half-disc) or below 0.8 × the radius, so the contact "
                        "zone stays clear of the bore");
   }
   if (!(spec.length > 0.))
-    throw InputError(p + "length", "must be positive");
+    throw InputError(field::cylinders("length"), "must be positive");
   if (!(spec.young_modulus > 0.))
-    throw InputError(p + "Young's modulus", "must be positive");
+    throw InputError(field::cylinders("young_modulus"), "must be positive");
   if (!(spec.poisson_ratio > 0. && spec.poisson_ratio < 0.5))
-    throw InputError(p + "Poisson's ratio", "must lie in (0, 0.5)");
+    throw InputError(field::cylinders("poisson_ratio"), "must lie in (0, 0.5)");
 
   SceneContact contact;
   contact.point = Eigen::Vector2d::Zero();
@@ -74,7 +74,7 @@ SceneInfo write_cylinders_scene(const CylindersSceneSpec& spec, const std::strin
       hertz_half_width(spec.force_per_length, spec.radius_1, spec.radius_2, spec.young_modulus,
                        spec.poisson_ratio, spec.young_modulus, spec.poisson_ratio);
   if (!(contact.hertz_half_width < 0.2 * std::min(spec.radius_1, spec.radius_2)))
-    throw InputError(p + "force per length",
+    throw InputError(field::cylinders("force_per_length"),
                      "gives a Hertz half-width beyond a fifth of the smaller radius, outside "
                      "the small-contact theory this scene verifies");
 

@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "geometry/fields.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -53,9 +54,9 @@ std::pair<double, double> spall_rolls(const ToothModification& spall, const Toot
   return {low > 0. ? std::sqrt(2. * base_radius * low) : -1., std::sqrt(2. * base_radius * high)};
 }
 
-std::string entry(const std::string& parameter, const std::string& name)
+std::string entry(const std::string& gear, const std::string& name)
 {
-  return parameter + "/" + name;
+  return field::gear_entry(gear, name);
 }
 
 ProfilePoint lerp(const ProfilePoint& a, const ProfilePoint& b, double w)
@@ -586,18 +587,6 @@ double crack_tip_cell_size(const ToothModification& crack)
   return crack.crack_tip_size > 0. ? crack.crack_tip_size : crack_tip_size;
 }
 
-bool is_fault(ModificationKind kind)
-{
-  return kind == ModificationKind::tip_chipping || kind == ModificationKind::broken_tooth ||
-         kind == ModificationKind::spall || kind == ModificationKind::root_crack;
-}
-
-bool has_faults(const std::vector<ToothModification>& modifications)
-{
-  return std::any_of(modifications.begin(), modifications.end(),
-                     [](const ToothModification& m) { return is_fault(m.kind); });
-}
-
 bool flanks_whole(const GearModifications& modifications)
 {
   for (const auto& [index, list] : modifications.by_tooth)
@@ -605,22 +594,6 @@ bool flanks_whole(const GearModifications& modifications)
       if (is_fault(m.kind) && m.kind != ModificationKind::root_crack)
         return false;
   return true;
-}
-
-std::string fault_name(ModificationKind kind)
-{
-  switch (kind)
-  {
-  case ModificationKind::tip_chipping:
-    return "tip chipping";
-  case ModificationKind::broken_tooth:
-    return "broken tooth";
-  case ModificationKind::spall:
-    return "spall depth";
-  default:
-    break;
-  }
-  return "crack depth";
 }
 
 Eigen::Vector2d critical_section_point(const ToothProfile& nominal, int side)

@@ -57,18 +57,14 @@ constexpr double crack_face_size = 0.5 * crack_opening;
 // m, the cell size at a crack's tip: its crack_tip_size, or the default crack_tip_size.
 double crack_tip_cell_size(const ToothModification& crack);
 
-bool is_fault(ModificationKind kind);
-bool has_faults(const std::vector<ToothModification>& modifications);
 // Whether every fault of the gear (by_tooth) is a root crack, or it has none: every flank is
 // whole, so the pairs in contact carry at every position and a scene rolls with its cracked
 // tooth (`Stiffness/sweep mesh = once`). A broken, chipped or spalled tooth changes which pairs
 // carry from one position to the next.
 bool flanks_whole(const GearModifications& modifications);
-// The parameter word of a fault's size ("tip chipping", "broken tooth", "spall depth",
-// "crack depth").
-std::string fault_name(ModificationKind kind);
 
-// The faults' checks against the nominal tooth (InputError naming `parameter` + "/<entry>"):
+// The faults' checks against the nominal tooth (InputError naming the gear's field of the entry,
+// field::gear_entry(parameter, "spall depth") = "pinion.spall_depth", geometry/fields.h):
 // chipping taller than the tooth or reaching below the form circle, a spall outside the flank
 // or deeper than a quarter of the tooth's chordal thickness there, a crack deeper than the tooth
 // along its path, an internal gear.
@@ -125,8 +121,8 @@ struct FaultFill
 bool is_partial_width(const ToothModification& fault);
 // The fills of the partial-width faults of `modifications` on `tooth` (as apply_faults; 3D,
 // face_width > 0) and of the cracks whose faces meet (2D).
-// InputError (`parameter` + "/spall width" or "/tip chipping width") for a spall or chipped corner
-// not narrower than the face.
+// InputError (the gear's field "<gear>.spall_width" or "<gear>.tip_chipping_width") for a spall or
+// chipped corner not narrower than the face.
 std::vector<FaultFill> fault_fills(const ToothProfile& tooth,
                                    const std::vector<ToothModification>& modifications,
                                    int loaded_side, double face_width,

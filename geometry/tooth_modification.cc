@@ -1,7 +1,7 @@
 #include "geometry/tooth_modification.h"
 
 #include "errors/errors.h"
-#include "geometry/tooth_fault.h"
+#include "geometry/fields.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -220,7 +220,7 @@ void check_modifications(const std::vector<ToothModification>& modifications,
   {
     if (is_fault(m.kind)) // checked by check_faults (geometry/tooth_fault.h)
       continue;
-    const std::string name = parameter + "/" + kind_name(m.kind);
+    const std::string name = field::gear_entry(parameter, kind_name(m.kind));
     if (m.kind != ModificationKind::profile_slope && !(m.amount >= 0.))
       throw InputError(name, "must be 0 or positive (material removed, µm)");
     if (!std::isfinite(m.amount))
@@ -229,9 +229,9 @@ void check_modifications(const std::vector<ToothModification>& modifications,
     {
       const double length = relief_length(m, range);
       if (m.amount > 0. && !(length > 0.))
-        throw InputError(name + " length", "must be positive (mm) or auto");
+        throw InputError(name + "_length", "must be positive (mm) or auto");
       if (length > active * (1. + 1e-9))
-        throw InputError(name + " length", mm(length) + " is longer than the active profile (" +
+        throw InputError(name + "_length", mm(length) + " is longer than the active profile (" +
                                                mm(active) + " along the path of contact)");
     }
     const double removal = (m.flanks == ModifiedFlanks::both ? 2. : 1.) *
@@ -247,7 +247,7 @@ void check_modifications(const std::vector<ToothModification>& modifications,
                                  um(nominal.tip_thickness) + ")");
   }
   if (tip_removal >= nominal.tip_thickness)
-    throw InputError(parameter + "/" + kind_name(modifications.front().kind),
+    throw InputError(field::gear_entry(parameter, kind_name(modifications.front().kind)),
                      "the modifications together remove " + um(tip_removal) +
                          " across the tooth, beyond its tip thickness " +
                          um(nominal.tip_thickness));
@@ -367,57 +367,32 @@ ToothProfile modified_tooth(const ToothProfile& nominal,
   return tooth;
 }
 
-ToothProfiles::ToothProfiles(ToothProfile nominal, GearModifications modifications,
-                             FlankRollRange range, int loaded_side, std::string parameter)
-    : nominal_tooth(std::move(nominal)), modifications(std::move(modifications)), range(range),
-      loaded_side(loaded_side), parameter(std::move(parameter))
+bool is_fault(ModificationKind kind)
 {
-  // Every list is checked once here, before anything is meshed.
-  if (!this->modifications.all_teeth.empty())
-    check_modifications(this->modifications.all_teeth, nominal_tooth, range, this->parameter);
-  for (const auto& [index, list] : this->modifications.by_tooth)
-    if (!list.empty())
-    {
-      check_modifications(modifications_of(index), nominal_tooth, range, this->parameter);
-      check_faults(modifications_of(index), nominal_tooth, range, loaded_side, this->parameter);
-    }
+  return kind == ModificationKind::tip_chipping || kind == ModificationKind::broken_tooth ||
+         kind == ModificationKind::spall || kind == ModificationKind::root_crack;
 }
 
-const std::vector<ToothModification>& ToothProfiles::modifications_of(int index) const
+bool has_faults(const std::vector<ToothModification>& modifications)
 {
-  const auto own = modifications.by_tooth.find(index);
-  if (own == modifications.by_tooth.end() || own->second.empty())
-    return modifications.all_teeth;
-  // The gear's list first, then the tooth's own (kept so the reference stays valid).
-  auto& list = joined[index];
-  list = modifications.all_teeth;
-  list.insert(list.end(), own->second.begin(), own->second.end());
-  return list;
+  return std::any_of(modifications.begin(), modifications.end(),
+                     [](const ToothModification& m) { return is_fault(m.kind); });
 }
 
-const ToothProfile& ToothProfiles::tooth(int index) const
+std::string fault_name(ModificationKind kind)
 {
-  const auto& list = modifications_of(index);
-  if (list.empty())
-    return nominal_tooth; // a healthy tooth is the nominal outline itself
-  const auto found = built.find(index);
-  if (found != built.end())
-    return found->second;
-  // The profile modifications first (faults change no flank depth), then the faults cut the
-  // modified outline (geometry/tooth_fault.h).
-  return built.emplace(index, apply_faults(unfaulted_tooth(index), list, loaded_side))
-      .first->second;
-}
-
-ToothProfile ToothProfiles::unfaulted_tooth(int index) const
-{
-  return modified_tooth(nominal_tooth, modifications_of(index), range, loaded_side, parameter);
-}
-
-double ToothProfiles::loaded_flank_removal(int index, double roll) const
-{
-  return removed_depth(modifications_of(index), range, roll, true) +
-         fault_flank_depth(modifications_of(index), nominal_tooth, roll);
+  switch (kind)
+  {
+  case ModificationKind::tip_chipping:
+    return "tip chipping";
+  case ModificationKind::broken_tooth:
+    return "broken tooth";
+  case ModificationKind::spall:
+    return "spall depth";
+  default:
+    break;
+  }
+  return "crack depth";
 }
 
 ReliefShape parse_relief_shape(const std::string& text, const std::string& parameter)

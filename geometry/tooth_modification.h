@@ -1,7 +1,7 @@
 // The modification stage of a tooth outline: a modelled tooth is its gear's nominal outline
 // (geometry/involute_tooth.h) with an ordered list of modifications applied to it. The scene asks
-// a ToothProfiles provider for each modelled tooth by its index; a tooth without modifications is
-// the nominal outline itself (the same points, bit for bit).
+// a ToothProfiles provider (geometry/tooth_profiles.h) for each modelled tooth by its index; a
+// tooth without modifications is the nominal outline itself (the same points, bit for bit).
 //
 // Profile modifications (ISO 21771 terms, docs/references.md §8): material removed normal to the
 // involute flank, as a function of the roll length ρ = √(r² − r_b²) of the flank point (the
@@ -118,48 +118,27 @@ double removed_depth(const std::vector<ToothModification>& modifications,
                      const FlankRollRange& range, double roll, bool loaded);
 
 // The nominal outline with the modifications applied to its flanks (side `loaded_side` is the
-// loaded flank). `parameter` prefixes the InputError of a modification that does not fit the
-// tooth: a relief longer than the active profile, a negative amount, removal that reaches the
-// tooth thickness.
+// loaded flank). `parameter` is the gear whose fields an InputError names
+// (geometry::field::modified_gear: "pinion.tip_relief_length", geometry/fields.h) for a
+// modification that does not fit the tooth: a relief longer than the active profile, a negative
+// amount, removal that reaches the tooth thickness.
 ToothProfile modified_tooth(const ToothProfile& nominal,
                             const std::vector<ToothModification>& modifications,
                             const FlankRollRange& range, int loaded_side,
                             const std::string& parameter);
 
-// The checks of modified_tooth without building (InputError naming parameter + "/tip relief"
-// etc.).
+// The checks of modified_tooth without building (InputError naming
+// field::gear_entry(parameter, "tip relief") etc.).
 void check_modifications(const std::vector<ToothModification>& modifications,
                          const ToothProfile& nominal, const FlankRollRange& range,
                          const std::string& parameter);
 
-// The profile provider of one gear: the nominal outline and the modifications, each tooth built
-// once when first asked for.
-class ToothProfiles
-{
-public:
-  ToothProfiles() = default;
-  ToothProfiles(ToothProfile nominal, GearModifications modifications, FlankRollRange range,
-                int loaded_side, std::string parameter);
-  const ToothProfile& nominal() const { return nominal_tooth; }
-  // Tooth `index` (CCW from tooth 0 in the gear's frame), in the frame of tooth 0 (the caller
-  // rotates it by index·angular_pitch).
-  const ToothProfile& tooth(int index) const;
-  // Tooth `index` with its profile modifications and without its faults: the outline the faults
-  // cut (tooth() = apply_faults of it), from which a 3D partial fault's fill is closed.
-  ToothProfile unfaulted_tooth(int index) const;
-  // δ (m) removed from the loaded flank of tooth `index` at roll length `roll`.
-  double loaded_flank_removal(int index, double roll) const;
-  const std::vector<ToothModification>& modifications_of(int index) const;
-
-private:
-  ToothProfile nominal_tooth;
-  GearModifications modifications;
-  FlankRollRange range;
-  int loaded_side = 1;
-  std::string parameter;
-  mutable std::map<int, ToothProfile> built;
-  mutable std::map<int, std::vector<ToothModification>> joined; // all_teeth + by_tooth
-};
+// The fault kinds (geometry/tooth_fault.h models them): chipping, broken tooth, spall, crack.
+bool is_fault(ModificationKind kind);
+bool has_faults(const std::vector<ToothModification>& modifications);
+// The parameter word of a fault's size ("tip chipping", "broken tooth", "spall depth",
+// "crack depth").
+std::string fault_name(ModificationKind kind);
 
 // Parameter-file words: "linear|parabolic|arc", "loaded|both" (InputError naming `parameter`).
 ReliefShape parse_relief_shape(const std::string& text, const std::string& parameter);

@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "fem/mesh.h"
 #include "fem/stress.h"
+#include "geometry/fields.h"
 #include "stiffness/contact_solve.h"
 
 #include <algorithm>
@@ -174,7 +175,7 @@ add_roller_pairs(contact::ContactProblem<dim>& problem, const CycloidLoadSetting
     load.initial_gap = clearances[i];
     load.candidate = contacts[i].clearance <= settings.scene.contact_clearance;
     if (!(contacts[i].clearance > -settings.contact.overlap_tolerance))
-      throw InputError("Cycloid disc/roller radius",
+      throw InputError(geometry::field::disc("roller_radius"),
                        "roller " + std::to_string(i) + " overlaps the disc by " +
                            std::to_string(-contacts[i].clearance * 1e3) + " mm");
     loads.push_back(load);
@@ -281,21 +282,22 @@ void check_cycloid_load_settings(const CycloidLoadSettings& s)
     throw InputError(cycloid_parameter::torque,
                      "must not be zero: without a torque nothing is loaded (M_c per disc, N·m)");
   if (s.scene.output_pins == 0)
-    throw InputError("Cycloid scene/output pins", "the output torque needs at least one pin");
+    throw InputError(geometry::field::cycloid_scene("output_pins"),
+                     "the output torque needs at least one pin");
   if (s.scene_file.empty())
     throw InputError("scene file", "no path given for the scene mesh");
   // Material constants before any solver: E = 0 or ν = 0.5 reached MUMPS as a singular matrix
   // ("INFOG(1) = -10", exit 3), a failure of the input, not of the method.
   for (const auto& [material, name] :
-       {std::pair{&s.material, std::string("Cycloid loads/Young's modulus")},
-        std::pair{&s.roller_material, std::string("Cycloid loads/roller Young's modulus")}})
+       {std::pair{&s.material, cycloid_parameter::young_modulus},
+        std::pair{&s.roller_material, cycloid_parameter::roller_young_modulus}})
   {
     if (!(material->youngs_modulus > 0.) || !std::isfinite(material->youngs_modulus))
       throw InputError(name, "must be positive and finite (GPa): E = 0 leaves the bodies "
                              "without stiffness");
     const double nu = material->poisson_ratio;
     if (!(nu >= 0. && nu < 0.5))
-      throw InputError("Cycloid loads/Poisson's ratio",
+      throw InputError(cycloid_parameter::poisson_ratio,
                        "must lie in [0, 0.5) (-): at 0.5 the material is incompressible, "
                        "λ = Eν/((1+ν)(1−2ν)) is infinite and the displacement model has no "
                        "solution");

@@ -40,12 +40,16 @@
 
 namespace gearstiff::stiffness
 {
-// Names of the settings in the command's parameter file, for InputError.
+// The fields of CycloidLoadSettings an InputError names ("<struct>.<member>"); app/ maps them to
+// the parameters the user writes (app/cycloid/cycloid_field_names.cc).
 namespace cycloid_parameter
 {
-inline const std::string torque = "Cycloid loads/output torque";
-inline const std::string contact_arc_ratio = "Cycloid loads/contact arc ratio";
-inline const std::string overlap_tolerance = "Contact/Overlap tolerance";
+inline const std::string torque = "cycloid_loads.output_torque";
+inline const std::string contact_arc_ratio = "cycloid_loads.contact_arc_ratio";
+inline const std::string young_modulus = "cycloid_loads.young_modulus";
+inline const std::string roller_young_modulus = "cycloid_loads.roller_young_modulus";
+inline const std::string poisson_ratio = "cycloid_loads.poisson_ratio";
+inline const std::string overlap_tolerance = "contact.overlap_tolerance";
 } // namespace cycloid_parameter
 
 // The §4 drive with output pins in their holes and explicit mesh sizes.

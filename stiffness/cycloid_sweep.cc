@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "fem/parallel.h"
+#include "geometry/fields.h"
 
 #include <algorithm>
 #include <boost/serialization/string.hpp>
@@ -91,7 +92,8 @@ solve_cycloid_cases(MPI_Comm communicator, const std::vector<CycloidLoadSettings
   const unsigned int rollers = cases[0].scene.ring.rollers, pins = cases[0].scene.output_pins;
   for (const auto& c : cases)
     if (c.scene.ring.rollers != rollers || c.scene.output_pins != pins)
-      throw InputError("Cycloid disc/rollers", "every case of a sweep needs the same drive");
+      throw InputError(geometry::field::disc("rollers"),
+                       "every case of a sweep needs the same drive");
   std::vector<std::pair<unsigned int, CycloidLoadResult>> mine; // (case, result) solved here
   // A failure stops every rank soon (fem::distribute_items); the first failing case's error
   // is thrown on every rank.

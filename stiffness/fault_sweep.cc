@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "geometry/tooth_fault.h"
+#include "kinematics/fields.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 
 #include <chrono>
@@ -15,11 +16,6 @@ namespace gearstiff::stiffness
 {
 namespace
 {
-std::string gear_entry(bool wheel, const std::string& name)
-{
-  return std::string("Gear pair/") + (wheel ? "Wheel/" : "Pinion/") + name;
-}
-
 // The gear's per-tooth faults removed (micro-geometry kept); returns the removed lists.
 std::map<int, std::vector<geometry::ToothModification>>
 take_faults(geometry::GearModifications& modifications)
@@ -48,11 +44,11 @@ SweepScenes sweep_scenes(const GearMeshStiffnessSettings& settings, const FaultS
   const auto other = take_faults(spec.wheel ? s.healthy.scene.pinion_modifications
                                             : s.healthy.scene.wheel_modifications);
   if (!other.empty())
-    throw InputError(gear_entry(!spec.wheel, "faulty tooth"),
+    throw InputError(kinematics::field::gear(!spec.wheel, "faulty_tooth"),
                      "a fault sweep follows the faulty tooth of one gear: the other gear must be "
                      "healthy");
   if (own.count(spec.faulty_tooth) == 0 || own.size() != 1)
-    throw InputError(gear_entry(spec.wheel, "faulty tooth"),
+    throw InputError(kinematics::field::gear(spec.wheel, "faulty_tooth"),
                      "a fault sweep needs one faulty tooth with a fault (crack, spall, chipping "
                      "or broken tooth)");
   s.faulty = s.healthy;
@@ -174,7 +170,7 @@ FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessS
 {
   const auto start = std::chrono::steady_clock::now();
   if (spec.positions_per_pitch < 1)
-    throw InputError("Stiffness/sweep positions", "must be at least 1");
+    throw InputError(stiffness_parameter::positions, "must be at least 1");
   const SweepScenes scenes = sweep_scenes(settings, spec);
   if (spec.mesh == SweepMesh::once &&
       !geometry::flanks_whole(spec.wheel ? scenes.faulty.scene.wheel_modifications

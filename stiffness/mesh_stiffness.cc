@@ -6,6 +6,7 @@
 #include "fem/parallel.h"
 #include "fem/small_strain.h"
 #include "fem/stress.h"
+#include "geometry/fields.h"
 #include "geometry/tooth_fault.h"
 #include "stiffness/contact_solve.h"
 
@@ -384,7 +385,7 @@ void refuse_helical_overlap(const InputError& error, const kinematics::GearPairG
   const double overlap = std::stod(error.reason().substr(prefix.size())) * 1e-3; // m
   const unsigned int needed =
       static_cast<unsigned int>(std::ceil(layers * std::sqrt(overlap / (0.5 * overlap_tolerance))));
-  throw InputError("Mesh/layers",
+  throw InputError(geometry::field::mesh("layers"),
                    "too few for the contact lines of this helical pair: " + error.parameter() +
                        ": " + error.reason() +
                        " (the lines cross the layers at the base helix angle; the mortar gap's "

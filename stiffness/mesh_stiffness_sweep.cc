@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "fem/parallel.h"
+#include "geometry/fields.h"
 #include "geometry/tooth_fault.h"
 
 #include <algorithm>
@@ -262,9 +263,11 @@ GearMeshStiffnessResult solve_on_first_rank(MPI_Comm mpi_communicator,
 geometry::SceneMeshSettings scaled_mesh(const geometry::SceneMeshSettings& mesh, double factor)
 {
   if (!(mesh.contact_size > 0.))
-    throw InputError("Mesh/contact size", "a refinement study needs an explicit contact size");
+    throw InputError(geometry::field::mesh("contact_size"),
+                     "a refinement study needs an explicit contact size");
   if (!(mesh.rim_size > 0.))
-    throw InputError("Mesh/rim size", "a refinement study needs an explicit rim size");
+    throw InputError(geometry::field::mesh("rim_size"),
+                     "a refinement study needs an explicit rim size");
   geometry::SceneMeshSettings scaled = mesh;
   scaled.contact_size *= factor;
   scaled.body_size *= factor;

@@ -1,6 +1,7 @@
 #include "stiffness/potential_energy.h"
 
 #include "errors/errors.h"
+#include "geometry/fields.h"
 #include "geometry/involute_tooth.h"
 #include "geometry/tooth_fault.h"
 #include "kinematics/gear_pair.h"
@@ -46,9 +47,9 @@ public:
                        "the potential-energy method models spur gears only (helix angle 0)");
     geometry::InvoluteToothSpec tooth = geometry::involute_tooth_spec(spec, derived.tip_diameter);
     tooth.required_form_diameter = derived.active_profile_start;
-    nominal = geometry::generate_involute_tooth(tooth, resolution);
+    nominal = geometry::generate_gear_tooth(tooth, resolution, wheel);
     range = geometry::flank_roll_range(pair, nominal, wheel);
-    parameter = wheel ? "Gear pair/Wheel" : "Gear pair/Pinion";
+    parameter = geometry::field::modified_gear(wheel);
     teeth = geometry::ToothProfiles(nominal, mods, range, loaded, parameter);
   }
   const ToothProfile& outline(int index)

@@ -35,6 +35,7 @@
 #pragma once
 
 #include "geometry/scene_gear_pair.h"
+#include "geometry/tooth_profiles.h"
 
 #include <vector>
 

@@ -61,15 +61,27 @@ PLAIN = {"errors", "kinematics", "dynamics", "geometry"}
 # The naming contract (app/core/field_names.h): library code names its own fields, app/ maps them
 # to the parameter paths users write. A string literal that is such a path ("Train/output",
 # "Simulation/time step", or a section head "Train/" a key is appended to) in a library module
-# is counted; in the modules listed here it fails --check.
-NAMED_BY_FIELD = ["kinematics", "dynamics"]
+# is counted; in the modules listed here it fails --check, except in the files of NOT_YET_NAMED.
+NAMED_BY_FIELD = ["kinematics", "dynamics", "geometry", "stiffness"]
+# Files of those modules that still spell user paths, each with why (remove it once converted).
+NOT_YET_NAMED = {
+    "geometry/scene_gear_pair.cc": "passes the lead modifications the prefix "
+                                   "\"Gear pair/Pinion\"; issue 46 was editing it",
+    "geometry/gear_pair_bodies.cc": "the lead modifications' prefix, as scene_gear_pair.cc",
+    "geometry/gear_pair_helix.cc": "the helical refusals; issue 46 was editing it",
+    "stiffness/influence_sweep.cc": "issue 47 was editing it",
+}
 LIBRARIES = ["kinematics", "dynamics", "geometry", "fem", "contact", "stiffness"]
 USER_PATH = re.compile(r'"((?:[A-Z][a-z]+|ISO)(?: [A-Za-z0-9\']+)*)/([A-Za-z][A-Za-z0-9_\' ]*)?"')
 # The field helpers of kinematics/fields.h and dynamics/fields.h and the member lists app/ maps
 # (field_family over each list): a member a library names must be in its list.
 FIELD_LISTS = {"gear": ["gear_members"], "train": ["train_fields"],
                "simulation": ["simulation_fields"], "iso6336": ["iso6336_fields"],
-               "speed_sweep": ["speed_sweep_fields"], "train_mesh": ["train_mesh_fields"]}
+               "speed_sweep": ["speed_sweep_fields"], "train_mesh": ["train_mesh_fields"],
+               "mesh": ["mesh_fields"], "deck": ["deck_fields"], "disc": ["disc_fields"],
+               "correction": ["correction_fields"], "cycloid_scene": ["cycloid_scene_fields"],
+               "cylinders": ["cylinders_fields"]}
+FIELD_HEADERS = ["kinematics/fields.h", "dynamics/fields.h", "geometry/fields.h"]
 FIELD_CALL = re.compile(r'field::(\w+)\((?:[^,()]+, )?"(\w+)"\)')
 FUNCTION_LIMIT = 80  # lines
 FILE_LIMIT = 900  # lines
@@ -333,7 +345,7 @@ def user_paths(sources):
 def unlisted_fields(sources):
     """(path, line, helper, member) of each field a library names that its list lacks."""
     lists = defaultdict(set)
-    for header in ("kinematics/fields.h", "dynamics/fields.h"):
+    for header in FIELD_HEADERS:
         text = "\n".join(sources.get(header, []))
         for name, body in re.findall(r"(\w+)\(\)\s*\{\s*static const std::vector<std::string> "
                                      r"members = \{([^}]*)\}", text):
@@ -355,14 +367,19 @@ def naming_lines(sources):
     counts = ", ".join(f"{m} {len(found.get(m, []))}" for m in LIBRARIES)
     out = ["", "User parameter paths spelt in library code (string literals such as "
                f'`"Train/output"`; app/ maps library fields to them): {counts}. Modules that name '
-               f"fields only (the check fails otherwise): {', '.join(NAMED_BY_FIELD)}."]
+               f"fields only (the check fails otherwise): {', '.join(NAMED_BY_FIELD)}; files of "
+               f"those not converted yet: {len(NOT_YET_NAMED)}"
+               + listed(f"{path} ({why})" for path, why in sorted(NOT_YET_NAMED.items())) + "."]
     return out
 
 
 def naming_failures(sources):
     found = user_paths(sources)
     failures = [f"{p}:{n}: {lit} (library code names its field; app/ maps it)"
-                for m in NAMED_BY_FIELD for p, n, lit in found.get(m, [])]
+                for m in NAMED_BY_FIELD for p, n, lit in found.get(m, []) if p not in NOT_YET_NAMED]
+    failures += [f"{p}: listed in NOT_YET_NAMED but spells no user path: remove it"
+                 for p in NOT_YET_NAMED if not any(f == p for m in NAMED_BY_FIELD
+                                                   for f, _, _ in found.get(m, []))]
     failures += [f"{p}:{n}: field::{h}(\"{m}\") is in no member list of the fields headers, so "
                  f"app/ does not map it" for p, n, h, m in unlisted_fields(sources)]
     return failures

@@ -18,6 +18,7 @@
 #include "app/scenes/geometry_parameters.h"
 #include "errors/errors.h"
 #include "errors/limits.h"
+#include "geometry/fields.h"
 #include "stiffness/cycloid_sweep.h"
 
 #include <algorithm>
@@ -55,8 +56,9 @@ std::vector<stiffness::CycloidLoadSettings> profile_settings(const CycloidLoadsP
   {
     // The correction's own names for its inputs are those of `gearstiff cycloid`.
     const ParameterNames names{
-        {"Cycloid correction/contact arc ratios", stiffness::cycloid_parameter::contact_arc_ratio},
-        {"Cycloid correction/clearance limit", "Cycloid loads/clearance limit"}};
+        {geometry::field::correction("contact_arc_ratios"),
+         stiffness::cycloid_parameter::contact_arc_ratio},
+        {geometry::field::correction("clearance_limit"), "Cycloid loads/clearance limit"}};
     const geometry::CycloidCorrection c =
         with_parameter_names(names,
                              [&]

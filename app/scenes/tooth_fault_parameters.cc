@@ -183,6 +183,11 @@ geometry::ToothModification crack_of(const ModificationText& text, bool wheel, d
 }
 } // namespace
 
+const std::vector<TextEntry>& tooth_fault_entries()
+{
+  return fault_entries;
+}
+
 void declare_tooth_fault_entries(ParameterHandler& prm)
 {
   declare_text_entries(prm, fault_entries);

@@ -16,14 +16,18 @@
 // A size of 0 is no fault: the tooth stays the nominal outline, bit for bit.
 #pragma once
 
+#include "app/core/parameter_table.h"
 #include "app/scenes/modification_text.h"
 #include "geometry/tooth_modification.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <vector>
 
 namespace gearstiff::app
 {
+// The entries of one gear (name, default, documentation).
+const std::vector<TextEntry>& tooth_fault_entries();
 // The entries, declared inside the current Gear pair/<gear> subsection.
 void declare_tooth_fault_entries(dealii::ParameterHandler& prm);
 // The entries' text, read inside the current Gear pair/<gear> subsection into `text`.

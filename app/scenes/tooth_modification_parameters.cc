@@ -1,11 +1,13 @@
 #include "app/scenes/tooth_modification_parameters.h"
 
+#include "app/core/field_names.h"
 #include "app/core/number_text.h"
 #include "app/core/parameter_patterns.h"
 #include "app/core/parameter_table.h"
 #include "app/core/units.h"
 #include "app/scenes/tooth_fault_parameters.h"
 #include "errors/errors.h"
+#include "geometry/fields.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -100,6 +102,22 @@ geometry::LeadModification parse_lead(const ModificationText& text, bool wheel,
       throw InputError(gear_path(wheel, name), "must be 0 or positive");
   return lead;
 }
+
+// The fields the geometry names a gear's modification or fault by ("wheel.tip_relief_length",
+// geometry::field::gear_entry) as the entries of "Gear pair/Pinion" and "Gear pair/Wheel".
+ParameterNames tooth_modification_field_names()
+{
+  ParameterNames names;
+  for (const bool wheel : {false, true})
+    for (const auto* list : {&entries, &tooth_fault_entries()})
+      for (const TextEntry& entry : *list)
+        names[geometry::field::gear_entry(geometry::field::modified_gear(wheel), entry.name)] =
+            gear_path(wheel, entry.name);
+  return names;
+}
+
+const FieldNamesRegistration tooth_modification_fields("tooth modifications",
+                                                       tooth_modification_field_names);
 } // namespace
 
 void declare_tooth_modification_parameters(ParameterHandler& prm)

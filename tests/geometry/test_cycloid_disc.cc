@@ -201,12 +201,12 @@ TEST(CycloidDisc, RejectsImpossibleDiscs)
   };
   CycloidDiscSpec spec = published_disc();
   spec.eccentricity = 5e-3; // m = 1.04
-  EXPECT_EQ(parameter_of(spec, 0.27), "Cycloid disc/eccentricity");
+  EXPECT_EQ(parameter_of(spec, 0.27), "disc.eccentricity");
   spec = published_disc();
   spec.roller_radius = 15.1e-3; // r·sin(π/20) = 15.02 mm
-  EXPECT_EQ(parameter_of(spec, 0.27), "Cycloid disc/roller radius");
+  EXPECT_EQ(parameter_of(spec, 0.27), "disc.roller_radius");
   spec = published_disc();
-  EXPECT_EQ(parameter_of(spec, 0.6), "Cycloid correction/contact arc ratios");
+  EXPECT_EQ(parameter_of(spec, 0.6), "correction.contact_arc_ratios");
   spec.rollers = 2;
-  EXPECT_EQ(parameter_of(spec, 0.27), "Cycloid disc/rollers");
+  EXPECT_EQ(parameter_of(spec, 0.27), "disc.rollers");
 }

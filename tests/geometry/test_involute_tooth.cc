@@ -270,7 +270,7 @@ TEST(InvoluteTooth, UndercutLimitOfTheRack)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Involute tooth/profile shift");
+    EXPECT_EQ(e.parameter(), "tooth.profile_shift");
   }
 }
 
@@ -291,24 +291,36 @@ TEST(InvoluteTooth, RejectsImpossibleTeeth)
   InvoluteToothSpec spec = split_path_pinion();
   spec.teeth = 10;
   spec.profile_shift = 1.2; // standard tip: flanks meet below it
-  EXPECT_EQ(parameter_of(spec), "Involute tooth/tip diameter");
+  EXPECT_EQ(parameter_of(spec), "tooth.tip_diameter");
   spec = split_path_pinion();
   spec.cutter_tip_radius = 0.6; // the largest round on an ISO 53 rack tooth is 0.472·m
-  EXPECT_EQ(parameter_of(spec), "Involute tooth/cutter tip radius");
+  EXPECT_EQ(parameter_of(spec), "tooth.cutter_tip_radius");
   spec = split_path_pinion();
   spec.tip_diameter = 2. * 30e-3; // beyond the cutter dedendum r + (x + 1)·m = 28.2 mm
-  EXPECT_EQ(parameter_of(spec), "Involute tooth/tip diameter");
+  EXPECT_EQ(parameter_of(spec), "tooth.tip_diameter");
   spec = split_path_pinion();
   spec.teeth = 2;
-  EXPECT_EQ(parameter_of(spec), "Involute tooth/teeth");
+  EXPECT_EQ(parameter_of(spec), "tooth.teeth");
   spec = split_path_pinion();
   spec.module = -1.;
-  EXPECT_EQ(parameter_of(spec), "Involute tooth/module");
+  EXPECT_EQ(parameter_of(spec), "tooth.module");
   spec = split_path_pinion();
   spec.internal = true;
   spec.teeth = 30;
   spec.cutter_teeth = 30;
-  EXPECT_EQ(parameter_of(spec), "Involute tooth/cutter teeth");
+  EXPECT_EQ(parameter_of(spec), "tooth.cutter_teeth");
+  // As a gear's tooth, the same refusal names the gear's field (kinematics/fields.h).
+  spec = split_path_pinion();
+  spec.module = -1.;
+  try
+  {
+    generate_gear_tooth(spec, ProfileResolution(), true);
+    FAIL() << "a negative module was accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_EQ(e.parameter(), "wheel.normal_module");
+  }
 }
 
 TEST(InvoluteTooth, InternalRingCutByPinionTypeCutter)

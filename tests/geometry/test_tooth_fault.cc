@@ -7,6 +7,7 @@
 #include "geometry/involute_tooth.h"
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_fault.h"
+#include "geometry/tooth_profiles.h"
 #include "kinematics/gear_pair.h"
 #include "tests/geometry/scene_test_support.h"
 
@@ -61,7 +62,7 @@ ToothProfile faulty(const Pinion& g, const ToothModification& m)
 {
   GearModifications modifications;
   modifications.by_tooth[0] = {m};
-  const ToothProfiles teeth(g.tooth, modifications, g.range, 1, "Gear pair/Pinion");
+  const ToothProfiles teeth(g.tooth, modifications, g.range, 1, "pinion");
   return teeth.tooth(0);
 }
 
@@ -210,7 +211,7 @@ TEST(ToothFault, ZeroSizeIsTheNominalTooth)
   const Pinion g = pinion();
   GearModifications none;
   none.by_tooth[0] = {};
-  const ToothProfiles teeth(g.tooth, none, g.range, 1, "Gear pair/Pinion");
+  const ToothProfiles teeth(g.tooth, none, g.range, 1, "pinion");
   EXPECT_EQ(&teeth.tooth(0), &teeth.nominal());
 }
 
@@ -223,27 +224,27 @@ TEST(ToothFault, RefusedSizesNameTheirEntry)
   {
     GearModifications modifications;
     modifications.by_tooth[0] = {m};
-    ToothProfiles(g.tooth, modifications, g.range, 1, "Gear pair/Pinion");
+    ToothProfiles(g.tooth, modifications, g.range, 1, "pinion");
   };
   EXPECT_EQ(error_parameter([&] { check(fault(ModificationKind::root_crack, 10e-3)); }),
-            "Gear pair/Pinion/crack depth");
+            "pinion.crack_depth");
   ToothModification steep = fault(ModificationKind::root_crack, 1e-3);
   steep.angle = 0.;
-  EXPECT_EQ(error_parameter([&] { check(steep); }), "Gear pair/Pinion/crack angle");
+  EXPECT_EQ(error_parameter([&] { check(steep); }), "pinion.crack_angle");
   ToothModification off = fault(ModificationKind::spall, 50e-6);
   off.position = 2.; // rad: far beyond the tip
-  EXPECT_EQ(error_parameter([&] { check(off); }), "Gear pair/Pinion/spall position");
+  EXPECT_EQ(error_parameter([&] { check(off); }), "pinion.spall_position");
   ToothModification long_spall = fault(ModificationKind::spall, 50e-6);
   long_spall.length = 12e-3;
-  EXPECT_EQ(error_parameter([&] { check(long_spall); }), "Gear pair/Pinion/spall length");
+  EXPECT_EQ(error_parameter([&] { check(long_spall); }), "pinion.spall_length");
   EXPECT_EQ(error_parameter([&] { check(fault(ModificationKind::spall, 1.5e-3)); }),
-            "Gear pair/Pinion/spall depth");
+            "pinion.spall_depth");
   EXPECT_EQ(error_parameter([&] { check(fault(ModificationKind::tip_chipping, 6e-3)); }),
-            "Gear pair/Pinion/tip chipping");
+            "pinion.tip_chipping");
   const double below_form = g.tooth.tip_radius - g.tooth.form_radius + 0.1e-3;
   ASSERT_LT(below_form, g.tooth.tip_radius - g.tooth.root_radius);
   EXPECT_EQ(error_parameter([&] { check(fault(ModificationKind::tip_chipping, below_form)); }),
-            "Gear pair/Pinion/tip chipping");
+            "pinion.tip_chipping");
 }
 
 // Every fault on the reference tooth meshes into quadrilaterals deal.II reads; the crack's
@@ -284,7 +285,7 @@ TEST(ToothFault, FaultyToothOutsideTheModelIsRefused)
   GearPairSceneSpec spec;
   spec.pinion_modifications.by_tooth[7] = {fault(ModificationKind::tip_chipping, 0.5e-3)};
   EXPECT_EQ(error_parameter([&] { write_gear_pair_scene(spec, work_file("fault_out.msh")); }),
-            "Gear pair/Pinion/faulty tooth");
+            "pinion.faulty_tooth");
 }
 
 // The pinion's volume (m³) outside minus inside the z-range `removed` (half the face) in the 3D
@@ -342,7 +343,7 @@ TEST(ToothFault, PartialFaultsOnAProfileModifiedTooth)
     GearModifications through;
     through.all_teeth = {crowning};
     through.by_tooth[1] = {*m};
-    const ToothProfiles teeth(g.tooth, through, g.range, 1, "Gear pair/Pinion");
+    const ToothProfiles teeth(g.tooth, through, g.range, 1, "pinion");
     const double area =
         enclosed_area(teeth.unfaulted_tooth(1).points) - enclosed_area(teeth.tooth(1).points);
     m->width = width;

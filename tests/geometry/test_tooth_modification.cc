@@ -7,6 +7,7 @@
 #include "geometry/involute_tooth.h"
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_modification.h"
+#include "geometry/tooth_profiles.h"
 #include "kinematics/gear_pair.h"
 #include "tests/geometry/scene_test_support.h"
 
@@ -112,7 +113,7 @@ TEST(ToothModification, HealthyTeethNominalAndFlankInset)
   GearModifications modifications;
   const double c = 12e-6;
   modifications.by_tooth[2] = {relief(ModificationKind::tip_relief, c)};
-  const ToothProfiles teeth(g.tooth, modifications, g.range, +1, "Gear pair/Pinion");
+  const ToothProfiles teeth(g.tooth, modifications, g.range, +1, "pinion");
   EXPECT_EQ(&teeth.tooth(0), &teeth.nominal());
   EXPECT_EQ(&teeth.tooth(-1), &teeth.nominal());
   const ToothProfile& modified = teeth.tooth(2);
@@ -226,7 +227,7 @@ TEST(ToothModification, BadInput)
   {
     try
     {
-      check_modifications({m}, g.tooth, g.range, "Gear pair/Pinion");
+      check_modifications({m}, g.tooth, g.range, "pinion");
       ADD_FAILURE() << "accepted " << parameter;
     }
     catch (const InputError& e)
@@ -235,13 +236,11 @@ TEST(ToothModification, BadInput)
     }
   };
   const double active = g.range.active_tip - g.range.active_root;
-  fails(relief(ModificationKind::tip_relief, 5e-6, 1.01 * active),
-        "Gear pair/Pinion/tip relief length");
-  fails(relief(ModificationKind::root_relief, 5e-6, 1.5 * active),
-        "Gear pair/Pinion/root relief length");
-  fails(relief(ModificationKind::tip_relief, -1e-6), "Gear pair/Pinion/tip relief");
+  fails(relief(ModificationKind::tip_relief, 5e-6, 1.01 * active), "pinion.tip_relief_length");
+  fails(relief(ModificationKind::root_relief, 5e-6, 1.5 * active), "pinion.root_relief_length");
+  fails(relief(ModificationKind::tip_relief, -1e-6), "pinion.tip_relief");
   fails(relief(ModificationKind::profile_crowning, g.tooth.tip_thickness),
-        "Gear pair/Pinion/profile crowning");
+        "pinion.profile_crowning");
   // The scene checks before gmsh runs, naming the wheel's parameter for the wheel.
   GearPairSceneSpec spec;
   spec.wheel_modifications.all_teeth = {relief(ModificationKind::tip_relief, 3e-3)};

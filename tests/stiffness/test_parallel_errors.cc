@@ -142,7 +142,7 @@ TEST(ParallelErrors, RefusedSweepStopsEveryRankWithTheFirstPosition)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Mesh/contact size");
+    EXPECT_EQ(e.parameter(), "mesh.contact_size");
     EXPECT_NE(e.reason().find("sweep position 1 "), std::string::npos) << e.what();
     EXPECT_NE(e.reason().find("cells"), std::string::npos) << e.what();
   }
