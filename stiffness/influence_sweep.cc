@@ -74,7 +74,7 @@ struct FlankPoint
 {
   Point<2> surface;
   Tensor<1, 2> inward; // unit: the mate's force on this flank, into the body
-  // unit, ⊥ inward: a force line turned by τ (rad, PairTilt) loads along inward + τ·across
+  // unit, ⊥ inward: a force line turned by τ (rad, PairLine) loads along inward + τ·across
   Tensor<1, 2> across;
   types::material_id body;
 };
@@ -293,7 +293,7 @@ class FlankCompliance
 public:
   // `removal(ℓ, wheel)` (m): the profile modification's depth at the flank point, by which the
   // meshed flank lies under the nominal involute.
-  // `tilted`: the flanks are modified, so force lines turn (PairTilt) and the coefficients
+  // `tilted`: the flanks are modified, so force lines turn (PairLine) and the coefficients
   // across the normal are computed too.
   FlankCompliance(const BodyModel& model, const PairFrame& frame, std::vector<FlankGrid> grids,
                   double step, double depth, double inset,
@@ -395,7 +395,16 @@ public:
     }
   }
   double operator()(double at) const { return removal(at, false) + removal(at, true); }
-  bool modified() const { return !pinion.empty() || !wheel.empty(); }
+  // Any modification that removes material (amount 0 is none: the same coefficients, digit for
+  // digit).
+  bool modified() const
+  {
+    for (const auto* list : {&pinion, &wheel})
+      for (const geometry::ToothModification& m : *list)
+        if (m.amount != 0.)
+          return true;
+    return false;
+  }
   // The depth removed from one gear's loaded flank where it touches at ℓ.
   double removal(double at, bool of_wheel) const
   {
@@ -491,9 +500,12 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   };
   const LineContact whole =
       hertz_line_contact(total_force, model.face_width, relative_radius, model.pinion, model.wheel);
-  const double shift = std::abs(modification_gap(step) - modification_gap(-step)) / (2. * step) *
-                       relative_radius; // |β|·R of the zone's centre
-  const double span = 3. * whole.half_width + shift;
+  // β: the modification's slope across the contact at x = 0. Its line is left out of the strip's
+  // gap, as of the Hertz near field: with it the zone's centre moves by βR and the gap there drops
+  // by β²R/2 (0.1 µm for β = 5.6 mrad), which the exact path does not show (on the relieved
+  // slopes of the tip-relief test the model without it is within 0.3 %; with it 1.5 % stiff).
+  const double tangent = (modification_gap(step) - modification_gap(-step)) / (2. * step);
+  const double span = 3. * whole.half_width + std::abs(tangent) * relative_radius;
   // Not a parabola (plus a line, which only shifts the zone by βR ≈ 30 µm): a kink inside the
   // strip or a curvature of the modification 1e-3 of the flanks'.
   const double bend = 0.5 * std::abs(modification_gap(span) + modification_gap(-span));
@@ -505,7 +517,7 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   for (int i = 0; i < strip_cells; ++i)
   {
     const double x = -span + (i + 0.5) * cell;
-    line.strip.gap.push_back(x * x / (2. * relative_radius) + modification_gap(x));
+    line.strip.gap.push_back(x * x / (2. * relative_radius) + modification_gap(x) - tangent * x);
   }
   return line;
 }
