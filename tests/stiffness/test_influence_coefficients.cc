@@ -137,7 +137,7 @@ TEST(InfluenceCoefficients, ContactProblemByHand)
 // compression at x = 0 (both are Johnson 1985's plane-strain field: §2.2 integrated over the
 // pressure against §2.6 on the axis), and the Hertz surface is the parabola x²/(2R) inside the
 // zone (the contact's own condition). Midpoint rule over 4000 cells of the elliptic pressure:
-// measured 2e-5 relative (2026-12-02, the √ edges converge slowly); tolerance 1e-4.
+// within 1e-4 relative (2026-12-02; not printed: the √ edges converge slowly); tolerance 1e-4.
 TEST(InfluenceCoefficients, HalfPlaneKernelIntegratesHertz)
 {
   const LayerBody steel{210e9, 0.3, 0.3e-3};
@@ -164,8 +164,8 @@ TEST(InfluenceCoefficients, HalfPlaneKernelIntegratesHertz)
 
 // The strip with a parabolic gap is the Hertz contact: approach, half-width and peak pressure
 // of the closed form (Johnson 1985 §4.3 with the layer of §2.6). 96 cells over ±3a: measured
-// approach 0.02 %, half-width within a cell (1/16 of a), peak 1.5 % (2026-12-02; piecewise-
-// constant pressure); tolerances about 3×.
+// approach −0.018 %, half-width 0, peak −0.05 %, compliance +0.74 % (2026-12-02; piecewise-
+// constant pressure); tolerances 0.1 %, a cell (10 %), 5 %, 2 %.
 TEST(InfluenceCoefficients, StripWithParabolaIsHertz)
 {
   const LayerBody steel{210e9, 0.3, 0.3e-3};
