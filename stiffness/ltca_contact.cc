@@ -64,9 +64,174 @@ LineContact hertz_line_contact(double force, double face_width, double relative_
 
 namespace
 {
-// Newton on the active pairs for F (≥ 0) and e: Σ_k C_jk F_k + δ(F_j) + s_j − e = 0 on the
-// active set, Σ F = W. Steps are damped to keep every force positive (δ is defined for F > 0);
-// a force driven below 1e-12·W leaves the active set (returned false with it cleared).
+// The two parts of the cell integral of the Flamant kernel (half_plane_cell_displacement): the
+// part in ξ alone, Q(ξ) = ∫[(1−ν²)·ln(ξ²+h²) − (1+ν)·h²/(ξ²+h²)]dξ, and the part in t = ξ − x,
+// R(t) = ∫−2(1−ν²)·ln|t| dt; both over πE.
+double flamant_depth_part(double xi, const LayerBody& body)
+{
+  const double h = body.matching_depth, nu = body.poisson_ratio;
+  const double atan = std::atan(xi / h);
+  return ((1. - nu * nu) * (xi * std::log(xi * xi + h * h) - 2. * xi + 2. * h * atan) -
+          (1. + nu) * h * atan) /
+         (M_PI * body.young_modulus);
+}
+
+double flamant_surface_part(double t, const LayerBody& body)
+{
+  const double nu = body.poisson_ratio;
+  const double t_log_t = t == 0. ? 0. : t * std::log(std::abs(t));
+  return -2. * (1. - nu * nu) * (t_log_t - t) / (M_PI * body.young_modulus);
+}
+} // namespace
+
+double half_plane_cell_displacement(double x, double from, double to, const LayerBody& body)
+{
+  // u_z(x, 0) − u_z(0, h) of a line load at ξ: the surface's −(2(1−ν²)/(πE))·ln|x−ξ| relative
+  // to the surface under 0, plus the compression of the axis 0 ≤ z ≤ h under the offset load
+  // (Flamant's σ_r = −(2P/π)·cos θ/r on the axis at (−ξ, z), integrated in closed form).
+  return flamant_depth_part(to, body) - flamant_depth_part(from, body) +
+         flamant_surface_part(to - x, body) - flamant_surface_part(from - x, body);
+}
+
+namespace
+{
+// The strip's influence matrix (m/Pa), both bodies: cell k's unit pressure at cell i's centre.
+// Cell edges ξ_k = −L + k·Δ and centres x_i = −L + (i + ½)·Δ make the surface part a function
+// of k − i: 3n + 1 kernel evaluations per body instead of 2n².
+Eigen::MatrixXd strip_influence(int n, double half_span, const LayerBody& first,
+                                const LayerBody& second)
+{
+  const double cell = 2. * half_span / n;
+  Eigen::MatrixXd influence(n, n);
+  std::vector<double> depth_part(n + 1, 0.), surface_part(2 * n + 1, 0.);
+  for (const LayerBody* body : {&first, &second})
+  {
+    for (int k = 0; k <= n; ++k)
+      depth_part[k] += flamant_depth_part(-half_span + k * cell, *body);
+    for (int m = -n; m <= n; ++m) // edge k, centre i: t = (k − i − ½)·Δ, m = k − i
+      surface_part[m + n] += flamant_surface_part((m - 0.5) * cell, *body);
+  }
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k)
+      influence(i, k) =
+          depth_part[k + 1] - depth_part[k] + surface_part[k + 1 - i + n] - surface_part[k - i + n];
+  return influence;
+}
+
+// Pressures (Pa) of the loaded cells and the approach δ (m) for a fixed active set:
+// Σ_k A_ik·p_k + g_i = δ on the active cells, Σ p_k·Δ = w.
+std::pair<Eigen::VectorXd, double> strip_pressures(const Eigen::MatrixXd& influence,
+                                                   const std::vector<double>& gap,
+                                                   const std::vector<int>& active, double cell,
+                                                   double line_load)
+{
+  const int m = active.size();
+  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(m + 1, m + 1);
+  Eigen::VectorXd rhs(m + 1);
+  for (int a = 0; a < m; ++a)
+  {
+    for (int b = 0; b < m; ++b)
+      system(a, b) = influence(active[a], active[b]);
+    system(a, m) = -1.;
+    system(m, a) = cell;
+    rhs[a] = -gap[active[a]];
+  }
+  rhs[m] = line_load;
+  const Eigen::VectorXd solution = system.partialPivLu().solve(rhs);
+  return {solution.head(m), solution[m]};
+}
+
+// The strip's active set for line load w: starts from the Hertz zone around the smallest gap,
+// drops cells of negative pressure, adds cells whose surface would pass the approach.
+LineContact solve_strip(const Eigen::MatrixXd& influence, double line_load,
+                        const ContactStrip& strip, const LayerBody& first, const LayerBody& second)
+{
+  const int n = strip.gap.size();
+  const double cell = 2. * strip.half_span / n;
+  const double e_star =
+      1. / ((1. - first.poisson_ratio * first.poisson_ratio) / first.young_modulus +
+            (1. - second.poisson_ratio * second.poisson_ratio) / second.young_modulus);
+  const double hertz_a = std::sqrt(4. * line_load * strip.relative_radius / (M_PI * e_star));
+  const double smallest = *std::min_element(strip.gap.begin(), strip.gap.end());
+  std::vector<char> loaded(n, 0);
+  for (int i = 0; i < n; ++i)
+    loaded[i] = strip.gap[i] <= smallest + 0.5 * hertz_a * hertz_a / strip.relative_radius;
+  for (int pass = 0; pass < 4 * n; ++pass)
+  {
+    std::vector<int> active;
+    for (int i = 0; i < n; ++i)
+      if (loaded[i])
+        active.push_back(i);
+    const auto [pressure, approach] =
+        strip_pressures(influence, strip.gap, active, cell, line_load);
+    bool changed = false;
+    for (std::size_t a = 0; a < active.size(); ++a)
+      if (pressure[a] < 0.)
+        loaded[active[a]] = 0, changed = true;
+    if (changed)
+      continue;
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(n);
+    for (std::size_t a = 0; a < active.size(); ++a)
+      full[active[a]] = pressure[a];
+    const Eigen::VectorXd surface = influence * full;
+    // 1e-15 m: round-off of the µm-sized displacements.
+    for (int i = 0; i < n; ++i)
+      if (!loaded[i] && strip.gap[i] + surface[i] < approach - 1e-15)
+        loaded[i] = 1, changed = true;
+    if (changed)
+      continue;
+    if (loaded.front() || loaded.back())
+      throw SolverFailure("influence-coefficient contact",
+                          "the contact zone of a modified flank reached the end of its strip");
+    LineContact contact;
+    contact.approach = approach;
+    contact.peak_pressure = full.maxCoeff();
+    contact.half_width = 0.5 * cell * (active.back() - active.front() + 1);
+    return contact;
+  }
+  throw SolverFailure("influence-coefficient contact",
+                      "the contact zone of a modified flank did not settle");
+}
+} // namespace
+
+LineContact strip_line_contact(double force, double face_width, const ContactStrip& strip,
+                               const LayerBody& first, const LayerBody& second)
+{
+  if (!(force > 0.))
+    return {};
+  const Eigen::MatrixXd influence =
+      strip_influence(strip.gap.size(), strip.half_span, first, second);
+  LineContact contact = solve_strip(influence, force / face_width, strip, first, second);
+  // δ(F) is piecewise affine (affine while the loaded cells stay): a central difference of
+  // relative step 1e-6 is exact within a piece, good enough for Newton across pieces.
+  const double step = 1e-6 * force;
+  contact.compliance =
+      (solve_strip(influence, (force + step) / face_width, strip, first, second).approach -
+       solve_strip(influence, (force - step) / face_width, strip, first, second).approach) /
+      (2. * step);
+  return contact;
+}
+
+namespace
+{
+// Pair j's near field: the strip where its gap is not a Hertz parabola, else Hertz.
+LineContact near_field(const MeshContactProblem& problem, int j, double force)
+{
+  if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
+    return strip_line_contact(force, problem.face_width, problem.strip[j], problem.pinion,
+                              problem.wheel);
+  return hertz_line_contact(force, problem.face_width, problem.relative_radius[j], problem.pinion,
+                            problem.wheel);
+}
+
+double lever(const MeshContactProblem& problem, int j)
+{
+  return problem.lever_ratio.empty() ? 1. : problem.lever_ratio[j];
+}
+
+// Newton on the active pairs for F (≥ 0) and e: Σ_k C_jk F_k + δ(F_j) − λ_j·(e − s_j) = 0 on
+// the active set, Σ λ_j·F_j = W. Steps are damped to keep every force positive (δ is defined for F
+// > 0); a force driven below 1e-12·W leaves the active set (returned false with it cleared).
 bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>& active,
                       std::vector<double>& force, double& approach, unsigned int& steps)
 {
@@ -79,18 +244,17 @@ bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>&
     for (int a = 0; a < n; ++a)
     {
       const int j = active[a];
-      const LineContact near = hertz_line_contact(
-          force[j], problem.face_width, problem.relative_radius[j], problem.pinion, problem.wheel);
-      residual[a] = near.approach + problem.separation[j] - approach;
+      const LineContact near = near_field(problem, j, force[j]);
+      residual[a] = near.approach - lever(problem, j) * (approach - problem.separation[j]);
       for (int b = 0; b < n; ++b)
       {
         residual[a] += problem.compliance[j][active[b]] * force[active[b]];
         jacobian(a, b) = problem.compliance[j][active[b]];
       }
       jacobian(a, a) += near.compliance;
-      jacobian(a, n) = -1.;
-      jacobian(n, a) = 1.;
-      sum += force[j];
+      jacobian(a, n) = -lever(problem, j);
+      jacobian(n, a) = lever(problem, j);
+      sum += lever(problem, j) * force[j];
     }
     residual[n] = sum - problem.total_force;
     const Eigen::VectorXd delta = jacobian.partialPivLu().solve(-residual);
@@ -116,11 +280,11 @@ bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>&
                       "Newton's method on the loaded pairs did not converge in 100 steps");
 }
 
-// The gap g_j = e − s_j − Σ_k C_jk F_k of an unloaded pair (> 0: it would penetrate).
+// The gap g_j = λ_j·(e − s_j) − Σ_k C_jk F_k of an unloaded pair (> 0: it would penetrate).
 double penetration(const MeshContactProblem& problem, const std::vector<double>& force,
                    double approach, int j)
 {
-  double g = approach - problem.separation[j];
+  double g = lever(problem, j) * (approach - problem.separation[j]);
   for (std::size_t k = 0; k < force.size(); ++k)
     g -= problem.compliance[j][k] * force[k];
   return g;
@@ -179,9 +343,7 @@ MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
     {
       solution.contact.resize(n);
       for (int j = 0; j < n; ++j)
-        solution.contact[j] =
-            hertz_line_contact(force[j], problem.face_width, problem.relative_radius[j],
-                               problem.pinion, problem.wheel);
+        solution.contact[j] = near_field(problem, j, force[j]);
       return solution;
     }
     force[entering] = 1e-3 * problem.total_force;

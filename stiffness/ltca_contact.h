@@ -2,7 +2,7 @@
 // (docs/ltca.md §3–4): the analytic near field of a plane-strain Hertz line contact down to a
 // matching depth, and the complementarity problem of the pairs in contact
 //
-//     g_j = e − s_j − Σ_k C_jk·F_k − δ(F_j) ≤ 0,  F_j ≥ 0,  F_j·g_j = 0,  Σ F_j = W
+//     g_j = λ_j·(e − s_j) − Σ_k C_jk·F_k − δ(F_j) ≤ 0,  F_j ≥ 0,  F_j·g_j = 0,  Σ λ_j·F_j = W
 //
 // (Conry & Seireg 1971, docs/references.md §19). Plain arithmetic, no deal.II: the FE side
 // (stiffness/influence_sweep.h) supplies C.
@@ -38,6 +38,32 @@ struct LineContact
 LineContact hertz_line_contact(double force, double face_width, double relative_radius,
                                const LayerBody& first, const LayerBody& second);
 
+// A line contact whose gap is not a Hertz parabola: where a relief starts (a kink of the flank)
+// within the contact, the pressure peaks at the kink and the zone is narrower (docs/ltca.md,
+// "Profile modifications"). The gap across the contact, sampled at the centres of the strip's
+// cells: g_i = x_i²/(2R) + the modifications' gap, x_i tangential offsets (m) from the nominal
+// contact point over [−half_span, half_span].
+struct ContactStrip
+{
+  double half_span = 0.;       // m, L
+  double relative_radius = 0.; // m, R of the pair (the first guess of the zone)
+  std::vector<double> gap;     // m, at x_i = −L + (i + ½)·2L/N
+};
+
+// The same result as hertz_line_contact for the gap of `strip`: piecewise-constant pressure on
+// the strip's cells, each body's surface displaced by the plane-strain half-plane (Flamant,
+// Johnson 1985 §2.2) relative to its point at the matching depth under x = 0, the cells in
+// contact found by an active set. approach: δ at x = 0's depth points; half_width: half the
+// extent of the loaded cells; peak_pressure: the largest cell pressure. SolverFailure when the
+// active set does not settle or the contact reaches the strip's ends.
+LineContact strip_line_contact(double force, double face_width, const ContactStrip& strip,
+                               const LayerBody& first, const LayerBody& second);
+
+// The surface displacement (m, into the body) at tangential offset x (m) of uniform pressure
+// 1 Pa on [from, to] (m), relative to the body's point at its matching depth under x = 0: the
+// integral of the Flamant kernel (1/(πE))·[(1−ν²)·(ln(ξ²+h²) − 2·ln|x−ξ|) − (1+ν)·h²/(ξ²+h²)].
+double half_plane_cell_displacement(double x, double from, double to, const LayerBody& body);
+
 // The problem of one position: n pairs in contact by the kinematics.
 struct MeshContactProblem
 {
@@ -45,7 +71,12 @@ struct MeshContactProblem
   std::vector<double> separation;              // m, s_j: designed gap of pair j (≥ 0)
   std::vector<double> relative_radius;         // m, R_j at the pair's contact point
   double total_force = 0.;                     // N, W = T1/r_b1
-  double face_width = 0.;                      // m, b
+  // -, arm_j/r_b1 of the pinion's lever arm about pair j's force line: 1 for unmodified
+  // involutes; a relief's slope turns the flank normal (docs/ltca.md). Empty: all 1.
+  std::vector<double> lever_ratio;
+  // Pair j's near field: empty gap → Hertz (relative_radius[j]); else the strip solution.
+  std::vector<ContactStrip> strip;
+  double face_width = 0.; // m, b
   LayerBody pinion, wheel;
 };
 
@@ -53,7 +84,7 @@ struct MeshContactSolution
 {
   std::vector<double> force;          // N, F_j
   std::vector<LineContact> contact;   // each loaded pair's near field (zero when unloaded)
-  double approach = 0.;               // m, e: rigid approach of the flanks along the line of action
+  double approach = 0.;               // m, e: the pinion's roll r_b1·Δφ (rigid approach)
   unsigned int active_set_passes = 0; // -
   unsigned int newton_steps = 0;      // -
 };
