@@ -15,8 +15,9 @@ inline std::filesystem::path folder_from_environment(const char* variable)
 {
   const char* value = std::getenv(variable);
   if (value == nullptr || *value == '\0')
-    throw std::runtime_error(std::string(variable) +
-                             " is not set: run the test through ctest (tests/CMakeLists.txt sets it)");
+    throw std::runtime_error(
+        std::string(variable) +
+        " is not set: run the test through ctest (tests/CMakeLists.txt sets it)");
   return value;
 }
 
