@@ -1,6 +1,7 @@
 #include "contact/contact_problem.h"
 
 #include "contact/contact_problem_internal.h"
+#include "contact/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -231,7 +232,7 @@ template <int dim>
 void ContactProblem<dim>::roll(const std::vector<BodyRotation<dim>>& new_rotations)
 {
   if (!use_schur_complement())
-    throw InputError("Contact/Iteration solves",
+    throw InputError(field::contact("iteration_solves"),
                      "rolling bodies (one mesh for a whole sweep) needs the Schur complement "
                      "with the direct solver");
   rolling = true;

@@ -216,9 +216,10 @@ public:
   // (first position) or after a solve (next positions: the pairs are coupled afresh, the
   // contact starts cold — or from start_from() —, and K, the supports and the factorization are
   // kept). `pairs` of add_contact_pair may be replaced in between (clear_contact_pairs). Needs
-  // the Schur complement (InputError naming "Contact/Iteration solves"), supports that turn with
-  // their bodies (hubs about their own axes), and leaves solution() and output_results() in the
-  // bodies' own frames; the pair results (positions, forces) are in the turned frame.
+  // the Schur complement (InputError naming field::contact("iteration_solves"), contact/fields.h),
+  // supports that turn with their bodies (hubs about their own axes), and leaves solution() and
+  // output_results() in the bodies' own frames; the pair results (positions, forces) are in the
+  // turned frame.
   void roll(const std::vector<BodyRotation<dim>>& rotations);
   void clear_contact_pairs() { pairs.clear(); }
   // After a solve: whether every closed node of a pair paired in a window lies within half the

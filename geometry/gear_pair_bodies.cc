@@ -550,9 +550,9 @@ void check_tooth_modifications(const GearPairSceneSpec& given)
   ToothProfiles(wheel, spec.wheel_modifications, flank_roll_range(pair, wheel, true),
                 loaded_side(wheel), field::modified_gear(true));
   check_lead_modification(spec.pinion_modifications.lead, pinion, pair.common_face_width,
-                          "Gear pair/Pinion");
+                          field::modified_gear(false));
   check_lead_modification(spec.wheel_modifications.lead, wheel, pair.common_face_width,
-                          "Gear pair/Wheel");
+                          field::modified_gear(true));
 }
 
 namespace detail

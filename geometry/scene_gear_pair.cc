@@ -3,6 +3,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
+#include "geometry/fields.h"
 #include "geometry/gear_pair_internal.h"
 #include "geometry/involute_tooth.h"
 #include "geometry/tooth_fault.h"
@@ -36,12 +37,12 @@ lead_offsets(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& 
       {{scene_ids::pinion_body,
         LeadModifier(gears.pinion, spec.pinion_modifications.lead, loaded_side(gears.pinion),
                      pair.common_face_width, gears.pinion_centre, gears.pinion_rotation,
-                     "Gear pair/Pinion")},
+                     field::modified_gear(false))},
        {scene_ids::wheel_body,
         LeadModifier(gears.wheel, spec.wheel_modifications.lead, loaded_side(gears.wheel),
                      pair.common_face_width, gears.wheel_centre, gears.wheel_rotation,
-                     "Gear pair/Wheel")}},
-      {"Gear pair/Pinion", "Gear pair/Wheel"});
+                     field::modified_gear(true))}},
+      {field::modified_gear(false), field::modified_gear(true)});
 }
 
 // Meshes the model. The rims only carry the tooth loads to the bore: their cells may grow with

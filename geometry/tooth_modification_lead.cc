@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "geometry/fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,10 +26,13 @@ double involute_function(double base_radius, double radius)
   const double alpha = std::acos(base_radius / radius);
   return std::tan(alpha) - alpha;
 }
-// "/lead crowning", "/lead slope" or "/end relief": the first non-zero entry.
-std::string first_entry(const LeadModification& lead)
+// The field of the first non-zero entry of `gear`'s lead modifications ("pinion.lead_crowning",
+// "pinion.lead_slope" or "pinion.end_relief", geometry/fields.h).
+std::string first_entry(const LeadModification& lead, const std::string& gear)
 {
-  return lead.crowning != 0. ? "/lead crowning" : lead.slope != 0. ? "/lead slope" : "/end relief";
+  return field::gear_entry(gear, lead.crowning != 0. ? "lead crowning"
+                                 : lead.slope != 0.  ? "lead slope"
+                                                     : "end relief");
 }
 } // namespace
 
@@ -66,23 +70,24 @@ void check_lead_modification(const LeadModification& lead, const ToothProfile& n
   if (lead.empty())
     return;
   for (const auto& [amount, name] :
-       {std::pair{lead.crowning, "/lead crowning"}, std::pair{lead.slope, "/lead slope"},
-        std::pair{lead.end_relief, "/end relief"}})
+       {std::pair{lead.crowning, "lead crowning"}, std::pair{lead.slope, "lead slope"},
+        std::pair{lead.end_relief, "end relief"}})
   {
     if (!std::isfinite(amount))
-      throw InputError(parameter + name, "must be a finite amount (µm)");
-    if (amount < 0. && std::string(name) != "/lead slope")
-      throw InputError(parameter + name, "must be 0 or positive (material removed, µm)");
+      throw InputError(field::gear_entry(parameter, name), "must be a finite amount (µm)");
+    if (amount < 0. && std::string(name) != "lead slope")
+      throw InputError(field::gear_entry(parameter, name),
+                       "must be 0 or positive (material removed, µm)");
   }
   if (lead.end_relief > 0. &&
       !(lead.end_relief_length > 0. && lead.end_relief_length <= 0.5 * face_width))
-    throw InputError(parameter + "/end relief length",
+    throw InputError(field::gear_entry(parameter, "end relief length"),
                      "must lie in (0, half the face width] (mm) for a non-zero end relief");
   const double worst = std::max(lead_removed_depth(lead, 0., face_width, true),
                                 lead_removed_depth(lead, face_width, face_width, true)) *
                        (lead.flanks == ModifiedFlanks::both ? 2. : 1.);
   if (worst >= nominal.tip_thickness)
-    throw InputError(parameter + first_entry(lead),
+    throw InputError(first_entry(lead, parameter),
                      "the lead modifications remove " + um(worst) +
                          " across the tooth at an end of the face, beyond its tip thickness " +
                          um(nominal.tip_thickness));
@@ -162,7 +167,7 @@ lead_node_offset(unsigned int dimension, const std::vector<std::pair<int, LeadMo
     if (bodies[b].second.empty())
       continue;
     if (dimension != 3)
-      throw InputError(parameters.at(b) + first_entry(bodies[b].second.modification()),
+      throw InputError(first_entry(bodies[b].second.modification(), parameters.at(b)),
                        "a lead modification needs the 3D model (Mesh/dimension = 3): a 2D model "
                        "has no face width to vary over");
     any = true;

@@ -50,8 +50,10 @@ double lead_removed_depth(const LeadModification& lead, double z, double face_wi
 double smallest_lead_separation(const LeadModification& first, const LeadModification& second,
                                 double face_width);
 
-// Checks a gear's lead modifications against its tooth and face width (InputError naming
-// `parameter` + "/lead crowning", "/lead slope", "/end relief" or "/end relief length"): amounts
+// Checks a gear's lead modifications against its tooth and face width (InputError naming the
+// field of gear `parameter` (field::modified_gear: "pinion") and the entry, field::gear_entry:
+// "pinion.lead_crowning", "pinion.lead_slope", "pinion.end_relief", "pinion.end_relief_length",
+// geometry/fields.h; app maps them to "Gear pair/Pinion/lead crowning" etc.): amounts
 // finite and (but the slope) not negative, an end relief with a length in (0, b/2], the removal
 // of both flanks at the worst end within the tip thickness.
 void check_lead_modification(const LeadModification& lead, const ToothProfile& nominal,
@@ -94,8 +96,9 @@ private:
 
 // The PlanarModel::node_offset (geometry/mesh_planar.h) of a scene's gear bodies, each given by
 // its material id and modifier; empty when no gear has lead modifications. A 2D scene
-// (`dimension` 2) with lead modifications is refused (InputError naming `parameter` of the
-// first modified gear + "/lead crowning" etc.: a 2D model has no face width to vary over).
+// (`dimension` 2) with lead modifications is refused (InputError naming the entry of the first
+// modified gear's `parameters` (field::modified_gear), "pinion.lead_crowning" etc.: a 2D model
+// has no face width to vary over).
 std::function<Eigen::Vector2d(int, const Eigen::Vector3d&)>
 lead_node_offset(unsigned int dimension, const std::vector<std::pair<int, LeadModifier>>& bodies,
                  const std::vector<std::string>& parameters);

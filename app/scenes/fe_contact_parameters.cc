@@ -1,6 +1,8 @@
 #include "app/scenes/fe_contact_parameters.h"
 
+#include "app/core/field_names.h"
 #include "app/core/parameter_patterns.h"
+#include "contact/fields.h"
 
 namespace gearstiff::app
 {
@@ -94,6 +96,15 @@ contact::ContactParameters parse_contact_parameters(ParameterHandler& prm)
                                                     : contact::IterationSolves::automatic;
   return p;
 }
+
+// The contact library's fields (contact/fields.h) as the parameters of "Contact".
+ParameterNames contact_field_names()
+{
+  return field_family("Contact", contact::field::contact_fields(), contact::field::contact,
+                      {{"iteration_solves", "Iteration solves"}});
+}
+
+const FieldNamesRegistration contact_fields("contact", contact_field_names);
 } // namespace
 
 void declare_fe_contact_parameters(dealii::ParameterHandler& prm)

@@ -203,7 +203,8 @@ TEST(LeadModification, ZeroIsTodaysMesh)
   EXPECT_EQ(file_text(plain), file_text(zero));
 }
 
-// Bad input names the parameter before anything is meshed.
+// Bad input names the gear's field (app maps "pinion.lead_slope" to "Gear pair/Pinion/lead slope",
+// tests/stiffness cli cases) before anything is meshed.
 TEST(LeadModification, BadInput)
 {
   const auto fails = [](GearPairSceneSpec spec, const std::string& parameter)
@@ -221,21 +222,21 @@ TEST(LeadModification, BadInput)
   };
   GearPairSceneSpec spec = coarse_3d();
   spec.pinion_modifications.lead.end_relief = 5e-6; // no length
-  fails(spec, "Gear pair/Pinion/end relief length");
+  fails(spec, "pinion.end_relief_length");
   spec.pinion_modifications.lead.end_relief_length = 20e-3; // beyond half the 24 mm face
-  fails(spec, "Gear pair/Pinion/end relief length");
+  fails(spec, "pinion.end_relief_length");
   spec = coarse_3d();
   spec.wheel_modifications.lead.crowning = -5e-6;
-  fails(spec, "Gear pair/Wheel/lead crowning");
+  fails(spec, "wheel.lead_crowning");
   spec.wheel_modifications.lead.crowning = 2e-3; // 2 mm: beyond the tip thickness
-  fails(spec, "Gear pair/Wheel/lead crowning");
+  fails(spec, "wheel.lead_crowning");
   spec = coarse_3d();
   spec.mesh.dimension = 2;
   spec.pinion_modifications.lead.slope = 5e-6;
-  fails(spec, "Gear pair/Pinion/lead slope");
+  fails(spec, "pinion.lead_slope");
   // On a ring the same checks apply: crowning beyond its tip thickness.
   spec = planet_ring_3d();
   spec.wheel_modifications.lead.crowning = 2e-3;
-  fails(spec, "Gear pair/Wheel/lead crowning");
+  fails(spec, "wheel.lead_crowning");
 }
 } // namespace
