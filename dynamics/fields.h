@@ -2,7 +2,8 @@
 // the inputs its caller filled — the train's (kinematics/fields.h: "train.<member>"), the
 // simulation settings ("simulation.time_step"), the ISO 6336-1 method B inputs
 // ("iso6336.face_width"), the speed sweep ("speed_sweep.points") and the two meshes of a
-// lateral stage ("train_mesh1.stiffness": 1 the sun mesh, 2 the ring mesh). Library code names
+// lateral stage ("train_mesh1.stiffness": 1 the sun mesh, 2 the ring mesh), the gears and
+// meshes of a torsional GearTrain ("gear2.inertia", "mesh1.damping"). Library code names
 // its fields, never the parameter paths users write ("Simulation/time step"): app/dynamics maps
 // every field to its parameter (dynamics_field_names.cc), and tools/house_counts.py fails when
 // dynamics/ spells a user parameter path.
@@ -69,6 +70,44 @@ inline std::string train_mesh(unsigned int mesh, const std::string& member)
 inline const std::vector<std::string>& train_mesh_fields()
 {
   static const std::vector<std::string> members = {"stiffness", "damping"};
+  return members;
+}
+
+// Gear `gear` (from 0) of a GearTrain as TorsionalModel names it, "gear2.inertia" ("gear2"
+// alone for the gear itself): the command that built the train maps it to the section the gear
+// came from ("Gear 2/inertia", app/dynamics/dynamics_field_names.h).
+inline std::string train_gear(unsigned int gear, const std::string& member = "")
+{
+  return "gear" + std::to_string(gear + 1) + (member.empty() ? "" : "." + member);
+}
+inline const std::vector<std::string>& train_gear_fields()
+{
+  static const std::vector<std::string> members = {"inertia", "torque", "suspension"};
+  return members;
+}
+
+// Mesh `mesh` (from 0) of a GearTrain as TorsionalModel, check_nonlinear_mesh and simulate name
+// it, "mesh1.contact_ratio"; mapped as train_gear ("Mesh 1/contact ratio").
+inline std::string gear_mesh(unsigned int mesh, const std::string& member)
+{
+  return "mesh" + std::to_string(mesh + 1) + "." + member;
+}
+inline const std::vector<std::string>& gear_mesh_fields()
+{
+  static const std::vector<std::string> members = {"gears",
+                                                   "driver_base_radius",
+                                                   "driven_base_radius",
+                                                   "driver_teeth",
+                                                   "contact_ratio",
+                                                   "approach_ratio",
+                                                   "damping",
+                                                   "friction_coefficient",
+                                                   "friction_arms",
+                                                   "stiffness",
+                                                   "back_flank_stiffness",
+                                                   "backlash",
+                                                   "transmission_error",
+                                                   "transmission_error_harmonics"};
   return members;
 }
 } // namespace gearstiff::dynamics::field

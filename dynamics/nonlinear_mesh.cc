@@ -1,5 +1,6 @@
 #include "dynamics/nonlinear_mesh.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 #include "errors/format.h"
 
@@ -204,15 +205,15 @@ std::string TransmissionError::description() const
   return s.str();
 }
 
-void check_nonlinear_mesh(const NonlinearMesh& mesh, const std::string& section)
+void check_nonlinear_mesh(const NonlinearMesh& mesh, unsigned int m)
 {
   if (!(mesh.backlash >= 0.) || !std::isfinite(mesh.backlash))
-    throw InputError(section + "/backlash",
+    throw InputError(field::gear_mesh(m, "backlash"),
                      "must not be negative, got " + format(mesh.backlash * 1e6) + " µm");
   const double variation = mesh.transmission_error.peak_to_peak();
   // Relative slack for round-off of an FE split (e = s − W/k to 1e-12 m).
   if (variation > mesh.backlash + 1e-12)
-    throw InputError(section + "/transmission error",
+    throw InputError(field::gear_mesh(m, "transmission_error"),
                      "the unloaded transmission error varies by " + format(variation * 1e6) +
                          " µm, more than the free play (backlash " + format(mesh.backlash * 1e6) +
                          " µm): the back flanks would be pressed together without load, the pair "

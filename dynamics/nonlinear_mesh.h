@@ -85,7 +85,8 @@ struct NonlinearMesh
   // Back-flank stiffness k_back(x); nothing: the drive flank's mirrored, k(ε_α − x) (symmetric
   // teeth: the back flanks run the path of contact the other way).
   std::optional<MeshStiffness> back_stiffness;
-  // The parameter section that describes this mesh ("Mesh 1", "Train mesh 2"), for messages.
+  // The parameter section that describes this mesh ("Mesh 1", "Train mesh 2"): the library
+  // names the mesh's fields (field::gear_mesh), app maps the harmonics' field to this section.
   std::string section;
 };
 
@@ -107,10 +108,11 @@ inline double backlash_function(double approach, double backlash)
   return approach > 0. ? approach : (approach < -backlash ? approach + backlash : 0.);
 }
 
-// InputError naming `section`/backlash for a negative or non-finite free play, and
-// `section`/transmission error when e(x) varies by more than the free play: the back flanks
-// would then be pressed together at some position without load (the pair jams, it cannot mesh).
-void check_nonlinear_mesh(const NonlinearMesh& mesh, const std::string& section);
+// InputError naming the field "backlash" of mesh `m` of its train (field::gear_mesh:
+// "mesh1.backlash", dynamics/fields.h) for a negative or non-finite free play, and
+// "transmission_error" when e(x) varies by more than the free play: the back flanks would then
+// be pressed together at some position without load (the pair jams, it cannot mesh).
+void check_nonlinear_mesh(const NonlinearMesh& mesh, unsigned int m);
 
 // The split of an FE loaded STE table into stiffness and unloaded TE: k(x) is the table's
 // stiffness, W the load of the FE case (W = k·s at every row, checked to 1e-3), and

@@ -141,11 +141,7 @@ void check_excitation_resolution(const TorsionalModel& model, double step)
     const double frequency = order * model.mesh_position_rate(m);
     if (frequency * step * steps_per_harmonic > 1.)
     {
-      const std::string section =
-          mesh.nonlinear->section.empty()
-              ? (mesh.name.empty() ? "Mesh " + std::to_string(m + 1) : mesh.name)
-              : mesh.nonlinear->section;
-      throw InputError(section + "/transmission error harmonics",
+      throw InputError(field::gear_mesh(m, "transmission_error_harmonics"),
                        "order " + std::to_string(order) + " at " + std::to_string(frequency) +
                            " Hz is above what the time step " + std::to_string(step * 1e6) +
                            " µs resolves (8 steps per period: at most " +

@@ -1,5 +1,6 @@
 #include "dynamics/torsional_model.h"
 
+#include "dynamics/fields.h"
 #include "errors/errors.h"
 
 #include <Eigen/Eigenvalues>
@@ -12,16 +13,6 @@ namespace gearstiff::dynamics
 {
 namespace
 {
-std::string gear_label(const GearTrain& train, unsigned int i)
-{
-  return train.gears[i].name.empty() ? "Gear " + std::to_string(i + 1) : train.gears[i].name;
-}
-
-std::string mesh_label(const GearTrain& train, unsigned int m)
-{
-  return train.meshes[m].name.empty() ? "Mesh " + std::to_string(m + 1) : train.meshes[m].name;
-}
-
 void require(bool condition, const std::string& parameter, const std::string& reason)
 {
   if (!condition)
@@ -65,9 +56,9 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
   for (unsigned int i = 0; i < n_gears; ++i)
   {
     const Gear& gear = train.gears[i];
-    require(gear.inertia > 0. && std::isfinite(gear.inertia), gear_label(train, i) + "/inertia",
+    require(gear.inertia > 0. && std::isfinite(gear.inertia), field::train_gear(i, "inertia"),
             "must be positive, got " + std::to_string(gear.inertia) + " kg·m²");
-    require(std::isfinite(gear.torque), gear_label(train, i) + "/torque", "must be finite");
+    require(std::isfinite(gear.torque), field::train_gear(i, "torque"), "must be finite");
     inertia[i] = gear.inertia;
     inverse_inertia[i] = 1. / gear.inertia;
     torques[i] = gear.torque;
@@ -77,7 +68,7 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
   for (const Suspension& suspension : train.suspensions)
     require(suspension.dof < n_gears && suspension.stiffness >= 0. && suspension.damping >= 0. &&
                 std::isfinite(suspension.stiffness + suspension.damping),
-            gear_label(train, std::min(suspension.dof, n_gears - 1)) + "/suspension",
+            field::train_gear(std::min(suspension.dof, n_gears - 1), "suspension"),
             "needs a degree of freedom of the train and a non-negative stiffness and damping");
   suspensions = train.suspensions;
 
@@ -112,7 +103,7 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
         }
     }
     for (unsigned int i = 0; i < n_gears; ++i)
-      require(known[i], gear_label(train, i), "is not connected to gear 1 by any mesh");
+      require(known[i], field::train_gear(i), "is not connected to gear 1 by any mesh");
   }
   rigid.resize(n_gears);
   for (unsigned int i = 0; i < n_gears; ++i)
@@ -130,53 +121,57 @@ TorsionalModel::TorsionalModel(const GearTrain& train)
 void TorsionalModel::validate_mesh(const GearTrain& train, unsigned int m) const
 {
   const Mesh& mesh = train.meshes[m];
-  const std::string label = mesh_label(train, m);
   if (mesh.terms.empty())
   {
-    require(!general, label + "/gears", "a general train needs the terms of every mesh");
+    require(!general, field::gear_mesh(m, "gears"),
+            "a general train needs the terms of every mesh");
     require(mesh.driver < n_gears && mesh.driven < n_gears && mesh.driver != mesh.driven,
-            label + "/gears", "driver and driven must be two different gears of the train");
-    require(mesh.driver_base_radius > 0., label + "/driver base radius", "must be positive");
-    require(mesh.driven_base_radius > 0., label + "/driven base radius", "must be positive");
-    require(mesh.driver_teeth > 0, label + "/driver teeth", "must be positive");
+            field::gear_mesh(m, "gears"),
+            "driver and driven must be two different gears of the train");
+    require(mesh.driver_base_radius > 0., field::gear_mesh(m, "driver_base_radius"),
+            "must be positive");
+    require(mesh.driven_base_radius > 0., field::gear_mesh(m, "driven_base_radius"),
+            "must be positive");
+    require(mesh.driver_teeth > 0, field::gear_mesh(m, "driver_teeth"), "must be positive");
   }
   else
   {
-    require(general && mesh.terms.size() <= 3, label + "/gears",
+    require(general && mesh.terms.size() <= 3, field::gear_mesh(m, "gears"),
             "a mesh joins at most two gears and a frame, in a general train");
     for (const MeshTerm& term : mesh.terms)
       require(term.dof < n_gears && std::isfinite(term.coefficient + term.friction_arm),
-              label + "/gears", "a term names no degree of freedom of the train");
-    require(mesh.position_ratio > 0. && std::isfinite(mesh.position_ratio), label + "/gears",
+              field::gear_mesh(m, "gears"), "a term names no degree of freedom of the train");
+    require(mesh.position_ratio > 0. && std::isfinite(mesh.position_ratio),
+            field::gear_mesh(m, "gears"),
             "the mesh does not roll (no relative speed in its frame)");
   }
-  require(mesh.contact_ratio >= 1. && mesh.contact_ratio < 4., label + "/contact ratio",
+  require(mesh.contact_ratio >= 1. && mesh.contact_ratio < 4., field::gear_mesh(m, "contact_ratio"),
           "must lie in [1, 4), got " + std::to_string(mesh.contact_ratio));
   require(mesh.approach_ratio >= 0. && mesh.approach_ratio <= mesh.contact_ratio,
-          label + "/approach ratio", "must lie in [0, contact ratio]");
-  require(mesh.damping >= 0. && std::isfinite(mesh.damping), label + "/damping",
+          field::gear_mesh(m, "approach_ratio"), "must lie in [0, contact ratio]");
+  require(mesh.damping >= 0. && std::isfinite(mesh.damping), field::gear_mesh(m, "damping"),
           "must not be negative, got " + std::to_string(mesh.damping) + " N·s/m");
   require(mesh.friction_coefficient >= 0. && mesh.friction_coefficient < 1.,
-          label + "/friction coefficient", "must lie in [0, 1)");
+          field::gear_mesh(m, "friction_coefficient"), "must lie in [0, 1)");
   require(mesh.driver_friction_arm >= 0. && mesh.driven_friction_arm >= 0.,
-          label + "/friction arms", "must not be negative");
+          field::gear_mesh(m, "friction_arms"), "must not be negative");
   // A default-constructed MeshStiffness is a zero constant: the caller forgot the source.
-  require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., label + "/stiffness",
+  require(mesh.stiffness.mean_stiffness(mesh.contact_ratio) > 0., field::gear_mesh(m, "stiffness"),
           "no positive mesh stiffness given");
   // A table with positions where no pair touches (a broken tooth, docs/faults.md): the linear
   // law F = k·δ + c·δ̇ would keep the damping force there and cannot separate; only the
   // nonlinear law (F = 0 while k = 0) represents it.
-  require(mesh.nonlinear || !mesh.stiffness.loses_contact(), label + "/stiffness",
+  require(mesh.nonlinear || !mesh.stiffness.loses_contact(), field::gear_mesh(m, "stiffness"),
           "the table has positions without contact (k = 0 from " +
               std::to_string(mesh.stiffness.first_lost_contact()) +
               " base pitches): the linear mesh law cannot separate the teeth there; use "
               "Simulation/mesh model = nonlinear");
   if (mesh.nonlinear)
   {
-    check_nonlinear_mesh(*mesh.nonlinear, label);
+    check_nonlinear_mesh(*mesh.nonlinear, m);
     require(!mesh.nonlinear->back_stiffness ||
                 mesh.nonlinear->back_stiffness->mean_stiffness(mesh.contact_ratio) > 0.,
-            label + "/back flank stiffness", "no positive back-flank stiffness given");
+            field::gear_mesh(m, "back_flank_stiffness"), "no positive back-flank stiffness given");
   }
 }
 

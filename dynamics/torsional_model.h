@@ -152,7 +152,8 @@ struct ModeShapes
 class TorsionalModel
 {
 public:
-  // Validates the train (InputError naming "Gear i/..." or "Mesh m/..." parameters).
+  // Validates the train (InputError naming its gears' and meshes' fields, "gear2.inertia",
+  // "mesh1.damping": dynamics/fields.h).
   explicit TorsionalModel(const GearTrain& train);
 
   unsigned int n_dofs() const { return n_gears; }

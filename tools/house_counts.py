@@ -77,7 +77,8 @@ FIELD_LISTS = {"gear": ["gear_members"], "train": ["train_fields"],
                "speed_sweep": ["speed_sweep_fields"], "train_mesh": ["train_mesh_fields"],
                "mesh": ["mesh_fields"], "deck": ["deck_fields"], "disc": ["disc_fields"],
                "correction": ["correction_fields"], "cycloid_scene": ["cycloid_scene_fields"],
-               "cylinders": ["cylinders_fields"], "contact": ["contact_fields"]}
+               "cylinders": ["cylinders_fields"], "contact": ["contact_fields"],
+               "train_gear": ["train_gear_fields"], "gear_mesh": ["gear_mesh_fields"]}
 FIELD_HEADERS = ["kinematics/fields.h", "dynamics/fields.h", "geometry/fields.h",
                  "contact/fields.h"]
 FIELD_CALL = re.compile(r'field::(\w+)\((?:[^,()]+, )?"(\w+)"\)')

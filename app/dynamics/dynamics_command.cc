@@ -13,6 +13,7 @@
 #include "app/core/command.h"
 #include "app/core/units.h"
 #include "app/dynamics/dynamics_fault_report.h"
+#include "app/dynamics/dynamics_field_names.h"
 #include "app/dynamics/dynamics_lateral.h"
 #include "app/dynamics/dynamics_lateral_train.h"
 #include "app/dynamics/dynamics_parameters.h"
@@ -615,19 +616,9 @@ void write_files(const DynamicsParameters& p, const TorsionalModel& model,
     plot_nonlinear(context, report, series, window, !sweep.points.empty());
 }
 
-void run(dealii::ParameterHandler& prm, CommandContext& context)
+// The torsional model of the train: its case, simulation, speed sweep and files.
+void run_torsional(const DynamicsParameters& p, CommandContext& context)
 {
-  if (lateral_train_selected(prm)) // issue 30, several stages: dynamics_lateral_train.cc
-  {
-    run_lateral_train_dynamics(prm, context);
-    return;
-  }
-  if (lateral_model_selected(prm)) // issue 30: dynamics_lateral.cc
-  {
-    run_lateral_dynamics(prm, context);
-    return;
-  }
-  const DynamicsParameters p = parse_dynamics_parameters(prm);
   const TorsionalModel model(p.train);
   context.chart_case = "torsional model, " + std::to_string(model.n_dofs()) + " DOF, " +
                        std::to_string(p.train.meshes.size()) + " meshes, input " +
@@ -651,6 +642,24 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
     sweep = run_speed_sweep(p, context);
   if (context.writes_files())
     write_files(p, model, result, sweep, context);
+}
+
+void run(dealii::ParameterHandler& prm, CommandContext& context)
+{
+  if (lateral_train_selected(prm)) // issue 30, several stages: dynamics_lateral_train.cc
+  {
+    run_lateral_train_dynamics(prm, context);
+    return;
+  }
+  if (lateral_model_selected(prm)) // issue 30: dynamics_lateral.cc
+  {
+    run_lateral_dynamics(prm, context);
+    return;
+  }
+  const DynamicsParameters p = parse_dynamics_parameters(prm);
+  // The library names the train's gears and meshes by number ("gear2.inertia"): the sections
+  // they came from are known here.
+  with_parameter_names(train_parameter_names(p.train), [&] { run_torsional(p, context); });
 }
 
 const CommandRegistration registration(Command{

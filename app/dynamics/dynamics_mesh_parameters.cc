@@ -2,6 +2,7 @@
 // ratio), friction, and the nonlinear law of issue 29 (backlash, transmission error).
 #include "app/core/parameter_patterns.h"
 #include "app/core/units.h"
+#include "app/dynamics/dynamics_field_names.h"
 #include "app/dynamics/dynamics_parameters_internal.h"
 #include "dynamics/split_path_case.h"
 #include "errors/errors.h"
@@ -242,7 +243,9 @@ dynamics::NonlinearMesh build_nonlinear_mesh(const NonlinearMeshEntries& entries
       {1. / std::max(1u, teeth), 0.5 * entries.pitch_deviation, 0.}, section + "/pitch deviation");
   for (const dynamics::ExcitationHarmonic& h : entries.harmonics)
     mesh.transmission_error.add_harmonic(h, harmonics);
-  dynamics::check_nonlinear_mesh(mesh, section);
+  // Checked as mesh 1 of its own, named by its section.
+  with_parameter_names(gear_mesh_parameter_names(0, section),
+                       [&] { dynamics::check_nonlinear_mesh(mesh, 0); });
   return mesh;
 }
 

@@ -434,24 +434,24 @@ TEST(NonlinearMesh, BadInput)
   law.backlash = -1e-6;
   try
   {
-    check_nonlinear_mesh(law, "Mesh 1");
+    check_nonlinear_mesh(law, 0);
     FAIL();
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Mesh 1/backlash");
+    EXPECT_EQ(e.parameter(), "mesh1.backlash");
   }
   // A TE varying by 2·6 µm with 10 µm of free play would jam the pair.
   law.backlash = 10e-6;
   law.transmission_error.add_harmonic({1., 6e-6, 0.}, "h");
   try
   {
-    check_nonlinear_mesh(law, "Mesh 1");
+    check_nonlinear_mesh(law, 0);
     FAIL();
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Mesh 1/transmission error");
+    EXPECT_EQ(e.parameter(), "mesh1.transmission_error");
   }
   // Order 10 at 40 steps per mesh period is 4 steps per period of the harmonic (< 8).
   NonlinearMesh fast;
@@ -469,7 +469,7 @@ TEST(NonlinearMesh, BadInput)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Mesh 1/transmission error harmonics");
+    EXPECT_EQ(e.parameter(), "mesh1.transmission_error_harmonics");
   }
   // HHT-α (linearised) cannot represent the switches.
   settings.integrator.type = IntegratorType::hht_alpha;

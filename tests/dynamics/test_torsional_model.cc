@@ -105,7 +105,7 @@ TEST(TorsionalModel, RejectsBadInput)
   }
   catch (const InputError& e)
   {
-    EXPECT_EQ(e.parameter(), "Gear 2/inertia");
+    EXPECT_EQ(e.parameter(), "gear2.inertia"); // app maps it to "Gear 2/inertia"
   }
   train = single_pair_train(4e8, -1.);
   EXPECT_THROW(TorsionalModel model(train), InputError);
