@@ -148,14 +148,26 @@ void expect_crowning_and_slope(const FlankCheck& crowned, const FlankCheck& slop
 // vertices deal.II reads sit within 0.05 µm of it: the vertices lie on gmsh's splines through
 // exact involute points (tooth_profile.h; the 2D chord error ≈ 0.01 µm, test_tooth_modification),
 // turned by φ = δ/r_b exactly (an involute turned about its axis is the parallel involute).
+// Crowning C_β = 20 µm on both flanks of one gear (the wheel when `wheel_crowned`), slope
+// f_Hβ = 10 µm on the loaded flank of the other, checked on the mesh deal.II reads.
+void check_crowning_and_slope(GearPairSceneSpec spec, bool wheel_crowned, const std::string& file)
+{
+  LeadModification& crowned =
+      (wheel_crowned ? spec.wheel_modifications : spec.pinion_modifications).lead;
+  LeadModification& sloped =
+      (wheel_crowned ? spec.pinion_modifications : spec.wheel_modifications).lead;
+  crowned.crowning = 20e-6;
+  sloped.slope = 10e-6;
+  sloped.flanks = ModifiedFlanks::loaded;
+  const SceneCheck check = check_scene(spec, file);
+  expect_crowning_and_slope(wheel_crowned ? check.wheel : check.pinion,
+                            wheel_crowned ? check.pinion : check.wheel,
+                            check.unloaded_transmission_error);
+}
+
 TEST(LeadModification, MicrometresOnTheMeshDealIIReads)
 {
-  GearPairSceneSpec spec = coarse_3d();
-  spec.pinion_modifications.lead.crowning = 20e-6;
-  spec.wheel_modifications.lead.slope = 10e-6;
-  spec.wheel_modifications.lead.flanks = ModifiedFlanks::loaded;
-  const SceneCheck check = check_scene(spec, "lead_crowning_3d.msh");
-  expect_crowning_and_slope(check.pinion, check.wheel, check.unloaded_transmission_error);
+  check_crowning_and_slope(coarse_3d(), false, "lead_crowning_3d.msh");
 }
 
 // The planet–ring pair of tests/stiffness/planet_ring.h (z = 24 in 69, m = 2.5 mm, ring addendum
@@ -182,12 +194,7 @@ GearPairSceneSpec planet_ring_3d()
 // 4.6875 µm (derivation above: the sum does not depend on which gear carries which shape).
 TEST(LeadModification, RingMicrometresOnTheMesh)
 {
-  GearPairSceneSpec spec = planet_ring_3d();
-  spec.wheel_modifications.lead.crowning = 20e-6;
-  spec.pinion_modifications.lead.slope = 10e-6;
-  spec.pinion_modifications.lead.flanks = ModifiedFlanks::loaded;
-  const SceneCheck check = check_scene(spec, "lead_ring_3d.msh");
-  expect_crowning_and_slope(check.wheel, check.pinion, check.unloaded_transmission_error);
+  check_crowning_and_slope(planet_ring_3d(), true, "lead_ring_3d.msh");
 }
 
 // Zero lead modifications (whatever the flank choice) write today's 3D mesh byte for byte.

@@ -64,6 +64,20 @@ double summed_normal_force(const GearMeshStiffnessResult& r)
     total += std::max(p.normal_force, 0.);
   return total;
 }
+
+// The face load of the coarse 3D pair (work files `name`) with `lead` on the pinion, printed
+// under `label`.
+FaceLoadSummary pinion_lead_face_load(const std::string& name,
+                                      const geometry::LeadModification& lead,
+                                      const std::string& label)
+{
+  GearMeshStiffnessSettings settings = coarse_3d(name);
+  settings.scene.pinion_modifications.lead = lead;
+  const GearMeshStiffnessResult r = solve<3>(settings);
+  const FaceLoadSummary s = summarise_face_load(r.face_load);
+  print(label, r, s);
+  return s;
+}
 } // namespace
 
 // 2D against 3D without lead modifications. Without friction the contact solve minimises the
@@ -111,11 +125,10 @@ TEST(LeadModification, TwoDAgainstThreeD)
 // 10.51 µm: the FE's shear coupling between the strips lets the middle carry more.
 TEST(LeadModification, CrowningPeaksMidWidth)
 {
-  GearMeshStiffnessSettings settings = coarse_3d("lead_crowning");
-  settings.scene.pinion_modifications.lead.crowning = 10e-6;
-  const GearMeshStiffnessResult r = solve<3>(settings);
-  const FaceLoadSummary s = summarise_face_load(r.face_load);
-  print("3D lead crowning 10 um", r, s);
+  geometry::LeadModification crowning;
+  crowning.crowning = 10e-6;
+  const FaceLoadSummary s =
+      pinion_lead_face_load("lead_crowning", crowning, "3D lead crowning 10 um");
   const double b = face_width();
   EXPECT_NEAR(s.peak_z, 0.5 * b, 1e-9);
   EXPECT_NEAR(s.factor, 1.849, 0.01);
@@ -131,11 +144,9 @@ TEST(LeadModification, CrowningPeaksMidWidth)
 // 1.4 N/mm at z = b (regression, ±0.01).
 TEST(LeadModification, SlopeMovesLoadToOneEnd)
 {
-  GearMeshStiffnessSettings settings = coarse_3d("lead_slope");
-  settings.scene.pinion_modifications.lead.slope = 10e-6;
-  const GearMeshStiffnessResult r = solve<3>(settings);
-  const FaceLoadSummary s = summarise_face_load(r.face_load);
-  print("3D lead slope +10 um", r, s);
+  geometry::LeadModification slope;
+  slope.slope = 10e-6;
+  const FaceLoadSummary s = pinion_lead_face_load("lead_slope", slope, "3D lead slope +10 um");
   EXPECT_NEAR(s.peak_z, 0., 1e-9);
   double moment = 0.;
   for (std::size_t i = 1; i < s.z.size(); ++i)

@@ -98,15 +98,23 @@ void compare_sweeps(const GearMeshStiffnessSettings& settings, const StiffnessSw
                                              : name + " T = " + std::to_string(settings.torques[t]),
                     t, k_range);
 }
+
+// The tests' sweeps differ only in their number of positions.
+template <int dim = 2>
+void compare_sweeps(const GearMeshStiffnessSettings& settings, unsigned int positions,
+                    const std::string& name, std::pair<double, double> k_range = {-3e-3, 3e-3})
+{
+  StiffnessSweepSpec spec;
+  spec.positions = positions;
+  compare_sweeps<dim>(settings, spec, name, k_range);
+}
 } // namespace
 
 TEST(SweepOnce, ExternalPairMatchesPerPosition)
 {
   GearMeshStiffnessSettings settings;
   settings.contact.friction_coefficient = 0.01;
-  StiffnessSweepSpec spec;
-  spec.positions = 32;
-  compare_sweeps(settings, spec, "external");
+  compare_sweeps(settings, 32, "external");
 }
 
 // The internal pair of tests/stiffness/planet_ring.h (planet z = 24 in ring z = 69, ring rim of
@@ -116,9 +124,7 @@ TEST(SweepOnce, InternalPairMatchesPerPosition)
   GearMeshStiffnessSettings settings = planet_ring_settings(3., "once_internal");
   settings.contact.friction_coefficient = 0.01;
   // 16 positions keep the test's time in bounds (the ring's mesh is the larger one).
-  StiffnessSweepSpec spec;
-  spec.positions = 16;
-  compare_sweeps(settings, spec, "internal");
+  compare_sweeps(settings, 16, "internal");
 }
 
 // Modified teeth (issue 41): the scene is meshed with the modified outlines at its own position
@@ -132,9 +138,7 @@ TEST(SweepOnce, LongTipReliefMatchesPerPosition)
   settings.contact.friction_coefficient = 0.01;
   settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(10e-6)};
   settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(10e-6)};
-  StiffnessSweepSpec spec;
-  spec.positions = 16;
-  compare_sweeps(settings, spec, "long tip relief");
+  compare_sweeps(settings, 16, "long tip relief");
 }
 
 // Every other profile modification kind at once, on the pinion only or the wheel only: a short
@@ -160,9 +164,7 @@ TEST(SweepOnce, ProfileModificationsMatchPerPosition)
   slope.amount = -4e-6;
   settings.scene.pinion_modifications.all_teeth = {tip, crowning};
   settings.scene.wheel_modifications.all_teeth = {root, slope};
-  StiffnessSweepSpec spec;
-  spec.positions = 12;
-  compare_sweeps(settings, spec, "profile modifications");
+  compare_sweeps(settings, 12, "profile modifications");
 }
 
 // The internal pair with a long tip relief on the planet only: a relief on one gear alone.
@@ -171,9 +173,7 @@ TEST(SweepOnce, InternalReliefMatchesPerPosition)
   GearMeshStiffnessSettings settings = planet_ring_settings(3., "once_internal_relief");
   settings.contact.friction_coefficient = 0.01;
   settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(8e-6)};
-  StiffnessSweepSpec spec;
-  spec.positions = 12;
-  compare_sweeps(settings, spec, "internal relief");
+  compare_sweeps(settings, 12, "internal relief");
 }
 
 // A torque list (issue 27's Harris map) on the rolling sweep: every position starts from the
@@ -183,9 +183,7 @@ TEST(SweepOnce, TorqueListMatchesPerPosition)
   GearMeshStiffnessSettings settings;
   settings.contact.friction_coefficient = 0.01;
   settings.torques = {20., 49.4, 80.};
-  StiffnessSweepSpec spec;
-  spec.positions = 6;
-  compare_sweeps(settings, spec, "torques");
+  compare_sweeps(settings, 6, "torques");
 }
 
 // 3D (issue 28): the pair of the first test as a Q1 solid of 8 layers over the 24 mm face, at 8
@@ -226,9 +224,7 @@ TEST(SweepOnce, ThreeDQ1MatchesPerPosition)
   // inside the contact zone: the Tresca bounds' fixed point took 32 iterations on the default
   // 3D mesh and more than the default 40 on this one (both sweeps), with no node changing state.
   settings.contact.max_iterations = 150;
-  StiffnessSweepSpec spec;
-  spec.positions = 8;
-  compare_sweeps<3>(settings, spec, "3D Q1", {-5e-3, 0.});
+  compare_sweeps<3>(settings, 8, "3D Q1", {-5e-3, 0.});
 }
 
 // The 3D pair's k difference at its contact size (ThreeDQ1MatchesPerPosition: −0.20 to −0.47 %)
@@ -244,7 +240,5 @@ TEST(SweepOnce, Q1RefinedMatchesPerPosition)
   settings.scene.mesh.contact_size = 6e-5; // m, the 3D test's (the other sizes the default's)
   settings.scene.mesh = scaled_mesh(settings.scene.mesh, 0.5);
   settings.contact.max_iterations = 150;
-  StiffnessSweepSpec spec;
-  spec.positions = 8;
-  compare_sweeps(settings, spec, "2D Q1 refined");
+  compare_sweeps(settings, 8, "2D Q1 refined");
 }
