@@ -17,7 +17,7 @@ inline std::string contact(const std::string& member)
 }
 inline const std::vector<std::string>& contact_fields()
 {
-  static const std::vector<std::string> members = {"iteration_solves"};
+  static const std::vector<std::string> members = {"iteration_solves", "overlap_tolerance"};
   return members;
 }
 } // namespace gearstiff::contact::field

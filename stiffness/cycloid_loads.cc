@@ -1,5 +1,6 @@
 #include "stiffness/cycloid_loads.h"
 
+#include "contact/fields.h"
 #include "errors/errors.h"
 #include "fem/mesh.h"
 #include "fem/stress.h"
@@ -279,7 +280,7 @@ fem::ElasticityParameters default_cycloid_elasticity()
 void check_cycloid_load_settings(const CycloidLoadSettings& s)
 {
   if (!(std::abs(s.output_torque) > 0.) || !std::isfinite(s.output_torque))
-    throw InputError(cycloid_parameter::torque,
+    throw InputError(field::cycloid_loads("output_torque"),
                      "must not be zero: without a torque nothing is loaded (M_c per disc, N·m)");
   if (s.scene.output_pins == 0)
     throw InputError(geometry::field::cycloid_scene("output_pins"),
@@ -289,15 +290,15 @@ void check_cycloid_load_settings(const CycloidLoadSettings& s)
   // Material constants before any solver: E = 0 or ν = 0.5 reached MUMPS as a singular matrix
   // ("INFOG(1) = -10", exit 3), a failure of the input, not of the method.
   for (const auto& [material, name] :
-       {std::pair{&s.material, cycloid_parameter::young_modulus},
-        std::pair{&s.roller_material, cycloid_parameter::roller_young_modulus}})
+       {std::pair{&s.material, field::cycloid_loads("young_modulus")},
+        std::pair{&s.roller_material, field::cycloid_loads("roller_young_modulus")}})
   {
     if (!(material->youngs_modulus > 0.) || !std::isfinite(material->youngs_modulus))
       throw InputError(name, "must be positive and finite (GPa): E = 0 leaves the bodies "
                              "without stiffness");
     const double nu = material->poisson_ratio;
     if (!(nu >= 0. && nu < 0.5))
-      throw InputError(cycloid_parameter::poisson_ratio,
+      throw InputError(field::cycloid_loads("poisson_ratio"),
                        "must lie in [0, 0.5) (-): at 0.5 the material is incompressible, "
                        "λ = Eν/((1+ν)(1−2ν)) is infinite and the displacement model has no "
                        "solution");
@@ -429,7 +430,8 @@ void CycloidLoads<dim>::solve()
     // The engine names the pair ("roller 3") of an initial overlap; what the user can change is
     // the tolerance (or the mesh: the chords of the meshed outlines overlap the other body by
     // h²/8ρ).
-    throw InputError(cycloid_parameter::overlap_tolerance, e.parameter() + ": " + e.reason());
+    throw InputError(contact::field::contact("overlap_tolerance"),
+                     e.parameter() + ": " + e.reason());
   }
   solve_set_up_contact_problem(*problem, result);
   result.factorization_time = problem->results().assembly_time;

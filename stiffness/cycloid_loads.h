@@ -40,17 +40,23 @@
 
 namespace gearstiff::stiffness
 {
-// The fields of CycloidLoadSettings an InputError names ("<struct>.<member>"); app/ maps them to
-// the parameters the user writes (app/cycloid/cycloid_field_names.cc).
-namespace cycloid_parameter
+// The fields of CycloidLoadSettings an InputError names, "cycloid_loads.<member>" (an initial
+// overlap names contact::field::contact("overlap_tolerance"), contact/fields.h); app/ maps them
+// to the parameters the user writes (app/cycloid/cycloid_field_names.cc).
+namespace field
 {
-inline const std::string torque = "cycloid_loads.output_torque";
-inline const std::string contact_arc_ratio = "cycloid_loads.contact_arc_ratio";
-inline const std::string young_modulus = "cycloid_loads.young_modulus";
-inline const std::string roller_young_modulus = "cycloid_loads.roller_young_modulus";
-inline const std::string poisson_ratio = "cycloid_loads.poisson_ratio";
-inline const std::string overlap_tolerance = "contact.overlap_tolerance";
-} // namespace cycloid_parameter
+inline std::string cycloid_loads(const std::string& member)
+{
+  return "cycloid_loads." + member;
+}
+inline const std::vector<std::string>& cycloid_loads_fields()
+{
+  static const std::vector<std::string> members = {"output_torque", "contact_arc_ratio",
+                                                   "young_modulus", "roller_young_modulus",
+                                                   "poisson_ratio"};
+  return members;
+}
+} // namespace field
 
 // The §4 drive with output pins in their holes and explicit mesh sizes.
 geometry::CycloidSceneSpec default_cycloid_load_scene();

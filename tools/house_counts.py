@@ -78,9 +78,10 @@ FIELD_LISTS = {"gear": ["gear_members"], "train": ["train_fields"],
                "mesh": ["mesh_fields"], "deck": ["deck_fields"], "disc": ["disc_fields"],
                "correction": ["correction_fields"], "cycloid_scene": ["cycloid_scene_fields"],
                "cylinders": ["cylinders_fields"], "contact": ["contact_fields"],
-               "train_gear": ["train_gear_fields"], "gear_mesh": ["gear_mesh_fields"]}
+               "train_gear": ["train_gear_fields"], "gear_mesh": ["gear_mesh_fields"],
+               "cycloid_loads": ["cycloid_loads_fields"]}
 FIELD_HEADERS = ["kinematics/fields.h", "dynamics/fields.h", "geometry/fields.h",
-                 "contact/fields.h"]
+                 "contact/fields.h", "stiffness/cycloid_loads.h"]
 FIELD_CALL = re.compile(r'field::(\w+)\((?:[^,()]+, )?"(\w+)"\)')
 FUNCTION_LIMIT = 80  # lines
 FILE_LIMIT = 900  # lines

@@ -1,8 +1,8 @@
 // The cycloid fields as the parameters the user writes: the cycloid scene ("Cycloid
 // scene/...", geometry/fields.h), the profile correction of `gearstiff cycloid` ("Cycloid
 // correction/..."; cycloid-loads maps the same fields to its own entries at the call) and the
-// load analysis ("Cycloid loads/...", "Contact/Overlap tolerance": stiffness::cycloid_parameter).
-// app/core/field_names.h says why.
+// load analysis ("Cycloid loads/...", stiffness::field::cycloid_loads; "Contact/Overlap tolerance"
+// is the contact table's, app/scenes/fe_contact_parameters.cc). app/core/field_names.h says why.
 #include "app/core/field_names.h"
 #include "geometry/fields.h"
 #include "stiffness/cycloid_loads.h"
@@ -15,13 +15,11 @@ namespace field = geometry::field;
 
 ParameterNames cycloid_loads_field_names()
 {
-  namespace name = stiffness::cycloid_parameter;
-  return {{name::torque, "Cycloid loads/output torque"},
-          {name::contact_arc_ratio, "Cycloid loads/contact arc ratio"},
-          {name::young_modulus, "Cycloid loads/Young's modulus"},
-          {name::roller_young_modulus, "Cycloid loads/roller Young's modulus"},
-          {name::poisson_ratio, "Cycloid loads/Poisson's ratio"},
-          {name::overlap_tolerance, "Contact/Overlap tolerance"}};
+  return field_family("Cycloid loads", stiffness::field::cycloid_loads_fields(),
+                      stiffness::field::cycloid_loads,
+                      {{"young_modulus", "Young's modulus"},
+                       {"roller_young_modulus", "roller Young's modulus"},
+                       {"poisson_ratio", "Poisson's ratio"}});
 }
 
 const FieldNamesRegistration scene(

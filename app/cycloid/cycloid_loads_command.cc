@@ -57,7 +57,7 @@ std::vector<stiffness::CycloidLoadSettings> profile_settings(const CycloidLoadsP
     // The correction's own names for its inputs are those of `gearstiff cycloid`.
     const ParameterNames names{
         {geometry::field::correction("contact_arc_ratios"),
-         stiffness::cycloid_parameter::contact_arc_ratio},
+         stiffness::field::cycloid_loads("contact_arc_ratio")},
         {geometry::field::correction("clearance_limit"), "Cycloid loads/clearance limit"}};
     const geometry::CycloidCorrection c =
         with_parameter_names(names,

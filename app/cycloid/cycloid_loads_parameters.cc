@@ -84,10 +84,10 @@ CycloidLoadsParameters parse_cycloid_loads_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 
   if (!(s.output_torque > 0.))
-    throw InputError(stiffness::cycloid_parameter::torque,
+    throw InputError(stiffness::field::cycloid_loads("output_torque"),
                      "must be positive (M_c per disc, N·m; the torque ramp covers both signs)");
   if (p.corrected && !(p.contact_arc_ratio > 0. && p.contact_arc_ratio < 0.5))
-    throw InputError(stiffness::cycloid_parameter::contact_arc_ratio,
+    throw InputError(stiffness::field::cycloid_loads("contact_arc_ratio"),
                      "epsilon must lie in (0, 0.5): the contact arc is a fraction of half a lobe");
   if (s.scene.output_pins == 0)
     throw InputError("Cycloid scene/output pins", "the output torque needs at least one pin");

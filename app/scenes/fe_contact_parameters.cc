@@ -100,8 +100,9 @@ contact::ContactParameters parse_contact_parameters(ParameterHandler& prm)
 // The contact library's fields (contact/fields.h) as the parameters of "Contact".
 ParameterNames contact_field_names()
 {
-  return field_family("Contact", contact::field::contact_fields(), contact::field::contact,
-                      {{"iteration_solves", "Iteration solves"}});
+  return field_family(
+      "Contact", contact::field::contact_fields(), contact::field::contact,
+      {{"iteration_solves", "Iteration solves"}, {"overlap_tolerance", "Overlap tolerance"}});
 }
 
 const FieldNamesRegistration contact_fields("contact", contact_field_names);
