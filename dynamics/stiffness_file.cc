@@ -182,8 +182,7 @@ MeshStiffness sweep_table(const std::vector<double>& positions,
   {
     const double x = positions[i] - span * std::floor(positions[i] / span);
     nodes.emplace_back(x < span ? x : 0., stiffness[i] * 1e6, at(errors.loaded, i),
-                       at(errors.unloaded, i),
-                       i < lost_contact.size() && lost_contact[i] != 0.);
+                       at(errors.unloaded, i), i < lost_contact.size() && lost_contact[i] != 0.);
   }
   std::sort(nodes.begin(), nodes.end());
   std::vector<double> x, k, s, e;
@@ -212,8 +211,8 @@ MeshStiffness sweep_table(const std::vector<double>& positions,
   MeshStiffness table = MeshStiffness::table(x, k, parameter, period,
                                              lost_contact.empty() ? std::vector<bool>() : lost);
   if (!errors.loaded.empty())
-    split = split_loaded_transmission_error(x, k, s, errors.unloaded.empty() ? std::vector<double>() : e,
-                                            parameter);
+    split = split_loaded_transmission_error(
+        x, k, s, errors.unloaded.empty() ? std::vector<double>() : e, parameter);
   return table;
 }
 
@@ -268,9 +267,9 @@ StiffnessFile read_stiffness_file(const std::string& path, const std::string& pa
     };
     // The unloaded TE of the modifications travels with the loaded one: k = W/(s − e).
     const std::vector<double> loaded_error = optional_column("transmission_error");
-    const std::vector<double> unloaded_error =
-        loaded_error.empty() ? std::vector<double>()
-                             : optional_column("unloaded_transmission_error");
+    const std::vector<double> unloaded_error = loaded_error.empty()
+                                                   ? std::vector<double>()
+                                                   : optional_column("unloaded_transmission_error");
     file.stiffness =
         sweep_table(positions, column(tree, "stiffness_sweep", "stiffness", "N/um", parameter),
                     {loaded_error, unloaded_error}, parameter, file.transmission_error);

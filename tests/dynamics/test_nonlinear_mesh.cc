@@ -118,15 +118,14 @@ TEST(NonlinearMesh, SplitOfTheFeTableReproducesTheLoadedTe)
   // With the table's unloaded TE (a modified pair: `gearstiff stiffness` writes k = W/(s − e)),
   // e is the table's and W = k·(s − e): s = 12 and 10 µm, e = 2 and 0 µm, k = 400 N/µm → W =
   // 4000 N on both rows (exact), e(0) = 2 µm; the same rows without e are two load cases.
-  const LoadedTransmissionErrorSplit modified = split_loaded_transmission_error(
-      {0., 0.5}, {400e6, 400e6}, {12e-6, 10e-6}, {2e-6, 0.}, "p");
+  const LoadedTransmissionErrorSplit modified =
+      split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {12e-6, 10e-6}, {2e-6, 0.}, "p");
   EXPECT_NEAR(modified.load, 4000., 1e-9);
   EXPECT_NEAR(modified.unloaded.value(0.), 2e-6, 1e-15);
   EXPECT_NEAR(modified.unloaded.value(0.5), 0., 1e-15);
   EXPECT_NEAR(modified.largest_unloaded_error, 2e-6, 1e-15);
-  EXPECT_THROW(
-      split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {12e-6, 10e-6}, {}, "p"),
-      InputError);
+  EXPECT_THROW(split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {12e-6, 10e-6}, {}, "p"),
+               InputError);
 }
 
 TEST(NonlinearMesh, QuasiStaticLimitReproducesTheFeLoadedTe)
