@@ -222,36 +222,42 @@ void check_nonlinear_mesh(const NonlinearMesh& mesh, unsigned int m)
 
 LoadedTransmissionErrorSplit split_loaded_transmission_error(
     const std::vector<double>& positions, const std::vector<double>& stiffness,
-    const std::vector<double>& loaded_error, const std::string& parameter)
+    const std::vector<double>& loaded_error, const std::vector<double>& unloaded_error,
+    const std::string& parameter)
 {
   const std::size_t n = positions.size();
-  if (n == 0 || stiffness.size() != n || loaded_error.size() != n)
+  const bool given = !unloaded_error.empty();
+  if (n == 0 || stiffness.size() != n || loaded_error.size() != n ||
+      (given && unloaded_error.size() != n))
     throw InputError(parameter, "the transmission-error table needs one stiffness and one loaded "
                                 "TE per position");
   std::vector<double> load(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (!(stiffness[i] > 0.) || !(loaded_error[i] > 0.))
-      throw InputError(parameter, "loaded TE and stiffness must be positive (row " +
+    const double elastic = loaded_error[i] - (given ? unloaded_error[i] : 0.);
+    if (!(stiffness[i] > 0.) || !(elastic > 0.))
+      throw InputError(parameter, std::string(given ? "loaded minus unloaded TE" : "loaded TE") +
+                                      " and stiffness must be positive (row " +
                                       std::to_string(i + 1) + ")");
-    load[i] = stiffness[i] * loaded_error[i];
+    load[i] = stiffness[i] * elastic;
   }
   LoadedTransmissionErrorSplit split;
   split.load = std::accumulate(load.begin(), load.end(), 0.) / n;
   for (std::size_t i = 0; i < n; ++i)
     if (std::abs(load[i] - split.load) > 1e-3 * split.load)
-      throw InputError(parameter, "k·s differs between rows (" + format(load[i]) + " N against " +
+      throw InputError(parameter, std::string(given ? "k·(s − e)" : "k·s") +
+                                      " differs between rows (" + format(load[i]) + " N against " +
                                       format(split.load) + " N): the table is not one load case");
   std::vector<double> e(n);
   double mean_s = 0.;
   for (std::size_t i = 0; i < n; ++i)
   {
-    e[i] = loaded_error[i] - split.load / stiffness[i];
+    e[i] = given ? unloaded_error[i] : loaded_error[i] - split.load / stiffness[i];
     split.largest_unloaded_error = std::max(split.largest_unloaded_error, std::abs(e[i]));
     mean_s += loaded_error[i];
   }
   mean_s /= n;
-  // k = W/s by definition (gearstiff stiffness): e is round-off then.
+  // Unmodified teeth: k = W/s (gearstiff stiffness), e is round-off then.
   if (split.largest_unloaded_error <= 1e-9 * mean_s)
     std::fill(e.begin(), e.end(), 0.);
   else

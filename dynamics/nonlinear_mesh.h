@@ -115,9 +115,11 @@ inline double backlash_function(double approach, double backlash)
 void check_nonlinear_mesh(const NonlinearMesh& mesh, unsigned int m);
 
 // The split of an FE loaded STE table into stiffness and unloaded TE: k(x) is the table's
-// stiffness, W the load of the FE case (W = k·s at every row, checked to 1e-3), and
-// e(x) = s(x) − W/k(x). `gearstiff stiffness` defines k = W/s, so e vanishes there to round-off
-// (set exactly zero below 1e-9·s); other tables (e.g. a tangent stiffness) give a non-zero e.
+// stiffness and W the load of the FE case. With the table's unloaded TE e(x) (`gearstiff
+// stiffness` writes it: the modifications' geometric TE, and k = W/(s − e)), W = k·(s − e) at
+// every row (checked to 1e-3) and e is the table's; without it W = k·s is checked and
+// e(x) = s(x) − W/k(x) (a table with a tangent stiffness gives a non-zero e). An e below
+// 1e-9·s everywhere is round-off and set exactly zero.
 struct LoadedTransmissionErrorSplit
 {
   double load = 0.;                   // [N] W along the line of action
@@ -127,5 +129,6 @@ struct LoadedTransmissionErrorSplit
 };
 LoadedTransmissionErrorSplit split_loaded_transmission_error(
     const std::vector<double>& positions, const std::vector<double>& stiffness,
-    const std::vector<double>& loaded_error, const std::string& parameter);
+    const std::vector<double>& loaded_error, const std::vector<double>& unloaded_error,
+    const std::string& parameter);
 } // namespace gearstiff::dynamics

@@ -157,34 +157,43 @@ bool has_column(const ptree& tree, const std::string& table, const std::string& 
   return false;
 }
 
+// The loaded TE s [um] of a sweep and its unloaded TE e [um] (each may be empty).
+struct SweepErrors
+{
+  std::vector<double> loaded;
+  std::vector<double> unloaded;
+};
+
 // The sweep's k(x) with positions modulo the period (one base pitch, or P of a revolution
-// table), checked to cover the cycle; with the loaded TE [um] (may be empty) also its split into
+// table), checked to cover the cycle; with the loaded TE (may be empty) also its split into
 // k and e (nonlinear_mesh.h). `lost_contact` (empty: none) flags rows without contact (k = 0).
 MeshStiffness sweep_table(const std::vector<double>& positions,
-                          const std::vector<double>& stiffness,
-                          const std::vector<double>& loaded_error, const std::string& parameter,
+                          const std::vector<double>& stiffness, const SweepErrors& errors,
+                          const std::string& parameter,
                           std::optional<LoadedTransmissionErrorSplit>& split,
                           unsigned int period = 1, const std::vector<double>& lost_contact = {})
 {
   const double span = period;
-  // x [base pitches], k [N/m], s [m], no contact
-  std::vector<std::tuple<double, double, double, bool>> nodes;
+  const auto at = [](const std::vector<double>& v, std::size_t i)
+  { return i < v.size() ? v[i] * 1e-6 : 0.; };
+  // x [base pitches], k [N/m], s [m], e [m], no contact
+  std::vector<std::tuple<double, double, double, double, bool>> nodes;
   for (std::size_t i = 0; i < positions.size(); ++i)
   {
     const double x = positions[i] - span * std::floor(positions[i] / span);
-    nodes.emplace_back(x < span ? x : 0., stiffness[i] * 1e6,
-                       i < loaded_error.size() ? loaded_error[i] * 1e-6 : 0.,
-                       i < lost_contact.size() && lost_contact[i] != 0.);
+    nodes.emplace_back(x < span ? x : 0., stiffness[i] * 1e6, at(errors.loaded, i),
+                       at(errors.unloaded, i), i < lost_contact.size() && lost_contact[i] != 0.);
   }
   std::sort(nodes.begin(), nodes.end());
-  std::vector<double> x, k, s;
+  std::vector<double> x, k, s, e;
   std::vector<bool> lost;
-  for (const auto& [xi, ki, si, li] : nodes)
+  for (const auto& [xi, ki, si, ei, li] : nodes)
     if (x.empty() || xi - x.back() > 1e-9)
     {
       x.push_back(xi);
       k.push_back(ki);
       s.push_back(si);
+      e.push_back(ei);
       lost.push_back(li);
     }
   double widest = x.empty() ? span : span - x.back() + x.front();
@@ -201,8 +210,9 @@ MeshStiffness sweep_table(const std::vector<double>& positions,
   // The stiffness values are checked (range of real gear meshes) before the TE split uses them.
   MeshStiffness table = MeshStiffness::table(x, k, parameter, period,
                                              lost_contact.empty() ? std::vector<bool>() : lost);
-  if (!loaded_error.empty())
-    split = split_loaded_transmission_error(x, k, s, parameter);
+  if (!errors.loaded.empty())
+    split = split_loaded_transmission_error(
+        x, k, s, errors.unloaded.empty() ? std::vector<double>() : e, parameter);
   return table;
 }
 
@@ -249,13 +259,20 @@ StiffnessFile read_stiffness_file(const std::string& path, const std::string& pa
       column(tree, "stiffness_sweep", "mesh_position", "-", parameter);
   if (!positions.empty())
   {
-    const std::vector<double> loaded_error =
-        has_column(tree, "stiffness_sweep", "transmission_error", parameter)
-            ? column(tree, "stiffness_sweep", "transmission_error", "um", parameter)
-            : std::vector<double>();
+    const auto optional_column = [&](const std::string& name)
+    {
+      return has_column(tree, "stiffness_sweep", name, parameter)
+                 ? column(tree, "stiffness_sweep", name, "um", parameter)
+                 : std::vector<double>();
+    };
+    // The unloaded TE of the modifications travels with the loaded one: k = W/(s − e).
+    const std::vector<double> loaded_error = optional_column("transmission_error");
+    const std::vector<double> unloaded_error = loaded_error.empty()
+                                                   ? std::vector<double>()
+                                                   : optional_column("unloaded_transmission_error");
     file.stiffness =
         sweep_table(positions, column(tree, "stiffness_sweep", "stiffness", "N/um", parameter),
-                    loaded_error, parameter, file.transmission_error);
+                    {loaded_error, unloaded_error}, parameter, file.transmission_error);
     return file;
   }
   const std::vector<double> revolution =

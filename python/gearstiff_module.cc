@@ -233,6 +233,19 @@ void collect_overrides(const py::dict& given, const py::dict& declared, const st
                            std::string(py::repr(item.first)));
     const std::string name = py::str(item.first);
     const std::string path = prefix + name;
+    // "Gear pair/Pinion/teeth" as `--set` spells it: the same parameter as the nested form.
+    const std::size_t slash = name.find('/');
+    if (!declared.contains(name) && slash != std::string::npos && slash > 0 &&
+        declared.contains(name.substr(0, slash)) &&
+        !is_entry(declared[py::str(name.substr(0, slash))]))
+    {
+      py::dict rest;
+      rest[py::str(name.substr(slash + 1))] = item.second;
+      collect_overrides(rest,
+                        py::reinterpret_borrow<py::dict>(declared[py::str(name.substr(0, slash))]),
+                        prefix + name.substr(0, slash + 1), overrides);
+      continue;
+    }
     if (!declared.contains(name))
       throw InputError(path, std::string("unknown ") +
                                  (prefix.empty() ? "section" : "parameter or subsection") + "; " +
@@ -561,7 +574,8 @@ void define_commands(py::module_& m)
         py::arg("params") = py::none(), py::arg("output_directory") = py::none(),
         py::arg("verbose") = false,
         (command.summary + ".\n\n" + command.description +
-         "\n\nparams: nested dict in the .prm's sections and names, or a .prm/.json path "
+         "\n\nparams: nested dict in the .prm's sections and names (or 'Section/key' paths as "
+         "--set spells them), or a .prm/.json path "
          "(None: the default case); output_directory: write the result files there as `-o` "
          "does; verbose: print progress. Returns the report as a dict (see help(gearstiff)).")
             .c_str());
@@ -600,7 +614,8 @@ PYBIND11_MODULE(gearstiff, m)
             "), each\n"
             "    f(params=None, output_directory=None, verbose=False) -> dict\n"
             "params: a nested dict in the .prm's sections and names "
-            "({'Gear pair': {'Pinion': {'teeth': 21}}}), or the path of a .prm/.json file; "
+            "({'Gear pair': {'Pinion': {'teeth': 21}}}; a key may also be a path as `--set` "
+            "spells it, {'Gear pair/Pinion/teeth': 21}), or the path of a .prm/.json file; "
             "None runs the built-in default case.\n"
             "The dict returned: 'values' {key: {'value', 'unit', 'description'[, 'published', "
             "'relative_deviation', 'source']}}, 'tables' {name: {'columns', 'units', 'data': "

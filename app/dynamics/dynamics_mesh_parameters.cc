@@ -251,7 +251,9 @@ dynamics::NonlinearMesh build_nonlinear_mesh(const NonlinearMeshEntries& entries
 
 // A "Mesh n" pair is known by its driver's teeth and base radii: the file's pinion must be
 // the driver (teeth equal, base radius within 1 %: the split path rounds r_b1 to 24.7 mm) and
-// its wheel z1·r_b2/r_b1 teeth.
+// its wheel z1·r_b2/r_b1 teeth. An internal wheel's file counts its teeth negative; a Mesh n
+// does not know the sign (the torsional model along the line of action is the same for both:
+// the ring turns with the pinion), so the file's wheel is compared by its tooth count.
 void check_numbered_mesh_pair(const dynamics::StiffnessFile& file, const dynamics::Mesh& mesh,
                               const std::string& parameter)
 {
@@ -259,7 +261,7 @@ void check_numbered_mesh_pair(const dynamics::StiffnessFile& file, const dynamic
   const long wheel_teeth =
       std::lround(mesh.driver_teeth * mesh.driven_base_radius / mesh.driver_base_radius);
   const bool same = file.pair.pinion_teeth == static_cast<int>(mesh.driver_teeth) &&
-                    file.pair.wheel_teeth == wheel_teeth &&
+                    std::abs(file.pair.wheel_teeth) == wheel_teeth &&
                     std::abs(pinion_base_radius / mesh.driver_base_radius - 1.) < 0.01;
   if (!same)
     throw InputError(parameter, "the table belongs to another pair: file " + file.pair.describe() +

@@ -270,6 +270,10 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
                                     const stiffness::StiffnessSweepResult& sweep)
 {
   const kinematics::GearPairSpec& spec = p.settings.scene.pair;
+  // The torque its k(x) was solved at: with a torque list the sweep's positions are the first
+  // torque's, so the train runs at that torque, not at `Gear pair scene/pinion torque` (a tip
+  // relief's k(x) depends on the load: the dynamics must see the k of the torque it applies).
+  const double torque = sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
   // Steel blanks of the pair's face widths between bore and reference circle (a ring between
   // its reference circle and its outer diameter): the inertias a user would start from.
   constexpr double steel_density = 7850.; // kg/m³
@@ -310,8 +314,12 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
       << format_number(pair.centre_distance / mm, 6) << " mm, x "
       << format_number(spec.pinion.profile_shift, 4) << "/"
       << format_number(spec.wheel.profile_shift, 4) << ", eps_alpha "
-      << format_number(pair.transverse_contact_ratio, 6) << ", T1 "
-      << format_number(p.settings.pinion_torque, 6) << " N·m: two gears, one mesh.\n"
+      << format_number(pair.transverse_contact_ratio, 6) << ", T1 " << format_number(torque, 6)
+      << " N·m: two gears, one mesh.\n"
+      << (sweep.torques.size() > 1
+              ? "# k(x) and T1 are the first torque's of Stiffness/torques (te_sweep.csv holds "
+                "every torque's k per position).\n"
+              : "")
       << "# Inertias: steel blanks (7850 kg/m³) between bore and reference circle; damping: "
          "zeta = 0.05 of the mean k; friction: the FE's mu, arms r_b·tan(alpha_wt).\n"
       << "# Input speed: " << speed_ratio
@@ -321,7 +329,7 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
       << format_number(speed_ratio * resonance_rpm, 8)
       << "\n  set published reference = false\nend\n"
       << "subsection Gear 1\n  set inertia = " << format_number(j1, 8)
-      << "\n  set torque = " << format_number(p.settings.pinion_torque, 10) << "\nend\n"
+      << "\n  set torque = " << format_number(torque, 10) << "\nend\n"
       << "subsection Gear 2\n  set inertia = " << format_number(j2, 8)
       << "\n  set torque = balance\nend\n"
       << "subsection Mesh 1\n  set driver gear = 1\n  set driven gear = 2\n"

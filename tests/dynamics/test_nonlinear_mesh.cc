@@ -108,12 +108,24 @@ TEST(NonlinearMesh, SplitOfTheFeTableReproducesTheLoadedTe)
   // A table with k ≠ W/s gives e = s − W/k: s = 10 µm everywhere, k = 400 and 500 N/µm,
   // W = mean(k·s) = 4500 N — more than 1e-3 apart, so refused as two load cases; with
   // k·s equal but s offset by 1 µm on one row neither.
-  EXPECT_THROW(split_loaded_transmission_error({0., 0.5}, {400e6, 500e6}, {10e-6, 10e-6}, "p"),
+  EXPECT_THROW(split_loaded_transmission_error({0., 0.5}, {400e6, 500e6}, {10e-6, 10e-6}, {}, "p"),
                InputError);
   const LoadedTransmissionErrorSplit split =
-      split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {10e-6, 10e-6}, "p");
+      split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {10e-6, 10e-6}, {}, "p");
   EXPECT_NEAR(split.load, 4000., 1e-9);
   EXPECT_TRUE(split.unloaded.is_zero());
+
+  // With the table's unloaded TE (a modified pair: `gearstiff stiffness` writes k = W/(s − e)),
+  // e is the table's and W = k·(s − e): s = 12 and 10 µm, e = 2 and 0 µm, k = 400 N/µm → W =
+  // 4000 N on both rows (exact), e(0) = 2 µm; the same rows without e are two load cases.
+  const LoadedTransmissionErrorSplit modified =
+      split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {12e-6, 10e-6}, {2e-6, 0.}, "p");
+  EXPECT_NEAR(modified.load, 4000., 1e-9);
+  EXPECT_NEAR(modified.unloaded.value(0.), 2e-6, 1e-15);
+  EXPECT_NEAR(modified.unloaded.value(0.5), 0., 1e-15);
+  EXPECT_NEAR(modified.largest_unloaded_error, 2e-6, 1e-15);
+  EXPECT_THROW(split_loaded_transmission_error({0., 0.5}, {400e6, 400e6}, {12e-6, 10e-6}, {}, "p"),
+               InputError);
 }
 
 TEST(NonlinearMesh, QuasiStaticLimitReproducesTheFeLoadedTe)

@@ -136,6 +136,11 @@ def test_dict_equals_set_and_prm_file(tmp_path):
                            MEASURED_TIMES["gear-pair"])
     # (The parameters.json the command line writes is not read back by deal.II 9.4 when a
     # name holds '_' (ISO 6336/C_M): the dict in result["parameters"] is the way back.)
+    # The keys as `--set` spells them (a new user's first try, session 19), flat or mixed.
+    flat = {"Gear pair/Pinion/face width": 30, "Gear pair/Pinion/profile shift": 0.25,
+            "Gear pair": {"Wheel/profile shift": -0.25}}
+    assert_same_as_cli(gearstiff.gear_pair(flat), cli_json("gear-pair", *sets),
+                       MEASURED_TIMES["gear-pair"])
 
 
 def test_types_of_values():
@@ -335,6 +340,8 @@ def test_missing_parameter_file_same_message(tmp_path):
     ({"Gear pair": {"Pinion": {"teeth": None}}}, "Gear pair/Pinion/teeth", "got None"),
     ({"Gear pair": {"Pinion": {"teeth": [[21]]}}}, "Gear pair/Pinion/teeth", "nested list"),
     ({"Gear pair": {"Pinion": {1: 21}}}, "Gear pair/Pinion", "names must be strings"),
+    ({"Gear pair/Pinion/teth": 21}, "Gear pair/Pinion/teth", "did you mean 'teeth'?"),
+    ({"Gear pair/Pinion": 21}, "Gear pair/Pinion", "is a subsection"),
 ])
 def test_bad_names_and_types(params, parameter, hint):
     with pytest.raises(gearstiff.InputError) as raised:
