@@ -14,12 +14,19 @@ k = T1/(r_b1²·Δφ) with Δφ the rotation of the deck's ROT NODE (tools/calcu
 
 usage: calculix_helical.py GEARSTIFF WORKDIR
 
-NOT YET REGISTERED in tests/verification/CMakeLists.txt (no row in docs/accuracy.md): measured
-2026-12-02 with this script, single position −0.026 % (100.974 against ccx 101.000 N/µm, 1 loaded
-pair), double position −2.02 % (141.544 against 144.463 N/µm, 2 loaded pairs; ccx at K = 10 and
-100 E/h_c: 143.219, 144.338): the double position fails the 1 % bound and is not explained yet
-(to check first: whether the deck pairs more tooth pairs than gearstiff's candidate pairs, e.g. a
-pair touching only at a tip corner or face end, which gearstiff leaves free).
+Measured 2026-12-02 (docs/accuracy.md's row): single position +0.106 % (101.107 against ccx
+101.000 N/µm, 1 loaded pair), double position +0.578 % (145.298 against 144.463 N/µm, 2 loaded
+pairs; ccx at K = 10 and 100 E/h_c: 143.219, 144.338). The double position differed by −2.02 %
+until gearstiff stopped taking a helical scene's negative mortar gap (−0.20 µm on pair 1, an
+artifact of the dual basis where the gap varies across a face, not an overlap of the built
+flanks) out of the rotation as a turn to touching (stiffness/mesh_stiffness.cc); ccx's rotation
+counts from the built position. Both solvers pair the same two tooth pairs (the deck's
+`*CONTACT PAIR` list is gearstiff's candidate pairs) and split the load alike (ccx 0.494/0.506,
+gearstiff 0.489/0.511 of the pinion torque). What remains at the double position is the same
+artifact inside the contact solve: pair 1 starts 0.2 µm "overlapped", so gearstiff's hub turns
+0.6 % less than ccx's (more layers should shrink it with the artifact; not measured).
+Tolerances: single 0.35 % (≈3× the measured deviation); double the issue's 1 % (3× the measured
+0.58 % would exceed it).
 """
 import os
 import sys
@@ -42,6 +49,8 @@ MESH = ["Mesh/dimension=3", "Mesh/layers=5", "Mesh/contact size=0.15", "Mesh/fin
         "Mesh/body size=0.75", "Mesh/rim size=2.5"]
 TORQUE = 20.  # N·m, T1 of both commands (PAIR)
 FACTORS = (10., 100.)
+# Relative bounds on k (module docstring): ≈3× the measured deviation, at most the issue's 1 %.
+TOLERANCE = {"single": 0.0035, "double": 0.01}
 
 gearstiff, work = os.path.realpath(sys.argv[1]), work_folder(sys.argv[2])
 env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1")
@@ -78,6 +87,5 @@ for position in ("single", "double"):
     print(f"{position}: gearstiff Q1 {k:.5f} N/um ({loaded} loaded pairs); ccx K = 10, 100 "
           f"E/h_c: {ks[0]:.5f}, {ks[1]:.5f} N/um ({runs[0][1]:.1f} + {runs[1][1]:.1f} s); "
           f"K -> inf {k_inf:.5f} N/um")
-    # The issue's bound (1 %); measured: see docs/accuracy.md's row.
-    checks.near(f"{position}: k gearstiff / k ccx(K->inf)", k, k_inf, 0.01)
+    checks.near(f"{position}: k gearstiff / k ccx(K->inf)", k, k_inf, TOLERANCE[position])
 checks.done()
