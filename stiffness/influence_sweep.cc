@@ -9,6 +9,7 @@
 #include "fem/parallel.h"
 #include "fem/stiffness_factorization.h"
 #include "fem/supports.h"
+#include "geometry/fields.h"
 #include "geometry/involute_tooth.h"
 #include "stiffness/ltca_contact.h"
 
@@ -799,7 +800,7 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
   if (settings.scene.mesh.dimension != 2)
-    throw InputError("Mesh/dimension",
+    throw InputError(geometry::field::mesh("dimension"),
                      "the influence-coefficient contact model is built for 2D only (its 3D "
                      "near field is designed in docs/ltca.md, not built); use Stiffness/contact "
                      "model = finite element in 3D");

@@ -69,7 +69,6 @@ NOT_YET_NAMED = {
                                    "\"Gear pair/Pinion\"; issue 46 was editing it",
     "geometry/gear_pair_bodies.cc": "the lead modifications' prefix, as scene_gear_pair.cc",
     "geometry/gear_pair_helix.cc": "the helical refusals; issue 46 was editing it",
-    "stiffness/influence_sweep.cc": "issue 47 was editing it",
 }
 LIBRARIES = ["kinematics", "dynamics", "geometry", "fem", "contact", "stiffness"]
 USER_PATH = re.compile(r'"((?:[A-Z][a-z]+|ISO)(?: [A-Za-z0-9\']+)*)/([A-Za-z][A-Za-z0-9_\' ]*)?"')
