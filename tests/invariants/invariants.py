@@ -231,7 +231,8 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # unloaded TE is the same geometry, 1 nm). Frictionless cases only: the fast model applies no
 # friction. INFLUENCE_KINDS: the modification kinds it accepts (profile modifications are refused,
 # docs/ltca.md). Cost: one `stiffness` run of ~3 s per such case (2 of the 30 of seed 20261201:
-# cases 2 and 28; case 28 measured 2026-12-02: |dk| 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018).
+# cases 2 and 28; measured 2026-12-02: case 28 |dk| 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018;
+# case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %, |dTE| 0.0427 um, |dshare| 0.0066: near the 1 %).
 INFLUENCE_KINDS = ("none",)
 
 
