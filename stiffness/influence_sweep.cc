@@ -691,11 +691,6 @@ geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings
   scene.pinion_torque = settings.pinion_torque;
   scene.mesh.contact_size = cell;
   scene.mesh.fine_radius = depth + 2. * cell;
-  // The bodies away from the flanks twice as coarse as the exact scene's: they only carry the
-  // teeth's bending and the rim's compliance into C (default pair 2026-12-02, single runs: body
-  // 0.7 → 1.4 mm, 79.4k → 62.9k DoFs, sweep 2.41 → 1.83 s, worst |Δk| against the exact sweep at
-  // h_c 0.015 mm 0.331 → 0.340 %; at 2 mm 0.488 %, no faster).
-  scene.mesh.body_size = 2. * settings.scene.mesh.body_size;
   return scene;
 }
 
