@@ -66,7 +66,6 @@ NAMED_BY_FIELD = ["kinematics", "dynamics", "geometry", "contact", "stiffness"]
 # Files of those modules that still spell user paths, each with why (remove it once converted).
 NOT_YET_NAMED = {
     "geometry/gear_pair_helix.cc": "the helical refusals; issue 46 was editing it",
-    "stiffness/influence_sweep.cc": "issue 47 was editing it",
 }
 LIBRARIES = ["kinematics", "dynamics", "geometry", "fem", "contact", "stiffness"]
 USER_PATH = re.compile(r'"((?:[A-Z][a-z]+|ISO)(?: [A-Za-z0-9\']+)*)/([A-Za-z][A-Za-z0-9_\' ]*)?"')

@@ -24,6 +24,8 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
     Python = command line    gearstiff.stiffness(...) returns the command line's numbers (the
                              12 printed digits)
     3D between plane models  straight teeth in 3D: k between plane stress and plane strain
+    influence = exact        the influence-coefficient model (docs/ltca.md) against the rolling
+                             sweep, frictionless cases: k 1 %, TE 0.1 um, shares 0.01
     errors name parameters   a wheel of two teeth (gear-pair) and a 1 mm centre distance (mesh)
                              fail with one line naming the parameter typed, not the library's
                              field (issue 45)
@@ -223,6 +225,42 @@ def once_equals_per_position(case, runner, log, once_out=None):
     log(f"once = per position: |dTE0| {worst[0]:.2g} um, |dTE| {worst[1]:.3g} um, "
         f"|dk| {worst[2] * 100:.3g} %, |dshare| {worst[3]:.2g}")
     return {"once": once, "per position": reference, "once_out": once_out}
+
+
+# The influence-coefficient contact model (docs/ltca.md) on the case's own pair: the same sweep
+# as the exact rolling one within the accuracy it is tested to on the built-in pairs
+# (tests/stiffness/test_influence_coefficients.cc: k 1 %, TE 0.1 um, load shares 0.01; the
+# unloaded TE is the same geometry, 1 nm). Frictionless cases only: the fast model applies no
+# friction. INFLUENCE_KINDS: the modification kinds it accepts (profile modifications are refused,
+# docs/ltca.md). Cost: one `stiffness` run of ~3 s per such case (2 of the 30 of seed 20261201:
+# cases 2 and 28; measured 2026-12-02: case 28 |dk| 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018;
+# case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %, |dTE| 0.0427 um, |dshare| 0.0066: near the 1 %).
+INFLUENCE_KINDS = ("none",)
+
+
+def influence_equals_exact(case, runner, log, sweeps):
+    friction = float(case["pair"]["Contact/Friction coefficient"])
+    if friction != 0. or case["modification"] not in INFLUENCE_KINDS:
+        log(f"influence = exact: skipped ({case['modification']}, friction {friction})")
+        return
+    sets = sweep_sets(case, SWEEP_POSITIONS, "once")
+    sets["Stiffness/contact model"] = "influence coefficients"
+    fast, _, _ = runner.run("stiffness", sets)
+    worst = [0., 0., 0.]
+    for i, (a, b) in enumerate(zip(table(sweeps["once"], "stiffness_sweep"),
+                                   table(fast, "stiffness_sweep"))):
+        check_close(f"influence: position {i} unloaded TE [um]",
+                    b["unloaded_transmission_error"], a["unloaded_transmission_error"], 1e-3)
+        check_close(f"influence: position {i} k [N/um]", b["stiffness"], a["stiffness"], 0., 1e-2)
+        check_close(f"influence: position {i} TE [um]", b["transmission_error"],
+                    a["transmission_error"], 0.1)
+        for sa, sb in zip(shares(a), shares(b)):
+            check_close(f"influence: position {i} load share", sb, sa, 1e-2)
+        worst = [max(worst[0], abs(b["stiffness"] / a["stiffness"] - 1.)),
+                 max(worst[1], abs(b["transmission_error"] - a["transmission_error"])),
+                 max(worst[2], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
+    log(f"influence = exact: |dk| {worst[0] * 100:.3g} %, |dTE| {worst[1]:.3g} um, "
+        f"|dshare| {worst[2]:.2g}")
 
 
 def geometric_te(case, rows, log):
@@ -521,6 +559,7 @@ def check_case(seed, index, runner):
         once_out = os.path.join(runner.work, f"case{index}") if identity is own_train else None
         errors_name_parameters(case, runner, log)
         sweeps = once_equals_per_position(case, runner, log, once_out)
+        influence_equals_exact(case, runner, log, sweeps)
         geometric_te(case, table(sweeps["per position"], "stiffness_sweep"), log)
         identity(case, runner, log, sweeps)
         if index % 10 == 9:  # 3D is the costly one: every tenth case
