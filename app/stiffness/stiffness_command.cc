@@ -65,8 +65,7 @@ void report_micro_geometry(const StiffnessParameters& p,
   Report& report = context.report;
   const stiffness::TransmissionErrorSummary base =
       stiffness::summarize_transmission_error(sweep.positions);
-  const double first_torque =
-      sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+  const double first_torque = solved_torque(p, sweep);
   report.add_value("te_peak_to_peak", base.peak_to_peak * 1e6, "µm",
                    "peak-to-peak of the loaded TE over the sweep at T1 = " +
                        format_number(first_torque, 4) + " N·m");
@@ -328,7 +327,7 @@ void write_sweep_files(const StiffnessParameters& p, const kinematics::GearPairG
   // The TE chart names the case and the torque the positions were solved at (a torque list's
   // first: the te_map table and harris_map.png show the others).
   const kinematics::GearPairSpec& gears = p.settings.scene.pair;
-  const double torque = sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+  const double torque = solved_torque(p, sweep);
   const std::string torque_text = "T1 = " + format_number(torque, 4) + " N·m";
   context.plot("plot_transmission_error.py",
                {csv.path(), "z " + std::to_string(gears.pinion.teeth) + "/" +

@@ -255,6 +255,11 @@ std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& swee
   return text.str();
 }
 
+double solved_torque(const StiffnessParameters& p, const stiffness::StiffnessSweepResult& sweep)
+{
+  return sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+}
+
 std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep)
 {
   const std::string table = dynamics_stiffness_table(sweep);
@@ -270,10 +275,9 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
                                     const stiffness::StiffnessSweepResult& sweep)
 {
   const kinematics::GearPairSpec& spec = p.settings.scene.pair;
-  // The torque its k(x) was solved at: with a torque list the sweep's positions are the first
-  // torque's, so the train runs at that torque, not at `Gear pair scene/pinion torque` (a tip
-  // relief's k(x) depends on the load: the dynamics must see the k of the torque it applies).
-  const double torque = sweep.torques.empty() ? p.settings.pinion_torque : sweep.torques.front();
+  // The train runs at the torque its k(x) was solved at (a tip relief's k(x) depends on the
+  // load: the dynamics must see the k of the torque it applies).
+  const double torque = solved_torque(p, sweep);
   // Steel blanks of the pair's face widths between bore and reference circle (a ring between
   // its reference circle and its outer diameter): the inertias a user would start from.
   constexpr double steel_density = 7850.; // kg/m³

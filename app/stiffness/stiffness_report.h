@@ -47,6 +47,9 @@ void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sw
 // pitches in [0, 1), the roll position of the pair that entered last; k in N/mm), positions
 // sorted, duplicates modulo one pitch dropped.
 std::string dynamics_stiffness_table(const stiffness::StiffnessSweepResult& sweep);
+// The pinion torque [N·m] the sweep's positions were solved at: a torque list's first (its
+// positions are the first torque's), else `Gear pair scene/pinion torque`.
+double solved_torque(const StiffnessParameters& p, const stiffness::StiffnessSweepResult& sweep);
 // Subsections "Mesh 1" and "Mesh 2" of a `gearstiff dynamics` parameter file that put on both
 // meshes the sweep's k(x) table (dynamics_stiffness_table), or the Cai curve `cai` (scale
 // written in N/mm).

@@ -57,6 +57,8 @@ import sys
 import tempfile
 import time
 
+import numpy
+
 MODULES = [1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0]  # mm, ISO 54 first choice
 WALL_CLOCK = ("time", "cost", "ranks", "rank")
 
@@ -411,30 +413,21 @@ def own_train_nonlinear(runner, log, sweep, out, table_file, speed):
     if process.returncode != 0:
         raise CaseFailure(f"nonlinear dynamics with the sweep's TE exited {process.returncode}: "
                           f"{process.stderr.strip()[-600:]}")
-    rows = sorted(table(sweep, "stiffness_sweep"), key=lambda r: r["mesh_position"] % 1.)
-    x = [r["mesh_position"] % 1. for r in rows]
-    k = [r["stiffness"] for r in rows]
-    e = [r["unloaded_transmission_error"] for r in rows]
-    load = sum(ki * (r["transmission_error"] - ei) for ki, ei, r in zip(k, e, rows)) / len(rows)
-
-    def periodic(values, at):
-        n = len(x)
-        for i in range(n):
-            x0, x1 = x[i], x[i + 1] if i + 1 < n else x[0] + 1.
-            if x0 <= at < x1 or (i == n - 1 and (at >= x0 or at < x[0])):
-                t = ((at - x0) % 1.) / (x1 - x0)
-                return values[i] + t * (values[(i + 1) % n] - values[i])
-        raise AssertionError("periodic interpolation")
-
-    samples = 4000
-    quasi_static = sum(periodic(e, (j + 0.5) / samples) + load / periodic(k, (j + 0.5) / samples)
-                       for j in range(samples)) / samples
+    rows = table(sweep, "stiffness_sweep")
+    x = numpy.array([r["mesh_position"] for r in rows]) % 1.
+    k = numpy.array([r["stiffness"] for r in rows])
+    e = numpy.array([r["unloaded_transmission_error"] for r in rows])
+    load = numpy.mean(k * (numpy.array([r["transmission_error"] for r in rows]) - e))
+    # The model's k(x) and e(x): periodic linear interpolation over one base pitch.
+    at = (numpy.arange(4000) + 0.5) / 4000
+    quasi_static = numpy.mean(numpy.interp(at, x, e, period=1.) +
+                              load / numpy.interp(at, x, k, period=1.))
     dynamic = json.loads(process.stdout)
     check_close("nonlinear mean DTE [um]", value(dynamic, "mesh1_mean_dte"), quasi_static, 0.,
                 1e-4)
     log(f"own train, nonlinear with the sweep's TE: mean DTE "
         f"{value(dynamic, 'mesh1_mean_dte'):.6g} um = quasi-static {quasi_static:.6g} um "
-        f"(unloaded TE up to {max(abs(v) for v in e):.3g} um)")
+        f"(unloaded TE up to {numpy.abs(e).max():.3g} um)")
 
 
 def three_d_between_plane_models(case, runner, log):
