@@ -102,6 +102,8 @@ StiffnessFilePair read_pair(const ptree& tree, const std::string& path,
   }
   if (const auto radius = value(tree, "pinion_base_radius"))
     pair.pinion_base_radius = *radius * 1e-3;
+  if (const auto torque = value(tree, "pinion_torque"); torque && *torque > 0.)
+    pair.pinion_torque = *torque;
   return pair;
 }
 

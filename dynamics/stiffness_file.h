@@ -31,7 +31,12 @@ struct StiffnessFilePair
   double approach_ratio = std::numeric_limits<double>::quiet_NaN();
   // [m] r_b1 of the FE pinion (values/pinion_base_radius); NaN when the file has none
   double pinion_base_radius = std::numeric_limits<double>::quiet_NaN();
+  // [N·m] T1 the FE solved k(x) at (values/pinion_torque); NaN for a Cai summary or an older file
+  double pinion_torque = std::numeric_limits<double>::quiet_NaN();
   std::string describe() const; // "z 20/10, m 2 mm, a 30 mm"
+  // [N] the normal tooth force along the line of action of that load case, T1/r_b1; NaN when
+  // the file states either. A modified pair's k(x) and TE hold at this force only.
+  double tooth_force() const { return pinion_torque / pinion_base_radius; }
 };
 
 struct StiffnessFile

@@ -72,6 +72,9 @@ struct Mesh
   double driver_friction_arm = 0.;  // [m] r_f of the driver
   double driven_friction_arm = 0.;  // [m] r_f of the driven gear
   double initial_position = 0.;     // [base pitches] mesh position at t = 0 (holds the phase)
+  // [N] the tooth force an FE table's k(x) was solved at (StiffnessFilePair::tooth_force); NaN
+  // when the stiffness is not such a table. Only reported beside the nominal force.
+  double table_force = std::numeric_limits<double>::quiet_NaN();
   // General form (planetary trains): when not empty these terms replace driver/driven, base
   // radii and friction arms, and the mesh position advances position_ratio·(input speed)
   // [base pitches per second per rad/s]: z_a·|ω_a − ω_frame|/(2π·ω_input).

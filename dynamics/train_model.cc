@@ -479,6 +479,7 @@ void add_meshes(TrainBuild& build)
       mesh.stiffness = input.meshes[m].stiffness;
       mesh.damping = input.meshes[m].damping;
       mesh.friction_coefficient = input.meshes[m].friction_coefficient;
+      mesh.table_force = input.meshes[m].table_force;
       mesh.driver_friction_arm = input.meshes[m].driver_friction_arm;
       mesh.driven_friction_arm = input.meshes[m].driven_friction_arm;
       mesh.nonlinear = input.meshes[m].nonlinear;

@@ -24,6 +24,7 @@
 #include "dynamics/torsional_model.h"
 #include "kinematics/gear_train.h"
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,8 @@ struct TrainMeshDynamics
   // Nonlinear mesh law (nonlinear_mesh.h), the same for every copy; its TE and back-flank
   // stiffness are reversed with `stiffness` where the other gear drives.
   std::optional<NonlinearMesh> nonlinear;
+  // [N] the tooth force the file's k(x) was solved at (Mesh::table_force); NaN: not a file
+  double table_force = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct TrainSuspension

@@ -10,6 +10,7 @@
 #include "errors/errors.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace gearstiff::app::dynamics_input
@@ -287,7 +288,8 @@ double parse_train_mesh(ParameterHandler& prm, std::size_t m, double iso_face_wi
                                    {},
                                    {},
                                    {},
-                                   {}};
+                                   {},
+                                   std::numeric_limits<double>::quiet_NaN()};
   if (p.mesh_model == dynamics::MeshModel::nonlinear)
     mesh.nonlinear = build_nonlinear_mesh(
         physics.nonlinear, section, static_cast<unsigned int>(std::abs(pair.teeth[0])),
@@ -306,6 +308,7 @@ double parse_train_mesh(ParameterHandler& prm, std::size_t m, double iso_face_wi
                                        pair.centre_distance, section + "/stiffness file");
     // The FE pair's path of contact (its tips) sets the cycle the table is measured on.
     mesh.contact_ratio = physics.file->pair.contact_ratio;
+    mesh.table_force = physics.file->pair.tooth_force();
     if (std::isfinite(physics.file->pair.approach_ratio))
       mesh.approach_ratio = physics.file->pair.approach_ratio;
     origin =

@@ -215,6 +215,11 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
   }
   const double mean = sum / sweep.positions.size();
   report.add_value("positions", sweep.positions.size(), "-", "positions in the sweep");
+  // The load of k(x) and the TE: `gearstiff dynamics` compares it with the mesh force of the
+  // train that reads this summary (a modified pair's k depends on the load).
+  report.add_value("pinion_torque", solved_torque(p, sweep), "N·m",
+                   "T1 of k(x) and the TE (the first of Stiffness/torques, or Gear pair "
+                   "scene/pinion torque)");
   report.add_value("mean_stiffness", mean / 1e6, "N/µm",
                    "mean of k over the positions (a mesh-period mean for a 1-pitch sweep)");
   report.add_value("min_stiffness", lowest / 1e6, "N/µm", "smallest k (single-contact zone)");

@@ -16,6 +16,10 @@ Two defects found by running the features together on an own pair (session 19):
    k = W/s, which holds for unmodified teeth only; `gearstiff stiffness` writes k = W/(s − e)
    with the modifications' unloaded TE e beside it. The split now takes e from the table, so a
    relief's TE excites the train.
+3. (session 20) Nothing warned when a file's k(x) was solved at another load than the train's:
+   the sweep's summary.json now states `pinion_torque` (the torque of k(x)), and `gearstiff
+   dynamics` reports the file's tooth force beside the mesh's nominal force, with a warning
+   when they differ by more than 10 %.
 
 Asserts, on the own pair z 23/61, m_n 4 mm with 12 µm tip relief on both gears (coarse 2D Q1,
 16 positions, 2 torques, ~8 s):
@@ -29,7 +33,11 @@ Asserts, on the own pair z 23/61, m_n 4 mm with 12 µm tip relief on both gears 
   100 N·m within 0.3 % (measured −0.085 % here, −0.42 % with 8 positions, −0.041 % on the
   default mesh of the same pair at 16 positions: the dynamics interpolates k(x) linearly, and
   W/k of the interpolated k lies below the interpolated W/k, 1/k being convex; 0.3 % is about
-  3× the measured).
+  3× the measured);
+- the summary's pinion_torque is 100 (the number typed); the summary as `Train mesh 1/stiffness
+  file` of the pair as a two-gear Train reports mesh1_table_force = 100 N·m / r_b1 (1e-9: the
+  value and r_b1 travel with 10+ digits), no load warning at 100 N·m and "1-2 load warning" at
+  Train/input torque = 300.
 """
 import csv
 import json
@@ -56,6 +64,44 @@ def run(args):
         sys.exit(f"own_pair_train: {' '.join(args[:2])} exited {process.returncode}: "
                  f"{process.stderr.strip()[-600:]}")
     return process.stdout
+
+
+def number(report, key):
+    entry = report["values"][key]
+    return entry["value"] if isinstance(entry, dict) else entry
+
+
+def check_load_warning(gearstiff, table, out):
+    """The file's load beside the train's: silent at the file's torque, a warning at 3x."""
+    summary_path = os.path.join(out, "summary.json")
+    with open(summary_path) as f:
+        summary = json.load(f)
+    torque, radius = number(summary, "pinion_torque"), number(summary, "pinion_base_radius")
+    if torque != 100.:
+        sys.exit(f"own_pair_train: summary pinion_torque {torque}, expected 100 (the first "
+                 f"torque, whose k(x) the table holds)")
+    # The pair as a two-gear Train (the split path takes tables inline, a Train takes files).
+    train = [gearstiff, "dynamics", "--json", "--quiet"]
+    for key, value in (("model", "train"), ("gears", "1: 23, 2: 61"), ("meshes", "1-2"),
+                       ("modules", "1: 4, 2: 4"), ("fixed", ""), ("carriers", ""),
+                       ("connections", ""), ("planets", ""), ("inputs", "1: 1000"),
+                       ("output", "2"), ("inertias", "1: 0.01, 2: 0.05")):
+        train += ["--set", f"Train/{key}={value}"]
+    train += ["--set", "Train mesh 1/stiffness source=file",
+              "--set", "Train mesh 1/stiffness file=" + summary_path,
+              "--set", "Speed sweep/points=0"]
+    for gear_torque, warned in ((100., False), (300., True)):
+        report = json.loads(run(train + ["--set", f"Train/input torque={gear_torque:g}"]))
+        force = number(report, "mesh1_table_force")
+        expected = torque / (radius * 1e-3)
+        if not abs(force / expected - 1.) <= 1e-9:
+            sys.exit(f"own_pair_train: mesh1_table_force {force:.10g} N, expected T1/r_b1 = "
+                     f"{expected:.10g} N")
+        texts = report.get("text", {})
+        if ("1-2 load warning" in texts) != warned:
+            sys.exit(f"own_pair_train: at Gear 1/torque = {gear_torque:g} N·m the load warning "
+                     f"is {'missing' if warned else 'given'}: {json.dumps(texts)[:800]}")
+    print(f"own_pair_train: table force {force:.8g} N stated; warned at 300 N·m, not at 100")
 
 
 def main():
@@ -103,6 +149,7 @@ def main():
     if not abs(dte / fe_mean - 1.) <= 3e-3:
         sys.exit(f"own_pair_train: quasi-static mean DTE {dte:.8g} µm against the FE's mean "
                  f"loaded TE {fe_mean:.8g} µm ({dte / fe_mean - 1.:+.3g}, tolerance 0.3 %)")
+    check_load_warning(gearstiff, table, out)
     print(f"own_pair_train: nonlinear, quasi-static: mean DTE {dte:.8g} µm = FE mean loaded TE "
           f"{fe_mean:.8g} µm ({dte / fe_mean - 1.:+.2g})")
     print(f"own_pair_train: table at T1 = 100 N·m, dynamics mean k {mean:.8g} N/µm = FE "

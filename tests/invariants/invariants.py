@@ -47,6 +47,8 @@ usage: invariants.py GEARSTIFF [--seed S] [--cases N] [--first K] [--mpiexec CMD
 The number of cases comes from --cases, or GEARSTIFF_INVARIANT_CASES to run more.
 """
 import argparse
+import collections
+import inspect
 import json
 import math
 import os
@@ -74,6 +76,9 @@ class Runner:
         self.python_path = python_path
         self.work = work
         self.runs = 0
+        # Wall seconds of the runs by the identity that asked for them, printed per case so that
+        # the suite's cost is visible where it is spent (issue 43).
+        self.seconds = collections.Counter()
 
     def run(self, command, sets, ranks=1, out=None, allowed=(0,)):
         """The command's JSON report (and its exit code), one `--set` per entry of `sets`."""
@@ -85,7 +90,9 @@ class Runner:
         if ranks > 1:
             args = shlex.split(self.mpiexec) + ["-np", str(ranks)] + args
         self.runs += 1
+        start = time.monotonic()
         process = subprocess.run(args, capture_output=True, text=True)
+        self.seconds[inspect.stack()[1].function] += time.monotonic() - start
         if process.returncode not in allowed:
             raise CaseFailure(f"{command} exited {process.returncode}: "
                               f"{process.stderr.strip()[-600:]}\n  command: {shlex.join(args)}")
@@ -533,8 +540,10 @@ ROTATION = [zero_equals_none, ranks_agree, python_equals_cli, own_train]
 
 def run_case(seed, index, runner):
     start = time.monotonic()
+    runner.seconds.clear()
     passed = check_case(seed, index, runner)
-    print(f"  case {index}: {time.monotonic() - start:.1f} s", flush=True)
+    spent = ", ".join(f"{name} {seconds:.1f}" for name, seconds in runner.seconds.most_common())
+    print(f"  case {index}: {time.monotonic() - start:.1f} s ({spent})", flush=True)
     return passed
 
 
