@@ -14,3 +14,5 @@ ctest --test-dir build-debug --output-on-failure -j"$(nproc)" -L plain
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGEARSTIFF_WERROR=ON >/dev/null
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)"
+# Where the time went (issue 43): Σ by label and the costliest tests of this run.
+python3 tools/test_times.py build --top 25
