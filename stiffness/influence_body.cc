@@ -19,8 +19,8 @@ namespace gearstiff::stiffness::influence
 using namespace dealii;
 
 PairFrame::PairFrame(const kinematics::GearPairGeometry& pair)
-    : pair(pair), t2(pair.spec.wheel.internal ? -pair.line_of_action_length
-                                               : pair.line_of_action_length)
+    : pair(pair),
+      t2(pair.spec.wheel.internal ? -pair.line_of_action_length : pair.line_of_action_length)
 {
   wheel_centre[0] = pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
   u[0] = std::sin(pair.working_pressure_angle);
@@ -146,8 +146,7 @@ PointFunctional point_functional(const BodyModel<dim>& model, const Point<dim>& 
 } // namespace
 
 template <int dim>
-BodyModel<dim> factor_body_model(const GearMeshStiffnessSettings& settings,
-                                 const std::string& file)
+BodyModel<dim> factor_body_model(const GearMeshStiffnessSettings& settings, const std::string& file)
 {
   BodyModel<dim> model;
   fem::LinearSolverParameters direct = settings.linear_solver;
@@ -183,8 +182,7 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
     std::map<types::global_dof_index, double> summed;
     for (std::size_t p = 0; p < load.points.size(); ++p)
     {
-      const PointFunctional f =
-          point_functional(model, load.points[p], load.direction, load.body);
+      const PointFunctional f = point_functional(model, load.points[p], load.direction, load.body);
       for (std::size_t i = 0; i < f.dofs.size(); ++i)
         summed[f.dofs[i]] += load.weights[p] * f.weights[i];
     }
@@ -203,8 +201,7 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
   }
   const std::vector<std::vector<double>> responses =
       model.factorization->responses(sparse_loads, rows);
-  std::vector<std::vector<double>> compliance(loads.size(),
-                                              std::vector<double>(reads.size(), 0.));
+  std::vector<std::vector<double>> compliance(loads.size(), std::vector<double>(reads.size(), 0.));
   for (std::size_t a = 0; a < loads.size(); ++a)
     for (std::size_t b = 0; b < reads.size(); ++b)
     {

@@ -8,15 +8,15 @@
 
 #include "fem/elastic_system.h"
 #include "fem/stiffness_factorization.h"
-#include "kinematics/gear_pair.h"
 #include "geometry/scene_gear_pair.h"
+#include "kinematics/gear_pair.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 
+#include <boost/serialization/vector.hpp>
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <boost/serialization/vector.hpp>
 #include <functional>
 #include <memory>
 #include <string>
@@ -72,8 +72,8 @@ std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
 template <int dim>
 struct CellLocator
 {
-  std::vector<std::pair<dealii::BoundingBox<dim>,
-                        typename dealii::DoFHandler<dim>::active_cell_iterator>>
+  std::vector<
+      std::pair<dealii::BoundingBox<dim>, typename dealii::DoFHandler<dim>::active_cell_iterator>>
       cells;
   explicit CellLocator(const dealii::DoFHandler<dim>& dof_handler);
 };

@@ -66,11 +66,11 @@ public:
           for (unsigned int s = 0; s < layers; ++s)
           {
             const double z = (s + 0.5) * dz;
-            loads.push_back({{Point<3>(load[0], load[1], z - gauss),
-                              Point<3>(load[0], load[1], z + gauss)},
-                             {0.5, 0.5},
-                             along,
-                             p.body});
+            loads.push_back(
+                {{Point<3>(load[0], load[1], z - gauss), Point<3>(load[0], load[1], z + gauss)},
+                 {0.5, 0.5},
+                 along,
+                 p.body});
             reads.push_back({{Point<3>(read[0], read[1], z)}, {1.}, along, p.body});
           }
         }
@@ -268,10 +268,10 @@ InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
   const double face_width = pair.common_face_width;
 
   auto start = std::chrono::steady_clock::now();
-  const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
-      body_scene(settings, positions, frame.pinion_base_radius(), info.flank_cell_size,
-                 info.matching_depth, 3),
-      file);
+  const geometry::GearPairScene scene =
+      geometry::write_gear_pair_scene(body_scene(settings, positions, frame.pinion_base_radius(),
+                                                 info.flank_cell_size, info.matching_depth, 3),
+                                      file);
   info.scene_time = seconds_from(start);
   frame.scene_position = scene.reference_position;
 
@@ -280,10 +280,9 @@ InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
   info.n_dofs = model.system->get_dof_handler().n_dofs();
   info.factorization_time = seconds_from(start);
   if (progress)
-    progress("influence coefficients (3D): FE body " + std::to_string(info.n_dofs) +
-             " DoFs, h_f " + format_number(info.flank_cell_size * 1e3, 3) + " mm, " +
-             std::to_string(layers) + " layers, factored in " +
-             format_number(info.factorization_time, 3) + " s");
+    progress("influence coefficients (3D): FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
+             format_number(info.flank_cell_size * 1e3, 3) + " mm, " + std::to_string(layers) +
+             " layers, factored in " + format_number(info.factorization_time, 3) + " s");
 
   start = std::chrono::steady_clock::now();
   const std::vector<FlankGrid> grids = flank_grids(pair, positions, info.grid_step);

@@ -59,8 +59,8 @@ std::array<double, 3> compare_3d(const GearMeshStiffnessSettings& base, unsigned
   std::cout << name << ": worst |dk| " << worst[0] * 100 << " %, |dTE| " << worst[1] * 1e6
             << " um, |dshare| " << worst[2] << "; exact " << exact.wall_time << " s ("
             << exact.positions.front().n_dofs << " DoFs), influence " << fast.wall_time
-            << " s (once " << fast.once_time << " s, " << fast.influence.n_dofs
-            << " DoFs; contact " << fast.per_position_time << " s)\n";
+            << " s (once " << fast.once_time << " s, " << fast.influence.n_dofs << " DoFs; contact "
+            << fast.per_position_time << " s)\n";
   return worst;
 }
 } // namespace
