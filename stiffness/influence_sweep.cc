@@ -4,32 +4,24 @@
 
 #include "errors/errors.h"
 #include "errors/format.h"
-#include "fem/elastic_system.h"
-#include "fem/mesh.h"
 #include "fem/parallel.h"
-#include "fem/stiffness_factorization.h"
-#include "fem/supports.h"
 #include "geometry/fields.h"
 #include "geometry/involute_tooth.h"
+#include "kinematics/fields.h"
+#include "stiffness/influence_body.h"
 #include "stiffness/ltca_contact.h"
 
 #include <algorithm>
-#include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <cmath>
-#include <deal.II/base/bounding_box.h>
-#include <deal.II/base/geometry_info.h>
-#include <deal.II/fe/fe.h>
-#include <deal.II/fe/mapping.h>
-#include <deal.II/grid/grid_tools.h>
 #include <filesystem>
 #include <limits>
 #include <map>
-#include <memory>
 
 namespace gearstiff::stiffness
 {
 using namespace dealii;
+using namespace influence;
 
 namespace
 {
@@ -44,234 +36,25 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
-
-// Where the flanks of the pair are, as the geometry module places them (scene frame of
-// geometry/scene_gear_pair.h: pinion centre at the origin, line of action T1 + ℓ·u).
-struct PairFrame
-{
-  kinematics::GearPairGeometry pair;
-  double scene_position = 0.; // m, ℓ_s of the meshed scene's reference pair
-  double t2 = 0.;             // m, T2 from T1 (a ring's behind T1: negative)
-  Point<2> wheel_centre;
-  Tensor<1, 2> u; // the line of action's direction: the pinion's outward flank normal
-
-  double pinion_base_radius() const { return 0.5 * pair.pinion.base_diameter; }
-  double wheel_base_radius() const { return 0.5 * pair.wheel.base_diameter; }
-};
-
-Point<2> rotated(const Point<2>& p, const Point<2>& centre, double angle)
-{
-  const double c = std::cos(angle), s = std::sin(angle);
-  const Tensor<1, 2> d = p - centre;
-  Tensor<1, 2> turned;
-  turned[0] = c * d[0] - s * d[1];
-  turned[1] = s * d[0] + c * d[1];
-  return centre + turned;
-}
-
-// A flank point: the point of pair j's pinion (or wheel) flank that touches at ℓ, in the
-// meshed scene's frame, the direction of the force the mate exerts on it, and its body.
-struct FlankPoint
-{
-  Point<2> surface;
-  Tensor<1, 2> inward; // unit: the mate's force on this flank, into the body
-  // unit, ⊥ inward: a force line turned by τ (rad, PairLine) loads along inward + τ·across
-  Tensor<1, 2> across;
-  types::material_id body;
-};
-
-FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel)
-{
-  const double roll = position - j * frame.pair.transverse_base_pitch - frame.scene_position;
-  const Eigen::Vector2d at = geometry::line_of_action_point(frame.pair, position);
-  const Point<2> contact(at.x(), at.y());
-  FlankPoint point;
-  // The gear turns by its roll from the scene's position to where pair j touches at ℓ; the
-  // flank point in the scene frame is the contact point turned back (mesh_stiffness_rolling.cc:
-  // body_rotations); involute normals stay on the turned line of action.
-  const double angle =
-      wheel ? (frame.pair.spec.wheel.internal ? -1. : 1.) * roll / frame.wheel_base_radius()
-            : -roll / frame.pinion_base_radius();
-  const Point<2> centre = wheel ? frame.wheel_centre : Point<2>();
-  point.surface = rotated(contact, centre, angle);
-  const Point<2> tip = rotated(contact + frame.u, centre, angle);
-  point.inward = (wheel ? 1. : -1.) * (tip - point.surface);
-  // m = (u_y, −u_x) turned alike: the force line u + τ·m loads the wheel along inward + τ·m
-  // and the pinion along −(u + τ·m) = inward − τ·m.
-  point.across[0] = point.inward[1];
-  point.across[1] = -point.inward[0];
-  point.body = wheel ? geometry::scene_ids::wheel_body : geometry::scene_ids::pinion_body;
-  return point;
-}
-
-// u(x)·d = Σ_i w_i·u_i: the DoFs and weights of the FE field's component along `direction` at
-// `point`, which must lie in `body`.
-struct PointFunctional
-{
-  std::vector<types::global_dof_index> dofs;
-  std::vector<double> weights;
-};
-
-// The cells of the FE body with their bounding boxes (MappingQ1: straight-sided cells lie
-// within the box of their vertices). A scan of the boxes finds the cell around a flank grid
-// point in microseconds; deal.II's vertex search (GridTools::find_active_cell_around_point, with
-// or without GridTools::Cache) took 0.55 s for the 134 points of the default sweep (79.6k DoFs,
-// 2026-12-01), a quarter of the whole once-part.
-struct CellLocator
-{
-  std::vector<std::pair<BoundingBox<2>, DoFHandler<2>::active_cell_iterator>> cells;
-
-  explicit CellLocator(const DoFHandler<2>& dof_handler)
-  {
-    for (const auto& cell : dof_handler.active_cell_iterators())
-      cells.emplace_back(cell->bounding_box(), cell);
-  }
-
-  // The cell of `body` holding `point` and the point's reference coordinates; the handler's
-  // end() when no cell of that body holds it.
-  std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>
-  find(const Mapping<2>& mapping, const Point<2>& point, types::material_id body,
-       const DoFHandler<2>& dof_handler) const
-  {
-    for (const auto& [box, cell] : cells)
-    {
-      if (cell->material_id() != body || !box.point_inside(point, 1e-12))
-        continue;
-      try
-      {
-        const Point<2> reference = mapping.transform_real_to_unit_cell(cell, point);
-        if (GeometryInfo<2>::is_inside_unit_cell(reference, 1e-10))
-          return {cell, reference};
-      }
-      catch (const Mapping<2>::ExcTransformationFailed&)
-      {
-      }
-    }
-    return {dof_handler.end(), Point<2>()};
-  }
-};
-
-PointFunctional point_functional(const fem::ElasticSystem<2>& system, const CellLocator& locator,
-                                 const Point<2>& point, const Tensor<1, 2>& direction,
-                                 types::material_id body)
-{
-  const std::pair<DoFHandler<2>::active_cell_iterator, Point<2>> found =
-      locator.find(system.get_mapping(), point, body, system.get_dof_handler());
-  const auto& cell = found.first;
-  if (cell.state() != IteratorState::valid || cell->material_id() != body)
-    throw SolverFailure("influence coefficients",
-                        "a flank grid point (" + format_number(point[0] * 1e3, 6) + ", " +
-                            format_number(point[1] * 1e3, 6) +
-                            ") mm lies outside its gear's mesh (the matching depth reaches "
-                            "through the tooth)");
-  const FiniteElement<2>& fe = system.get_fe();
-  PointFunctional functional;
-  functional.dofs.resize(fe.n_dofs_per_cell());
-  cell->get_dof_indices(functional.dofs);
-  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-    functional.weights.push_back(fe.shape_value(i, found.second) *
-                                 direction[fe.system_to_component_index(i).first]);
-  return functional;
-}
-
-// The grid of one pair's flanks: G_j points at ℓ = first + g·step.
-struct FlankGrid
-{
-  int pair = 0;
-  double first = 0.; // m
-  unsigned int count = 0;
-};
-
-// Every pair in contact at a position gets the grid points that cover the ℓ it takes in the
-// sweep (one step of margin each side, within the path of contact A–E).
-std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
-                                   const std::vector<double>& positions, double step)
-{
-  std::map<int, std::pair<double, double>> spans;
-  for (const double position : positions)
-    for (const int j : geometry::gear_pairs_in_contact(pair, position))
-    {
-      const double at = position + j * pair.transverse_base_pitch;
-      const auto it = spans.emplace(j, std::make_pair(at, at)).first;
-      it->second.first = std::min(it->second.first, at);
-      it->second.second = std::max(it->second.second, at);
-    }
-  std::vector<FlankGrid> grids;
-  for (const auto& [j, span] : spans)
-  {
-    const double low = std::floor((span.first - pair.contact_start) / step) - 1.;
-    const double high = std::ceil((span.second - pair.contact_start) / step) + 1.;
-    const double last = std::round((pair.contact_end - pair.contact_start) / step);
-    const double from = std::max(0., low), to = std::min(last, high);
-    grids.push_back(
-        {j, pair.contact_start + from * step, static_cast<unsigned int>(to - from) + 1});
-  }
-  return grids;
-}
-
-// The FE body model: both gears of one scene, both bores clamped (the pinion's rigid turn is
-// the contact problem's approach e), K factored once.
-struct BodyModel
-{
-  std::unique_ptr<fem::ElasticSystem<2>> system;
-  std::unique_ptr<fem::StiffnessFactorization<2>> factorization;
-  std::unique_ptr<CellLocator> locator; // the cell search of the flank grid points
-};
-
-BodyModel factor_body_model(const GearMeshStiffnessSettings& settings, const std::string& file)
-{
-  BodyModel model;
-  fem::LinearSolverParameters direct = settings.linear_solver;
-  direct.method = fem::LinearSolverMethod::direct_mumps; // the coefficients need a factorization
-  model.system =
-      std::make_unique<fem::ElasticSystem<2>>(MPI_COMM_SELF, settings.elasticity, direct);
-  fem::read_msh<2>(file, 1., model.system->triangulation(), "scene file");
-  model.system->set_materials({{geometry::scene_ids::pinion_body, settings.material},
-                               {geometry::scene_ids::wheel_body, settings.material}},
-                              "material");
-  model.system->setup_system();
-  model.locator = std::make_unique<CellLocator>(model.system->get_dof_handler());
-  AffineConstraints<double> constraints;
-  fem::add_prescribed_displacement(
-      fem::boundary_nodes(model.system->get_dof_handler(),
-                          {static_cast<types::boundary_id>(geometry::scene_ids::pinion_bore),
-                           static_cast<types::boundary_id>(geometry::scene_ids::wheel_bore)}),
-      Tensor<1, 2>(), constraints);
-  constraints.close();
-  model.factorization = std::make_unique<fem::StiffnessFactorization<2>>(*model.system, constraints,
-                                                                         Vector<double>());
-  return model;
-}
-
 // C (m/N) of one gear between every pair of its grid points: a unit force at the surface point,
 // the displacement read at the matching depth, along the flank normal (direction 0) and, for
 // `directions` = 2, also across it (1): coefficients[2·p + q][a][b] for a load along p at point
 // a, read along q at point b (symmetric up to the depth offset).
 using CoefficientBlocks = std::vector<std::vector<std::vector<double>>>;
-CoefficientBlocks body_coefficients(const BodyModel& model, const std::vector<FlankPoint>& points,
-                                    double depth, double inset, unsigned int directions)
+CoefficientBlocks body_coefficients(const BodyModel<2>& model,
+                                    const std::vector<FlankPoint>& points, double depth,
+                                    double inset, unsigned int directions)
 {
-  std::vector<fem::SparseLoad> loads;
-  std::vector<std::vector<PointFunctional>> reads(directions);
-  std::map<types::global_dof_index, unsigned int> row_of;
-  std::vector<types::global_dof_index> rows;
+  std::vector<BodyPoint<2>> loads, reads;
   for (const FlankPoint& p : points)
     for (unsigned int d = 0; d < directions; ++d)
     {
       const Tensor<1, 2> along = d == 0 ? p.inward : p.across;
       // The load a hair inside the surface: the meshed flank is a chord polygon of the involute.
-      const PointFunctional load = point_functional(*model.system, *model.locator,
-                                                    p.surface + inset * p.inward, along, p.body);
-      loads.emplace_back();
-      for (std::size_t i = 0; i < load.dofs.size(); ++i)
-        loads.back().emplace_back(load.dofs[i], load.weights[i]);
-      reads[d].push_back(point_functional(*model.system, *model.locator,
-                                          p.surface + depth * p.inward, along, p.body));
-      for (const types::global_dof_index dof : reads[d].back().dofs)
-        if (row_of.emplace(dof, rows.size()).second)
-          rows.push_back(dof);
+      loads.push_back({{p.surface + inset * p.inward}, {1.}, along, p.body});
+      reads.push_back({{p.surface + depth * p.inward}, {1.}, along, p.body});
     }
-  const std::vector<std::vector<double>> responses = model.factorization->responses(loads, rows);
+  const std::vector<std::vector<double>> compliance = body_compliance(model, loads, reads);
   CoefficientBlocks blocks(
       directions * directions,
       std::vector<std::vector<double>>(points.size(), std::vector<double>(points.size(), 0.)));
@@ -279,12 +62,7 @@ CoefficientBlocks body_coefficients(const BodyModel& model, const std::vector<Fl
     for (unsigned int q = 0; q < directions; ++q)
       for (std::size_t a = 0; a < points.size(); ++a)
         for (std::size_t b = 0; b < points.size(); ++b)
-        {
-          const PointFunctional& read = reads[q][b];
-          double& c = blocks[directions * p + q][a][b];
-          for (std::size_t i = 0; i < read.dofs.size(); ++i)
-            c += read.weights[i] * responses[directions * a + p][row_of.at(read.dofs[i])];
-        }
+          blocks[directions * p + q][a][b] = compliance[directions * a + p][directions * b + q];
   return blocks;
 }
 
@@ -296,7 +74,7 @@ public:
   // meshed flank lies under the nominal involute.
   // `tilted`: the flanks are modified, so force lines turn (PairLine) and the coefficients
   // across the normal are computed too.
-  FlankCompliance(const BodyModel& model, const PairFrame& frame, std::vector<FlankGrid> grids,
+  FlankCompliance(const BodyModel<2>& model, const PairFrame& frame, std::vector<FlankGrid> grids,
                   double step, double depth, double inset,
                   const std::function<double(double, bool)>& removal, bool tilted)
       : grids(std::move(grids)), step(step), directions(tilted ? 2 : 1)
@@ -664,36 +442,6 @@ std::vector<GearMeshStiffnessResult> solve_position(const PositionModel& model, 
   return results;
 }
 
-// Rank 0's whole run: scene, FE body, coefficients, positions.
-struct InfluenceRun
-{
-  std::vector<std::vector<GearMeshStiffnessResult>> by_torque; // [torque][position]
-  InfluenceModelInfo info;
-  template <class Archive>
-  void serialize(Archive& archive, const unsigned int /*version*/)
-  {
-    archive& by_torque;
-    archive& info;
-  }
-};
-
-// The scene of the FE body: the sweep's first position, every flank that meshes in the sweep
-// refined along its contacts at h_f out to below the matching depth.
-geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
-                                       const std::vector<double>& positions, double r_b1,
-                                       double cell, double depth)
-{
-  geometry::GearPairSceneSpec scene = settings.scene;
-  scene.mesh.dimension = 2;
-  scene.position = geometry::PairPosition::roll_angle;
-  scene.pinion_roll_angle = positions.front() / r_b1;
-  scene.swept_positions = positions;
-  scene.pinion_torque = settings.pinion_torque;
-  scene.mesh.contact_size = cell;
-  scene.mesh.fine_radius = depth + 2. * cell;
-  return scene;
-}
-
 // The grid step must follow the gap's kinks and the near field's depth (docs/ltca.md, limits).
 void check_grid_step(double step, double depth, const PairSeparation& separation)
 {
@@ -726,24 +474,19 @@ InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
   info.flank_cell_size = flank_cell_modules * pair.spec.pinion.normal_module;
   info.matching_depth = matching_depth_cells * info.flank_cell_size;
   info.grid_step = pair.path_of_contact / (info.grid_points - 1);
-  PairFrame frame;
-  frame.pair = pair;
-  frame.t2 = pair.spec.wheel.internal ? -pair.line_of_action_length : pair.line_of_action_length;
-  frame.wheel_centre[0] = pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
-  frame.u[0] = std::sin(pair.working_pressure_angle);
-  frame.u[1] = std::cos(pair.working_pressure_angle);
+  PairFrame frame(pair);
   const PairSeparation separation(settings, frame);
   check_grid_step(info.grid_step, info.matching_depth, separation);
 
   auto start = std::chrono::steady_clock::now();
   const double r_b1 = frame.pinion_base_radius();
   const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
-      body_scene(settings, positions, r_b1, info.flank_cell_size, info.matching_depth), file);
+      body_scene(settings, positions, r_b1, info.flank_cell_size, info.matching_depth, 2), file);
   info.scene_time = seconds_since(start);
   frame.scene_position = scene.reference_position;
 
   start = std::chrono::steady_clock::now();
-  const BodyModel model = factor_body_model(settings, file);
+  const BodyModel<2> model = factor_body_model<2>(settings, file);
   info.n_dofs = model.system->get_dof_handler().n_dofs();
   info.factorization_time = seconds_since(start);
   if (progress)
@@ -801,7 +544,12 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
       {
         InfluenceRun local;
         const fem::Failure failure = fem::catch_failure(
-            [&]() { local = run_influence(settings, pair, positions, torques, file, progress); });
+            [&]()
+            {
+              local = dim == 3
+                          ? run_influence_3d(settings, pair, positions, torques, file, progress)
+                          : run_influence(settings, pair, positions, torques, file, progress);
+            });
         std::filesystem::remove(file);
         failure.rethrow("");
         return local;
@@ -826,11 +574,26 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
 
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
-  if (settings.scene.mesh.dimension != 2)
-    throw InputError(geometry::field::mesh("dimension"),
-                     "the influence-coefficient contact model is built for 2D only (its 3D "
-                     "near field is designed in docs/ltca.md, not built); use Stiffness/contact "
-                     "model = finite element in 3D");
+  if (settings.scene.mesh.dimension == 3)
+  {
+    // The 3D model is built for what it is verified on (docs/ltca.md §3): an external spur
+    // pair without lead modifications; helical contact lines and a ring are designed there.
+    if (settings.scene.pair.pinion.helix_angle != 0.)
+      throw InputError(kinematics::field::gear(false, "helix_angle"),
+                       "the 3D influence-coefficient model carries spur pairs only (helical "
+                       "contact lines are designed in docs/ltca.md §3, not built); use "
+                       "Stiffness/contact model = finite element");
+    if (settings.scene.pair.wheel.internal)
+      throw InputError(kinematics::field::gear(true, "internal"),
+                       "the 3D influence-coefficient model carries external pairs only; use "
+                       "Stiffness/contact model = finite element for an internal pair in 3D");
+    for (const auto* gear :
+         {&settings.scene.pinion_modifications, &settings.scene.wheel_modifications})
+      if (!gear->lead.empty())
+        throw InputError(stiffness_parameter::contact_model,
+                         "influence coefficients do not yet carry lead modifications (the 3D "
+                         "model is verified on unmodified spur pairs): use finite element");
+  }
   for (const auto* gear :
        {&settings.scene.pinion_modifications, &settings.scene.wheel_modifications})
     if (!gear->by_tooth.empty())
@@ -858,7 +621,8 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
   if (settings.influence_grid_points < 8)
     throw InputError(stiffness_parameter::influence_grid_points,
                      "must be at least 8 points over the path of contact");
-  if (settings.elasticity.model != fem::PlanarModel::plane_strain)
+  if (settings.scene.mesh.dimension == 2 &&
+      settings.elasticity.model != fem::PlanarModel::plane_strain)
     throw InputError(stiffness_parameter::contact_model,
                      "the analytic near field of influence coefficients is plane strain; set "
                      "Finite elements/Planar model = plane strain or use finite element");

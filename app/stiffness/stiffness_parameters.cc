@@ -101,10 +101,11 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry(
       "contact model", "finite element", Selection("finite element|influence coefficients"),
       "finite element: mortar contact on a mesh that resolves the Hertz zone (the reference); "
-      "influence coefficients (mode sweep, 2D, frictionless, no tooth faults): a FE body of both "
-      "gears with flank cells of 0.04·m_n factored once, the influence coefficients of a grid "
-      "on every meshing flank read 0.12·m_n under the surface, the analytic plane-strain Hertz "
-      "layer above that depth, one small contact problem per position (docs/ltca.md); root "
+      "influence coefficients (mode sweep, frictionless, no tooth faults; 3D: unmodified "
+      "external spur pairs): a FE body of both gears with flank cells of 0.04·m_n (3D: 0.08·m_n, "
+      "per hexahedron layer) factored once, the influence coefficients of a grid on every "
+      "meshing flank read 3 cells under the surface, the analytic plane-strain Hertz layer above "
+      "that depth, one small contact problem per position (docs/ltca.md); root "
       "stresses are not evaluated (nan in the tables, null in JSON)");
   prm.declare_entry("influence grid points", "64", Integer(8, 10000),
                     "contact model influence coefficients: grid points per flank over the path "

@@ -1,0 +1,240 @@
+// The FE body of the influence-coefficient model (stiffness/influence_body.h, docs/ltca.md §1–2).
+#include "stiffness/influence_body.h"
+
+#include "errors/errors.h"
+#include "errors/format.h"
+#include "fem/mesh.h"
+#include "fem/supports.h"
+#include "geometry/scene_gear_pair.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+#include <map>
+
+namespace gearstiff::stiffness::influence
+{
+using namespace dealii;
+
+PairFrame::PairFrame(const kinematics::GearPairGeometry& pair)
+    : pair(pair),
+      t2(pair.spec.wheel.internal ? -pair.line_of_action_length : pair.line_of_action_length)
+{
+  wheel_centre[0] = pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
+  u[0] = std::sin(pair.working_pressure_angle);
+  u[1] = std::cos(pair.working_pressure_angle);
+}
+
+namespace
+{
+Point<2> rotated(const Point<2>& p, const Point<2>& centre, double angle)
+{
+  const double c = std::cos(angle), s = std::sin(angle);
+  const Tensor<1, 2> d = p - centre;
+  Tensor<1, 2> turned;
+  turned[0] = c * d[0] - s * d[1];
+  turned[1] = s * d[0] + c * d[1];
+  return centre + turned;
+}
+} // namespace
+
+FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel)
+{
+  const double roll = position - j * frame.pair.transverse_base_pitch - frame.scene_position;
+  const Eigen::Vector2d at = geometry::line_of_action_point(frame.pair, position);
+  const Point<2> contact(at.x(), at.y());
+  FlankPoint point;
+  // The gear turns by its roll from the scene's position to where pair j touches at ℓ; the
+  // flank point in the scene frame is the contact point turned back (mesh_stiffness_rolling.cc:
+  // body_rotations); involute normals stay on the turned line of action.
+  const double angle =
+      wheel ? (frame.pair.spec.wheel.internal ? -1. : 1.) * roll / frame.wheel_base_radius()
+            : -roll / frame.pinion_base_radius();
+  const Point<2> centre = wheel ? frame.wheel_centre : Point<2>();
+  point.surface = rotated(contact, centre, angle);
+  const Point<2> tip = rotated(contact + frame.u, centre, angle);
+  point.inward = (wheel ? 1. : -1.) * (tip - point.surface);
+  // m = (u_y, −u_x) turned alike: the force line u + τ·m loads the wheel along inward + τ·m
+  // and the pinion along −(u + τ·m) = inward − τ·m.
+  point.across[0] = point.inward[1];
+  point.across[1] = -point.inward[0];
+  point.body = wheel ? geometry::scene_ids::wheel_body : geometry::scene_ids::pinion_body;
+  return point;
+}
+
+std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
+                                   const std::vector<double>& positions, double step)
+{
+  std::map<int, std::pair<double, double>> spans;
+  for (const double position : positions)
+    for (const int j : geometry::gear_pairs_in_contact(pair, position))
+    {
+      const double at = position + j * pair.transverse_base_pitch;
+      const auto it = spans.emplace(j, std::make_pair(at, at)).first;
+      it->second.first = std::min(it->second.first, at);
+      it->second.second = std::max(it->second.second, at);
+    }
+  std::vector<FlankGrid> grids;
+  for (const auto& [j, span] : spans)
+  {
+    const double low = std::floor((span.first - pair.contact_start) / step) - 1.;
+    const double high = std::ceil((span.second - pair.contact_start) / step) + 1.;
+    const double last = std::round((pair.contact_end - pair.contact_start) / step);
+    const double from = std::max(0., low), to = std::min(last, high);
+    grids.push_back(
+        {j, pair.contact_start + from * step, static_cast<unsigned int>(to - from) + 1});
+  }
+  return grids;
+}
+
+template <int dim>
+CellLocator<dim>::CellLocator(const DoFHandler<dim>& dof_handler)
+{
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    cells.emplace_back(cell->bounding_box(), cell);
+}
+
+namespace
+{
+// u(x)·d = Σ_i w_i·u_i: the DoFs and weights of the FE field's component along `direction` at
+// `point`, which must lie in `body`.
+struct PointFunctional
+{
+  std::vector<types::global_dof_index> dofs;
+  std::vector<double> weights;
+};
+
+template <int dim>
+PointFunctional point_functional(const BodyModel<dim>& model, const Point<dim>& point,
+                                 const Tensor<1, dim>& direction, types::material_id body)
+{
+  const Mapping<dim>& mapping = model.system->get_mapping();
+  for (const auto& [box, cell] : model.locator->cells)
+  {
+    if (cell->material_id() != body || !box.point_inside(point, 1e-12))
+      continue;
+    Point<dim> reference;
+    try
+    {
+      reference = mapping.transform_real_to_unit_cell(cell, point);
+    }
+    catch (const typename Mapping<dim>::ExcTransformationFailed&)
+    {
+      continue;
+    }
+    if (!GeometryInfo<dim>::is_inside_unit_cell(reference, 1e-10))
+      continue;
+    const FiniteElement<dim>& fe = model.system->get_fe();
+    PointFunctional functional;
+    functional.dofs.resize(fe.n_dofs_per_cell());
+    cell->get_dof_indices(functional.dofs);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      functional.weights.push_back(fe.shape_value(i, reference) *
+                                   direction[fe.system_to_component_index(i).first]);
+    return functional;
+  }
+  std::string where;
+  for (unsigned int d = 0; d < dim; ++d)
+    where += (d ? ", " : "") + format_number(point[d] * 1e3, 6);
+  throw SolverFailure("influence coefficients",
+                      "a flank grid point (" + where +
+                          ") mm lies outside its gear's mesh (the matching depth reaches "
+                          "through the tooth)");
+}
+} // namespace
+
+template <int dim>
+BodyModel<dim> factor_body_model(const GearMeshStiffnessSettings& settings, const std::string& file)
+{
+  BodyModel<dim> model;
+  fem::LinearSolverParameters direct = settings.linear_solver;
+  direct.method = fem::LinearSolverMethod::direct_mumps; // the coefficients need a factorization
+  model.system =
+      std::make_unique<fem::ElasticSystem<dim>>(MPI_COMM_SELF, settings.elasticity, direct);
+  fem::read_msh<dim>(file, 1., model.system->triangulation(), "scene file");
+  model.system->set_materials({{geometry::scene_ids::pinion_body, settings.material},
+                               {geometry::scene_ids::wheel_body, settings.material}},
+                              "material");
+  model.system->setup_system();
+  model.locator = std::make_unique<CellLocator<dim>>(model.system->get_dof_handler());
+  AffineConstraints<double> constraints;
+  fem::add_prescribed_displacement(
+      fem::boundary_nodes(model.system->get_dof_handler(),
+                          {static_cast<types::boundary_id>(geometry::scene_ids::pinion_bore),
+                           static_cast<types::boundary_id>(geometry::scene_ids::wheel_bore)}),
+      Tensor<1, dim>(), constraints);
+  constraints.close();
+  model.factorization = std::make_unique<fem::StiffnessFactorization<dim>>(
+      *model.system, constraints, Vector<double>());
+  return model;
+}
+
+template <int dim>
+std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
+                                                 const std::vector<BodyPoint<dim>>& loads,
+                                                 const std::vector<BodyPoint<dim>>& reads)
+{
+  std::vector<fem::SparseLoad> sparse_loads;
+  for (const BodyPoint<dim>& load : loads)
+  {
+    std::map<types::global_dof_index, double> summed;
+    for (std::size_t p = 0; p < load.points.size(); ++p)
+    {
+      const PointFunctional f = point_functional(model, load.points[p], load.direction, load.body);
+      for (std::size_t i = 0; i < f.dofs.size(); ++i)
+        summed[f.dofs[i]] += load.weights[p] * f.weights[i];
+    }
+    sparse_loads.emplace_back(summed.begin(), summed.end());
+  }
+  std::vector<PointFunctional> read_functionals;
+  std::map<types::global_dof_index, unsigned int> row_of;
+  std::vector<types::global_dof_index> rows;
+  for (const BodyPoint<dim>& read : reads)
+  {
+    read_functionals.push_back(
+        point_functional(model, read.points.front(), read.direction, read.body));
+    for (const types::global_dof_index dof : read_functionals.back().dofs)
+      if (row_of.emplace(dof, rows.size()).second)
+        rows.push_back(dof);
+  }
+  const std::vector<std::vector<double>> responses =
+      model.factorization->responses(sparse_loads, rows);
+  std::vector<std::vector<double>> compliance(loads.size(), std::vector<double>(reads.size(), 0.));
+  for (std::size_t a = 0; a < loads.size(); ++a)
+    for (std::size_t b = 0; b < reads.size(); ++b)
+    {
+      const PointFunctional& read = read_functionals[b];
+      for (std::size_t i = 0; i < read.dofs.size(); ++i)
+        compliance[a][b] += read.weights[i] * responses[a][row_of.at(read.dofs[i])];
+    }
+  return compliance;
+}
+
+geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
+                                       const std::vector<double>& positions, double r_b1,
+                                       double cell, double depth, unsigned int dimension)
+{
+  geometry::GearPairSceneSpec scene = settings.scene;
+  scene.mesh.dimension = dimension;
+  scene.position = geometry::PairPosition::roll_angle;
+  scene.pinion_roll_angle = positions.front() / r_b1;
+  scene.swept_positions = positions;
+  scene.pinion_torque = settings.pinion_torque;
+  scene.mesh.contact_size = cell;
+  scene.mesh.fine_radius = depth + 2. * cell;
+  return scene;
+}
+
+template struct CellLocator<2>;
+template struct CellLocator<3>;
+template BodyModel<2> factor_body_model<2>(const GearMeshStiffnessSettings&, const std::string&);
+template BodyModel<3> factor_body_model<3>(const GearMeshStiffnessSettings&, const std::string&);
+template std::vector<std::vector<double>> body_compliance<2>(const BodyModel<2>&,
+                                                             const std::vector<BodyPoint<2>>&,
+                                                             const std::vector<BodyPoint<2>>&);
+template std::vector<std::vector<double>> body_compliance<3>(const BodyModel<3>&,
+                                                             const std::vector<BodyPoint<3>>&,
+                                                             const std::vector<BodyPoint<3>>&);
+} // namespace gearstiff::stiffness::influence

@@ -1,0 +1,142 @@
+// The FE body of the influence-coefficient model (docs/ltca.md §1–2), shared by its 2D and 3D
+// sweeps (stiffness/influence_sweep.cc, stiffness/influence_sweep_3d.cc): where the flanks of
+// the meshed scene are (the transverse frame of geometry/scene_gear_pair.h), the flank grid
+// along the line of action, and the FE model of both gears — bores clamped, K factored once —
+// whose compliance between load points on the flanks and read points at the matching depth
+// below them are MUMPS's selected entries of K⁻¹. Internal to stiffness/.
+#pragma once
+
+#include "fem/elastic_system.h"
+#include "fem/stiffness_factorization.h"
+#include "geometry/scene_gear_pair.h"
+#include "kinematics/gear_pair.h"
+#include "stiffness/mesh_stiffness_sweep.h"
+
+#include <boost/serialization/vector.hpp>
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gearstiff::stiffness::influence
+{
+// Where the flanks of the pair are, as the geometry module places them (scene frame of
+// geometry/scene_gear_pair.h: pinion centre at the origin, line of action T1 + ℓ·u).
+struct PairFrame
+{
+  kinematics::GearPairGeometry pair;
+  double scene_position = 0.; // m, ℓ_s of the meshed scene's reference pair
+  double t2 = 0.;             // m, T2 from T1 (a ring's behind T1: negative)
+  dealii::Point<2> wheel_centre;
+  dealii::Tensor<1, 2> u; // the line of action's direction: the pinion's outward flank normal
+
+  explicit PairFrame(const kinematics::GearPairGeometry& pair);
+  double pinion_base_radius() const { return 0.5 * pair.pinion.base_diameter; }
+  double wheel_base_radius() const { return 0.5 * pair.wheel.base_diameter; }
+};
+
+// A flank point: the point of pair j's pinion (or wheel) flank that touches at ℓ, in the
+// meshed scene's transverse frame, the direction of the force the mate exerts on it, its body.
+struct FlankPoint
+{
+  dealii::Point<2> surface;
+  dealii::Tensor<1, 2> inward; // unit: the mate's force on this flank, into the body
+  // unit, ⊥ inward: a force line turned by τ (rad) loads along inward + τ·across
+  dealii::Tensor<1, 2> across;
+  dealii::types::material_id body;
+};
+FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel);
+
+// The grid of one pair's flanks: `count` points at ℓ = first + g·step.
+struct FlankGrid
+{
+  int pair = 0;
+  double first = 0.; // m
+  unsigned int count = 0;
+};
+// Every pair in contact at a position gets the grid points that cover the ℓ it takes in the
+// sweep (one step of margin each side, within the path of contact A–E).
+std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
+                                   const std::vector<double>& positions, double step);
+
+// The cells of the FE body with their bounding boxes (MappingQ1: straight-sided cells lie
+// within the box of their vertices). A scan of the boxes finds the cell around a flank grid
+// point in microseconds; deal.II's vertex search (GridTools::find_active_cell_around_point, with
+// or without GridTools::Cache) took 0.55 s for the 134 points of the default 2D sweep (79.6k
+// DoFs, 2026-12-01), a quarter of the whole once-part.
+template <int dim>
+struct CellLocator
+{
+  std::vector<
+      std::pair<dealii::BoundingBox<dim>, typename dealii::DoFHandler<dim>::active_cell_iterator>>
+      cells;
+  explicit CellLocator(const dealii::DoFHandler<dim>& dof_handler);
+};
+
+// The FE body model: both gears of one scene, both bores clamped (the pinion's rigid turn is
+// the contact problem's approach e), K factored once.
+template <int dim>
+struct BodyModel
+{
+  std::unique_ptr<fem::ElasticSystem<dim>> system;
+  std::unique_ptr<fem::StiffnessFactorization<dim>> factorization;
+  std::unique_ptr<CellLocator<dim>> locator; // the cell search of the flank grid points
+};
+// `settings.elasticity`, `.material` and `.linear_solver` (made direct: the coefficients need a
+// factorization) on the scene `file`.
+template <int dim>
+BodyModel<dim> factor_body_model(const GearMeshStiffnessSettings& settings,
+                                 const std::string& file);
+
+// A load: unit total force (N) along `direction`, shared by `points` with `weights` (Σ = 1).
+// A read: the displacement along `direction` at `points.front()` (weights ignored).
+template <int dim>
+struct BodyPoint
+{
+  std::vector<dealii::Point<dim>> points;
+  std::vector<double> weights;
+  dealii::Tensor<1, dim> direction;
+  dealii::types::material_id body;
+};
+
+// m/N: result[a][b] = the displacement read b under the load a (P b of the factorization).
+// SolverFailure when a point lies outside its body's mesh.
+template <int dim>
+std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
+                                                 const std::vector<BodyPoint<dim>>& loads,
+                                                 const std::vector<BodyPoint<dim>>& reads);
+
+// The scene of the FE body (`dimension` 2 or 3): the sweep's first position, every flank that
+// meshes in the sweep refined along its contacts at `cell` (m, h_f) out to below the matching
+// `depth` (m).
+geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
+                                       const std::vector<double>& positions, double r_b1,
+                                       double cell, double depth, unsigned int dimension);
+
+// Rank 0's whole run: scene, FE body, coefficients, positions.
+struct InfluenceRun
+{
+  std::vector<std::vector<GearMeshStiffnessResult>> by_torque; // [torque][position]
+  InfluenceModelInfo info;
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& by_torque;
+    archive& info;
+  }
+};
+
+// The 3D sweep of an unmodified external spur pair (stiffness/influence_sweep_3d.cc,
+// docs/ltca.md §3): the face cut into the FE body's hexahedron layers, one unknown force per
+// layer on every pair's contact line.
+InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
+                              const kinematics::GearPairGeometry& pair,
+                              const std::vector<double>& positions,
+                              const std::vector<double>& torques, const std::string& file,
+                              const std::function<void(const std::string&)>& progress);
+} // namespace gearstiff::stiffness::influence

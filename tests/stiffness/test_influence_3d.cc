@@ -1,0 +1,89 @@
+// The 3D influence-coefficient model (Stiffness/contact model = influence coefficients with
+// Mesh/dimension = 3, docs/ltca.md §3) against the exact 3D FE contact path on the default spur
+// pair: issue 47's k within 1 % at every checked position, TE within 0.1 µm, load sharing within
+// 1 %. The reference settings and the measured deviations are in the test's comment.
+#include "stiffness/influence_sweep.h"
+#include "stiffness/mesh_stiffness_sweep.h"
+#include "tests/stiffness/load_share.h"
+#include "tests/stiffness/work_file.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <iomanip>
+#include <iostream>
+
+using namespace gearstiff;
+using namespace gearstiff::stiffness;
+
+namespace
+{
+using test_support::share_of;
+
+// The exact sweep and the fast one on the same settings, position by position; returns the
+// worst |Δk| (-), |ΔTE| (m) and |Δshare| (-).
+std::array<double, 3> compare_3d(const GearMeshStiffnessSettings& base, unsigned int positions,
+                                 const std::string& name)
+{
+  StiffnessSweepSpec spec;
+  spec.positions = positions;
+  spec.mesh = SweepMesh::per_position;
+  GearMeshStiffnessSettings settings = base;
+  settings.contact.friction_coefficient = 0.; // the fast model is frictionless
+  const StiffnessSweepResult exact =
+      stiffness_sweep<3>(MPI_COMM_SELF, settings, spec, stiffness_work_stem(name + "_exact"));
+  settings.contact_model = ContactModel::influence_coefficients;
+  const StiffnessSweepResult fast =
+      influence_sweep<3>(MPI_COMM_SELF, settings, spec, stiffness_work_stem(name + "_fast"));
+  EXPECT_EQ(fast.positions.size(), exact.positions.size());
+  std::array<double, 3> worst{};
+  for (std::size_t i = 0; i < exact.positions.size(); ++i)
+  {
+    const GearMeshStiffnessResult &a = exact.positions[i], &b = fast.positions[i];
+    const double dk = b.mesh_stiffness / a.mesh_stiffness - 1.;
+    const double dte = b.transmission_error - a.transmission_error;
+    double dshare = 0.;
+    for (const int j : {-2, -1, 0, 1, 2})
+      dshare = std::max(dshare, std::abs(share_of(b, j) - share_of(a, j)));
+    std::cout << std::setprecision(6) << name << " " << i << ": k " << a.mesh_stiffness / 1e6
+              << " / " << b.mesh_stiffness / 1e6 << " N/um (" << dk * 100 << " %), TE "
+              << a.transmission_error * 1e6 << " / " << b.transmission_error * 1e6 << " um, share "
+              << dshare << ", K_Hbeta " << a.face_load_factor << " / " << b.face_load_factor
+              << ", p " << a.max_contact_pressure / 1e6 << " / " << b.max_contact_pressure / 1e6
+              << " MPa\n";
+    worst[0] = std::max(worst[0], std::abs(dk));
+    worst[1] = std::max(worst[1], std::abs(dte));
+    worst[2] = std::max(worst[2], dshare);
+  }
+  std::cout << name << ": worst |dk| " << worst[0] * 100 << " %, |dTE| " << worst[1] * 1e6
+            << " um, |dshare| " << worst[2] << "; exact " << exact.wall_time << " s ("
+            << exact.positions.front().n_dofs << " DoFs), influence " << fast.wall_time
+            << " s (once " << fast.once_time << " s, " << fast.influence.n_dofs << " DoFs; contact "
+            << fast.per_position_time << " s)\n";
+  return worst;
+}
+} // namespace
+
+// The exact path per position at h_c = 0.06 mm (Q1, 4 layers, 98k–104k DoFs a position) is the
+// reference: affordable (~35 s for the four positions), not converged (+1.0–1.4 % stiff against
+// its Richardson limit at 8 layers, bench/contact_speed.md session 12), so this checks the fast
+// model against the exact path on a comparable discretisation. Regression: measured 2026-12-02,
+// worst |Δk| 0.37 % (position 1, double contact), |ΔTE| 0.019 µm, |Δshare| 0.0019; 8 layers
+// alike (0.38 %, 0.020 µm, 0.0018). Tolerances: the issue's 1 %, 0.1 µm, 1 % (≈ 3×, 5×, 5× the
+// measured). K_Hβ is printed, not held: the fast model's is +2 % (layer means against the exact
+// path's nodal planes, docs/ltca.md §3).
+TEST(InfluenceCoefficients3D, DefaultSpurAgainstExact)
+{
+  GearMeshStiffnessSettings settings;
+  settings.scene.mesh.dimension = 3;
+  settings.scene.mesh.layers = 4;
+  // Q1: the FE body at Q2 and 8 layers was 1.56M DoFs (factored in 476 s, 13 GB), at Q1 and 4
+  // layers 119k DoFs (12 s). The exact path's contact size (the fast model sets its own h_f).
+  settings.elasticity.degree = 1;
+  settings.scene.mesh.contact_size = 6e-5; // m
+  const std::array<double, 3> worst = compare_3d(settings, 4, "influence_3d");
+  EXPECT_LT(worst[0], 0.01);
+  EXPECT_LT(worst[1], 0.1e-6);
+  EXPECT_LT(worst[2], 0.01);
+}
