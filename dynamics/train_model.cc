@@ -494,6 +494,35 @@ void add_meshes(TrainBuild& build)
   }
 }
 
+// The model before orientation, for the meshes' static forces. Its refusals name the model's
+// gears and meshes by number ("gear3.inertia", "mesh2.damping"), which no input of the caller
+// spells (the model's numbering exists only once it is built): they are named as the input they
+// came from, the train's inertias and the data of the Train mesh a model mesh copies.
+TorsionalModel preliminary_model(const TrainBuild& build)
+{
+  const GearTrain& train = build.model.train;
+  try
+  {
+    return TorsionalModel(train);
+  }
+  catch (const InputError& e)
+  {
+    for (unsigned int i = 0; i < train.gears.size(); ++i)
+      if (e.parameter() == field::train_gear(i, "inertia"))
+        throw InputError(field::train("inertias"), "'" + train.gears[i].name + "': " + e.reason());
+    for (unsigned int m = 0; m < train.meshes.size(); ++m)
+      for (std::string member : field::gear_mesh_fields())
+        if (e.parameter() == field::gear_mesh(m, member))
+        {
+          std::replace(member.begin(), member.end(), '_', ' ');
+          throw InputError(build.input.mesh_section + " " +
+                               std::to_string(build.model.spec_mesh[m] + 1) + "/" + member,
+                           "'" + train.meshes[m].name + "': " + e.reason());
+        }
+    throw;
+  }
+}
+
 // Load direction: orient every mesh so its static force is positive (K_v = F/F_nominal), then
 // the driver in the frame's reference is the gear the mesh draws power from; an FE table
 // computed with the other gear driving is reversed (contact runs the other way).
@@ -504,7 +533,7 @@ void orient_meshes(TrainBuild& build)
   TrainModel& model = build.model;
   GearTrain& train = model.train;
   {
-    const TorsionalModel preliminary(train);
+    const TorsionalModel preliminary = preliminary_model(build);
     build.forces.resize(train.meshes.size());
     for (std::size_t i = 0; i < build.forces.size(); ++i)
       build.forces[i] = preliminary.nominal_force(i);

@@ -10,6 +10,7 @@
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_fault.h"
 #include "geometry/tooth_modification_lead.h"
+#include "kinematics/hertz.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -424,8 +425,7 @@ void check_scene_spec(const GearPairSceneSpec& spec)
     throw InputError(scene_field::pinion_torque, "must be positive");
   if (!(spec.young_modulus > 0.))
     throw InputError(scene_field::young_modulus, "must be positive");
-  if (!(spec.poisson_ratio > 0. && spec.poisson_ratio < 0.5))
-    throw InputError(scene_field::poisson_ratio, "must lie in (0, 0.5)");
+  kinematics::check_poisson_ratio(spec.poisson_ratio, scene_field::poisson_ratio);
 }
 
 } // namespace detail

@@ -8,6 +8,7 @@
 // β_b to the axis, and every section meets the pairs the rolled transverse model meets.
 #include "errors/errors.h"
 #include "errors/format.h"
+#include "geometry/fields.h"
 #include "geometry/gear_pair_internal.h"
 #include "geometry/scene_gear_pair.h"
 #include "geometry/tooth_fault.h"
@@ -79,16 +80,17 @@ void check_helical_scene(const GearPairSceneSpec& spec, const kinematics::GearPa
                      "twist; " +
                          format_number(beta * 180. / M_PI, 6) + "° given)");
   if (spec.mesh.dimension != 3)
-    throw InputError("Mesh/dimension", "must be 3 for a helical pair (helix angle " +
-                                           format_number(beta * 180. / M_PI, 6) +
-                                           "°): its teeth twist along the face width");
+    throw InputError(field::mesh("dimension"), "must be 3 for a helical pair (helix angle " +
+                                                   format_number(beta * 180. / M_PI, 6) +
+                                                   "°): its teeth twist along the face width");
   const unsigned int needed = layers_for_twist(pair);
   if (spec.mesh.layers < needed)
-    throw InputError("Mesh/layers", "must be at least " + std::to_string(needed) +
-                                        " to follow the twist of this helical pair (8 per unit "
-                                        "of overlap ratio ε_β = " +
-                                        format_number(pair.overlap_ratio, 4) + "), got " +
-                                        std::to_string(spec.mesh.layers));
+    throw InputError(field::mesh("layers"),
+                     "must be at least " + std::to_string(needed) +
+                         " to follow the twist of this helical pair (8 per unit "
+                         "of overlap ratio ε_β = " +
+                         format_number(pair.overlap_ratio, 4) + "), got " +
+                         std::to_string(spec.mesh.layers));
   if (!spec.swept_positions.empty())
     throw InputError(scene_field::swept_positions,
                      "a helical pair is meshed per position: rolling one mesh through the sweep "

@@ -2,6 +2,7 @@
 
 #include "errors/errors.h"
 #include "geometry/fields.h"
+#include "kinematics/hertz.h"
 
 #include <chrono>
 #include <cmath>
@@ -61,8 +62,7 @@ SceneInfo write_cylinders_scene(const CylindersSceneSpec& spec, const std::strin
     throw InputError(field::cylinders("length"), "must be positive");
   if (!(spec.young_modulus > 0.))
     throw InputError(field::cylinders("young_modulus"), "must be positive");
-  if (!(spec.poisson_ratio > 0. && spec.poisson_ratio < 0.5))
-    throw InputError(field::cylinders("poisson_ratio"), "must lie in (0, 0.5)");
+  kinematics::check_poisson_ratio(spec.poisson_ratio, field::cylinders("poisson_ratio"));
 
   SceneContact contact;
   contact.point = Eigen::Vector2d::Zero();

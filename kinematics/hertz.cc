@@ -1,9 +1,19 @@
 #include "kinematics/hertz.h"
 
+#include "errors/errors.h"
+
 #include <cmath>
 
 namespace gearstiff::kinematics
 {
+void check_poisson_ratio(double poisson_ratio, const std::string& field)
+{
+  if (!(poisson_ratio >= 0. && poisson_ratio < 0.5))
+    throw InputError(field, "must lie in [0, 0.5) (-): at 0.5 the material is incompressible, "
+                            "λ = Eν/((1+ν)(1−2ν)) is infinite and the displacement model has no "
+                            "solution");
+}
+
 double effective_modulus(const double young_modulus_1, const double poisson_ratio_1,
                          const double young_modulus_2, const double poisson_ratio_2)
 {

@@ -4,6 +4,8 @@
 // model (stiffness/).
 #pragma once
 
+#include <string>
+
 namespace gearstiff::kinematics
 {
 struct HertzLineContact
@@ -15,6 +17,12 @@ struct HertzLineContact
 // Pa, E* of two linear-elastic bodies: 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 (moduli in Pa).
 double effective_modulus(double young_modulus_1, double poisson_ratio_1, double young_modulus_2,
                          double poisson_ratio_2);
+
+// The one range of a Poisson's ratio ν in every command (issue 45: one range per physical
+// input): [0, 0.5), the parameters' pattern [0, 0.5] without its end. At 0.5 the material is
+// incompressible, λ = Eν/((1+ν)(1−2ν)) is infinite and the displacement model has no solution;
+// below 0 (auxetic foams) no material of a gear drive. InputError naming `field` otherwise.
+void check_poisson_ratio(double poisson_ratio, const std::string& field);
 
 // Load per unit length P (N/m), radii (m; a flat: infinity; concave: negative) with
 // 1/R = 1/R1 + 1/R2 > 0, effective modulus E* (Pa). The caller checks that P > 0 and R > 0.

@@ -5,6 +5,7 @@
 #include "fem/mesh.h"
 #include "fem/stress.h"
 #include "geometry/fields.h"
+#include "kinematics/hertz.h"
 #include "stiffness/contact_solve.h"
 
 #include <algorithm>
@@ -296,12 +297,7 @@ void check_cycloid_load_settings(const CycloidLoadSettings& s)
     if (!(material->youngs_modulus > 0.) || !std::isfinite(material->youngs_modulus))
       throw InputError(name, "must be positive and finite (GPa): E = 0 leaves the bodies "
                              "without stiffness");
-    const double nu = material->poisson_ratio;
-    if (!(nu >= 0. && nu < 0.5))
-      throw InputError(field::cycloid_loads("poisson_ratio"),
-                       "must lie in [0, 0.5) (-): at 0.5 the material is incompressible, "
-                       "λ = Eν/((1+ν)(1−2ν)) is infinite and the displacement model has no "
-                       "solution");
+    kinematics::check_poisson_ratio(material->poisson_ratio, field::cycloid_loads("poisson_ratio"));
   }
 }
 

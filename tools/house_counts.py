@@ -64,9 +64,7 @@ PLAIN = {"errors", "kinematics", "dynamics", "geometry"}
 # is counted; in the modules listed here it fails --check, except in the files of NOT_YET_NAMED.
 NAMED_BY_FIELD = ["kinematics", "dynamics", "geometry", "contact", "stiffness"]
 # Files of those modules that still spell user paths, each with why (remove it once converted).
-NOT_YET_NAMED = {
-    "geometry/gear_pair_helix.cc": "the helical refusals; issue 46 was editing it",
-}
+NOT_YET_NAMED: dict[str, str] = {}
 LIBRARIES = ["kinematics", "dynamics", "geometry", "fem", "contact", "stiffness"]
 USER_PATH = re.compile(r'"((?:[A-Z][a-z]+|ISO)(?: [A-Za-z0-9\']+)*)/([A-Za-z][A-Za-z0-9_\' ]*)?"')
 # The field helpers of kinematics/fields.h and dynamics/fields.h and the member lists app/ maps

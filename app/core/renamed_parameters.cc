@@ -46,6 +46,8 @@ const std::vector<RenamedParameter>& renamed_parameters()
   static const std::vector<RenamedParameter> renamed = {
       {"Train/tooth friction coefficient", "Train/friction coefficient",
        "the release after 2026-12"},
+      // One name for Poisson's ratio (the other commands' "Poisson's ratio").
+      {"Bodies/Poisson ratios", "Bodies/Poisson's ratios", "the release after 2026-12"},
   };
   return renamed;
 }

@@ -40,11 +40,11 @@ void declare_parameters(ParameterHandler& prm)
       "epsilon: contact arc |alpha2 - alpha1| as a fraction of the lobe pitch 360°/z_s "
       "(-, comma-separated list, each in (0, 0.5))");
   prm.declare_entry("clearance limit", "0.01", Double(0.),
-                    "Delta r, largest clearance to the nominal profile over the contact arc (mm)");
+                    "Delta r, largest clearance to the nominal profile over the contact arc [mm]");
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),
                     "disc rotation psi at which the roller clearances are evaluated [deg]");
   prm.declare_entry("outline points per lobe", "121", Integer(5, 100000),
-                    "points per lobe of the disc outline written with -o (-)");
+                    "points per lobe of the disc outline written with -o [-]");
   prm.leave_subsection();
 }
 

@@ -30,7 +30,7 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
 
   prm.enter_subsection("Cycloid loads");
   prm.declare_entry("output torque", "440", Double(),
-                    "M_c on the output member per disc (N·m), > 0; docs/references.md §4: 880 N·m "
+                    "M_c on the output member per disc [N·m], > 0; docs/references.md §4: 880 N·m "
                     "shared by two discs");
   prm.declare_entry("crank angle", "0", Double(-360., 360.),
                     "phi_h, direction of the eccentric: disc centre at e(cos phi_h, sin phi_h) "
@@ -38,20 +38,20 @@ void declare_cycloid_loads_parameters(ParameterHandler& prm)
   prm.declare_entry("profiles", "both", Selection("nominal|corrected|both"),
                     "disc profiles solved: nominal equidistant, corrected (r_k, q_k, delta), both");
   prm.declare_entry("contact arc ratio", "0.27", Double(),
-                    "epsilon of the corrected profile, in (0, 0.5) (-)");
-  prm.declare_entry("clearance limit", "0.01", Double(0.), "Delta r of the correction (mm)");
+                    "epsilon of the corrected profile, in (0, 0.5) [-]");
+  prm.declare_entry("clearance limit", "0.01", Double(0.), "Delta r of the correction [mm]");
   prm.declare_entry("sweep positions", "0", Integer(0, 10000),
-                    "crank angles of the sweep, spread over the MPI ranks (-); 0: no sweep");
+                    "crank angles of the sweep, spread over the MPI ranks [-]; 0: no sweep");
   prm.declare_entry("sweep span", "18", Double(0., 360.),
                     "crank-angle span of the sweep [deg]; 360/z_k repeats the roller pattern");
   prm.declare_entry("torque steps", "0", Integer(0, 1000),
                     "steps of the torque ramp -M_c -> +M_c for the torsional stiffness and "
-                    "lost motion (-); 0: only the +-3%, 50%, 100% levels they need");
+                    "lost motion [-]; 0: only the +-3%, 50%, 100% levels they need");
   prm.declare_entry("torsional curve", "true", Bool(),
                     "solve the torque levels of the torsional stiffness and lost motion");
-  prm.declare_entry("Young's modulus", "210", Double(0.), "E of disc and pins (GPa)");
-  prm.declare_entry("roller Young's modulus", "210", Double(0.), "E of the rollers (GPa)");
-  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "nu of every body (-)");
+  prm.declare_entry("Young's modulus", "210", Double(0.), "E of disc and pins [GPa]");
+  prm.declare_entry("roller Young's modulus", "210", Double(0.), "E of the rollers [GPa]");
+  prm.declare_entry("Poisson's ratio", "0.3", Double(0., 0.5), "nu of every body [-]");
   prm.declare_entry("write vtu", "false", Bool(), "VTU of the solved position(s) with -o");
   prm.leave_subsection();
 }

@@ -27,7 +27,7 @@ void declare_parameters(ParameterHandler& prm)
                     "disc rotation ψ about its own centre [deg]; the disc centre follows "
                     "the eccentric with the ring fixed");
   prm.declare_entry("roller force", "auto", Anything(),
-                    "roller force for the Hertz estimate of automatic contact cells (N), or auto: "
+                    "roller force for the Hertz estimate of automatic contact cells [N], or auto: "
                     "P_max and Q_max of the rigid-disc load model (stiffness/cycloid_analytic.h) "
                     "under Abaqus deck/output torque");
   declare_elastic_constants(prm, "the disc and the rollers");

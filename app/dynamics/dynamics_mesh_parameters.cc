@@ -62,7 +62,7 @@ void declare_nonlinear_mesh_entries(ParameterHandler& prm, bool train_mesh)
   const std::string gear = train_mesh ? "the mesh's first gear" : "the driver";
   prm.declare_entry("backlash", "100", Double(),
                     "mesh model nonlinear: free play 2b between drive and back flanks along the "
-                    "line of action, the normal backlash j_bn (µm); j_bn = j_t·cos alpha_wt from "
+                    "line of action, the normal backlash j_bn [µm]; j_bn = j_t·cos alpha_wt from "
                     "the circular backlash j_t, or -(A_sn1 + A_sn2)·cos alpha_n from the "
                     "tooth-thickness allowances (spur gears, nominal centre distance)");
   prm.declare_entry("transmission error file", "", Anything(),
@@ -88,10 +88,10 @@ void declare_nonlinear_mesh_entries(ParameterHandler& prm, bool train_mesh)
                     "(symmetric teeth)");
   prm.declare_entry("profile deviation", "0", Double(0.),
                     "mesh model nonlinear: profile form deviation f_f, a sinusoid of this "
-                    "peak-to-peak at the mesh frequency in the unloaded TE (µm)");
+                    "peak-to-peak at the mesh frequency in the unloaded TE [µm]");
   prm.declare_entry("pitch deviation", "0", Double(0.),
                     "mesh model nonlinear: cumulative pitch deviation F_p of " + gear +
-                        ", a once-per-revolution sinusoid of this peak-to-peak (µm)");
+                        ", a once-per-revolution sinusoid of this peak-to-peak [µm]");
   prm.declare_entry("transmission error harmonics", "", Anything(),
                     "mesh model nonlinear: further TE sinusoids 'order: amplitude[: phase], "
                     "...' (mesh orders, µm, deg)");
@@ -305,7 +305,7 @@ void declare_mesh_physics(ParameterHandler& prm, double stiffness, double dampin
                                     : ""));
   prm.declare_entry("cai shape", "0.55, 1.8, -1.8", Anything(),
                     "c0, c1, c2 of the Cai bracket c2·s² + c1·s + c0, s = engagement "
-                    "fraction (-); the published shape peaks at 1");
+                    "fraction [-]; the published shape peaks at 1");
   prm.declare_entry("stiffness table", "", Anything(),
                     "mesh stiffness samples 'x:k, x:k, ...' with x the mesh position in base "
                     "pitches in [0, 1) (increasing) and k in N/mm");
@@ -314,18 +314,18 @@ void declare_mesh_physics(ParameterHandler& prm, double stiffness, double dampin
   // Damping as a ratio (issue 25): see apply_damping_ratios.
   prm.declare_entry("damping", train_mesh ? std::string("auto") : format_number(damping, 10),
                     Anything(),
-                    "c_g, mesh damping along the line of action (N·s/m); auto: from 'damping "
+                    "c_g, mesh damping along the line of action [N·s/m]; auto: from 'damping "
                     "ratio'");
   prm.declare_entry("damping ratio", format_number(default_damping_ratio, 10), Double(0., 1.),
-                    "ζ of the mesh for damping = auto (-): c_g = 2ζ·√(k_m·m_e), k_m the mean "
+                    "ζ of the mesh for damping = auto [-]: c_g = 2ζ·√(k_m·m_e), k_m the mean "
                     "mesh stiffness, m_e = 1/Σ r_b²/J of the gears in the mesh; default 0.05, "
                     "inside the 0.03–0.17 reported for gear meshes (docs/references.md §10)");
   prm.declare_entry("friction coefficient", format_number(friction, 10),
-                    friction_coefficient_pattern(), "mu, tooth friction (-)");
+                    friction_coefficient_pattern(), "mu, tooth friction [-]");
   prm.declare_entry("driver friction arm", format_number(driver_arm / mm, 10), Double(0.),
-                    "r_f of the driver (mm)");
+                    "r_f of the driver [mm]");
   prm.declare_entry("driven friction arm", format_number(driven_arm / mm, 10), Double(0.),
-                    "r_f of the driven gear (mm)");
+                    "r_f of the driven gear [mm]");
   declare_nonlinear_mesh_entries(prm, train_mesh);
 }
 

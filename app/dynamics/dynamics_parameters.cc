@@ -26,7 +26,7 @@ struct IsoEntry
 };
 
 const IsoEntry iso_entries[] = {
-    {"face width", &IsoParameters::face_width, mm, Double(0.), "b, common face width (mm)"},
+    {"face width", &IsoParameters::face_width, mm, Double(0.), "b, common face width [mm]"},
     {"transverse pressure angle", &IsoParameters::pressure_angle, degree, Double(0., 45.),
      "alpha_t: F_t = F_bt·cos alpha_t [deg]"},
     {"single stiffness", &IsoParameters::single_stiffness, newton_per_mm_micrometre, Double(0.),
@@ -34,12 +34,12 @@ const IsoEntry iso_entries[] = {
     {"mesh stiffness", &IsoParameters::mesh_stiffness, newton_per_mm_micrometre, Double(0.),
      "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b"},
     {"pitch deviation", &IsoParameters::pitch_deviation, micrometre, Double(0.),
-     "f_pb,eff = f_pb - y_p, effective base pitch deviation (µm); the default is ISO 1328 grade "
+     "f_pb,eff = f_pb - y_p, effective base pitch deviation [µm]; the default is ISO 1328 grade "
      "6 for this size without running-in allowance"},
     {"profile deviation", &IsoParameters::profile_deviation, micrometre, Double(0.),
-     "f_f,eff = f_f_alpha - y_f, effective profile form deviation (µm)"},
-    {"tip relief", &IsoParameters::tip_relief, micrometre, Double(0.), "C_a (µm); 0: none"},
-    {"application factor", &IsoParameters::application_factor, 1., Double(0.), "K_A (-)"}};
+     "f_f,eff = f_f_alpha - y_f, effective profile form deviation [µm]"},
+    {"tip relief", &IsoParameters::tip_relief, micrometre, Double(0.), "C_a [µm]; 0: none"},
+    {"application factor", &IsoParameters::application_factor, 1., Double(0.), "K_A [-]"}};
 } // namespace
 
 void declare_dynamics_parameters(ParameterHandler& prm)
@@ -49,9 +49,9 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.enter_subsection("Train");
   prm.declare_entry("number of gears", "3", Integer(2, max_dynamics_gears),
                     "gears (rotational degrees of freedom) of the train; a tree of n gears has "
-                    "n - 1 meshes, read from 'Mesh 1' ... (-)");
+                    "n - 1 meshes, read from 'Mesh 1' ... [-]");
   prm.declare_entry("input speed", format_number(data.input_speed_rpm, 10), Double(0.),
-                    "n1, nominal speed of gear 1 (rpm); the others follow from the base radii");
+                    "n1, nominal speed of gear 1 [rpm]; the others follow from the base radii");
   prm.declare_entry("published reference", "true", Bool(),
                     "print the published split-path values (docs/references.md §1, Reszuta & "
                     "Drewniak 2015) beside ours when the train is that case (T1 and the base "
@@ -70,11 +70,11 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "housing, 'name: stiffness damping, ...' (N·m/rad, N·m·s/rad)");
   prm.declare_entry("face widths", "", Anything(),
                     "train model: gears whose J and mass come from a steel blank where "
-                    "Train/inertias and Train/masses give none, 'name: b, ...' (mm)");
+                    "Train/inertias and Train/masses give none, 'name: b, ...' [mm]");
   prm.declare_entry("bore diameters", "", Anything(),
                     "train model: bore of those blanks, 'name: d, ...' (mm; none: solid); for an "
                     "internal gear the rim's outside diameter (required)");
-  prm.declare_entry("density", "7850", Double(0.), "train model: density of the blanks (kg/m³)");
+  prm.declare_entry("density", "7850", Double(0.), "train model: density of the blanks [kg/m³]");
   prm.leave_subsection();
   declare_train_parameters(prm); // gears, modules, ..., inertias, masses, input torque
 
@@ -91,11 +91,11 @@ void declare_dynamics_parameters(ParameterHandler& prm)
     const bool pinion = i == 0;
     prm.declare_entry("inertia",
                       format_number(pinion ? data.pinion_inertia : data.wheel_inertia, 10),
-                      Double(0.), "J, mass moment of inertia about the gear axis (kg·m²)");
+                      Double(0.), "J, mass moment of inertia about the gear axis [kg·m²]");
     prm.declare_entry("torque",
                       pinion ? format_number(data.input_torque, 10) : std::string("balance"),
                       Anything(),
-                      "external torque (N·m), positive in the running direction (input), "
+                      "external torque [N·m], positive in the running direction (input), "
                       "negative for a load; 'balance': the load that takes an equal share of "
                       "its driver's torque, T = -T_driver/(meshes of the driver)·r_b/r_b,driver");
     prm.leave_subsection();
@@ -105,17 +105,17 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   {
     prm.enter_subsection(mesh_section(m));
     prm.declare_entry("driver gear", "1", Integer(1, max_dynamics_gears),
-                      "number of the driving gear (-)");
+                      "number of the driving gear [-]");
     prm.declare_entry("driven gear", std::to_string(m + 2), Integer(1, max_dynamics_gears),
-                      "number of the driven gear (-)");
+                      "number of the driven gear [-]");
     prm.declare_entry("driver teeth", std::to_string(data.pinion_teeth), Integer(1, 10000),
-                      "z of the driver: the mesh frequency is z·n_driver/60 (-)");
+                      "z of the driver: the mesh frequency is z·n_driver/60 [-]");
     prm.declare_entry("driver base radius", format_number(data.pinion_base_radius / mm, 10),
-                      Double(0.), "r_b of the driver (mm)");
+                      Double(0.), "r_b of the driver [mm]");
     prm.declare_entry("driven base radius", format_number(data.wheel_base_radius / mm, 10),
-                      Double(0.), "r_b of the driven gear (mm)");
+                      Double(0.), "r_b of the driven gear [mm]");
     prm.declare_entry("contact ratio", format_number(data.contact_ratio, 10), Double(1., 4.),
-                      "epsilon_alpha, transverse contact ratio (-); default from the "
+                      "epsilon_alpha, transverse contact ratio [-]; default from the "
                       "kinematics module's split-path pair");
     prm.declare_entry("approach ratio", format_number(data.approach_ratio, 10), Double(0., 4.),
                       "epsilon_f, start of active contact to the pitch point in base pitches "
@@ -140,21 +140,21 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("allow unstable step", "false", Bool(),
                     "run RK4 with a step above the estimated stability limit");
   prm.declare_entry("relative tolerance", "1e-7", Double(0., 0.1),
-                    "adaptive RK: local error tolerance relative to the state (-)");
+                    "adaptive RK: local error tolerance relative to the state [-]");
   prm.declare_entry("HHT alpha", "-0.05", Double(-1. / 3., 0.),
-                    "HHT-alpha parameter in [-1/3, 0]; 0 is the trapezoidal rule (-)");
+                    "HHT-alpha parameter in [-1/3, 0]; 0 is the trapezoidal rule [-]");
   prm.declare_entry("start", "static deflection", Selection("static deflection|rest"),
                     "initial state: static deflection under mean stiffness, or rest (the "
                     "torques applied suddenly)");
   prm.declare_entry("initial mesh position", "0", Double(0., 1.),
                     "position of mesh 1 at t = 0, in base pitches (0: a pair enters contact)");
   prm.declare_entry("steady state start", "-1", Double(),
-                    "start of the K_v window (s); negative: automatic, when the slowest mode "
+                    "start of the K_v window [s]; negative: automatic, when the slowest mode "
                     "has decayed to 1/1000");
   prm.declare_entry("simulated time", "0", Double(0.),
-                    "end time (s); 0: the window start plus 'window periods' mesh periods");
+                    "end time [s]; 0: the window start plus 'window periods' mesh periods");
   prm.declare_entry("window periods", "40", Integer(1, 100000),
-                    "length of the automatic K_v window in periods of mesh 1 (-)");
+                    "length of the automatic K_v window in periods of mesh 1 [-]");
   prm.declare_entry("output interval", "20", Double(0.),
                     "spacing of the rows of the time-series CSV (µs); K_v uses every step");
   prm.declare_entry("mesh model", "linear", Selection("linear|nonlinear"),
@@ -166,11 +166,11 @@ void declare_dynamics_parameters(ParameterHandler& prm)
 
   prm.enter_subsection("Speed sweep");
   prm.declare_entry("points", "60", Integer(0, 100000),
-                    "speeds in the K_v resonance chart (-); 0: no sweep");
-  prm.declare_entry("minimum speed", "500", Double(0.), "first input speed (rpm)");
-  prm.declare_entry("maximum speed", "45000", Double(0.), "last input speed (rpm)");
+                    "speeds in the K_v resonance chart [-]; 0: no sweep");
+  prm.declare_entry("minimum speed", "500", Double(0.), "first input speed [rpm]");
+  prm.declare_entry("maximum speed", "45000", Double(0.), "last input speed [rpm]");
   prm.declare_entry("steps per mesh period", "40", Integer(8, 10000),
-                    "the step is reduced so each mesh period holds at least this many (-)");
+                    "the step is reduced so each mesh period holds at least this many [-]");
   prm.declare_entry("direction", "up", Selection("up|down|both"),
                     "order of the speeds: up, down, or both (up, then down from the top); with "
                     "the nonlinear mesh model each speed starts from the previous speed's final "

@@ -609,16 +609,16 @@ void declare_lateral_parameters(ParameterHandler& prm)
       prm,
       {{"bearing stiffness", "",
         "lateral model: radial bearing stiffness of sun, ring and carrier (several stages: any "
-        "member on the main axis), the same in x and y, 'name: k, ...' (N/m); a member not "
+        "member on the main axis), the same in x and y, 'name: k, ...' [N/m]; a member not "
         "listed floats (0)"},
-       {"bearing damping", "", "lateral model: bearing damping in x and y, 'name: c, ...' (N·s/m)"},
+       {"bearing damping", "", "lateral model: bearing damping in x and y, 'name: c, ...' [N·s/m]"},
        {"planet pin stiffness", "",
         "lateral model: carrier pin stiffness of the planets, radial and tangential, "
-        "'planet: k' (N/m)"},
+        "'planet: k' [N/m]"},
        {"base diameters", "",
-        "lateral model: base diameters in place of teeth and modules, 'name: d, ...' (mm)"},
+        "lateral model: base diameters in place of teeth and modules, 'name: d, ...' [mm]"},
        {"carrier radii", "",
-        "lateral model: radius of the planet pin circle, 'carrier: r' (mm); default the centre "
+        "lateral model: radius of the planet pin circle, 'carrier: r' [mm]; default the centre "
         "distance m·(z_s + z_p)/2"},
        {"planet angles", "",
         "lateral model: position angles of the planet copies on the carrier, "
@@ -631,7 +631,7 @@ void declare_lateral_parameters(ParameterHandler& prm)
                     "lateral model: Campbell chart over carrier speed with the rotating carrier "
                     "frame's gyroscopic and centripetal terms (Cooley & Parker 2012)");
   prm.declare_entry("backlash", "0", dealii::Patterns::Double(0.),
-                    "lateral model: normal backlash of the meshes (µm) for the check of the pin "
+                    "lateral model: normal backlash of the meshes [µm] for the check of the pin "
                     "errors (0: not checked against it)");
   prm.leave_subsection();
 }

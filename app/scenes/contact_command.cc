@@ -169,8 +169,10 @@ void declare_parameters(ParameterHandler& prm)
   prm.enter_subsection("Bodies");
   prm.declare_entry("Names", "upper, lower", Patterns::Anything(),
                     "physical groups of the bodies (comma-separated)");
-  prm.declare_entry("Young's moduli", "210, 210", Patterns::Anything(), "GPa, one per body");
-  prm.declare_entry("Poisson ratios", "0.3, 0.3", Patterns::Anything(), "-, one per body");
+  prm.declare_entry("Young's moduli", "210, 210", Patterns::Anything(),
+                    "Young's modulus of each body, one per name [GPa]");
+  prm.declare_entry("Poisson's ratios", "0.3, 0.3", Patterns::Anything(),
+                    "Poisson's ratio of each body, one per name [-]");
   prm.leave_subsection();
 
   prm.enter_subsection("Supports");
@@ -262,12 +264,12 @@ std::map<types::material_id, fem::Material> parse_bodies(ParameterHandler& prm,
   prm.enter_subsection("Bodies");
   const auto body_names = split(prm.get("Names"), ',');
   const auto moduli = numbers(prm.get("Young's moduli"), "Bodies/Young's moduli");
-  const auto ratios = numbers(prm.get("Poisson ratios"), "Bodies/Poisson ratios");
+  const auto ratios = numbers(prm.get("Poisson's ratios"), "Bodies/Poisson's ratios");
   prm.leave_subsection();
   if (moduli.size() != body_names.size())
     throw InputError("Bodies/Young's moduli", "give one value per body name");
   if (ratios.size() != body_names.size())
-    throw InputError("Bodies/Poisson ratios", "give one value per body name");
+    throw InputError("Bodies/Poisson's ratios", "give one value per body name");
   std::map<types::material_id, fem::Material> materials;
   for (unsigned int b = 0; b < body_names.size(); ++b)
   {
@@ -277,8 +279,7 @@ std::map<types::material_id, fem::Material> parse_bodies(ParameterHandler& prm,
                                            "D physical group named '" + body_names[b] + "'");
     if (!(moduli[b] > 0.))
       throw InputError("Bodies/Young's moduli", "must be positive");
-    if (!(ratios[b] > -1. && ratios[b] < 0.5))
-      throw InputError("Bodies/Poisson ratios", "must lie in (-1, 0.5)");
+    kinematics::check_poisson_ratio(ratios[b], "Bodies/Poisson's ratios");
     materials[found->second] = fem::Material{moduli[b] * 1e9, ratios[b]};
   }
   return materials;

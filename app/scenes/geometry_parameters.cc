@@ -9,11 +9,11 @@ void declare_cycloid_disc_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Cycloid disc");
   prm.declare_entry("rollers", "20", Integer(3, 1000),
-                    "z_k, rollers in the ring (-); the disc has z_k - 1 lobes");
+                    "z_k, rollers in the ring [-]; the disc has z_k - 1 lobes");
   prm.declare_entry("roller circle radius", "96", Double(0.),
-                    "r, radius of the circle through the roller centres (mm)");
-  prm.declare_entry("eccentricity", "3", Double(0.), "e, eccentricity of the disc (mm)");
-  prm.declare_entry("roller radius", "8.5", Double(0.), "q, roller radius (mm)");
+                    "r, radius of the circle through the roller centres [mm]");
+  prm.declare_entry("eccentricity", "3", Double(0.), "e, eccentricity of the disc [mm]");
+  prm.declare_entry("roller radius", "8.5", Double(0.), "q, roller radius [mm]");
   prm.leave_subsection();
 }
 

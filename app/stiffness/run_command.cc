@@ -42,14 +42,38 @@ void declare_parameters(dealii::ParameterHandler& prm)
   declare_stiffness_sweep_parameters(prm, 12);
 }
 
-// K_v of both meshes of the split-path train with `stiffness` on each mesh.
-dynamics::SimulationResult kv_run(const dynamics::MeshStiffness& stiffness)
+// The split-path train and the stiffness of its K_v step are the chain's own: no parameter of
+// `run` fills them (the sweep's table, the fitted and the published Cai curves), so the dynamics
+// refusing one (an InputError naming the train's field, "mesh1.stiffness", or the source) is
+// the chain's failure, exit 3 naming the step, never a field the user cannot set.
+template <typename Work>
+auto as_kv_failure(const std::string& source, Work&& work) -> decltype(work())
 {
-  const dynamics::SplitPathCase data = dynamics::split_path_case();
-  const dynamics::TorsionalModel model(dynamics::split_path_train(data, stiffness));
-  dynamics::SimulationSettings settings;
-  settings.keep_time_series = false;
-  return dynamics::simulate(model, settings);
+  try
+  {
+    return work();
+  }
+  catch (const InputError& e)
+  {
+    throw SolverFailure("run: K_v of the split-path train (" + source + ")",
+                        "the torsional model refused the stiffness: " + e.reason());
+  }
+}
+
+// K_v of both meshes of the split-path train with `stiffness` on each mesh.
+dynamics::SimulationResult kv_run(const std::string& source,
+                                  const dynamics::MeshStiffness& stiffness)
+{
+  return as_kv_failure(source,
+                       [&]
+                       {
+                         const dynamics::SplitPathCase data = dynamics::split_path_case();
+                         const dynamics::TorsionalModel model(
+                             dynamics::split_path_train(data, stiffness));
+                         dynamics::SimulationSettings settings;
+                         settings.keep_time_series = false;
+                         return dynamics::simulate(model, settings);
+                       });
 }
 
 // Parameters the chain accepts: a sweep of the built-in split-path pair.
@@ -184,8 +208,10 @@ void report_dynamic_factors(CommandContext& context, const stiffness::StiffnessS
   context.pcout << "run: torsional dynamics (RK4, 5 µs) with three stiffness sources" << std::endl;
   Report& report = context.report;
   const std::vector<std::pair<std::string, dynamics::MeshStiffness>> sources = {
-      {"calibrated Cai", dynamics::MeshStiffness::cai(fit.parameters, "calibrated Cai")},
-      {"FE k(θ) table", fe_table_stiffness(sweep)},
+      {"calibrated Cai",
+       as_kv_failure("calibrated Cai", [&]
+                     { return dynamics::MeshStiffness::cai(fit.parameters, "calibrated Cai"); })},
+      {"FE k(θ) table", as_kv_failure("FE k(θ) table", [&] { return fe_table_stiffness(sweep); })},
       {"paper-scaled Cai",
        dynamics::MeshStiffness::cai(
            dynamics::cai_published_parameters(ansys::single_pair_stiffness), "paper Cai")}};
@@ -198,7 +224,7 @@ void report_dynamic_factors(CommandContext& context, const stiffness::StiffnessS
   const char* keys[] = {"kv_calibrated_cai", "kv_fe_table", "kv_paper_cai"};
   for (unsigned int s = 0; s < sources.size(); ++s)
   {
-    const dynamics::SimulationResult kv = kv_run(sources[s].second);
+    const dynamics::SimulationResult kv = kv_run(sources[s].first, sources[s].second);
     for (unsigned int m = 0; m < 2; ++m)
       report.add_value(std::string(keys[s]) + "_mesh" + std::to_string(m + 1), kv.meshes[m].kv_max,
                        "-", "K_v max, mesh 1-" + std::to_string(m + 2) + ", " + sources[s].first);

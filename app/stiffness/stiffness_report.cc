@@ -270,6 +270,25 @@ std::string dynamics_table_input(const stiffness::StiffnessSweepResult& sweep)
   return text;
 }
 
+namespace
+{
+// The moment of inertia [kg·m²] of a steel blank of the gear's face width between bore and
+// reference circle (a ring between its reference circle and its outer diameter): the inertia a
+// user would start from. `name` is the gear's section in "Gear pair" ("Pinion", "Wheel").
+double steel_blank_inertia(const kinematics::GearSpec& gear, const std::string& name,
+                           const kinematics::GearPairGeometry& pair)
+{
+  constexpr double steel_density = 7850.; // kg/m³
+  kinematics::TrainMember member;
+  member.name = name;
+  member.teeth = gear.internal ? -static_cast<int>(gear.teeth) : static_cast<int>(gear.teeth);
+  member.module = pair.transverse_module;
+  return dynamics::blank_inertia(member, {name, gear.face_width, gear.bore_diameter}, steel_density,
+                                 "Gear pair/" + name + "/bore diameter")
+      .moment_of_inertia;
+}
+} // namespace
+
 std::string own_pair_dynamics_input(const StiffnessParameters& p,
                                     const kinematics::GearPairGeometry& pair,
                                     const stiffness::StiffnessSweepResult& sweep)
@@ -278,21 +297,8 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
   // The train runs at the torque its k(x) was solved at (a tip relief's k(x) depends on the
   // load: the dynamics must see the k of the torque it applies).
   const double torque = solved_torque(p, sweep);
-  // Steel blanks of the pair's face widths between bore and reference circle (a ring between
-  // its reference circle and its outer diameter): the inertias a user would start from.
-  constexpr double steel_density = 7850.; // kg/m³
-  const auto inertia = [&](const kinematics::GearSpec& gear, const std::string& name)
-  {
-    const int teeth = gear.internal ? -static_cast<int>(gear.teeth) : static_cast<int>(gear.teeth);
-    kinematics::TrainMember member;
-    member.name = name;
-    member.teeth = teeth;
-    member.module = pair.transverse_module;
-    return dynamics::blank_inertia(member, {name, gear.face_width, gear.bore_diameter},
-                                   steel_density, "Gear pair/" + name + "/bore diameter")
-        .moment_of_inertia;
-  };
-  const double j1 = inertia(spec.pinion, "Pinion"), j2 = inertia(spec.wheel, "Wheel");
+  const double j1 = steel_blank_inertia(spec.pinion, "Pinion", pair);
+  const double j2 = steel_blank_inertia(spec.wheel, "Wheel", pair);
   const double r_b1 = 0.5 * pair.pinion.base_diameter, r_b2 = 0.5 * pair.wheel.base_diameter;
   double sum = 0.;
   for (const auto& r : sweep.positions)

@@ -220,6 +220,19 @@ TEST(TrainModel, BadInput)
   input = planetary(3);
   input.spec.members[1].module = 0.; // the planet
   EXPECT_THROW(build_train_model(input), InputError);
+  // A Train mesh's data the model refuses while it is built (its static forces need the model
+  // before orientation): named as the Train mesh, not as the model's mesh number "mesh1.damping"
+  // (the dynamics command checks the damping first, so only a library caller reaches this).
+  try
+  {
+    build_train_model(planetary(3, 4e8, -1.));
+    FAIL() << "negative damping accepted";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_EQ(error.parameter(), "Train mesh 1/damping");
+    EXPECT_NE(error.reason().find("must not be negative"), std::string::npos) << error.reason();
+  }
 }
 
 // ISO 6336-1 method B per Train mesh (train_model.h TrainIsoPair). A one-mesh train on fixed
