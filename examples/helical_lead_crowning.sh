@@ -5,9 +5,10 @@
 #
 #     examples/helical_lead_crowning.sh [path/to/gearstiff] [OUT_FOLDER]
 #
-# The pair: z 19/29, m_n 2 mm, β ±20° (ISO 21771 hands: external pair, opposite hands), b 18.4 mm
-# so that ε_β = b·sin β/(π·m_n) = 1.0, 8 layers (8 per unit ε_β), Q1, frictionless, the small
-# pair's coarse cell sizes (tests/helical). Lead crowning C_β = 10 µm on the pinion (removed at
+# The pair: z 19/29, m_n 2 mm, β ±20° (ISO 21771 hands: external pair, opposite hands), b 9.19 mm
+# so that ε_β = b·sin β/(π·m_n) = 0.5, 8 layers (16 per unit ε_β: the twist rule's 8 per unit
+# leave this pair's contact lines a mortar gap beyond the overlap tolerance, docs/helical.md
+# "Face width and ε_β"), Q1, frictionless, the small pair's coarse cell sizes (tests/helical). Lead crowning C_β = 10 µm on the pinion (removed at
 # both face ends, parabolic, 0 in the middle; the amount normal to the flank, ISO 21771).
 # One `stiffness` sweep of POSITIONS positions over a transverse base pitch at every torque of
 # TORQUES (one scene and factorization per position for all of them), and the same for the
@@ -20,8 +21,8 @@
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
 out=${2:-helical_lead_crowning}
-POSITIONS=${POSITIONS:-8}
-TORQUES=${TORQUES:-"23, 46, 92, 184"} # N·m: 1.25, 2.5, 5, 10 N·m per mm of face
+POSITIONS=${POSITIONS:-6}
+TORQUES=${TORQUES:-"11.5, 23, 46, 92"} # N·m: 1.25, 2.5, 5, 10 N·m per mm of face
 "$gearstiff" stiffness -o "$out" \
   --set "Mesh/dimension=3" --set "Finite elements/Element degree=1" \
   --set "Contact/Friction coefficient=0" --set "Stiffness/published reference=false" \
@@ -29,7 +30,7 @@ TORQUES=${TORQUES:-"23, 46, 92, 184"} # N·m: 1.25, 2.5, 5, 10 N·m per mm of fa
   --set "Gear pair/Pinion/module=2" --set "Gear pair/Wheel/module=2" \
   --set "Gear pair/Pinion/profile shift=0" --set "Gear pair/Wheel/profile shift=0" \
   --set "Gear pair/Pinion/helix angle=20" --set "Gear pair/Wheel/helix angle=-20" \
-  --set "Gear pair/Pinion/face width=18.37" --set "Gear pair/Wheel/face width=18.37" \
+  --set "Gear pair/Pinion/face width=9.19" --set "Gear pair/Wheel/face width=9.19" \
   --set "Mesh/layers=8" --set "Mesh/contact size=0.15" --set "Mesh/fine radius=0.4" \
   --set "Mesh/body size=0.75" --set "Mesh/rim size=2.5" \
   --set "Gear pair/Pinion/lead crowning=10" \
