@@ -173,7 +173,7 @@ def plot(folder, rows, curves):
     for n in (1, 2):
         axes[2].axvline(n, color="grey", lw=0.8, ls=":")
     axes[2].set(xlabel="overlap ratio ε_β", ylim=(0, None),
-                title="fluctuations fall toward ε_β = 1 and 2")
+                title="fluctuations against ε_β (integer ε_β: constant line length)")
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
