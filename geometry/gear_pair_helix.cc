@@ -134,9 +134,17 @@ std::vector<double> face_positions(const kinematics::GearPairGeometry& pair, dou
 
 std::vector<int> pairs_across_face(const kinematics::GearPairGeometry& pair, double reference)
 {
+  // Every section, also those whose model-section pair (j = 0) lies off the path of contact:
+  // there the pairs j = ±2 can touch (ε_β > 2 − ε_α), which face_positions' sections (within the
+  // path) never meet. Sampled as face_positions is, a quarter base pitch apart, so that no pair's
+  // interval of sections ((ε_α − 1)·p_bt long at least) falls between two samples.
+  const double half = 0.5 * pair.common_face_width * std::abs(contact_shift_rate(pair));
+  const double step = 0.25 * pair.transverse_base_pitch;
+  const unsigned int n = static_cast<unsigned int>(std::ceil(2. * half / step)) + 1;
   std::vector<int> pairs;
-  for (const double position : face_positions(pair, reference))
-    for (const int j : pairs_in_contact(pair, position))
+  for (unsigned int k = 0; k < n; ++k)
+    for (const int j :
+         pairs_in_contact(pair, n == 1 ? reference : reference - half + 2. * half * k / (n - 1)))
       pairs.push_back(j);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
