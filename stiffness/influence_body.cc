@@ -40,6 +40,61 @@ Point<2> rotated(const Point<2>& p, const Point<2>& centre, double angle)
 }
 } // namespace
 
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<GearMeshStiffnessResult> solve_torques(
+    MeshContactProblem& problem, const PairFrame& frame, const std::vector<int>& keys,
+    const std::vector<double>& torques, std::map<int, double>& warm, unsigned int& newton_steps,
+    const std::function<GearMeshStiffnessResult(const MeshContactSolution&, double)>& report)
+{
+  std::vector<GearMeshStiffnessResult> results;
+  for (const double torque : torques)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    problem.total_force = torque / frame.pinion_base_radius();
+    std::vector<double> guess;
+    for (const int key : keys)
+      guess.push_back(warm.count(key) ? warm.at(key) : 0.);
+    const MeshContactSolution solution = solve_mesh_contact(problem, guess);
+    newton_steps += solution.newton_steps;
+    if (results.empty()) // the next position starts from this one's first torque
+      for (std::size_t k = 0; k < keys.size(); ++k)
+        warm[keys[k]] = solution.force[k];
+    results.push_back(report(solution, torque));
+    results.back().solve_time = results.back().total_time = seconds_since(start);
+  }
+  return results;
+}
+
+GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension, double position,
+                                  std::size_t kinematic_pairs, double torque, double approach,
+                                  double unloaded)
+{
+  const kinematics::GearPairGeometry& pair = frame.pair;
+  const double r_b1 = frame.pinion_base_radius();
+  GearMeshStiffnessResult r;
+  r.dimension = dimension;
+  r.reference_position = position;
+  r.pinion_roll_angle = position / r_b1;
+  r.mesh_position = (position - pair.contact_start) / pair.transverse_base_pitch;
+  r.kinematic_pairs = kinematic_pairs;
+  r.pinion_torque = torque;
+  r.pinion_base_radius = r_b1;
+  r.wheel_base_radius = frame.wheel_base_radius();
+  r.pinion_root_stress = r.wheel_root_stress = std::numeric_limits<double>::quiet_NaN();
+  r.unloaded_transmission_error = unloaded;
+  r.transmission_error = approach;
+  r.pinion_rotation = (approach - unloaded) / r_b1;
+  if (!(r.pinion_rotation > 0.))
+    throw SolverFailure("influence-coefficient contact",
+                        "the pinion did not rotate forward under the torque");
+  r.mesh_stiffness = torque / (r_b1 * r_b1 * r.pinion_rotation);
+  return r;
+}
+
 FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel)
 {
   const double roll = position - j * frame.pair.transverse_base_pitch - frame.scene_position;

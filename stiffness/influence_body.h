@@ -10,14 +10,17 @@
 #include "fem/stiffness_factorization.h"
 #include "geometry/scene_gear_pair.h"
 #include "kinematics/gear_pair.h"
+#include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 
 #include <boost/serialization/vector.hpp>
+#include <chrono>
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -51,6 +54,28 @@ struct FlankPoint
   dealii::types::material_id body;
 };
 FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel);
+
+// Wall seconds since `start`.
+double seconds_since(std::chrono::steady_clock::time_point start);
+
+// One position of a sweep at every torque of `torques` (N·m): Σ F = T1/r_b1 of `frame`, each
+// solve started from the forces `warm` holds for the unknowns `keys` (0 for one it has not
+// seen); the first torque's forces go back into `warm` for the next position (a neighbour's
+// active set). `report(solution, torque)` builds each torque's result, whose solve and total
+// time are set here; `newton_steps` counts the solves' Newton steps.
+std::vector<GearMeshStiffnessResult> solve_torques(
+    MeshContactProblem& problem, const PairFrame& frame, const std::vector<int>& keys,
+    const std::vector<double>& torques, std::map<int, double>& warm, unsigned int& newton_steps,
+    const std::function<GearMeshStiffnessResult(const MeshContactSolution&, double)>& report);
+
+// What the 2D and 3D sweeps report alike for the position ℓ = `position` (m) under T1 = `torque`
+// (N·m) with `kinematic_pairs` pairs: the position and load, the base radii, no root stress
+// (NaN: the coarse body does not resolve the fillet), TE = the rigid approach `approach` (m), the
+// unloaded TE `unloaded` (m) and k = T1/(r_b1²·Δφ) with Δφ = (approach − unloaded)/r_b1;
+// SolverFailure when the pinion did not turn forward.
+GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension, double position,
+                                  std::size_t kinematic_pairs, double torque, double approach,
+                                  double unloaded);
 
 // The grid of one pair's flanks: `count` points at ℓ = first + g·step.
 struct FlankGrid

@@ -32,10 +32,6 @@ constexpr double flank_cell_modules = 0.04;
 // and right at three cells' distance (docs/ltca.md §2: measured by the accuracy test).
 constexpr double matching_depth_cells = 3.;
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 // C (m/N) of one gear between every pair of its grid points: a unit force at the surface point,
 // the displacement read at the matching depth, along the flank normal (direction 0) and, for
 // `directions` = 2, also across it (1): coefficients[2·p + q][a][b] for a load along p at point
@@ -338,25 +334,10 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
                                         const MeshContactSolution& solution, double torque)
 {
   const kinematics::GearPairGeometry& pair = model.frame.pair;
-  const double r_b1 = model.frame.pinion_base_radius(), r_b2 = model.frame.wheel_base_radius();
-  GearMeshStiffnessResult r;
-  r.dimension = 2;
-  r.reference_position = position;
-  r.pinion_roll_angle = position / r_b1;
-  r.mesh_position = (position - pair.contact_start) / pair.transverse_base_pitch;
-  r.kinematic_pairs = pairs.size();
-  r.pinion_torque = torque;
-  r.pinion_base_radius = r_b1;
-  r.wheel_base_radius = r_b2;
-  r.pinion_root_stress = r.wheel_root_stress = std::numeric_limits<double>::quiet_NaN();
-  r.unloaded_transmission_error =
-      *std::min_element(problem.separation.begin(), problem.separation.end());
-  r.transmission_error = solution.approach;
-  r.pinion_rotation = (solution.approach - r.unloaded_transmission_error) / r_b1;
-  if (!(r.pinion_rotation > 0.))
-    throw SolverFailure("influence-coefficient contact",
-                        "the pinion did not rotate forward under the torque");
-  r.mesh_stiffness = torque / (r_b1 * r_b1 * r.pinion_rotation);
+  const double r_b2 = model.frame.wheel_base_radius();
+  GearMeshStiffnessResult r =
+      result_at(model.frame, 2, position, pairs.size(), torque, solution.approach,
+                *std::min_element(problem.separation.begin(), problem.separation.end()));
   // Frictionless: every force on its pair's force line, at the lever arm r_b2·μ_j about the
   // wheel (geometry/scene_gear_pair.h: an external wheel's centre lies across the line of
   // action from the pinion's, a ring's on its side).
@@ -423,23 +404,10 @@ std::vector<GearMeshStiffnessResult> solve_position(const PositionModel& model, 
       problem.compliance.back().push_back(
           model.compliance(pairs[a], at[a], lines[a].tilt, pairs[b], at[b], lines[b].tilt));
   }
-  std::vector<GearMeshStiffnessResult> results;
-  for (const double torque : torques)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    problem.total_force = torque / model.frame.pinion_base_radius();
-    std::vector<double> guess;
-    for (const int j : pairs)
-      guess.push_back(warm.count(j) ? warm.at(j) : 0.);
-    const MeshContactSolution solution = solve_mesh_contact(problem, guess);
-    newton_steps += solution.newton_steps;
-    if (results.empty()) // the next position starts from this one's first torque
-      for (std::size_t k = 0; k < pairs.size(); ++k)
-        warm[pairs[k]] = solution.force[k];
-    results.push_back(position_result(model, position, pairs, lines, problem, solution, torque));
-    results.back().solve_time = results.back().total_time = seconds_since(start);
-  }
-  return results;
+  return solve_torques(
+      problem, model.frame, pairs, torques, warm, newton_steps,
+      [&](const MeshContactSolution& solution, double torque)
+      { return position_result(model, position, pairs, lines, problem, solution, torque); });
 }
 
 // The grid step must follow the gap's kinks and the near field's depth (docs/ltca.md, limits).

@@ -35,11 +35,6 @@ constexpr double matching_depth_cells_3d = 3.;
 // read 0.6 mm deep changes nothing the read sees.
 constexpr double inset_cells_3d = 0.02;
 
-double seconds_from(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // The coefficients of both gears on the grid (ℓ_g of every pair's grid) × (layer s), item
 // (g, s) at index g·layers + s, interpolated along ℓ as in 2D: the same flank along its
 // diagonal samples, different flanks bilinearly.
@@ -146,23 +141,9 @@ GearMeshStiffnessResult face_result(const FaceModel& model, double position,
   const kinematics::GearPairGeometry& pair = model.frame.pair;
   const double r_b1 = model.frame.pinion_base_radius(), r_b2 = model.frame.wheel_base_radius();
   const double dz = model.face_width / model.layers;
-  GearMeshStiffnessResult r;
-  r.dimension = 3;
-  r.reference_position = position;
-  r.pinion_roll_angle = position / r_b1;
-  r.mesh_position = (position - pair.contact_start) / pair.transverse_base_pitch;
-  r.kinematic_pairs = pairs.size();
-  r.pinion_torque = torque;
-  r.pinion_base_radius = r_b1;
-  r.wheel_base_radius = r_b2;
-  r.pinion_root_stress = r.wheel_root_stress = std::numeric_limits<double>::quiet_NaN();
-  r.unloaded_transmission_error = 0.; // unmodified flanks (the model refuses modifications)
-  r.transmission_error = solution.approach;
-  r.pinion_rotation = solution.approach / r_b1;
-  if (!(r.pinion_rotation > 0.))
-    throw SolverFailure("influence-coefficient contact",
-                        "the pinion did not rotate forward under the torque");
-  r.mesh_stiffness = torque / (r_b1 * r_b1 * r.pinion_rotation);
+  // Unmodified flanks (the model refuses modifications): the unloaded TE is 0.
+  GearMeshStiffnessResult r =
+      result_at(model.frame, 3, position, pairs.size(), torque, solution.approach, 0.);
   const double total = torque / r_b1; // Σ F: every force on the line of action (frictionless)
   r.torque_ratio = r_b2 / r_b1;
   r.wheel_torque = total * r_b2;
@@ -224,25 +205,13 @@ std::vector<GearMeshStiffnessResult> solve_face_position(const FaceModel& model,
           problem.compliance.back().push_back(
               model.compliance(pairs[a], at[a], s, pairs[b], at[b], t));
     }
-  std::vector<GearMeshStiffnessResult> results;
-  for (const double torque : torques)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    problem.total_force = torque / model.frame.pinion_base_radius();
-    std::vector<double> guess;
-    for (const int j : pairs)
-      for (unsigned int s = 0; s < model.layers; ++s)
-        guess.push_back(warm.count(key(j, s)) ? warm.at(key(j, s)) : 0.);
-    const MeshContactSolution solution = solve_mesh_contact(problem, guess);
-    newton_steps += solution.newton_steps;
-    if (results.empty()) // the next position starts from this one's first torque
-      for (std::size_t k = 0; k < pairs.size(); ++k)
-        for (unsigned int s = 0; s < model.layers; ++s)
-          warm[key(pairs[k], s)] = solution.force[k * model.layers + s];
-    results.push_back(face_result(model, position, pairs, solution, torque));
-    results.back().solve_time = results.back().total_time = seconds_from(start);
-  }
-  return results;
+  std::vector<int> keys;
+  for (const int j : pairs)
+    for (unsigned int s = 0; s < model.layers; ++s)
+      keys.push_back(key(j, s));
+  return solve_torques(problem, model.frame, keys, torques, warm, newton_steps,
+                       [&](const MeshContactSolution& solution, double torque)
+                       { return face_result(model, position, pairs, solution, torque); });
 }
 } // namespace
 
@@ -272,13 +241,13 @@ InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
       geometry::write_gear_pair_scene(body_scene(settings, positions, frame.pinion_base_radius(),
                                                  info.flank_cell_size, info.matching_depth, 3),
                                       file);
-  info.scene_time = seconds_from(start);
+  info.scene_time = seconds_since(start);
   frame.scene_position = scene.reference_position;
 
   start = std::chrono::steady_clock::now();
   const BodyModel<3> model = factor_body_model<3>(settings, file);
   info.n_dofs = model.system->get_dof_handler().n_dofs();
-  info.factorization_time = seconds_from(start);
+  info.factorization_time = seconds_since(start);
   if (progress)
     progress("influence coefficients (3D): FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
              format_number(info.flank_cell_size * 1e3, 3) + " mm, " + std::to_string(layers) +
@@ -289,7 +258,7 @@ InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
   info.flanks = 2 * grids.size();
   const FaceCompliance compliance(model, frame, grids, info.grid_step, info.matching_depth,
                                   inset_cells_3d * info.flank_cell_size, layers, face_width);
-  info.coefficient_time = seconds_from(start);
+  info.coefficient_time = seconds_since(start);
   if (progress)
     progress("influence coefficients (3D): " + std::to_string(compliance.n_points()) +
              " grid points x " + std::to_string(layers) + " layers, " +
@@ -309,7 +278,7 @@ InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
     for (std::size_t t = 0; t < torques.size(); ++t)
       run.by_torque[t].push_back(results[t]);
   }
-  info.contact_time = seconds_from(start);
+  info.contact_time = seconds_since(start);
   return run;
 }
 } // namespace gearstiff::stiffness::influence
