@@ -1,15 +1,29 @@
 #!/usr/bin/env bash
 # Speed of `Stiffness/contact model = influence coefficients` (issue 47, docs/ltca.md) beside the
-# exact rolling sweep, 2D default pair, 32 and 128 positions, 1 rank (target: ≤ 2 s for the fast
-# model at 128):
-# process wall time and peak memory (/usr/bin/time -v), medians of 3, and how the fast model's
-# time splits (scene, factorization, coefficients, contact problems) from its report.
+# exact rolling sweep (`sweep mesh = once`, μ 0), default pair, 1 rank: process wall time and peak
+# memory (/usr/bin/time -v); the fast model as the median of 3, the exact sweep as the median of
+# LTCA_EXACT_RUNS (default 3 in 2D, 1 in 3D: it takes minutes there).
+# - 2D (default): 32 and 128 positions (target: ≤ 2 s for the fast model at 128), then how the
+#   fast model's time splits (scene, factorization, coefficients, contact problems) from its report.
+# - LTCA_DIMENSION=3: 32 positions, Q1, 4 layers (docs/ltca.md §3); the exact sweep at h_c 0.06 mm.
+# LTCA_POSITIONS overrides the position counts.
 # usage: bench/ltca_speed.sh [path/to/gearstiff]   (default build/app/gearstiff); run it under
 # the build lock (flock /tmp/gearstiff-build.lock bash bench/ltca_speed.sh) on a quiet machine.
 set -euo pipefail
 gearstiff=${1:-$(dirname "$0")/../build/app/gearstiff}
 export OMP_NUM_THREADS=1
-positions_list=${LTCA_POSITIONS:-32 128}
+dimension=${LTCA_DIMENSION:-2}
+if [ "$dimension" = 3 ]; then
+  positions_list=${LTCA_POSITIONS:-32}
+  exact_runs=${LTCA_EXACT_RUNS:-1}
+  model=(--set "Mesh/dimension=3" --set "Mesh/layers=4" --set "Finite elements/Element degree=1")
+  exact=(--set "Mesh/contact size=0.06")
+else
+  positions_list=${LTCA_POSITIONS:-32 128}
+  exact_runs=${LTCA_EXACT_RUNS:-3}
+  model=()
+  exact=()
+fi
 # wall seconds and peak RSS (MB) of one run
 measure() {
   local log
@@ -21,23 +35,26 @@ measure() {
               END {printf "%.3f %.0f\n", w, m}' "$log"
   rm -f "$log"
 }
-median3() { # label, command...
-  local label=$1
-  shift
+median() { # label, count, command...
+  local label=$1 count=$2
+  shift 2
   local runs=()
-  for _ in 1 2 3; do runs+=("$(measure "$@")"); done
-  printf '%s\n' "${runs[@]}" | sort -n | sed -n 2p | {
+  for _ in $(seq "$count"); do runs+=("$(measure "$@")"); done
+  printf '%s\n' "${runs[@]}" | sort -n | sed -n "$(((count + 1) / 2))p" | {
     read -r wall mem
-    echo "$label: wall $wall s (median of 3: $(printf '%s ' "${runs[@]%% *}")), peak RSS $mem MB"
+    echo "$label: wall $wall s (median of $count: $(printf '%s ' "${runs[@]%% *}")), peak RSS $mem MB"
   }
 }
 for positions in $positions_list; do
-  sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=$positions")
-  median3 "influence coefficients, $positions positions, 1 rank" \
+  sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=$positions"
+    "${model[@]}")
+  median "influence coefficients ${dimension}D, $positions positions, 1 rank" 3 \
     "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients"
-  median3 "finite element (exact, sweep mesh once), $positions positions, 1 rank" \
-    "$gearstiff" "${sweep[@]}" --set "Contact/Friction coefficient=0"
+  median "finite element ${dimension}D (exact, sweep mesh once, μ 0), $positions positions, 1 rank" \
+    "$exact_runs" "$gearstiff" "${sweep[@]}" --set "Contact/Friction coefficient=0" \
+    --set "Stiffness/sweep mesh=once" "${exact[@]}"
 done
+[ "$dimension" = 3 ] && exit 0
 echo "time split of the fast model (its report, 128 positions):"
 sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=128")
 "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients" --json |

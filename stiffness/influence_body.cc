@@ -69,6 +69,23 @@ std::vector<GearMeshStiffnessResult> solve_torques(
   return results;
 }
 
+void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double position, int j,
+                   double force, double total, double peak_pressure, double half_width)
+{
+  ToothPairLoad load;
+  load.pair = j;
+  load.position = position + j * frame.pair.transverse_base_pitch;
+  load.normal_force = load.resultant = force;
+  load.load_share = force / total;
+  load.max_pressure = peak_pressure;
+  load.contact_length = 2. * half_width;
+  load.closed_roll_min = load.position - half_width;
+  load.closed_roll_max = load.position + half_width;
+  r.loaded_pairs += load.load_share > 1e-6;
+  r.max_contact_pressure = std::max(r.max_contact_pressure, load.max_pressure);
+  r.pairs.push_back(load);
+}
+
 GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension, double position,
                                   std::size_t kinematic_pairs, double torque, double approach,
                                   double unloaded)

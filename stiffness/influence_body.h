@@ -68,6 +68,12 @@ std::vector<GearMeshStiffnessResult> solve_torques(
     const std::vector<double>& torques, std::map<int, double>& warm, unsigned int& newton_steps,
     const std::function<GearMeshStiffnessResult(const MeshContactSolution&, double)>& report);
 
+// Pair j of a solved position into `r`: its point on the line of action ℓ_j = position + j·p_bt
+// (m), normal force (N; the resultant: frictionless), share of `total` (N), peak pressure (Pa)
+// and the contact band ±half_width (m) about ℓ_j; counts it as loaded above a share of 1e-6.
+void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double position, int j,
+                   double force, double total, double peak_pressure, double half_width);
+
 // What the 2D and 3D sweeps report alike for the position ℓ = `position` (m) under T1 = `torque`
 // (N·m) with `kinematic_pairs` pairs: the position and load, the base radii, no root stress
 // (NaN: the coarse body does not resolve the fillet), TE = the rigid approach `approach` (m), the

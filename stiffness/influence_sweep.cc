@@ -351,20 +351,8 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
   for (const double f : solution.force)
     total += f;
   for (std::size_t k = 0; k < pairs.size(); ++k)
-  {
-    ToothPairLoad load;
-    load.pair = pairs[k];
-    load.position = position + pairs[k] * pair.transverse_base_pitch;
-    load.normal_force = load.resultant = solution.force[k];
-    load.load_share = solution.force[k] / total;
-    load.max_pressure = solution.contact[k].peak_pressure;
-    load.contact_length = 2. * solution.contact[k].half_width;
-    load.closed_roll_min = load.position - solution.contact[k].half_width;
-    load.closed_roll_max = load.position + solution.contact[k].half_width;
-    r.loaded_pairs += load.load_share > 1e-6;
-    r.max_contact_pressure = std::max(r.max_contact_pressure, load.max_pressure);
-    r.pairs.push_back(load);
-  }
+    add_pair_load(r, model.frame, position, pairs[k], solution.force[k], total,
+                  solution.contact[k].peak_pressure, solution.contact[k].half_width);
   r.active_set_iterations = solution.active_set_passes;
   return r;
 }

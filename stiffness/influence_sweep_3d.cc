@@ -138,7 +138,6 @@ GearMeshStiffnessResult face_result(const FaceModel& model, double position,
                                     const std::vector<int>& pairs,
                                     const MeshContactSolution& solution, double torque)
 {
-  const kinematics::GearPairGeometry& pair = model.frame.pair;
   const double r_b1 = model.frame.pinion_base_radius(), r_b2 = model.frame.wheel_base_radius();
   const double dz = model.face_width / model.layers;
   // Unmodified flanks (the model refuses modifications): the unloaded TE is 0.
@@ -151,26 +150,17 @@ GearMeshStiffnessResult face_result(const FaceModel& model, double position,
   r.tangential_force = total;
   for (std::size_t k = 0; k < pairs.size(); ++k)
   {
-    ToothPairLoad load;
-    load.pair = pairs[k];
-    load.position = position + pairs[k] * pair.transverse_base_pitch;
-    double widest = 0.;
+    // The pair's force over its layers, its highest peak pressure and widest contact band.
+    double force = 0., peak = 0., widest = 0.;
     for (unsigned int s = 0; s < model.layers; ++s)
     {
       const std::size_t item = k * model.layers + s;
-      load.normal_force += solution.force[item];
-      load.max_pressure = std::max(load.max_pressure, solution.contact[item].peak_pressure);
+      force += solution.force[item];
+      peak = std::max(peak, solution.contact[item].peak_pressure);
       widest = std::max(widest, solution.contact[item].half_width);
       r.face_load.push_back({pairs[k], (s + 0.5) * dz, solution.force[item] / dz});
     }
-    load.resultant = load.normal_force;
-    load.load_share = load.normal_force / total;
-    load.contact_length = 2. * widest;
-    load.closed_roll_min = load.position - widest;
-    load.closed_roll_max = load.position + widest;
-    r.loaded_pairs += load.load_share > 1e-6;
-    r.max_contact_pressure = std::max(r.max_contact_pressure, load.max_pressure);
-    r.pairs.push_back(load);
+    add_pair_load(r, model.frame, position, pairs[k], force, total, peak, widest);
   }
   r.face_load_factor = summarise_face_load(r.face_load).factor;
   r.active_set_iterations = solution.active_set_passes;

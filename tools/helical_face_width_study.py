@@ -27,6 +27,8 @@ import re
 import subprocess
 import sys
 
+from report_csv import column, value
+
 # The small coarse pair of tests/helical (z 19/29, m_n 2 mm, x 0, the own_pair_coarse cell sizes
 # scaled to m_n 2 mm, Q1, frictionless) at β ±20°, so that ε_β 2.2 needs b 40 mm rather than
 # 53 mm at 15° (the layers follow ε_β, not b, so β does not change the cost).
@@ -68,18 +70,6 @@ def layers(eps_beta):
     with the count the refusal names (sweep() below)."""
     return max(5, math.ceil(16. * eps_beta - 1e-9))
 
-
-def value(report, key):
-    entry = report["values"][key]
-    return entry["value"] if isinstance(entry, dict) else entry
-
-
-def column(report, table, name):
-    data = report["tables"][table]
-    if "data" in data:
-        return list(data["data"][name])
-    index = data["columns"].index(name)
-    return [row[index] for row in data["rows"]]
 
 
 def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):

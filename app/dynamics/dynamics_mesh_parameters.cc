@@ -506,8 +506,6 @@ void apply_mesh_physics(const MeshPhysics& physics, dynamics::Mesh& mesh)
   mesh.friction_coefficient = physics.friction_coefficient;
   mesh.driver_friction_arm = physics.driver_friction_arm;
   mesh.driven_friction_arm = physics.driven_friction_arm;
-  if (physics.file)
-    mesh.table_force = physics.file->pair.tooth_force();
 }
 
 namespace

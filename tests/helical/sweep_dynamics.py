@@ -22,6 +22,10 @@ import shutil
 import subprocess
 import sys
 
+# tools/report_csv.py: value() and column() of a JSON report, as the tools read them.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from report_csv import column, value  # noqa: E402
+
 # z 19/29, m_n 2 mm, β 10° (ε_β = b·sin β/(π·m_n) = 0.221, so 2 layers by the twist rule; 5
 # layers so that the contact lines do not refuse them, docs/helical.md "Layers and the contact
 # lines"), b 8 mm, cell sizes coarse (the own_pair_coarse set of tests/cli scaled to m_n 2 mm).
@@ -55,18 +59,6 @@ def run(args, cwd):
                  f"{out.stderr.strip()[-1500:]}")
     return json.loads(out.stdout)
 
-
-def value(report, key):
-    entry = report["values"][key]
-    return entry["value"] if isinstance(entry, dict) else entry
-
-
-def column(report, table, name):
-    data = report["tables"][table]
-    if "data" in data:
-        return list(data["data"][name])
-    index = data["columns"].index(name)
-    return [row[index] for row in data["rows"]]
 
 
 class Checks:

@@ -105,13 +105,14 @@ TEST(HelicalScene, SpurContactLinesAreAxial)
   }
 }
 
-// Refused before gmsh runs, each naming the parameter the user typed.
+// Refused before gmsh runs, each naming its library field (app maps them to the parameter the
+// user typed: `Mesh/dimension`, `Mesh/layers`, checked by the cli.helical_* refusal tests).
 TEST(HelicalScene, RefusesWhatItCannotMesh)
 {
-  EXPECT_EQ(refusal(helical_spec(15., 2)), "Mesh/dimension");
+  EXPECT_EQ(refusal(helical_spec(15., 2)), "mesh.dimension");
   GearPairSceneSpec few = helical_spec(15.);
   few.mesh.layers = 6; // 8·ε_β = 6.33 needs 7
-  EXPECT_EQ(refusal(few), "Mesh/layers");
+  EXPECT_EQ(refusal(few), "mesh.layers");
   few.mesh.layers = 7;
   EXPECT_EQ(layers_for_twist(kinematics::compute_gear_pair(few.pair)), 7u);
   EXPECT_EQ(refusal(helical_spec(45.)), "pinion.helix_angle");

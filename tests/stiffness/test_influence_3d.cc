@@ -19,7 +19,7 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-using test_support::share_of;
+using test_support::largest_share_difference;
 
 // The exact sweep and the fast one on the same settings, position by position; returns the
 // worst |Δk| (-), |ΔTE| (m) and |Δshare| (-).
@@ -43,9 +43,7 @@ std::array<double, 3> compare_3d(const GearMeshStiffnessSettings& base, unsigned
     const GearMeshStiffnessResult &a = exact.positions[i], &b = fast.positions[i];
     const double dk = b.mesh_stiffness / a.mesh_stiffness - 1.;
     const double dte = b.transmission_error - a.transmission_error;
-    double dshare = 0.;
-    for (const int j : {-2, -1, 0, 1, 2})
-      dshare = std::max(dshare, std::abs(share_of(b, j) - share_of(a, j)));
+    const double dshare = largest_share_difference(a, b);
     std::cout << std::setprecision(6) << name << " " << i << ": k " << a.mesh_stiffness / 1e6
               << " / " << b.mesh_stiffness / 1e6 << " N/um (" << dk * 100 << " %), TE "
               << a.transmission_error * 1e6 << " / " << b.transmission_error * 1e6 << " um, share "

@@ -27,7 +27,7 @@ using namespace gearstiff::stiffness;
 
 namespace
 {
-using test_support::share_of;
+using test_support::largest_share_difference;
 
 struct Tolerances
 {
@@ -63,9 +63,7 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
     const GearMeshStiffnessResult &a = exact.positions[i], &b = fast.positions[i];
     const double dk = b.mesh_stiffness / a.mesh_stiffness - 1.;
     const double dte = b.transmission_error - a.transmission_error;
-    double dshare = 0.;
-    for (const int j : {-2, -1, 0, 1, 2})
-      dshare = std::max(dshare, std::abs(share_of(b, j) - share_of(a, j)));
+    const double dshare = largest_share_difference(a, b);
     const double dp = b.max_contact_pressure / a.max_contact_pressure - 1.;
     std::cout << std::setprecision(6) << name << " " << i << ": k " << a.mesh_stiffness / 1e6
               << " / " << b.mesh_stiffness / 1e6 << " N/um (" << dk * 100 << " %), TE "
