@@ -87,8 +87,8 @@ void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double po
 }
 
 GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension, double position,
-                                  std::size_t kinematic_pairs, double torque, double approach,
-                                  double unloaded)
+                                  std::size_t kinematic_pairs, double torque,
+                                  const MeshContactSolution& solution, double unloaded)
 {
   const kinematics::GearPairGeometry& pair = frame.pair;
   const double r_b1 = frame.pinion_base_radius();
@@ -103,8 +103,9 @@ GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension
   r.wheel_base_radius = frame.wheel_base_radius();
   r.pinion_root_stress = r.wheel_root_stress = std::numeric_limits<double>::quiet_NaN();
   r.unloaded_transmission_error = unloaded;
-  r.transmission_error = approach;
-  r.pinion_rotation = (approach - unloaded) / r_b1;
+  r.transmission_error = solution.approach;
+  r.pinion_rotation = (solution.approach - unloaded) / r_b1;
+  r.active_set_iterations = solution.active_set_passes;
   if (!(r.pinion_rotation > 0.))
     throw SolverFailure("influence-coefficient contact",
                         "the pinion did not rotate forward under the torque");

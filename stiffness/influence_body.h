@@ -76,12 +76,12 @@ void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double po
 
 // What the 2D and 3D sweeps report alike for the position ℓ = `position` (m) under T1 = `torque`
 // (N·m) with `kinematic_pairs` pairs: the position and load, the base radii, no root stress
-// (NaN: the coarse body does not resolve the fillet), TE = the rigid approach `approach` (m), the
-// unloaded TE `unloaded` (m) and k = T1/(r_b1²·Δφ) with Δφ = (approach − unloaded)/r_b1;
-// SolverFailure when the pinion did not turn forward.
+// (NaN: the coarse body does not resolve the fillet), TE = the rigid approach of `solution` (m),
+// the unloaded TE `unloaded` (m), k = T1/(r_b1²·Δφ) with Δφ = (approach − unloaded)/r_b1, and the
+// solve's active-set passes; SolverFailure when the pinion did not turn forward.
 GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension, double position,
-                                  std::size_t kinematic_pairs, double torque, double approach,
-                                  double unloaded);
+                                  std::size_t kinematic_pairs, double torque,
+                                  const MeshContactSolution& solution, double unloaded);
 
 // The grid of one pair's flanks: `count` points at ℓ = first + g·step.
 struct FlankGrid

@@ -336,7 +336,7 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
   const kinematics::GearPairGeometry& pair = model.frame.pair;
   const double r_b2 = model.frame.wheel_base_radius();
   GearMeshStiffnessResult r =
-      result_at(model.frame, 2, position, pairs.size(), torque, solution.approach,
+      result_at(model.frame, 2, position, pairs.size(), torque, solution,
                 *std::min_element(problem.separation.begin(), problem.separation.end()));
   // Frictionless: every force on its pair's force line, at the lever arm r_b2·μ_j about the
   // wheel (geometry/scene_gear_pair.h: an external wheel's centre lies across the line of
@@ -353,7 +353,6 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
   for (std::size_t k = 0; k < pairs.size(); ++k)
     add_pair_load(r, model.frame, position, pairs[k], solution.force[k], total,
                   solution.contact[k].peak_pressure, solution.contact[k].half_width);
-  r.active_set_iterations = solution.active_set_passes;
   return r;
 }
 

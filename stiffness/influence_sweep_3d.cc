@@ -142,7 +142,7 @@ GearMeshStiffnessResult face_result(const FaceModel& model, double position,
   const double dz = model.face_width / model.layers;
   // Unmodified flanks (the model refuses modifications): the unloaded TE is 0.
   GearMeshStiffnessResult r =
-      result_at(model.frame, 3, position, pairs.size(), torque, solution.approach, 0.);
+      result_at(model.frame, 3, position, pairs.size(), torque, solution, 0.);
   const double total = torque / r_b1; // Σ F: every force on the line of action (frictionless)
   r.torque_ratio = r_b2 / r_b1;
   r.wheel_torque = total * r_b2;
@@ -163,7 +163,6 @@ GearMeshStiffnessResult face_result(const FaceModel& model, double position,
     add_pair_load(r, model.frame, position, pairs[k], force, total, peak, widest);
   }
   r.face_load_factor = summarise_face_load(r.face_load).factor;
-  r.active_set_iterations = solution.active_set_passes;
   return r;
 }
 

@@ -265,8 +265,11 @@ TEST(ParallelStop, FailingSweepThrowsTheFirstFailingPositionOnEveryRank)
 {
   // One active-set iteration cannot converge (the first one always changes the closed set):
   // every position fails in its contact solve, one rank with position 1, the other with
-  // position 2, and every rank throws position 1's SolverFailure (the command exits 3 with that
-  // one line).
+  // position 2, and every rank throws the SolverFailure of the lowest position that failed (the
+  // command exits 3 with that one line). Which one that is depends on timing: the rank of
+  // position 2 may fail first and stop the other at its interruption point before position 1's
+  // solve ends (seen 2 in 4 runs on 2026-12-02, once in a fresh clone's ctest), so position 1 or
+  // 2 — never a later one, never none.
   stiffness::GearMeshStiffnessSettings settings;
   settings.contact.max_iterations = 1;
   stiffness::StiffnessSweepSpec spec;
@@ -279,7 +282,9 @@ TEST(ParallelStop, FailingSweepThrowsTheFirstFailingPositionOnEveryRank)
   catch (const SolverFailure& e)
   {
     EXPECT_EQ(e.method(), "contact active set");
-    EXPECT_EQ(e.reason().rfind("sweep position 1 (roll angle ", 0), 0u) << e.what();
+    EXPECT_TRUE(e.reason().rfind("sweep position 1 (roll angle ", 0) == 0 ||
+                e.reason().rfind("sweep position 2 (roll angle ", 0) == 0)
+        << e.what();
     EXPECT_NE(e.reason().find("no convergence within 1 iterations"), std::string::npos) << e.what();
   }
 }
