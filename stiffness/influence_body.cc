@@ -40,6 +40,30 @@ Point<2> rotated(const Point<2>& p, const Point<2>& centre, double angle)
 }
 } // namespace
 
+std::pair<std::size_t, double> locate_on_grid(const std::vector<FlankGrid>& grids, double step,
+                                              int j, double at)
+{
+  std::size_t offset = 0;
+  for (const FlankGrid& grid : grids)
+  {
+    if (grid.pair == j)
+    {
+      // 1e-9 m: the positions and the grid come from the same formulas.
+      if (at < grid.first - 1e-9 || at > grid.first + (grid.count - 1) * step + 1e-9)
+        throw InputError(stiffness_parameter::sweep_mesh,
+                         "influence coefficients: pair " + std::to_string(j) + " at " +
+                             format_number(at * 1e3, 6) +
+                             " mm along the line of action lies off its flank grid");
+      const double x = std::clamp((at - grid.first) / step, 0., grid.count - 1. - 1e-12);
+      const auto index = static_cast<std::size_t>(x);
+      return {offset + index, x - index};
+    }
+    offset += grid.count;
+  }
+  throw InputError(stiffness_parameter::sweep_mesh,
+                   "influence coefficients: pair " + std::to_string(j) + " has no flank grid");
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

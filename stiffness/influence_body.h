@@ -90,6 +90,12 @@ struct FlankGrid
   double first = 0.; // m
   unsigned int count = 0;
 };
+
+// The interval of pair j's flank grid (in `grids`, points numbered grid after grid, `step` m
+// apart) that holds ℓ = `at` (m): its first point's index and the fraction past it. InputError
+// naming Stiffness/sweep mesh for a position off the grid or a pair without one.
+std::pair<std::size_t, double> locate_on_grid(const std::vector<FlankGrid>& grids, double step,
+                                              int j, double at);
 // Every pair in contact at a position gets the grid points that cover the ℓ it takes in the
 // sweep (one step of margin each side, within the path of contact A–E).
 std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,

@@ -94,8 +94,8 @@ public:
   // varies over the depth h, not over the grid step); different flanks bilinearly (smooth).
   double operator()(int j, double at_j, double tilt_j, int k, double at_k, double tilt_k) const
   {
-    const auto [first_j, u_j] = locate(j, at_j);
-    const auto [first_k, u_k] = locate(k, at_k);
+    const auto [first_j, u_j] = locate_on_grid(grids, step, j, at_j);
+    const auto [first_k, u_k] = locate_on_grid(grids, step, k, at_k);
     const double along_j[2] = {1., tilt_j}, along_k[2] = {1., tilt_k};
     double c = 0.;
     for (const auto* body : {&pinion_c, &wheel_c})
@@ -116,31 +116,6 @@ public:
   std::size_t n_points() const { return pinion_c.front().size(); }
 
 private:
-  // The grid interval of pair j holding ℓ: its first point's index and the fraction past it.
-  std::pair<std::size_t, double> locate(int j, double at) const
-  {
-    std::size_t offset = 0;
-    for (const FlankGrid& grid : grids)
-    {
-      if (grid.pair == j)
-      {
-        const double x = (at - grid.first) / step;
-        // 1e-9 m: the positions and the grid come from the same formulas.
-        if (at < grid.first - 1e-9 || at > grid.first + (grid.count - 1) * step + 1e-9)
-          throw InputError(stiffness_parameter::sweep_mesh,
-                           "influence coefficients: pair " + std::to_string(j) + " at " +
-                               format_number(at * 1e3, 6) +
-                               " mm along the line of action lies off its flank grid");
-        const double clamped = std::clamp(x, 0., grid.count - 1. - 1e-12);
-        const auto index = static_cast<std::size_t>(clamped);
-        return {offset + index, clamped - index};
-      }
-      offset += grid.count;
-    }
-    throw InputError(stiffness_parameter::sweep_mesh,
-                     "influence coefficients: pair " + std::to_string(j) + " has no flank grid");
-  }
-
   std::vector<FlankGrid> grids;
   double step;
   unsigned int directions; // 1: along the normals only; 2: across them too

@@ -76,8 +76,8 @@ public:
   // m/N, both gears: layer s of pair j at ℓ_j loaded, layer t of pair k at ℓ_k read.
   double operator()(int j, double at_j, unsigned int s, int k, double at_k, unsigned int t) const
   {
-    const auto [first_j, u_j] = locate(j, at_j);
-    const auto [first_k, u_k] = locate(k, at_k);
+    const auto [first_j, u_j] = locate_on_grid(grids, step, j, at_j);
+    const auto [first_k, u_k] = locate_on_grid(grids, step, k, at_k);
     const auto item = [this](std::size_t g, unsigned int layer) { return g * layers + layer; };
     double c = 0.;
     for (const auto* m : {&pinion_c, &wheel_c})
@@ -94,29 +94,6 @@ public:
   std::size_t n_points() const { return pinion_c.size() / layers; }
 
 private:
-  std::pair<std::size_t, double> locate(int j, double at) const
-  {
-    std::size_t offset = 0;
-    for (const FlankGrid& grid : grids)
-    {
-      if (grid.pair == j)
-      {
-        // 1e-9 m: the positions and the grid come from the same formulas.
-        if (at < grid.first - 1e-9 || at > grid.first + (grid.count - 1) * step + 1e-9)
-          throw InputError(stiffness_parameter::sweep_mesh,
-                           "influence coefficients: pair " + std::to_string(j) + " at " +
-                               format_number(at * 1e3, 6) +
-                               " mm along the line of action lies off its flank grid");
-        const double x = std::clamp((at - grid.first) / step, 0., grid.count - 1. - 1e-12);
-        const auto index = static_cast<std::size_t>(x);
-        return {offset + index, x - index};
-      }
-      offset += grid.count;
-    }
-    throw InputError(stiffness_parameter::sweep_mesh,
-                     "influence coefficients: pair " + std::to_string(j) + " has no flank grid");
-  }
-
   std::vector<FlankGrid> grids;
   double step;
   unsigned int layers;

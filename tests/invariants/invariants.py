@@ -33,7 +33,9 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              pair: its mesh frequency z1*n1/60, its mean stiffness the sweep's,
                              and K_v = 1 at a quasi-static speed without friction (0.5 %);
                              its summary.json as the nonlinear model's TE file: the mean DTE
-                             is the model's quasi-static mean of e + W/k (1e-4)
+                             is the model's quasi-static mean of e + W/k (1e-4);
+                             the table's Gear 1 torque is the summary's pinion_torque, the load
+                             of its k(x) that `dynamics` checks a train against (1e-9)
 
 A pair `gearstiff gear-pair` accepts must also be one the FE scene accepts (the first defect
 this generator found: an automatic ring tip the tooth generator refused as topped).
@@ -53,6 +55,7 @@ import json
 import math
 import os
 import random
+import re
 import shlex
 import subprocess
 import sys
@@ -379,6 +382,13 @@ def own_train(case, runner, log, sweeps):
     z1 = int(case["pair"]["Gear pair/Pinion/teeth"])
     if f"z {z1}/" not in text:
         raise CaseFailure(f"stiffness_table.prm does not name this pair:\n{text[:400]}")
+    # The table runs the train at the torque its k(x) was solved at, which the summary states
+    # (`pinion_torque`, read by `gearstiff dynamics` for its load check): the same number.
+    gear1 = re.search(r"subsection Gear 1\n(?:.*\n)*?\s*set torque = ([-+0-9.eE]+)", text)
+    if gear1 is None:
+        raise CaseFailure(f"stiffness_table.prm sets no Gear 1 torque:\n{text[:400]}")
+    check_close("table torque = summary pinion_torque [N m]", float(gear1.group(1)),
+                value(sweep, "pinion_torque"), 0., 1e-9)
     resonance = float(text.split("resonance speed n_E1 = ")[1].split()[0])
     speed = 0.005 * resonance
     args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
