@@ -64,6 +64,22 @@ std::pair<std::size_t, double> locate_on_grid(const std::vector<FlankGrid>& grid
                    "influence coefficients: pair " + std::to_string(j) + " has no flank grid");
 }
 
+std::vector<std::vector<GearMeshStiffnessResult>> solve_positions(
+    const std::vector<double>& positions, std::size_t n_torques,
+    const std::function<std::vector<GearMeshStiffnessResult>(double, std::map<int, double>&)>&
+        solve)
+{
+  std::vector<std::vector<GearMeshStiffnessResult>> by_torque(n_torques);
+  std::map<int, double> warm;
+  for (const double position : positions)
+  {
+    const std::vector<GearMeshStiffnessResult> results = solve(position, warm);
+    for (std::size_t t = 0; t < n_torques; ++t)
+      by_torque[t].push_back(results[t]);
+  }
+  return by_torque;
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -55,6 +55,14 @@ struct FlankPoint
 };
 FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel);
 
+// Every position of a sweep in order, `solve` giving one position at every one of `n_torques`
+// torques, each position warm-started from the forces the one before left in `warm`; returned
+// as [torque][position].
+std::vector<std::vector<GearMeshStiffnessResult>> solve_positions(
+    const std::vector<double>& positions, std::size_t n_torques,
+    const std::function<std::vector<GearMeshStiffnessResult>(double, std::map<int, double>&)>&
+        solve);
+
 // Wall seconds since `start`.
 double seconds_since(std::chrono::steady_clock::time_point start);
 

@@ -438,15 +438,10 @@ InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
                        info.matching_depth};
   const PositionModel position_model{frame, compliance, separation,
                                      body,  body,       pair.common_face_width};
-  run.by_torque.assign(torques.size(), {});
-  std::map<int, double> warm;
-  for (const double position : positions)
-  {
-    const std::vector<GearMeshStiffnessResult> results =
-        solve_position(position_model, position, torques, warm, info.newton_steps);
-    for (std::size_t t = 0; t < torques.size(); ++t)
-      run.by_torque[t].push_back(results[t]);
-  }
+  run.by_torque = solve_positions(
+      positions, torques.size(),
+      [&](double position, std::map<int, double>& warm)
+      { return solve_position(position_model, position, torques, warm, info.newton_steps); });
   info.contact_time = seconds_since(start);
   return run;
 }

@@ -235,15 +235,10 @@ InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
                        LayerBody{settings.material.youngs_modulus, settings.material.poisson_ratio,
                                  info.matching_depth},
                        layers, face_width};
-  run.by_torque.assign(torques.size(), {});
-  std::map<int, double> warm;
-  for (const double position : positions)
-  {
-    const std::vector<GearMeshStiffnessResult> results =
-        solve_face_position(face, position, torques, warm, info.newton_steps);
-    for (std::size_t t = 0; t < torques.size(); ++t)
-      run.by_torque[t].push_back(results[t]);
-  }
+  run.by_torque = solve_positions(
+      positions, torques.size(),
+      [&](double position, std::map<int, double>& warm)
+      { return solve_face_position(face, position, torques, warm, info.newton_steps); });
   info.contact_time = seconds_since(start);
   return run;
 }
