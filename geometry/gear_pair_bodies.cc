@@ -423,8 +423,7 @@ void check_scene_spec(const GearPairSceneSpec& spec)
   check_wheel_bolt_holes(spec);
   if (!(spec.pinion_torque > 0.))
     throw InputError(scene_field::pinion_torque, "must be positive");
-  if (!(spec.young_modulus > 0.))
-    throw InputError(scene_field::young_modulus, "must be positive");
+  kinematics::check_young_modulus(spec.young_modulus, scene_field::young_modulus);
   kinematics::check_poisson_ratio(spec.poisson_ratio, scene_field::poisson_ratio);
 }
 

@@ -60,8 +60,7 @@ SceneInfo write_cylinders_scene(const CylindersSceneSpec& spec, const std::strin
   }
   if (!(spec.length > 0.))
     throw InputError(field::cylinders("length"), "must be positive");
-  if (!(spec.young_modulus > 0.))
-    throw InputError(field::cylinders("young_modulus"), "must be positive");
+  kinematics::check_young_modulus(spec.young_modulus, field::cylinders("young_modulus"));
   kinematics::check_poisson_ratio(spec.poisson_ratio, field::cylinders("poisson_ratio"));
 
   SceneContact contact;

@@ -14,6 +14,13 @@ void check_poisson_ratio(double poisson_ratio, const std::string& field)
                             "solution");
 }
 
+void check_young_modulus(double young_modulus, const std::string& field)
+{
+  if (!(young_modulus > 0.) || !std::isfinite(young_modulus))
+    throw InputError(field, "must be positive and finite (GPa): E = 0 leaves the body without "
+                            "stiffness");
+}
+
 double effective_modulus(const double young_modulus_1, const double poisson_ratio_1,
                          const double young_modulus_2, const double poisson_ratio_2)
 {

@@ -24,6 +24,10 @@ double effective_modulus(double young_modulus_1, double poisson_ratio_1, double 
 // below 0 (auxetic foams) no material of a gear drive. InputError naming `field` otherwise.
 void check_poisson_ratio(double poisson_ratio, const std::string& field);
 
+// The one range of a Young's modulus E (Pa) in every command: positive and finite (E = 0 leaves
+// a body without stiffness, and reached MUMPS as a singular matrix). InputError naming `field`.
+void check_young_modulus(double young_modulus, const std::string& field);
+
 // Load per unit length P (N/m), radii (m; a flat: infinity; concave: negative) with
 // 1/R = 1/R1 + 1/R2 > 0, effective modulus E* (Pa). The caller checks that P > 0 and R > 0.
 HertzLineContact hertz_line_contact(double load_per_length, double radius_1, double radius_2,

@@ -288,15 +288,18 @@ void check_cycloid_load_settings(const CycloidLoadSettings& s)
                      "the output torque needs at least one pin");
   if (s.scene_file.empty())
     throw InputError("scene file", "no path given for the scene mesh");
+  check_cycloid_materials(s);
+}
+
+void check_cycloid_materials(const CycloidLoadSettings& s)
+{
   // Material constants before any solver: E = 0 or ν = 0.5 reached MUMPS as a singular matrix
   // ("INFOG(1) = -10", exit 3), a failure of the input, not of the method.
   for (const auto& [material, name] :
        {std::pair{&s.material, field::cycloid_loads("young_modulus")},
         std::pair{&s.roller_material, field::cycloid_loads("roller_young_modulus")}})
   {
-    if (!(material->youngs_modulus > 0.) || !std::isfinite(material->youngs_modulus))
-      throw InputError(name, "must be positive and finite (GPa): E = 0 leaves the bodies "
-                             "without stiffness");
+    kinematics::check_young_modulus(material->youngs_modulus, name);
     kinematics::check_poisson_ratio(material->poisson_ratio, field::cycloid_loads("poisson_ratio"));
   }
 }

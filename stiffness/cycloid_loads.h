@@ -293,4 +293,7 @@ CycloidHysteresis cycloid_hysteresis(const CycloidLoadSettings& settings);
 
 // Checks what the scene cannot (torque, materials); throws InputError naming the parameter.
 void check_cycloid_load_settings(const CycloidLoadSettings& settings);
+// The material part of it (E and ν of disc, pins and rollers), which a caller can run as soon as
+// the parameters are read, before it announces any solve.
+void check_cycloid_materials(const CycloidLoadSettings& settings);
 } // namespace gearstiff::stiffness

@@ -38,7 +38,7 @@ void declare_parameters(ParameterHandler& prm)
   prm.declare_entry(
       "contact arc ratios", "0.27", List(Double(0., 0.5), 1),
       "epsilon: contact arc |alpha2 - alpha1| as a fraction of the lobe pitch 360°/z_s "
-      "(-, comma-separated list, each in (0, 0.5))");
+      "[-], a comma-separated list, each in (0, 0.5)");
   prm.declare_entry("clearance limit", "0.01", Double(0.),
                     "Delta r, largest clearance to the nominal profile over the contact arc [mm]");
   prm.declare_entry("disc rotation", "0", Double(-360., 360.),

@@ -91,6 +91,7 @@ CycloidLoadsParameters parse_cycloid_loads_parameters(ParameterHandler& prm)
                      "epsilon must lie in (0, 0.5): the contact arc is a fraction of half a lobe");
   if (s.scene.output_pins == 0)
     throw InputError("Cycloid scene/output pins", "the output torque needs at least one pin");
+  stiffness::check_cycloid_materials(s); // at parse time: no progress line before the error
   return p;
 }
 } // namespace gearstiff::app

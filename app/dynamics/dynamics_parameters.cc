@@ -30,9 +30,9 @@ const IsoEntry iso_entries[] = {
     {"transverse pressure angle", &IsoParameters::pressure_angle, degree, Double(0., 45.),
      "alpha_t: F_t = F_bt·cos alpha_t [deg]"},
     {"single stiffness", &IsoParameters::single_stiffness, newton_per_mm_micrometre, Double(0.),
-     "c' (N/(mm·µm)); 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)"},
+     "c' [N/(mm·µm)]; 0: c_gamma_alpha/(0.75·epsilon_alpha + 0.25)"},
     {"mesh stiffness", &IsoParameters::mesh_stiffness, newton_per_mm_micrometre, Double(0.),
-     "c_gamma_alpha (N/(mm·µm)); 0: the model's mean mesh stiffness / b"},
+     "c_gamma_alpha [N/(mm·µm)]; 0: the model's mean mesh stiffness / b"},
     {"pitch deviation", &IsoParameters::pitch_deviation, micrometre, Double(0.),
      "f_pb,eff = f_pb - y_p, effective base pitch deviation [µm]; the default is ISO 1328 grade "
      "6 for this size without running-in allowance"},
@@ -119,7 +119,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                       "kinematics module's split-path pair");
     prm.declare_entry("approach ratio", format_number(data.approach_ratio, 10), Double(0., 4.),
                       "epsilon_f, start of active contact to the pitch point in base pitches "
-                      "(-): where the friction force reverses; default from kinematics");
+                      "[-]: where the friction force reverses; default from kinematics");
     prm.declare_entry("placement angle", m == 1 ? "180" : "0", Double(-360., 360.),
                       "theta, angle of the driven gear's centre around the driver axis, "
                       "against the driver's rotation, from the driven gear of the first mesh "
@@ -136,7 +136,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "RK: Dormand-Prince 5(4) with error control; HHT-alpha: implicit, for "
                     "stiff meshes");
   prm.declare_entry("time step", "5", Double(0.),
-                    "step of RK4 and HHT-alpha, output interval of the adaptive method (µs)");
+                    "step of RK4 and HHT-alpha, output interval of the adaptive method [µs]");
   prm.declare_entry("allow unstable step", "false", Bool(),
                     "run RK4 with a step above the estimated stability limit");
   prm.declare_entry("relative tolerance", "1e-7", Double(0., 0.1),
@@ -147,7 +147,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
                     "initial state: static deflection under mean stiffness, or rest (the "
                     "torques applied suddenly)");
   prm.declare_entry("initial mesh position", "0", Double(0., 1.),
-                    "position of mesh 1 at t = 0, in base pitches (0: a pair enters contact)");
+                    "position of mesh 1 at t = 0 in base pitches [-]; 0: a pair enters contact");
   prm.declare_entry("steady state start", "-1", Double(),
                     "start of the K_v window [s]; negative: automatic, when the slowest mode "
                     "has decayed to 1/1000");
@@ -156,7 +156,7 @@ void declare_dynamics_parameters(ParameterHandler& prm)
   prm.declare_entry("window periods", "40", Integer(1, 100000),
                     "length of the automatic K_v window in periods of mesh 1 [-]");
   prm.declare_entry("output interval", "20", Double(0.),
-                    "spacing of the rows of the time-series CSV (µs); K_v uses every step");
+                    "spacing of the rows of the time-series CSV [µs]; K_v uses every step");
   prm.declare_entry("mesh model", "linear", Selection("linear|nonlinear"),
                     "linear: F = k·delta + c·delta'; nonlinear: F = k·h(delta - e) + c·(delta' - "
                     "e')·[in contact] with the unloaded TE e, free play (backlash), tooth "

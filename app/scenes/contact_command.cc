@@ -149,12 +149,12 @@ void declare_parameters(ParameterHandler& prm)
                     "empty: the built-in Hertz case (groups 'upper', 'lower', 'upper contact', "
                     "'upper top', 'lower contact', 'lower bottom')");
   prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3),
-                    "space dimension of the mesh (3: the built-in case is extruded by the "
+                    "space dimension of the mesh [-] (3: the built-in case is extruded by the "
                     "thickness into hexahedra)");
   prm.declare_entry("Length unit", "1e-3", Patterns::Double(1e-12),
-                    "m per mesh length unit (1e-3: the mesh is in mm)");
+                    "metres per mesh length unit [m] (1e-3: the mesh is in mm)");
   prm.declare_entry("Built-in fine size", "0.00625", Patterns::Double(1e-6),
-                    "mm, cell size at the contact point of the built-in Hertz case");
+                    "cell size at the contact point of the built-in Hertz case [mm]");
   prm.leave_subsection();
 
   declare_fe_contact_parameters(prm);
@@ -277,8 +277,7 @@ std::map<types::material_id, fem::Material> parse_bodies(ParameterHandler& prm,
     if (found == names.cells.end())
       throw InputError("Bodies/Names", "the mesh has no " + std::to_string(dim) +
                                            "D physical group named '" + body_names[b] + "'");
-    if (!(moduli[b] > 0.))
-      throw InputError("Bodies/Young's moduli", "must be positive");
+    kinematics::check_young_modulus(moduli[b] * 1e9, "Bodies/Young's moduli");
     kinematics::check_poisson_ratio(ratios[b], "Bodies/Poisson's ratios");
     materials[found->second] = fem::Material{moduli[b] * 1e9, ratios[b]};
   }

@@ -14,9 +14,9 @@ void declare_elasticity_parameters(ParameterHandler& prm)
                     "2D meshes only: plane strain (thick gears, ε_zz = 0) or plane stress "
                     "(thin webs, σ_zz = 0)");
   prm.declare_entry("Element degree", "1", Integer(1, 2),
-                    "polynomial degree of the FE_Q displacement elements (1 or 2)");
+                    "polynomial degree of the FE_Q displacement elements [-], 1 or 2");
   prm.declare_entry("Thickness", "1", Double(1e-9),
-                    "mm; out-of-plane depth of a 2D model (face width): all forces and torques "
+                    "out-of-plane depth of a 2D model (face width) [mm]: all forces and torques "
                     "are totals over it");
 }
 
@@ -36,10 +36,12 @@ void declare_linear_solver_parameters(ParameterHandler& prm)
                     "direct: MUMPS sparse Cholesky (default, robust in 2D); cg-gamg: CG with "
                     "PETSc GAMG and the rigid-body modes; cg-boomeramg: CG with hypre "
                     "BoomerAMG (nodal coarsening); the iterative ones for large 3D meshes");
-  prm.declare_entry("Relative tolerance", "1e-10", Double(1e-16, 1e-2),
-                    "-, iterative methods: stop when |b - A x| <= tolerance |b|");
-  prm.declare_entry("Max iterations", "5000", Integer(1),
-                    "-, iterative methods: iteration limit (reaching it is a solver failure)");
+  prm.declare_entry(
+      "Relative tolerance", "1e-10", Double(1e-16, 1e-2),
+      "relative residual of the iterative methods [-]: stop when |b - A x| <= tolerance |b|");
+  prm.declare_entry(
+      "Max iterations", "5000", Integer(1),
+      "iteration limit of the iterative methods [-]; reaching it is a solver failure");
 }
 
 fem::LinearSolverParameters parse_linear_solver_parameters(ParameterHandler& prm)
@@ -56,18 +58,19 @@ fem::LinearSolverParameters parse_linear_solver_parameters(ParameterHandler& prm
 void declare_contact_parameters(ParameterHandler& prm)
 {
   prm.declare_entry("Friction coefficient", "0", friction_coefficient_pattern(),
-                    "-, Coulomb friction coefficient μ between the surfaces (0: frictionless)");
+                    "Coulomb friction coefficient μ between the surfaces [-]; 0: frictionless");
   prm.declare_entry("Max iterations", "40", Integer(1, 1000),
-                    "-, active-set iterations per load step; reaching it is a solver failure");
+                    "active-set iterations per load step [-]; reaching it is a solver failure");
   prm.declare_entry("Load steps", "1", Integer(1, 1000),
-                    "-, equal load increments (friction is path dependent)");
-  prm.declare_entry("Search distance", "1", Double(0.),
-                    "mm, slave points farther than this from the master surface are never "
-                    "paired (small sliding: pairing is frozen in the reference configuration)");
+                    "equal load increments [-] (friction is path dependent)");
+  prm.declare_entry(
+      "Search distance", "1", Double(0.),
+      "search distance [mm]: slave points farther than this from the master "
+      "surface are never paired (small sliding: pairing is frozen in the reference configuration)");
   prm.declare_entry("Overlap tolerance", "1e-3", Double(0.),
-                    "mm, an initial overlap of the bodies beyond this is an input error");
+                    "largest initial overlap of the bodies [mm]; more is an input error");
   prm.declare_entry("Friction tolerance", "1e-8", Double(1e-14, 1e-2),
-                    "-, convergence of the slip forces relative to the largest normal force");
+                    "convergence of the slip forces relative to the largest normal force [-]");
   prm.declare_entry("Warm start", "true", Bool(),
                     "true: in a sweep, each position's active-set iteration starts from the "
                     "contact zone its neighbour converged to (mapped by initial gap, as the "

@@ -66,8 +66,8 @@ void declare_scene_mesh_parameters(ParameterHandler& prm,
 {
   prm.enter_subsection("Mesh");
   prm.declare_entry("dimension", std::to_string(defaults.dimension), Integer(2, 3),
-                    "2: quadrilaterals in the transverse plane; 3: hexahedra over the face "
-                    "width");
+                    "space dimension [-]; 2: quadrilaterals in the transverse plane, 3: "
+                    "hexahedra over the face width");
   prm.declare_entry("layers", std::to_string(defaults.layers), Integer(1, 1000),
                     "hexahedron layers across the face width [-] (3D)");
   prm.declare_entry("growth rate", format_number(defaults.growth_rate, 10), Double(0.01, 1.),

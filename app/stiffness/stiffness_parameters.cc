@@ -12,6 +12,7 @@
 #include "errors/limits.h"
 #include "geometry/tooth_fault.h"
 #include "kinematics/gear_pair.h"
+#include "kinematics/hertz.h"
 #include "stiffness/influence_sweep.h"
 #include "stiffness/transmission_error.h"
 
@@ -69,7 +70,7 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry("sweep base pitches", "1", Double(),
                     "span of the sweep in transverse base pitches [-] (1: one mesh period)");
   prm.declare_entry("sweep positions", "32", Integer(),
-                    "N, positions of the sweep [-], at the middles of N equal intervals");
+                    "positions N of the sweep [-], at the middles of N equal intervals");
   // Micro-geometry studies (issue 27): a list of torques, further modification sets.
   prm.declare_entry(
       "torques", "", Anything(),
@@ -350,11 +351,9 @@ void check_stiffness_parameters(StiffnessParameters& p, const kinematics::GearPa
   stiffness::GearMeshStiffnessSettings& s = p.settings;
   stiffness::check_stiffness_settings(s);
   // The pattern admits the closed interval; ν = 0.5 makes λ infinite (incompressible) and
-  // E = 0 no material at all.
-  if (!(s.material.youngs_modulus > 0.))
-    throw InputError(geometry::scene_field::young_modulus, "must be positive");
-  if (!(s.material.poisson_ratio > 0. && s.material.poisson_ratio < 0.5))
-    throw InputError(geometry::scene_field::poisson_ratio, "must lie in (0, 0.5)");
+  // E = 0 no material at all. One range for E and for ν in every command: kinematics' checks.
+  kinematics::check_young_modulus(s.material.youngs_modulus, geometry::scene_field::young_modulus);
+  kinematics::check_poisson_ratio(s.material.poisson_ratio, geometry::scene_field::poisson_ratio);
   // `once` rolls one factorization: the direct solver's Schur complement. With an iterative
   // solver the contact module refused it naming Contact/Iteration solves, which the user had
   // not set; full re-solve is refused there under its own name.
