@@ -206,6 +206,15 @@ def shares(row):
 
 
 SWEEP_POSITIONS = 5  # over one base pitch: both contact zones, and the suite's time in bounds
+# The sweeps of once = per position keep the default mesh sizes, although coarser ones were
+# tried for the suite's time (issue 43, 2026-12-02, cases 21 and 23 of seed 20261201, single
+# runs on the shared 2-core machine, so the times are only indicative): body size x1.5 or x2
+# saved nothing measurable (case 23: 14.8 s at the default, 14.1 s at x2) and contact size x2
+# none either (17.6 s), while |dk| between the two meshes grew (case 23: 0.074 % at the
+# default, 0.18 % at body x2, 0.15 % at contact x2; case 21: 0.106 % -> 0.20 % at contact x2)
+# towards the 0.5 % tolerance. A 5-position sweep's cost is its fixed part (the once sweep of
+# case 21: 7.9 s of sweep, 6.4 s of it meshing, set-up and factorization at position 1; the
+# per-position sweep ~2.2 s a position), which these sizes hardly move.
 
 
 def once_equals_per_position(case, runner, log, once_out=None):
@@ -501,6 +510,10 @@ def helical_statics(case, runner, log):
     # layer height squared (case 24 of seed 20261201, 22/31 teeth, m 1.5, b 16.4 mm, 4 layers:
     # 1.71 um beyond the 1 um overlap tolerance, measured 2026-12-02). The scene then refuses
     # them naming Mesh/layers and the count that cures it, which this case takes (once).
+    # The refused run stops in the set-up, before any factorization: on case 24 it costs 8.1 s
+    # (3.9 s of meshing 4 layers, then reading and the mortar pairing; single run, 2026-12-02) of
+    # the identity's 55 s; the 8-layer solve is the rest. Starting from a predicted count would
+    # save those 8 s only, and the overlap it must predict comes from the mortar gap itself.
     report, code, stderr = runner.run("stiffness", sets, allowed=(0, 2))
     needed = "Mesh/layers: too few for the contact lines"
     if code == 2 and needed in stderr:
