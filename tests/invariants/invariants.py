@@ -102,6 +102,14 @@ class Runner:
         report = json.loads(process.stdout) if process.stdout.strip() else {}
         return report, process.returncode, process.stderr
 
+    def timed(self, args, env=None):
+        """A process that is not a `gearstiff <command> --json` run with --set entries (the
+        dynamics on a table file, the Python module), timed for its identity all the same."""
+        start = time.monotonic()
+        process = subprocess.run(args, capture_output=True, text=True, env=env)
+        self.seconds[inspect.stack()[1].function] += time.monotonic() - start
+        return process
+
 
 def table(report, name):
     t = report["tables"][name]
@@ -361,8 +369,7 @@ def python_equals_cli(case, runner, log, sweeps):
               "print(json.dumps({'k': r['values']['mesh_stiffness']['value'],"
               " 'te': r['values']['transmission_error']['value']}))\n")
     env = dict(os.environ, PYTHONPATH=runner.python_path)
-    process = subprocess.run([sys.executable, "-c", script, json.dumps(params)],
-                             capture_output=True, text=True, env=env)
+    process = runner.timed([sys.executable, "-c", script, json.dumps(params)], env=env)
     if process.returncode != 0:
         raise CaseFailure(f"Python: {process.stderr.strip()[-600:]}")
     python = json.loads(process.stdout.strip().splitlines()[-1])
@@ -403,7 +410,7 @@ def own_train(case, runner, log, sweeps):
     args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
             "--set", f"Train/input speed={speed:.8g}",
             "--set", "Mesh 1/friction coefficient=0"]
-    process = subprocess.run(args, capture_output=True, text=True)
+    process = runner.timed(args)
     if process.returncode != 0:
         raise CaseFailure(f"dynamics on stiffness_table.prm exited {process.returncode}: "
                           f"{process.stderr.strip()[-600:]}")
@@ -435,7 +442,7 @@ def own_train_nonlinear(runner, log, sweep, out, table_file, speed):
             "--set", "Simulation/mesh model=nonlinear", "--set", "Mesh 1/backlash=1000",
             "--set", "Mesh 1/transmission error file=" + os.path.join(out, "summary.json"),
             "--set", "Speed sweep/points=0"]
-    process = subprocess.run(args, capture_output=True, text=True)
+    process = runner.timed(args)
     if process.returncode != 0:
         raise CaseFailure(f"nonlinear dynamics with the sweep's TE exited {process.returncode}: "
                           f"{process.stderr.strip()[-600:]}")
