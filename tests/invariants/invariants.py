@@ -102,6 +102,14 @@ class Runner:
         report = json.loads(process.stdout) if process.stdout.strip() else {}
         return report, process.returncode, process.stderr
 
+    def timed(self, args, env=None):
+        """A process that is not a `gearstiff <command> --json` run with --set entries (the
+        dynamics on a table file, the Python module), timed for its identity all the same."""
+        start = time.monotonic()
+        process = subprocess.run(args, capture_output=True, text=True, env=env)
+        self.seconds[inspect.stack()[1].function] += time.monotonic() - start
+        return process
+
 
 def table(report, name):
     t = report["tables"][name]
@@ -206,6 +214,15 @@ def shares(row):
 
 
 SWEEP_POSITIONS = 5  # over one base pitch: both contact zones, and the suite's time in bounds
+# The sweeps of once = per position keep the default mesh sizes, although coarser ones were
+# tried for the suite's time (issue 43, 2026-12-02, cases 21 and 23 of seed 20261201, single
+# runs on the shared 2-core machine, so the times are only indicative): body size x1.5 or x2
+# saved nothing measurable (case 23: 14.8 s at the default, 14.1 s at x2) and contact size x2
+# none either (17.6 s), while |dk| between the two meshes grew (case 23: 0.074 % at the
+# default, 0.18 % at body x2, 0.15 % at contact x2; case 21: 0.106 % -> 0.20 % at contact x2)
+# towards the 0.5 % tolerance. A 5-position sweep's cost is its fixed part (the once sweep of
+# case 21: 7.9 s of sweep, 6.4 s of it meshing, set-up and factorization at position 1; the
+# per-position sweep ~2.2 s a position), which these sizes hardly move.
 
 
 def once_equals_per_position(case, runner, log, once_out=None):
@@ -352,8 +369,7 @@ def python_equals_cli(case, runner, log, sweeps):
               "print(json.dumps({'k': r['values']['mesh_stiffness']['value'],"
               " 'te': r['values']['transmission_error']['value']}))\n")
     env = dict(os.environ, PYTHONPATH=runner.python_path)
-    process = subprocess.run([sys.executable, "-c", script, json.dumps(params)],
-                             capture_output=True, text=True, env=env)
+    process = runner.timed([sys.executable, "-c", script, json.dumps(params)], env=env)
     if process.returncode != 0:
         raise CaseFailure(f"Python: {process.stderr.strip()[-600:]}")
     python = json.loads(process.stdout.strip().splitlines()[-1])
@@ -394,7 +410,7 @@ def own_train(case, runner, log, sweeps):
     args = [runner.gearstiff, "dynamics", table_file, "--json", "--quiet",
             "--set", f"Train/input speed={speed:.8g}",
             "--set", "Mesh 1/friction coefficient=0"]
-    process = subprocess.run(args, capture_output=True, text=True)
+    process = runner.timed(args)
     if process.returncode != 0:
         raise CaseFailure(f"dynamics on stiffness_table.prm exited {process.returncode}: "
                           f"{process.stderr.strip()[-600:]}")
@@ -426,7 +442,7 @@ def own_train_nonlinear(runner, log, sweep, out, table_file, speed):
             "--set", "Simulation/mesh model=nonlinear", "--set", "Mesh 1/backlash=1000",
             "--set", "Mesh 1/transmission error file=" + os.path.join(out, "summary.json"),
             "--set", "Speed sweep/points=0"]
-    process = subprocess.run(args, capture_output=True, text=True)
+    process = runner.timed(args)
     if process.returncode != 0:
         raise CaseFailure(f"nonlinear dynamics with the sweep's TE exited {process.returncode}: "
                           f"{process.stderr.strip()[-600:]}")
@@ -501,6 +517,10 @@ def helical_statics(case, runner, log):
     # layer height squared (case 24 of seed 20261201, 22/31 teeth, m 1.5, b 16.4 mm, 4 layers:
     # 1.71 um beyond the 1 um overlap tolerance, measured 2026-12-02). The scene then refuses
     # them naming Mesh/layers and the count that cures it, which this case takes (once).
+    # The refused run stops in the set-up, before any factorization: on case 24 it costs 8.1 s
+    # (3.9 s of meshing 4 layers, then reading and the mortar pairing; single run, 2026-12-02) of
+    # the identity's 55 s; the 8-layer solve is the rest. Starting from a predicted count would
+    # save those 8 s only, and the overlap it must predict comes from the mortar gap itself.
     report, code, stderr = runner.run("stiffness", sets, allowed=(0, 2))
     needed = "Mesh/layers: too few for the contact lines"
     if code == 2 and needed in stderr:
