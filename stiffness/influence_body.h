@@ -1,5 +1,5 @@
-// The FE body of the influence-coefficient model (docs/ltca.md §1–2), shared by its 2D and 3D
-// sweeps (stiffness/influence_sweep.cc, stiffness/influence_sweep_3d.cc): where the flanks of
+// The FE body of the influence-coefficient model (docs/ltca.md §1–2), of its 2D and 3D sweep
+// (stiffness/influence_sweep.cc): where the flanks of
 // the meshed scene are (the transverse frame of geometry/scene_gear_pair.h), the flank grid
 // along the line of action, and the FE model of both gears — bores clamped, K factored once —
 // whose compliance between load points on the flanks and read points at the matching depth
@@ -13,7 +13,6 @@
 #include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 
-#include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
@@ -163,25 +162,4 @@ geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings
                                        const std::vector<double>& positions, double r_b1,
                                        double cell, double depth, unsigned int dimension);
 
-// Rank 0's whole run: scene, FE body, coefficients, positions.
-struct InfluenceRun
-{
-  std::vector<std::vector<GearMeshStiffnessResult>> by_torque; // [torque][position]
-  InfluenceModelInfo info;
-  template <class Archive>
-  void serialize(Archive& archive, const unsigned int /*version*/)
-  {
-    archive& by_torque;
-    archive& info;
-  }
-};
-
-// The 3D sweep of an unmodified external spur pair (stiffness/influence_sweep_3d.cc,
-// docs/ltca.md §3): the face cut into the FE body's hexahedron layers, one unknown force per
-// layer on every pair's contact line.
-InfluenceRun run_influence_3d(const GearMeshStiffnessSettings& settings,
-                              const kinematics::GearPairGeometry& pair,
-                              const std::vector<double>& positions,
-                              const std::vector<double>& torques, const std::string& file,
-                              const std::function<void(const std::string&)>& progress);
 } // namespace gearstiff::stiffness::influence

@@ -1,5 +1,8 @@
-// The influence-coefficient sweep (docs/ltca.md): FE body below a matching depth, analytic
-// Hertz layer above it, one small contact problem per position and torque.
+// The influence-coefficient sweep (docs/ltca.md), 2D and 3D: FE body below a matching depth,
+// analytic Hertz layer above it, one small contact problem per position and torque. The
+// dimensions differ only in the FE body (2D: the transverse section; 3D: the extruded scene
+// with the face cut into its hexahedron layers, docs/ltca.md §3), the flank grid's loads (a
+// point; a layer's line) and the cell size: everything else is the 2D model with one layer.
 #include "stiffness/influence_sweep.h"
 
 #include "errors/errors.h"
@@ -8,10 +11,12 @@
 #include "geometry/fields.h"
 #include "geometry/involute_tooth.h"
 #include "kinematics/fields.h"
+#include "stiffness/face_load.h"
 #include "stiffness/influence_body.h"
 #include "stiffness/ltca_contact.h"
 
 #include <algorithm>
+#include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -25,44 +30,69 @@ using namespace influence;
 
 namespace
 {
-// h_f, the FE body's cell size at the flanks, in normal modules: 0.1 mm for the default pair,
-// 3.3x the exact scene's contact size; the body is sized for tooth bending (docs/ltca.md §1).
-constexpr double flank_cell_modules = 0.04;
-// h = 3·h_f: a point load's FE response on Q2 cells is wrong within a cell or two of the load
-// and right at three cells' distance (docs/ltca.md §2: measured by the accuracy test).
-constexpr double matching_depth_cells = 3.;
-
-// C (m/N) of one gear between every pair of its grid points: a unit force at the surface point,
-// the displacement read at the matching depth, along the flank normal (direction 0) and, for
-// `directions` = 2, also across it (1): coefficients[2·p + q][a][b] for a load along p at point
-// a, read along q at point b (symmetric up to the depth offset).
-using CoefficientBlocks = std::vector<std::vector<std::vector<double>>>;
-CoefficientBlocks body_coefficients(const BodyModel<2>& model,
-                                    const std::vector<FlankPoint>& points, double depth,
-                                    double inset, unsigned int directions)
+// Rank 0's whole run: scene, FE body, coefficients, positions (broadcast to every rank).
+struct InfluenceRun
 {
-  std::vector<BodyPoint<2>> loads, reads;
-  for (const FlankPoint& p : points)
-    for (unsigned int d = 0; d < directions; ++d)
-    {
-      const Tensor<1, 2> along = d == 0 ? p.inward : p.across;
-      // The load a hair inside the surface: the meshed flank is a chord polygon of the involute.
-      loads.push_back({{p.surface + inset * p.inward}, {1.}, along, p.body});
-      reads.push_back({{p.surface + depth * p.inward}, {1.}, along, p.body});
-    }
-  const std::vector<std::vector<double>> compliance = body_compliance(model, loads, reads);
-  CoefficientBlocks blocks(
-      directions * directions,
-      std::vector<std::vector<double>>(points.size(), std::vector<double>(points.size(), 0.)));
-  for (unsigned int p = 0; p < directions; ++p)
-    for (unsigned int q = 0; q < directions; ++q)
-      for (std::size_t a = 0; a < points.size(); ++a)
-        for (std::size_t b = 0; b < points.size(); ++b)
-          blocks[directions * p + q][a][b] = compliance[directions * a + p][directions * b + q];
-  return blocks;
+  std::vector<std::vector<GearMeshStiffnessResult>> by_torque; // [torque][position]
+  InfluenceModelInfo info;
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& by_torque;
+    archive& info;
+  }
+};
+
+// h_f, the FE body's cell size at the flanks, in normal modules. 2D: 0.1 mm for the default
+// pair, 3.3x the exact scene's contact size; the body is sized for tooth bending (docs/ltca.md
+// §1). 3D: twice that (0.2 mm), so that the extruded body stays near the exact 3D scene's size
+// (docs/ltca.md §3, measured there).
+constexpr double flank_cell_modules(int dim)
+{
+  return dim == 2 ? 0.04 : 0.08;
+}
+// h = 3·h_f: a point (or layer's line) load's FE response is wrong within a cell or two of the
+// load and right at three cells' distance (docs/ltca.md §2: measured by the accuracy test).
+constexpr double matching_depth_cells = 3.;
+// The load points lie this many cells inside the surface: the meshed flank is a chord polygon of
+// the involute. 3D: its sagitta h_f²/(8ρ) reaches 1 µm for h_f = 0.2 mm at ρ = 5 mm; 4 µm under a
+// read 0.6 mm deep changes nothing the read sees.
+constexpr double inset_cells(int dim)
+{
+  return dim == 2 ? 1e-3 : 0.02;
 }
 
-// The influence coefficients of both gears on their flank grids, interpolated to any ℓ.
+// The load and the read of a flank point along `along`, one per layer of the face: in 2D the
+// point itself (the transverse section, one layer); in 3D a unit force spread uniformly over
+// layer s (two Gauss points integrate the Q1/Q2 shape functions along z exactly: the layer's
+// line load of the contact problem), read at the matching depth under the layer's middle.
+void add_layer_points(const FlankPoint& p, const Tensor<1, 2>& along, const Point<2>& load,
+                      const Point<2>& read, unsigned int /*layer*/, double /*dz*/,
+                      std::vector<BodyPoint<2>>& loads, std::vector<BodyPoint<2>>& reads)
+{
+  loads.push_back({{load}, {1.}, along, p.body});
+  reads.push_back({{read}, {1.}, along, p.body});
+}
+void add_layer_points(const FlankPoint& p, const Tensor<1, 2>& along_2d, const Point<2>& load,
+                      const Point<2>& read, unsigned int layer, double dz,
+                      std::vector<BodyPoint<3>>& loads, std::vector<BodyPoint<3>>& reads)
+{
+  const double gauss = 0.5 * dz / std::sqrt(3.);
+  const Tensor<1, 3> along({along_2d[0], along_2d[1], 0.});
+  const double z = (layer + 0.5) * dz;
+  loads.push_back({{Point<3>(load[0], load[1], z - gauss), Point<3>(load[0], load[1], z + gauss)},
+                   {0.5, 0.5},
+                   along,
+                   p.body});
+  reads.push_back({{Point<3>(read[0], read[1], z)}, {1.}, along, p.body});
+}
+
+// The influence coefficients of both gears on their flank grids, interpolated to any ℓ: C (m/N)
+// between every pair of items (grid point a, layer s, direction p), item (a·layers + s)·directions
+// + p: a unit force at the surface point (in 3D over the layer), the displacement read at the
+// matching depth, along the flank normal (direction 0) and, for a modified flank, also across it
+// (1; symmetric up to the depth offset).
+template <int dim>
 class FlankCompliance
 {
 public:
@@ -70,29 +100,36 @@ public:
   // meshed flank lies under the nominal involute.
   // `tilted`: the flanks are modified, so force lines turn (PairLine) and the coefficients
   // across the normal are computed too.
-  FlankCompliance(const BodyModel<2>& model, const PairFrame& frame, std::vector<FlankGrid> grids,
-                  double step, double depth, double inset,
+  FlankCompliance(const BodyModel<dim>& model, const PairFrame& frame, std::vector<FlankGrid> grids,
+                  double step, double depth, double inset, unsigned int layers, double face_width,
                   const std::function<double(double, bool)>& removal, bool tilted)
-      : grids(std::move(grids)), step(step), directions(tilted ? 2 : 1)
+      : grids(std::move(grids)), step(step), layers(layers), directions(tilted ? 2 : 1)
   {
     for (const bool wheel : {false, true})
     {
-      std::vector<FlankPoint> points;
+      std::vector<BodyPoint<dim>> loads, reads;
       for (const FlankGrid& grid : this->grids)
         for (unsigned int g = 0; g < grid.count; ++g)
         {
           const double at = grid.first + g * step;
-          points.push_back(flank_point(frame, grid.pair, at, wheel));
-          points.back().surface += removal(at, wheel) * points.back().inward;
+          FlankPoint p = flank_point(frame, grid.pair, at, wheel);
+          p.surface += removal(at, wheel) * p.inward;
+          const Point<2> load = p.surface + inset * p.inward, read = p.surface + depth * p.inward;
+          for (unsigned int s = 0; s < layers; ++s)
+            for (unsigned int d = 0; d < directions; ++d)
+              add_layer_points(p, d == 0 ? p.inward : p.across, load, read, s, face_width / layers,
+                               loads, reads);
         }
-      (wheel ? wheel_c : pinion_c) = body_coefficients(model, points, depth, inset, directions);
+      (wheel ? wheel_c : pinion_c) = body_compliance(model, loads, reads);
     }
   }
 
-  // C_jk (m/N), both gears, pair j at ℓ_j, pair k at ℓ_k, their force lines turned by τ_j, τ_k
-  // (rad; 0 without modifications). The same flank along its diagonal samples (its near field
-  // varies over the depth h, not over the grid step); different flanks bilinearly (smooth).
-  double operator()(int j, double at_j, double tilt_j, int k, double at_k, double tilt_k) const
+  // C (m/N), both gears, layer s of pair j at ℓ_j loaded, layer t of pair k at ℓ_k read, their
+  // force lines turned by τ_j, τ_k (rad; 0 without modifications). The same flank along its
+  // diagonal samples (its near field varies over the depth h, not over the grid step); different
+  // flanks bilinearly (smooth).
+  double operator()(int j, double at_j, double tilt_j, unsigned int s, int k, double at_k,
+                    double tilt_k, unsigned int t) const
   {
     const auto [first_j, u_j] = locate_on_grid(grids, step, j, at_j);
     const auto [first_k, u_k] = locate_on_grid(grids, step, k, at_k);
@@ -102,24 +139,26 @@ public:
       for (unsigned int p = 0; p < directions; ++p)
         for (unsigned int q = 0; q < directions; ++q)
         {
-          const auto& m = (*body)[directions * p + q];
+          const auto m = [&](std::size_t a, std::size_t b)
+          { return (*body)[(a * layers + s) * directions + p][(b * layers + t) * directions + q]; };
           const double weight = along_j[p] * along_k[q];
           if (j == k)
-            c += weight * ((1. - u_j) * m[first_j][first_j] + u_j * m[first_j + 1][first_j + 1]);
+            c += weight * ((1. - u_j) * m(first_j, first_j) + u_j * m(first_j + 1, first_j + 1));
           else
             c += weight *
-                 ((1. - u_j) * ((1. - u_k) * m[first_j][first_k] + u_k * m[first_j][first_k + 1]) +
-                  u_j * ((1. - u_k) * m[first_j + 1][first_k] + u_k * m[first_j + 1][first_k + 1]));
+                 ((1. - u_j) * ((1. - u_k) * m(first_j, first_k) + u_k * m(first_j, first_k + 1)) +
+                  u_j * ((1. - u_k) * m(first_j + 1, first_k) + u_k * m(first_j + 1, first_k + 1)));
         }
     return c;
   }
-  std::size_t n_points() const { return pinion_c.front().size(); }
+  std::size_t n_points() const { return pinion_c.size() / (layers * directions); }
 
 private:
   std::vector<FlankGrid> grids;
   double step;
+  unsigned int layers;     // 1 in 2D
   unsigned int directions; // 1: along the normals only; 2: across them too
-  CoefficientBlocks pinion_c, wheel_c;
+  std::vector<std::vector<double>> pinion_c, wheel_c;
 };
 
 // The designed separation of a pair at ℓ: both loaded flanks' removal at their roll lengths
@@ -184,13 +223,15 @@ private:
 };
 
 // What every position needs: where the flanks are, their coefficients, gaps and near field.
+// What every position needs besides the coefficients: where the flanks are, their gaps and near
+// field, and the layers the face is cut into (1 in 2D).
 struct PositionModel
 {
   const PairFrame& frame;
-  const FlankCompliance& compliance;
   const PairSeparation& separation;
   LayerBody pinion, wheel;
-  double face_width = 0.; // m
+  double face_width = 0.; // m, b
+  unsigned int layers = 1;
 };
 
 // Cells of the near-field strip across a contact whose gap is not a Hertz parabola: over
@@ -299,77 +340,105 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   return line;
 }
 
-// The result of one position at one torque, as GearMeshStiffness reports it. Root stresses are
-// not evaluated by this model: NaN (printed "nan", null in JSON), never a number that could be
-// read as a stress.
-GearMeshStiffnessResult position_result(const PositionModel& model, double position,
-                                        const std::vector<int>& pairs,
-                                        const std::vector<PairLine>& lines,
-                                        const MeshContactProblem& problem,
-                                        const MeshContactSolution& solution, double torque)
+// The result of one position at one torque from the solved forces (unknown a·layers + s: layer s
+// of pair a), as GearMeshStiffness reports it. Root stresses are not evaluated by this model: NaN
+// (printed "nan", null in JSON), never a number that could be read as a stress.
+template <int dim>
+GearMeshStiffnessResult
+position_result(const PositionModel& model, double position, const std::vector<int>& pairs,
+                const std::vector<PairLine>& lines, const MeshContactProblem& problem,
+                const MeshContactSolution& solution, double torque)
 {
   const kinematics::GearPairGeometry& pair = model.frame.pair;
   const double r_b2 = model.frame.wheel_base_radius();
+  const double dz = model.face_width / model.layers;
   GearMeshStiffnessResult r =
-      result_at(model.frame, 2, position, pairs.size(), torque, solution,
+      result_at(model.frame, dim, position, pairs.size(), torque, solution,
                 *std::min_element(problem.separation.begin(), problem.separation.end()));
   // Frictionless: every force on its pair's force line, at the lever arm r_b2·μ_j about the
   // wheel (geometry/scene_gear_pair.h: an external wheel's centre lies across the line of
   // action from the pinion's, a ring's on its side).
-  double wheel_moment = 0.;
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-    wheel_moment += solution.force[k] * lines[k].wheel_lever * r_b2;
+  double wheel_moment = 0., total = 0.;
+  for (std::size_t item = 0; item < solution.force.size(); ++item)
+  {
+    wheel_moment += solution.force[item] * lines[item / model.layers].wheel_lever * r_b2;
+    total += solution.force[item];
+  }
   r.torque_ratio = wheel_moment / torque;
   r.wheel_torque = (pair.spec.wheel.internal ? -1. : 1.) * wheel_moment;
   r.pinion_hub_torque = -torque;
-  double total = 0.;
-  for (const double f : solution.force)
-    total += f;
+  if (dim == 3)
+    r.tangential_force = total;
   for (std::size_t k = 0; k < pairs.size(); ++k)
-    add_pair_load(r, model.frame, position, pairs[k], solution.force[k], total,
-                  solution.contact[k].peak_pressure, solution.contact[k].half_width);
+  {
+    // The pair's force over its layers, its highest peak pressure and widest contact band.
+    double force = 0., peak = 0., widest = 0.;
+    for (unsigned int s = 0; s < model.layers; ++s)
+    {
+      const std::size_t item = k * model.layers + s;
+      force += solution.force[item];
+      peak = std::max(peak, solution.contact[item].peak_pressure);
+      widest = std::max(widest, solution.contact[item].half_width);
+      if (dim == 3)
+        r.face_load.push_back({pairs[k], (s + 0.5) * dz, solution.force[item] / dz});
+    }
+    add_pair_load(r, model.frame, position, pairs[k], force, total, peak, widest);
+  }
+  if (dim == 3)
+    r.face_load_factor = summarise_face_load(r.face_load).factor;
   return r;
 }
 
 // One position under every torque (ascending), each warm-started from the previous solve
-// (`warm`: force per pair j, carried from position to position).
-std::vector<GearMeshStiffnessResult> solve_position(const PositionModel& model, double position,
-                                                    const std::vector<double>& torques,
-                                                    std::map<int, double>& warm,
-                                                    unsigned int& newton_steps)
+// (`warm`: force per unknown j·layers + s, carried from position to position). One unknown per
+// (pair, layer): in 3D each layer carries the plane-strain Hertz layer of its own line load (a
+// uniform line load's layer is plane strain; the FE body couples the layers below the depth).
+template <int dim>
+std::vector<GearMeshStiffnessResult>
+solve_position(const PositionModel& model, const FlankCompliance<dim>& compliance, double position,
+               const std::vector<double>& torques, std::map<int, double>& warm,
+               unsigned int& newton_steps)
 {
   const kinematics::GearPairGeometry& pair = model.frame.pair;
   const std::vector<int> pairs = geometry::gear_pairs_in_contact(pair, position);
+  const unsigned int layers = model.layers;
   MeshContactProblem problem;
-  problem.face_width = model.face_width;
+  problem.face_width = model.face_width / layers; // each unknown is one layer's force
   problem.pinion = model.pinion;
   problem.wheel = model.wheel;
   std::vector<double> at;
   std::vector<PairLine> lines;
+  std::vector<int> keys;
   const double largest_force = torques.back() / model.frame.pinion_base_radius();
   for (const int j : pairs)
   {
     at.push_back(position + j * pair.transverse_base_pitch);
-    problem.separation.push_back(model.separation(at.back()));
     // ρ1 = ℓ, ρ2 = |ℓ − T1T2|; a ring's flank is concave (docs/ltca.md §3).
     const double rho1 = at.back(), rho2 = std::abs(at.back() - model.frame.t2);
-    problem.relative_radius.push_back(1. /
-                                      (1. / rho1 + (pair.spec.wheel.internal ? -1. : 1.) / rho2));
-    lines.push_back(pair_line(model, at.back(), problem.relative_radius.back(), largest_force));
-    problem.lever_ratio.push_back(lines.back().pinion_lever);
-    problem.strip.push_back(lines.back().strip);
+    const double relative_radius = 1. / (1. / rho1 + (pair.spec.wheel.internal ? -1. : 1.) / rho2);
+    lines.push_back(pair_line(model, at.back(), relative_radius, largest_force));
+    for (unsigned int s = 0; s < layers; ++s)
+    {
+      problem.separation.push_back(model.separation(at.back()));
+      problem.relative_radius.push_back(relative_radius);
+      problem.lever_ratio.push_back(lines.back().pinion_lever);
+      problem.strip.push_back(lines.back().strip);
+      keys.push_back(j * static_cast<int>(layers) + static_cast<int>(s));
+    }
   }
   for (std::size_t a = 0; a < pairs.size(); ++a)
-  {
-    problem.compliance.emplace_back();
-    for (std::size_t b = 0; b < pairs.size(); ++b)
-      problem.compliance.back().push_back(
-          model.compliance(pairs[a], at[a], lines[a].tilt, pairs[b], at[b], lines[b].tilt));
-  }
+    for (unsigned int s = 0; s < layers; ++s)
+    {
+      problem.compliance.emplace_back();
+      for (std::size_t b = 0; b < pairs.size(); ++b)
+        for (unsigned int t = 0; t < layers; ++t)
+          problem.compliance.back().push_back(
+              compliance(pairs[a], at[a], lines[a].tilt, s, pairs[b], at[b], lines[b].tilt, t));
+    }
   return solve_torques(
-      problem, model.frame, pairs, torques, warm, newton_steps,
+      problem, model.frame, keys, torques, warm, newton_steps,
       [&](const MeshContactSolution& solution, double torque)
-      { return position_result(model, position, pairs, lines, problem, solution, torque); });
+      { return position_result<dim>(model, position, pairs, lines, problem, solution, torque); });
 }
 
 // The grid step must follow the gap's kinks and the near field's depth (docs/ltca.md, limits).
@@ -390,18 +459,22 @@ void check_grid_step(double step, double depth, const PairSeparation& separation
                          " mm must be at most half of it; use more points");
 }
 
-InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
-                           const kinematics::GearPairGeometry& pair,
-                           const std::vector<double>& positions, const std::vector<double>& torques,
-                           const std::string& file,
-                           const std::function<void(const std::string&)>& progress)
+// Rank 0's whole run: the FE body's scene and factorization, the coefficients, every position.
+template <int dim>
+InfluenceRun
+run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPairGeometry& pair,
+              const std::vector<double>& positions, const std::vector<double>& torques,
+              const std::string& file, const std::function<void(const std::string&)>& progress)
 {
   GearMeshStiffnessSettings settings = given;
-  settings.elasticity.thickness = pair.common_face_width; // as GearMeshStiffness: b
+  settings.elasticity.thickness = pair.common_face_width; // as GearMeshStiffness: b (2D)
+  const unsigned int layers = dim == 3 ? settings.scene.mesh.layers : 1;
+  const std::string model_name =
+      dim == 3 ? "influence coefficients (3D)" : "influence coefficients";
   InfluenceRun run;
   InfluenceModelInfo& info = run.info;
   info.grid_points = settings.influence_grid_points;
-  info.flank_cell_size = flank_cell_modules * pair.spec.pinion.normal_module;
+  info.flank_cell_size = flank_cell_modules(dim) * pair.spec.pinion.normal_module;
   info.matching_depth = matching_depth_cells * info.flank_cell_size;
   info.grid_step = pair.path_of_contact / (info.grid_points - 1);
   PairFrame frame(pair);
@@ -411,37 +484,43 @@ InfluenceRun run_influence(const GearMeshStiffnessSettings& given,
   auto start = std::chrono::steady_clock::now();
   const double r_b1 = frame.pinion_base_radius();
   const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
-      body_scene(settings, positions, r_b1, info.flank_cell_size, info.matching_depth, 2), file);
+      body_scene(settings, positions, r_b1, info.flank_cell_size, info.matching_depth, dim), file);
   info.scene_time = seconds_since(start);
   frame.scene_position = scene.reference_position;
 
   start = std::chrono::steady_clock::now();
-  const BodyModel<2> model = factor_body_model<2>(settings, file);
+  const BodyModel<dim> model = factor_body_model<dim>(settings, file);
   info.n_dofs = model.system->get_dof_handler().n_dofs();
   info.factorization_time = seconds_since(start);
   if (progress)
-    progress("influence coefficients: FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
-             format_number(info.flank_cell_size * 1e3, 3) + " mm, factored in " +
+    progress(model_name + ": FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
+             format_number(info.flank_cell_size * 1e3, 3) + " mm, " +
+             (dim == 3 ? std::to_string(layers) + " layers, " : std::string()) + "factored in " +
              format_number(info.factorization_time, 3) + " s");
 
   start = std::chrono::steady_clock::now();
   const std::vector<FlankGrid> grids = flank_grids(pair, positions, info.grid_step);
   info.flanks = 2 * grids.size();
-  const FlankCompliance compliance(
-      model, frame, grids, info.grid_step, info.matching_depth, 1e-3 * info.flank_cell_size,
+  const FlankCompliance<dim> compliance(
+      model, frame, grids, info.grid_step, info.matching_depth,
+      inset_cells(dim) * info.flank_cell_size, layers, pair.common_face_width,
       [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
       separation.modified());
   info.coefficient_time = seconds_since(start);
+  if (progress && dim == 3)
+    progress(model_name + ": " + std::to_string(compliance.n_points()) + " grid points x " +
+             std::to_string(layers) + " layers, " + format_number(info.coefficient_time, 3) + " s");
 
   start = std::chrono::steady_clock::now();
   const LayerBody body{settings.material.youngs_modulus, settings.material.poisson_ratio,
                        info.matching_depth};
-  const PositionModel position_model{frame, compliance, separation,
-                                     body,  body,       pair.common_face_width};
-  run.by_torque = solve_positions(
-      positions, torques.size(),
-      [&](double position, std::map<int, double>& warm)
-      { return solve_position(position_model, position, torques, warm, info.newton_steps); });
+  const PositionModel position_model{frame, separation, body, body, pair.common_face_width, layers};
+  run.by_torque = solve_positions(positions, torques.size(),
+                                  [&](double position, std::map<int, double>& warm)
+                                  {
+                                    return solve_position<dim>(position_model, compliance, position,
+                                                               torques, warm, info.newton_steps);
+                                  });
   info.contact_time = seconds_since(start);
   return run;
 }
@@ -470,11 +549,7 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
         InfluenceRun local;
         const fem::Failure failure = fem::catch_failure(
             [&]()
-            {
-              local = dim == 3
-                          ? run_influence_3d(settings, pair, positions, torques, file, progress)
-                          : run_influence(settings, pair, positions, torques, file, progress);
-            });
+            { local = run_influence<dim>(settings, pair, positions, torques, file, progress); });
         std::filesystem::remove(file);
         failure.rethrow("");
         return local;
