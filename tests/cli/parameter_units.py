@@ -42,11 +42,10 @@ def main():
                 checked += 1
                 if not BRACKETED.search(doc):
                     problems.append(f"{command}: {name}: no [unit]: {doc[:60]}")
-    print(f"{checked} numeric parameters of {len(COMMANDS)} commands checked")
-    for line in problems:
-        print(line)
-    return 1 if problems else 0
+    if problems:
+        sys.exit("\n".join(problems))
+    print(f"{checked} numeric parameters of {len(COMMANDS)} commands checked, each with [unit]")
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()
