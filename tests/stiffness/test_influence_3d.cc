@@ -111,10 +111,12 @@ TEST(InfluenceCoefficients3D, DISABLED_LeadCrowningAgainstExact)
   EXPECT_LT(worst[3], 0.02);
 }
 
-// The same at 8 and 16 layers (by hand: --gtest_also_run_disabled_tests; 2 and ~6 min): the
-// 4-layer difference is the node planes' spacing along the face. Measured 2026-12-02 at 8 layers
-// (Δz 3 mm): k +1.65, +1.72, +0.55, +0.63 %, TE −0.12, −0.13, −0.06, −0.06 µm, shares within
-// 0.0015, K_Hβ fast 2.311, 2.317, 1.887, 1.910 against exact 2.273, 2.274, 1.858, 1.881
+// The same at 8 layers (by hand: --gtest_also_run_disabled_tests; ~2 min): the 4-layer
+// difference is the node planes' spacing along the face. 16 layers is above the exact path's
+// cell limit at this contact size (3.4e5 hexahedra against 2e5: "use at most 9 layers"). Measured
+// 2026-12-02 at 8 layers (Δz 3 mm): k +1.65, +1.72, +0.55, +0.63 %, TE −0.12, −0.13, −0.06, −0.06
+// µm, shares within 0.0015, K_Hβ fast 2.311, 2.317, 1.887, 1.910 against
+// exact 2.273, 2.274, 1.858, 1.881
 // (|ΔK_Hβ| ≤ 1.87 %); the exact path's own K_Hβ moved 2.06 → 2.27 from 4 to 8 layers.
 void lead_crowning_layers(unsigned int layers)
 {
@@ -129,8 +131,4 @@ void lead_crowning_layers(unsigned int layers)
 TEST(InfluenceCoefficients3D, DISABLED_LeadCrowningEightLayers)
 {
   lead_crowning_layers(8);
-}
-TEST(InfluenceCoefficients3D, DISABLED_LeadCrowningSixteenLayers)
-{
-  lead_crowning_layers(16);
 }
