@@ -217,10 +217,10 @@ namespace
 // Pair j's near field: the strip where its gap is not a Hertz parabola, else Hertz.
 LineContact near_field(const MeshContactProblem& problem, int j, double force)
 {
+  const double width = problem.width.empty() ? problem.face_width : problem.width[j];
   if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
-    return strip_line_contact(force, problem.face_width, problem.strip[j], problem.pinion,
-                              problem.wheel);
-  return hertz_line_contact(force, problem.face_width, problem.relative_radius[j], problem.pinion,
+    return strip_line_contact(force, width, problem.strip[j], problem.pinion, problem.wheel);
+  return hertz_line_contact(force, width, problem.relative_radius[j], problem.pinion,
                             problem.wheel);
 }
 

@@ -77,6 +77,9 @@ struct MeshContactProblem
   // Pair j's near field: empty gap → Hertz (relative_radius[j]); else the strip solution.
   std::vector<ContactStrip> strip;
   double face_width = 0.; // m, b
+  // m, the face width each unknown's near field spreads its force over (a 3D model's layer or
+  // node plane: its line load is F_j/width_j). Empty: face_width for every unknown.
+  std::vector<double> width;
   LayerBody pinion, wheel;
 };
 
