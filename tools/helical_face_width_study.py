@@ -55,7 +55,7 @@ TORQUE_PER_WIDTH = 2.5  # N·m/mm
 # curve's (the samples need not fall on the zone edges). Chosen for cost: the widest face runs
 # 32 layers on this 2-core machine.
 POSITIONS = 6
-STUDY = [0.25, 0.5, 1.0, 1.5, 2.0]
+STUDY = [0.25, 0.5, 1.0, 1.5, 2.0, 2.2]
 
 
 def face_width(eps_beta):
@@ -127,6 +127,8 @@ def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):
 
 
 def write_outputs(folder, rows, curves):
+    rows = sorted(rows, key=lambda r: r["eps_beta"])
+    curves = dict(sorted(curves.items()))
     keys = list(rows[0].keys())
     with open(os.path.join(folder, "face_width_study.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
