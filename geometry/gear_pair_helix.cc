@@ -26,6 +26,20 @@ namespace
 // (the load along it is resolved like the spur scene's 8 layers across the face).
 constexpr double layers_per_overlap = 8.;
 
+// -, the default layers per unit of ε_β of a helical scene: twice the twist rule's, for the
+// contact lines. Within a layer the mortar gap of a flank node near a line crossing it at β_b
+// comes out negative by an error that grows as the layer height squared (docs/helical.md "Layers
+// and the contact lines"); at 16 per unit it stays within half the 1 µm overlap tolerance on
+// every pair measured (2026-12-02: the built-in pair at β 15°, 13 layers, ≈ −0.32 µm scaled from
+// −0.538 µm at 10; case 24 of the invariants, 8 layers, −0.461 µm; the face-width study's pair at
+// β 20°, 16 per unit at every ε_β), where the twist rule's 8 per unit are refused (−1.71 and
+// −2.13 µm) or 2 % stiff (the built-in pair's 7 layers against 14, "Mesh convergence").
+constexpr double default_layers_per_overlap = 16.;
+// -, the default body size of a helical scene over the spur default: the cells of a twisted
+// scene scale with its layers, and the built-in pair at 0.7 mm exceeds the cell limit at 8
+// layers already; its ladder (7–14 layers) is measured at twice the spur size.
+constexpr double default_body_size_factor = 2.;
+
 // -, sin β_b = sin β·cos α_n (ISO 21771), from the pinion's signed β.
 double cos_base_helix(const kinematics::GearPairSpec& pair)
 {
@@ -65,6 +79,19 @@ GearPairSceneSpec transverse_section_spec(const GearPairSceneSpec& spec)
 unsigned int layers_for_twist(const kinematics::GearPairGeometry& pair)
 {
   return static_cast<unsigned int>(std::ceil(layers_per_overlap * pair.overlap_ratio - 1e-9));
+}
+
+SceneMeshSettings helical_mesh_defaults(const SceneMeshSettings& spur,
+                                        const kinematics::GearPairGeometry& pair)
+{
+  if (!detail::is_helical_pair(pair))
+    return spur;
+  SceneMeshSettings helical = spur;
+  helical.layers = std::max(
+      spur.layers,
+      static_cast<unsigned int>(std::ceil(default_layers_per_overlap * pair.overlap_ratio - 1e-9)));
+  helical.body_size = default_body_size_factor * spur.body_size;
+  return helical;
 }
 
 namespace detail
@@ -121,30 +148,25 @@ double model_section(const kinematics::GearPairGeometry& pair)
 
 std::vector<double> face_positions(const kinematics::GearPairGeometry& pair, double reference)
 {
+  // Every section across the face, also those whose model-section pair (j = 0) lies off the path
+  // of contact: there the pairs j = ±2 can touch (ε_β > 2 − ε_α), and their contact lines need
+  // the same refinement as the others' (add_swept_contacts keeps each pair's points on the path).
+  // A quarter base pitch apart, so that no pair's interval of sections ((ε_α − 1)·p_bt long at
+  // least) falls between two samples.
   const double half = 0.5 * pair.common_face_width * std::abs(contact_shift_rate(pair));
-  const double from = std::max(reference - half, pair.contact_start);
-  const double to = std::min(reference + half, pair.contact_end);
   const double step = 0.25 * pair.transverse_base_pitch;
-  const unsigned int n = static_cast<unsigned int>(std::ceil((to - from) / step)) + 1;
+  const unsigned int n = static_cast<unsigned int>(std::ceil(2. * half / step)) + 1;
   std::vector<double> positions;
   for (unsigned int k = 0; k < n; ++k)
-    positions.push_back(n == 1 ? from : from + (to - from) * k / (n - 1));
+    positions.push_back(n == 1 ? reference : reference - half + 2. * half * k / (n - 1));
   return positions;
 }
 
 std::vector<int> pairs_across_face(const kinematics::GearPairGeometry& pair, double reference)
 {
-  // Every section, also those whose model-section pair (j = 0) lies off the path of contact:
-  // there the pairs j = ±2 can touch (ε_β > 2 − ε_α), which face_positions' sections (within the
-  // path) never meet. Sampled as face_positions is, a quarter base pitch apart, so that no pair's
-  // interval of sections ((ε_α − 1)·p_bt long at least) falls between two samples.
-  const double half = 0.5 * pair.common_face_width * std::abs(contact_shift_rate(pair));
-  const double step = 0.25 * pair.transverse_base_pitch;
-  const unsigned int n = static_cast<unsigned int>(std::ceil(2. * half / step)) + 1;
   std::vector<int> pairs;
-  for (unsigned int k = 0; k < n; ++k)
-    for (const int j :
-         pairs_in_contact(pair, n == 1 ? reference : reference - half + 2. * half * k / (n - 1)))
+  for (const double section : face_positions(pair, reference))
+    for (const int j : pairs_in_contact(pair, section))
       pairs.push_back(j);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());

@@ -95,8 +95,8 @@ bool is_helical_pair(const kinematics::GearPairGeometry& pair);
 double contact_shift_rate(const kinematics::GearPairGeometry& pair);
 // m, z of the section that is the transverse model (the middle of the face).
 double model_section(const kinematics::GearPairGeometry& pair);
-// m, the positions ℓ the sections across the face meet with the model section at `reference`,
-// sampled every quarter base pitch, within the path of contact.
+// m, the positions ℓ the sections across the face meet with the model section at `reference`
+// (reference ± b·tan β_b/2), sampled every quarter base pitch, also beyond the path of contact.
 std::vector<double> face_positions(const kinematics::GearPairGeometry& pair, double reference);
 // The pairs j in contact in some section across the face.
 std::vector<int> pairs_across_face(const kinematics::GearPairGeometry& pair, double reference);

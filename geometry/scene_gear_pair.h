@@ -181,6 +181,12 @@ bool is_helical(const GearPairSceneSpec& spec);
 GearPairSceneSpec transverse_section_spec(const GearPairSceneSpec& spec);
 // -, the fewest layers across the face that follow a helical pair's twist: 8 per unit of ε_β.
 unsigned int layers_for_twist(const kinematics::GearPairGeometry& pair);
+// The default mesh settings of the pair's scene from the spur defaults: for a helical pair
+// 16 layers per unit of ε_β (at least the spur count; they follow the contact lines, not only
+// the twist) and twice the body size (so that they stay under the cell limit); `spur` itself for
+// a spur pair. docs/helical.md "Default mesh".
+SceneMeshSettings helical_mesh_defaults(const SceneMeshSettings& spur,
+                                        const kinematics::GearPairGeometry& pair);
 
 // The roll-length ranges of the pinion (wheel = false) or the wheel flank against its mate
 // (geometry/tooth_modification.h), from the pair and the generated tooth.

@@ -44,7 +44,8 @@ CASE = ["--set", "Gear pair/Pinion/teeth=19", "--set", "Gear pair/Wheel/teeth=29
         "--set", "Mesh/dimension=3", "--set", "Finite elements/Element degree=1",
         "--set", "Contact/Friction coefficient=0",
         "--set", "Mesh/contact size=0.15", "--set", "Mesh/fine radius=0.4",
-        "--set", "Mesh/body size=0.75", "--set", "Mesh/rim size=2.5"]
+        "--set", "Mesh/rim size=2.5"]
+BODY_SIZE = 0.75  # mm, the own_pair_coarse body size scaled to m_n 2 mm
 # The same load per unit face width at every width (the TE of a wider face under the same torque
 # would fall by the width alone): 2.5 N·m/mm, the small pair's 20 N·m on 8 mm.
 TORQUE_PER_WIDTH = 2.5  # N·m/mm
@@ -54,7 +55,7 @@ TORQUE_PER_WIDTH = 2.5  # N·m/mm
 # curve's (the samples need not fall on the zone edges). Chosen for cost: the widest face runs
 # 32 layers on this 2-core machine.
 POSITIONS = 6
-STUDY = [0.25, 0.5, 1.0, 1.5, 2.0]
+STUDY = [0.25, 0.5, 1.0, 1.5, 2.0, 2.2]
 
 
 def face_width(eps_beta):
@@ -76,19 +77,36 @@ def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):
     """One width's sweep: its summary row and its per-position k and TE."""
     b = face_width(eps_beta)
     count = layers(eps_beta)
+    teeth = 3  # the command's default on either gear; a wide face may need more, retried below
+    body = BODY_SIZE  # mm; a wide face with its extra tooth may need coarser bodies, below
     while True:
         args = [gearstiff, "stiffness", "--json", "--quiet", "--set", "Stiffness/mode=sweep",
                 "--set", f"Stiffness/sweep positions={positions}",
                 "--set", f"Gear pair/Pinion/face width={b:.6f}",
                 "--set", f"Gear pair/Wheel/face width={b:.6f}",
                 "--set", f"Mesh/layers={count}",
+                "--set", f"Gear pair scene/pinion teeth modelled={teeth}",
+                "--set", f"Gear pair scene/wheel teeth modelled={teeth}",
+                "--set", f"Mesh/body size={body:.4g}",
                 "--set", f"Gear pair scene/pinion torque={TORQUE_PER_WIDTH * b:.6f}"]
         out = subprocess.run(args + CASE + list(extra), capture_output=True, text=True)
         needed = re.search(r"Mesh/layers: .*too few for the contact lines.*use at least (\d+) layers",
                            out.stderr)
-        if out.returncode != 2 or not needed:
+        # Beyond ε_β ≈ 2(2 − ε_α) the pairs ±2 touch near the face ends (docs/helical.md "Face
+        # width and ε_β"): 4 or more pairs, more than the default 3 teeth modelled.
+        more_teeth = re.search(r"teeth modelled: .*must be at least the number of pairs in "
+                               r"contact \((\d+)\)", out.stderr)
+        # The cell limit (2e5 hexahedra, docs/limits.md): the layers stay (the contact lines need
+        # them), the bodies away from the flanks coarsen by 15 % a step; the row states it.
+        too_many_cells = re.search(r"Mesh/layers: .*hexahedra \(limit", out.stderr)
+        if out.returncode != 2 or not (needed or more_teeth or too_many_cells):
             break
-        count = int(needed.group(1))
+        if too_many_cells:
+            body *= 1.15
+        elif needed:
+            count = int(needed.group(1))
+        else:
+            teeth = max(teeth + 1, int(more_teeth.group(1)))
     if out.returncode != 0:
         sys.exit(f"helical_face_width_study: ε_β {eps_beta}: gearstiff exited {out.returncode}: "
                  f"{out.stderr.strip()[-1500:]}")
@@ -96,7 +114,8 @@ def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):
     k = column(report, "stiffness_sweep", "stiffness")
     te = column(report, "stiffness_sweep", "transmission_error")
     mean = value(report, "mean_stiffness")
-    row = {"eps_beta": eps_beta, "face_width_mm": b, "layers": count,
+    row = {"eps_beta": eps_beta, "face_width_mm": b, "layers": count, "teeth_modelled": teeth,
+           "body_size_mm": body,
            "torque_Nm": TORQUE_PER_WIDTH * b, "positions": len(k),
            "k_mean": mean, "k_min": min(k), "k_max": max(k),
            "k_fluctuation_percent": (max(k) - min(k)) / mean * 100.,
@@ -108,6 +127,8 @@ def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):
 
 
 def write_outputs(folder, rows, curves):
+    rows = sorted(rows, key=lambda r: r["eps_beta"])
+    curves = dict(sorted(curves.items()))
     keys = list(rows[0].keys())
     with open(os.path.join(folder, "face_width_study.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
@@ -119,13 +140,13 @@ def write_outputs(folder, rows, curves):
         for eps_beta, (k, te) in curves.items():
             for i, (ki, ti) in enumerate(zip(k, te)):
                 w.writerow([eps_beta, i + 1, f"{ki:.9g}", f"{ti:.9g}"])
-    lines = ["| ε_β | b (mm) | layers | T1 (N·m) | k mean (N/µm) | k min–max (N/µm) | "
+    lines = ["| ε_β | b (mm) | layers | teeth | body (mm) | T1 (N·m) | k mean (N/µm) | k min–max (N/µm) | "
              "(max − min)/mean | TE p-p (µm) | TE mean (µm) | ISO c_γβ·b (N/µm) | "
              "FE mean − ISO | sweep (s) |",
-             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r['eps_beta']:.2f} | {r['face_width_mm']:.2f} | {r['layers']} | "
-                     f"{r['torque_Nm']:.1f} | {r['k_mean']:.1f} | {r['k_min']:.1f}–{r['k_max']:.1f} "
+                     f"{r['teeth_modelled']} | {r['body_size_mm']:.2f} | {r['torque_Nm']:.1f} | {r['k_mean']:.1f} | {r['k_min']:.1f}–{r['k_max']:.1f} "
                      f"| {r['k_fluctuation_percent']:.1f} % | {r['te_peak_to_peak_um']:.3f} | "
                      f"{r['te_mean_um']:.3f} | {r['iso_c_gamma_beta_b']:.1f} | "
                      f"{r['mean_vs_iso_beta_percent']:+.1f} % | {r['sweep_wall_s']:.0f} |")

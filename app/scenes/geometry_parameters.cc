@@ -56,6 +56,27 @@ const std::vector<MeshSizeEntry>& mesh_size_entries()
   return entries;
 }
 
+// -, Mesh/layers: `auto` takes `automatic`; else a count from 1 to 1000.
+unsigned int read_layers(const std::string& text, unsigned int automatic)
+{
+  if (text == "auto")
+    return automatic;
+  std::size_t used = 0;
+  long count = 0;
+  try
+  {
+    count = std::stol(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || count < 1 ||
+      count > 1000)
+    throw InputError("Mesh/layers", "'" + text + "' is neither a count from 1 to 1000 nor auto");
+  return static_cast<unsigned int>(count);
+}
+
 // The built-in pair's normal module [m], the reference of the `auto` mesh sizes.
 constexpr double reference_module = 2.5e-3;
 } // namespace
@@ -68,8 +89,16 @@ void declare_scene_mesh_parameters(ParameterHandler& prm,
   prm.declare_entry("dimension", std::to_string(defaults.dimension), Integer(2, 3),
                     "space dimension [-]; 2: quadrilaterals in the transverse plane, 3: "
                     "hexahedra over the face width");
-  prm.declare_entry("layers", std::to_string(defaults.layers), Integer(1, 1000),
-                    "hexahedron layers across the face width [-] (3D)");
+  if (sizes_follow_module)
+    prm.declare_entry("layers", "auto", Anything(),
+                      "hexahedron layers across the face width [-] (3D, 1 to 1000); auto = " +
+                          std::to_string(defaults.layers) +
+                          ", for a helical pair 16 per unit of overlap ratio ε_β (at least " +
+                          std::to_string(defaults.layers) +
+                          ") with twice the automatic body size (docs/helical.md)");
+  else
+    prm.declare_entry("layers", std::to_string(defaults.layers), Integer(1, 1000),
+                      "hexahedron layers across the face width [-] (3D)");
   prm.declare_entry("growth rate", format_number(defaults.growth_rate, 10), Double(0.01, 1.),
                     "cell size increase per unit distance beyond the fine radius [-]");
   for (const MeshSizeEntry& entry : mesh_size_entries())
@@ -86,6 +115,14 @@ void declare_scene_mesh_parameters(ParameterHandler& prm,
   prm.leave_subsection();
 }
 
+geometry::SceneMeshSettings gear_pair_mesh_defaults(const geometry::SceneMeshSettings& spur,
+                                                    const kinematics::GearPairSpec& pair)
+{
+  if (pair.pinion.helix_angle == 0.)
+    return spur;
+  return geometry::helical_mesh_defaults(spur, kinematics::compute_gear_pair(pair));
+}
+
 double mesh_module_scale(const kinematics::GearPairSpec& pair)
 {
   return kinematics::has_split_path_teeth(pair) ? 1. : pair.pinion.normal_module / reference_module;
@@ -98,7 +135,7 @@ parse_scene_mesh_parameters(ParameterHandler& prm, const geometry::SceneMeshSett
   geometry::SceneMeshSettings mesh;
   prm.enter_subsection("Mesh");
   mesh.dimension = prm.get_integer("dimension");
-  mesh.layers = prm.get_integer("layers");
+  mesh.layers = read_layers(prm.get("layers"), defaults.layers);
   mesh.growth_rate = prm.get_double("growth rate");
   for (const MeshSizeEntry& entry : mesh_size_entries())
   {

@@ -33,6 +33,10 @@ void declare_scene_mesh_parameters(dealii::ParameterHandler& prm,
 geometry::SceneMeshSettings parse_scene_mesh_parameters(
     dealii::ParameterHandler& prm, const geometry::SceneMeshSettings& defaults = {},
     double module_scale = 1., std::vector<kinematics::DerivedSize>* derived = nullptr);
+// The `auto` mesh settings of a gear-pair scene: `spur` for a spur pair, for a helical pair
+// geometry::helical_mesh_defaults (more layers, coarser bodies).
+geometry::SceneMeshSettings gear_pair_mesh_defaults(const geometry::SceneMeshSettings& spur,
+                                                    const kinematics::GearPairSpec& pair);
 // m_n / 2.5 mm, exactly 1 for the teeth of the built-in pair (its results stay bit-identical).
 double mesh_module_scale(const kinematics::GearPairSpec& pair);
 

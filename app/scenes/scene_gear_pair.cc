@@ -135,11 +135,12 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   std::vector<kinematics::DerivedSize> derived;
   spec.pair = parse_gear_pair_parameters(prm, derived);
   parse_gear_scene_parameters(prm, spec);
-  spec.mesh =
-      parse_scene_mesh_parameters(prm,
-                                  stiffness_scene ? stiffness::default_stiffness_scene().mesh
-                                                  : geometry::GearPairSceneSpec().mesh,
-                                  mesh_module_scale(spec.pair), &derived);
+  spec.mesh = parse_scene_mesh_parameters(
+      prm,
+      gear_pair_mesh_defaults(stiffness_scene ? stiffness::default_stiffness_scene().mesh
+                                              : geometry::GearPairSceneSpec().mesh,
+                              spec.pair),
+      mesh_module_scale(spec.pair), &derived);
   prm.enter_subsection("Gear pair scene");
   spec.position = geometry::parse_pair_position(prm.get("position"), "Gear pair scene/position");
   spec.pinion_roll_angle = prm.get_double("pinion roll angle") * degree;

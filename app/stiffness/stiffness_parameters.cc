@@ -416,8 +416,9 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   prm.enter_subsection("Gear pair scene");
   s.pinion_torque = prm.get_double("pinion torque");
   prm.leave_subsection();
-  s.scene.mesh = parse_scene_mesh_parameters(prm, s.scene.mesh, mesh_module_scale(s.scene.pair),
-                                             &p.derived_sizes);
+  s.scene.mesh =
+      parse_scene_mesh_parameters(prm, gear_pair_mesh_defaults(s.scene.mesh, s.scene.pair),
+                                  mesh_module_scale(s.scene.pair), &p.derived_sizes);
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Stiffness");

@@ -121,6 +121,31 @@ TEST(HelicalScene, RefusesWhatItCannotMesh)
   EXPECT_EQ(refusal(swept), scene_field::swept_positions);
 }
 
+// The defaults a helical pair takes (docs/helical.md "Default mesh"): the built-in pair at
+// β ±15° (ε_β 0.79) gets 16 per unit of ε_β, 13 layers (the ladder: 10 layers −0.36 % against
+// 14, 7 layers +2.07 %; a mortar gap ≈ −0.32 µm within half the 1 µm tolerance) and twice the
+// spur body size, 1.4 mm (the ladder's; 0.7 mm exceeds the cell limit at 8 layers already). A
+// narrow face keeps the spur count (8), and a spur pair keeps the spur defaults exactly.
+TEST(HelicalScene, DefaultMeshFollowsTheContactLines)
+{
+  SceneMeshSettings spur; // the stiffness command's defaults for the built-in pair
+  spur.dimension = 3;
+  spur.layers = 8;
+  spur.body_size = 0.7e-3;
+  const GearPairSceneSpec built_in = helical_spec(15.);
+  const SceneMeshSettings helical =
+      helical_mesh_defaults(spur, kinematics::compute_gear_pair(built_in.pair));
+  EXPECT_EQ(helical.layers, 13u);
+  EXPECT_DOUBLE_EQ(helical.body_size, 1.4e-3);
+  EXPECT_EQ(helical.contact_size, spur.contact_size);
+  GearPairSceneSpec narrow = helical_spec(5.); // ε_β 0.26: 16·ε_β = 4.2 < 8
+  EXPECT_EQ(helical_mesh_defaults(spur, kinematics::compute_gear_pair(narrow.pair)).layers, 8u);
+  const SceneMeshSettings same =
+      helical_mesh_defaults(spur, kinematics::compute_gear_pair(helical_spec(0.).pair));
+  EXPECT_EQ(same.layers, 8u);
+  EXPECT_EQ(same.body_size, spur.body_size);
+}
+
 // ISO 21771 hands: an external pair with one hand, an internal pair with two.
 TEST(HelicalScene, RefusesWrongHands)
 {
