@@ -15,22 +15,27 @@ std::string shortened(const std::string& text, const unsigned int length)
   return text.substr(0, end) + "… (" + std::to_string(text.size()) + " characters)";
 }
 
-bool read_length_or_auto(const std::string& text, const std::string& parameter,
-                         const std::string& what, double& value)
+bool read_whole_number(const std::string& text, double& number)
 {
-  if (text == "auto")
-    return true;
   std::size_t used = 0;
-  double number = -1.;
   try
   {
     number = std::stod(text, &used);
   }
   catch (const std::exception&)
   {
-    used = 0;
+    return false;
   }
-  if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !(number >= 0.))
+  return text.find_first_not_of(" \t", used) == std::string::npos;
+}
+
+bool read_length_or_auto(const std::string& text, const std::string& parameter,
+                         const std::string& what, double& value)
+{
+  if (text == "auto")
+    return true;
+  double number = -1.;
+  if (!read_whole_number(text, number) || !(number >= 0.))
     throw InputError(parameter,
                      "'" + shortened(text) + "' is neither a " + what + " >= 0 [mm] nor auto");
   value = number * mm;

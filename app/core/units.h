@@ -27,6 +27,9 @@ std::string table_unit(const std::string& unit);
 // and its size, so that a 200 kB value does not become a 200 kB error line.
 std::string shortened(const std::string& text, unsigned int length = limits::echoed_value_length);
 
+// The number a whole parameter text spells (trailing blanks allowed): false for anything else.
+bool read_whole_number(const std::string& text, double& number);
+
 // A length parameter that reads a number >= 0 [mm] or `auto`: true for `auto` (`value` left as
 // is), else `value` in m; anything else is an InputError naming `parameter` ("a `what` >= 0").
 bool read_length_or_auto(const std::string& text, const std::string& parameter,

@@ -3,6 +3,8 @@
 #include "app/core/parameter_patterns.h"
 #include "app/core/units.h"
 
+#include <cmath>
+
 namespace gearstiff::app
 {
 void declare_cycloid_disc_parameters(ParameterHandler& prm)
@@ -61,19 +63,11 @@ unsigned int read_layers(const std::string& text, unsigned int automatic)
 {
   if (text == "auto")
     return automatic;
-  std::size_t used = 0;
-  long count = 0;
-  try
-  {
-    count = std::stol(text, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || count < 1 ||
-      count > 1000)
-    throw InputError("Mesh/layers", "'" + text + "' is neither a count from 1 to 1000 nor auto");
+  double count = 0.;
+  if (!read_whole_number(text, count) || !(count >= 1. && count <= 1000.) ||
+      count != std::floor(count))
+    throw InputError("Mesh/layers",
+                     "'" + shortened(text) + "' is neither a count from 1 to 1000 nor auto");
   return static_cast<unsigned int>(count);
 }
 
