@@ -7,7 +7,7 @@
 //  3. the lead modifications (PlanarModel::node_offset, geometry/tooth_modification_lead.h),
 //     applied on the untwisted section before the turn;
 //  4. partial-width faults (PlanarFill::removed): the cells of a fill whose centre lies in the
-//     fault are left out with the faces on them.
+//     fault are left out with the faces on them (a twisted body's centre turned back first).
 // The cell checks (mesh_quality.cc) run after 2 and 3, so a twist too coarse for its layers is a
 // failed check, not a silent mesh.
 #include "errors/errors.h"
@@ -44,6 +44,27 @@ Eigen::Vector2d BodyTwist::untwisted(const Eigen::Vector2d& point, const double 
 
 namespace detail
 {
+namespace
+{
+// A fault's test of a cell centre, which it states in the transverse model: the cells are tested
+// after the path's turn (step 2 before 4), so a twisted body's centre is turned back first — a
+// helical tooth's partial crack follows the tooth along its helix, as its through-face outline
+// does.
+std::function<bool(const Eigen::Vector3d&)>
+section_test(const std::function<bool(const Eigen::Vector3d&)>& removed,
+             const std::map<int, BodyTwist>& twists, const int material_id)
+{
+  const auto twist = twists.find(material_id);
+  if (twist == twists.end())
+    return removed;
+  return [removed, body = twist->second](const Eigen::Vector3d& centre)
+  {
+    const Eigen::Vector2d section = body.untwisted(centre.head<2>(), centre.z());
+    return removed(Eigen::Vector3d(section.x(), section.y(), centre.z()));
+  };
+}
+} // namespace
+
 // 3D: extrude each body's surface together with its fills (one call, so that their shared
 // curves sweep one lateral surface); gmsh returns, per surface, the top surface, the volume and
 // the lateral surfaces.
@@ -76,8 +97,9 @@ void extrude_surfaces(const PlanarModel& model, const MeshOptions& options, Gmsh
         entities.volumes.emplace_back(extruded[starts[k] + 1].second, material_id);
       else
       {
-        entities.fill_volumes.emplace_back(extruded[starts[k] + 1].second,
-                                           model.bodies[b].fills[k - 1].removed);
+        entities.fill_volumes.emplace_back(
+            extruded[starts[k] + 1].second,
+            section_test(model.bodies[b].fills[k - 1].removed, model.twist, material_id));
         entities.volumes.emplace_back(extruded[starts[k] + 1].second, material_id);
       }
       const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : extruded.size();
@@ -210,13 +232,14 @@ std::vector<OwnSurface> own_surfaces(int volume, const std::set<FaceKey>& remove
 
 // 3D: the hexahedra of each fill whose centre lies in its fault left out, with the faces of its
 // own boundary surfaces (end faces, the closing pieces' lateral surfaces) on them; the rest
-// stays the body's material. Returns the number of hexahedra left out.
-unsigned long remove_fill_cells(const GmshEntities& entities)
+// stays the body's material. Returns the number of hexahedra left out of each material.
+std::map<int, unsigned long> remove_fill_cells(const GmshEntities& entities)
 {
   static constexpr unsigned int hex_faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                                    {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   const auto nodes = node_coordinates();
-  unsigned long removed_count = 0;
+  const std::map<int, int> material_of(entities.volumes.begin(), entities.volumes.end());
+  std::map<int, unsigned long> removed_count;
   for (const auto& [volume, removed] : entities.fill_volumes)
   {
     std::vector<std::size_t> hex_tags, hex_nodes;
@@ -242,7 +265,7 @@ unsigned long remove_fill_cells(const GmshEntities& entities)
     }
     if (kept_tags.size() == hex_tags.size())
       continue;
-    removed_count += hex_tags.size() - kept_tags.size();
+    removed_count[material_of.at(volume)] += hex_tags.size() - kept_tags.size();
     used.insert(kept_nodes.begin(), kept_nodes.end());
     const std::vector<OwnSurface> own = own_surfaces(volume, removed_faces, used);
     std::vector<std::size_t> node_tags;

@@ -11,7 +11,6 @@
 #include "geometry/fields.h"
 #include "geometry/gear_pair_internal.h"
 #include "geometry/scene_gear_pair.h"
-#include "geometry/tooth_fault.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,12 +121,19 @@ void check_helical_scene(const GearPairSceneSpec& spec, const kinematics::GearPa
     throw InputError(scene_field::swept_positions,
                      "a helical pair is meshed per position: rolling one mesh through the sweep "
                      "is not verified on twisted teeth");
+  // A root crack leaves the flanks whole, so the pairs carry as on the healthy scene; a spall, a
+  // chipped or a broken tooth decide which pairs carry by where a pair touches (docs/faults.md
+  // "Which pairs carry"), one point per pair, while a helical pair touches along a line that
+  // crosses the fault in some sections only.
   for (const GearModifications* m : {&spec.pinion_modifications, &spec.wheel_modifications})
     for (const auto& [index, list] : m->by_tooth)
-      if (has_faults(list))
-        throw InputError(
-            kinematics::gear_parameter_name(m == &spec.wheel_modifications, "faulty tooth"),
-            "tooth faults are modelled on spur pairs only (helix angle 0)");
+      for (const ToothModification& fault : list)
+        if (is_fault(fault.kind) && fault.kind != ModificationKind::root_crack)
+          throw InputError(
+              kinematics::gear_parameter_name(m == &spec.wheel_modifications,
+                                              fault_name(fault.kind)),
+              "a helical pair carries root cracks only: a spall, a chipped or a broken tooth "
+              "changes which pairs carry along each contact line (spur pairs only)");
 }
 
 double contact_shift_rate(const kinematics::GearPairGeometry& pair)

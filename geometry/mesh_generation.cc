@@ -460,7 +460,12 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
     generate_mesh(model, grading, options, entities, statistics);
     if (!entities.fill_volumes.empty())
     {
-      statistics.removed_cells = remove_fill_cells(entities);
+      // The counts of check_cells, taken before the fills' cells were left out.
+      for (const auto& [material_id, count] : remove_fill_cells(entities))
+      {
+        statistics.removed_cells += count;
+        statistics.cells_per_body[material_id] -= count;
+      }
       statistics.n_cells -= statistics.removed_cells;
     }
     for (const GmshEntities::Crack& crack : entities.cracks)

@@ -74,7 +74,7 @@ void extrude_surfaces(const PlanarModel& model, const MeshOptions& options, Gmsh
 void label_lateral_surfaces(GmshEntities& entities);
 bool moves_nodes(const PlanarModel& model);
 void move_nodes(const PlanarModel& model, const GmshEntities& entities);
-unsigned long remove_fill_cells(const GmshEntities& entities);
+std::map<int, unsigned long> remove_fill_cells(const GmshEntities& entities);
 
 // mesh_crack.cc
 GmshEntities::Crack crack_entities(const PlanarFill& fill, const BoundaryLoop& outer,

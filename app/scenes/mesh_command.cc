@@ -120,6 +120,10 @@ void report_scene(const geometry::SceneInfo& info, const Scene& scene, Report& r
   report.add_value("rim_size", info.rim_size / mm, "mm", "largest cell size (rims)");
   report.add_value("cells", info.mesh.n_cells, "-",
                    info.dimension == 2 ? "quadrilaterals" : "hexahedra");
+  if (info.mesh.removed_cells > 0)
+    report.add_value(
+        "cells_removed", info.mesh.removed_cells, "-",
+        "hexahedra of partial-width faults left out (counted neither above nor below)");
   for (const auto& [id, count] : info.mesh.cells_per_body)
     report.add_value("cells_material_" + std::to_string(id), count, "-",
                      "cells of " + info.material_names.at(id));
