@@ -118,10 +118,6 @@ void check_helical_scene(const GearPairSceneSpec& spec, const kinematics::GearPa
                          "of overlap ratio ε_β = " +
                          format_number(pair.overlap_ratio, 4) + "), got " +
                          std::to_string(spec.mesh.layers));
-  if (!spec.swept_positions.empty())
-    throw InputError(scene_field::swept_positions,
-                     "a helical pair is meshed per position: rolling one mesh through the sweep "
-                     "is not verified on twisted teeth");
   for (const GearModifications* m : {&spec.pinion_modifications, &spec.wheel_modifications})
     for (const auto& [index, list] : m->by_tooth)
       if (has_faults(list))
