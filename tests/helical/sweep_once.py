@@ -11,8 +11,9 @@ pair, K_Hβ and the torque balance. The tolerances are the spur `once` sweep's a
 coarse 3D Q1 mesh (tests/stiffness/test_sweep_once.cc ThreeDQ1MatchesPerPosition: k within
 0.5 %, TE 0.05 µm, load share 0.005); K_Hβ, the peak line load over the mean, 3 % (a peak, as
 the spur sweep's nodal peak pressures, which differ by up to 6.8 %: docs/accuracy.md); the
-torque balance |T_wheel/T1| to 1e-4 (the faceted helicoid's bound is 6.3e-4 on each; the axial
-force is statics, F_a = F_bt·tan β_b, and a sweep does not report it by position). Exit 1
+torque balance |T_wheel/T1| to 6.3e-4 (not solver precision: the faceted helicoid's bound of
+each against r_b2/r_b1, tests/invariants/invariants.py; the small pair's per-position sweep lies
+within 3.7e-4 of it, docs/helical.md "Sweeps and the dynamics"; the axial force is statics, F_a = F_bt·tan β_b, and a sweep does not report it by position). Exit 1
 when one is exceeded; every difference is printed.
 
 Cases: `small` (the coarse pair of helical.sweep_dynamics: z 19/29, m_n 2 mm, β ±10°, b 8 mm,
@@ -51,7 +52,7 @@ K_TOLERANCE = 5e-3  # relative
 TE_TOLERANCE = 0.05  # µm
 SHARE_TOLERANCE = 5e-3
 FACE_LOAD_TOLERANCE = 3e-2  # relative, K_Hβ: a peak (docs/accuracy.md, the nodal peaks)
-TORQUE_RATIO_TOLERANCE = 1e-4  # relative
+TORQUE_RATIO_TOLERANCE = 6.3e-4  # relative: the faceted helicoid's bound on either sweep
 
 
 def sweep(gearstiff, work, case, positions, mesh):
@@ -63,6 +64,8 @@ def sweep(gearstiff, work, case, positions, mesh):
     wall = time.monotonic() - start
     if out.returncode != 0:
         sys.exit(f"sweep_once: {mesh} exited {out.returncode}: {out.stderr.strip()[-1500:]}")
+    with open(os.path.join(work, f"{mesh.replace(' ', '_')}.json"), "w") as f:
+        f.write(out.stdout)  # kept for a look at what differs
     return json.loads(out.stdout), wall
 
 
