@@ -555,7 +555,11 @@ def helical_statics(case, runner, log):
         # half-width) a face this wide is over the 2e5 hexahedra limit whatever the bodies
         # (docs/helical.md "Default mesh": 7e5 on the study pair at eps_beta 2), so the contact
         # size is the face-width study's 0.15 mm at m_n 2 mm, scaled with the module; the body
-        # size stays automatic (coarsened by the scene if the limit needs it).
+        # size stays automatic (coarsened by the scene if the limit needs it). Case 4 of seed
+        # 20261201 (24/32 teeth, m_n 2.5 mm, beta 8.1 deg, b 122.07 mm, eps_beta 2.19): 4/4 teeth,
+        # 18 layers refused for the contact lines and 27 taken, |F_a|/F_bt 0.133591 against
+        # tan beta_b 0.133580; the helical identity 291 s of the case's 349 s on the loaded
+        # machine (2026-12-02; case 24's helical statics on its own face: 55 s).
         pair_sets["Mesh/contact size"] = round(0.075 * module, 4)
         pair_sets["Mesh/fine radius"] = round(0.2 * module, 4)
         log(f"helical: face widened to {width} mm (eps_beta {wide}), contact size "
