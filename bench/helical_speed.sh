@@ -2,8 +2,13 @@
 # Speed of the exact (FE contact) path on the default helical pair (issue 46 "Speed";
 # docs/helical.md "Speed"): the built-in pair at β ±15° (ε_β ≈ 1), Q1, frictionless, its default
 # layers and sizes, on 2 MPI ranks: one position (the default single-pair position) and a
-# HELICAL_POSITIONS-position sweep over a base pitch (default 32; each position its own scene,
-# mesh and factorization, `sweep mesh = per position` being the only helical sweep).
+# HELICAL_POSITIONS-position sweep over a base pitch (default 32) meshed HELICAL_SWEEP_MESH
+# ("per position", the default: each position its own scene, mesh and factorization; or "once":
+# one mesh per rank refined along the band the face sweeps, turned to each position).
+# HELICAL_COARSE=1 runs the coarse sizes of tests/helical/sweep_once.py's built-in case (contact
+# 0.1875, fine radius 0.5, body 0.9375, rim 3.125 mm): the default sizes' rolling mesh is over the
+# cell limit (2.4e5 hexahedra estimated, docs/helical.md "Rolling sweeps"). HELICAL_SINGLE=0
+# skips the single position.
 # Process wall time of mpirun and the larger peak RSS of the two ranks (/usr/bin/time -v on each
 # rank), medians of HELICAL_RUNS runs (default 3).
 # usage: bench/helical_speed.sh [path/to/gearstiff]   (default build/app/gearstiff); run it
@@ -13,9 +18,16 @@ gearstiff=$(realpath "${1:-$(dirname "$0")/../build/app/gearstiff}")
 export OMP_NUM_THREADS=1 OMPI_MCA_rmaps_base_oversubscribe=1
 runs=${HELICAL_RUNS:-3}
 positions=${HELICAL_POSITIONS:-32}
+sweep_mesh=${HELICAL_SWEEP_MESH:-per position}
 helical=(--set "Mesh/dimension=3" --set "Finite elements/Element degree=1"
   --set "Contact/Friction coefficient=0"
   --set "Gear pair/Pinion/helix angle=15" --set "Gear pair/Wheel/helix angle=-15")
+sizes="default sizes"
+if [ "${HELICAL_COARSE:-0}" = 1 ]; then
+  helical+=(--set "Mesh/contact size=0.1875" --set "Mesh/fine radius=0.5"
+    --set "Mesh/body size=0.9375" --set "Mesh/rim size=3.125")
+  sizes="coarse sizes"
+fi
 # wall seconds of mpirun and the largest peak RSS (MB) of its ranks
 measure() {
   local folder
@@ -41,6 +53,10 @@ median() { # label, command...
     echo "$label: wall $wall s (median of $runs: $(printf '%s ' "${results[@]%% *}")), peak RSS of a rank $mem MB"
   }
 }
-median "helical default pair, one position, 2 ranks" "$gearstiff" stiffness --quiet "${helical[@]}"
-median "helical default pair, $positions-position sweep, 2 ranks" "$gearstiff" stiffness --quiet \
-  "${helical[@]}" --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=$positions"
+if [ "${HELICAL_SINGLE:-1}" != 0 ]; then
+  median "helical default pair ($sizes), one position, 2 ranks" "$gearstiff" stiffness --quiet \
+    "${helical[@]}"
+fi
+median "helical default pair ($sizes), $positions-position sweep ($sweep_mesh), 2 ranks" \
+  "$gearstiff" stiffness --quiet "${helical[@]}" --set "Stiffness/mode=sweep" \
+  --set "Stiffness/sweep positions=$positions" --set "Stiffness/sweep mesh=$sweep_mesh"

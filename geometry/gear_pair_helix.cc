@@ -117,10 +117,6 @@ void check_helical_scene(const GearPairSceneSpec& spec, const kinematics::GearPa
                          "of overlap ratio ε_β = " +
                          format_number(pair.overlap_ratio, 4) + "), got " +
                          std::to_string(spec.mesh.layers));
-  if (!spec.swept_positions.empty())
-    throw InputError(scene_field::swept_positions,
-                     "a helical pair is meshed per position: rolling one mesh through the sweep "
-                     "is not verified on twisted teeth");
   // A root crack leaves the flanks whole, so the pairs carry as on the healthy scene; a spall, a
   // chipped or a broken tooth decide which pairs carry by where a pair touches (docs/faults.md
   // "Which pairs carry"), one point per pair, while a helical pair touches along a line that

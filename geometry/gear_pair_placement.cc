@@ -177,6 +177,13 @@ int mate_tooth(const ToothProfile& wheel, int j)
 namespace
 {
 // Rolling sweeps: the pairs in contact at the scene's position or at one of the swept ones.
+// The pairs that touch with the reference pair at ℓ: across the face for a helical pair.
+std::vector<int> touching_pairs(const kinematics::GearPairGeometry& pair, double reference)
+{
+  return is_helical_pair(pair) ? pairs_across_face(pair, reference)
+                               : pairs_in_contact(pair, reference);
+}
+
 std::vector<int> swept_pairs(const GearPairSceneSpec& spec,
                              const kinematics::GearPairGeometry& pair,
                              const std::vector<int>& contact_pairs)
@@ -188,7 +195,7 @@ std::vector<int> swept_pairs(const GearPairSceneSpec& spec,
         position > pair.contact_end + path_tolerance)
       throw InputError(scene_field::swept_positions,
                        "a swept position lies off the path of contact");
-    for (const int j : pairs_in_contact(pair, position))
+    for (const int j : touching_pairs(pair, position))
       pairs.push_back(j);
   }
   std::sort(pairs.begin(), pairs.end());
@@ -201,6 +208,48 @@ std::vector<int> swept_pairs(const GearPairSceneSpec& spec,
 std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position)
 {
   return pairs_in_contact(pair, position);
+}
+
+std::vector<int> gear_pairs_across_face(const kinematics::GearPairGeometry& pair, double position)
+{
+  return touching_pairs(pair, position);
+}
+
+namespace
+{
+// -, the most pairs that touch across a helical face at one position of the mesh cycle (the
+// pairs repeat with the transverse base pitch): 24 reference positions a pitch apart/24, finer
+// than the quarter pitch at which face_positions samples each face.
+unsigned int most_pairs_across_face(const kinematics::GearPairGeometry& pair)
+{
+  constexpr int samples = 24;
+  std::size_t most = 0;
+  for (int k = 0; k < samples; ++k)
+    most =
+        std::max(most, pairs_across_face(pair, pair.contact_start +
+                                                   (k + 0.5) / samples * pair.transverse_base_pitch)
+                           .size());
+  return static_cast<unsigned int>(most);
+}
+} // namespace
+
+GearPairSceneSpec with_teeth_modelled(const GearPairSceneSpec& given)
+{
+  if (!given.pinion_teeth_follow_pairs && !given.wheel_teeth_follow_pairs)
+    return given;
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(given.pair);
+  const std::vector<int> swept =
+      swept_pairs(given, pair, touching_pairs(pair, reference_position(given, pair)));
+  // A helical sweep's positions model the same teeth: a tooth more at one position only would
+  // step k(θ) by the body's own stiffness.
+  const unsigned int needed = std::max(static_cast<unsigned int>(swept.size()),
+                                       is_helical_pair(pair) ? most_pairs_across_face(pair) : 0u);
+  GearPairSceneSpec spec = given;
+  if (spec.pinion_teeth_follow_pairs)
+    spec.pinion_teeth_modelled = std::max(spec.pinion_teeth_modelled, needed);
+  if (spec.wheel_teeth_follow_pairs)
+    spec.wheel_teeth_modelled = std::max(spec.wheel_teeth_modelled, needed);
+  return spec;
 }
 
 Eigen::Vector2d line_of_action_point(const kinematics::GearPairGeometry& pair, double position)
@@ -286,8 +335,7 @@ void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeome
                      "a scene with a broken, chipped or spalled tooth is meshed per position (it "
                      "changes which pairs carry from one position to the next)");
   scene.reference_position = reference_position(spec, pair);
-  scene.contact_pairs = is_helical_pair(pair) ? pairs_across_face(pair, scene.reference_position)
-                                              : pairs_in_contact(pair, scene.reference_position);
+  scene.contact_pairs = touching_pairs(pair, scene.reference_position);
   if (faults)
     scene.contact_pairs =
         carrying_pairs(pair, line, gears, scene.reference_position, scene.contact_pairs);
@@ -299,7 +347,9 @@ void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeome
       throw InputError(field,
                        "must be at least the number of pairs in contact (" +
                            std::to_string(scene.swept_pairs.size()) + ") at this position" +
-                           (spec.swept_positions.empty() ? "" : " or one the sweep turns to"));
+                           (is_helical_pair(pair) ? " (across the face)" : "") +
+                           (spec.swept_positions.empty() ? "" : " or one the sweep turns to") +
+                           "; auto models them all");
 }
 
 // Placement: the loaded flanks of pair 0 through the reference point. An external wheel sits

@@ -141,9 +141,12 @@ struct SizeGrading
 
 struct MeshOptions
 {
-  unsigned int dimension = 2;    // 2: quadrilaterals in the xy-plane; 3: hexahedra
-  double face_width = 0.;        // m, extrusion length along +z (3D only)
-  unsigned int layers = 8;       // hexahedron layers across the face width (3D only)
+  unsigned int dimension = 2; // 2: quadrilaterals in the xy-plane; 3: hexahedra
+  double face_width = 0.;     // m, extrusion length along +z (3D only)
+  unsigned int layers = 8;    // hexahedron layers across the face width (3D only)
+  // -, the fewest layers the scene accepts (a helical pair's twist rule): a cell estimate over
+  // the limit names the layers only when fewer would still be accepted, else the sizes.
+  unsigned int least_layers = 1;
   int side_face_boundary_id = 0; // boundary id of the z = 0 and z = face width faces (3D)
   std::string file;              // output path of the ASCII .msh 4.1 file
 };

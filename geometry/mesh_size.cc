@@ -190,7 +190,8 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
   // In 3D the layers multiply the section: when the section would fit with the default layers,
   // the layers are what the user raised (1000 layers were blamed on the body size).
   const double section_cells = estimate.cells / (options.dimension == 3 ? options.layers : 1.);
-  if (options.dimension == 3 && section_cells * MeshOptions().layers <= limit)
+  if (options.dimension == 3 && section_cells * MeshOptions().layers <= limit &&
+      std::floor(limit / section_cells) >= options.least_layers)
     throw InputError(field::mesh("layers"), reason + ": use at most " +
                                                 std::to_string(static_cast<unsigned int>(
                                                     std::floor(limit / section_cells))) +

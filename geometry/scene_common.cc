@@ -1,6 +1,7 @@
 #include "geometry/scene_common.h"
 
 #include "errors/errors.h"
+#include "errors/limits.h"
 #include "geometry/fields.h"
 #include "kinematics/hertz.h"
 
@@ -169,21 +170,37 @@ SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contact
 {
   const auto start = std::chrono::steady_clock::now();
   SceneInfo info;
-  const SizeGrading grading =
-      contact_size_grading(clamped_to_bodies(settings, model), contacts, depth_below_surface);
-  SizeGrading meshed = grading;
-  meshed.foci.insert(meshed.foci.end(), extra_foci.begin(), extra_foci.end());
   MeshOptions options;
   options.dimension = settings.dimension;
   options.layers = settings.layers;
+  options.least_layers = settings.least_layers;
   options.face_width = face_width;
   options.side_face_boundary_id = scene_ids::side_faces;
   options.file = file;
-
   PlanarModel named = model;
   if (settings.dimension == 3)
     named.boundary_names[scene_ids::side_faces] = "side faces";
-  info.mesh = mesh_planar_model(named, meshed, options);
+
+  SceneMeshSettings sized = settings;
+  const auto graded = [&](const SceneMeshSettings& s)
+  { return contact_size_grading(clamped_to_bodies(s, model), contacts, depth_below_surface); };
+  const auto with_foci = [&](SizeGrading grading)
+  {
+    grading.foci.insert(grading.foci.end(), extra_foci.begin(), extra_foci.end());
+    return grading;
+  };
+  // An automatic body size coarsens until the estimate fits (mesh_planar_model refuses it
+  // otherwise, naming the parameter as before).
+  for (unsigned int step = 0;
+       settings.body_size_fits_cell_limit && settings.dimension == 3 &&
+       step < SceneMeshSettings::body_size_steps &&
+       (sized.rim_size <= 0. ||
+        sized.body_size * SceneMeshSettings::body_size_step <= sized.rim_size) &&
+       estimate_mesh(named, with_foci(graded(sized)), options).cells > limits::max_cells_3d;
+       ++step)
+    sized.body_size *= SceneMeshSettings::body_size_step;
+  const SizeGrading grading = graded(sized);
+  info.mesh = mesh_planar_model(named, with_foci(grading), options);
 
   info.file = file;
   info.dimension = settings.dimension;

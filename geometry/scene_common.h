@@ -69,6 +69,18 @@ struct SceneMeshSettings
   // m, where a scene lets the size keep growing (gear rims below the root circle), it stops at
   // this size; 0: four times the body size.
   double rim_size = 0.;
+  // The body size is a default (`auto`), not the user's: in 3D, where the layers multiply the
+  // cells, a scene whose estimate exceeds the cell limit (errors/limits.h) coarsens it in steps
+  // of body_size_step, at most body_size_steps of them, before refusing (mesh_scene). A wide
+  // helical face needs its layers for the contact lines and its contact size for the Hertz
+  // zone; only the bodies away from the flanks can give (docs/helical.md "Default mesh").
+  bool body_size_fits_cell_limit = false;
+  // -, MeshOptions::least_layers: set by the scene (a helical pair's twist rule), not a user
+  // parameter.
+  unsigned int least_layers = 1;
+  // -, 15 %: the face-width study's steps; 5 steps are 2.01 × the default.
+  static constexpr double body_size_step = 1.15;
+  static constexpr unsigned int body_size_steps = 5;
   // -, SizeGrading::initial_contact_scale: set by the scene, not a user parameter.
   double initial_contact_scale = 0.6;
 };

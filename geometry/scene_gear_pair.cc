@@ -74,6 +74,8 @@ void mesh_gear_pair(const GearPairSceneSpec& spec, const kinematics::GearPairGeo
   // generated again finer, as before). 2D only: the 3D band's accuracy was measured on the
   // meshes from the first scale of 0.6 (test_sweep_once.ThreeDQ1).
   SceneMeshSettings mesh = spec.mesh;
+  if (is_helical_pair(pair)) // fewer layers than the twist needs are refused (gear_pair_helix.cc)
+    mesh.least_layers = layers_for_twist(pair);
   if (!spec.swept_positions.empty() && spec.mesh.dimension == 2)
     mesh.initial_contact_scale = 0.6 * (0.95 / 1.0798158575774983);
   scene.info =
@@ -101,8 +103,16 @@ std::vector<SceneContact> predicted_contacts(const GearPairSceneSpec& spec,
                           helical ? nearest_roll(pair, scene.reference_position, j) : 0.));
   if (helical)
   {
-    GearPairSceneSpec across = spec; // the sections of the face are the model rolled
+    // The sections of the face are the model rolled; a rolling sweep rolls the whole face to
+    // each swept position, so its band spans every one's sections too.
+    GearPairSceneSpec across = spec;
     across.swept_positions = face_positions(pair, scene.reference_position);
+    for (const double position : spec.swept_positions)
+    {
+      const std::vector<double> sections = face_positions(pair, position);
+      across.swept_positions.push_back(sections.front());
+      across.swept_positions.push_back(sections.back());
+    }
     add_swept_contacts(across, pair, line, gears, scene.reference_position, contacts);
   }
   else if (!spec.swept_positions.empty())
@@ -147,14 +157,15 @@ void describe_scene(const GearPairSceneSpec& spec, const kinematics::GearPairGeo
 
 } // namespace
 
-GearPairScene write_gear_pair_scene(const GearPairSceneSpec& given, const std::string& file)
+GearPairScene write_gear_pair_scene(const GearPairSceneSpec& requested, const std::string& file)
 {
   const auto start = std::chrono::steady_clock::now();
   // Everything is checked before gmsh runs: the pair itself (interference, backlash, contact
   // ratio, hands) by the kinematics, the scene's own extent here.
-  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(given.pair);
-  check_scene_spec(given);
-  check_helical_scene(given, pair);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(requested.pair);
+  check_scene_spec(requested);
+  check_helical_scene(requested, pair);
+  const GearPairSceneSpec given = with_teeth_modelled(requested);
   const GearPairSceneSpec spec = transverse_section_spec(given);
   PlacedGears gears = generate_teeth(spec, pair);
   GearPairScene scene;

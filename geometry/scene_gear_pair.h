@@ -55,8 +55,14 @@ struct GearPairSceneSpec
 
   unsigned int pinion_teeth_modelled = 5; // -, teeth of the pinion in the scene
   unsigned int wheel_teeth_modelled = 5;  // -, teeth of the wheel in the scene
-  double pinion_bore_radius = 0.;         // m; 0: half of pair.pinion.bore_diameter
-  double wheel_bore_radius = 0.;          // m; 0: half of pair.wheel.bore_diameter
+  // `auto` (docs/helical.md "Teeth modelled"): the count above is the least modelled, raised to
+  // every tooth pair that can touch (with_teeth_modelled); false: the count as given, refused
+  // (InputError) when it cannot hold those pairs. A wide helical face (ε_β ≥ 2) needs a fourth
+  // pair that the usual three teeth cannot hold, and the user should not have to guess it.
+  bool pinion_teeth_follow_pairs = false;
+  bool wheel_teeth_follow_pairs = false;
+  double pinion_bore_radius = 0.; // m; 0: half of pair.pinion.bore_diameter
+  double wheel_bore_radius = 0.;  // m; 0: half of pair.wheel.bore_diameter
   // m, internal wheel: rim thickness under the root circle, which sets its outer radius (held
   // fixed); 0: the outer radius is wheel_bore_radius (or half of pair.wheel.bore_diameter).
   double wheel_rim_thickness = 0.;
@@ -193,6 +199,13 @@ SceneMeshSettings helical_mesh_defaults(const SceneMeshSettings& spur,
 FlankRollRange flank_roll_range(const kinematics::GearPairGeometry& pair, const ToothProfile& tooth,
                                 bool wheel);
 
+// The spec with the teeth counts a scene models: a count that follows the pairs
+// (pinion/wheel_teeth_follow_pairs) is raised to the tooth pairs that can touch — at the scene's
+// position and every swept one, and for a helical pair across the face at every position of the
+// mesh cycle, so that every position of a sweep models the same teeth; a count given stays.
+// Milliseconds (no teeth generated); write_gear_pair_scene applies it.
+GearPairSceneSpec with_teeth_modelled(const GearPairSceneSpec& spec);
+
 // Checks the spec (InputError naming the field; all before gmsh runs), builds the scene,
 // meshes it into `file` and returns what the FE module needs. Cost: well under a second in 2D.
 GearPairScene write_gear_pair_scene(const GearPairSceneSpec& spec, const std::string& file);
@@ -210,6 +223,10 @@ std::vector<double> unloaded_transmission_errors(const GearPairSceneSpec& spec,
 // Rolling sweeps: the pairs j in contact (inside the path of contact A–E) with the reference
 // pair at ℓ (m from T1), the same rule as the scene's contact_pairs.
 std::vector<int> gear_pairs_in_contact(const kinematics::GearPairGeometry& pair, double position);
+// The pairs j that touch somewhere across the face with the reference pair at ℓ in the model
+// section (a helical pair: the sections ℓ ± b·tan β_b/2; a spur pair: gear_pairs_in_contact),
+// the same rule as the scene's contact_pairs.
+std::vector<int> gear_pairs_across_face(const kinematics::GearPairGeometry& pair, double position);
 // The point ℓ (m from T1) of the line of action in the scene frame (m; pinion centre at the
 // origin): where a pair at ℓ touches.
 Eigen::Vector2d line_of_action_point(const kinematics::GearPairGeometry& pair, double position);

@@ -77,7 +77,8 @@ def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):
     """One width's sweep: its summary row and its per-position k and TE."""
     b = face_width(eps_beta)
     count = layers(eps_beta)
-    teeth = 3  # the command's default on either gear; a wide face may need more, retried below
+    # The teeth modelled are the command's `auto`: from ε_β ≈ 2 it models a fourth tooth on each
+    # gear (the pairs ±2 touch near the face ends; docs/helical.md "Teeth modelled").
     body = BODY_SIZE  # mm; a wide face with its extra tooth may need coarser bodies, below
     while True:
         args = [gearstiff, "stiffness", "--json", "--quiet", "--set", "Stiffness/mode=sweep",
@@ -85,32 +86,25 @@ def sweep(gearstiff, eps_beta, positions=POSITIONS, extra=()):
                 "--set", f"Gear pair/Pinion/face width={b:.6f}",
                 "--set", f"Gear pair/Wheel/face width={b:.6f}",
                 "--set", f"Mesh/layers={count}",
-                "--set", f"Gear pair scene/pinion teeth modelled={teeth}",
-                "--set", f"Gear pair scene/wheel teeth modelled={teeth}",
                 "--set", f"Mesh/body size={body:.4g}",
                 "--set", f"Gear pair scene/pinion torque={TORQUE_PER_WIDTH * b:.6f}"]
         out = subprocess.run(args + CASE + list(extra), capture_output=True, text=True)
         needed = re.search(r"Mesh/layers: .*too few for the contact lines.*use at least (\d+) layers",
                            out.stderr)
-        # Beyond ε_β ≈ 2(2 − ε_α) the pairs ±2 touch near the face ends (docs/helical.md "Face
-        # width and ε_β"): 4 or more pairs, more than the default 3 teeth modelled.
-        more_teeth = re.search(r"teeth modelled: .*must be at least the number of pairs in "
-                               r"contact \((\d+)\)", out.stderr)
         # The cell limit (2e5 hexahedra, docs/limits.md): the layers stay (the contact lines need
         # them), the bodies away from the flanks coarsen by 15 % a step; the row states it.
-        too_many_cells = re.search(r"Mesh/layers: .*hexahedra \(limit", out.stderr)
-        if out.returncode != 2 or not (needed or more_teeth or too_many_cells):
+        too_many_cells = re.search(r"the mesh would have about .* hexahedra \(limit", out.stderr)
+        if out.returncode != 2 or not (needed or too_many_cells):
             break
         if too_many_cells:
             body *= 1.15
-        elif needed:
-            count = int(needed.group(1))
         else:
-            teeth = max(teeth + 1, int(more_teeth.group(1)))
+            count = int(needed.group(1))
     if out.returncode != 0:
         sys.exit(f"helical_face_width_study: ε_β {eps_beta}: gearstiff exited {out.returncode}: "
                  f"{out.stderr.strip()[-1500:]}")
     report = json.loads(out.stdout)
+    teeth = int(re.search(r"(\d+)/\d+ teeth modelled", report["text"]["model"]).group(1))
     k = column(report, "stiffness_sweep", "stiffness")
     te = column(report, "stiffness_sweep", "transmission_error")
     mean = value(report, "mean_stiffness")

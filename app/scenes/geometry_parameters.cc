@@ -138,6 +138,7 @@ parse_scene_mesh_parameters(ParameterHandler& prm, const geometry::SceneMeshSett
     if (!read_length_or_auto(prm.get(entry.name), name, "size", size))
       continue;
     size = defaults.*entry.member * module_scale;
+    mesh.body_size_fits_cell_limit |= entry.member == &geometry::SceneMeshSettings::body_size;
     if (derived && module_scale != 1.)
       derived->push_back({name, size,
                           "the built-in pair's " + format_number(defaults.*entry.member / mm, 6) +
@@ -152,10 +153,16 @@ void declare_gear_scene_parameters(ParameterHandler& prm,
                                    bool sector_cuts_free)
 {
   prm.enter_subsection("Gear pair scene");
-  prm.declare_entry("pinion teeth modelled", std::to_string(defaults.pinion_teeth_modelled),
-                    Integer(1), "pinion teeth in the scene, centred on the contacts [-]");
-  prm.declare_entry("wheel teeth modelled", std::to_string(defaults.wheel_teeth_modelled),
-                    Integer(1), "wheel teeth in the scene, centred on the contacts [-]");
+  for (const auto& [gear, count] : {std::pair{"pinion", defaults.pinion_teeth_modelled},
+                                    std::pair{"wheel", defaults.wheel_teeth_modelled}})
+    prm.declare_entry(std::string(gear) + " teeth modelled", "auto", Anything(),
+                      std::string(gear) +
+                          " teeth in the scene, centred on the contacts [-] (a count of at least "
+                          "1, or auto); auto = " +
+                          std::to_string(count) +
+                          ", or every tooth pair that can touch when they are more (a helical "
+                          "pair: across the face at any position of the mesh cycle, so ε_α + ε_β "
+                          "decides; a rolling sweep: at every position it turns to)");
   prm.declare_entry("pinion bore radius", format_number(defaults.pinion_bore_radius / mm, 10),
                     Double(0.),
                     "pinion bore radius [mm]; 0 = half of Gear pair/Pinion/bore diameter");
@@ -194,11 +201,32 @@ void declare_gear_scene_parameters(ParameterHandler& prm,
   prm.leave_subsection();
 }
 
+namespace
+{
+// -, "Gear pair scene/<gear> teeth modelled": `auto` keeps `count` (the command's) and lets the
+// scene raise it to the pairs that can touch (`follows`); else a count of at least 1.
+void read_teeth_modelled(const std::string& text, const std::string& gear, unsigned int& count,
+                         bool& follows)
+{
+  follows = text == "auto";
+  if (follows)
+    return;
+  double number = 0.;
+  if (!read_whole_number(text, number) || !(number >= 1. && number <= 1e6) ||
+      number != std::floor(number))
+    throw InputError("Gear pair scene/" + gear + " teeth modelled",
+                     "'" + shortened(text) + "' is neither a count of at least 1 nor auto");
+  count = static_cast<unsigned int>(number);
+}
+} // namespace
+
 void parse_gear_scene_parameters(ParameterHandler& prm, geometry::GearPairSceneSpec& spec)
 {
   prm.enter_subsection("Gear pair scene");
-  spec.pinion_teeth_modelled = prm.get_integer("pinion teeth modelled");
-  spec.wheel_teeth_modelled = prm.get_integer("wheel teeth modelled");
+  read_teeth_modelled(prm.get("pinion teeth modelled"), "pinion", spec.pinion_teeth_modelled,
+                      spec.pinion_teeth_follow_pairs);
+  read_teeth_modelled(prm.get("wheel teeth modelled"), "wheel", spec.wheel_teeth_modelled,
+                      spec.wheel_teeth_follow_pairs);
   spec.pinion_bore_radius = prm.get_double("pinion bore radius") * mm;
   spec.wheel_bore_radius = prm.get_double("wheel bore radius") * mm;
   spec.wheel_rim_thickness = prm.get_double("wheel rim thickness") * mm;

@@ -48,7 +48,8 @@ double mesh_module_scale(const kinematics::GearPairSpec& pair);
 void declare_gear_scene_parameters(dealii::ParameterHandler& prm,
                                    const geometry::GearPairSceneSpec& defaults,
                                    bool sector_cuts_free);
-// Fills pinion/wheel_teeth_modelled, pinion/wheel_bore_radius and rim.
+// Fills pinion/wheel_teeth_modelled (`auto`: spec's count kept, following the pairs),
+// pinion/wheel_bore_radius and rim.
 void parse_gear_scene_parameters(dealii::ParameterHandler& prm, geometry::GearPairSceneSpec& spec);
 
 // "Young's modulus" [GPa] and "Poisson's ratio" [-] of `bodies` ("both gears") in the current

@@ -112,11 +112,8 @@ void apply_stiffness_scene_defaults(ParameterHandler& prm)
   { return std::string(rim == geometry::RimModel::full ? "full" : "sector"); };
   prm.enter_subsection("Gear pair scene");
   replace("rim", rim_name(mesh_scene.rim), rim_name(stiffness_scene.rim));
-  replace("pinion teeth modelled", std::to_string(mesh_scene.pinion_teeth_modelled),
-          std::to_string(stiffness_scene.pinion_teeth_modelled));
-  replace("wheel teeth modelled", std::to_string(mesh_scene.wheel_teeth_modelled),
-          std::to_string(stiffness_scene.wheel_teeth_modelled));
   prm.leave_subsection();
+  // The teeth counts left `auto` start from the stiffness scene's in parse().
   // The cell sizes left `auto` take the stiffness scene's numbers in parse().
   prm.enter_subsection("Mesh");
   replace("growth rate", format_number(mesh_scene.mesh.growth_rate, 10),
@@ -132,6 +129,11 @@ std::unique_ptr<Scene> parse(ParameterHandler& prm)
   if (stiffness_scene)
     apply_stiffness_scene_defaults(prm);
   geometry::GearPairSceneSpec spec;
+  if (stiffness_scene)
+  {
+    spec.pinion_teeth_modelled = stiffness::default_stiffness_scene().pinion_teeth_modelled;
+    spec.wheel_teeth_modelled = stiffness::default_stiffness_scene().wheel_teeth_modelled;
+  }
   std::vector<kinematics::DerivedSize> derived;
   spec.pair = parse_gear_pair_parameters(prm, derived);
   parse_gear_scene_parameters(prm, spec);

@@ -110,10 +110,27 @@ void report_micro_geometry(const StiffnessParameters& p,
                "Harris map: TE peak-to-peak against torque, one line per modification set");
 }
 
+// The teeth counts the scene models (`auto` raised to the pairs that can touch): those of the
+// scene of the first position, as stiffness::stiffness_sweep builds it in mode sweep.
+geometry::GearPairSceneSpec modelled_teeth(const StiffnessParameters& p,
+                                           const kinematics::GearPairGeometry& pair)
+{
+  geometry::GearPairSceneSpec scene = p.settings.scene;
+  if (p.mode == StiffnessMode::sweep)
+  {
+    const std::vector<double> positions = stiffness::sweep_positions(pair, p.sweep);
+    scene.pinion_roll_angle = positions.front() / (0.5 * pair.pinion.base_diameter);
+    if (p.sweep.mesh == stiffness::SweepMesh::once)
+      scene.swept_positions = positions;
+  }
+  return geometry::with_teeth_modelled(scene);
+}
+
 // The load case, the model and the ISO values every mode reports.
 void report_model(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
                   const kinematics::IsoStiffness& iso, Report& report)
 {
+  const geometry::GearPairSceneSpec teeth = modelled_teeth(p, pair);
   // With a torque list the sweep runs at each listed torque, not at `pinion torque`.
   std::string torques;
   for (const double t : p.settings.torques)
@@ -136,8 +153,8 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
                       (planar ? ", thickness = common face width " +
                                     format_number(pair.common_face_width * 1e3, 4) + " mm"
                               : std::string("")) +
-                      ", " + std::to_string(p.settings.scene.pinion_teeth_modelled) + "/" +
-                      std::to_string(p.settings.scene.wheel_teeth_modelled) + " teeth modelled, " +
+                      ", " + std::to_string(teeth.pinion_teeth_modelled) + "/" +
+                      std::to_string(teeth.wheel_teeth_modelled) + " teeth modelled, " +
                       (p.settings.scene.rim == geometry::RimModel::full ? "full" : "sector") +
                       " rims");
   // The published figures belong to the built-in pair alone (issue 25: never beside another gear).

@@ -116,9 +116,72 @@ TEST(HelicalScene, RefusesWhatItCannotMesh)
   few.mesh.layers = 7;
   EXPECT_EQ(layers_for_twist(kinematics::compute_gear_pair(few.pair)), 7u);
   EXPECT_EQ(refusal(helical_spec(45.)), "pinion.helix_angle");
-  GearPairSceneSpec swept = helical_spec(15.);
-  swept.swept_positions = {0.01};
+  GearPairSceneSpec swept = helical_spec(15.); // a rolling sweep runs; off the path it cannot
+  swept.swept_positions = {1.};
   EXPECT_EQ(refusal(swept), scene_field::swept_positions);
+}
+
+// The pair of the face-width study (docs/helical.md "Face width and ε_β": z 19/29, m_n 2 mm,
+// x 0, β ±20°) at the face width b = ε_β·π·m_n/sin β (ISO 21771) of `overlap_ratio`.
+GearPairSceneSpec study_spec(double overlap_ratio)
+{
+  GearPairSceneSpec spec = helical_spec(20.);
+  for (kinematics::GearSpec* gear : {&spec.pair.pinion, &spec.pair.wheel})
+  {
+    gear->normal_module = 2e-3;
+    gear->profile_shift = 0.;
+    gear->face_width = overlap_ratio * M_PI * 2e-3 / std::sin(20. * degree);
+  }
+  spec.pair.pinion.teeth = 19;
+  spec.pair.wheel.teeth = 29;
+  spec.mesh.layers = static_cast<unsigned int>(std::ceil(16. * overlap_ratio)); // the default
+  spec.pinion_teeth_modelled = spec.wheel_teeth_modelled = 3; // the stiffness command's
+  spec.pinion_teeth_follow_pairs = spec.wheel_teeth_follow_pairs = true;
+  return spec;
+}
+
+// `Gear pair scene/... teeth modelled = auto` (docs/helical.md "Teeth modelled"): the command's
+// count, raised to every pair that can touch across the face at any position of the mesh cycle.
+// The study found by hand that ε_β 2 and 2.2 need a fourth tooth on each gear (the pairs ±2 touch
+// near the face ends, ε_β > 2(2 − ε_α) ≈ 1.06 with ε_α 1.47), and ran ε_β ≤ 1.5 on three; spur
+// pairs keep the count. A count given is kept, and refused below the pairs at its position
+// naming the field (no gmsh: the refusal comes first).
+TEST(HelicalScene, TeethModelledFollowThePairsAcrossTheFace)
+{
+  for (const auto& [overlap, teeth] :
+       {std::pair{0.5, 3u}, std::pair{1.5, 3u}, std::pair{2.0, 4u}, std::pair{2.2, 4u}})
+  {
+    const GearPairSceneSpec chosen = with_teeth_modelled(study_spec(overlap));
+    EXPECT_EQ(chosen.pinion_teeth_modelled, teeth) << "ε_β " << overlap;
+    EXPECT_EQ(chosen.wheel_teeth_modelled, teeth) << "ε_β " << overlap;
+  }
+  GearPairSceneSpec spur = study_spec(2.0);
+  spur.pair.pinion.helix_angle = spur.pair.wheel.helix_angle = 0.;
+  EXPECT_EQ(with_teeth_modelled(spur).pinion_teeth_modelled, 3u);
+  GearPairSceneSpec built_in = helical_spec(15.); // ε_β 0.79
+  built_in.pinion_teeth_modelled = built_in.wheel_teeth_modelled = 3;
+  built_in.pinion_teeth_follow_pairs = built_in.wheel_teeth_follow_pairs = true;
+  EXPECT_EQ(with_teeth_modelled(built_in).pinion_teeth_modelled, 3u);
+
+  // A count given (follow_pairs false) is kept; at a position where four pairs touch across the
+  // face it is refused naming the field.
+  GearPairSceneSpec given = study_spec(2.2);
+  given.pinion_teeth_follow_pairs = given.wheel_teeth_follow_pairs = false;
+  EXPECT_EQ(with_teeth_modelled(given).pinion_teeth_modelled, 3u);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(given.pair);
+  const double r_b1 = 0.5 * pair.pinion.base_diameter;
+  bool found = false;
+  for (int k = 0; k < 24 && !found; ++k)
+  {
+    const double position = pair.contact_start + (k + 0.5) / 24. * pair.transverse_base_pitch;
+    if (gear_pairs_across_face(pair, position).size() < 4)
+      continue;
+    found = true;
+    given.position = PairPosition::roll_angle;
+    given.pinion_roll_angle = position / r_b1;
+    EXPECT_EQ(refusal(given), scene_field::pinion_teeth_modelled);
+  }
+  EXPECT_TRUE(found) << "no position of the cycle has four pairs across the face";
 }
 
 // The defaults a helical pair takes (docs/helical.md "Default mesh"): the built-in pair at
