@@ -563,8 +563,10 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
   if (progress)
     progress(model_name + ": FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
              format_number(info.flank_cell_size * 1e3, 3) + " mm, " +
-             (dim == 3 ? std::to_string(layers) + " layers, " : std::string()) + "factored in " +
-             format_number(info.factorization_time, 3) + " s");
+             (dim == 3 ? std::to_string(layers) + " layers, " : std::string()) + "read in " +
+             format_number(info.factorization_time - model.factorization->factorization_time(), 3) +
+             " s, assembled and factored in " +
+             format_number(model.factorization->factorization_time(), 3) + " s");
 
   start = std::chrono::steady_clock::now();
   const std::vector<FlankGrid> grids = flank_grids(pair, positions, info.grid_step);
