@@ -327,7 +327,8 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
 
 geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
                                        const std::vector<double>& positions, double r_b1,
-                                       double cell, double depth, unsigned int dimension)
+                                       double cell, double band_cell, double depth,
+                                       unsigned int dimension)
 {
   geometry::GearPairSceneSpec scene = settings.scene;
   scene.mesh.dimension = dimension;
@@ -335,7 +336,7 @@ geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings
   scene.pinion_roll_angle = positions.front() / r_b1;
   scene.swept_positions = positions;
   scene.pinion_torque = settings.pinion_torque;
-  scene.mesh.contact_size = cell;
+  scene.mesh.contact_size = band_cell;
   scene.mesh.fine_radius = depth + 2. * cell;
   // The coefficients are read at the modelled teeth only: a full rim's cells grow with the arc
   // distance from them as with the depth below the root circle, up to the rim size, and in 3D up
