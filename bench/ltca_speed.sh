@@ -5,8 +5,9 @@
 # LTCA_EXACT_RUNS (default 3 in 2D, 1 in 3D: it takes minutes there).
 # - 2D (default): 32 and 128 positions (target: ≤ 2 s for the fast model at 128), then how the
 #   fast model's time splits (scene, factorization, coefficients, contact problems) from its report.
-# - LTCA_DIMENSION=3: 32 positions, Q1, 4 layers (docs/ltca.md §3); the exact sweep at h_c 0.06 mm.
-# LTCA_POSITIONS overrides the position counts.
+# - LTCA_DIMENSION=3: 32 positions, Q1, LTCA_LAYERS layers (default 4; docs/ltca.md §3); the exact
+#   sweep at h_c 0.06 mm; then the fast model's time split from its report.
+# LTCA_POSITIONS overrides the position counts; LTCA_EXACT_RUNS=0 leaves the exact sweep out.
 # usage: bench/ltca_speed.sh [path/to/gearstiff]   (default build/app/gearstiff); run it under
 # the build lock (flock /tmp/gearstiff-build.lock bash bench/ltca_speed.sh) on a quiet machine.
 set -euo pipefail
@@ -16,7 +17,8 @@ dimension=${LTCA_DIMENSION:-2}
 if [ "$dimension" = 3 ]; then
   positions_list=${LTCA_POSITIONS:-32}
   exact_runs=${LTCA_EXACT_RUNS:-1}
-  model=(--set "Mesh/dimension=3" --set "Mesh/layers=4" --set "Finite elements/Element degree=1")
+  model=(--set "Mesh/dimension=3" --set "Mesh/layers=${LTCA_LAYERS:-4}"
+    --set "Finite elements/Element degree=1")
   exact=(--set "Mesh/contact size=0.06")
 else
   positions_list=${LTCA_POSITIONS:-32 128}
@@ -50,13 +52,15 @@ for positions in $positions_list; do
     "${model[@]}")
   median "influence coefficients ${dimension}D, $positions positions, 1 rank" 3 \
     "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients"
+  [ "$exact_runs" = 0 ] && continue
   median "finite element ${dimension}D (exact, sweep mesh once, μ 0), $positions positions, 1 rank" \
     "$exact_runs" "$gearstiff" "${sweep[@]}" --set "Contact/Friction coefficient=0" \
     --set "Stiffness/sweep mesh=once" "${exact[@]}"
 done
-[ "$dimension" = 3 ] && exit 0
-echo "time split of the fast model (its report, 128 positions):"
-sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=128")
+split_positions=$([ "$dimension" = 3 ] && echo 32 || echo 128)
+echo "time split of the fast model (its report, $split_positions positions):"
+sweep=(stiffness --quiet --set "Stiffness/mode=sweep" --set "Stiffness/sweep positions=$split_positions"
+  "${model[@]}")
 "$gearstiff" "${sweep[@]}" --set "Stiffness/contact model=influence coefficients" --json |
   python3 -c '
 import json, sys

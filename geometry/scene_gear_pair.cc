@@ -61,6 +61,30 @@ void mesh_gear_pair(const GearPairSceneSpec& spec, const kinematics::GearPairGeo
                     involute_sign(gears.wheel) *
                         (scene.wheel_root_radius - (x - gears.wheel_centre).norm()));
   };
+  // spec.rim_coarse_beyond_teeth: the arc length (at the point's radius) by which a point of a
+  // gear's body lies outside the angular span of its modelled teeth (0 inside it; a sector rim
+  // spans exactly its teeth).
+  const auto beyond_teeth = [&](const Eigen::Vector2d& x, const ToothProfile& tooth,
+                                const Eigen::Vector2d& centre, double rotation, int first, int last)
+  {
+    const Eigen::Vector2d d = x - centre;
+    if (!(involute_sign(tooth) * (tooth.tip_radius - d.norm()) > 0.))
+      return 0.; // not this gear's body
+    const double middle = rotation + 0.5 * (first + last) * tooth.angular_pitch;
+    const double half_span = 0.5 * (last - first + 1) * tooth.angular_pitch;
+    const double off = std::abs(std::remainder(std::atan2(d.y(), d.x()) - middle, 2. * M_PI));
+    return d.norm() * std::max(0., off - half_span);
+  };
+  const auto rim_depth = [&](const Eigen::Vector2d& x)
+  {
+    if (!spec.rim_coarse_beyond_teeth)
+      return depth_below_root(x);
+    return std::max({depth_below_root(x),
+                     beyond_teeth(x, gears.pinion, gears.pinion_centre, gears.pinion_rotation,
+                                  w.pinion_first, w.pinion_last),
+                     beyond_teeth(x, gears.wheel, gears.wheel_centre, gears.wheel_rotation,
+                                  w.wheel_first, w.wheel_last)});
+  };
   std::vector<SizeFocus> foci =
       placed_fault_foci(gears.pinion_teeth, gears.pinion_centre, gears.pinion_rotation,
                         w.pinion_first, w.pinion_last);
@@ -78,8 +102,7 @@ void mesh_gear_pair(const GearPairSceneSpec& spec, const kinematics::GearPairGeo
     mesh.least_layers = layers_for_twist(pair);
   if (!spec.swept_positions.empty() && spec.mesh.dimension == 2)
     mesh.initial_contact_scale = 0.6 * (0.95 / 1.0798158575774983);
-  scene.info =
-      mesh_scene(model, contacts, mesh, pair.common_face_width, file, depth_below_root, foci);
+  scene.info = mesh_scene(model, contacts, mesh, pair.common_face_width, file, rim_depth, foci);
 }
 
 // The predicted contact of every pair in contact, and the foci along the flanks that a rolling

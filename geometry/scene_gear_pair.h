@@ -78,6 +78,11 @@ struct GearPairSceneSpec
   double wheel_bolt_hole_diameter = 6.6e-3; // m, diameter of one hole (M6 clearance, ISO 273)
   double wheel_bolt_circle_diameter = 0.;   // m, of the hole centres; 0: the rim's middle
   RimModel rim = RimModel::sector;
+  // A full rim's cells also grow with the arc distance from the modelled teeth, not only with the
+  // depth below the root circle (up to the rim size): for a body whose compliance is only read at
+  // the modelled teeth (the influence-coefficient model's FE body, docs/ltca.md §1), where the
+  // rim far from them carries the load to the bore as a ring. false: every scene as before.
+  bool rim_coarse_beyond_teeth = false;
   bool both_flanks = false; // also mark the unloaded flanks as candidate contact surfaces
 
   // The load and material only set the Hertz estimate of the default contact size.

@@ -327,7 +327,8 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
 
 geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
                                        const std::vector<double>& positions, double r_b1,
-                                       double cell, double depth, unsigned int dimension)
+                                       double cell, double band_cell, double depth,
+                                       unsigned int dimension)
 {
   geometry::GearPairSceneSpec scene = settings.scene;
   scene.mesh.dimension = dimension;
@@ -335,8 +336,20 @@ geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings
   scene.pinion_roll_angle = positions.front() / r_b1;
   scene.swept_positions = positions;
   scene.pinion_torque = settings.pinion_torque;
-  scene.mesh.contact_size = cell;
+  scene.mesh.contact_size = band_cell;
   scene.mesh.fine_radius = depth + 2. * cell;
+  // The coefficients are read at the modelled teeth only: a full rim's cells grow with the arc
+  // distance from them as with the depth below the root circle, up to the rim size, and in 3D up
+  // to twice the scene's (the extruded body's factorization and back-substitutions are the
+  // sweep's cost; docs/ltca.md "Cost"). Measured 2026-12-02 on the default pair against the body
+  // graded by depth only: 2D (Q2, 128 positions) 79.6k → 59.4k DoFs, k within 0.013 %; 3D (Q1,
+  // 4 layers, 4 positions) 119k → 54k DoFs, k +0.16 … +0.23 % (stiffer: the coarse Q1 rim), the
+  // worst |Δk| against the exact path 0.37 → 0.55 %, K_Hβ unchanged. The teeth stay those of
+  // the scene: leaving out the neighbour that does not mesh moved k by −0.3 %, adding one on the
+  // other side by +0.4 % (the exact path models the same teeth).
+  scene.rim_coarse_beyond_teeth = true;
+  const double rim = scene.mesh.rim_size > 0. ? scene.mesh.rim_size : 4. * scene.mesh.body_size;
+  scene.mesh.rim_size = (dimension == 3 ? 2. : 1.) * rim;
   return scene;
 }
 

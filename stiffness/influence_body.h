@@ -156,10 +156,11 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
                                                  const std::vector<BodyPoint<dim>>& reads);
 
 // The scene of the FE body (`dimension` 2 or 3): the sweep's first position, every flank that
-// meshes in the sweep refined along its contacts at `cell` (m, h_f) out to below the matching
-// `depth` (m).
+// meshes in the sweep refined along its contacts at `band_cell` (m) out to the matching `depth`
+// (m) plus two cells of `cell` (m, h_f).
 geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
                                        const std::vector<double>& positions, double r_b1,
-                                       double cell, double depth, unsigned int dimension);
+                                       double cell, double band_cell, double depth,
+                                       unsigned int dimension);
 
 } // namespace gearstiff::stiffness::influence
