@@ -49,15 +49,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import calculix_compare as bench  # noqa: E402  (bench/, on the path through verify)
 from calculix_stiffness import rotation_node  # noqa: E402
 
-# The pair and mesh of tests/helical/sweep_dynamics.py (its CASE, frictionless, Q1).
-PAIR = ["Gear pair/Pinion/teeth=19", "Gear pair/Wheel/teeth=29",
-        "Gear pair/Pinion/module=2", "Gear pair/Wheel/module=2",
-        "Gear pair/Pinion/profile shift=0", "Gear pair/Wheel/profile shift=0",
-        "Gear pair/Pinion/face width=8", "Gear pair/Wheel/face width=8",
-        "Gear pair/Pinion/helix angle=10", "Gear pair/Wheel/helix angle=-10",
-        "Gear pair scene/pinion torque=20"]
-MESH = ["Mesh/dimension=3", "Mesh/layers=5", "Mesh/contact size=0.15", "Mesh/fine radius=0.4",
-        "Mesh/body size=0.75", "Mesh/rim size=2.5"]
+# The pair and mesh of tests/helical/sweep_dynamics.py (its CASE; tests/helical/small_pair.py).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "helical"))
+from small_pair import MESH, PAIR  # noqa: E402
+
 TORQUE = 20.  # N·m, T1 of both commands (PAIR)
 FACTORS = (10., 100.)
 # Relative bounds on k (module docstring): ≈3× the measured deviation, at most the 1 %.
