@@ -157,6 +157,49 @@ void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPai
 
 namespace
 {
+// The designed separation of a helical pair j whose mid-face section meets the line of action at
+// `at` (m from T1): the smallest, along its contact line, of both flanks' profile removal at the
+// point each section meets plus the lead removal of that section. A section z meets the pair at
+// at + rate·(z − b/2) (gear_pair_helix.cc, contact_lines); only the sections whose point lies on
+// the path of contact touch. Taking the mid-face section's profile removal plus the face's
+// smallest lead removal instead (before 2026-12-03) adds the two minima of different sections:
+// with profile and lead crowning it put the unloaded TE up to 1.7 µm above the meshed flanks'
+// smallest gap on the built-in pair (tests/helical/test_helical_unloaded_error.cc).
+std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
+                                            const kinematics::GearPairGeometry& pair,
+                                            const LineOfAction& line, const PlacedGears& gears,
+                                            double at, int j)
+{
+  const double rate = contact_shift_rate(pair), b = pair.common_face_width;
+  const double z0 = model_section(pair);
+  // The same margin as nearest_roll: the line of action meets both flanks inside it.
+  const double margin = 0.01 * pair.transverse_base_pitch;
+  const double za = z0 + (pair.contact_start + margin - at) / rate;
+  const double ze = z0 + (pair.contact_end - margin - at) / rate;
+  const double z_from = std::max(0., std::min(za, ze)), z_to = std::min(b, std::max(za, ze));
+  if (!(z_to >= z_from))
+    return std::nullopt;
+  // Sections 1/2000 of the face apart, as smallest_lead_separation samples the lead alone: the
+  // separation is smooth between the reliefs' kinks, which the samples straddle by at most
+  // b/2000·tan β_b along the profile (6 µm on the built-in pair).
+  constexpr int samples = 2000;
+  const bool three_d = spec.mesh.dimension == 3;
+  double smallest = std::numeric_limits<double>::max();
+  for (int i = 0; i <= samples; ++i)
+  {
+    const double z = z_from + (z_to - z_from) * i / samples;
+    const double roll = at + rate * (z - z0);
+    const double lead = three_d ? lead_removed_depth(spec.pinion_modifications.lead, z, b, true) +
+                                      lead_removed_depth(spec.wheel_modifications.lead, z, b, true)
+                                : 0.;
+    smallest = std::min(smallest, gears.pinion_teeth.loaded_flank_removal(j, roll) +
+                                      gears.wheel_teeth.loaded_flank_removal(
+                                          mate_tooth(gears.wheel, j), std::abs(roll - line.t2)) +
+                                      lead);
+  }
+  return smallest;
+}
+
 // The designed separation of each pair `pairs` at ℓ = `position` (the loaded flanks' removal at
 // the kinematic contact point: both normals lie on the line of action there), lead
 // modifications (3D) included.
@@ -175,9 +218,18 @@ std::vector<double> pair_separations(const GearPairSceneSpec& spec,
   std::vector<double> separations;
   for (const int j : pairs)
   {
-    // A helical pair not in contact in the model section: where it touches nearest to it.
-    const double at = position + j * pair.transverse_base_pitch +
-                      (is_helical_pair(pair) ? nearest_roll(pair, position, j) : 0.);
+    double at = position + j * pair.transverse_base_pitch;
+    if (is_helical_pair(pair))
+    {
+      if (const auto along = separation_along_line(spec, pair, line, gears, at, j))
+      {
+        separations.push_back(*along);
+        continue;
+      }
+      // A pair whose line misses the path in every section (within the margin): where it
+      // touches nearest to the mid-face section.
+      at += nearest_roll(pair, position, j);
+    }
     separations.push_back(
         gears.pinion_teeth.loaded_flank_removal(j, at) +
         gears.wheel_teeth.loaded_flank_removal(mate_tooth(gears.wheel, j), std::abs(at - line.t2)) +
@@ -218,7 +270,9 @@ std::vector<double> unloaded_transmission_errors(const GearPairSceneSpec& given,
   for (const double position : positions)
   {
     const std::vector<double> separations =
-        pair_separations(spec, pair, line, gears, position, pairs_in_contact(pair, position));
+        pair_separations(spec, pair, line, gears, position,
+                         is_helical_pair(pair) ? pairs_across_face(pair, position)
+                                               : pairs_in_contact(pair, position));
     if (separations.empty())
       throw InputError(scene_field::swept_positions, "no tooth pair is in contact at " +
                                                          format_number(position * 1e3, 6) +
