@@ -135,7 +135,7 @@ TEST(InfluenceCoefficients3DLead, DISABLED_Ladder)
     const char* value = std::getenv(name);
     return value ? std::atof(value) : fallback;
   };
-  const GearMeshStiffnessSettings settings =
+  GearMeshStiffnessSettings settings =
       lead_settings(static_cast<unsigned int>(env("LADDER_LAYERS", 8)), env("LADDER_CROWN", 10e-6),
                     env("LADDER_SLOPE", 0.), env("LADDER_HC", 6e-5), env("LADDER_BODY", 0.));
   // LADDER_INTERNAL=1: the planet-ring pair of the 2D tests (rim 3·m_n) instead of the default
