@@ -102,16 +102,19 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry(
       "contact model", "finite element", Selection("finite element|influence coefficients"),
       "finite element: mortar contact on a mesh that resolves the Hertz zone (the reference); "
-      "influence coefficients (mode sweep, frictionless, no tooth faults; 3D: unmodified "
-      "external spur pairs): a FE body of both gears with flank cells of 0.04·m_n (3D: 0.08·m_n, "
-      "per hexahedron layer) factored once, the influence coefficients of a grid on every "
-      "meshing flank read 3 cells under the surface, the analytic plane-strain Hertz layer above "
-      "that depth, one small contact problem per position (docs/ltca.md); root "
-      "stresses are not evaluated (nan in the tables, null in JSON)");
+      "influence coefficients (mode sweep, frictionless, no profile modifications, no tooth "
+      "faults; 2D plane strain; 3D: external spur pairs, lead modifications with at least 16 "
+      "layers): a FE body of both gears that does not resolve the Hertz zone (flank cells h_f = "
+      "0.04·m_n; 3D 0.08·m_n with the band of swept contacts meshed at 1.5·h_f = 0.12·m_n; the "
+      "rims coarse beyond the modelled teeth) factored once, the influence coefficients of a grid "
+      "on every meshing flank (3D: on every node plane) read 3·h_f under the surface (0.12·m_n; "
+      "3D 0.24·m_n), the analytic plane-strain Hertz layer above that depth, one small contact "
+      "problem per position (docs/ltca.md); root stresses are not evaluated (nan in the tables, "
+      "null in JSON)");
   prm.declare_entry("influence grid points", "64", Integer(8, 10000),
                     "contact model influence coefficients: grid points per flank over the path "
-                    "of contact [-]; the step must not exceed the matching depth 0.12·m_n nor "
-                    "half the shortest relief length");
+                    "of contact [-]; the step must not exceed the matching depth 3·h_f (0.12·m_n; "
+                    "3D 0.24·m_n) nor half the shortest relief length");
   prm.declare_entry("write vtu", "false", Bool(),
                     "write VTU/PVTU of every solved position into the -o folder");
   prm.declare_entry("published reference", "true", Bool(),
