@@ -21,7 +21,8 @@ constexpr double max_cells_2d = 5.0e5;
 constexpr double max_solve_bytes_3d = 16e9;
 // bytes per unknown of a 3D contact solve on one process, peak RSS over the DoFs (the built-in
 // spur pair, 1 rank, frictionless, 2026-12-02; docs/limits.md): Q1 4, 8, 16 layers 105 885,
-// 190 593, 279 225 DoFs: 8.0, 9.2, 11.6 kB; Q2 2 layers 406 980 DoFs: 10.6 kB. From 5·10⁵ DoFs
+// 190 593, 279 225 DoFs: 8.0, 9.2, 11.6 kB; Q2 1, 2 layers 244 188, 406 980 DoFs: 8.8,
+// 10.6 kB. From 5·10⁵ DoFs
 // the factors go out of core (fem/stiffness_factorization): Q1 633 024 DoFs (helical, 2 ranks)
 // 11.0 kB, Q2 1 058 148 (6 layers, 2 ranks) 10.1 kB in all. The largest measured per degree.
 constexpr double solve_bytes_per_unknown_3d_q1 = 12e3;

@@ -44,8 +44,8 @@ double focus_cells(double size, double radius, double rate, double coarse)
 // quadrilaterals and B boundary edges has n + B/2 vertices and 2n + B/2 edges (Euler), so
 // FE_Q(p) places p²·n + p·B/2 nodes on each of its p·layers + 1 planes. Measured on real meshes
 // (count → formula with 0.085): spur Q1 4 and 8 layers 105 885 → 105 904, 190 593 → 190 626;
-// spur Q2 2 and 6 layers 406 980 → 407 007, 1 058 148 → 1 058 237; helical Q1 13 layers
-// 633 024 → 653 697 (+3 %, its rims give fewer boundary nodes a cell).
+// spur Q2 1, 2 and 6 layers 244 188 → 244 200, 406 980 → 407 007, 1 058 148 → 1 058 237; helical Q1
+// 13 layers 633 024 → 653 697 (+3 %, its rims give fewer boundary nodes a cell).
 constexpr double boundary_nodes_per_cell = 0.085;
 
 // -, unknowns of FE_Q(degree) (3 components a node) on `hexahedra` extruded in `layers` layers.

@@ -57,8 +57,8 @@ TEST(MeshEstimate, UnknownsMatchTheNodesOfABlock)
       const double p = degree, plane = p * cells + 1.;
       const double exact = 3. * plane * plane * (p * layers + 1.);
       EXPECT_NEAR(estimate.cells, cells * cells * layers, 1e-6 * estimate.cells);
-      EXPECT_NEAR(estimate.unknowns / exact, 1., 0.03) << "degree " << degree << ", " << layers
-                                                       << " layers";
+      EXPECT_NEAR(estimate.unknowns / exact, 1., 0.03)
+          << "degree " << degree << ", " << layers << " layers";
       EXPECT_NEAR(estimate.solve_bytes,
                   estimate.unknowns * (degree == 1 ? limits::solve_bytes_per_unknown_3d_q1
                                                    : limits::solve_bytes_per_unknown_3d_q2),
@@ -87,8 +87,7 @@ TEST(MeshEstimate, TheDegreeDecidesTheRefusal)
     const std::string what = error.what();
     EXPECT_EQ(error.parameter(), field::mesh("layers"));
     EXPECT_NE(what.find("unknowns at element degree 2"), std::string::npos) << what;
-    EXPECT_NE(what.find("GB for the direct contact solve (limit 16 GB"), std::string::npos)
-        << what;
+    EXPECT_NE(what.find("GB for the direct contact solve (limit 16 GB"), std::string::npos) << what;
     EXPECT_NE(what.find("use at most 144 layers"), std::string::npos) << what;
   }
 }
