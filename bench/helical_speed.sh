@@ -6,9 +6,11 @@
 # ("per position", the default: each position its own scene, mesh and factorization; or "once":
 # one mesh per rank refined along the band the face sweeps, turned to each position).
 # HELICAL_COARSE=1 runs the coarse sizes of tests/helical/sweep_once.py's built-in case (contact
-# 0.1875, fine radius 0.5, body 0.9375, rim 3.125 mm): the default sizes' rolling mesh is over the
-# cell limit (2.4e5 hexahedra estimated, docs/helical.md "Rolling sweeps"). HELICAL_SINGLE=0
-# skips the single position.
+# 0.1875, fine radius 0.5, body 0.9375, rim 3.125 mm). HELICAL_SINGLE=0 skips the single
+# position. HELICAL_RANKS (default 2): MPI ranks; a `once` sweep factorizes the whole rolling
+# mesh on every rank (the default sizes' estimate: ~12 GB a rank, docs/helical.md "Speed").
+# HELICAL_SWEEP_START (deg, optional): Stiffness/sweep start. HELICAL_JSON (optional): a file
+# that receives the JSON report of the last run (rank 0).
 # Process wall time of mpirun and the larger peak RSS of the two ranks (/usr/bin/time -v on each
 # rank), medians of HELICAL_RUNS runs (default 3).
 # usage: bench/helical_speed.sh [path/to/gearstiff]   (default build/app/gearstiff); run it
@@ -19,6 +21,7 @@ export OMP_NUM_THREADS=1 OMPI_MCA_rmaps_base_oversubscribe=1
 runs=${HELICAL_RUNS:-3}
 positions=${HELICAL_POSITIONS:-32}
 sweep_mesh=${HELICAL_SWEEP_MESH:-per position}
+ranks=${HELICAL_RANKS:-2}
 helical=(--set "Mesh/dimension=3" --set "Finite elements/Element degree=1"
   --set "Contact/Friction coefficient=0"
   --set "Gear pair/Pinion/helix angle=15" --set "Gear pair/Wheel/helix angle=-15")
@@ -34,12 +37,13 @@ measure() {
   folder=$(mktemp -d)
   local start end
   start=$(date +%s.%N)
-  mpirun --allow-run-as-root -np 2 bash -c \
-    '/usr/bin/time -v "$@" >/dev/null 2>"'"$folder"'/rank.$OMPI_COMM_WORLD_RANK"' _ "$@"
+  mpirun --allow-run-as-root -np "$ranks" bash -c \
+    '/usr/bin/time -v "$@" >"'"$folder"'/out.$OMPI_COMM_WORLD_RANK" 2>"'"$folder"'/rank.$OMPI_COMM_WORLD_RANK"' _ "$@"
   end=$(date +%s.%N)
   local mem
   mem=$(awk -F': ' '/Maximum resident set size/ {m = ($2 > m ? $2 : m)} END {printf "%.0f", m / 1024}' \
     "$folder"/rank.*)
+  if [ -n "${HELICAL_JSON:-}" ]; then cp "$folder/out.0" "$HELICAL_JSON"; fi
   echo "$(echo "$end - $start" | bc) $mem"
   rm -rf "$folder"
 }
@@ -54,9 +58,11 @@ median() { # label, command...
   }
 }
 if [ "${HELICAL_SINGLE:-1}" != 0 ]; then
-  median "helical default pair ($sizes), one position, 2 ranks" "$gearstiff" stiffness --quiet \
+  median "helical default pair ($sizes), one position, $ranks ranks" "$gearstiff" stiffness --quiet --json \
     "${helical[@]}"
 fi
-median "helical default pair ($sizes), $positions-position sweep ($sweep_mesh), 2 ranks" \
-  "$gearstiff" stiffness --quiet "${helical[@]}" --set "Stiffness/mode=sweep" \
+start_set=()
+if [ -n "${HELICAL_SWEEP_START:-}" ]; then start_set=(--set "Stiffness/sweep start=$HELICAL_SWEEP_START"); fi
+median "helical default pair ($sizes), $positions-position sweep ($sweep_mesh), $ranks ranks" \
+  "$gearstiff" stiffness --quiet --json "${helical[@]}" "${start_set[@]}" --set "Stiffness/mode=sweep" \
   --set "Stiffness/sweep positions=$positions" --set "Stiffness/sweep mesh=$sweep_mesh"

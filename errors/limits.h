@@ -12,8 +12,24 @@ namespace gearstiff::limits
 // minutes per active-set iteration: the most a workstation (here 23 GB) can finish. gmsh alone
 // meshed 1.1·10⁵ cells (cycloid scene) in 15 s, so meshing up to the limit takes minutes.
 constexpr double max_cells_2d = 5.0e5;
-// -, hexahedra: a 3D Q2 direct solve fills far more per unknown than a 2D one; the default 3D
-// gear scene has 5.3·10⁴.
+// bytes, the memory of one 3D contact solve (mesh, matrices, direct factorization) on one
+// process, estimated before meshing from the hexahedra, the layers and the element degree
+// (geometry::estimate_mesh): the largest accepted solve fits a 16 GB workstation. A cell count
+// cannot say it: a Q2 hexahedron carries ~8× the unknowns of a Q1 one (2·10⁵ hexahedra are
+// ~7·10⁵ unknowns at Q1, ~5·10⁶ at Q2). A rolling (`once`) sweep factorizes the whole mesh on
+// every rank (MPI_COMM_SELF): R ranks hold R such solves.
+constexpr double max_solve_bytes_3d = 16e9;
+// bytes per unknown of a 3D contact solve on one process, peak RSS over the DoFs (the built-in
+// spur pair, 1 rank, frictionless, 2026-12-02; docs/limits.md): Q1 4, 8, 16 layers 105 885,
+// 190 593, 279 225 DoFs: 8.0, 9.2, 11.6 kB; Q2 1, 2 layers 244 188, 406 980 DoFs: 8.8,
+// 10.6 kB. From 5·10⁵ DoFs
+// the factors go out of core (fem/stiffness_factorization): Q1 633 024 DoFs (helical, 2 ranks)
+// 11.0 kB, Q2 1 058 148 (6 layers, 2 ranks) 10.1 kB in all. The largest measured per degree.
+constexpr double solve_bytes_per_unknown_3d_q1 = 12e3;
+constexpr double solve_bytes_per_unknown_3d_q2 = 11e3;
+// -, hexahedra of the built-in Hertz case in 3D (`contact` without a mesh, counted exactly; one
+// cell through the depth, Q2 by default): the cell limit of the meshes before
+// max_solve_bytes_3d, kept for that case alone.
 constexpr double max_cells_3d = 2.0e5;
 // bytes per 2D Q2 cell of a contact solve (measured as above: (303 − 100) MB / 6389 cells), for
 // the memory stated beside a refused cell estimate.

@@ -147,6 +147,9 @@ struct MeshOptions
   // -, the fewest layers the scene accepts (a helical pair's twist rule): a cell estimate over
   // the limit names the layers only when fewer would still be accepted, else the sizes.
   unsigned int least_layers = 1;
+  // -, FE_Q degree of the solve the mesh is made for: a 3D estimate is held to the memory of its
+  // direct solve (errors/limits.h), whose unknowns per hexahedron grow as degree³.
+  unsigned int element_degree = 1;
   int side_face_boundary_id = 0; // boundary id of the z = 0 and z = face width faces (3D)
   std::string file;              // output path of the ASCII .msh 4.1 file
 };
@@ -185,6 +188,8 @@ struct MeshEstimate
   double graded_cells = 0.; // -, where the size grows from a focus size to the body size
   double body_cells = 0.;   // -, the rest at the body size
   double cells = 0.;        // -, total (3D: times the layers)
+  double unknowns = 0.;     // -, 3D: of FE_Q(element_degree) on the cells (0 in 2D)
+  double solve_bytes = 0.;  // bytes, 3D: of one direct contact solve of them (0 in 2D)
 };
 
 // Cells ≈ ∫ c/h(x)² dA over the bodies, summed in closed form per focus (disc of h_c within
@@ -197,9 +202,13 @@ struct MeshEstimate
 MeshEstimate estimate_mesh(const PlanarModel& model, const SizeGrading& grading,
                            const MeshOptions& options);
 
-// InputError naming "Mesh/contact size" (or "Mesh/body size" when the coarse part dominates),
-// with the estimate, when the estimate exceeds limits::max_cells_2d / max_cells_3d
-// (errors/limits.h). mesh_planar_model calls it before gmsh starts.
+// Whether the estimate is over the work limit (errors/limits.h): 2D its cells over
+// limits::max_cells_2d, 3D the memory of its direct solve over limits::max_solve_bytes_3d.
+bool over_work_limit(const MeshEstimate& estimate, const MeshOptions& options);
+
+// InputError naming "Mesh/contact size" (or "Mesh/body size" when the coarse part dominates, or
+// "Mesh/layers" when they do), with the estimate, when over_work_limit. mesh_planar_model calls
+// it before gmsh starts.
 void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
                          const MeshOptions& options);
 

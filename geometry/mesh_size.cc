@@ -38,6 +38,28 @@ double focus_cells(double size, double radius, double rate, double coarse)
       ((radius - size / rate) * (1. / size - 1. / coarse) + std::log(coarse / size) / rate);
   return disc + std::max(0., annulus);
 }
+
+// -, nodes of a section's boundary beyond one per quadrilateral, over its quadrilaterals, at
+// degree 1 (degree p: this over p, the boundary's share of a p² node block). A section of n
+// quadrilaterals and B boundary edges has n + B/2 vertices and 2n + B/2 edges (Euler), so
+// FE_Q(p) places p²·n + p·B/2 nodes on each of its p·layers + 1 planes. Measured on real meshes
+// (count → formula with 0.085): spur Q1 4 and 8 layers 105 885 → 105 904, 190 593 → 190 626;
+// spur Q2 1, 2 and 6 layers 244 188 → 244 200, 406 980 → 407 007, 1 058 148 → 1 058 237; helical Q1
+// 13 layers 633 024 → 653 697 (+3 %, its rims give fewer boundary nodes a cell).
+constexpr double boundary_nodes_per_cell = 0.085;
+
+// -, unknowns of FE_Q(degree) (3 components a node) on `hexahedra` extruded in `layers` layers.
+double hexahedron_unknowns(double hexahedra, unsigned int layers, unsigned int degree)
+{
+  const double p = degree, section = hexahedra / layers;
+  return 3. * p * p * section * (p * layers + 1.) * (1. + boundary_nodes_per_cell / p);
+}
+
+double solve_bytes_3d(double unknowns, unsigned int degree)
+{
+  return unknowns * (degree == 1 ? limits::solve_bytes_per_unknown_3d_q1
+                                 : limits::solve_bytes_per_unknown_3d_q2);
+}
 } // namespace
 
 double SizeGrading::size_at(const Eigen::Vector2d& point, const double contact_scale) const
@@ -158,44 +180,71 @@ MeshEstimate estimate_mesh(const PlanarModel& model, const SizeGrading& grading,
   }
   estimate.cells = estimate.fine_cells + estimate.graded_cells + estimate.body_cells;
   if (options.dimension == 3)
+  {
     estimate.cells *= options.layers;
+    estimate.unknowns = hexahedron_unknowns(estimate.cells, options.layers, options.element_degree);
+    estimate.solve_bytes = solve_bytes_3d(estimate.unknowns, options.element_degree);
+  }
   return estimate;
+}
+
+bool over_work_limit(const MeshEstimate& estimate, const MeshOptions& options)
+{
+  return options.dimension == 3 ? estimate.solve_bytes > limits::max_solve_bytes_3d
+                                : estimate.cells > limits::max_cells_2d;
 }
 
 void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
                          const MeshOptions& options)
 {
   const MeshEstimate estimate = estimate_mesh(model, grading, options);
-  const double limit = options.dimension == 3 ? limits::max_cells_3d : limits::max_cells_2d;
-  if (estimate.cells <= limit)
+  if (!over_work_limit(estimate, options))
     return;
+  const bool solid = options.dimension == 3;
   double fine_radius = 0.;
   for (const auto& focus : grading.foci)
     fine_radius = std::max(fine_radius, focus.radius);
-  const std::string kind = options.dimension == 3 ? "hexahedra" : "cells";
+  // 2D: the cells against their limit; 3D: the unknowns and memory of the solve against its.
+  const std::string size =
+      solid ? "about " + format_number(estimate.cells, 2) + " hexahedra, " +
+                  format_number(estimate.unknowns, 2) + " unknowns at element degree " +
+                  std::to_string(options.element_degree) + ", about " +
+                  format_number(estimate.solve_bytes / 1e9, 2) +
+                  " GB for the direct contact solve (limit " +
+                  format_number(limits::max_solve_bytes_3d / 1e9, 2) + " GB, docs/limits.md)"
+            : "about " + format_number(estimate.cells, 2) + " cells (limit " +
+                  format_number(limits::max_cells_2d, 2) + ", docs/limits.md)";
   const std::string reason =
-      "the mesh would have about " + format_number(estimate.cells, 2) + " " + kind + " (limit " +
-      format_number(limit, 2) + ", docs/limits.md): " + format_number(estimate.fine_cells, 2) +
+      "the mesh would have " + size + ": " + format_number(estimate.fine_cells, 2) +
       " at the contact size " + format_number(grading.smallest_size() * 1e3, 3) +
       " mm within the fine radius " + format_number(fine_radius * 1e3, 3) +
       " mm (0: 1.5 Hertz half-widths of the load), " +
       format_number(estimate.graded_cells + estimate.body_cells, 2) + " elsewhere (body size " +
       format_number(grading.body_size * 1e3, 3) + " mm" +
-      (options.dimension == 3 ? ", " + std::to_string(options.layers) + " layers" : "") + ")" +
-      (options.dimension == 2
-           ? ", about " + format_number(estimate.cells * limits::solve_bytes_per_cell_2d / 1e9, 2) +
-                 " GB for a Q2 contact solve"
-           : "") +
+      (solid ? ", " + std::to_string(options.layers) + " layers" : "") + ")" +
+      (solid
+           ? ""
+           : ", about " + format_number(estimate.cells * limits::solve_bytes_per_cell_2d / 1e9, 2) +
+                 " GB for a Q2 contact solve") +
       "; meshing and solving it could not finish";
   // In 3D the layers multiply the section: when the section would fit with the default layers,
   // the layers are what the user raised (1000 layers were blamed on the body size).
-  const double section_cells = estimate.cells / (options.dimension == 3 ? options.layers : 1.);
-  if (options.dimension == 3 && section_cells * MeshOptions().layers <= limit &&
-      std::floor(limit / section_cells) >= options.least_layers)
-    throw InputError(field::mesh("layers"), reason + ": use at most " +
-                                                std::to_string(static_cast<unsigned int>(
-                                                    std::floor(limit / section_cells))) +
-                                                " layers");
+  if (solid)
+  {
+    const double section_cells = estimate.cells / options.layers;
+    const auto fits = [&](unsigned int layers)
+    {
+      return solve_bytes_3d(
+                 hexahedron_unknowns(section_cells * layers, layers, options.element_degree),
+                 options.element_degree) <= limits::max_solve_bytes_3d;
+    };
+    unsigned int most = 0;
+    while (most < options.layers && fits(most + 1))
+      ++most;
+    if (fits(MeshOptions().layers) && most >= options.least_layers)
+      throw InputError(field::mesh("layers"),
+                       reason + ": use at most " + std::to_string(most) + " layers");
+  }
   if (estimate.body_cells > estimate.fine_cells + estimate.graded_cells)
     throw InputError(field::mesh("body_size"), reason + ": use a larger body size");
   throw InputError(field::mesh("contact_size"),

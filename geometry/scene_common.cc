@@ -1,7 +1,6 @@
 #include "geometry/scene_common.h"
 
 #include "errors/errors.h"
-#include "errors/limits.h"
 #include "geometry/fields.h"
 #include "kinematics/hertz.h"
 
@@ -174,6 +173,7 @@ SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contact
   options.dimension = settings.dimension;
   options.layers = settings.layers;
   options.least_layers = settings.least_layers;
+  options.element_degree = settings.element_degree;
   options.face_width = face_width;
   options.side_face_boundary_id = scene_ids::side_faces;
   options.file = file;
@@ -196,7 +196,7 @@ SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contact
        step < SceneMeshSettings::body_size_steps &&
        (sized.rim_size <= 0. ||
         sized.body_size * SceneMeshSettings::body_size_step <= sized.rim_size) &&
-       estimate_mesh(named, with_foci(graded(sized)), options).cells > limits::max_cells_3d;
+       over_work_limit(estimate_mesh(named, with_foci(graded(sized)), options), options);
        ++step)
     sized.body_size *= SceneMeshSettings::body_size_step;
   const SizeGrading grading = graded(sized);

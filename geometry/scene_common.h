@@ -70,7 +70,8 @@ struct SceneMeshSettings
   // this size; 0: four times the body size.
   double rim_size = 0.;
   // The body size is a default (`auto`), not the user's: in 3D, where the layers multiply the
-  // cells, a scene whose estimate exceeds the cell limit (errors/limits.h) coarsens it in steps
+  // cells, a scene whose estimate exceeds the work limit (errors/limits.h: the memory of a 3D
+  // solve at MeshOptions::element_degree) coarsens it in steps
   // of body_size_step, at most body_size_steps of them, before refusing (mesh_scene). A wide
   // helical face needs its layers for the contact lines and its contact size for the Hertz
   // zone; only the bodies away from the flanks can give (docs/helical.md "Default mesh").
@@ -78,6 +79,9 @@ struct SceneMeshSettings
   // -, MeshOptions::least_layers: set by the scene (a helical pair's twist rule), not a user
   // parameter.
   unsigned int least_layers = 1;
+  // -, MeshOptions::element_degree: the FE_Q degree the scene is solved with (set by the
+  // analysis from its elasticity parameters; the `mesh` command's deck is first order).
+  unsigned int element_degree = 1;
   // -, 15 %: the face-width study's steps; 5 steps are 2.01 × the default.
   static constexpr double body_size_step = 1.15;
   static constexpr unsigned int body_size_steps = 5;

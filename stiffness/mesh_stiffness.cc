@@ -291,8 +291,11 @@ void GearMeshStiffness<dim>::make_scene()
       mpi_communicator,
       [this]()
       {
+        // The work limit of a 3D scene is the memory of its solve, which the degree sets.
+        geometry::GearPairSceneSpec spec = settings.scene;
+        spec.mesh.element_degree = settings.elasticity.degree;
         const geometry::GearPairScene written =
-            geometry::write_gear_pair_scene(settings.scene, settings.scene_file);
+            geometry::write_gear_pair_scene(spec, settings.scene_file);
         std::vector<double> values{written.reference_position, written.info.contact_size,
                                    written.info.time_total, written.unloaded_transmission_error};
         for (const int j : written.contact_pairs)
