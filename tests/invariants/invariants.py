@@ -29,6 +29,11 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              pairs, unmodified, frictionless): k 1 %, TE 0.1 um, shares 0.01
     influence = exact        the influence-coefficient model (docs/ltca.md) against the rolling
                              sweep, frictionless cases: k 1 %, TE 0.1 um, shares 0.01
+    helical unloaded TE      the helical variant's unloaded TE (gearstiff mesh, 4 meshes):
+                             0 with a relief on one gear only; equal long reliefs give the
+                             spur tent's smallest value over the face's window x +- eps_beta/2
+                             (each transverse section is a spur section, shifted; depth C/cos
+                             beta_b along the transverse line of action): 1 nm
     errors name parameters   a wheel of two teeth (gear-pair) and a 1 mm centre distance (mesh)
                              fail with one line naming the parameter typed, not the library's
                              field (issue 45)
@@ -576,6 +581,8 @@ def helical_statics(case, runner, log):
     pair_sets = {k: v for k, v in sets.items() if k.startswith("Gear pair/")}
     pair, _, _ = runner.run("gear-pair", pair_sets)
     sets["Mesh/layers"] = max(2, math.ceil(8 * value(pair, "overlap_ratio") - 1e-9))
+    # Geometry first: it needs no solve, and the statics below may be skipped at the cell limit.
+    helical_unloaded_te(case, runner, log, sets, pair)
     # A 3D helical scene has layers × the 2D cells: one over the 2e5 hexahedra limit is refused
     # (exit 2 naming Mesh/body size, as it must be) and skipped here, printed. The fewest layers
     # the twist allows may still be too few for the contact lines, which cross the layers at
@@ -612,6 +619,76 @@ def helical_statics(case, runner, log):
     check_close("torque balance", value(report, "torque_balance_deviation"), 0., 6.3e-4)
     log(f"helical beta {beta} deg, {sets['Mesh/layers']} layers, {teeth} teeth modelled: "
         f"|F_a|/F_bt {ratio:.6f}, tan beta_b {tan_b:.6f}")
+
+
+def helical_tent(x, half_window, amount, e):
+    """The unloaded TE of equal long tip reliefs on a helical pair at mesh position x: each
+    transverse section z is a spur section at x + tan(beta_b)*(z - b/2)/p_bt, so the smallest
+    separation along the contact lines is the spur tent's smallest value over the window
+    x +- eps_beta/2. The tent is 0 on its single-contact zone [e, 1] (mod 1) and concave on
+    [0, e], so over a window that misses the zero set its minimum is at a window end."""
+    lo, hi = x - half_window, x + half_window
+    for k in range(math.floor(lo) - 1, math.floor(hi) + 1):
+        if k + e <= hi and k + 1. >= lo:
+            return 0.
+    tent = lambda y: amount * min(y % 1., e - y % 1.) / e
+    return min(tent(lo), tent(hi))
+
+
+HELICAL_TE_POSITIONS = (0.25, 0.5, 0.75)  # mesh positions x, fractions of e from A
+
+
+def helical_unloaded_te(case, runner, log, sets, pair):
+    """The helical unloaded TE (geometry; `gearstiff mesh` prints it) against closed forms, with
+    reliefs of its own (drawn from a stream of their own, 4-15 um; the case's own modification
+    may be one no closed form covers): equal long tip reliefs on both gears at three positions
+    give the spur tent's smallest value over the face's window (helical_tent; the depth taken
+    along the transverse line of action, depth/cos beta_b), and a relief on
+    one gear only gives 0 (the unmodified flank carries somewhere along every line): 1 nm.
+    The face is narrowed to eps_beta 0.2-0.8 (e = eps_alpha - 1), so that the window
+    x +- eps_beta/2 stays inside the double-contact zone at some positions (a wider face reaches
+    the single-contact zone, where the tent is 0, from every position). Coarse 3D meshes: the
+    value is the designed geometry, not the mesh's (tests/helical/test_helical_unloaded_error.cc
+    checks it against the meshed flanks' gap)."""
+    rng = random.Random(f"{case['seed']}:{case['index']}:helical te")
+    amount = round(rng.uniform(4., 15.), 1)  # um
+    one_gear = rng.choice(("Pinion", "Wheel"))
+    e = value(pair, "transverse_contact_ratio") - 1.  # of the helical pair (alpha_t)
+    overlap = round(rng.uniform(0.2, 0.8) * e, 3)
+    module = float(sets["Gear pair/Pinion/module"])
+    beta = abs(float(sets["Gear pair/Pinion/helix angle"]))
+    width = round(overlap * math.pi * module / math.sin(math.radians(beta)), 4)
+    mesh_sets = {k: v for k, v in sets.items() if k.startswith("Gear pair/")}
+    mesh_sets.update({"Gear pair/Pinion/face width": width, "Gear pair/Wheel/face width": width,
+                      "Mesh/dimension": 3, "Mesh/layers": max(2, math.ceil(8 * overlap)),
+                      "Mesh/contact size": round(0.3 * module, 4),
+                      "Mesh/fine radius": round(0.6 * module, 4),
+                      "Mesh/body size": round(1.5 * module, 4),
+                      "Gear pair scene/position": "roll angle"})
+    start, pitch = value(pair, "contact_start"), value(pair, "transverse_base_pitch")
+    radius = value(pair, "pinion_base_radius")
+    half = 0.5 * width * math.sin(math.radians(beta)) / (math.pi * module)
+    # A relief is a normal depth (docs/helical.md); along the transverse line of action, where
+    # the TE is measured, it separates the flanks by depth/cos(beta_b): cos(alpha_t) from
+    # p_bt = pi*m_n/cos(beta)*cos(alpha_t), tan(beta_b) = tan(beta)*cos(alpha_t).
+    cos_alpha_t = pitch * math.cos(math.radians(beta)) / (math.pi * module)
+    transverse = amount * math.sqrt(1. + (math.tan(math.radians(beta)) * cos_alpha_t) ** 2)
+    both = {"Gear pair/Pinion/tip relief": amount, "Gear pair/Wheel/tip relief": amount}
+    checks = [(f * e, both, helical_tent(f * e, half, transverse, e))
+              for f in HELICAL_TE_POSITIONS]
+    checks.append((0.5 * e, {f"Gear pair/{one_gear}/tip relief": amount}, 0.))
+    worst = 0.
+    for x, reliefs, expected in checks:
+        roll = math.degrees((start + x * pitch) / radius)
+        report, _, _ = runner.run("mesh", dict(mesh_sets, **reliefs, **{
+            "Gear pair scene/pinion roll angle": round(roll, 9)}))
+        got = value(report, "unloaded_transmission_error") * 1e3  # mm -> um
+        check_close(f"helical unloaded TE, x = {x:.4f}, {reliefs} [um]", got, expected, 1e-3)
+        worst = max(worst, abs(got - expected))
+    log(f"helical unloaded TE (face {width} mm, eps_beta {2 * half:.3f}): tent of {amount} um "
+        f"reliefs at x = {', '.join(f'{c[0]:.4f}' for c in checks[:3])} "
+        f"({', '.join(f'{c[2]:.4f}' for c in checks[:3])} um), {one_gear} relief only 0; "
+        f"|d| {worst:.2g} um")
 
 
 def errors_name_parameters(case, runner, log):
