@@ -38,7 +38,8 @@ std::vector<double> crossings_in_plane(const dealii::Triangulation<3>& triangula
     for (const auto f : cell->face_indices())
     {
       const auto face = cell->face(f);
-      if (!face->at_boundary() || face->boundary_id() != static_cast<dealii::types::boundary_id>(id))
+      if (!face->at_boundary() ||
+          face->boundary_id() != static_cast<dealii::types::boundary_id>(id))
         continue;
       for (unsigned int l = 0; l < face->n_lines(); ++l)
       {
@@ -79,8 +80,8 @@ MeshGap smallest_mesh_gap(const GearPairScene& scene, const std::string& file)
   {
     bool crossed = false;
     for (const int j : scene.contact_pairs)
-      for (const double p : crossings_in_plane(triangulation, pinion_flank_id(j), z, line[0],
-                                               line[1]))
+      for (const double p :
+           crossings_in_plane(triangulation, pinion_flank_id(j), z, line[0], line[1]))
         for (const double w :
              crossings_in_plane(triangulation, wheel_flank_id(j), z, line[0], line[1]))
           if (std::abs(w - p) < 0.1e-3) // the pair's two flanks, not a neighbour's
