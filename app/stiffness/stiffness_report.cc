@@ -326,6 +326,13 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
       << format_number(spec.wheel.profile_shift, 4) << ", eps_alpha "
       << format_number(pair.transverse_contact_ratio, 6) << ", T1 " << format_number(torque, 6)
       << " N·m: two gears, one mesh.\n"
+      << (spec.pinion.helix_angle != 0.
+              ? "# Helical, beta " + format_number(std::abs(spec.pinion.helix_angle) / degree, 6) +
+                    " deg (beta_b " + format_number(pair.base_helix_angle / degree, 6) +
+                    " deg): k(x) acts along the transverse line of action (normal to the flank: "
+                    "k/cos^2 beta_b); the axial force and the tilting moment are not in the "
+                    "torsional model (dynamics/README.md, Helical meshes).\n"
+              : "")
       << (sweep.torques.size() > 1
               ? "# k(x) and T1 are the first torque's of Stiffness/torques (te_sweep.csv holds "
                 "every torque's k per position).\n"

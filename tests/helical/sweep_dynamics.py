@@ -95,6 +95,13 @@ def main():
     with open(table_file) as f:
         text = f.read()
     resonance = float(text.split("resonance speed n_E1 = ")[1].split()[0])
+    # The header says what the table's k is for a helical mesh (dynamics/README.md "Helical
+    # meshes"): beta_b of the small pair, tan(beta_b) = tan(beta)*cos(alpha_t).
+    header = [line for line in text.splitlines() if line.startswith("# Helical, beta ")]
+    checks.near("the table's header names the transverse line of action", len(header), 1, 0.,
+                relative=False)
+    if header:
+        print(header[0])
     dynamics = run([gearstiff, "dynamics", table_file, "--json", "--quiet"], work)
     speed = float(text.split("set input speed = ")[1].split()[0])
     checks.near("mesh frequency [Hz] = z1 n1 / 60", value(dynamics, "mesh_frequency"),
