@@ -191,12 +191,22 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                    r.wheel_root_stress / 1e6, r.torque_ratio, double(r.active_set_iterations),
                    double(r.n_dofs), r.total_time, double(sweep.rank_of_position[i])});
   }
+  // A helical pair's closed nodes span the face: some section of a loaded line nearly always
+  // reaches A or E, so there the flag says that a line meets a tip edge, not that the largest
+  // pressure is the corner's (the result does not locate it).
+  const bool helical = pair.spec.pinion.helix_angle != 0.;
   if (!edges.empty())
     report.add_text(name + " tip edge contact",
                     "positions " + edges +
-                        ": a loaded pair touches at a tip corner (closed nodes within one contact "
-                        "cell of A or E); their max_pressure is an edge pressure that grows with "
-                        "refinement, not a Hertz pressure (column tip_edge_contact)");
+                        (helical ? ": a loaded contact line reaches a tip edge (closed nodes "
+                                   "within one contact cell of A or E in some section of the "
+                                   "face); their max_pressure may be that corner's edge "
+                                   "pressure, which grows with refinement (column "
+                                   "tip_edge_contact; docs/helical.md Limits)"
+                                 : ": a loaded pair touches at a tip corner (closed nodes within "
+                                   "one contact cell of A or E); their max_pressure is an edge "
+                                   "pressure that grows with refinement, not a Hertz pressure "
+                                   "(column tip_edge_contact)"));
 }
 
 void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,
