@@ -841,22 +841,22 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
       throw InputError(kinematics::field::gear(true, "internal"),
                        "the 3D influence-coefficient model carries external pairs only; use "
                        "Stiffness/contact model = finite element for an internal pair in 3D");
-    // Helical pairs: built (docs/ltca.md §3 "Helical", 2026-12-03), not accepted. Measured
-    // 2026-12-03 (ltca47i; Q1, 4 positions, μ 0, one run each) against the exact path on the
-    // same layers: the small pair (z 19/29, β 10°, 5 layers, h_c 0.15 mm) k +0.3 … +2.9 %, TE
-    // −0.25 µm; the built-in pair at β 15° (13 layers, h_c 0.19 mm) k +5.0 … +6.2 %, TE −0.31 µm,
-    // K_Hβ up to +43 % where a pair touches at its tip edge. The exact path there is itself 1 %
-    // from its finer level (h_c 0.075 mm, 10 layers: k +0.6 … +1.1 %), the fast model stays
-    // −1.6 … +1.7 % off it (−1.6 % where the leaving pair's line ends between node planes):
-    // refused until it meets 1 % (lift this by hand for the measurement:
-    // tests/helical/influence_helical.py --exact). Lead modifications on helical teeth are built
-    // (each plane's transverse gap) and not measured.
+    // Helical pairs: built (docs/ltca.md §3 "3D helical pairs", 2026-12-03), not accepted.
+    // Measured 2026-12-03 (ltca47i; Q1, 4 positions, μ 0, one run each) against the exact path
+    // at h_c 0.075 mm (converged there within 0.24 %), 10 layers both: the small pair (z 19/29,
+    // β 10°) k +1.1 … +1.5 % where every contact line crosses the face (+0.4 … +0.9 % with h_f
+    // halved: the twisted Q1 body is stiff) and −1.5 % where a line ends inside the face; at
+    // β 15° −2.5 … −3.3 % there, and the built-in pair (ε_β 0.79, a line end at every position)
+    // +3 … +5 %, K_Hβ up to 40 % off: the exact path finds a tip-edge contact beyond the path's
+    // end, which the stations on A–E do not carry. Refused until it meets 1 % (lift this by hand
+    // for the measurement: tests/helical/influence_helical.py --exact). Lead modifications on
+    // helical teeth are built (each plane's transverse gap) and not measured.
     if (settings.scene.pair.pinion.helix_angle != 0.)
       throw InputError(kinematics::field::gear(false, "helix_angle"),
                        "the 3D influence-coefficient model is built for helical pairs but not "
-                       "yet accepted (k 1-6 % stiffer than the exact path at β 10-15°, "
-                       "docs/ltca.md §3 \"Helical\"); use Stiffness/contact model = finite "
-                       "element");
+                       "yet accepted (k up to 5 % off the exact path at β 10-15° where a contact "
+                       "line ends inside the face, docs/ltca.md §3 \"3D helical pairs\"); use "
+                       "Stiffness/contact model = finite element");
     // Lead crowning: each node plane's gap is geometry's lead removal there, so the planes must
     // resolve the crowned contact's line load along the face. Measured 2026-12-02 (ltca47h;
     // default pair, Q1, 4 positions, μ 0; docs/ltca.md §3 "Lead modifications"): C_β = 10 µm on
