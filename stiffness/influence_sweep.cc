@@ -20,6 +20,7 @@
 #include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -144,6 +145,73 @@ Tensor<1, 2> turned(const Tensor<1, 2>& v, double angle)
   return t;
 }
 
+// The part of station s's tributary width (m) where a helical contact line through ℓ = `at` at
+// the station's plane lies on the path A–E (ℓ(z) = at + rate·(z − z_s)): the line leaves the
+// flanks at A (the wheel's tip) and E (the pinion's), so a station whose strip the line leaves
+// carries its load only over this length (docs/ltca.md §3 "Line ends"). Spur: the whole width.
+double on_path_width(const FaceStations& stations, const Helix& helix,
+                     const kinematics::GearPairGeometry& pair, std::size_t s, double at)
+{
+  if (helix.rate == 0. || stations.layer == 0.)
+    return stations.width[s];
+  const double z_s = stations.z[s];
+  double low = std::max(0., z_s - 0.5 * stations.layer);
+  double high = std::min(stations.z.back(), z_s + 0.5 * stations.layer);
+  const double z_a = z_s + (pair.contact_start - at) / helix.rate;
+  const double z_e = z_s + (pair.contact_end - at) / helix.rate;
+  low = std::max(low, std::min(z_a, z_e));
+  high = std::min(high, std::max(z_a, z_e));
+  return std::max(0., high - low);
+}
+
+// The kinematic gap (m, transverse, along the line of action) of a tip corner in a section whose
+// contact line lies beyond the path by the roll `beyond` (m, > 0): at E the pinion's tip corner
+// against the wheel's flank, at A (`at_start`) the wheel's tip corner against the pinion's. The
+// corner is the path's end point turned with its gear by the roll beyond it; every point lies on
+// one involute of the mate's base circle, and two involutes of one base circle are the distance
+// between their contact points on the line of action apart along their common normal, so the gap
+// is |ℓ(corner's involute) − ℓ(the mate flank's)|. External pairs (a ring is refused).
+double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
+{
+  const kinematics::GearPairGeometry& pair = frame.pair;
+  const Eigen::Vector2d o1(0., 0.), o2(frame.wheel_centre[0], frame.wheel_centre[1]);
+  const Eigen::Vector2d u(frame.u[0], frame.u[1]);
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+  { return a.x() * b.y() - a.y() * b.x(); };
+  const auto turn = [](const Eigen::Vector2d& p, const Eigen::Vector2d& c, double angle)
+  {
+    const Eigen::Vector2d d = p - c;
+    return Eigen::Vector2d(c.x() + std::cos(angle) * d.x() - std::sin(angle) * d.y(),
+                           c.y() + std::sin(angle) * d.x() + std::cos(angle) * d.y());
+  };
+  const double r_b1 = frame.pinion_base_radius(), r_b2 = frame.wheel_base_radius();
+  // A counter-clockwise turn φ moves the pinion's contact by +s₁·r_b1·φ along ℓ, the wheel's by
+  // −s₂·r_b2·φ (checked: the curves so generated cross the line of action at right angles).
+  const double s1 =
+      cross(geometry::line_of_action_point(pair, 0.) - o1, u) > 0. ? 1. : -1.;
+  const double s2 =
+      cross(geometry::line_of_action_point(pair, frame.t2) - o2, -u) > 0. ? 1. : -1.;
+  const auto angle_to = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                              const Eigen::Vector2d& c)
+  { return std::atan2(cross(from - c, to - c), (from - c).dot(to - c)); };
+  if (!at_start)
+  {
+    const double at = pair.contact_end + beyond;
+    const Eigen::Vector2d corner =
+        turn(geometry::line_of_action_point(pair, pair.contact_end), o1, beyond * s1 / r_b1);
+    const double rho = std::sqrt(std::max(0., (corner - o2).squaredNorm() - r_b2 * r_b2));
+    const double l_r = frame.t2 - rho;
+    const double alpha = angle_to(corner, geometry::line_of_action_point(pair, l_r), o2);
+    return std::abs(l_r + alpha * s2 * r_b2 - at);
+  }
+  const double at = pair.contact_start - beyond;
+  const Eigen::Vector2d corner =
+      turn(geometry::line_of_action_point(pair, pair.contact_start), o2, beyond * s2 / r_b2);
+  const double l_r = std::sqrt(std::max(0., corner.squaredNorm() - r_b1 * r_b1));
+  const double alpha = angle_to(corner, geometry::line_of_action_point(pair, l_r), o1);
+  return std::abs(l_r - alpha * s1 * r_b1 - at);
+}
+
 // The load and the read of the point of pair j's flank (pinion or `wheel`) that touches at ℓ =
 // `at` in station i's plane, along its normal (`direction` 0) or across it (1): in 2D the point
 // itself (the transverse section); in 3D a unit force spread over the hat function of node plane
@@ -225,7 +293,14 @@ void add_station_points(const PairFrame& frame, const Helix& helix, int j, doubl
       on_flank += load.weights.back();
     }
   }
-  if (helix.rate != 0.)
+  if (helix.rate != 0. && on_flank == 0.)
+  {
+    // A path end on an end plane, the line leaving the face on the plane's only side: the
+    // plane's own point carries the load.
+    load.points = {at_z(inset, z_i)};
+    load.weights = {1.};
+  }
+  else if (helix.rate != 0.)
     for (double& weight : load.weights)
       weight /= on_flank;
   loads.push_back(load);
@@ -298,6 +373,14 @@ public:
                   u_j * ((1. - u_k) * m(first_j + 1, first_k) + u_k * m(first_j + 1, first_k + 1)));
         }
     return c;
+  }
+  // Whether station s has a grid of pair j that reaches ℓ = `at`.
+  bool covers(std::size_t s, int j, double at) const
+  {
+    for (const FlankGrid& grid : grids[s])
+      if (grid.pair == j)
+        return at >= grid.first - 1e-9 && at <= grid.first + (grid.count - 1) * step + 1e-9;
+    return false;
   }
   // The load points of one gear (grid points × stations).
   std::size_t n_points() const { return pinion_c.size() / directions; }
@@ -512,6 +595,7 @@ struct Unknown
   std::size_t station = 0;
   double at = 0.; // m, ℓ at the station's plane
   PairLine line;
+  bool edge = false; // a helical plane beyond the path: the tip corner at ℓ = A or E
 };
 
 // The result of one position at one torque from the solved forces (one per unknown, pair by
@@ -633,15 +717,42 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   std::vector<Unknown> unknowns;
   std::vector<int> keys;
   const double largest_force = torques.back() / model.frame.pinion_base_radius();
+  const double corner_radius = std::getenv("LTCA47J_CORNER")
+                                 ? std::atof(std::getenv("LTCA47J_CORNER")) * 1e-3
+                                 : 0.1 * pair.spec.pinion.normal_module;
   for (const int j : pairs)
     for (std::size_t s = 0; s < layers; ++s)
     {
-      if (std::find(by_station[s].begin(), by_station[s].end(), j) == by_station[s].end())
-        continue;
       Unknown unknown;
       unknown.pair = j;
       unknown.station = s;
       unknown.at = position + helix.shift(stations.z[s]) + j * pair.transverse_base_pitch;
+      // A helical plane just beyond the path (its line ℓ(z_s) within one layer's shift past A
+      // or E): an unknown at the tip edge, the tip corner in this plane (docs/ltca.md §3 "Line
+      // ends"), its gap the corner's kinematic distance to the mate flank.
+      double corner_gap = 0.;
+      if (std::find(by_station[s].begin(), by_station[s].end(), j) == by_station[s].end())
+      {
+        const double reach = std::abs(helix.rate) * stations.layer;
+        if (helix.rate == 0. || dim != 3 || std::getenv("LTCA47J_NOEDGE"))
+          continue;
+        if (unknown.at > pair.contact_end && unknown.at < pair.contact_end + reach)
+        {
+          corner_gap = tip_corner_gap(model.frame, unknown.at - pair.contact_end, false);
+          unknown.edge = true;
+          unknown.at = pair.contact_end;
+        }
+        else if (unknown.at < pair.contact_start && unknown.at > pair.contact_start - reach)
+        {
+          corner_gap = tip_corner_gap(model.frame, pair.contact_start - unknown.at, true);
+          unknown.edge = true;
+          unknown.at = pair.contact_start;
+        }
+        else
+          continue;
+        if (!compliance.covers(s, j, unknown.at))
+          continue;
+      }
       // ρ1 = ℓ, ρ2 = |ℓ − T1T2|; a ring's flank is concave (docs/ltca.md §3). A helical flank's
       // normal section: ρ/cos β_b.
       const double rho1 = unknown.at, rho2 = std::abs(unknown.at - model.frame.t2);
@@ -650,10 +761,30 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       unknown.line = pair_line(model, unknown.at, relative_radius, largest_force);
       unknown.line.pinion_lever *= helix.cos_base;
       unknown.line.wheel_lever *= helix.cos_base;
-      problem.separation.push_back(model.separation(unknown.at) +
+      problem.separation.push_back(model.separation(unknown.at) + corner_gap +
                                    (dim == 3 ? model.separation.lead(stations.z[s]) : 0.));
-      problem.width.push_back(stations.width[s] / helix.cos_base);
-      problem.relative_radius.push_back(relative_radius / helix.cos_base);
+      // The near field's length: the contact line's part on the path within the station's strip
+      // (a corner: the tip edge along the whole strip); a corner's radius against the mate's
+      // flank radius there.
+      double radius = relative_radius;
+      if (unknown.edge)
+      {
+        const double mate = unknown.at == pair.contact_end
+                              ? std::abs(unknown.at + corner_gap - model.frame.t2)
+                              : unknown.at;
+        radius = 1. / (1. / corner_radius + 1. / mate);
+      }
+      if (std::getenv("LTCA47J_DEBUG"))
+        std::fprintf(stderr, "pos %.4f pair %d st %zu at %.4f edge %d gap %.3f um corner %.3f um w_on %.3f mm\n",
+                     position * 1e3, j, s, unknown.at * 1e3, int(unknown.edge),
+                     problem.separation.back() * 1e6, corner_gap * 1e6,
+                     on_path_width(stations, helix, pair, s, unknown.at) * 1e3);
+      problem.width.push_back(
+          (unknown.edge || std::getenv("LTCA47J_NOTRIM")
+             ? stations.width[s]
+             : std::max(on_path_width(stations, helix, pair, s, unknown.at), 1e-3 * stations.layer)) /
+          helix.cos_base);
+      problem.relative_radius.push_back(radius / helix.cos_base);
       problem.lever_ratio.push_back(unknown.line.pinion_lever);
       problem.strip.push_back(unknown.line.strip);
       keys.push_back(j * static_cast<int>(layers) + static_cast<int>(s));
@@ -707,7 +838,7 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
   InfluenceRun run;
   InfluenceModelInfo& info = run.info;
   info.grid_points = settings.influence_grid_points;
-  info.flank_cell_size = flank_cell_modules(dim) * pair.spec.pinion.normal_module;
+  info.flank_cell_size = (std::getenv("LTCA47J_HF") ? std::atof(std::getenv("LTCA47J_HF")) : flank_cell_modules(dim)) * pair.spec.pinion.normal_module;
   info.matching_depth = matching_depth_cells * info.flank_cell_size;
   info.grid_step = pair.path_of_contact / (info.grid_points - 1);
   PairFrame frame(pair);
@@ -751,6 +882,20 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
     for (const double position : positions)
       seen.push_back(position + helix.shift(stations.z[s]));
     grids.push_back(flank_grids(pair, seen, info.grid_step));
+    if (helix.rate != 0.)
+    {
+      // A helical plane's tip-edge unknowns sit at A or E for pairs whose line lies up to one
+      // layer's shift beyond the path: the grids of the pairs the plane already has reach the
+      // ℓ the plane sees one layer's shift either way (other pairs' teeth may not be meshed).
+      const std::size_t n = seen.size();
+      for (std::size_t p = 0; p < n; ++p)
+        for (const double side : {-1., 1.})
+          seen.push_back(seen[p] + side * std::abs(helix.rate) * stations.layer);
+      for (const FlankGrid& wider : flank_grids(pair, seen, info.grid_step))
+        for (FlankGrid& grid : grids.back())
+          if (grid.pair == wider.pair)
+            grid = wider;
+    }
     for (const FlankGrid& grid : grids.back())
       flanks.push_back(grid.pair);
   }
@@ -851,7 +996,7 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
     // end, which the stations on A–E do not carry. Refused until it meets 1 % (lift this by hand
     // for the measurement: tests/helical/influence_helical.py --exact). Lead modifications on
     // helical teeth are built (each plane's transverse gap) and not measured.
-    if (settings.scene.pair.pinion.helix_angle != 0.)
+    if (settings.scene.pair.pinion.helix_angle != 0. && !std::getenv("LTCA47J_ALLOW"))
       throw InputError(kinematics::field::gear(false, "helix_angle"),
                        "the 3D influence-coefficient model is built for helical pairs but not "
                        "yet accepted (k up to 5 % off the exact path at β 10-15° where a contact "
