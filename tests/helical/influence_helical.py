@@ -2,7 +2,8 @@
 """The 3D influence-coefficient model on a helical pair against the exact FE contact path (issue
 47, docs/ltca.md §3 "Helical").
 
-usage: influence_helical.py path/to/gearstiff WORK_FOLDER [small|built-in] [--exact]
+usage: influence_helical.py path/to/gearstiff WORK_FOLDER [small|built-in|small-fine|small-15-fine]
+       [--exact]
 
 Runs `Stiffness/contact model = influence coefficients` on a 4-position sweep of the case and
 compares it position by position with the exact path's values stored below (or, with --exact,
@@ -15,6 +16,8 @@ checked (the exact path's nodal peak at these coarse contact sizes is not conver
 Cases: `small` (tests/helical/small_pair.py: z 19/29, m_n 2 mm, β ±10°, b 8 mm, 20 N·m, 5 layers,
 the coarse sizes; Q1, μ 0) and `built-in` (the split-path pair at β ±15°, ε_β 0.79, 13 layers,
 Q1, μ 0, the small pair's coarse sizes scaled to m_n 2.5 mm: tests/helical/sweep_once.py).
+`small-fine` and `small-15-fine`: the small pair at β 10° and 15° on the exact path's converged
+level (10 layers, h_c 0.075 mm), the references of docs/ltca.md §3 "Line ends".
 """
 import json
 import os
@@ -38,6 +41,14 @@ CASES = {
                  "Mesh/dimension=3", "Mesh/contact size=0.1875", "Mesh/fine radius=0.5",
                  "Mesh/body size=0.9375", "Mesh/rim size=3.125"],
 }
+# The converged exact level of the small pair (docs/ltca.md §3 "Line ends"): 10 layers, h_c
+# 0.075 mm (0.075 → 0.0375 mm moved k by −0.10 … +0.24 %), at β 10° and 15°.
+FINE = [e for e in MESH if not e.startswith(("Mesh/layers", "Mesh/contact size"))] + [
+    "Mesh/layers=10", "Mesh/contact size=0.075"]
+BETA_15 = [e for e in PAIR if "helix angle" not in e] + [
+    "Gear pair/Pinion/helix angle=15", "Gear pair/Wheel/helix angle=-15"]
+CASES["small-fine"] = PAIR + FINE
+CASES["small-15-fine"] = BETA_15 + FINE
 FAST = ["Stiffness/contact model=influence coefficients"]
 EXACT = ["Stiffness/sweep mesh=per position"]
 
@@ -57,6 +68,18 @@ STORED = {
                            [0.209, 0.7007, 0.0902]],
                  "K_Hb": [1.2703, 1.3781, 1.4431, 1.4928], "p_max": [419.7, 471.4, 479.2, 730.6]},
 }
+
+# regression: measured 2026-12-03 (ltca47j, `gearstiff` of main f5441c6, the exact per-position
+# sweep with the settings of the case, one unlocked run each): small-fine 32.9 s, 1.95 GB;
+# small-15-fine 43.4 s.
+STORED["small-fine"] = {
+    "k": [145.582, 146.363, 123.697, 101.927], "te": [7.5914, 7.5509, 8.9345, 10.8428],
+    "share": [[0, 0.443, 0.557], [0, 0.5215, 0.4785], [0, 0.7381, 0.2619], [0, 1, 0]],
+    "K_Hb": [1.0436, 1.0163, 1.4884, 1.0204], "p_max": [1124.1, 928.7, 3564.1, 1083.9]}
+STORED["small-15-fine"] = {
+    "k": [132.661, 133.502, 111.988, 107.625], "te": [8.1904, 8.1389, 9.7024, 10.0957],
+    "share": [[0, 0.4413, 0.5587], [0, 0.529, 0.471], [0, 0.7594, 0.2406], [0.1818, 0.8182, 0]],
+    "K_Hb": [1.089, 1.0332, 1.5712, 1.6863], "p_max": [1152.7, 1530.4, 2446.1, 1733.3]}
 
 K_TOLERANCE = 1e-2  # relative: issue 47
 TE_TOLERANCE = 0.1  # µm: issue 47
