@@ -9,6 +9,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -48,28 +49,36 @@ Ids ids_of(const dealii::Triangulation<dim>& triangulation)
   }
   return ids;
 }
+// Where the segment a–b (b excluded) crosses the line t1–t2: the distance from t1 along it, or
+// nothing when they do not meet between t1 and t2 (or are parallel).
+inline std::optional<double> segment_crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                              const Eigen::Vector2d& t1, const Eigen::Vector2d& t2)
+{
+  const Eigen::Vector2d u = (t2 - t1).normalized();
+  Eigen::Matrix2d m;
+  m << u, a - b;
+  if (std::abs(m.determinant()) < 1e-30)
+    return std::nullopt;
+  const Eigen::Vector2d ts = m.inverse() * (a - t1);
+  if (ts(1) >= 0. && ts(1) < 1. && ts(0) >= 0. && ts(0) <= (t2 - t1).norm())
+    return ts(0);
+  return std::nullopt;
+}
+
 // Distances along the line of action (from T1) where it crosses boundary faces with an id of
 // `ids`.
 inline std::vector<double> crossings(const dealii::Triangulation<2>& triangulation,
                                      const std::set<int>& ids, const Eigen::Vector2d& t1,
                                      const Eigen::Vector2d& t2)
 {
-  const Eigen::Vector2d u = (t2 - t1).normalized();
-  const double length = (t2 - t1).norm();
   std::vector<double> result;
   for (const auto& cell : triangulation.active_cell_iterators())
     for (const auto f : cell->face_indices())
       if (cell->face(f)->at_boundary() && ids.count(cell->face(f)->boundary_id()) > 0)
       {
         const auto v0 = cell->face(f)->vertex(0), v1 = cell->face(f)->vertex(1);
-        const Eigen::Vector2d a(v0[0], v0[1]), b(v1[0], v1[1]);
-        Eigen::Matrix2d m;
-        m << u, a - b;
-        if (std::abs(m.determinant()) < 1e-30)
-          continue;
-        const Eigen::Vector2d ts = m.inverse() * (a - t1);
-        if (ts(1) >= 0. && ts(1) < 1. && ts(0) >= 0. && ts(0) <= length)
-          result.push_back(ts(0));
+        if (const auto t = segment_crossing({v0[0], v0[1]}, {v1[0], v1[1]}, t1, t2))
+          result.push_back(*t);
       }
   return result;
 }

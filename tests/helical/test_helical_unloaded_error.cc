@@ -31,8 +31,6 @@ std::vector<double> crossings_in_plane(const dealii::Triangulation<3>& triangula
                                        double z, const Eigen::Vector2d& t1,
                                        const Eigen::Vector2d& t2)
 {
-  const Eigen::Vector2d u = (t2 - t1).normalized();
-  const double length = (t2 - t1).norm();
   std::vector<double> result;
   for (const auto& cell : triangulation.active_cell_iterators())
     for (const auto f : cell->face_indices())
@@ -46,14 +44,8 @@ std::vector<double> crossings_in_plane(const dealii::Triangulation<3>& triangula
         const auto v0 = face->line(l)->vertex(0), v1 = face->line(l)->vertex(1);
         if (std::abs(v0[2] - z) > 1e-9 || std::abs(v1[2] - z) > 1e-9)
           continue;
-        const Eigen::Vector2d a(v0[0], v0[1]), b(v1[0], v1[1]);
-        Eigen::Matrix2d m;
-        m << u, a - b;
-        if (std::abs(m.determinant()) < 1e-30)
-          continue;
-        const Eigen::Vector2d ts = m.inverse() * (a - t1);
-        if (ts(1) >= 0. && ts(1) < 1. && ts(0) >= 0. && ts(0) <= length)
-          result.push_back(ts(0));
+        if (const auto t = test_support::segment_crossing({v0[0], v0[1]}, {v1[0], v1[1]}, t1, t2))
+          result.push_back(*t);
       }
     }
   return result;
