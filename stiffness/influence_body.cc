@@ -121,6 +121,7 @@ void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double po
   load.contact_length = 2. * half_width;
   load.closed_roll_min = load.position - half_width;
   load.closed_roll_max = load.position + half_width;
+  load.max_pressure_roll = load.position; // Hertz: the peak on the line (3D: the caller's station)
   r.loaded_pairs += load.load_share > 1e-6;
   r.max_contact_pressure = std::max(r.max_contact_pressure, load.max_pressure);
   r.pairs.push_back(load);

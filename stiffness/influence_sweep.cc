@@ -665,12 +665,15 @@ position_result(const PositionModel& model, double position, const std::vector<i
   {
     // The pair's force over its stations, its highest peak pressure and widest contact band.
     double force = 0., peak = 0., widest = 0.;
+    const Unknown* peak_at = nullptr; // the unknown of the pair's peak pressure
     for (std::size_t item = 0; item < unknowns.size(); ++item)
     {
       if (unknowns[item].pair != j)
         continue;
       const std::size_t s = unknowns[item].station;
       force += solution.force[item];
+      if (peak_at == nullptr || solution.contact[item].peak_pressure > peak)
+        peak_at = &unknowns[item];
       peak = std::max(peak, solution.contact[item].peak_pressure);
       widest = std::max(widest, solution.contact[item].half_width);
       // N/m: the normal force per unit of face width, as the exact path's ∫ p ds across the
@@ -680,6 +683,13 @@ position_result(const PositionModel& model, double position, const std::vector<i
             {j, model.stations.z[s], solution.force[item] / model.stations.width[s]});
     }
     add_pair_load(r, model.frame, position, j, force, total, peak, widest);
+    if (peak_at != nullptr)
+    {
+      r.pairs.back().max_pressure_roll = peak_at->at;
+      if (dim == 3)
+        r.pairs.back().max_pressure_face =
+            model.stations.z[peak_at->station] - 0.5 * model.face_width;
+    }
   }
   if (dim == 3)
     r.face_load_factor = summarise_face_load(r.face_load).factor;

@@ -46,10 +46,11 @@ double polar_radius(const Point<dim>& p, double centre_x)
 
 // The pair's resultant against the line of action u = (sin α_wt, cos α_wt) (the ring pushes
 // the pinion along −u) and the roll lengths of its closed pinion nodes (the pinion centre is
-// the scene origin), ToothPairLoad.
+// the scene origin) and of its largest pressure (`mid_face`, m: the face's middle on the axis,
+// 3D), ToothPairLoad.
 template <int dim>
 void locate_load(const contact::PairResult<dim>& contact, double working_pressure_angle,
-                 double pinion_base_radius, ToothPairLoad& load)
+                 double pinion_base_radius, double mid_face, ToothPairLoad& load)
 {
   const double along = -(contact.force_on_slave[0] * std::sin(working_pressure_angle) +
                          contact.force_on_slave[1] * std::cos(working_pressure_angle));
@@ -59,6 +60,7 @@ void locate_load(const contact::PairResult<dim>& contact, double working_pressur
   load.force_deviation = std::atan2(across, along);
   load.closed_roll_min = std::numeric_limits<double>::max();
   load.closed_roll_max = 0.;
+  double peak = -std::numeric_limits<double>::max();
   for (const auto& point : contact.points)
     if (point.state != contact::NodeState::open)
     {
@@ -66,9 +68,16 @@ void locate_load(const contact::PairResult<dim>& contact, double working_pressur
       const double roll = std::sqrt(std::max(0., r * r - pinion_base_radius * pinion_base_radius));
       load.closed_roll_min = std::min(load.closed_roll_min, roll);
       load.closed_roll_max = std::max(load.closed_roll_max, roll);
+      if (point.pressure > peak)
+      {
+        peak = point.pressure;
+        load.max_pressure_roll = roll;
+        load.max_pressure_face = dim == 3 ? point.position[dim - 1] - mid_face : 0.;
+      }
     }
   if (load.closed_roll_min > load.closed_roll_max)
-    load.closed_roll_min = load.closed_roll_max = load.position; // no closed node
+    load.closed_roll_min = load.closed_roll_max = load.max_pressure_roll =
+        load.position; // no closed node
 }
 // 3D: the mesh forces on the pinion and their tilting moment (GearMeshStiffnessResult).
 template <int dim>
@@ -504,7 +513,8 @@ void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& 
     load.max_pressure = pair_result.max_pressure;
     load.contact_length = pair_result.contact_length;
     load.closed_nodes = pair_result.n_closed;
-    locate_load(pair_result, pair.working_pressure_angle, result.pinion_base_radius, load);
+    locate_load(pair_result, pair.working_pressure_angle, result.pinion_base_radius,
+                0.5 * pair.common_face_width, load);
     result.loaded_pairs += load.load_share > 1e-6;
     result.max_contact_pressure = std::max(result.max_contact_pressure, load.max_pressure);
   }

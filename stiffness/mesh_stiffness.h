@@ -94,6 +94,10 @@ struct ToothPairLoad
   double force_deviation = 0.; // rad, CCW angle of that force from −u
   double closed_roll_min = 0.; // m, smallest roll length √(r² − r_b1²) of a closed pinion node
   double closed_roll_max = 0.; // m, largest
+  // Where the pair's largest pressure acts (its closed pinion node of max_pressure): a peak
+  // within one contact cell of A or E is a tip corner's edge pressure, not a Hertz pressure.
+  double max_pressure_roll = 0.; // m, roll length √(r² − r_b1²) of that node
+  double max_pressure_face = 0.; // m, its axial coordinate from the middle of the face (2D: 0)
 
   // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
   // completeness check of tests/stiffness/test_result_fields.cc use this list.
@@ -111,6 +115,8 @@ struct ToothPairLoad
     visit("force_deviation", self.force_deviation);
     visit("closed_roll_min", self.closed_roll_min);
     visit("closed_roll_max", self.closed_roll_max);
+    visit("max_pressure_roll", self.max_pressure_roll);
+    visit("max_pressure_face", self.max_pressure_face);
   }
   template <class Archive>
   void serialize(Archive& archive, const unsigned int /*version*/)

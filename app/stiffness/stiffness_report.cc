@@ -91,6 +91,14 @@ void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnes
             format_number(pair.position * 1e3, 5) + " mm from T1)");
   report.add_value(prefix + "max_contact_pressure", r.max_contact_pressure / 1e6, "MPa",
                    label + ": largest nodal contact pressure (Q2: an estimate, docs/accuracy.md)");
+  if (const stiffness::ToothPairLoad* peak = peak_pressure_pair(r))
+  {
+    report.add_value(prefix + "max_pressure_roll", peak->max_pressure_roll * 1e3, "mm",
+                     label + ": where it acts: roll length √(r² − r_b1²) of its pinion node, "
+                             "from T1 as the path of contact A–E");
+    report.add_value(prefix + "max_pressure_face", peak->max_pressure_face * 1e3, "mm",
+                     label + ": where it acts across the face, from the middle (2D: 0)");
+  }
   if (!r.pairs.empty())
   {
     // The most loaded pair's closed zone: its width across the profile is 2a of Hertz's line
@@ -136,19 +144,28 @@ void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair)
                    "ε_f = AC/p_bt, start of contact to the pitch point (pinion drives)");
 }
 
+const stiffness::ToothPairLoad* peak_pressure_pair(const stiffness::GearMeshStiffnessResult& r)
+{
+  const stiffness::ToothPairLoad* peak = nullptr;
+  for (const auto& load : r.pairs)
+    if (load.normal_force > 0. && load.closed_nodes > 0 &&
+        (peak == nullptr || load.max_pressure > peak->max_pressure))
+      peak = &load;
+  return peak;
+}
+
 bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
                       const kinematics::GearPairGeometry& pair)
 {
-  // A loaded pair whose closed pinion nodes reach within one contact cell of either end of the
-  // path of contact, A (the wheel tip) or E (the pinion tip), touches at a tip corner: the
-  // pressure there is an edge singularity, not a Hertz pressure, and grows with refinement.
+  // The position's largest pressure acts within one contact cell of either end of the path of
+  // contact, A (the wheel tip) or E (the pinion tip): a tip corner, where the pressure is an
+  // edge singularity, not a Hertz pressure, and grows with refinement. The peak's own node
+  // decides, not the closed zone's extent: a helical contact line meets A or E in some section
+  // at most positions while its largest pressure may lie mid-face on the path.
+  const stiffness::ToothPairLoad* peak = peak_pressure_pair(r);
   const double tolerance = r.contact_size;
-  for (const auto& load : r.pairs)
-    if (load.normal_force > 0. && load.closed_nodes > 0 &&
-        (load.closed_roll_min <= pair.contact_start + tolerance ||
-         load.closed_roll_max >= pair.contact_end - tolerance))
-      return true;
-  return false;
+  return peak != nullptr && (peak->max_pressure_roll <= pair.contact_start + tolerance ||
+                             peak->max_pressure_roll >= pair.contact_end - tolerance);
 }
 
 void report_input_sizes(Report& report, const StiffnessParameters& p)
@@ -165,14 +182,40 @@ void report_input_sizes(Report& report, const StiffnessParameters& p)
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name, const kinematics::GearPairGeometry& pair)
 {
-  ReportTable& table = report.add_table(
-      name,
-      {"position", "roll_angle", "mesh_position", "loaded_pairs", "stiffness", "transmission_error",
-       "unloaded_transmission_error", "share_pair_m1", "share_pair_0", "share_pair_p1",
-       "max_pressure", "tip_edge_contact", "pinion_root_stress", "wheel_root_stress",
-       "torque_ratio", "iterations", "dofs", "time", "rank"},
-      {"-", "deg", "-", "-", "N/um", "um", "um", "-", "-", "-", "MPa", "-", "MPa", "MPa", "-", "-",
-       "-", "s", "-"});
+  ReportTable& table =
+      report.add_table(name,
+                       {"position",
+                        "roll_angle",
+                        "mesh_position",
+                        "loaded_pairs",
+                        "stiffness",
+                        "transmission_error",
+                        "unloaded_transmission_error",
+                        "share_pair_m1",
+                        "share_pair_0",
+                        "share_pair_p1",
+                        "max_pressure",
+                        "max_pressure_roll",
+                        "max_pressure_face",
+                        "tip_edge_contact",
+                        "pinion_root_stress",
+                        "wheel_root_stress",
+                        "torque_ratio",
+                        "iterations",
+                        "dofs",
+                        "time",
+                        "rank"},
+                       {"-",  "deg", "-", "-",   "N/um", "um", "um", "-", "-", "-", "MPa",
+                        "mm", "mm",  "-", "MPa", "MPa",  "-",  "-",  "-", "s", "-"});
+  // What the columns max_pressure_roll and tip_edge_contact are read against.
+  report.add_value("contact_start", pair.contact_start * 1e3, "mm",
+                   "A, start of the path of contact, roll length from T1 (the wheel tip)");
+  report.add_value("contact_end", pair.contact_end * 1e3, "mm",
+                   "E, end of the path of contact, roll length from T1 (the pinion tip)");
+  if (!sweep.positions.empty() && sweep.positions.front().contact_size > 0.) // FE contact
+    report.add_value("contact_size", sweep.positions.front().contact_size * 1e3, "mm",
+                     "h_c, cell size at the contacts (tip_edge_contact: a peak within h_c of A or "
+                     "E)");
   std::string edges;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
@@ -182,31 +225,38 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
       if (load.pair >= -1 && load.pair <= 1)
         share[load.pair + 1] = load.load_share;
     const bool edge = tip_edge_contact(r, pair);
+    const stiffness::ToothPairLoad* peak = peak_pressure_pair(r);
     if (edge)
       edges += (edges.empty() ? "" : ", ") + std::to_string(i + 1);
-    table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.mesh_position,
-                   double(r.loaded_pairs), r.mesh_stiffness / 1e6, r.transmission_error * 1e6,
-                   r.unloaded_transmission_error * 1e6, share[0], share[1], share[2],
-                   r.max_contact_pressure / 1e6, edge ? 1. : 0., r.pinion_root_stress / 1e6,
-                   r.wheel_root_stress / 1e6, r.torque_ratio, double(r.active_set_iterations),
-                   double(r.n_dofs), r.total_time, double(sweep.rank_of_position[i])});
+    table.add_row({double(i + 1),
+                   r.pinion_roll_angle / degree,
+                   r.mesh_position,
+                   double(r.loaded_pairs),
+                   r.mesh_stiffness / 1e6,
+                   r.transmission_error * 1e6,
+                   r.unloaded_transmission_error * 1e6,
+                   share[0],
+                   share[1],
+                   share[2],
+                   r.max_contact_pressure / 1e6,
+                   peak ? peak->max_pressure_roll * 1e3 : 0.,
+                   peak ? peak->max_pressure_face * 1e3 : 0.,
+                   edge ? 1. : 0.,
+                   r.pinion_root_stress / 1e6,
+                   r.wheel_root_stress / 1e6,
+                   r.torque_ratio,
+                   double(r.active_set_iterations),
+                   double(r.n_dofs),
+                   r.total_time,
+                   double(sweep.rank_of_position[i])});
   }
-  // A helical pair's closed nodes span the face: some section of a loaded line nearly always
-  // reaches A or E, so there the flag says that a line meets a tip edge, not that the largest
-  // pressure is the corner's (the result does not locate it).
-  const bool helical = pair.spec.pinion.helix_angle != 0.;
   if (!edges.empty())
     report.add_text(name + " tip edge contact",
                     "positions " + edges +
-                        (helical ? ": a loaded contact line reaches a tip edge (closed nodes "
-                                   "within one contact cell of A or E in some section of the "
-                                   "face); their max_pressure may be that corner's edge "
-                                   "pressure, which grows with refinement (column "
-                                   "tip_edge_contact; docs/helical.md Limits)"
-                                 : ": a loaded pair touches at a tip corner (closed nodes within "
-                                   "one contact cell of A or E); their max_pressure is an edge "
-                                   "pressure that grows with refinement, not a Hertz pressure "
-                                   "(column tip_edge_contact)"));
+                        ": the largest pressure acts at a tip corner (its node within one "
+                        "contact cell of A or E, columns max_pressure_roll and "
+                        "max_pressure_face); there max_pressure is an edge pressure that grows "
+                        "with refinement, not a Hertz pressure (column tip_edge_contact)");
 }
 
 void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,

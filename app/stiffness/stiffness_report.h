@@ -26,8 +26,10 @@ void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnes
 // `gearstiff dynamics` train reads them from the command's summary.json and rejects a table of
 // another pair (app/dynamics_stiffness_file.h).
 void add_pair_identity(Report& report, const kinematics::GearPairGeometry& pair);
-// Whether a loaded pair of the position touches at a tip corner (closed nodes within one
-// contact cell of A or E of `pair`).
+// The loaded pair with the position's largest pressure (nullptr: nothing closed).
+const stiffness::ToothPairLoad* peak_pressure_pair(const stiffness::GearMeshStiffnessResult& r);
+// Whether the position's largest pressure acts at a tip corner (its node within one contact cell
+// of A or E of `pair`).
 bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
                       const kinematics::GearPairGeometry& pair);
 // The sweep as a table (one row per position; column tip_edge_contact flags edge contact at a

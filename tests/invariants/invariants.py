@@ -326,6 +326,31 @@ def geometric_te(case, rows, log):
         log(f"tent: the unloaded TE of equal long reliefs ({amount} um) at every position")
 
 
+def peak_on_path(label, report, log):
+    """Where the largest pressure acts (max_pressure_roll, _face): a closed pinion node of a
+    loaded pair, so on the path of contact A-E (its roll length from T1) to within one contact
+    cell h_c (the wheel tip's corner touches the pinion flank at A; the nodes it closes lie
+    within a cell of it; no pinion node lies beyond its tip, E), across the face within b/2
+    (2D: 0). The sweep's tip_edge_contact flag is set exactly when that node lies within h_c of
+    A or E (app/stiffness/stiffness_report.cc). Catches a peak taken from another pair or tooth
+    (off by a base pitch), a location left unset (0), and the flag's wiring."""
+    a, e, h_c = (value(report, k) for k in ("contact_start", "contact_end", "contact_size"))
+    rows = table(report, "stiffness_sweep")
+    for i, r in enumerate(rows):
+        roll = r["max_pressure_roll"]
+        if not a - h_c <= roll <= e + h_c:
+            raise CaseFailure(f"{label}: position {i} peak pressure at roll {roll} mm, off the "
+                              f"path A {a} .. E {e} mm (h_c {h_c} mm)")
+        check_close(f"{label}: position {i} peak across the face [mm] (2D)",
+                    r["max_pressure_face"], 0., 0.)
+        edge = roll <= a + h_c or roll >= e - h_c
+        if bool(r["tip_edge_contact"]) != edge:
+            raise CaseFailure(f"{label}: position {i} tip_edge_contact {r['tip_edge_contact']} "
+                              f"with the peak at roll {roll} mm (A {a}, E {e}, h_c {h_c} mm)")
+    flagged = sum(1 for r in rows if r["tip_edge_contact"])
+    log(f"{label}: every peak pressure on the path A-E, {flagged} of {len(rows)} at a tip edge")
+
+
 # The identities that compare two paths on one mesh (zero = none, Python = command line) hold
 # for any discretisation, so they run on Q1 elements: the same meshes and code paths at a
 # fraction of the Q2 solve (issue 43). The sweeps of once = per position keep the default Q2:
@@ -617,8 +642,17 @@ def helical_statics(case, runner, log):
     # measured on the built-in pair at beta 15 deg, 7 layers; 2.1e-4 on case 4 of seed 20261201,
     # measured 2026-12-01, with the fewest layers the twist allows): 3x the largest seen.
     check_close("torque balance", value(report, "torque_balance_deviation"), 0., 6.3e-4)
+    # Where the largest pressure acts (peak_on_path): on the path, inside the face.
+    roll, face = value(report, "max_pressure_roll"), value(report, "max_pressure_face")
+    a, e, h_c = (value(pair, "contact_start"), value(pair, "contact_end"),
+                 value(report, "contact_size"))
+    width = min(float(sets[f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
+    if not (a - h_c <= roll <= e + h_c and abs(face) <= 0.5 * width + 1e-9):
+        raise CaseFailure(f"helical: peak pressure at roll {roll} mm, {face} mm from the middle "
+                          f"of the face, off A {a} .. E {e} mm (h_c {h_c}) or b/2 {width / 2} mm")
     log(f"helical beta {beta} deg, {sets['Mesh/layers']} layers, {teeth} teeth modelled: "
-        f"|F_a|/F_bt {ratio:.6f}, tan beta_b {tan_b:.6f}")
+        f"|F_a|/F_bt {ratio:.6f}, tan beta_b {tan_b:.6f}; peak pressure at roll {roll:.3f} mm "
+        f"(A {a:.3f}, E {e:.3f}), {face:.3f} mm across the face")
 
 
 def helical_tent(x, half_window, amount, e):
@@ -740,6 +774,8 @@ def check_case(seed, index, runner):
         sweeps = once_equals_per_position(case, runner, log, once_out)
         influence_equals_exact(case, runner, log, sweeps)
         geometric_te(case, table(sweeps["per position"], "stiffness_sweep"), log)
+        peak_on_path("peak pressure (per position)", sweeps["per position"], log)
+        peak_on_path("peak pressure (once)", sweeps["once"], log)
         identity(case, runner, log, sweeps)
         if index % 10 == 9:  # 3D is the costly one: every tenth case
             three_d_between_plane_models(case, runner, log)
