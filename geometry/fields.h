@@ -21,9 +21,9 @@ inline std::string mesh(const std::string& member)
 }
 inline const std::vector<std::string>& mesh_fields()
 {
-  static const std::vector<std::string> members = {"dimension",    "face_width", "layers",
-                                                   "contact_size", "body_size",  "growth_rate",
-                                                   "rim_size",     "file"};
+  static const std::vector<std::string> members = {"dimension",    "face_width",   "layers",
+                                                   "contact_size", "body_size",    "growth_rate",
+                                                   "rim_size",     "memory_limit", "file"};
   return members;
 }
 

@@ -13,6 +13,8 @@
 // whose scaled Jacobian is not positive raises SolverFailure; bad geometry raises InputError.
 #pragma once
 
+#include "errors/limits.h"
+
 #include <Eigen/Core>
 #include <functional>
 #include <map>
@@ -150,6 +152,10 @@ struct MeshOptions
   // -, FE_Q degree of the solve the mesh is made for: a 3D estimate is held to the memory of its
   // direct solve (errors/limits.h), whose unknowns per hexahedron grow as degree³.
   unsigned int element_degree = 1;
+  // bytes, the most one 3D contact solve of the mesh may take on one process (estimated from
+  // the hexahedra at element_degree); errors/limits.h's 16 GB unless the user has more
+  // (Mesh/memory limit).
+  double memory_limit = limits::max_solve_bytes_3d;
   int side_face_boundary_id = 0; // boundary id of the z = 0 and z = face width faces (3D)
   std::string file;              // output path of the ASCII .msh 4.1 file
 };

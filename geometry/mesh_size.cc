@@ -190,7 +190,7 @@ MeshEstimate estimate_mesh(const PlanarModel& model, const SizeGrading& grading,
 
 bool over_work_limit(const MeshEstimate& estimate, const MeshOptions& options)
 {
-  return options.dimension == 3 ? estimate.solve_bytes > limits::max_solve_bytes_3d
+  return options.dimension == 3 ? estimate.solve_bytes > options.memory_limit
                                 : estimate.cells > limits::max_cells_2d;
 }
 
@@ -211,7 +211,8 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
                   std::to_string(options.element_degree) + ", about " +
                   format_number(estimate.solve_bytes / 1e9, 2) +
                   " GB for the direct contact solve (limit " +
-                  format_number(limits::max_solve_bytes_3d / 1e9, 2) + " GB, docs/limits.md)"
+                  format_number(options.memory_limit / 1e9, 3) +
+                  " GB: Mesh/memory limit, raise it on a machine with more memory; docs/limits.md)"
             : "about " + format_number(estimate.cells, 2) + " cells (limit " +
                   format_number(limits::max_cells_2d, 2) + ", docs/limits.md)";
   const std::string reason =
@@ -236,7 +237,7 @@ void check_mesh_estimate(const PlanarModel& model, const SizeGrading& grading,
     {
       return solve_bytes_3d(
                  hexahedron_unknowns(section_cells * layers, layers, options.element_degree),
-                 options.element_degree) <= limits::max_solve_bytes_3d;
+                 options.element_degree) <= options.memory_limit;
     };
     unsigned int most = 0;
     while (most < options.layers && fits(most + 1))

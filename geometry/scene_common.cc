@@ -174,6 +174,7 @@ SceneInfo mesh_scene(const PlanarModel& model, std::vector<SceneContact> contact
   options.layers = settings.layers;
   options.least_layers = settings.least_layers;
   options.element_degree = settings.element_degree;
+  options.memory_limit = settings.memory_limit;
   options.face_width = face_width;
   options.side_face_boundary_id = scene_ids::side_faces;
   options.file = file;

@@ -82,6 +82,9 @@ struct SceneMeshSettings
   // -, MeshOptions::element_degree: the FE_Q degree the scene is solved with (set by the
   // analysis from its elasticity parameters; the `mesh` command's deck is first order).
   unsigned int element_degree = 1;
+  // bytes, MeshOptions::memory_limit (Mesh/memory limit): the estimate a 3D scene is held to,
+  // and what the automatic body size coarsens to fit.
+  double memory_limit = limits::max_solve_bytes_3d;
   // -, 15 %: the face-width study's steps; 5 steps are 2.01 × the default.
   static constexpr double body_size_step = 1.15;
   static constexpr unsigned int body_size_steps = 5;

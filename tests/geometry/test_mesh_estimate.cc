@@ -91,3 +91,30 @@ TEST(MeshEstimate, TheDegreeDecidesTheRefusal)
     EXPECT_NE(what.find("use at most 144 layers"), std::string::npos) << what;
   }
 }
+
+// The limit is the machine's (Mesh/memory limit, MeshOptions::memory_limit): the Q2 block above
+// (~18 GB estimated) passes a 20 GB limit, and a 2 GB limit refuses even its Q1 (2.5 GB) with
+// the layers that fit it and the limit the user set in the message.
+TEST(MeshEstimate, TheMemoryLimitIsTheUsers)
+{
+  const double size = 1e-3;
+  SizeGrading grading;
+  grading.body_size = grading.largest_size = size;
+  const PlanarModel block = square(20. * size);
+  MeshOptions larger = solid(160, 2);
+  larger.memory_limit = 20e9;
+  EXPECT_NO_THROW(check_mesh_estimate(block, grading, larger));
+  MeshOptions smaller = solid(160, 1);
+  smaller.memory_limit = 2e9;
+  try
+  {
+    check_mesh_estimate(block, grading, smaller);
+    FAIL() << "Q1 not refused at 2 GB";
+  }
+  catch (const InputError& error)
+  {
+    const std::string what = error.what();
+    EXPECT_EQ(error.parameter(), field::mesh("layers"));
+    EXPECT_NE(what.find("(limit 2 GB: Mesh/memory limit"), std::string::npos) << what;
+  }
+}
