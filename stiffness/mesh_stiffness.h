@@ -274,7 +274,8 @@ private:
   // turns from the scene's own position.
   void set_candidate_pairs(double position);
   std::vector<contact::BodyRotation<dim>> body_rotations(double position) const;
-  double scene_position = 0.; // m, ℓ_ref of the meshed scene (rolling)
+  double scene_position = 0.;     // m, ℓ_ref of the meshed scene (rolling)
+  double scene_contact_size = 0.; // m, its h_c (rolling: every position reports it)
   // The unloaded TE at ℓ = `position` (m): a rolled position's own, not the meshed scene's.
   double unloaded_transmission_error_at(double position);
   std::vector<double> swept_unloaded_errors; // m, at settings.scene.swept_positions (lazily)

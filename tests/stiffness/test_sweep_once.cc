@@ -65,6 +65,9 @@ void compare_results(const StiffnessSweepResult& reference, const StiffnessSweep
     // construction, to 1 nm (issue 41: the rolled positions reported the scene's own value).
     EXPECT_NEAR(b.unloaded_transmission_error, a.unloaded_transmission_error, 1e-9)
         << "position " << i;
+    // h_c, the tip-edge flag's tolerance: the same setting for both (until 2026-12-03 a rolled
+    // position after the first reported 0, and flagged only peaks exactly at A or E).
+    EXPECT_DOUBLE_EQ(b.contact_size, a.contact_size) << "position " << i;
     EXPECT_GE(dk, k_range.first) << "position " << i;
     EXPECT_LE(dk, k_range.second) << "position " << i;
     EXPECT_NEAR(dte, 0., 0.05e-6) << "position " << i;
