@@ -124,8 +124,8 @@ void report_summary(Report& report, const stiffness::FaultSweepResult& r, stiffn
   report.add_value("wall_time", r.wall_time, "s", "healthy and faulty FE sweeps, energy method");
   const bool once = mesh == stiffness::SweepMesh::once;
   report.add_value("sweep_mesh", once ? 1. : 0., "-",
-                   once ? "1: once (each sweep meshed and factorized once per rank and rolled)"
-                        : "0: per position (a scene, mesh and factorization per position)");
+                   "Stiffness/sweep mesh: 1 once (each sweep meshed and factorized once per "
+                   "rank and rolled), 0 per position (a scene, mesh and factorization each)");
   report.add_text("revolution table",
                   "revolution_stiffness: one revolution of the faulty gear, the healthy pitch "
                   "repeated and the faulty tooth's positions; rows with lost_contact = 1 carry "

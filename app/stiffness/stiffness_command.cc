@@ -266,8 +266,8 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
   report.add_value("sweep_wall_time", sweep.wall_time, "s", "wall time of the sweep");
   const bool once = sweep.mesh == stiffness::SweepMesh::once;
   report.add_value("sweep_mesh", once ? 1. : 0., "-",
-                   once ? "1: once (each rank meshed and factorized one scene and turned it)"
-                        : "0: per position (a scene, mesh and factorization per position)");
+                   "Stiffness/sweep mesh: 1 once (each rank meshed and factorized one scene "
+                   "and turned it), 0 per position (a scene, mesh and factorization each)");
   report.add_value("sweep_once_time", sweep.once_time, "s",
                    "done once (per rank, summed): meshing, set-up of K, factorization");
   report.add_value("sweep_per_position_time", sweep.per_position_time / sweep.positions.size(), "s",
