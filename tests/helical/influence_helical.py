@@ -2,8 +2,8 @@
 """The 3D influence-coefficient model on a helical pair against the exact FE contact path (issue
 47, docs/ltca.md §3 "Helical").
 
-usage: influence_helical.py path/to/gearstiff WORK_FOLDER [small|built-in|small-fine|small-15-fine]
-       [--exact]
+usage: influence_helical.py path/to/gearstiff WORK_FOLDER
+       [small|built-in|small-fine|small-15-fine|built-in-fine|built-in-fine-20] [--exact]
 
 Runs `Stiffness/contact model = influence coefficients` on a 4-position sweep of the case and
 compares it position by position with the exact path's values stored below (or, with --exact,
@@ -17,7 +17,9 @@ Cases: `small` (tests/helical/small_pair.py: z 19/29, m_n 2 mm, β ±10°, b 8 m
 the coarse sizes; Q1, μ 0) and `built-in` (the split-path pair at β ±15°, ε_β 0.79, 13 layers,
 Q1, μ 0, the small pair's coarse sizes scaled to m_n 2.5 mm: tests/helical/sweep_once.py).
 `small-fine` and `small-15-fine`: the small pair at β 10° and 15° on the exact path's converged
-level (10 layers, h_c 0.075 mm), the references of docs/ltca.md §3 "Line ends".
+level (10 layers, h_c 0.075 mm), the references of docs/ltca.md §3 "Line ends". `built-in-fine`:
+the built-in pair at h_c 0.094 mm (0.0375·m_n, the small pair's converged relative size), 13
+layers; `built-in-fine-20` the same on 20 layers (no stored values: --exact only).
 """
 import json
 import os
@@ -49,6 +51,11 @@ BETA_15 = [e for e in PAIR if "helix angle" not in e] + [
     "Gear pair/Pinion/helix angle=15", "Gear pair/Wheel/helix angle=-15"]
 CASES["small-fine"] = PAIR + FINE
 CASES["small-15-fine"] = BETA_15 + FINE
+# The built-in pair at half its contact size (h_c 0.094 mm = 0.0375·m_n, the small pair's
+# converged relative size; 13 layers as `built-in`): the reference of docs/ltca.md §3 "Line ends".
+CASES["built-in-fine"] = [e for e in CASES["built-in"] if not e.startswith("Mesh/contact size")] + [
+    "Mesh/contact size=0.09375"]
+CASES["built-in-fine-20"] = CASES["built-in-fine"] + ["Mesh/layers=20"]
 FAST = ["Stiffness/contact model=influence coefficients"]
 EXACT = ["Stiffness/sweep mesh=per position"]
 
@@ -80,6 +87,15 @@ STORED["small-15-fine"] = {
     "k": [132.661, 133.502, 111.988, 107.625], "te": [8.1904, 8.1389, 9.7024, 10.0957],
     "share": [[0, 0.4413, 0.5587], [0, 0.529, 0.471], [0, 0.7594, 0.2406], [0.1818, 0.8182, 0]],
     "K_Hb": [1.089, 1.0332, 1.5712, 1.6863], "p_max": [1152.7, 1530.4, 2446.1, 1733.3]}
+
+# regression: measured 2026-12-03 (ltca47k, the exact per-position sweep with the settings of
+# `built-in-fine`, under the build lock, one run): 143 s, 4.85 GB peak. From `built-in` (h_c
+# 0.19 mm) k moved +0.67, +0.36, −0.05, +1.21 %.
+STORED["built-in-fine"] = {
+    "k": [383.9273, 387.5169, 359.5681, 364.9129], "te": [5.0597, 5.0128, 5.4024, 5.3233],
+    "share": [[0, 0.378, 0.622], [0, 0.5408, 0.4592], [0.0329, 0.6774, 0.2898],
+              [0.2215, 0.6898, 0.0888]],
+    "K_Hb": [1.2636, 1.3528, 1.4968, 1.4255], "p_max": [557.3, 591.3, 710.6, 833.0]}
 
 K_TOLERANCE = 1e-2  # relative: issue 47
 TE_TOLERANCE = 0.1  # µm: issue 47
