@@ -165,11 +165,11 @@ constexpr std::array<StoredPosition, 4> exact_internal_8_layers = {
      {357.1076, 4.907054, 1.004567, 1.}}};
 
 // The fast model on the planet–ring pair at 4 and 8 layers (2.75 s and 5.73 s a process, medians
-// of 3 under the build lock; 54k and 97k body DoFs, 0.47 and 0.82 GB). Measured 2026-12-03 (ltca47k, one unlocked run each): 4 layers k +0.18,
-// −0.30, −0.24, −0.27 %, TE ≤ 0.014 µm, K_Hβ −0.07 … +0.71 %, share 0.0012; 8 layers k +0.46,
-// +0.04, +0.08, +0.03 %, TE ≤ 0.015 µm, K_Hβ +1.05, +1.68, +1.70, +1.72 %, share 0.0014.
-// Tolerances: the 1 %, 0.1 µm, 2 %, 0.01 (≈ 2×, 6×, 1.2×, 7× the worst measured; K_Hβ
-// has the least margin, docs/ltca.md §3 "End faces").
+// of 3 under the build lock; 54k and 97k body DoFs, 0.47 and 0.82 GB). Measured 2026-12-03
+// (ltca47k, one unlocked run each): 4 layers k +0.18, −0.30, −0.24, −0.27 %, TE ≤ 0.014 µm, K_Hβ
+// −0.07 … +0.71 %, share 0.0012; 8 layers k +0.46, +0.04, +0.08, +0.03 %, TE ≤ 0.015 µm, K_Hβ
+// +1.05, +1.68, +1.70, +1.72 %, share 0.0014. Tolerances: the 1 %, 0.1 µm, 2 %, 0.01 (≈ 2×,
+// 6×, 1.2×, 7× the worst measured; K_Hβ has the least margin, docs/ltca.md §3 "End faces").
 TEST(InfluenceCoefficients3DLead, InternalSpur)
 {
   expect_against_stored(fast_sweep(internal_settings(4, 6e-5), "internal_4"),
