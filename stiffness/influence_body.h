@@ -159,8 +159,8 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
 // meshes in the sweep refined along its contacts at `band_cell` (m) out to the matching `depth`
 // (m) plus two cells of `cell` (m, h_f).
 geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
-                                       const std::vector<double>& positions, double r_b1,
-                                       double cell, double band_cell, double depth,
-                                       unsigned int dimension);
+                                       const kinematics::GearPairGeometry& pair,
+                                       const std::vector<double>& positions, double cell,
+                                       double band_cell, double depth, unsigned int dimension);
 
 } // namespace gearstiff::stiffness::influence

@@ -795,6 +795,12 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                    : std::max(on_path_width(stations, helix, pair, s, unknown.at),
                                               1e-3 * stations.layer)) /
                               helix.cos_base);
+      // The planes on the end faces: their layer is in plane stress (LayerBody::end_face).
+      // Measured 2026-12-03 (ltca47k; Q1, 8 layers, 4 positions, μ 0) against the exact path:
+      // with plane strain there K_Hβ was +2.2 … +2.5 % (default pair) and +2.2 … +2.6 % (the
+      // planet–ring pair) above the exact path's, with plane stress +0.6 … +1.8 % and +1.0 …
+      // +1.7 %, k 0.2 … 0.3 % nearer (docs/ltca.md §3 "End faces").
+      problem.end_face.push_back(dim == 3 && (s == 0 || s + 1 == layers));
       problem.relative_radius.push_back(radius / helix.cos_base);
       problem.lever_ratio.push_back(unknown.line.pinion_lever);
       problem.strip.push_back(unknown.line.strip);
@@ -863,9 +869,8 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
   check_grid_step(info.grid_step, info.matching_depth, separation);
 
   auto start = std::chrono::steady_clock::now();
-  const double r_b1 = frame.pinion_base_radius();
   const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
-      body_scene(settings, positions, r_b1, info.flank_cell_size,
+      body_scene(settings, pair, positions, info.flank_cell_size,
                  band_cell_factor(dim) * info.flank_cell_size, info.matching_depth, dim),
       file);
   info.scene_time = seconds_since(start);
@@ -994,12 +999,20 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
   if (settings.scene.mesh.dimension == 3)
   {
-    // The 3D model is accepted for what it is verified on (docs/ltca.md §3): external spur
-    // pairs; helical pairs are built, a ring is designed there.
+    // The 3D model is accepted for what it is verified on (docs/ltca.md §3): spur pairs,
+    // external and, since 2026-12-03 (ltca47k), internal. The planet–ring pair (z 24/69, rim
+    // 3·m_n; Q1, 4 positions, μ 0, one run each) against the exact path at h_c 0.06 mm on the
+    // same layers: at 8 layers k +0.46 … +0.03 %, TE ≤ 0.015 µm, shares ≤ 0.0014, K_Hβ
+    // +1.0 … +1.7 %; at 4 layers k within 0.4 %, K_Hβ within 0.7 %. Lead crowning on a ring is
+    // built (each plane's gap) but not measured: refused on an internal pair.
     if (settings.scene.pair.wheel.internal)
-      throw InputError(kinematics::field::gear(true, "internal"),
-                       "the 3D influence-coefficient model carries external pairs only; use "
-                       "Stiffness/contact model = finite element for an internal pair in 3D");
+      for (const bool wheel : {false, true})
+        if ((wheel ? settings.scene.wheel_modifications : settings.scene.pinion_modifications)
+                .lead.crowning != 0.)
+          throw InputError(
+              geometry::field::gear_entry(geometry::field::modified_gear(wheel), "lead crowning"),
+              "influence coefficients carry lead crowning on external pairs only "
+              "(not measured on an internal pair in 3D): use finite element");
     // Helical pairs: built (docs/ltca.md §3 "3D helical pairs", 2026-12-03), not accepted.
     // Measured 2026-12-03 (ltca47j; Q1, 4 positions, μ 0, one unlocked run each) against the
     // exact path at h_c 0.075 mm (converged there within 0.24 %), 10 layers both, with the line

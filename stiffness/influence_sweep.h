@@ -19,10 +19,10 @@
 namespace gearstiff::stiffness
 {
 // Rank 0 computes, every rank receives every position. InputError (naming the field of
-// stiffness_parameter or geometry::scene_field) for what the model cannot carry: a helical or
-// internal pair in 3D, tooth faults, a grid too coarse for the path or a modification, a position
-// off the grid; SolverFailure when the FE or a contact problem fails. `scene_file_stem` gets
-// "_influence.msh" appended (removed afterwards).
+// stiffness_parameter or geometry::scene_field) for what the model cannot carry: a helical pair
+// or a crowned internal pair in 3D, tooth faults, a grid too coarse for the path or a
+// modification, a position off the grid; SolverFailure when the FE or a contact problem fails.
+// `scene_file_stem` gets "_influence.msh" appended (removed afterwards).
 template <int dim>
 StiffnessSweepResult
 influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& settings,

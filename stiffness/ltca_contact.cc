@@ -19,6 +19,10 @@ double hertz_layer_compression(double peak_pressure, double half_width, const La
   const double a = half_width, h = body.matching_depth, nu = body.poisson_ratio;
   const double sigma_z = peak_pressure * a * std::asinh(h / a);
   const double sigma_x = peak_pressure / a * (h * std::sqrt(a * a + h * h) - h * h);
+  // On a traction-free end face σ_y = 0: ε_z = (σ_z − ν·σ_x)/E, about 1/(1−ν²) = 1.10 times the
+  // plane-strain compression (the in-plane axis stresses of a half-plane do not depend on σ_y).
+  if (body.end_face)
+    return (sigma_z - nu * sigma_x) / body.young_modulus;
   return ((1. - nu * nu) * sigma_z - nu * (1. + nu) * sigma_x) / body.young_modulus;
 }
 
@@ -220,6 +224,12 @@ LineContact near_field(const MeshContactProblem& problem, int j, double force)
   const double width = problem.width.empty() ? problem.face_width : problem.width[j];
   if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
     return strip_line_contact(force, width, problem.strip[j], problem.pinion, problem.wheel);
+  if (j < static_cast<int>(problem.end_face.size()) && problem.end_face[j])
+  {
+    LayerBody pinion = problem.pinion, wheel = problem.wheel;
+    pinion.end_face = wheel.end_face = true;
+    return hertz_line_contact(force, width, problem.relative_radius[j], pinion, wheel);
+  }
   return hertz_line_contact(force, width, problem.relative_radius[j], problem.pinion,
                             problem.wheel);
 }

@@ -19,11 +19,16 @@ struct LayerBody
   double young_modulus = 210e9; // Pa
   double poisson_ratio = 0.3;   // -
   double matching_depth = 0.;   // m, h
+  // The layer under a 3D node plane on one of the gear's end faces: the face is traction-free,
+  // so the stress along the contact line vanishes there (σ_y = 0) and the layer is in plane
+  // stress, not plane strain (docs/ltca.md §3 "End faces").
+  bool end_face = false;
 };
 
 // The compression (m) of the layer 0 ≤ z ≤ h of a plane-strain half-space under a Hertzian
 // pressure of peak p0 (Pa) and half-width a (m), on the symmetry axis: the integral of ε_z of
-// the axis stresses (Johnson 1985 §2.6, docs/ltca.md §3); Weber's formula for h ≫ a.
+// the axis stresses (Johnson 1985 §2.6, docs/ltca.md §3); Weber's formula for h ≫ a. On an
+// end face (body.end_face) the same axis stresses with σ_y = 0.
 double hertz_layer_compression(double peak_pressure, double half_width, const LayerBody& body);
 
 // A Hertz line contact of force F (N) over face width b (m) between two bodies with relative
@@ -80,6 +85,9 @@ struct MeshContactProblem
   // m, the face width each unknown's near field spreads its force over (a 3D model's layer or
   // node plane: its line load is F_j/width_j). Empty: face_width for every unknown.
   std::vector<double> width;
+  // Per unknown: 1 when its node plane lies on an end face of the face width (3D), whose layer
+  // is in plane stress (LayerBody::end_face). Empty: none.
+  std::vector<char> end_face;
   LayerBody pinion, wheel;
 };
 

@@ -2,8 +2,8 @@
 """The 3D influence-coefficient model on a helical pair against the exact FE contact path (issue
 47, docs/ltca.md §3 "Helical").
 
-usage: influence_helical.py path/to/gearstiff WORK_FOLDER [small|built-in|small-fine|small-15-fine]
-       [--exact]
+usage: influence_helical.py path/to/gearstiff WORK_FOLDER
+       [small|built-in|small-fine|small-15-fine|built-in-fine|built-in-fine-20] [--exact]
 
 Runs `Stiffness/contact model = influence coefficients` on a 4-position sweep of the case and
 compares it position by position with the exact path's values stored below (or, with --exact,
@@ -17,7 +17,9 @@ Cases: `small` (tests/helical/small_pair.py: z 19/29, m_n 2 mm, β ±10°, b 8 m
 the coarse sizes; Q1, μ 0) and `built-in` (the split-path pair at β ±15°, ε_β 0.79, 13 layers,
 Q1, μ 0, the small pair's coarse sizes scaled to m_n 2.5 mm: tests/helical/sweep_once.py).
 `small-fine` and `small-15-fine`: the small pair at β 10° and 15° on the exact path's converged
-level (10 layers, h_c 0.075 mm), the references of docs/ltca.md §3 "Line ends".
+level (10 layers, h_c 0.075 mm), the references of docs/ltca.md §3 "Line ends". `built-in-fine`:
+the built-in pair at h_c 0.094 mm (0.0375·m_n, the small pair's converged relative size), 13
+layers; `built-in-fine-20` the same on 20 layers.
 """
 import json
 import os
@@ -49,6 +51,11 @@ BETA_15 = [e for e in PAIR if "helix angle" not in e] + [
     "Gear pair/Pinion/helix angle=15", "Gear pair/Wheel/helix angle=-15"]
 CASES["small-fine"] = PAIR + FINE
 CASES["small-15-fine"] = BETA_15 + FINE
+# The built-in pair at half its contact size (h_c 0.094 mm = 0.0375·m_n, the small pair's
+# converged relative size; 13 layers as `built-in`): the reference of docs/ltca.md §3 "Line ends".
+CASES["built-in-fine"] = [e for e in CASES["built-in"] if not e.startswith("Mesh/contact size")] + [
+    "Mesh/contact size=0.09375"]
+CASES["built-in-fine-20"] = CASES["built-in-fine"] + ["Mesh/layers=20"]
 FAST = ["Stiffness/contact model=influence coefficients"]
 EXACT = ["Stiffness/sweep mesh=per position"]
 
@@ -80,6 +87,23 @@ STORED["small-15-fine"] = {
     "k": [132.661, 133.502, 111.988, 107.625], "te": [8.1904, 8.1389, 9.7024, 10.0957],
     "share": [[0, 0.4413, 0.5587], [0, 0.529, 0.471], [0, 0.7594, 0.2406], [0.1818, 0.8182, 0]],
     "K_Hb": [1.089, 1.0332, 1.5712, 1.6863], "p_max": [1152.7, 1530.4, 2446.1, 1733.3]}
+
+# regression: measured 2026-12-03 (ltca47k, the exact per-position sweep with the settings of
+# `built-in-fine`, under the build lock, one run): 143 s, 4.85 GB peak. From `built-in` (h_c
+# 0.19 mm) k moved +0.67, +0.36, −0.05, +1.21 %.
+STORED["built-in-fine"] = {
+    "k": [383.9273, 387.5169, 359.5681, 364.9129], "te": [5.0597, 5.0128, 5.4024, 5.3233],
+    "share": [[0, 0.378, 0.622], [0, 0.5408, 0.4592], [0.0329, 0.6774, 0.2898],
+              [0.2215, 0.6898, 0.0888]],
+    "K_Hb": [1.2636, 1.3528, 1.4968, 1.4255], "p_max": [557.3, 591.3, 710.6, 833.0]}
+# The same on 20 layers (regression: measured 2026-12-03, ltca47k, under the build lock beside
+# another engineer's 2-rank run, one run): 521 s, 4.87 GB peak. From 13 layers k moved +1.40,
+# +1.78, +2.44, +1.67 %: the exact path is not converged along the face at 13 layers.
+STORED["built-in-fine-20"] = {
+    "k": [389.3218, 394.3983, 368.3328, 370.9951], "te": [4.9896, 4.9253, 5.2739, 5.2360],
+    "share": [[0, 0.3867, 0.6133], [0, 0.5486, 0.4514], [0.0452, 0.6768, 0.278],
+              [0.2213, 0.6913, 0.0874]],
+    "K_Hb": [1.3164, 1.3393, 1.4881, 1.4667], "p_max": [645.6, 970.6, 1059.0, 1353.0]}
 
 K_TOLERANCE = 1e-2  # relative: issue 47
 TE_TOLERANCE = 0.1  # µm: issue 47
