@@ -79,6 +79,8 @@ constexpr double matching_depth_cells = 3.;
 // -, the fewest hexahedron layers (node planes b/layers apart) the 3D model accepts with lead
 // crowning: the ladder in check_influence_settings.
 constexpr unsigned int min_layers_with_lead = 16;
+// -, the most layers an uncrowned 3D face is verified on (check_influence_settings).
+constexpr unsigned int max_layers_uncrowned = 8;
 // The load points lie this many cells inside the surface: the meshed flank is a chord polygon of
 // the involute. 3D: its sagitta h_f²/(8ρ) reaches 1 µm for h_f = 0.2 mm at ρ = 5 mm; 4 µm under a
 // read 0.6 mm deep changes nothing the read sees.
@@ -1055,6 +1057,24 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
                              " apart: at 8 layers k is 1.4 % off the exact path, at 16 within "
                              "0.5 %; docs/ltca.md §3)");
     }
+    // Uncrowned faces load their end planes, whose near field (plane stress on the free face,
+    // ltca47k) leaves K_Hβ too high as the planes get closer: against the exact path on the same
+    // layers (default pair and planet–ring pair, Q1, 4 positions, μ 0, 2026-12-03) K_Hβ +0.6 …
+    // +1.8 % at 8 layers, +2.4 … +2.7 % at 16, +3.2 … +3.5 % at 24 (k within 0.43 % at all of
+    // them; docs/ltca.md §3 "End faces"). A K_Hβ outside the 2 % is no result: refused
+    // above the 8 layers it meets (the spur default); crowning unloads the ends (accepted at 16).
+    bool crowned = false;
+    for (const auto* gear :
+         {&settings.scene.pinion_modifications, &settings.scene.wheel_modifications})
+      crowned |= gear->lead.crowning != 0.;
+    if (!crowned && settings.scene.mesh.layers > max_layers_uncrowned)
+      throw InputError(geometry::field::mesh("layers"),
+                       "influence coefficients on an uncrowned face are verified up to " +
+                           std::to_string(max_layers_uncrowned) +
+                           " layers: at 16 and 24 their K_Hβ is 2.4 … 3.5 % above the exact "
+                           "path's (the end faces, docs/ltca.md §3 \"End faces\"); use at most " +
+                           std::to_string(max_layers_uncrowned) +
+                           " layers or Stiffness/contact model = finite element");
   }
   for (const auto* gear :
        {&settings.scene.pinion_modifications, &settings.scene.wheel_modifications})
