@@ -68,11 +68,19 @@ void locate_load(const contact::PairResult<dim>& contact, double working_pressur
       const double roll = std::sqrt(std::max(0., r * r - pinion_base_radius * pinion_base_radius));
       load.closed_roll_min = std::min(load.closed_roll_min, roll);
       load.closed_roll_max = std::max(load.closed_roll_max, roll);
-      if (point.pressure > peak)
+      // Ties (a straight face's two ends carry the same peak to round-off) go to the smaller
+      // face coordinate, then the smaller roll: the same node whatever order the scene numbered
+      // them in (β = 0 reproduces the spur report, helical.beta_zero).
+      const double face = dim == 3 ? point.position[dim - 1] - mid_face : 0.;
+      const double tie = 1e-9 * std::abs(peak);
+      if (point.pressure > peak + tie ||
+          (point.pressure >= peak - tie &&
+           (face < load.max_pressure_face ||
+            (face == load.max_pressure_face && roll < load.max_pressure_roll))))
       {
-        peak = point.pressure;
+        peak = std::max(peak, point.pressure);
         load.max_pressure_roll = roll;
-        load.max_pressure_face = dim == 3 ? point.position[dim - 1] - mid_face : 0.;
+        load.max_pressure_face = face;
       }
     }
   if (load.closed_roll_min > load.closed_roll_max)
