@@ -326,6 +326,14 @@ def geometric_te(case, rows, log):
         log(f"tent: the unloaded TE of equal long reliefs ({amount} um) at every position")
 
 
+def check_peak_located(label, roll, face, a, e, h_c, half_width):
+    """The peak's node on the path A - h_c .. E + h_c (mm, roll from T1) and within the face,
+    |face| <= half_width (mm; 0 in 2D)."""
+    if not (a - h_c <= roll <= e + h_c and abs(face) <= half_width + 1e-9):
+        raise CaseFailure(f"{label}: peak pressure at roll {roll} mm, {face} mm from the middle "
+                          f"of the face, off A {a} .. E {e} mm (h_c {h_c}) or b/2 {half_width} mm")
+
+
 def peak_on_path(label, report, log):
     """Where the largest pressure acts (max_pressure_roll, _face): a closed pinion node of a
     loaded pair, so on the path of contact A-E (its roll length from T1) to within one contact
@@ -338,11 +346,8 @@ def peak_on_path(label, report, log):
     rows = table(report, "stiffness_sweep")
     for i, r in enumerate(rows):
         roll = r["max_pressure_roll"]
-        if not a - h_c <= roll <= e + h_c:
-            raise CaseFailure(f"{label}: position {i} peak pressure at roll {roll} mm, off the "
-                              f"path A {a} .. E {e} mm (h_c {h_c} mm)")
-        check_close(f"{label}: position {i} peak across the face [mm] (2D)",
-                    r["max_pressure_face"], 0., 0.)
+        check_peak_located(f"{label}: position {i}", roll, r["max_pressure_face"], a, e, h_c,
+                           0.)
         edge = roll <= a + h_c or roll >= e - h_c
         if bool(r["tip_edge_contact"]) != edge:
             raise CaseFailure(f"{label}: position {i} tip_edge_contact {r['tip_edge_contact']} "
@@ -647,9 +652,7 @@ def helical_statics(case, runner, log):
     a, e, h_c = (value(pair, "contact_start"), value(pair, "contact_end"),
                  value(report, "contact_size"))
     width = min(float(sets[f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
-    if not (a - h_c <= roll <= e + h_c and abs(face) <= 0.5 * width + 1e-9):
-        raise CaseFailure(f"helical: peak pressure at roll {roll} mm, {face} mm from the middle "
-                          f"of the face, off A {a} .. E {e} mm (h_c {h_c}) or b/2 {width / 2} mm")
+    check_peak_located("helical", roll, face, a, e, h_c, 0.5 * width)
     log(f"helical beta {beta} deg, {sets['Mesh/layers']} layers, {teeth} teeth modelled: "
         f"|F_a|/F_bt {ratio:.6f}, tan beta_b {tan_b:.6f}; peak pressure at roll {roll:.3f} mm "
         f"(A {a:.3f}, E {e:.3f}), {face:.3f} mm across the face")
