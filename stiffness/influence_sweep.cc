@@ -687,7 +687,7 @@ position_result(const PositionModel& model, double position, const std::vector<i
     add_pair_load(r, model.frame, position, j, force, total, peak, widest);
     if (peak_at != nullptr)
     {
-      r.pairs.back().max_pressure_roll = peak_at->at;
+      r.pairs.back().max_pressure_roll = r.pairs.back().max_pressure_wheel_roll = peak_at->at;
       if (dim == 3)
         r.pairs.back().max_pressure_face =
             model.stations.z[peak_at->station] - 0.5 * model.face_width;

@@ -44,14 +44,32 @@ double polar_radius(const Point<dim>& p, double centre_x)
   return std::hypot(p[0] - centre_x, p[1]);
 }
 
+// Where a point of the pinion's flank touches the wheel, on the path's scale (m from T1): the
+// wheel's involute through the point (its distance from the wheel axis) meets the line of action
+// there, ℓ₂ = T₂ − s₂·√(r₂² − r_b2²) with T₂ = (r_b1 + s₂·r_b2)·tan α_wt and s₂ = −1 for a ring
+// (kinematics/gear_pair.cc set_line_of_action: the same formula gives A at the wheel's tip).
+template <int dim>
+double wheel_roll_on_path(const kinematics::GearPairGeometry& pair, const Point<dim>& p)
+{
+  const double s2 = pair.spec.wheel.internal ? -1. : 1.;
+  const double rb1 = 0.5 * pair.pinion.base_diameter;
+  const double rb2 = 0.5 * pair.wheel.base_diameter;
+  const double t2 = (rb1 + s2 * rb2) * std::tan(pair.working_pressure_angle);
+  const double r2 = polar_radius(p, wheel_axis_x(pair));
+  return t2 - s2 * std::sqrt(std::max(0., r2 * r2 - rb2 * rb2));
+}
+
 // The pair's resultant against the line of action u = (sin α_wt, cos α_wt) (the ring pushes
 // the pinion along −u) and the roll lengths of its closed pinion nodes (the pinion centre is
-// the scene origin) and of its largest pressure (`mid_face`, m: the face's middle on the axis,
-// 3D), ToothPairLoad.
+// the scene origin) and of its largest pressure, on the pinion and on the wheel (3D: across the
+// face from its middle, at half the common width on the axis), ToothPairLoad.
 template <int dim>
-void locate_load(const contact::PairResult<dim>& contact, double working_pressure_angle,
-                 double pinion_base_radius, double mid_face, ToothPairLoad& load)
+void locate_load(const contact::PairResult<dim>& contact, const kinematics::GearPairGeometry& pair,
+                 ToothPairLoad& load)
 {
+  const double working_pressure_angle = pair.working_pressure_angle;
+  const double pinion_base_radius = 0.5 * pair.pinion.base_diameter;
+  const double mid_face = 0.5 * pair.common_face_width;
   const double along = -(contact.force_on_slave[0] * std::sin(working_pressure_angle) +
                          contact.force_on_slave[1] * std::cos(working_pressure_angle));
   const double across = -(contact.force_on_slave[1] * std::sin(working_pressure_angle) -
@@ -81,11 +99,12 @@ void locate_load(const contact::PairResult<dim>& contact, double working_pressur
         peak = std::max(peak, point.pressure);
         load.max_pressure_roll = roll;
         load.max_pressure_face = face;
+        load.max_pressure_wheel_roll = wheel_roll_on_path(pair, point.position);
       }
     }
   if (load.closed_roll_min > load.closed_roll_max)
     load.closed_roll_min = load.closed_roll_max = load.max_pressure_roll =
-        load.position; // no closed node
+        load.max_pressure_wheel_roll = load.position; // no closed node
 }
 // 3D: the mesh forces on the pinion and their tilting moment (GearMeshStiffnessResult).
 template <int dim>
@@ -521,8 +540,7 @@ void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& 
     load.max_pressure = pair_result.max_pressure;
     load.contact_length = pair_result.contact_length;
     load.closed_nodes = pair_result.n_closed;
-    locate_load(pair_result, pair.working_pressure_angle, result.pinion_base_radius,
-                0.5 * pair.common_face_width, load);
+    locate_load(pair_result, pair, load);
     result.loaded_pairs += load.load_share > 1e-6;
     result.max_contact_pressure = std::max(result.max_contact_pressure, load.max_pressure);
   }

@@ -95,9 +95,14 @@ struct ToothPairLoad
   double closed_roll_min = 0.; // m, smallest roll length √(r² − r_b1²) of a closed pinion node
   double closed_roll_max = 0.; // m, largest
   // Where the pair's largest pressure acts (its closed pinion node of max_pressure): a peak
-  // within one contact cell of A or E is a tip corner's edge pressure, not a Hertz pressure.
+  // within one contact cell of a tip edge is a tip corner's edge pressure, not a Hertz pressure.
   double max_pressure_roll = 0.; // m, roll length √(r² − r_b1²) of that node
   double max_pressure_face = 0.; // m, its axial coordinate from the middle of the face (2D: 0)
+  // m, the same point on the wheel, on the path's scale: where the wheel's involute through it
+  // (its distance from the wheel axis) meets the line of action, from T1. On the line of action
+  // it equals max_pressure_roll; a wheel tip corner pressing the pinion off the line lies at A
+  // on this scale wherever the pinion node is (a corner near a helical face end, issue 46).
+  double max_pressure_wheel_roll = 0.;
 
   // Every member, once: serialisation (results cross MPI ranks, fem/parallel.h) and the
   // completeness check of tests/stiffness/test_result_fields.cc use this list.
@@ -117,6 +122,7 @@ struct ToothPairLoad
     visit("closed_roll_max", self.closed_roll_max);
     visit("max_pressure_roll", self.max_pressure_roll);
     visit("max_pressure_face", self.max_pressure_face);
+    visit("max_pressure_wheel_roll", self.max_pressure_wheel_roll);
   }
   template <class Archive>
   void serialize(Archive& archive, const unsigned int /*version*/)

@@ -98,6 +98,10 @@ void report_stiffness_position(Report& report, const stiffness::GearMeshStiffnes
                              "from T1 as the path of contact A–E");
     report.add_value(prefix + "max_pressure_face", peak->max_pressure_face * 1e3, "mm",
                      label + ": where it acts across the face, from the middle (2D: 0)");
+    report.add_value(prefix + "max_pressure_wheel_roll", peak->max_pressure_wheel_roll * 1e3, "mm",
+                     label + ": the same point on the wheel, on the path's scale: where the "
+                             "wheel's involute through it meets the line of action, from T1 "
+                             "(A: the wheel tip)");
   }
   if (!r.pairs.empty())
   {
@@ -157,14 +161,16 @@ const stiffness::ToothPairLoad* peak_pressure_pair(const stiffness::GearMeshStif
 bool tip_edge_contact(const stiffness::GearMeshStiffnessResult& r,
                       const kinematics::GearPairGeometry& pair)
 {
-  // The position's largest pressure acts within one contact cell of either end of the path of
-  // contact, A (the wheel tip) or E (the pinion tip): a tip corner, where the pressure is an
-  // edge singularity, not a Hertz pressure, and grows with refinement. The peak's own node
-  // decides, not the closed zone's extent: a helical contact line meets A or E in some section
-  // at most positions while its largest pressure may lie mid-face on the path.
+  // The position's largest pressure acts within one contact cell of a tip edge: the pinion's
+  // (its node's roll at E or beyond) or the wheel's (the same point's roll on the wheel at A or
+  // beyond). There the pressure is an edge singularity, not a Hertz pressure, and grows with
+  // refinement. Each gear's own roll decides: a wheel tip corner pressing the pinion off the line
+  // of action (near a helical face end) lies inside A by the pinion's roll but at A by the
+  // wheel's. The peak's own node decides, not the closed zone's extent: a helical contact line
+  // meets A or E in some section at most positions while its largest pressure may lie mid-face.
   const stiffness::ToothPairLoad* peak = peak_pressure_pair(r);
   const double tolerance = r.contact_size;
-  return peak != nullptr && (peak->max_pressure_roll <= pair.contact_start + tolerance ||
+  return peak != nullptr && (peak->max_pressure_wheel_roll <= pair.contact_start + tolerance ||
                              peak->max_pressure_roll >= pair.contact_end - tolerance);
 }
 
@@ -197,6 +203,7 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                         "max_pressure",
                         "max_pressure_roll",
                         "max_pressure_face",
+                        "max_pressure_wheel_roll",
                         "tip_edge_contact",
                         "pinion_root_stress",
                         "wheel_root_stress",
@@ -205,8 +212,8 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                         "dofs",
                         "time",
                         "rank"},
-                       {"-",  "deg", "-", "-",   "N/um", "um", "um", "-", "-", "-", "MPa",
-                        "mm", "mm",  "-", "MPa", "MPa",  "-",  "-",  "-", "s", "-"});
+                       {"-",  "deg", "-",  "-", "N/um", "um",  "um", "-", "-", "-", "MPa",
+                        "mm", "mm",  "mm", "-", "MPa",  "MPa", "-",  "-", "-", "s", "-"});
   // What the columns max_pressure_roll and tip_edge_contact are read against.
   report.add_value("contact_start", pair.contact_start * 1e3, "mm",
                    "A, start of the path of contact, roll length from T1 (the wheel tip)");
@@ -214,8 +221,8 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                    "E, end of the path of contact, roll length from T1 (the pinion tip)");
   if (!sweep.positions.empty() && sweep.positions.front().contact_size > 0.) // FE contact
     report.add_value("contact_size", sweep.positions.front().contact_size * 1e3, "mm",
-                     "h_c, cell size at the contacts (tip_edge_contact: a peak within h_c of A or "
-                     "E)");
+                     "h_c, cell size at the contacts (tip_edge_contact: a peak within h_c of A by "
+                     "its wheel roll or of E by its pinion roll)");
   std::string edges;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
@@ -241,6 +248,7 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                    r.max_contact_pressure / 1e6,
                    peak ? peak->max_pressure_roll * 1e3 : 0.,
                    peak ? peak->max_pressure_face * 1e3 : 0.,
+                   peak ? peak->max_pressure_wheel_roll * 1e3 : 0.,
                    edge ? 1. : 0.,
                    r.pinion_root_stress / 1e6,
                    r.wheel_root_stress / 1e6,
@@ -253,8 +261,9 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
   if (!edges.empty())
     report.add_text(name + " tip edge contact",
                     "positions " + edges +
-                        ": the largest pressure acts at a tip corner (its node within one "
-                        "contact cell of A or E, columns max_pressure_roll and "
+                        ": the largest pressure acts at a tip corner (within one contact cell "
+                        "of the wheel's tip A by column max_pressure_wheel_roll or of the "
+                        "pinion's tip E by max_pressure_roll; across the face: "
                         "max_pressure_face); there max_pressure is an edge pressure that grows "
                         "with refinement, not a Hertz pressure (column tip_edge_contact)");
 }

@@ -335,25 +335,33 @@ def check_peak_located(label, roll, face, a, e, h_c, half_width):
 
 
 def peak_on_path(label, report, log):
-    """Where the largest pressure acts (max_pressure_roll, _face): a closed pinion node of a
-    loaded pair, so on the path of contact A-E (its roll length from T1) to within one contact
-    cell h_c (the wheel tip's corner touches the pinion flank at A; the nodes it closes lie
-    within a cell of it; no pinion node lies beyond its tip, E), across the face within b/2
-    (2D: 0). The sweep's tip_edge_contact flag is set exactly when that node lies within h_c of
-    A or E (app/stiffness/stiffness_report.cc). Catches a peak taken from another pair or tooth
-    (off by a base pitch), a location left unset (0), and the flag's wiring."""
+    """Where the largest pressure acts (max_pressure_roll, _face, _wheel_roll): a closed pinion
+    node of a loaded pair, so on the path of contact A-E (its roll length from T1) to within one
+    contact cell h_c (the wheel tip's corner touches the pinion flank at A; the nodes it closes
+    lie within a cell of it; no pinion node lies beyond its tip, E), across the face within b/2
+    (2D: 0); the same point on the wheel (its roll on the path's scale) on A - h_c .. E + h_c too
+    (no wheel point lies beyond its tip, A). The sweep's tip_edge_contact flag is set exactly
+    when the wheel's roll is within h_c of A or the pinion's within h_c of E
+    (app/stiffness/stiffness_report.cc). Catches a peak taken from another pair or tooth (off by
+    a base pitch), a location left unset (0), a wheel roll on the wrong wheel axis, and the
+    flag's wiring."""
     a, e, h_c = (value(report, k) for k in ("contact_start", "contact_end", "contact_size"))
     rows = table(report, "stiffness_sweep")
+    off_line = 0.
     for i, r in enumerate(rows):
-        roll = r["max_pressure_roll"]
+        roll, wheel_roll = r["max_pressure_roll"], r["max_pressure_wheel_roll"]
         check_peak_located(f"{label}: position {i}", roll, r["max_pressure_face"], a, e, h_c,
                            0.)
-        edge = roll <= a + h_c or roll >= e - h_c
+        check_peak_located(f"{label}: position {i} (wheel)", wheel_roll, 0., a, e, h_c, 0.)
+        off_line = max(off_line, abs(wheel_roll - roll))
+        edge = wheel_roll <= a + h_c or roll >= e - h_c
         if bool(r["tip_edge_contact"]) != edge:
             raise CaseFailure(f"{label}: position {i} tip_edge_contact {r['tip_edge_contact']} "
-                              f"with the peak at roll {roll} mm (A {a}, E {e}, h_c {h_c} mm)")
+                              f"with the peak at roll {roll} mm, wheel roll {wheel_roll} mm "
+                              f"(A {a}, E {e}, h_c {h_c} mm)")
     flagged = sum(1 for r in rows if r["tip_edge_contact"])
-    log(f"{label}: every peak pressure on the path A-E, {flagged} of {len(rows)} at a tip edge")
+    log(f"{label}: every peak pressure on the path A-E, {flagged} of {len(rows)} at a tip edge; "
+        f"pinion and wheel roll of the peak at most {off_line:.3g} mm apart")
 
 
 # The identities that compare two paths on one mesh (zero = none, Python = command line) hold
@@ -653,6 +661,8 @@ def helical_statics(case, runner, log):
                  value(report, "contact_size"))
     width = min(float(sets[f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
     check_peak_located("helical", roll, face, a, e, h_c, 0.5 * width)
+    check_peak_located("helical (wheel)", value(report, "max_pressure_wheel_roll"), 0., a, e, h_c,
+                       0.)
     log(f"helical beta {beta} deg, {sets['Mesh/layers']} layers, {teeth} teeth modelled: "
         f"|F_a|/F_bt {ratio:.6f}, tan beta_b {tan_b:.6f}; peak pressure at roll {roll:.3f} mm "
         f"(A {a:.3f}, E {e:.3f}), {face:.3f} mm across the face")
