@@ -185,6 +185,24 @@ void report_input_sizes(Report& report, const StiffnessParameters& p)
     report.add_text("input notes", notes);
 }
 
+namespace
+{
+// What the sweep's columns max_pressure_roll, max_pressure_wheel_roll and tip_edge_contact
+// are read against: A, E and h_c.
+void add_path_ends(Report& report, const stiffness::StiffnessSweepResult& sweep,
+                   const kinematics::GearPairGeometry& pair)
+{
+  report.add_value("contact_start", pair.contact_start * 1e3, "mm",
+                   "A, start of the path of contact, roll length from T1 (the wheel tip)");
+  report.add_value("contact_end", pair.contact_end * 1e3, "mm",
+                   "E, end of the path of contact, roll length from T1 (the pinion tip)");
+  if (!sweep.positions.empty() && sweep.positions.front().contact_size > 0.) // FE contact
+    report.add_value("contact_size", sweep.positions.front().contact_size * 1e3, "mm",
+                     "h_c, cell size at the contacts (tip_edge_contact: a peak within h_c of A by "
+                     "its wheel roll or of E by its pinion roll)");
+}
+} // namespace
+
 void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepResult& sweep,
                                const std::string& name, const kinematics::GearPairGeometry& pair)
 {
@@ -214,15 +232,7 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                         "rank"},
                        {"-",  "deg", "-",  "-", "N/um", "um",  "um", "-", "-", "-", "MPa",
                         "mm", "mm",  "mm", "-", "MPa",  "MPa", "-",  "-", "-", "s", "-"});
-  // What the columns max_pressure_roll and tip_edge_contact are read against.
-  report.add_value("contact_start", pair.contact_start * 1e3, "mm",
-                   "A, start of the path of contact, roll length from T1 (the wheel tip)");
-  report.add_value("contact_end", pair.contact_end * 1e3, "mm",
-                   "E, end of the path of contact, roll length from T1 (the pinion tip)");
-  if (!sweep.positions.empty() && sweep.positions.front().contact_size > 0.) // FE contact
-    report.add_value("contact_size", sweep.positions.front().contact_size * 1e3, "mm",
-                     "h_c, cell size at the contacts (tip_edge_contact: a peak within h_c of A by "
-                     "its wheel roll or of E by its pinion roll)");
+  add_path_ends(report, sweep, pair);
   std::string edges;
   for (unsigned int i = 0; i < sweep.positions.size(); ++i)
   {
