@@ -54,10 +54,12 @@ double outline_root_radius(const ToothProfile& tooth)
   return tooth.points.front().position.norm();
 }
 
+// A contact surface: the involute (relieved or not) and a rounded tip edge's arc, which carries
+// the contact where a contact line leaves the path of contact at the tip form circle.
 bool is_flank(ProfileSegment segment)
 {
   return segment == ProfileSegment::root_relief || segment == ProfileSegment::flank ||
-         segment == ProfileSegment::relief;
+         segment == ProfileSegment::relief || segment == ProfileSegment::tip_round;
 }
 
 // The loaded flank of a tooth in its own frame (header comment): side +1 of the pinion and of
