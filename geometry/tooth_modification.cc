@@ -247,22 +247,6 @@ void check_modifications(const std::vector<ToothModification>& modifications,
       throw InputError(name, um(m.amount) + " reaches the tooth thickness (tip " +
                                  um(nominal.tip_thickness) + ")");
   }
-  // A rounded tip edge (InvoluteToothSpec::tip_rounding_radius) moves with the flank at its tip
-  // form circle (modified_tooth), so a tip relief must start below that circle.
-  if (nominal.tip_form_radius > 0. && nominal.tip_form_radius != nominal.tip_radius)
-  {
-    const double form_roll = roll_of(Eigen::Vector2d(nominal.tip_form_radius, 0.),
-                                     nominal.base_radius);
-    const double towards_tip = range.tip > range.form ? 1. : -1.;
-    for (const auto& m : modifications)
-      if (m.kind == ModificationKind::tip_relief && m.amount > 0. &&
-          !(towards_tip * (form_roll - (range.tip - towards_tip * relief_length(m, range))) > 0.))
-        throw InputError(field::gear_entry(parameter, "tip rounding radius"),
-                         "the tip rounding reaches below the tip relief's start (tip form "
-                         "diameter " +
-                             mm(2. * nominal.tip_form_radius) + ", relief length " +
-                             mm(relief_length(m, range)) + " from the tip)");
-  }
   if (tip_removal >= nominal.tip_thickness)
     throw InputError(field::gear_entry(parameter, kind_name(modifications.front().kind)),
                      "the modifications together remove " + um(tip_removal) +

@@ -150,7 +150,7 @@ double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin);
 // ρ_Fa − σ·ρ_a from its tangent point and at radius r_a − σ·ρ_a (tangent to the tip circle), so
 //   ρ_Fa = σ·ρ_a + √((r_a − σ·ρ_a)² − r_b²),   d_Fa = 2·√(r_b² + ρ_Fa²),
 // σ = +1 external, −1 internal. ρ_a = 0 gives d_a. ISO 6336-1 bounds the path of contact by this
-// active tip diameter for a rounded or chamfered tip (docs/references.md §27). The arc's centre,
+// active tip diameter for a rounded or chamfered tip (docs/references.md §20). The arc's centre,
 // and so the end of the top land, lies at the half-angle s_t/d + σ·(inv α_t − inv α_C) − ρ_a/r_b
 // from the tooth axis, α_C the pressure angle at radius r_a − σ·ρ_a.
 double tip_form_diameter(double base_diameter, double tip_diameter, double rounding_radius,

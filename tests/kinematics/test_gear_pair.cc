@@ -229,7 +229,7 @@ TEST(GearPair, RejectsBadInput)
 
 // A rounded tip edge (GearSpec::tip_rounding_radius, transverse): the path of contact ends at the
 // tip form circles d_Fa (ISO 21771; ISO 6336-1's active tip for a rounded tip, docs/references.md
-// §27). Hand computation for the split-path pair with standard tips (d_a 58.95/146.05 mm, r_b =
+// §20). Hand computation for the split-path pair with standard tips (d_a 58.95/146.05 mm, r_b =
 // (z·m/2)·cos 20°, a_w 97.5 mm, α_wt 20°) and ρ_a = 0.5 mm on both (python, 2026-12-03):
 // ρ_Fa = ρ_a + √((r_a − ρ_a)² − r_b²), d_Fa = 2·√(r_b² + ρ_Fa²) gives d_Fa1 58.480847 mm,
 // d_Fa2 145.437315 mm, g_α = ρ_Fa1 + ρ_Fa2 − a_w·sin α_wt = 10.732339 mm, ε_α = g_α/(π·m·cos α)
