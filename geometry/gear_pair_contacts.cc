@@ -185,8 +185,8 @@ void add_tip_round_contacts(const GearPairSceneSpec& spec, const kinematics::Gea
         if (edge.segment != ProfileSegment::tip_round || edge.side != loaded_side(tooth))
           continue;
         const Eigen::Vector2d a = tooth.points[i].position, b = tooth.points[i + 1].position;
-        const unsigned int n =
-            std::max(1u, static_cast<unsigned int>(std::ceil((b - a).norm() / (0.5 * fine_radius))));
+        const unsigned int n = std::max(
+            1u, static_cast<unsigned int>(std::ceil((b - a).norm() / (0.5 * fine_radius))));
         for (unsigned int k = arc.empty() ? 0 : 1; k <= n; ++k)
           arc.push_back(a + (b - a) * static_cast<double>(k) / n);
         length += (b - a).norm();
@@ -195,8 +195,8 @@ void add_tip_round_contacts(const GearPairSceneSpec& spec, const kinematics::Gea
       if (arc.empty() || last + shift < end - reach || first + shift > end + reach)
         continue;
       const Eigen::Vector2d centre = wheel ? gears.wheel_centre : gears.pinion_centre;
-      const double rotation = (wheel ? gears.wheel_rotation : gears.pinion_rotation) +
-                              index * tooth.angular_pitch;
+      const double rotation =
+          (wheel ? gears.wheel_rotation : gears.pinion_rotation) + index * tooth.angular_pitch;
       for (const Eigen::Vector2d& p : arc)
       {
         SceneContact focus = model;

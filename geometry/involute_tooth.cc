@@ -709,12 +709,12 @@ TipRounding tip_rounding(const InvoluteToothSpec& spec, const ResolvedSpec& g,
   const double t_low = relieved ? relief.start_roll : t_form;
   const double t_high = relieved ? t_relief_end : t_tip;
   if (!(g.tip_radius - sigma * rho > g.base_radius) || !(off(t_low) < 0.))
-    throw InputError(parameter("tip rounding radius"),
-                     format_mm(rho) + " does not fit: the arc reaches below " +
-                         (relieved ? "the tip relief start (" +
-                                         format_mm(2. * tooth.tip_relief_start_radius) + ")"
-                                   : "the form circle (" + format_mm(2. * tooth.form_radius) +
-                                         ")"));
+    throw InputError(
+        parameter("tip rounding radius"),
+        format_mm(rho) + " does not fit: the arc reaches below " +
+            (relieved
+                 ? "the tip relief start (" + format_mm(2. * tooth.tip_relief_start_radius) + ")"
+                 : "the form circle (" + format_mm(2. * tooth.form_radius) + ")"));
   rounding.radius = rho;
   rounding.junction_roll = bisect(off, std::min(t_low, t_high), std::max(t_low, t_high));
   const Vector junction = point(rounding.junction_roll);
@@ -735,11 +735,10 @@ TipRounding tip_rounding(const InvoluteToothSpec& spec, const ResolvedSpec& g,
 // A point shared by two segments carries the one nearer the tip.
 std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const ResolvedSpec& g,
                                     const InvoluteFlank& flank, const TipRelief& relief,
-                                    const TipRounding& rounding, double t_tip,
-                                    double t_relief_end, double t_form,
-                                    const GeneratingMotion& motion, double fillet_start,
-                                    const FilletRange& range, double angular_pitch,
-                                    double tip_half_angle)
+                                    const TipRounding& rounding, double t_tip, double t_relief_end,
+                                    double t_form, const GeneratingMotion& motion,
+                                    double fillet_start, const FilletRange& range,
+                                    double angular_pitch, double tip_half_angle)
 {
   const double sigma = g.sigma;
   std::vector<HalfPoint> half;
@@ -761,8 +760,8 @@ std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const R
       const double angle =
           rounding.tip_normal_angle + rounding.turn * static_cast<double>(i) / (n - 1);
       const Vector normal = polar(1., angle);
-      half.push_back({rounding.centre + rounding.radius * normal, normal,
-                      ProfileSegment::tip_round, rounding.radius * std::abs(rounding.turn) / (n - 1)});
+      half.push_back({rounding.centre + rounding.radius * normal, normal, ProfileSegment::tip_round,
+                      rounding.radius * std::abs(rounding.turn) / (n - 1)});
     }
   }
   if (relief.amount > 0.)
@@ -781,7 +780,7 @@ std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const R
   }
   {
     // Points evenly spaced in arc length (s = r_b·t²/2 on an involute).
-    const double t_top = relief.amount > 0.      ? relief.start_roll
+    const double t_top = relief.amount > 0.     ? relief.start_roll
                          : rounding.radius > 0. ? rounding.junction_roll
                                                 : t_tip;
     const unsigned int n = std::max(2u, resolution.flank_points);
@@ -867,7 +866,7 @@ ToothProfile generate_involute_tooth(const InvoluteToothSpec& spec,
   const TipRelief relief = tip_relief(spec, g, flank, t_tip, tooth, t_relief_end);
   const TipRounding rounding =
       tip_rounding(spec, g, flank, relief, t_tip, t_relief_end, t_form, tooth);
-  const Vector tip_corner = rounding.radius > 0.  ? rounding.centre
+  const Vector tip_corner = rounding.radius > 0. ? rounding.centre
                             : relief.amount > 0. ? relief.point(t_relief_end)
                                                  : flank.point(t_tip);
   const double tip_half_angle = std::atan2(tip_corner.y(), tip_corner.x());

@@ -362,7 +362,8 @@ ToothProfile modified_tooth(const ToothProfile& nominal,
   //    rounding's arc (and its end on the tip circle) moves with the flank point it meets, along
   //    that point's normal, like a sharp tip corner.
   const std::vector<RoundingMove> rounding_moves = rounding_translations(
-      points, [&](const ProfilePoint& p, bool loaded)
+      points,
+      [&](const ProfilePoint& p, bool loaded)
       { return removed_depth(modifications, range, roll_of(p.position, rb), loaded); },
       loaded_side);
   ToothProfile tooth = nominal;

@@ -85,19 +85,19 @@ struct ToothProfile
   double tip_relief_start_radius = 0.; // m, where tip relief starts (= tip_radius: none)
   // m, d_Fa/2: where the flank meets the tip rounding's arc (= tip_radius: a sharp tip edge)
   double tip_form_radius = 0.;
-  double tip_thickness = 0.;           // m, arc length of the top land on the tip circle
-  bool undercut = false;               // the fillet cuts into the involute (generation undercut)
+  double tip_thickness = 0.; // m, arc length of the top land on the tip circle
+  bool undercut = false;     // the fillet cuts into the involute (generation undercut)
 };
 
 // How densely each segment is sampled (points per segment of one tooth half; the ends of
 // adjacent segments are shared, so a segment with n points adds n - 1 new ones).
 struct ProfileResolution
 {
-  unsigned int root_points = 4;    // per root half-arc
-  unsigned int fillet_points = 24; // per fillet
-  unsigned int flank_points = 48;  // per involute flank (without relief)
-  unsigned int relief_points = 12; // per tip-relief zone
-  unsigned int tip_points = 8;     // on the tip half-arc
+  unsigned int root_points = 4;      // per root half-arc
+  unsigned int fillet_points = 24;   // per fillet
+  unsigned int flank_points = 48;    // per involute flank (without relief)
+  unsigned int relief_points = 12;   // per tip-relief zone
+  unsigned int tip_points = 8;       // on the tip half-arc
   unsigned int rounding_points = 12; // on a tip rounding's arc (tip_round)
 };
 

@@ -119,8 +119,8 @@ double tip_form_diameter(double base_diameter, double tip_diameter, double round
   const double sigma = internal ? -1. : 1.;
   const double rb = 0.5 * base_diameter;
   const double centre_radius = 0.5 * tip_diameter - sigma * rounding_radius;
-  const double roll = sigma * rounding_radius +
-                      std::sqrt(std::max(0., centre_radius * centre_radius - rb * rb));
+  const double roll =
+      sigma * rounding_radius + std::sqrt(std::max(0., centre_radius * centre_radius - rb * rb));
   return 2. * std::sqrt(rb * rb + roll * roll);
 }
 

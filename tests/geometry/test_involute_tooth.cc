@@ -533,8 +533,12 @@ double expect_tangent_rounding(const ToothProfile& tooth, const InvoluteToothSpe
   }
   // No flank point beyond the junction.
   for (const ProfilePoint& p : tooth.points)
+  {
     if (p.segment == ProfileSegment::flank)
+    {
       EXPECT_LE(sigma * (p.position.norm() - junction_radius), 1e-15);
+    }
+  }
   return junction_radius;
 }
 } // namespace
@@ -561,8 +565,8 @@ TEST(InvoluteTooth, TipRounding)
       const double junction = expect_tangent_rounding(tooth, spec);
       EXPECT_NEAR(2. * tooth.tip_form_radius, 2. * junction, 1e-15);
       EXPECT_NEAR(2. * tooth.tip_form_radius,
-                  kinematics::tip_form_diameter(2. * tooth.base_radius, 2. * tooth.tip_radius,
-                                                rho, spec.internal),
+                  kinematics::tip_form_diameter(2. * tooth.base_radius, 2. * tooth.tip_radius, rho,
+                                                spec.internal),
                   1e-10)
           << "internal " << spec.internal << " rho " << rho;
       // The rounding shortens the flank: d_Fa below (external) / above (internal) d_a.

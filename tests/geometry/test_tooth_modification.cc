@@ -259,8 +259,8 @@ TEST(ToothModification, TipRoundingMovesWithTheRelievedFlank)
   spec.pair.wheel.tip_rounding_radius = 0.5e-3;
   const Gear g = pinion(spec);
   const double rb = g.tooth.base_radius;
-  EXPECT_NEAR(g.range.tip,
-              std::sqrt(g.tooth.tip_form_radius * g.tooth.tip_form_radius - rb * rb), 1e-15);
+  EXPECT_NEAR(g.range.tip, std::sqrt(g.tooth.tip_form_radius * g.tooth.tip_form_radius - rb * rb),
+              1e-15);
   EXPECT_NEAR(g.range.active_tip, g.range.tip, 1e-12); // E lies on the pinion's d_Fa
   const double c = 10e-6;
   const ToothProfile modified = modified_tooth(
@@ -284,10 +284,12 @@ TEST(ToothModification, TipRoundingMovesWithTheRelievedFlank)
                            modified.points[i + 1].segment == ProfileSegment::relief) ||
                           (i > 0 && modified.points[i - 1].segment == ProfileSegment::relief);
     if (junction) // the relieved flank's own point at d_Fa lies there
+    {
       EXPECT_NEAR(removed_depth({relief(ModificationKind::tip_relief, c, 1e-3)}, g.range,
                                 std::sqrt(g.tooth.points[k - 1].position.squaredNorm() - rb * rb),
                                 true),
                   c, 1e-15);
+    }
   }
   EXPECT_EQ(arc_points, 2 * (ProfileResolution().rounding_points - 1));
 }
