@@ -214,13 +214,17 @@ def draw_case(rng, runner, rounding_rng=None):
             break
     else:
         raise CaseFailure("no valid pair in 50 draws")
-    rounding, rounded_report = tip_rounding_sets(rounding_rng, runner, sets)
-    if rounding:
-        sets.update(rounding)
-        report = rounded_report
     sets.update(load_sets(rng, report, sets))
     kind = rng.choice(MODIFICATIONS)
     module = float(sets["Gear pair/Pinion/module"])
+    # Not on the cases the fast model checks (frictionless, unmodified: INFLUENCE_KINDS), which
+    # refuses a rounded tip: those keep their identity.
+    rounding = {}
+    if float(sets["Contact/Friction coefficient"]) != 0. or kind not in INFLUENCE_KINDS:
+        rounding, rounded_report = tip_rounding_sets(rounding_rng, runner, sets)
+    if rounding:
+        sets.update(rounding)
+        report = rounded_report
     return {"pair": sets, "modification": kind,
             "modifications": modification_sets(rng, kind, module),
             "contact_ratio": value(report, "transverse_contact_ratio"),
