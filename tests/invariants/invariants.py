@@ -198,7 +198,8 @@ def tip_rounding_sets(rounding_rng, runner, sets):
     for scale in (1., 0.5):
         rounding = {f"Gear pair/{gear}/tip rounding radius": round(scale * radius, 4)
                     for gear, radius in zip(("Pinion", "Wheel"), radii)}
-        report, code, _ = runner.run("gear-pair", dict(sets, **rounding), allowed=(0, 2))
+        pair = {k: v for k, v in sets.items() if k.startswith("Gear pair/")}
+        report, code, _ = runner.run("gear-pair", dict(pair, **rounding), allowed=(0, 2))
         if code == 0 and value(report, "transverse_contact_ratio") > 1.05:
             return rounding, report
     return {}, None
