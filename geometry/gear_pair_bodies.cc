@@ -54,10 +54,12 @@ double outline_root_radius(const ToothProfile& tooth)
   return tooth.points.front().position.norm();
 }
 
+// A contact surface: the involute (relieved or not) and a rounded tip edge's arc, which carries
+// the contact where a contact line leaves the path of contact at the tip form circle.
 bool is_flank(ProfileSegment segment)
 {
   return segment == ProfileSegment::root_relief || segment == ProfileSegment::flank ||
-         segment == ProfileSegment::relief;
+         segment == ProfileSegment::relief || segment == ProfileSegment::tip_round;
 }
 
 // The loaded flank of a tooth in its own frame (header comment): side +1 of the pinion and of
@@ -485,7 +487,9 @@ FlankRollRange flank_roll_range(const kinematics::GearPairGeometry& pair, const 
   const double rb = tooth.base_radius;
   const auto roll_at = [rb](double r) { return std::sqrt(std::max(0., r * r - rb * rb)); };
   FlankRollRange range;
-  range.tip = roll_at(tooth.tip_radius);
+  // The flank ends at the tip form circle (a rounded tip edge's arc begins there; sharp: the
+  // tip circle), where the path of contact ends: tip reliefs are measured from there.
+  range.tip = roll_at(tooth.tip_form_radius > 0. ? tooth.tip_form_radius : tooth.tip_radius);
   range.form = roll_at(tooth.form_radius);
   const double a = pair.contact_start, e = pair.contact_end;
   const double b = pair.single_contact_start(), d = pair.single_contact_end();

@@ -153,6 +153,62 @@ void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPai
   }
 }
 
+// A rounded tip edge's arc (ProfileSegment::tip_round) is contact surface like the flank: a
+// contact line that leaves the path of contact at E (the pinion's tip form circle) or A (the
+// wheel's) continues onto it under load. Where pair j's contacts over [first, last] come within
+// the fine radius plus the arc's length of that end, foci along the arc of its tooth, at most
+// half a fine radius apart, give the arc the contact size.
+void add_tip_round_contacts(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                            const PlacedGears& gears, double first, double last,
+                            std::vector<SceneContact>& contacts)
+{
+  const SceneContact model = contacts.front();
+  const double fine_radius =
+      spec.mesh.fine_radius > 0. ? spec.mesh.fine_radius : 1.5 * model.hertz_half_width;
+  for (const bool wheel : {false, true})
+  {
+    const ToothProfile& nominal = wheel ? gears.wheel : gears.pinion;
+    if (nominal.tip_form_radius == nominal.tip_radius)
+      continue; // a sharp tip edge
+    const double end = wheel ? pair.contact_start : pair.contact_end;
+    for (int j = -3; j <= 3; ++j)
+    {
+      const double shift = j * pair.transverse_base_pitch;
+      const int index = wheel ? mate_tooth(gears.wheel, j) : j;
+      const ToothProfile& tooth =
+          (wheel ? gears.wheel_contact_teeth : gears.pinion_contact_teeth).tooth(index);
+      std::vector<Eigen::Vector2d> arc; // the loaded flank's arc, tip circle to flank
+      double length = 0.;
+      for (std::size_t i = 0; i + 1 < tooth.points.size(); ++i)
+      {
+        const ProfileEdge edge = edge_between(tooth.points[i], tooth.points[i + 1]);
+        if (edge.segment != ProfileSegment::tip_round || edge.side != loaded_side(tooth))
+          continue;
+        const Eigen::Vector2d a = tooth.points[i].position, b = tooth.points[i + 1].position;
+        const unsigned int n = std::max(
+            1u, static_cast<unsigned int>(std::ceil((b - a).norm() / (0.5 * fine_radius))));
+        for (unsigned int k = arc.empty() ? 0 : 1; k <= n; ++k)
+          arc.push_back(a + (b - a) * static_cast<double>(k) / n);
+        length += (b - a).norm();
+      }
+      const double reach = fine_radius + length;
+      if (arc.empty() || last + shift < end - reach || first + shift > end + reach)
+        continue;
+      const Eigen::Vector2d centre = wheel ? gears.wheel_centre : gears.pinion_centre;
+      const double rotation =
+          (wheel ? gears.wheel_rotation : gears.pinion_rotation) + index * tooth.angular_pitch;
+      for (const Eigen::Vector2d& p : arc)
+      {
+        SceneContact focus = model;
+        focus.point = place(p, centre, rotation);
+        focus.first_feature = j;
+        focus.second_feature = -j;
+        contacts.push_back(focus);
+      }
+    }
+  }
+}
+
 } // namespace detail
 
 namespace

@@ -82,6 +82,9 @@ SceneContact predicted_contact(const GearPairSceneSpec& spec,
 void add_swept_contacts(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
                         const LineOfAction& line, const PlacedGears& gears, double reference,
                         std::vector<SceneContact>& contacts);
+void add_tip_round_contacts(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
+                            const PlacedGears& gears, double first, double last,
+                            std::vector<SceneContact>& contacts);
 void set_unloaded_transmission_error(const GearPairSceneSpec& spec,
                                      const kinematics::GearPairGeometry& pair,
                                      const LineOfAction& line, const PlacedGears& gears,

@@ -405,6 +405,8 @@ void check_spec(const InvoluteToothSpec& spec)
                      "a pinion-type cutter must have fewer teeth than the ring it cuts");
   if (spec.tip_relief_amount < 0.)
     throw InputError(parameter("tip relief amount"), "must not be negative");
+  if (!(spec.tip_rounding_radius >= 0.) || !std::isfinite(spec.tip_rounding_radius))
+    throw InputError(parameter("tip rounding radius"), "must be 0 (sharp) or positive (mm)");
 }
 } // namespace
 
@@ -445,6 +447,7 @@ InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double t
     spec.cutter_tip_radius *= c;
     spec.gear_addendum *= c;
   }
+  spec.tip_rounding_radius = gear.tip_rounding_radius; // transverse, as given
   spec.internal = gear.internal;
   return spec;
 }
@@ -670,14 +673,72 @@ void append_root(const ProfileResolution& resolution, const GeneratingMotion& mo
     half.back().position = polar(half.back().position.norm(), end_angle);
 }
 
+// The arc of a rounded tip edge on the +y flank: centre C, the flank's roll parameter t_Fa
+// where the arc meets it, and the turn of the outward normal from the tip circle's (σ·Ĉ) to
+// the flank's.
+struct TipRounding
+{
+  double radius = 0.;           // m, ρ_a (0: a sharp tip edge)
+  double junction_roll = 0.;    // roll parameter t of the flank (relief) point at d_Fa
+  Vector centre;                // m, C
+  double tip_normal_angle = 0.; // rad, polar angle of the outward normal where the arc meets the
+                                // tip circle
+  double turn = 0.;             // rad, from there to the flank's normal at t_Fa
+};
+
+// The circle of radius ρ_a tangent to the flank (the relieved curve where there is tip relief)
+// and to the tip circle: its centre C = P(t) − ρ_a·N(t) lies at radius r_a − σ·ρ_a, solved for t
+// by bisection on the flank between the relief start (or the form circle) and the tip. Without
+// tip relief this is kinematics::tip_form_diameter's closed form (tests/geometry).
+TipRounding tip_rounding(const InvoluteToothSpec& spec, const ResolvedSpec& g,
+                         const InvoluteFlank& flank, const TipRelief& relief, double t_tip,
+                         double t_relief_end, double t_form, ToothProfile& tooth)
+{
+  TipRounding rounding;
+  tooth.tip_form_radius = g.tip_radius;
+  if (!(spec.tip_rounding_radius > 0.))
+    return rounding;
+  const double rho = spec.tip_rounding_radius, sigma = g.sigma;
+  const bool relieved = relief.amount > 0.;
+  const auto point = [&](double t) { return relieved ? relief.point(t) : flank.point(t); };
+  const auto normal = [&](double t) { return relieved ? relief.normal(t) : flank.normal(t); };
+  // σ·(|C| − (r_a − σ·ρ_a)) is positive at the tip corner (the normal there is not radial) and
+  // must be negative where the flank starts.
+  const auto off = [&](double t)
+  { return sigma * ((point(t) - rho * normal(t)).norm() - (g.tip_radius - sigma * rho)); };
+  const double t_low = relieved ? relief.start_roll : t_form;
+  const double t_high = relieved ? t_relief_end : t_tip;
+  if (!(g.tip_radius - sigma * rho > g.base_radius) || !(off(t_low) < 0.))
+    throw InputError(
+        parameter("tip rounding radius"),
+        format_mm(rho) + " does not fit: the arc reaches below " +
+            (relieved
+                 ? "the tip relief start (" + format_mm(2. * tooth.tip_relief_start_radius) + ")"
+                 : "the form circle (" + format_mm(2. * tooth.form_radius) + ")"));
+  rounding.radius = rho;
+  rounding.junction_roll = bisect(off, std::min(t_low, t_high), std::max(t_low, t_high));
+  const Vector junction = point(rounding.junction_roll);
+  const Vector junction_normal = normal(rounding.junction_roll);
+  rounding.centre = junction - rho * junction_normal;
+  if (!(std::atan2(rounding.centre.y(), rounding.centre.x()) > 0.))
+    throw InputError(parameter("tip rounding radius"),
+                     format_mm(rho) + " consumes the whole top land (tip circle " +
+                         format_mm(2. * g.tip_radius) + ")");
+  const Vector tip_normal = sigma * rounding.centre.normalized();
+  rounding.tip_normal_angle = std::atan2(tip_normal.y(), tip_normal.x());
+  rounding.turn = angle_between(tip_normal, junction_normal);
+  tooth.tip_form_radius = junction.norm();
+  return rounding;
+}
+
 // The +y half, from the tooth axis on the tip circle to the middle of the gap.
 // A point shared by two segments carries the one nearer the tip.
 std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const ResolvedSpec& g,
                                     const InvoluteFlank& flank, const TipRelief& relief,
-                                    double t_tip, double t_relief_end, double t_form,
-                                    const GeneratingMotion& motion, double fillet_start,
-                                    const FilletRange& range, double angular_pitch,
-                                    double tip_half_angle)
+                                    const TipRounding& rounding, double t_tip, double t_relief_end,
+                                    double t_form, const GeneratingMotion& motion,
+                                    double fillet_start, const FilletRange& range,
+                                    double angular_pitch, double tip_half_angle)
 {
   const double sigma = g.sigma;
   std::vector<HalfPoint> half;
@@ -690,13 +751,27 @@ std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const R
     half.push_back(
         {polar(g.tip_radius, angle), rotate(outward_tip, angle), ProfileSegment::tip, step});
   }
+  if (rounding.radius > 0.)
+  {
+    // From the tip circle to the flank: the outward normal turns from σ·Ĉ to the flank's.
+    const unsigned int n = std::max(2u, resolution.rounding_points);
+    for (unsigned int i = 1; i < n; ++i)
+    {
+      const double angle =
+          rounding.tip_normal_angle + rounding.turn * static_cast<double>(i) / (n - 1);
+      const Vector normal = polar(1., angle);
+      half.push_back({rounding.centre + rounding.radius * normal, normal, ProfileSegment::tip_round,
+                      rounding.radius * std::abs(rounding.turn) / (n - 1)});
+    }
+  }
   if (relief.amount > 0.)
   {
     const unsigned int n = std::max(2u, resolution.relief_points);
-    double previous = t_relief_end;
+    const double t_from = rounding.radius > 0. ? rounding.junction_roll : t_relief_end;
+    double previous = t_from;
     for (unsigned int i = 1; i < n; ++i)
     {
-      const double t = t_relief_end + (relief.start_roll - t_relief_end) * i / (n - 1);
+      const double t = t_from + (relief.start_roll - t_from) * i / (n - 1);
       const double step =
           arc_length([&](double s) { return relief.tangent_rate(s).norm(); }, previous, t);
       half.push_back({relief.point(t), relief.normal(t), ProfileSegment::relief, step});
@@ -705,7 +780,9 @@ std::vector<HalfPoint> half_outline(const ProfileResolution& resolution, const R
   }
   {
     // Points evenly spaced in arc length (s = r_b·t²/2 on an involute).
-    const double t_top = relief.amount > 0. ? relief.start_roll : t_tip;
+    const double t_top = relief.amount > 0.     ? relief.start_roll
+                         : rounding.radius > 0. ? rounding.junction_roll
+                                                : t_tip;
     const unsigned int n = std::max(2u, resolution.flank_points);
     double previous = t_top;
     for (unsigned int i = 1; i < n; ++i)
@@ -787,12 +864,16 @@ ToothProfile generate_involute_tooth(const InvoluteToothSpec& spec,
   const double t_form = form_roll_parameter(spec, g, flank, motion, fillet_start, tooth);
   double t_relief_end = t_tip;
   const TipRelief relief = tip_relief(spec, g, flank, t_tip, tooth, t_relief_end);
-  const Vector tip_corner = relief.amount > 0. ? relief.point(t_relief_end) : flank.point(t_tip);
+  const TipRounding rounding =
+      tip_rounding(spec, g, flank, relief, t_tip, t_relief_end, t_form, tooth);
+  const Vector tip_corner = rounding.radius > 0. ? rounding.centre
+                            : relief.amount > 0. ? relief.point(t_relief_end)
+                                                 : flank.point(t_tip);
   const double tip_half_angle = std::atan2(tip_corner.y(), tip_corner.x());
   tooth.tip_thickness = 2. * g.tip_radius * tip_half_angle;
 
-  mirror_half(half_outline(resolution, g, flank, relief, t_tip, t_relief_end, t_form, motion,
-                           fillet_start, range, angular_pitch, tip_half_angle),
+  mirror_half(half_outline(resolution, g, flank, relief, rounding, t_tip, t_relief_end, t_form,
+                           motion, fillet_start, range, angular_pitch, tip_half_angle),
               tooth);
   return tooth;
 }

@@ -46,6 +46,14 @@ struct InvoluteToothSpec
   double tip_relief_start_diameter = 0.; // m, where the relief starts (between form and tip)
   TipReliefShape tip_relief_shape = TipReliefShape::linear;
 
+  // m, ρ_a: the tip edge rounded by a circular arc of this radius (in this transverse section)
+  // tangent to the flank (the involute, or the relieved flank where the tip relief reaches) and
+  // to the tip circle, on both flanks; 0 = the sharp edge. The flank meets the arc at the tip
+  // form circle d_Fa (ToothProfile::tip_form_radius; kinematics::tip_form_diameter without tip
+  // relief). Refused (InputError) when the arc would consume the whole top land or reach below
+  // the tip relief's start or the form circle.
+  double tip_rounding_radius = 0.;
+
   // m, the involute must reach down to (external) / up to (internal) this diameter, usually
   // the start of the active profile given by the mating gear; an undercut or fillet that
   // eats into it is rejected. 0: only reject undercut that leaves no involute at all.
@@ -57,7 +65,8 @@ double tip_diameter(const InvoluteToothSpec& spec);
 
 // The tooth of one gear of kinematics' pair; a helical gear's transverse tooth (m_t, α_t,
 // x·m_n, the transverse section of its rack: involute_tooth.cc). The cutter is the gear's basic
-// rack (addendum h_fP*, dedendum h_aP*, tip round ρ_fP*); tip diameter as the pair uses it.
+// rack (addendum h_fP*, dedendum h_aP*, tip round ρ_fP*); tip diameter as the pair uses it, and
+// its tip rounding radius (transverse, as GearSpec gives it).
 // `required_form_diameter` is left 0 (kinematics checks the form circle against its mate).
 InvoluteToothSpec involute_tooth_spec(const kinematics::GearSpec& gear, double tip_diameter);
 

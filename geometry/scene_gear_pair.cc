@@ -124,6 +124,7 @@ std::vector<SceneContact> predicted_contacts(const GearPairSceneSpec& spec,
     contacts.push_back(
         predicted_contact(spec, pair, line, gears, scene.reference_position, j, normal_force,
                           helical ? nearest_roll(pair, scene.reference_position, j) : 0.));
+  std::vector<double> reached = spec.swept_positions; // the positions the contacts reach
   if (helical)
   {
     // The sections of the face are the model rolled; a rolling sweep rolls the whole face to
@@ -137,9 +138,13 @@ std::vector<SceneContact> predicted_contacts(const GearPairSceneSpec& spec,
       across.swept_positions.push_back(sections.back());
     }
     add_swept_contacts(across, pair, line, gears, scene.reference_position, contacts);
+    reached = across.swept_positions;
   }
   else if (!spec.swept_positions.empty())
     add_swept_contacts(spec, pair, line, gears, scene.reference_position, contacts);
+  reached.push_back(scene.reference_position);
+  const auto [first, last] = std::minmax_element(reached.begin(), reached.end());
+  add_tip_round_contacts(spec, pair, gears, *first, *last, contacts);
   return contacts;
 }
 

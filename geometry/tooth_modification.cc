@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace gearstiff::geometry
@@ -298,6 +299,48 @@ std::vector<ProfilePoint> points_with_kinks(const ToothProfile& nominal,
   }
   return points;
 }
+// A point of a tip rounding's arc, or the arc's end on the tip circle.
+bool is_rounding(const std::vector<ProfilePoint>& points, std::size_t i)
+{
+  const ProfileSegment s = points[i].segment;
+  if (s == ProfileSegment::tip_round)
+    return true;
+  return s == ProfileSegment::tip &&
+         ((i > 0 && points[i - 1].segment == ProfileSegment::tip_round) ||
+          (i + 1 < points.size() && points[i + 1].segment == ProfileSegment::tip_round));
+}
+
+// The translation of a tip rounding's arc: the depth removed where it meets the flank, along
+// that point's normal.
+struct RoundingMove
+{
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero(); // unit, the flank's at d_Fa
+  double depth = 0.;                                // m
+};
+
+// Per side (−1: [0], +1: [1]) the translation of a tip rounding (none: depth 0); its junction
+// with the flank is the arc's point next to an involute point.
+std::vector<RoundingMove>
+rounding_translations(const std::vector<ProfilePoint>& points,
+                      const std::function<double(const ProfilePoint&, bool)>& depth,
+                      int loaded_side)
+{
+  std::vector<RoundingMove> moves(2);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const ProfilePoint& p = points[i];
+    if (p.segment != ProfileSegment::tip_round)
+      continue;
+    const bool next_involute = i + 1 < points.size() && is_involute(points[i + 1].segment);
+    const bool previous_involute = i > 0 && is_involute(points[i - 1].segment);
+    if (!next_involute && !previous_involute)
+      continue;
+    RoundingMove& move = moves[point_side(p) < 0 ? 0 : 1];
+    move.normal = p.normal;
+    move.depth = depth(p, point_side(p) == loaded_side);
+  }
+  return moves;
+}
 } // namespace
 
 ToothProfile modified_tooth(const ToothProfile& nominal,
@@ -315,11 +358,24 @@ ToothProfile modified_tooth(const ToothProfile& nominal,
   std::vector<ProfilePoint> points = points_with_kinks(nominal, kinks);
 
   // 2. Every flank point (and the tip corners) moves inwards by δ(ρ), its normal turns by dδ/ds;
-  //    points inside a relief zone are marked, so the relief starts a new outline piece.
+  //    points inside a relief zone are marked, so the relief starts a new outline piece. A tip
+  //    rounding's arc (and its end on the tip circle) moves with the flank point it meets, along
+  //    that point's normal, like a sharp tip corner.
+  const std::vector<RoundingMove> rounding_moves = rounding_translations(
+      points,
+      [&](const ProfilePoint& p, bool loaded)
+      { return removed_depth(modifications, range, roll_of(p.position, rb), loaded); },
+      loaded_side);
   ToothProfile tooth = nominal;
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     ProfilePoint& p = points[i];
+    if (is_rounding(points, i))
+    {
+      const RoundingMove& move = rounding_moves[point_side(p) < 0 ? 0 : 1];
+      p.position -= move.depth * move.normal;
+      continue;
+    }
     const bool corner = p.segment == ProfileSegment::tip &&
                         ((i > 0 && is_involute(points[i - 1].segment)) ||
                          (i + 1 < points.size() && is_involute(points[i + 1].segment)));

@@ -10,6 +10,11 @@
 // outline keeps its sampling and only the start of a relief (a kink for the linear shape) gets a
 // point of its own and starts a new outline piece (ProfileSegment::relief, root_relief).
 //
+// A rounded tip edge (InvoluteToothSpec::tip_rounding_radius, ProfileSegment::tip_round): the
+// flank ends at the tip form circle d_Fa, from which tip reliefs are measured (FlankRollRange::
+// tip), so a relief always starts below the arc; the arc moves with the flank point it meets,
+// along that point's normal, like a sharp tip corner.
+//
 // Kinds (more are added as further enumerators with their own apply step, e.g. the tooth faults
 // of issue 31: a root crack, a spall, a chipped or broken tooth):
 //  - tip relief C_a over the length L_a measured from the tip (roll length), shape linear,
@@ -81,7 +86,7 @@ struct ToothModification
 // Where a gear's flank meets its mate, as roll lengths ρ on this gear's involute (m).
 struct FlankRollRange
 {
-  double tip = 0.;         // ρ at the tip circle
+  double tip = 0.;         // ρ at the flank's tip end: the tip (form) circle, d_Fa when rounded
   double form = 0.;        // ρ at the form circle (start of the involute)
   double active_tip = 0.;  // ρ of the active profile's end nearer the tip
   double active_root = 0.; // ρ of the active profile's end nearer the root

@@ -28,6 +28,7 @@ inline const std::vector<std::string>& gear_members()
                                                    "profile_shift",
                                                    "face_width",
                                                    "tip_diameter",
+                                                   "tip_rounding_radius",
                                                    "internal",
                                                    "addendum_coefficient",
                                                    "dedendum_coefficient",

@@ -35,6 +35,8 @@ void check_gear(const GearSpec& gear, bool wheel)
     throw InputError(name("face_width"), "must be positive");
   if (!(gear.tip_diameter >= 0.))
     throw InputError(name("tip_diameter"), "must be 0 (standard) or positive");
+  if (!(gear.tip_rounding_radius >= 0.) || !std::isfinite(gear.tip_rounding_radius))
+    throw InputError(name("tip_rounding_radius"), "must be 0 (sharp) or positive (mm)");
   if (!(gear.addendum_coefficient > 0.) || !(gear.dedendum_coefficient > 0.) ||
       !(gear.root_radius_coefficient >= 0.))
     throw InputError(name("dedendum_coefficient"), "basic rack coefficients must be positive");
@@ -109,6 +111,17 @@ std::string gear_parameter_name(bool wheel, const std::string& key)
   std::string member = key == "module" ? "normal_module" : key;
   std::replace(member.begin(), member.end(), ' ', '_');
   return field::gear(wheel, member);
+}
+
+double tip_form_diameter(double base_diameter, double tip_diameter, double rounding_radius,
+                         bool internal)
+{
+  const double sigma = internal ? -1. : 1.;
+  const double rb = 0.5 * base_diameter;
+  const double centre_radius = 0.5 * tip_diameter - sigma * rounding_radius;
+  const double roll =
+      sigma * rounding_radius + std::sqrt(std::max(0., centre_radius * centre_radius - rb * rb));
+  return 2. * std::sqrt(rb * rb + roll * roll);
 }
 
 double involute(double angle)
@@ -210,6 +223,7 @@ struct SignedPair
   double m_t, alpha_t;     // m, rad (transverse)
   double d1, d2, db1, db2; // m, reference and base diameters
   double da1, da2;         // m, tip diameters
+  double dFa1, dFa2;       // m, tip form diameters (magnitudes; sharp edges: |d_a|)
   double df1, df2;         // m, root diameters
   double x_sum;            // -, x1 + x2
 };
@@ -244,6 +258,12 @@ SignedPair signed_pair(const GearPairSpec& spec)
   p.da2 = tip_of(g2, p.d2, p.s2);
   p.df1 = root_of(g1, p.d1);
   p.df2 = root_of(g2, p.d2);
+  p.dFa1 = g1.tip_rounding_radius > 0.
+               ? tip_form_diameter(std::abs(p.db1), std::abs(p.da1), g1.tip_rounding_radius, false)
+               : std::abs(p.da1);
+  p.dFa2 = g2.tip_rounding_radius > 0. ? tip_form_diameter(std::abs(p.db2), std::abs(p.da2),
+                                                           g2.tip_rounding_radius, g2.internal)
+                                       : std::abs(p.da2);
   return p;
 }
 
@@ -363,6 +383,59 @@ void check_tip_thickness(const GearPairSpec& spec, const SignedPair& p)
   }
 }
 
+// A tip rounding that fits (kinematics/gear_pair.h, tip_form_diameter): its centre outside the
+// base circle (external), and a top land left between the two arcs. The form circle is checked
+// against d_Fa once the form roll lengths are known (check_rounding_above_form).
+void check_tip_rounding(const GearPairSpec& spec, const SignedPair& p)
+{
+  for (const bool wheel : {false, true})
+  {
+    const GearSpec& g = wheel ? spec.wheel : spec.pinion;
+    const double rho = g.tip_rounding_radius;
+    if (!(rho > 0.))
+      continue;
+    const double sigma = g.internal ? -1. : 1.;
+    const double rb = 0.5 * std::abs(wheel ? p.db2 : p.db1);
+    const double ra = 0.5 * std::abs(wheel ? p.da2 : p.da1);
+    const double centre_radius = ra - sigma * rho;
+    if (!(centre_radius > rb))
+      throw InputError(field::gear(wheel, "tip_rounding_radius"),
+                       millimetres(rho) + " does not fit: the tip circle lies only " +
+                           millimetres(ra - rb) + " outside the base circle");
+    // Half-angle of the arc's centre from the tooth axis (header): the top land that is left.
+    const auto inv_at = [rb](double r) { return involute(std::acos(rb / r)); };
+    const double d = std::abs(wheel ? p.d2 : p.d1);
+    const double land_angle = reference_tooth_thickness(g, p) / d +
+                              sigma * (involute(p.alpha_t) - inv_at(centre_radius)) - rho / rb;
+    if (!(land_angle > 0.))
+      throw InputError(field::gear(wheel, "tip_rounding_radius"),
+                       millimetres(rho) + " consumes the whole top land (tip diameter " +
+                           millimetres(2. * ra) + ")");
+  }
+}
+
+// d_Fa above (external) / inside (internal) the form circle: the rounding leaves an involute.
+void check_rounding_above_form(const GearPairSpec& spec, const SignedPair& p,
+                               std::pair<double, double> form_rolls)
+{
+  for (const bool wheel : {false, true})
+  {
+    const GearSpec& g = wheel ? spec.wheel : spec.pinion;
+    if (!(g.tip_rounding_radius > 0.))
+      continue;
+    const double rb = 0.5 * std::abs(wheel ? p.db2 : p.db1);
+    const double r_fa = 0.5 * (wheel ? p.dFa2 : p.dFa1);
+    const double roll_fa = std::sqrt(std::max(0., r_fa * r_fa - rb * rb));
+    const double form = wheel ? form_rolls.second : form_rolls.first;
+    if (g.internal ? !(roll_fa < form) : !(roll_fa > form))
+      throw InputError(field::gear(wheel, "tip_rounding_radius"),
+                       millimetres(g.tip_rounding_radius) +
+                           " reaches the form circle: the tip form diameter d_Fa " +
+                           millimetres(2. * r_fa) + " leaves no involute above d_Ff " +
+                           millimetres(2. * std::sqrt(rb * rb + form * form)));
+  }
+}
+
 // Line of action from T1 towards the pitch point C (module header): T2, C, A
 // and E.
 void set_line_of_action(const SignedPair& p, GearPairGeometry& result)
@@ -373,8 +446,9 @@ void set_line_of_action(const SignedPair& p, GearPairGeometry& result)
   const double t2_position = (rb1 + rb2) * tan_wt;
   result.line_of_action_length = std::abs(t2_position);
   result.pitch_point = rb1 * tan_wt;
-  const double ra1 = 0.5 * std::abs(p.da1);
-  const double ra2 = 0.5 * std::abs(p.da2);
+  // The active tips are the tip form circles (the tip circles when the edges are sharp).
+  const double ra1 = 0.5 * p.dFa1;
+  const double ra2 = 0.5 * p.dFa2;
   result.contact_end = std::sqrt(ra1 * ra1 - rb1 * rb1);
   result.contact_start = t2_position - p.s2 * std::sqrt(ra2 * ra2 - rb2 * rb2);
 }
@@ -521,6 +595,7 @@ void set_gear_geometry(const GearPairSpec& spec, const SignedPair& p,
     out.reference_diameter = std::abs(d);
     out.base_diameter = std::abs(db);
     out.tip_diameter = std::abs(da);
+    out.tip_form_diameter = wheel ? p.dFa2 : p.dFa1;
     out.root_diameter = std::abs(wheel ? p.df2 : p.df1);
     out.working_diameter = std::abs(db) / cos_wt;
     const double form = wheel ? form_rolls.second : form_rolls.first;
@@ -587,8 +662,10 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec)
   result.spec.wheel.tip_diameter = std::abs(p.da2);
   check_tips_and_bores(spec, p);
   check_tip_thickness(spec, p);
+  check_tip_rounding(spec, p);
   set_line_of_action(p, result);
   const std::pair<double, double> form_rolls = check_undercut_and_interference(spec, p, result);
+  check_rounding_above_form(spec, p, form_rolls);
   check_tip_clearances(spec, p, result);
   check_internal_tip_interference(spec, p, result);
   set_gear_geometry(spec, p, form_rolls, result);

@@ -30,7 +30,11 @@ struct GearSpec
   double profile_shift = 0.;  // -, x (DIN 3960: > 0 thickens the tooth)
   double face_width = 0.;     // m, b
   double tip_diameter = 0.;   // m, d_a; 0: standard d ± 2·m_n·(h_aP* + x)
-  bool internal = false;      // ring gear (teeth on the inside)
+  // m, ρ_a: the tip edge rounded by a circular arc of this radius in the transverse section,
+  // tangent to the flank and to the tip circle; 0 = the sharp edge. The flank then ends at the
+  // tip form diameter d_Fa (tip_form_diameter below), which bounds the path of contact.
+  double tip_rounding_radius = 0.;
+  bool internal = false; // ring gear (teeth on the inside)
 
   // Basic rack profile (ISO 53 profile A), coefficients of m_n.
   double addendum_coefficient = 1.0;     // -, h_aP* (standard tip diameter only)
@@ -68,6 +72,7 @@ struct GearGeometry
   double reference_diameter = 0.;   // m, d = z·m_t
   double base_diameter = 0.;        // m, d_b
   double tip_diameter = 0.;         // m, d_a actually used
+  double tip_form_diameter = 0.;    // m, d_Fa: where the flank meets the tip rounding (sharp: d_a)
   double root_diameter = 0.;        // m, d_f
   double working_diameter = 0.;     // m, d_w (rolling circle of the pair)
   double form_diameter = 0.;        // m, d_Ff: where the generated involute ends at the root
@@ -97,8 +102,8 @@ struct GearPairGeometry
   double normal_base_pitch = 0.;          // m, p_bn
   double line_of_action_length = 0.;      // m, T1T2 = a_w·sin α_wt
   double pitch_point = 0.;                // m, C along the line of action from T1
-  double contact_start = 0.;              // m, A (wheel tip, pinion root side)
-  double contact_end = 0.;                // m, E (pinion tip)
+  double contact_start = 0.;              // m, A (wheel's tip form circle d_Fa2, pinion root side)
+  double contact_end = 0.;                // m, E (pinion's tip form circle d_Fa1)
   double path_of_contact = 0.;            // m, g_α = AE
   double transverse_contact_ratio = 0.;   // -, ε_α = g_α / p_bt
   double overlap_ratio = 0.;              // -, ε_β = b·sin β / (π·m_n), b common width
@@ -138,6 +143,18 @@ GearPairGeometry compute_gear_pair(const GearPairSpec& spec);
 // "Gear pair/Wheel/tip diameter" when no ring tip between the base and reference circles
 // qualifies. Cost: about 60 pair evaluations (sub-millisecond).
 double clearing_ring_tip_diameter(const GearPairSpec& spec, double margin);
+
+// The tip form diameter d_Fa (ISO 21771) of a tip edge rounded with radius ρ_a in the transverse
+// section (magnitudes, m; internal: the ring's tip circle is the inner one). The arc's centre lies
+// on the involute's normal at the tangency point, a tangent of the base circle, at roll distance
+// ρ_Fa − σ·ρ_a from its tangent point and at radius r_a − σ·ρ_a (tangent to the tip circle), so
+//   ρ_Fa = σ·ρ_a + √((r_a − σ·ρ_a)² − r_b²),   d_Fa = 2·√(r_b² + ρ_Fa²),
+// σ = +1 external, −1 internal. ρ_a = 0 gives d_a. ISO 6336-1 bounds the path of contact by this
+// active tip diameter for a rounded or chamfered tip (docs/references.md §20). The arc's centre,
+// and so the end of the top land, lies at the half-angle s_t/d + σ·(inv α_t − inv α_C) − ρ_a/r_b
+// from the tooth axis, α_C the pressure angle at radius r_a − σ·ρ_a.
+double tip_form_diameter(double base_diameter, double tip_diameter, double rounding_radius,
+                         bool internal);
 
 // inv(α) = tan α − α and its inverse (Newton, |error| < 1e-14 rad for α in (0, 1.5)).
 double involute(double angle);

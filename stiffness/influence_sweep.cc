@@ -999,6 +999,13 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
 
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
+  // The tip-corner unknowns beyond the path stand for a sharp tip edge; a rounded one
+  // (GearSpec::tip_rounding_radius) is not modelled here, so it is refused, never ignored.
+  for (const bool wheel : {false, true})
+    if ((wheel ? settings.scene.pair.wheel : settings.scene.pair.pinion).tip_rounding_radius > 0.)
+      throw InputError(kinematics::field::gear(wheel, "tip_rounding_radius"),
+                       "influence coefficients model a sharp tip edge only: use finite element "
+                       "for a rounded tip");
   if (settings.scene.mesh.dimension == 3)
   {
     // The 3D model is accepted for what it is verified on (docs/ltca.md §3): spur pairs,

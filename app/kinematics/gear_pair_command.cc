@@ -51,6 +51,9 @@ void report_gears(const kinematics::GearPairGeometry& pair, const PublishedValue
     value(p + "base_radius", 0.5 * g.base_diameter / mm, wheel ? none : 24.667, "mm",
           name + " base radius r_b", split_path_source);
     report.add_value(p + "tip_diameter", g.tip_diameter / mm, "mm", name + " tip diameter d_a");
+    if (g.tip_form_diameter != g.tip_diameter) // a rounded tip edge (the sharp one: d_a)
+      report.add_value(p + "tip_form_diameter", g.tip_form_diameter / mm, "mm",
+                       name + " tip form diameter d_Fa (where the flank meets the tip rounding)");
     report.add_value(p + "root_diameter", g.root_diameter / mm, "mm", name + " root diameter d_f");
     report.add_value(p + "form_diameter", g.form_diameter / mm, "mm",
                      name + " form diameter d_Ff (rack-generated involute limit)");

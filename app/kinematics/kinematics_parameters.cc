@@ -37,6 +37,12 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
                     "published tip for the teeth of the built-in case (docs/references.md §1: "
                     "ε_α = 1.500), else standard, and for an internal wheel the longest ring teeth "
                     "that clear the pinion's involute by 'Gear pair/ring tip margin'");
+  prm.declare_entry("tip rounding radius", format_number(gear.tip_rounding_radius / mm, 12),
+                    Double(0.),
+                    "radius ρ_a of the tip edge's rounding [mm], in the transverse section (a "
+                    "helical gear's too): a circular arc tangent to the flank and to the tip "
+                    "circle, the flank ending at the tip form diameter d_Fa, which bounds the path "
+                    "of contact; 0 = the sharp edge");
   prm.declare_entry("internal", gear.internal ? "true" : "false", Bool(),
                     "ring gear (teeth inside); only the wheel may be internal");
   prm.declare_entry("addendum coefficient", format_number(gear.addendum_coefficient, 12),
@@ -93,6 +99,7 @@ kinematics::GearSpec parse_gear(dealii::ParameterHandler& prm, bool wheel, bool&
   gear.face_width = prm.get_double("face width") * mm;
   automatic_tip =
       parse_automatic_diameter(prm.get("tip diameter"), wheel, "tip diameter", gear.tip_diameter);
+  gear.tip_rounding_radius = prm.get_double("tip rounding radius") * mm;
   gear.internal = prm.get_bool("internal");
   gear.addendum_coefficient = prm.get_double("addendum coefficient");
   gear.dedendum_coefficient = prm.get_double("dedendum coefficient");

@@ -468,3 +468,170 @@ TEST(InvoluteTooth, RadiiEqualKinematics)
     EXPECT_LT(2. * tooth.form_radius, k.active_profile_start);
   }
 }
+
+namespace
+{
+// Checks a rounded tip edge on both flanks against its definition: every tip_round point at
+// distance ρ_a from one centre C with the outward normal (p − C)/ρ_a; the arc tangent to the tip
+// circle (|C| = r_a − σ·ρ_a, so its end on the tip circle has the radial normal) and to the
+// involute at its junction (the point lies on the involute of the reference thickness and has
+// the involute's normal there, (σ·t·e_r + e_θ)/√(1 + t²) on the +y side). Tolerances: the
+// bisection solves to machine precision (1e-15 relative in t); 1e-12 m and 1e-9 rad are
+// rounding with room. Returns the junction's radius d_Fa/2 of the +y flank.
+double expect_tangent_rounding(const ToothProfile& tooth, const InvoluteToothSpec& spec)
+{
+  const double rho = spec.tip_rounding_radius;
+  const double sigma = spec.internal ? -1. : 1.;
+  const double r = spec.module * spec.teeth / 2., alpha = spec.pressure_angle;
+  const double s = spec.module * (M_PI / 2. + 2. * spec.profile_shift * std::tan(alpha));
+  double junction_radius = 0.;
+  for (const int side : {-1, 1})
+  {
+    // the arc's points of this side, the tip-circle end first (tooth_profile.h orders the +y
+    // half from the tip down; the −y half is its mirror image, walked the other way)
+    std::vector<ProfilePoint> arc;
+    const ProfilePoint* tip_end = nullptr;
+    for (std::size_t i = 0; i < tooth.points.size(); ++i)
+    {
+      const ProfilePoint& p = tooth.points[i];
+      if (p.segment != ProfileSegment::tip_round || p.side != side)
+        continue;
+      arc.push_back(p);
+      for (const std::size_t k : {i - 1, i + 1})
+        if (k < tooth.points.size() && tooth.points[k].segment == ProfileSegment::tip)
+          tip_end = &tooth.points[k];
+    }
+    EXPECT_GE(arc.size(), 2u) << "side " << side;
+    EXPECT_TRUE(tip_end) << "side " << side;
+    if (arc.size() < 2 || !tip_end)
+      return 0.;
+    // The junction: the arc's point next to a flank point.
+    const ProfilePoint& junction = side > 0 ? arc.back() : arc.front();
+    const Eigen::Vector2d centre = junction.position - rho * junction.normal;
+    EXPECT_NEAR(centre.norm(), tooth.tip_radius - sigma * rho, 1e-12) << "side " << side;
+    for (const ProfilePoint& p : arc)
+    {
+      EXPECT_NEAR((p.position - centre).norm(), rho, 1e-12) << "side " << side;
+      EXPECT_LT((p.normal - (p.position - centre) / rho).norm(), 1e-9) << "side " << side;
+    }
+    EXPECT_NEAR(tip_end->position.norm(), tooth.tip_radius, 1e-12);
+    EXPECT_NEAR((tip_end->position - centre).norm(), rho, 1e-12);
+    EXPECT_LT(((tip_end->position - centre) / rho - sigma * tip_end->position.normalized()).norm(),
+              1e-9);
+    // On the involute, with its normal.
+    const double radius = junction.position.norm();
+    const double alpha_r = std::acos(r * std::cos(alpha) / radius);
+    const double psi = s / (2. * r) + sigma * (inv(alpha) - inv(alpha_r));
+    const double phi = std::atan2(junction.position.y(), junction.position.x());
+    EXPECT_NEAR(radius * std::abs(phi), radius * psi, 1e-9);
+    const double t = std::tan(alpha_r), side_sign = side;
+    const Eigen::Vector2d e_r(std::cos(phi), std::sin(phi)), e_t(-std::sin(phi), std::cos(phi));
+    const Eigen::Vector2d involute_normal =
+        (sigma * t * e_r + side_sign * e_t) / std::sqrt(1. + t * t);
+    EXPECT_LT((junction.normal - involute_normal).norm(), 1e-9) << "side " << side;
+    junction_radius = radius;
+  }
+  // No flank point beyond the junction.
+  for (const ProfilePoint& p : tooth.points)
+  {
+    if (p.segment == ProfileSegment::flank)
+    {
+      EXPECT_LE(sigma * (p.position.norm() - junction_radius), 1e-15);
+    }
+  }
+  return junction_radius;
+}
+} // namespace
+
+// The tip rounding (InvoluteToothSpec::tip_rounding_radius): tangent to flank and tip circle on
+// both flanks of an external and an internal tooth, its tip form diameter d_Fa equal to the
+// closed form kinematics::tip_form_diameter (kinematics/gear_pair.h), the top land what is left
+// between the arcs; refused where it does not fit.
+TEST(InvoluteTooth, TipRounding)
+{
+  InvoluteToothSpec pinion = split_path_pinion(); // standard tip 58.95 mm
+  InvoluteToothSpec ring = split_path_pinion();   // ring 72 of InternalRingCutByPinionTypeCutter
+  ring.teeth = 72;
+  ring.internal = true;
+  ring.cutter_teeth = 25;
+  ring.cutter_tip_radius = 0.2;
+  for (InvoluteToothSpec spec : {pinion, ring})
+    for (const double rho : {0.1e-3, 0.5e-3})
+    {
+      spec.tip_rounding_radius = rho;
+      const ToothProfile tooth = generate_involute_tooth(spec);
+      expect_consistent_outline(tooth);
+      EXPECT_LT(flank_deviation(tooth, spec), 1e-9);
+      const double junction = expect_tangent_rounding(tooth, spec);
+      EXPECT_NEAR(2. * tooth.tip_form_radius, 2. * junction, 1e-15);
+      EXPECT_NEAR(2. * tooth.tip_form_radius,
+                  kinematics::tip_form_diameter(2. * tooth.base_radius, 2. * tooth.tip_radius, rho,
+                                                spec.internal),
+                  1e-10)
+          << "internal " << spec.internal << " rho " << rho;
+      // The rounding shortens the flank: d_Fa below (external) / above (internal) d_a.
+      EXPECT_GT((spec.internal ? -1. : 1.) * (tooth.tip_radius - tooth.tip_form_radius), 0.);
+      // The top land is what the two arcs leave: shorter than the sharp tooth's.
+      InvoluteToothSpec sharp = spec;
+      sharp.tip_rounding_radius = 0.;
+      const ToothProfile sharp_tooth = generate_involute_tooth(sharp);
+      EXPECT_LT(tooth.tip_thickness, sharp_tooth.tip_thickness);
+      EXPECT_GT(tooth.tip_thickness, 0.);
+      EXPECT_EQ(sharp_tooth.tip_form_radius, sharp_tooth.tip_radius);
+    }
+  // A radius that consumes the whole top land (the sharp pinion's is 1.47 mm wide; 2 mm leave
+  // none, kinematics' closed form), a negative one.
+  pinion.tip_rounding_radius = 3e-3;
+  try
+  {
+    generate_involute_tooth(pinion);
+    ADD_FAILURE() << "a 3 mm rounding on a 1.47 mm land was accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_EQ(e.parameter(), "tooth.tip_rounding_radius");
+    EXPECT_NE(std::string(e.reason()).find("top land"), std::string::npos) << e.reason();
+  }
+  pinion.tip_rounding_radius = -1e-4;
+  EXPECT_THROW(generate_involute_tooth(pinion), InputError);
+}
+
+// With tip relief the arc is tangent to the relieved flank; a rounding that would reach below
+// the relief's start is refused.
+TEST(InvoluteTooth, TipRoundingOnTipRelief)
+{
+  InvoluteToothSpec spec = split_path_pinion();
+  spec.tip_relief_amount = 20e-6;
+  spec.tip_relief_start_diameter = 56e-3;
+  spec.tip_rounding_radius = 0.3e-3;
+  ProfileResolution fine;
+  fine.relief_points = 400;
+  const ToothProfile tooth = generate_involute_tooth(spec, fine);
+  expect_consistent_outline(tooth);
+  for (std::size_t i = 1; i < tooth.points.size(); ++i)
+  {
+    const ProfilePoint &a = tooth.points[i - 1], &b = tooth.points[i];
+    if (a.segment == ProfileSegment::tip_round && b.segment == ProfileSegment::relief)
+    {
+      // The relief curve's chord to the next point is normal to the arc's end normal within the
+      // chord's own turn (400 points over the relief: < 1e-3 rad).
+      const Eigen::Vector2d chord = (b.position - a.position).normalized();
+      EXPECT_LT(std::abs(chord.dot(a.normal)), 1e-3);
+      EXPECT_NEAR(a.position.norm(), tooth.tip_form_radius, 1e-15);
+    }
+  }
+  EXPECT_GT(tooth.tip_form_radius, 28e-3); // above the relief start (d 56 mm)
+  // d_Fa = 58.67 mm for ρ_a 0.3 mm on the 58.95 mm tip (kinematics::tip_form_diameter): a relief
+  // starting at 58.8 mm lies within the arc.
+  spec.tip_relief_start_diameter = 58.8e-3;
+  try
+  {
+    generate_involute_tooth(spec);
+    ADD_FAILURE() << "a rounding below the relief start was accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_EQ(e.parameter(), "tooth.tip_rounding_radius");
+    EXPECT_NE(std::string(e.reason()).find("tip relief start"), std::string::npos) << e.reason();
+  }
+}

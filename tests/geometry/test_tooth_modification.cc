@@ -247,3 +247,49 @@ TEST(ToothModification, BadInput)
   EXPECT_THROW(check_tooth_modifications(spec), InputError);
 }
 } // namespace
+
+// A rounded tip edge (InvoluteToothSpec::tip_rounding_radius) under tip relief: the flank ends
+// at d_Fa, so the relief is measured from there (FlankRollRange::tip) and removes C_a at the
+// junction; the arc and its end on the tip circle move by that C_a along the junction's normal
+// (the outline stays closed: the junction joins the relieved flank, 1e-15 m being rounding).
+TEST(ToothModification, TipRoundingMovesWithTheRelievedFlank)
+{
+  GearPairSceneSpec spec;
+  spec.pair.pinion.tip_rounding_radius = 0.5e-3;
+  spec.pair.wheel.tip_rounding_radius = 0.5e-3;
+  const Gear g = pinion(spec);
+  const double rb = g.tooth.base_radius;
+  EXPECT_NEAR(g.range.tip, std::sqrt(g.tooth.tip_form_radius * g.tooth.tip_form_radius - rb * rb),
+              1e-15);
+  EXPECT_NEAR(g.range.active_tip, g.range.tip, 1e-12); // E lies on the pinion's d_Fa
+  const double c = 10e-6;
+  const ToothProfile modified = modified_tooth(
+      g.tooth, {relief(ModificationKind::tip_relief, c, 1e-3)}, g.range, 1, "pinion");
+  ASSERT_EQ(modified.points.size(), g.tooth.points.size() + 2); // the relief starts on each side
+  std::size_t arc_points = 0;
+  for (std::size_t i = 0, k = 0; i < modified.points.size(); ++i)
+  {
+    const ProfilePoint& p = modified.points[i];
+    if (p.segment != ProfileSegment::tip_round)
+      continue;
+    // the same nominal point: the arc comes before any inserted kink on the +y side, after
+    // both on the −y side
+    while (g.tooth.points[k].segment != ProfileSegment::tip_round)
+      ++k;
+    const Eigen::Vector2d moved = g.tooth.points[k].position - p.position;
+    EXPECT_NEAR(moved.norm(), c, 1e-12);
+    ++k;
+    ++arc_points;
+    const bool junction = (i + 1 < modified.points.size() &&
+                           modified.points[i + 1].segment == ProfileSegment::relief) ||
+                          (i > 0 && modified.points[i - 1].segment == ProfileSegment::relief);
+    if (junction) // the relieved flank's own point at d_Fa lies there
+    {
+      EXPECT_NEAR(removed_depth({relief(ModificationKind::tip_relief, c, 1e-3)}, g.range,
+                                std::sqrt(g.tooth.points[k - 1].position.squaredNorm() - rb * rb),
+                                true),
+                  c, 1e-15);
+    }
+  }
+  EXPECT_EQ(arc_points, 2 * (ProfileResolution().rounding_points - 1));
+}

@@ -226,3 +226,60 @@ TEST(GearPair, RejectsBadInput)
   spec.wheel.tip_diameter = 144.5 * mm;
   EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(spec); }), "pinion.tip_diameter");
 }
+
+// A rounded tip edge (GearSpec::tip_rounding_radius, transverse): the path of contact ends at the
+// tip form circles d_Fa (ISO 21771; ISO 6336-1's active tip for a rounded tip, docs/references.md
+// §20). Hand computation for the split-path pair with standard tips (d_a 58.95/146.05 mm, r_b =
+// (z·m/2)·cos 20°, a_w 97.5 mm, α_wt 20°) and ρ_a = 0.5 mm on both (python, 2026-12-03):
+// ρ_Fa = ρ_a + √((r_a − ρ_a)² − r_b²), d_Fa = 2·√(r_b² + ρ_Fa²) gives d_Fa1 58.480847 mm,
+// d_Fa2 145.437315 mm, g_α = ρ_Fa1 + ρ_Fa2 − a_w·sin α_wt = 10.732339 mm, ε_α = g_α/(π·m·cos α)
+// = 1.454182 (sharp: 1.617953, the test above). Tolerance 1e-6 mm: the 7 printed digits.
+TEST(GearPair, TipRoundingShortensThePath)
+{
+  GearPairSpec spec = standard_tips(split_path_pair());
+  spec.pinion.tip_rounding_radius = spec.wheel.tip_rounding_radius = 0.5 * mm;
+  const GearPairGeometry pair = compute_gear_pair(spec);
+  EXPECT_NEAR(pair.pinion.tip_form_diameter, 58.480847 * mm, 1e-6 * mm);
+  EXPECT_NEAR(pair.wheel.tip_form_diameter, 145.437315 * mm, 1e-6 * mm);
+  EXPECT_NEAR(pair.pinion.tip_diameter, 58.95 * mm, 1e-12); // d_a stays
+  EXPECT_NEAR(pair.path_of_contact, 10.732339 * mm, 1e-6 * mm);
+  EXPECT_NEAR(pair.transverse_contact_ratio, 1.454182, 1e-6);
+  // E and A are where the tip form circles cross the line of action.
+  const double rb1 = 0.5 * pair.pinion.base_diameter, rb2 = 0.5 * pair.wheel.base_diameter;
+  const double rfa1 = 0.5 * pair.pinion.tip_form_diameter;
+  const double rfa2 = 0.5 * pair.wheel.tip_form_diameter;
+  EXPECT_NEAR(pair.contact_end, std::sqrt(rfa1 * rfa1 - rb1 * rb1), 1e-12);
+  EXPECT_NEAR(pair.line_of_action_length - pair.contact_start, std::sqrt(rfa2 * rfa2 - rb2 * rb2),
+              1e-12);
+  // The mate's start of active profile follows: the wheel's d_Nf from E.
+  const double t2_e = pair.line_of_action_length - pair.contact_end;
+  EXPECT_NEAR(pair.wheel.active_profile_start, 2. * std::sqrt(rb2 * rb2 + t2_e * t2_e), 1e-12);
+  // Sharp edges: d_Fa = d_a, every quantity as before.
+  const GearPairGeometry sharp = compute_gear_pair(standard_tips(split_path_pair()));
+  EXPECT_EQ(sharp.pinion.tip_form_diameter, sharp.pinion.tip_diameter);
+  EXPECT_EQ(sharp.wheel.tip_form_diameter, sharp.wheel.tip_diameter);
+  EXPECT_EQ(tip_form_diameter(60. * mm, 66. * mm, 0., false), 66. * mm);
+
+  // Internal: the ring's tip circle is the inner one, its d_Fa lies outside it.
+  GearPairSpec ring = internal_24_69_pair();
+  ring.wheel.tip_diameter = (69. * 2.5 - 2. * 2.5 * 0.5) * mm; // as InternalPair above
+  const GearPairGeometry ring_sharp = compute_gear_pair(ring);
+  ring.wheel.tip_rounding_radius = 0.3 * mm;
+  const GearPairGeometry ring_round = compute_gear_pair(ring);
+  const double rb = 0.5 * ring_round.wheel.base_diameter, ra = 0.5 * ring_round.wheel.tip_diameter;
+  const double roll = -0.3 * mm + std::sqrt((ra + 0.3 * mm) * (ra + 0.3 * mm) - rb * rb);
+  EXPECT_NEAR(ring_round.wheel.tip_form_diameter, 2. * std::sqrt(rb * rb + roll * roll), 1e-12);
+  EXPECT_GT(ring_round.wheel.tip_form_diameter, ring_round.wheel.tip_diameter);
+  EXPECT_LT(ring_round.transverse_contact_ratio, ring_sharp.transverse_contact_ratio);
+  EXPECT_NEAR(ring_round.contact_end, ring_sharp.contact_end, 1e-15); // the pinion's E stays
+
+  // Radii that do not fit name the parameter: negative, consuming the whole top land, beyond
+  // the tip's height above the base circle.
+  for (const double bad : {-0.1, 3., 10.})
+  {
+    GearPairSpec s = standard_tips(split_path_pair());
+    s.pinion.tip_rounding_radius = bad * mm;
+    EXPECT_EQ(input_error_parameter([&] { compute_gear_pair(s); }), "pinion.tip_rounding_radius")
+        << bad;
+  }
+}
