@@ -268,14 +268,23 @@ void add_stiffness_sweep_table(Report& report, const stiffness::StiffnessSweepRe
                    r.total_time,
                    double(sweep.rank_of_position[i])});
   }
-  if (!edges.empty())
-    report.add_text(name + " tip edge contact",
-                    "positions " + edges +
-                        ": the largest pressure acts at a tip corner (within one contact cell "
-                        "of the wheel's tip A by column max_pressure_wheel_roll or of the "
-                        "pinion's tip E by max_pressure_roll; across the face: "
-                        "max_pressure_face); there max_pressure is an edge pressure that grows "
-                        "with refinement, not a Hertz pressure (column tip_edge_contact)");
+  if (edges.empty())
+    return;
+  // A rounded tip ends its involute at d_Fa in a smooth arc: a peak there is the arc's contact,
+  // resolved only when the radius spans several contact cells, not a corner's singularity.
+  const bool rounded =
+      pair.spec.pinion.tip_rounding_radius > 0. || pair.spec.wheel.tip_rounding_radius > 0.;
+  report.add_text(
+      name + " tip edge contact",
+      "positions " + edges +
+          ": the largest pressure acts at the end of an involute (within one contact cell of the "
+          "wheel's A by column max_pressure_wheel_roll or of the pinion's E by max_pressure_roll; "
+          "across the face: max_pressure_face): " +
+          (rounded ? "at a sharp tip a corner, whose edge pressure grows with refinement; at a "
+                     "rounded tip the rounding's contact, resolved only if its radius spans "
+                     "several contact cells (column tip_edge_contact)"
+                   : "a tip corner; there max_pressure is an edge pressure that grows with "
+                     "refinement, not a Hertz pressure (column tip_edge_contact)"));
 }
 
 void add_torque_tables(Report& report, const stiffness::StiffnessSweepResult& sweep,
