@@ -394,7 +394,7 @@ private:
   fem::ElasticSystem<dim> elastic;
   std::vector<Support> supports;
   std::vector<Pair> pairs;
-  SurfaceGeometry<dim> surface_geometry; // empty: the mesh is the geometry
+  SurfaceGeometry<dim> surface_geometry;  // empty: the mesh is the geometry
   dealii::Vector<double> displacement;    // m, complete
   dealii::Vector<double> step_start;      // m, converged solution of the previous step
   dealii::Vector<double> residual_forces; // N, r = K u − f of the converged solution

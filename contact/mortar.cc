@@ -195,8 +195,9 @@ struct MortarIntegrals
   }
 
   // One slave quadrature point paired with the master point x̄ on master face `m`: D, the
-  // offset and M_sm of every slave node of the face. `position` and `master_exact` are the points the two meshed surfaces stand for (the mesh's
-  // own without a SurfaceGeometry); `master_point` locates x̄ on the meshed master face.
+  // offset and M_sm of every slave node of the face. `position` and `master_exact` are the points
+  // the two meshed surfaces stand for (the mesh's own without a SurfaceGeometry); `master_point`
+  // locates x̄ on the meshed master face.
   void add_pairing(const std::vector<fem::Node<dim>>& slave_nodes, const std::vector<double>& phi,
                    double JxW, const Point<dim>& position, unsigned int m,
                    const Point<dim>& master_point, const Point<dim>& master_exact)

@@ -18,9 +18,9 @@
 #include "fem/elastic_system.h"
 
 #include <cmath>
-#include <functional>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <functional>
 #include <vector>
 
 namespace gearstiff::contact

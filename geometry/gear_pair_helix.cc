@@ -201,7 +201,6 @@ double nearest_roll(const kinematics::GearPairGeometry& pair, double reference, 
   return inside - at;
 }
 
-
 std::vector<ContactLine> contact_lines(const kinematics::GearPairGeometry& pair,
                                        const LineOfAction& line, double reference,
                                        const std::vector<int>& pairs)

@@ -38,12 +38,14 @@ double wheel_axis_x(const kinematics::GearPairGeometry& pair)
   return pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
 }
 
-// A helical pair's flanks as the contact sees them: on their involute helicoids, not on the
-// chords the hexahedra's edges draw between two layers (BodyTwist::on_helix). Those chords lie
+// A helical pair's flanks on their involute helicoids (Mesh/helical flanks = helicoid), not on
+// the chords the hexahedra's edges draw between two layers (BodyTwist::on_helix). The chords lie
 // inside each body by r·Δφ²/8 at mid-layer — 0.4 µm normal to the pinion's flank at 13 layers on
 // the built-in pair at 15° —, a gap that opens along every contact line between the layer planes
-// and made k rise with the layers (docs/helical.md "Mesh convergence"). The layer planes are the
-// distinct z of the mesh's vertices (the lead modifications move nodes in-plane only).
+// and makes k rise with the layers; on the helicoids the dual mortar's own error is left, of the
+// other sign, and both extrapolate to one limit (docs/helical.md "Layers and the helicoids").
+// The layer planes are the distinct z of the mesh's vertices (lead modifications move nodes
+// in-plane only).
 template <int dim>
 contact::SurfaceGeometry<dim> helical_flanks(const kinematics::GearPairGeometry& pair,
                                              const Triangulation<dim>& tria)
@@ -405,7 +407,8 @@ void GearMeshStiffness<dim>::setup_problem()
       mpi_communicator, settings.elasticity, settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
   fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
-  problem->set_surface_geometry(helical_flanks(pair, tria));
+  if (settings.helicoid_flanks)
+    problem->set_surface_geometry(helical_flanks(pair, tria));
   problem->system().set_materials({{geometry::scene_ids::pinion_body, settings.material},
                                    {geometry::scene_ids::wheel_body, settings.material}},
                                   "material");

@@ -146,7 +146,6 @@ TEST(MortarWindow, SurfaceGeometryMovesTheGapOnly)
     ASSERT_EQ(exact[i].masters.size(), meshed[i].masters.size());
     for (std::size_t m = 0; m < meshed[i].masters.size(); ++m)
       EXPECT_EQ(exact[i].masters[m].weight, meshed[i].masters[m].weight);
-    EXPECT_NEAR(exact[i].initial_gap - meshed[i].initial_gap, -delta * meshed[i].normal[1],
-                1e-18);
+    EXPECT_NEAR(exact[i].initial_gap - meshed[i].initial_gap, -delta * meshed[i].normal[1], 1e-18);
   }
 }

@@ -270,8 +270,7 @@ TEST(HelicalScene, FlanksBetweenLayersAreTurnedBackOntoTheirHelicoids)
   // Two nodes of a flank face in the section and the layer planes of 4 layers.
   const Eigen::Vector2d p_a(0.5e-3, 27.0e-3), p_b(1.2e-3, 28.5e-3);
   const double layer = pair.common_face_width / 4., z_k = layer, z_k1 = 2. * layer;
-  const auto node = [&](const Eigen::Vector2d& p, double z)
-  { return pinion.turned(p, z); };
+  const auto node = [&](const Eigen::Vector2d& p, double z) { return pinion.turned(p, z); };
   double largest_chord_error = 0.;
   for (const double s : {0., 0.3, 1.})
     for (const double t : {0., 0.25, 0.5, 0.9, 1.})
