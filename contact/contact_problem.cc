@@ -138,9 +138,9 @@ void ContactProblem<dim>::couple_pairs()
           throw InputError(pair.name, "the slave and master surfaces share boundary id " +
                                           std::to_string(id) +
                                           ": a surface cannot be its own contact partner");
-      std::vector<SlaveNode<dim>> coupled =
-          mortar_coupling(elastic.get_dof_handler(), pair.slave, pair.master,
-                          parameters.search_distance, elastic.depth(), pair.window);
+      std::vector<SlaveNode<dim>> coupled = mortar_coupling(
+          elastic.get_dof_handler(), pair.slave, pair.master, parameters.search_distance,
+          elastic.depth(), pair.window, surface_geometry);
       pair.nodes.clear();
       for (auto& node : coupled)
         if (!held.is_constrained(node.node.dofs[normal_component(node.normal)]))

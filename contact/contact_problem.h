@@ -222,6 +222,9 @@ public:
   // turned frame.
   void roll(const std::vector<BodyRotation<dim>>& rotations);
   void clear_contact_pairs() { pairs.clear(); }
+  // The exact surfaces of the bodies (contact/mortar.h, SurfaceGeometry), e.g. a helical gear's
+  // flanks on their helicoids; before setup_system() or roll(). Empty (the default): the mesh.
+  void set_surface_geometry(SurfaceGeometry<dim> exact) { surface_geometry = std::move(exact); }
   // After a solve: whether every closed node of a pair paired in a window lies within half the
   // window's radius of its centre. When not, the contact may reach nodes the window left out:
   // the caller pairs the whole surfaces again.
@@ -391,6 +394,7 @@ private:
   fem::ElasticSystem<dim> elastic;
   std::vector<Support> supports;
   std::vector<Pair> pairs;
+  SurfaceGeometry<dim> surface_geometry;  // empty: the mesh is the geometry
   dealii::Vector<double> displacement;    // m, complete
   dealii::Vector<double> step_start;      // m, converged solution of the previous step
   dealii::Vector<double> residual_forces; // N, r = K u − f of the converged solution

@@ -195,10 +195,12 @@ struct MortarIntegrals
   }
 
   // One slave quadrature point paired with the master point x̄ on master face `m`: D, the
-  // offset and M_sm of every slave node of the face.
+  // offset and M_sm of every slave node of the face. `position` and `master_exact` are the points
+  // the two meshed surfaces stand for (the mesh's own without a SurfaceGeometry); `master_point`
+  // locates x̄ on the meshed master face.
   void add_pairing(const std::vector<fem::Node<dim>>& slave_nodes, const std::vector<double>& phi,
                    double JxW, const Point<dim>& position, unsigned int m,
-                   const Point<dim>& master_point)
+                   const Point<dim>& master_point, const Point<dim>& master_exact)
   {
     const SurfaceFace<dim>& master = masters[m];
     const FiniteElement<dim>& base = master.cell->get_fe().base_element(0);
@@ -208,7 +210,7 @@ struct MortarIntegrals
       NodeAccumulator& acc = accumulators[slave_nodes[i].dofs[0]];
       acc.paired_weight += phi[i] * JxW;
       for (unsigned int c = 0; c < dim; ++c)
-        acc.offset[c] += phi[i] * (master_point[c] - position[c]) * JxW;
+        acc.offset[c] += phi[i] * (master_exact[c] - position[c]) * JxW;
     }
     auto& [indices, face] = master_nodes[m];
     if (face.empty())
@@ -269,7 +271,8 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
                                             const std::vector<types::boundary_id>& slave_ids,
                                             const std::vector<types::boundary_id>& master_ids,
                                             double search_distance, double depth,
-                                            const PairingWindow<dim>& window)
+                                            const PairingWindow<dim>& window,
+                                            const SurfaceGeometry<dim>& geometry)
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   std::vector<SurfaceFace<dim>> slaves = collect_faces(dof_handler, slave_ids);
@@ -317,8 +320,14 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
                                       search_distance, master_point);
       if (!best.found || best.beyond_surface || best.distance > search_distance)
         continue;
-      integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q], values.positions[q],
-                            best.face, master_point);
+      if (geometry)
+        integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q],
+                              geometry(values.positions[q], slave.cell->material_id()), best.face,
+                              master_point,
+                              geometry(master_point, masters[best.face].cell->material_id()));
+      else
+        integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q], values.positions[q],
+                              best.face, master_point, master_point);
     }
   }
 
@@ -336,9 +345,11 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
 template std::vector<SlaveNode<2>> mortar_coupling(const DoFHandler<2>&,
                                                    const std::vector<types::boundary_id>&,
                                                    const std::vector<types::boundary_id>&, double,
-                                                   double, const PairingWindow<2>&);
+                                                   double, const PairingWindow<2>&,
+                                                   const SurfaceGeometry<2>&);
 template std::vector<SlaveNode<3>> mortar_coupling(const DoFHandler<3>&,
                                                    const std::vector<types::boundary_id>&,
                                                    const std::vector<types::boundary_id>&, double,
-                                                   double, const PairingWindow<3>&);
+                                                   double, const PairingWindow<3>&,
+                                                   const SurfaceGeometry<3>&);
 } // namespace gearstiff::contact

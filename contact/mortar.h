@@ -20,10 +20,20 @@
 #include <cmath>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <functional>
 #include <vector>
 
 namespace gearstiff::contact
 {
+// The exact surfaces the meshed (MappingQ1) ones stand for: the point a point of a body's
+// trilinear geometry represents, by the material id of its cell. The gap g_s and the offset are
+// integrated between these points, so a faceted or chorded surface (a twisted hexahedron's edge
+// between two layers is a chord of its helix) does not open or close the contact by its own
+// error. Empty: the mesh is the geometry.
+template <int dim>
+using SurfaceGeometry =
+    std::function<dealii::Point<dim>(const dealii::Point<dim>&, dealii::types::material_id)>;
+
 template <int dim>
 struct MortarMaster
 {
@@ -50,6 +60,7 @@ struct SlaveNode
 
 // Couples every slave node whose dual support projects onto the master surface within
 // `search_distance` (m). `depth` is the 2D thickness (1 in 3D). Identical on every rank.
+// `geometry` (optional) corrects the gap and offset for the meshed surfaces' own error.
 // With a window, only the slave faces whose centres lie within its radius are paired, and a
 // slave node is coupled only when all of its faces are: every coupled node gets exactly the
 // mortar data (bit for bit) the whole surfaces would give it — the master faces kept reach far
@@ -60,5 +71,6 @@ std::vector<SlaveNode<dim>>
 mortar_coupling(const dealii::DoFHandler<dim>& dof_handler,
                 const std::vector<dealii::types::boundary_id>& slave_boundaries,
                 const std::vector<dealii::types::boundary_id>& master_boundaries,
-                double search_distance, double depth, const PairingWindow<dim>& window = {});
+                double search_distance, double depth, const PairingWindow<dim>& window = {},
+                const SurfaceGeometry<dim>& geometry = {});
 } // namespace gearstiff::contact

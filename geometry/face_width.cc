@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <gmsh.h>
 #include <limits>
 #include <optional>
@@ -40,6 +41,19 @@ Eigen::Vector2d BodyTwist::turned(const Eigen::Vector2d& point, const double z) 
 Eigen::Vector2d BodyTwist::untwisted(const Eigen::Vector2d& point, const double z) const
 {
   return axis + Eigen::Rotation2Dd(-angle(z)) * (point - axis);
+}
+
+Eigen::Vector3d BodyTwist::on_helix(const Eigen::Vector3d& x, const double z_below,
+                                    const double z_above) const
+{
+  const double height = z_above - z_below;
+  if (!(height > 0.) || rate == 0.)
+    return x;
+  const double t = std::clamp((x.z() - z_below) / height, 0., 1.);
+  const std::complex<double> chord = (1. - t) + t * std::polar(1., angle(z_above) - angle(z_below));
+  const double turn = angle(x.z()) - angle(z_below) - std::arg(chord);
+  const Eigen::Vector2d section = Eigen::Rotation2Dd(turn) * (x.head<2>() - axis) / std::abs(chord);
+  return {axis.x() + section.x(), axis.y() + section.y(), x.z()};
 }
 
 namespace detail

@@ -93,6 +93,23 @@ SceneMeshSettings helical_mesh_defaults(const SceneMeshSettings& spur,
   return helical;
 }
 
+std::map<int, BodyTwist> gear_pair_twists(const kinematics::GearPairGeometry& pair)
+{
+  if (!detail::is_helical_pair(pair))
+    return {};
+  const double rate = detail::contact_shift_rate(pair);
+  const double r_b1 = 0.5 * std::abs(pair.pinion.base_diameter);
+  const double r_b2 = 0.5 * std::abs(pair.wheel.base_diameter);
+  const bool ring = pair.spec.wheel.internal;
+  // The scene's placement (gear_pair_placement.cc): the pinion at the origin, the wheel's
+  // centre on the x axis, beyond the pitch point (external) or behind the pinion's (ring).
+  const Eigen::Vector2d pinion_centre(0., 0.);
+  const Eigen::Vector2d wheel_centre(ring ? -pair.centre_distance : pair.centre_distance, 0.);
+  const double z0 = detail::model_section(pair);
+  return {{scene_ids::pinion_body, {pinion_centre, rate / r_b1, z0}},
+          {scene_ids::wheel_body, {wheel_centre, (ring ? 1. : -1.) * rate / r_b2, z0}}};
+}
+
 namespace detail
 {
 void check_helical_scene(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair)
@@ -182,20 +199,6 @@ double nearest_roll(const kinematics::GearPairGeometry& pair, double reference, 
   const double at = reference + j * pair.transverse_base_pitch;
   const double inside = std::clamp(at, pair.contact_start + margin, pair.contact_end - margin);
   return inside - at;
-}
-
-std::map<int, BodyTwist> gear_twists(const kinematics::GearPairGeometry& pair,
-                                     const PlacedGears& gears)
-{
-  if (!is_helical_pair(pair))
-    return {};
-  const double rate = contact_shift_rate(pair);
-  const double r_b1 = 0.5 * std::abs(pair.pinion.base_diameter);
-  const double r_b2 = 0.5 * std::abs(pair.wheel.base_diameter);
-  const double wheel_sense = gears.wheel.internal ? 1. : -1.;
-  return {{scene_ids::pinion_body, {gears.pinion_centre, rate / r_b1, model_section(pair)}},
-          {scene_ids::wheel_body,
-           {gears.wheel_centre, wheel_sense * rate / r_b2, model_section(pair)}}};
 }
 
 std::vector<ContactLine> contact_lines(const kinematics::GearPairGeometry& pair,

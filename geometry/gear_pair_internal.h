@@ -106,9 +106,6 @@ std::vector<int> pairs_across_face(const kinematics::GearPairGeometry& pair, dou
 // m, the roll from the model section to the section where pair j lies nearest to `reference`
 // inside the path of contact (0 when it is in contact there).
 double nearest_roll(const kinematics::GearPairGeometry& pair, double reference, int j);
-// The twist of both gears (PlanarModel::twist); empty for spur.
-std::map<int, BodyTwist> gear_twists(const kinematics::GearPairGeometry& pair,
-                                     const PlacedGears& gears);
 std::vector<ContactLine> contact_lines(const kinematics::GearPairGeometry& pair,
                                        const LineOfAction& line, double reference,
                                        const std::vector<int>& pairs);

@@ -86,6 +86,12 @@ struct BodyTwist
   double angle(double z) const { return rate * (z - origin); }             // rad
   Eigen::Vector2d turned(const Eigen::Vector2d& point, double z) const;    // m
   Eigen::Vector2d untwisted(const Eigen::Vector2d& point, double z) const; // m, the inverse
+  // m, the point of the twisted body that a point x of its meshed geometry stands for, x lying
+  // between the layer planes z_below and z_above. A hexahedron's edge between two layers is the
+  // chord of its nodes' helix: a trilinear point is the section point q turned by the blend
+  // (1 − t)·R(φ_below) + t·R(φ_above) = ρ·R(φ_below + ψ), which lies inside the helicoid by
+  // r·(1 − ρ) (r·Δφ²/8 at mid-layer). This returns R(φ(z))·q, on the helicoid.
+  Eigen::Vector3d on_helix(const Eigen::Vector3d& x, double z_below, double z_above) const;
 };
 
 struct PlanarBody

@@ -210,7 +210,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& requested, const st
   PlanarModel model = gear_pair_model(spec, gears, scene, windows, pair.common_face_width);
   model.node_offset = lead_offsets(spec, pair, gears);
   if (spec.mesh.dimension == 3)
-    model.twist = gear_twists(pair, gears);
+    model.twist = gear_pair_twists(pair);
   mesh_gear_pair(spec, pair, gears, windows, model, contacts, file, scene);
   describe_scene(spec, pair, line, gears, scene);
   scene.info.time_total =

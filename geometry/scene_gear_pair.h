@@ -198,6 +198,10 @@ unsigned int layers_for_twist(const kinematics::GearPairGeometry& pair);
 // a spur pair. docs/helical.md "Default mesh".
 SceneMeshSettings helical_mesh_defaults(const SceneMeshSettings& spur,
                                         const kinematics::GearPairGeometry& pair);
+// The twist of both gears along the face (PlanarModel::twist, by material id: the pinion and
+// the wheel body) in the frame of the written scene; empty for a spur pair. The solvers need it
+// to put the meshed flanks back on their helicoids (BodyTwist::on_helix).
+std::map<int, BodyTwist> gear_pair_twists(const kinematics::GearPairGeometry& pair);
 
 // The roll-length ranges of the pinion (wheel = false) or the wheel flank against its mate
 // (geometry/tooth_modification.h), from the pair and the generated tooth.

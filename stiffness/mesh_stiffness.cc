@@ -38,6 +38,47 @@ double wheel_axis_x(const kinematics::GearPairGeometry& pair)
   return pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance;
 }
 
+// A helical pair's flanks on their involute helicoids (Mesh/helical flanks = helicoid), not on
+// the chords the hexahedra's edges draw between two layers (BodyTwist::on_helix). The chords lie
+// inside each body by r·Δφ²/8 at mid-layer — 0.4 µm normal to the pinion's flank at 13 layers on
+// the built-in pair at 15° —, a gap that opens along every contact line between the layer planes
+// and makes k rise with the layers; on the helicoids the dual mortar's own error is left, of the
+// other sign, and both extrapolate to one limit (docs/helical.md "Layers and the helicoids").
+// The layer planes are the distinct z of the mesh's vertices (lead modifications move nodes
+// in-plane only).
+template <int dim>
+contact::SurfaceGeometry<dim> helical_flanks(const kinematics::GearPairGeometry& pair,
+                                             const Triangulation<dim>& tria)
+{
+  if constexpr (dim == 2)
+    return {};
+  else
+  {
+    const std::map<int, geometry::BodyTwist> twists = geometry::gear_pair_twists(pair);
+    if (twists.empty())
+      return {};
+    std::vector<double> planes;
+    for (const Point<dim>& v : tria.get_vertices())
+      planes.push_back(v[dim - 1]);
+    std::sort(planes.begin(), planes.end());
+    const double tolerance = 1e-9 * pair.common_face_width;
+    planes.erase(std::unique(planes.begin(), planes.end(),
+                             [tolerance](double a, double b) { return b - a < tolerance; }),
+                 planes.end());
+    return [twists, planes](const Point<dim>& p, const types::material_id material) -> Point<dim>
+    {
+      const auto twist = twists.find(material);
+      if (twist == twists.end() || planes.size() < 2)
+        return p;
+      const auto above = std::clamp(std::upper_bound(planes.begin(), planes.end(), p[dim - 1]),
+                                    planes.begin() + 1, planes.end() - 1);
+      const Eigen::Vector3d x =
+          twist->second.on_helix({p[0], p[1], p[dim - 1]}, *(above - 1), *above);
+      return Point<dim>(x.x(), x.y(), x.z());
+    };
+  }
+}
+
 template <int dim>
 double polar_radius(const Point<dim>& p, double centre_x)
 {
@@ -366,6 +407,8 @@ void GearMeshStiffness<dim>::setup_problem()
       mpi_communicator, settings.elasticity, settings.linear_solver, settings.contact);
   Triangulation<dim>& tria = problem->system().triangulation();
   fem::read_msh<dim>(settings.scene_file, 1., tria, "scene file");
+  if (settings.helicoid_flanks)
+    problem->set_surface_geometry(helical_flanks(pair, tria));
   problem->system().set_materials({{geometry::scene_ids::pinion_body, settings.material},
                                    {geometry::scene_ids::wheel_body, settings.material}},
                                   "material");

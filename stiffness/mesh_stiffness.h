@@ -60,6 +60,11 @@ struct GearMeshStiffnessSettings
   ContactModel contact_model = ContactModel::finite_element;
   // -, influence coefficients: grid points per flank over the path of contact (docs/ltca.md §2)
   unsigned int influence_grid_points = 64;
+  // Helical pairs (Mesh/helical flanks): the contact measures its gaps between the meshed
+  // surfaces, whose edges between two layers are chords of the helices (false, the default: the
+  // model CalculiX solves on the exported deck), or between the flanks' involute helicoids
+  // (true). docs/helical.md "Layers and the helicoids".
+  bool helicoid_flanks = false;
   double pinion_torque = 49.4; // N·m, T1 > 0 drives the pinion counter-clockwise
   // N·m, ascending: a sweep solves every position under each (GearMeshStiffness::run_torques);
   // empty: pinion_torque alone.

@@ -35,6 +35,15 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   // The sector cut faces are left free by the stiffness analysis.
   declare_gear_scene_parameters(prm, scene, true);
   declare_scene_mesh_parameters(prm, scene.mesh, true);
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("helical flanks", "chords", Selection("chords|helicoid"),
+                    "what a helical pair's contact measures its gaps between [-]: chords = the "
+                    "meshed surfaces, whose hexahedron edges between two layers are chords of "
+                    "the helices, up to r·Δφ²/8 inside (the model CalculiX solves on the "
+                    "exported deck); helicoid = the flanks' involute helicoids. Their errors in "
+                    "the layers have opposite signs and both fall as the layer height squared "
+                    "(docs/helical.md \"Layers and the helicoids\")");
+  prm.leave_subsection();
 
   declare_fe_contact_parameters(prm);
   prm.enter_subsection("Finite elements");
@@ -422,6 +431,9 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
   s.scene.mesh =
       parse_scene_mesh_parameters(prm, gear_pair_mesh_defaults(s.scene.mesh, s.scene.pair),
                                   mesh_module_scale(s.scene.pair), &p.derived_sizes);
+  prm.enter_subsection("Mesh");
+  s.helicoid_flanks = prm.get("helical flanks") == "helicoid";
+  prm.leave_subsection();
   parse_fe_contact_parameters(prm, s.elasticity, s.linear_solver, s.contact);
 
   prm.enter_subsection("Stiffness");

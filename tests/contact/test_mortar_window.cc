@@ -117,3 +117,35 @@ TEST(MortarWindow, CouplesTheWholeSurfacesNodesInsideUnchanged)
     }
   EXPECT_GT(inside, 5u);
 }
+
+// A SurfaceGeometry changes what the gap is measured between, nothing else: with the lower
+// body's exact surface δ below its mesh, every node keeps its pairing, normal and master weights
+// bit for bit and its gap grows by δ·(−n_y) (the slave normal points down, out of the upper
+// block) — the gap integrated between the exact points.
+TEST(MortarWindow, SurfaceGeometryMovesTheGapOnly)
+{
+  Triangulation<2> tria;
+  make_bent_blocks(tria);
+  const FESystem<2> fe(FE_Q<2>(2), 2);
+  DoFHandler<2> dof_handler(tria);
+  dof_handler.distribute_dofs(fe);
+  const double search_distance = 0.03e-3, depth = 1e-3, delta = 0.5e-6; // m
+  const std::vector<SlaveNode<2>> meshed =
+      mortar_coupling<2>(dof_handler, {1}, {4}, search_distance, depth);
+  const SurfaceGeometry<2> lowered = [delta](const Point<2>& p, types::material_id body)
+  { return body == 4 ? Point<2>(p[0], p[1] - delta) : p; };
+  const std::vector<SlaveNode<2>> exact =
+      mortar_coupling<2>(dof_handler, {1}, {4}, search_distance, depth, {}, lowered);
+  ASSERT_GT(meshed.size(), 10u);
+  ASSERT_EQ(exact.size(), meshed.size());
+  for (std::size_t i = 0; i < meshed.size(); ++i)
+  {
+    EXPECT_EQ(exact[i].node.dofs[0], meshed[i].node.dofs[0]);
+    EXPECT_EQ(exact[i].normal, meshed[i].normal);
+    EXPECT_EQ(exact[i].area, meshed[i].area);
+    ASSERT_EQ(exact[i].masters.size(), meshed[i].masters.size());
+    for (std::size_t m = 0; m < meshed[i].masters.size(); ++m)
+      EXPECT_EQ(exact[i].masters[m].weight, meshed[i].masters[m].weight);
+    EXPECT_NEAR(exact[i].initial_gap - meshed[i].initial_gap, -delta * meshed[i].normal[1], 1e-18);
+  }
+}

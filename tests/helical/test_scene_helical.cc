@@ -6,9 +6,11 @@
 #include "geometry/scene_gear_pair.h"
 #include "kinematics/gear_pair.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <map>
 #include <string>
 
 namespace
@@ -243,3 +245,47 @@ TEST(HelicalScene, ModificationsAreConvertedToTheTransverseSection)
   EXPECT_EQ(transverse_section_spec(helical_spec(0.)).pinion_modifications.all_teeth.size(), 0u);
 }
 } // namespace
+
+// The hexahedra of a twisted body have straight edges between two layers: the trilinear point
+// of a lateral face is the section point q turned by (1 − t)·R(φ_k) + t·R(φ_k+1), a chord of
+// q's helix. BodyTwist::on_helix returns R(φ(z))·q, the point of the helicoid it stands for —
+// exactly (to round-off) for every point of such a face, and the nodes themselves unchanged.
+// The twists are the scene's: the pinion turned forward by tan β_b/r_b1 per metre of face, the
+// external wheel backward by r_b1/r_b2 as much, both about their axes, the same at z = b/2.
+TEST(HelicalScene, FlanksBetweenLayersAreTurnedBackOntoTheirHelicoids)
+{
+  const GearPairSceneSpec spec = helical_spec(15.);
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(spec.pair);
+  const std::map<int, BodyTwist> twists = gear_pair_twists(pair);
+  ASSERT_EQ(twists.size(), 2u);
+  const BodyTwist& pinion = twists.at(scene_ids::pinion_body);
+  const BodyTwist& wheel = twists.at(scene_ids::wheel_body);
+  const double r_b1 = 0.5 * pair.pinion.base_diameter, r_b2 = 0.5 * pair.wheel.base_diameter;
+  EXPECT_NEAR(pinion.rate, std::tan(pair.base_helix_angle) / r_b1, 1e-12);
+  EXPECT_NEAR(wheel.rate, -pinion.rate * r_b1 / r_b2, 1e-12);
+  EXPECT_NEAR(wheel.axis.x(), pair.centre_distance, 1e-15);
+  EXPECT_EQ(pinion.origin, 0.5 * pair.common_face_width);
+  EXPECT_TRUE(gear_pair_twists(kinematics::compute_gear_pair(helical_spec(0.).pair)).empty());
+
+  // Two nodes of a flank face in the section and the layer planes of 4 layers.
+  const Eigen::Vector2d p_a(0.5e-3, 27.0e-3), p_b(1.2e-3, 28.5e-3);
+  const double layer = pair.common_face_width / 4., z_k = layer, z_k1 = 2. * layer;
+  const auto node = [&](const Eigen::Vector2d& p, double z) { return pinion.turned(p, z); };
+  double largest_chord_error = 0.;
+  for (const double s : {0., 0.3, 1.})
+    for (const double t : {0., 0.25, 0.5, 0.9, 1.})
+    {
+      const Eigen::Vector2d meshed = (1. - s) * (1. - t) * node(p_a, z_k) +
+                                     s * (1. - t) * node(p_b, z_k) +
+                                     (1. - s) * t * node(p_a, z_k1) + s * t * node(p_b, z_k1);
+      const double z = (1. - t) * z_k + t * z_k1;
+      const Eigen::Vector2d exact = pinion.turned((1. - s) * p_a + s * p_b, z);
+      const Eigen::Vector3d back = pinion.on_helix({meshed.x(), meshed.y(), z}, z_k, z_k1);
+      EXPECT_NEAR((back.head<2>() - exact).norm(), 0., 1e-15) << "s " << s << " t " << t;
+      EXPECT_EQ(back.z(), z);
+      largest_chord_error = std::max(largest_chord_error, (meshed - exact).norm());
+    }
+  // The chord's error the correction removes: r·Δφ²/8 at mid-layer (r ≈ 28 mm, Δφ = rate·b/4).
+  const double dphi = pinion.rate * layer;
+  EXPECT_NEAR(largest_chord_error, 28.5e-3 * dphi * dphi / 8., 0.1 * 28.5e-3 * dphi * dphi / 8.);
+}

@@ -71,8 +71,10 @@ r_b1 = 1e-3 * value(pair, "pinion_base_radius")
 
 
 def gearstiff_k(position, fault=()):
+    # The deck's model: its hexahedra's own faces, chords of the helices between the layers (the
+    # default, stated: `helicoid` would measure the gaps between the helicoids, docs/helical.md).
     report = run_json(gearstiff, "stiffness", PAIR + MESH + list(fault) + [
-        f"Stiffness/mode={position}",
+        f"Stiffness/mode={position}", "Mesh/helical flanks=chords",
         "Finite elements/Element degree=1", "Contact/Friction coefficient=0",
         "Stiffness/published reference=false"], ["--quiet"])
     return value(report, "mesh_stiffness"), report["values"].get("loaded_pairs", {}).get("value")
