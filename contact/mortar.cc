@@ -320,14 +320,12 @@ std::vector<SlaveNode<dim>> mortar_coupling(const DoFHandler<dim>& dof_handler,
                                       search_distance, master_point);
       if (!best.found || best.beyond_surface || best.distance > search_distance)
         continue;
-      if (geometry)
-        integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q],
-                              geometry(values.positions[q], slave.cell->material_id()), best.face,
-                              master_point,
-                              geometry(master_point, masters[best.face].cell->material_id()));
-      else
-        integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q], values.positions[q],
-                              best.face, master_point, master_point);
+      const Point<dim> position =
+          geometry ? geometry(values.positions[q], slave.cell->material_id()) : values.positions[q];
+      const Point<dim> master_exact =
+          geometry ? geometry(master_point, masters[best.face].cell->material_id()) : master_point;
+      integrals.add_pairing(nodes, values.dual_values(q), values.JxW[q], position, best.face,
+                            master_point, master_exact);
     }
   }
 

@@ -100,14 +100,11 @@ std::map<int, BodyTwist> gear_pair_twists(const kinematics::GearPairGeometry& pa
   const double rate = detail::contact_shift_rate(pair);
   const double r_b1 = 0.5 * std::abs(pair.pinion.base_diameter);
   const double r_b2 = 0.5 * std::abs(pair.wheel.base_diameter);
-  const bool ring = pair.spec.wheel.internal;
-  // The scene's placement (gear_pair_placement.cc): the pinion at the origin, the wheel's
-  // centre on the x axis, beyond the pitch point (external) or behind the pinion's (ring).
-  const Eigen::Vector2d pinion_centre(0., 0.);
-  const Eigen::Vector2d wheel_centre(ring ? -pair.centre_distance : pair.centre_distance, 0.);
+  const double wheel_sense = pair.spec.wheel.internal ? 1. : -1.;
   const double z0 = detail::model_section(pair);
-  return {{scene_ids::pinion_body, {pinion_centre, rate / r_b1, z0}},
-          {scene_ids::wheel_body, {wheel_centre, (ring ? 1. : -1.) * rate / r_b2, z0}}};
+  // About the axes of the scene's placement (gear_pair_placement.cc: the pinion at the origin).
+  return {{scene_ids::pinion_body, {Eigen::Vector2d::Zero(), rate / r_b1, z0}},
+          {scene_ids::wheel_body, {detail::wheel_centre(pair), wheel_sense * rate / r_b2, z0}}};
 }
 
 namespace detail

@@ -69,8 +69,11 @@ LineOfAction line_of_action(const kinematics::GearPairGeometry& pair);
 int mate_tooth(const ToothProfile& wheel, int j);
 void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
                   const LineOfAction& line, const PlacedGears& gears, GearPairScene& scene);
-void place_gears(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
-                 const LineOfAction& line, double reference, PlacedGears& gears);
+// m, the wheel's centre in the scene frame (the pinion's is the origin): on the x axis, beyond
+// the pitch point (external) or behind the pinion's centre (ring).
+Eigen::Vector2d wheel_centre(const kinematics::GearPairGeometry& pair);
+void place_gears(const kinematics::GearPairGeometry& pair, const LineOfAction& line,
+                 double reference, PlacedGears& gears);
 ModelWindows model_windows(const GearPairSceneSpec& spec, const PlacedGears& gears,
                            GearPairScene& scene);
 

@@ -352,16 +352,20 @@ void locate_pairs(const GearPairSceneSpec& spec, const kinematics::GearPairGeome
                            "; auto models them all");
 }
 
+Eigen::Vector2d wheel_centre(const kinematics::GearPairGeometry& pair)
+{
+  return {pair.spec.wheel.internal ? -pair.centre_distance : pair.centre_distance, 0.};
+}
+
 // Placement: the loaded flanks of pair 0 through the reference point. An external wheel sits
 // beyond the pitch point, a ring's centre on the other side of the pinion's (the pitch point lies
 // on the ring's pitch circle, outside the pinion).
-void place_gears(const GearPairSceneSpec& spec, const kinematics::GearPairGeometry& pair,
-                 const LineOfAction& line, double reference, PlacedGears& gears)
+void place_gears(const kinematics::GearPairGeometry& pair, const LineOfAction& line,
+                 double reference, PlacedGears& gears)
 {
   const Eigen::Vector2d reference_point = line.at(reference);
   gears.pinion_centre = Eigen::Vector2d(0., 0.);
-  gears.wheel_centre =
-      Eigen::Vector2d(spec.pair.wheel.internal ? -pair.centre_distance : pair.centre_distance, 0.);
+  gears.wheel_centre = wheel_centre(pair);
   gears.pinion_rotation = placing_rotation(gears.pinion, gears.pinion_centre, reference_point);
   gears.wheel_rotation = placing_rotation(gears.wheel, gears.wheel_centre, reference_point);
 }

@@ -201,7 +201,7 @@ GearPairScene write_gear_pair_scene(const GearPairSceneSpec& requested, const st
 
   const LineOfAction line = line_of_action(pair);
   locate_pairs(spec, pair, line, gears, scene);
-  place_gears(spec, pair, line, scene.reference_position, gears);
+  place_gears(pair, line, scene.reference_position, gears);
   const std::vector<SceneContact> contacts = predicted_contacts(spec, pair, line, gears, scene);
   set_unloaded_transmission_error(spec, pair, line, gears, scene);
   scene.contact_lines = contact_lines(pair, line, scene.reference_position, scene.contact_pairs);

@@ -53,15 +53,25 @@ void make_bent_blocks(Triangulation<2>& tria)
     }
   fem::join_bodies<2>({&upper, &lower}, tria);
 }
+
+// The bent blocks with their Q2 DoFs, as every test here pairs them.
+struct BentBlocks
+{
+  BentBlocks()
+  {
+    make_bent_blocks(tria);
+    dof_handler.distribute_dofs(fe);
+  }
+  Triangulation<2> tria;
+  const FESystem<2> fe{FE_Q<2>(2), 2};
+  DoFHandler<2> dof_handler{tria};
+};
 } // namespace
 
 TEST(MortarWindow, CouplesTheWholeSurfacesNodesInsideUnchanged)
 {
-  Triangulation<2> tria;
-  make_bent_blocks(tria);
-  const FESystem<2> fe(FE_Q<2>(2), 2);
-  DoFHandler<2> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
+  const BentBlocks blocks;
+  const DoFHandler<2>& dof_handler = blocks.dof_handler;
   const double search_distance = 0.03e-3, depth = 1e-3; // m
   const std::vector<SlaveNode<2>> whole =
       mortar_coupling<2>(dof_handler, {1}, {4}, search_distance, depth);
@@ -124,11 +134,8 @@ TEST(MortarWindow, CouplesTheWholeSurfacesNodesInsideUnchanged)
 // block) — the gap integrated between the exact points.
 TEST(MortarWindow, SurfaceGeometryMovesTheGapOnly)
 {
-  Triangulation<2> tria;
-  make_bent_blocks(tria);
-  const FESystem<2> fe(FE_Q<2>(2), 2);
-  DoFHandler<2> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
+  const BentBlocks blocks;
+  const DoFHandler<2>& dof_handler = blocks.dof_handler;
   const double search_distance = 0.03e-3, depth = 1e-3, delta = 0.5e-6; // m
   const std::vector<SlaveNode<2>> meshed =
       mortar_coupling<2>(dof_handler, {1}, {4}, search_distance, depth);
