@@ -374,7 +374,8 @@ void GearMeshStiffness<dim>::make_scene()
         const geometry::GearPairScene written =
             geometry::write_gear_pair_scene(spec, settings.scene_file);
         std::vector<double> values{written.reference_position, written.info.contact_size,
-                                   written.info.time_total, written.unloaded_transmission_error};
+                                   written.info.time_total, written.unloaded_transmission_error,
+                                   written.info.body_size};
         for (const int j : written.contact_pairs)
           values.push_back(j);
         return values;
@@ -383,8 +384,9 @@ void GearMeshStiffness<dim>::make_scene()
   result.contact_size = scene[1];
   result.scene_time = scene[2];
   result.unloaded_transmission_error = scene[3];
+  result.body_size = scene[4];
   candidate_pairs.clear();
-  for (std::size_t i = 4; i < scene.size(); ++i)
+  for (std::size_t i = 5; i < scene.size(); ++i)
   {
     ToothPairLoad load;
     load.pair = static_cast<int>(std::lround(scene[i]));

@@ -186,6 +186,15 @@ struct GearMeshStiffnessResult
   unsigned int n_cells = 0;
   unsigned int n_dofs = 0;
   double contact_size = 0.; // m, h_c of the scene
+  // m, the body size the scene was meshed with (an automatic one after any coarsening to fit
+  // the memory limit: geometry::SceneMeshSettings::body_size_fits_cell_limit)
+  double body_size = 0.;
+  // 3D, Mesh/layer extrapolation (stiffness/layer_extrapolation.h): the layers L of the coarser
+  // solve (0: not extrapolated) and k solved on L and on 2L layers (N/m); the values above that
+  // the layer height's error enters (k, TE, load shares, forces) are then extrapolated from them.
+  unsigned int extrapolated_layers = 0;
+  double stiffness_coarse_layers = 0.; // N/m, k on L layers
+  double stiffness_fine_layers = 0.;   // N/m, k on 2L layers
   unsigned int active_set_iterations = 0;
   double scene_time = 0.;         // s, wall: geometry, meshing, writing (rank 0)
   double setup_time = 0.;         // s, wall: reading, DoFs, stiffness, mortar coupling
@@ -229,6 +238,10 @@ struct GearMeshStiffnessResult
     visit("n_cells", self.n_cells);
     visit("n_dofs", self.n_dofs);
     visit("contact_size", self.contact_size);
+    visit("body_size", self.body_size);
+    visit("extrapolated_layers", self.extrapolated_layers);
+    visit("stiffness_coarse_layers", self.stiffness_coarse_layers);
+    visit("stiffness_fine_layers", self.stiffness_fine_layers);
     visit("active_set_iterations", self.active_set_iterations);
     visit("scene_time", self.scene_time);
     visit("setup_time", self.setup_time);
@@ -287,6 +300,7 @@ private:
   std::vector<contact::BodyRotation<dim>> body_rotations(double position) const;
   double scene_position = 0.;     // m, ℓ_ref of the meshed scene (rolling)
   double scene_contact_size = 0.; // m, its h_c (rolling: every position reports it)
+  double scene_body_size = 0.;    // m, its body size (likewise)
   // The unloaded TE at ℓ = `position` (m): a rolled position's own, not the meshed scene's.
   double unloaded_transmission_error_at(double position);
   std::vector<double> swept_unloaded_errors; // m, at settings.scene.swept_positions (lazily)

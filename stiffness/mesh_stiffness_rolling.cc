@@ -174,6 +174,7 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     make_scene(); // at the scene's own position, refined for every swept one
     scene_position = result.reference_position;
     scene_contact_size = result.contact_size;
+    scene_body_size = result.body_size;
     set_candidate_pairs(position);
     setup_problem();
     add_rolled_pairs(*problem, pair, candidate_pairs, true);
@@ -199,6 +200,7 @@ GearMeshStiffnessResult GearMeshStiffness<dim>::roll_to(double position,
     // The same mesh: its h_c (the tip-edge flag's tolerance; a position without it flagged
     // only peaks exactly at A or E).
     result.contact_size = scene_contact_size;
+    result.body_size = scene_body_size;
     set_candidate_pairs(position);
     add_rolled_pairs(*problem, pair, candidate_pairs, true);
     add_crack_pairs(); // add_rolled_pairs cleared them

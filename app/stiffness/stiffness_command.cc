@@ -168,6 +168,44 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
                    "ISO 6336-1 method B c_γα·b (mean mesh stiffness)");
 }
 
+// Mesh/layer extrapolation: k on L and on 2L layers beside the extrapolated k of every position,
+// and the largest correction (the error the 2L solve alone would have carried); nothing without it.
+void report_layer_extrapolation(Report& report,
+                                const std::vector<stiffness::GearMeshStiffnessResult>& positions)
+{
+  if (positions.empty() || positions.front().extrapolated_layers == 0)
+    return;
+  const unsigned int layers = positions.front().extrapolated_layers;
+  const std::string coarse = std::to_string(layers), fine = std::to_string(2 * layers);
+  ReportTable& table =
+      report.add_table("layer_extrapolation",
+                       {"position", "roll_angle", "stiffness_" + coarse + "_layers",
+                        "stiffness_" + fine + "_layers", "stiffness", "correction"},
+                       {"-", "deg", "N/um", "N/um", "N/um", "%"});
+  double largest = 0.;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+  {
+    const stiffness::GearMeshStiffnessResult& r = positions[i];
+    const double correction = (r.mesh_stiffness / r.stiffness_fine_layers - 1.) * 100.;
+    largest = std::abs(correction) > std::abs(largest) ? correction : largest;
+    table.add_row({double(i + 1), r.pinion_roll_angle / degree, r.stiffness_coarse_layers / 1e6,
+                   r.stiffness_fine_layers / 1e6, r.mesh_stiffness / 1e6, correction});
+  }
+  report.add_value("extrapolated_layers", layers, "-",
+                   "Mesh/layer extrapolation: k, TE, load shares and forces extrapolated from " +
+                       coarse + " and " + fine +
+                       " layers, x∞ = x(2L) + (x(2L) − x(L))/3; pressures, line loads and stresses "
+                       "from " +
+                       fine);
+  report.add_value("stiffness_coarse_layers", positions.front().stiffness_coarse_layers / 1e6,
+                   "N/µm", "k on " + coarse + " layers (the first position)");
+  report.add_value("stiffness_fine_layers", positions.front().stiffness_fine_layers / 1e6, "N/µm",
+                   "k on " + fine + " layers (the first position)");
+  report.add_value("layer_correction", largest, "%",
+                   "largest k(extrapolated)/k(" + fine + " layers) − 1 over the positions (the " +
+                       coarse + "-layer error is about 4×)");
+}
+
 // One position (single, double, roll angle).
 void run_position(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
                   const kinematics::IsoStiffness& iso, CommandContext& context)
@@ -212,6 +250,7 @@ void run_position(const StiffnessParameters& p, const kinematics::GearPairGeomet
             " N·m");
   }
   report_face_load(context, {r});
+  report_layer_extrapolation(report, {r});
   context.pcout << "stiffness: k = " << r.mesh_stiffness / 1e6 << " N/µm in " << r.total_time
                 << " s (" << r.n_dofs << " DoFs)" << std::endl;
 }
@@ -373,6 +412,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   const stiffness::StiffnessSweepResult sweep = solve_stiffness_sweep(p, context, "stiffness");
   add_stiffness_sweep_table(report, sweep, "stiffness_sweep", pair);
   report_face_load(context, sweep.positions);
+  report_layer_extrapolation(report, sweep.positions);
   report_micro_geometry(p, sweep, context);
   add_pair_identity(report, pair);
   report_sweep_summary(p, iso, sweep, report);

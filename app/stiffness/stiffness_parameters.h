@@ -53,6 +53,9 @@ struct StiffnessParameters
   std::vector<std::string> input_notes;
   // `Stiffness/variants`: further modification sets, each swept like the base one.
   std::vector<StiffnessVariant> variants;
+  // Mesh/layer extrapolation = richardson (3D): every position solved on the scene's layers L
+  // and on 2L, the results extrapolated (stiffness/layer_extrapolation.h).
+  bool layer_extrapolation = false;
   // s, mode sweep: the lower bound of the sweep's work on the ranks (checked against
   // limits::max_run_seconds, printed before the sweep starts)
   double estimated_seconds = 0.;

@@ -12,6 +12,7 @@
 #include "geometry/tooth_fault.h"
 #include "kinematics/gear_pair.h"
 #include "stiffness/influence_sweep.h"
+#include "stiffness/layer_extrapolation.h"
 #include "stiffness/transmission_error.h"
 
 #include <algorithm>
@@ -52,11 +53,10 @@ std::string vtu_directory(const StiffnessParameters& p, CommandContext& context,
             .string();
   return directory;
 }
-} // namespace
 
-stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
-                                                            CommandContext& context,
-                                                            const std::string& label)
+// One position on the scene's own layers.
+stiffness::GearMeshStiffnessResult solve_position(const StiffnessParameters& p,
+                                                  CommandContext& context, const std::string& label)
 {
   stiffness::GearMeshStiffnessSettings settings = p.settings;
   settings.scene_file = scratch_stem(context.mpi_communicator, label, true) + ".msh";
@@ -119,9 +119,9 @@ stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParam
   return result;
 }
 
-stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
-                                                      CommandContext& context,
-                                                      const std::string& label)
+// The sweep on the scene's own layers.
+stiffness::StiffnessSweepResult solve_sweep(const StiffnessParameters& p, CommandContext& context,
+                                            const std::string& label)
 {
   stiffness::GearMeshStiffnessSettings settings = p.settings;
   std::vector<std::string> bases;
@@ -154,5 +154,93 @@ stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters&
                    : stiffness::stiffness_sweep<2>(context.mpi_communicator, settings, p.sweep,
                                                    stem, progress);
       });
+}
+
+// Mesh/layer extrapolation: the solve on 2L layers first (its VTU is the one written; a level over
+// the memory limit is refused before any work), then on L layers with the body size the 2L scene
+// was meshed with — an automatic body size coarsens to fit the larger mesh, and the two levels
+// must differ in their layers alone.
+StiffnessParameters fine_layer_level(const StiffnessParameters& p)
+{
+  StiffnessParameters fine = p;
+  fine.layer_extrapolation = false;
+  fine.settings.scene.mesh.layers *= 2;
+  return fine;
+}
+
+StiffnessParameters coarse_layer_level(const StiffnessParameters& p, double body_size)
+{
+  StiffnessParameters coarse = p;
+  coarse.layer_extrapolation = false;
+  coarse.write_vtu = false;
+  coarse.settings.scene.mesh.body_size = body_size;
+  coarse.settings.scene.mesh.body_size_fits_cell_limit = false;
+  return coarse;
+}
+
+// The 2L solve's refusal of its layers is the extrapolation's: the user set L.
+template <class Solve>
+auto solve_fine_level(const StiffnessParameters& p, Solve&& solve)
+{
+  try
+  {
+    return solve();
+  }
+  catch (const InputError& e)
+  {
+    if (e.parameter() != "Mesh/layers")
+      throw;
+    throw InputError(
+        "Mesh/layer extrapolation",
+        "its solve on 2 × Mesh/layers = " + std::to_string(2 * p.settings.scene.mesh.layers) +
+            " layers: " + e.reason());
+  }
+}
+
+void announce_levels(const StiffnessParameters& p, CommandContext& context,
+                     const std::string& label)
+{
+  context.pcout << label << ": Mesh/layer extrapolation = richardson: solving on "
+                << 2 * p.settings.scene.mesh.layers << " layers, then on "
+                << p.settings.scene.mesh.layers << std::endl;
+}
+} // namespace
+
+stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParameters& p,
+                                                            CommandContext& context,
+                                                            const std::string& label)
+{
+  if (!p.layer_extrapolation)
+    return solve_position(p, context, label);
+  announce_levels(p, context, label);
+  const stiffness::GearMeshStiffnessResult fine =
+      solve_fine_level(p, [&] { return solve_position(fine_layer_level(p), context, label); });
+  const stiffness::GearMeshStiffnessResult coarse =
+      solve_position(coarse_layer_level(p, fine.body_size), context, label);
+  return stiffness::extrapolate_layers(coarse, fine, p.settings.scene.mesh.layers);
+}
+
+stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
+                                                      CommandContext& context,
+                                                      const std::string& label)
+{
+  if (!p.layer_extrapolation)
+    return solve_sweep(p, context, label);
+  announce_levels(p, context, label);
+  const stiffness::StiffnessSweepResult fine =
+      solve_fine_level(p, [&] { return solve_sweep(fine_layer_level(p), context, label); });
+  // One body size for the L sweep: per position, each 2L scene may have coarsened its own.
+  const double body_size = fine.positions.front().body_size;
+  for (const stiffness::GearMeshStiffnessResult& r : fine.positions)
+    if (r.body_size != body_size)
+      throw InputError("Mesh/body size",
+                       "Mesh/layer extrapolation: the automatic body size of the 2L-layer "
+                       "solves coarsened to " +
+                           format_number(body_size * 1e3, 4) + " mm at one position and " +
+                           format_number(r.body_size * 1e3, 4) +
+                           " mm at another (to fit the memory limit): set one");
+  const stiffness::StiffnessSweepResult coarse =
+      solve_sweep(coarse_layer_level(p, body_size), context, label);
+  return stiffness::extrapolate_layers(coarse, fine, p.settings.scene.mesh.layers);
 }
 } // namespace gearstiff::app

@@ -9,11 +9,15 @@ The small coarse pair of tests/helical/small_pair.py (z 19/29, m_n 2 mm, β ±10
 frictionless; its sizes) at its single position, solved with L and 2L layers (L = 5) with
 `Mesh/helical flanks = chords` (the meshed surfaces: the hexahedron edges between layers are
 chords of the helices, inside each body by r·Δφ²/8 at mid-layer) and `helicoid` (the gaps
-between the involute helicoids). Checked:
+between the involute helicoids), each by `Mesh/layer extrapolation = richardson` (one command
+solves both levels and extrapolates; stiffness/layer_extrapolation.h). Checked:
 - the two errors have opposite signs: chords' k rises with the layers, helicoid's falls;
 - Richardson's extrapolation in the layer height squared, k∞ = k(2L) + (k(2L) − k(L))/3, gives
   the same limit from both (two discretisations that share no error term but the order) —
-  within TOLERANCE, and so does the transmission error.
+  within TOLERANCE, and so does the transmission error;
+- the command's limit is Richardson's in the pinion rotation Δφ = T1/(r_b1²·k) from the two
+  levels it reports, 1/k∞ = 1/k(2L) + (1/k(2L) − 1/k(L))/3, to round-off (1e-9: the values
+  printed with 12 digits).
 On the built-in pair at β ±15° (coarse sizes, 13/26 layers, ten positions; bench/
 helical_layers_2026-12-03.txt) the two limits agree to 0.07 % at every position, sharp and
 tip-relieved, while 13 layers alone are 3.3 % low (chords) or 4.4 % high (helicoid).
@@ -28,15 +32,17 @@ from small_pair import MESH, PAIR  # noqa: E402
 
 LAYERS = 5
 # Relative bound on |k∞(helicoid)/k∞(chords) − 1| and on the TE limits: measured 2026-12-03 on
-# this case 0.0007 % (k 102.2276 against 102.2269 N/um) and 0.0024 % (TE 10.81058 against
-# 10.81084 um); ≈ 4× the larger. The built-in pair's ten positions agree to 0.07 % (docstring).
+# this case, extrapolated in Δφ by the command, 0.0024 % (k 102.2283 against 102.2307 N/um) and
+# 0.0024 % (TE 10.81084 against 10.81058 um); ≈ 4×. The built-in pair's ten positions agree to 0.07 % (docstring).
 TOLERANCE = 1e-4
 
 
 def solve(gearstiff, work, layers, flanks):
+    """k on L and 2L layers and the extrapolated k and TE of one command."""
     args = [gearstiff, "stiffness", "--json", "--quiet"]
     for entry in PAIR + [m for m in MESH if not m.startswith("Mesh/layers=")] + [
-            f"Mesh/layers={layers}", f"Mesh/helical flanks={flanks}", "Stiffness/mode=single",
+            f"Mesh/layers={layers}", f"Mesh/helical flanks={flanks}",
+            "Mesh/layer extrapolation=richardson", "Stiffness/mode=single",
             "Finite elements/Element degree=1", "Contact/Friction coefficient=0",
             "Stiffness/published reference=false"]:
         args += ["--set", entry]
@@ -45,7 +51,9 @@ def solve(gearstiff, work, layers, flanks):
         sys.exit(f"layers_helicoid: {flanks} {layers} layers exited {out.returncode}: "
                  f"{out.stderr}")
     values = json.loads(out.stdout)["values"]
-    return values["mesh_stiffness"]["value"], values["transmission_error"]["value"]
+    return tuple(values[name]["value"] for name in (
+        "stiffness_coarse_layers", "stiffness_fine_layers", "mesh_stiffness",
+        "transmission_error"))
 
 
 def main():
@@ -53,11 +61,13 @@ def main():
     os.makedirs(work, exist_ok=True)
     limits, failures = {}, []
     for flanks in ("chords", "helicoid"):
-        (k1, te1), (k2, te2) = (solve(gearstiff, work, n, flanks) for n in (LAYERS, 2 * LAYERS))
-        limits[flanks] = (k2 + (k2 - k1) / 3., te2 + (te2 - te1) / 3.)
-        print(f"{flanks}: k {k1:.4f} ({LAYERS} layers), {k2:.4f} ({2 * LAYERS}) -> "
-              f"{limits[flanks][0]:.4f} N/um; TE {te1:.5f}, {te2:.5f} -> "
-              f"{limits[flanks][1]:.5f} um")
+        k1, k2, k, te = solve(gearstiff, work, LAYERS, flanks)
+        limits[flanks] = (k, te)
+        print(f"{flanks}: k {k1:.4f} ({LAYERS} layers), {k2:.4f} ({2 * LAYERS}) -> {k:.4f} N/um; "
+              f"TE -> {te:.5f} um")
+        richardson = 1. / (1. / k2 + (1. / k2 - 1. / k1) / 3.)
+        if abs(k / richardson - 1.) > 1e-9:
+            failures.append(f"{flanks}: k {k} is not Richardson's {richardson} in the rotation")
         rises = k2 > k1
         if rises != (flanks == "chords"):
             failures.append(f"{flanks}: k {'rises' if rises else 'falls'} with the layers")
