@@ -197,6 +197,9 @@ void report_layer_extrapolation(Report& report,
                        " layers, x∞ = x(2L) + (x(2L) − x(L))/3; pressures, line loads and stresses "
                        "from " +
                        fine);
+  report.add_value("extrapolation_body_size", positions.front().body_size * 1e3, "mm",
+                   "body size of both levels (the " + fine +
+                       "-layer scene's: an automatic size coarsens to fit the memory limit)");
   report.add_value("stiffness_coarse_layers", positions.front().stiffness_coarse_layers / 1e6,
                    "N/µm", "k on " + coarse + " layers (the first position)");
   report.add_value("stiffness_fine_layers", positions.front().stiffness_fine_layers / 1e6, "N/µm",

@@ -39,6 +39,10 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              the involute helicoids, not the hexahedra's chords: k at least
                              and TE at most the chords' (the chords lie inside both bodies);
                              |F_a|/F_bt and the torque balance as above
+    layer extrapolation      the helical cases neither widened nor drawn for the helicoid
+                             check again with Mesh/layer extrapolation = richardson: its L
+                             level is the plain run (1e-6), k is Richardson's in the rotation
+                             from the two levels (1e-9), the statics identities as above
     errors name parameters   a wheel of two teeth (gear-pair) and a 1 mm centre distance (mesh)
                              fail with one line naming the parameter typed, not the library's
                              field (issue 45)
@@ -704,7 +708,39 @@ def helical_statics(case, runner, log):
     log(f"helical beta {beta} deg, {sets['Mesh/layers']} layers, {teeth} teeth modelled: "
         f"|F_a|/F_bt {ratio:.6f}, tan beta_b {tan_b:.6f}; peak pressure at roll {roll:.3f} mm "
         f"(A {a:.3f}, E {e:.3f}), {face:.3f} mm across the face")
-    helicoid_flanks(case, runner, log, sets, report)
+    if not helicoid_flanks(case, runner, log, sets, report) and not wide:
+        layer_extrapolation(runner, log, sets, report)
+
+
+def layer_extrapolation(runner, log, sets, chords):
+    """The helical cases that are neither widened nor drawn for the helicoid check (the cheaper
+    ones: their L and 2L solves cost about 4.5 times L), again with `Mesh/layer extrapolation =
+    richardson` (stiffness/layer_extrapolation.h): its L level is the chords run above, to 1e-6
+    (the same scene: the levels differ in their layers alone, the L scene meshed with the 2L
+    scene's body size, which an automatic size keeps unless 2L layers pass the memory limit);
+    the extrapolated k is Richardson's in the pinion rotation from the two levels it reports;
+    the statics identities hold for the extrapolated forces as for each level. A correction over
+    5 % fails with exit 3 naming the layer extrapolation (never a number), which is logged."""
+    extrapolated = dict(sets, **{"Mesh/layer extrapolation": "richardson"})
+    report, code, stderr = runner.run("stiffness", extrapolated, allowed=(0, 3))
+    if code == 3:
+        if "layer extrapolation" not in stderr:
+            raise CaseFailure(f"layer extrapolation exited 3: {stderr.strip()[-600:]}")
+        log(f"layer extrapolation: refused, {stderr.strip()[-300:]}")
+        return
+    k1, k2 = value(report, "stiffness_coarse_layers"), value(report, "stiffness_fine_layers")
+    k = value(report, "mesh_stiffness")
+    check_close("layer extrapolation: its L level against the plain L run", k1,
+                value(chords, "mesh_stiffness"), 0., 1e-6)
+    check_close("layer extrapolation: Richardson in the rotation", 1. / k,
+                1. / k2 + (1. / k2 - 1. / k1) / 3., 0., 1e-9)
+    check_close("extrapolated |F_a|/F_bt against tan beta_b", value(report, "axial_over_tangential"),
+                value(report, "tan_base_helix"), 0., 5e-3)
+    check_close("extrapolated torque balance", value(report, "torque_balance_deviation"), 0.,
+                6.3e-4)
+    log(f"layer extrapolation: k {k1:.4f} ({sets['Mesh/layers']} layers), {k2:.4f} (x2) -> "
+        f"{k:.4f} N/um ({value(report, 'layer_correction'):+.3f} % on the finer level), TE "
+        f"{value(report, 'transmission_error'):.5f} um")
 
 
 def helicoid_flanks(case, runner, log, sets, chords):
@@ -714,7 +750,7 @@ def helicoid_flanks(case, runner, log, sets, chords):
     helicoids start closer: k is at least the chords' and the TE at most theirs (the two bracket
     the layers' limit), and the statics identities hold as before."""
     if random.Random(f"{case['seed']}:{case['index']}:helicoid").random() >= 0.25:
-        return
+        return False
     # On the helicoids the dual mortar's negative gap where a line crosses a face ("Layers and
     # the contact lines") is no longer offset by the chords' sag, so the overlap refusal can come
     # at the count the chords took (case 14 of seed 20261201: 1.07 um there, 22 layers named,
@@ -734,6 +770,7 @@ def helicoid_flanks(case, runner, log, sets, chords):
     check_close("helicoid torque balance", value(report, "torque_balance_deviation"), 0., 6.3e-4)
     log(f"helicoid flanks: k {k_h:.4f} against chords {k_c:.4f} N/um ({k_h / k_c - 1.:+.3%}), "
         f"TE {te_h:.5f} against {te_c:.5f} um")
+    return True
 
 
 def helical_tent(x, half_window, amount, e):
