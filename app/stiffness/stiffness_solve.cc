@@ -178,7 +178,8 @@ StiffnessParameters coarse_layer_level(const StiffnessParameters& p, double body
   return coarse;
 }
 
-// The 2L solve's refusal of its layers is the extrapolation's: the user set L.
+// A refusal of the 2L solve (its scene over the memory limit) says which solve it was; one of
+// its layers is the extrapolation's: the user set L, not 2L.
 template <class Solve>
 auto solve_fine_level(const StiffnessParameters& p, Solve&& solve)
 {
@@ -188,12 +189,12 @@ auto solve_fine_level(const StiffnessParameters& p, Solve&& solve)
   }
   catch (const InputError& e)
   {
-    if (e.parameter() != "Mesh/layers")
-      throw;
-    throw InputError(
-        "Mesh/layer extrapolation",
-        "its solve on 2 × Mesh/layers = " + std::to_string(2 * p.settings.scene.mesh.layers) +
-            " layers: " + e.reason());
+    const std::string level =
+        "the solve on 2 × Mesh/layers = " + std::to_string(2 * p.settings.scene.mesh.layers) +
+        " layers";
+    if (e.parameter() == "Mesh/layers")
+      throw InputError("Mesh/layer extrapolation", level + ": " + e.reason());
+    throw InputError(e.parameter(), e.reason() + " (Mesh/layer extrapolation: " + level + ")");
   }
 }
 
