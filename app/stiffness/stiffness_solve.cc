@@ -9,6 +9,7 @@
 #include "errors/errors.h"
 #include "errors/format.h"
 #include "errors/limits.h"
+#include "geometry/fields.h"
 #include "geometry/tooth_fault.h"
 #include "kinematics/gear_pair.h"
 #include "stiffness/influence_sweep.h"
@@ -192,7 +193,8 @@ auto solve_fine_level(const StiffnessParameters& p, Solve&& solve)
     const std::string level =
         "the solve on 2 × Mesh/layers = " + std::to_string(2 * p.settings.scene.mesh.layers) +
         " layers";
-    if (e.parameter() == "Mesh/layers")
+    // The scene names its own field (mapped to the parameter path by the command's tables).
+    if (e.parameter() == geometry::field::mesh("layers") || e.parameter() == "Mesh/layers")
       throw InputError("Mesh/layer extrapolation", level + ": " + e.reason());
     throw InputError(e.parameter(), e.reason() + " (Mesh/layer extrapolation: " + level + ")");
   }
