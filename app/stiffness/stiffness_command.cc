@@ -233,6 +233,20 @@ void run_position(const StiffnessParameters& p, const kinematics::GearPairGeomet
   report.add_value("deviation_from_iso", (r.mesh_stiffness / iso.single_per_width - 1.) * 100., "%",
                    "k against ISO 6336-1 c'·b");
   report_stiffness_position(report, r, "", mode_name(p.mode));
+  // As a sweep's table flags it (column tip_edge_contact): a peak at the end of an involute.
+  if (tip_edge_contact(r, pair))
+    report.add_text(
+        "tip edge contact",
+        "the largest pressure (max_contact_pressure) acts at the end of an involute, within one "
+        "contact cell of the wheel's A (max_pressure_wheel_roll) or of the pinion's E "
+        "(max_pressure_roll): " +
+            std::string(pair.spec.pinion.tip_rounding_radius > 0. ||
+                                pair.spec.wheel.tip_rounding_radius > 0.
+                            ? "at a sharp tip a corner, whose edge pressure grows with "
+                              "refinement; at a rounded tip the rounding's contact, resolved only "
+                              "if its radius spans several contact cells"
+                            : "a tip corner, whose edge pressure grows with refinement: not a "
+                              "Hertz pressure"));
   if (p.settings.scene.pair.pinion.helix_angle != 0.) // docs/helical.md: the helix's forces
   {
     report.add_value("tangential_force", r.tangential_force, "N",
