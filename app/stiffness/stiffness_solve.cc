@@ -157,55 +157,46 @@ stiffness::StiffnessSweepResult solve_sweep(const StiffnessParameters& p, Comman
       });
 }
 
-// Mesh/layer extrapolation: the solve on 2L layers first (its VTU is the one written; a level over
-// the memory limit is refused before any work), then on L layers with the body size the 2L scene
-// was meshed with — an automatic body size coarsens to fit the larger mesh, and the two levels
-// must differ in their layers alone.
-StiffnessParameters fine_layer_level(const StiffnessParameters& p)
+// Mesh/layer extrapolation around one solve (a position or a sweep): the solve on 2L layers
+// first (its VTU is the one written; a level over the memory limit is refused before any work),
+// then on L layers with the body size the 2L scene was meshed with — an automatic body size
+// coarsens to fit the larger mesh, and the two levels must differ in their layers alone —,
+// combined by stiffness::extrapolate_layers. Without the option the solve itself.
+template <class Solve, class BodySize>
+auto solve_layer_levels(const StiffnessParameters& p, CommandContext& context,
+                        const std::string& label, Solve&& solve, BodySize&& body_size_of)
 {
-  StiffnessParameters fine = p;
-  fine.layer_extrapolation = false;
-  fine.settings.scene.mesh.layers *= 2;
-  return fine;
-}
-
-StiffnessParameters coarse_layer_level(const StiffnessParameters& p, double body_size)
-{
-  StiffnessParameters coarse = p;
-  coarse.layer_extrapolation = false;
-  coarse.write_vtu = false;
-  coarse.settings.scene.mesh.body_size = body_size;
-  coarse.settings.scene.mesh.body_size_fits_cell_limit = false;
-  return coarse;
-}
-
-// A refusal of the 2L solve (its scene over the memory limit) says which solve it was; one of
-// its layers is the extrapolation's: the user set L, not 2L.
-template <class Solve>
-auto solve_fine_level(const StiffnessParameters& p, Solve&& solve)
-{
-  try
+  if (!p.layer_extrapolation)
+    return solve(p);
+  const unsigned int layers = p.settings.scene.mesh.layers;
+  context.pcout << label << ": Mesh/layer extrapolation = richardson: solving on " << 2 * layers
+                << " layers, then on " << layers << std::endl;
+  StiffnessParameters level = p;
+  level.layer_extrapolation = false;
+  level.settings.scene.mesh.layers = 2 * layers;
+  // A refusal of the 2L solve says which solve it was; one of its layers is the extrapolation's
+  // (the user set L, not 2L). The scene names its own field (mapped to the parameter path by
+  // the command's tables).
+  const auto fine = [&]
   {
-    return solve();
-  }
-  catch (const InputError& e)
-  {
-    const std::string level =
-        "the solve on 2 × Mesh/layers = " + std::to_string(2 * p.settings.scene.mesh.layers) +
-        " layers";
-    // The scene names its own field (mapped to the parameter path by the command's tables).
-    if (e.parameter() == geometry::field::mesh("layers") || e.parameter() == "Mesh/layers")
-      throw InputError("Mesh/layer extrapolation", level + ": " + e.reason());
-    throw InputError(e.parameter(), e.reason() + " (Mesh/layer extrapolation: " + level + ")");
-  }
-}
-
-void announce_levels(const StiffnessParameters& p, CommandContext& context,
-                     const std::string& label)
-{
-  context.pcout << label << ": Mesh/layer extrapolation = richardson: solving on "
-                << 2 * p.settings.scene.mesh.layers << " layers, then on "
-                << p.settings.scene.mesh.layers << std::endl;
+    try
+    {
+      return solve(level);
+    }
+    catch (const InputError& e)
+    {
+      const std::string which =
+          "the solve on 2 × Mesh/layers = " + std::to_string(2 * layers) + " layers";
+      if (e.parameter() == geometry::field::mesh("layers") || e.parameter() == "Mesh/layers")
+        throw InputError("Mesh/layer extrapolation", which + ": " + e.reason());
+      throw InputError(e.parameter(), e.reason() + " (Mesh/layer extrapolation: " + which + ")");
+    }
+  }();
+  level.settings.scene.mesh.layers = layers;
+  level.write_vtu = false;
+  level.settings.scene.mesh.body_size = body_size_of(fine);
+  level.settings.scene.mesh.body_size_fits_cell_limit = false;
+  return stiffness::extrapolate_layers(solve(level), fine, layers);
 }
 } // namespace
 
@@ -213,37 +204,33 @@ stiffness::GearMeshStiffnessResult solve_stiffness_position(const StiffnessParam
                                                             CommandContext& context,
                                                             const std::string& label)
 {
-  if (!p.layer_extrapolation)
-    return solve_position(p, context, label);
-  announce_levels(p, context, label);
-  const stiffness::GearMeshStiffnessResult fine =
-      solve_fine_level(p, [&] { return solve_position(fine_layer_level(p), context, label); });
-  const stiffness::GearMeshStiffnessResult coarse =
-      solve_position(coarse_layer_level(p, fine.body_size), context, label);
-  return stiffness::extrapolate_layers(coarse, fine, p.settings.scene.mesh.layers);
+  return solve_layer_levels(
+      p, context, label,
+      [&](const StiffnessParameters& level) { return solve_position(level, context, label); },
+      [](const stiffness::GearMeshStiffnessResult& fine) { return fine.body_size; });
 }
 
 stiffness::StiffnessSweepResult solve_stiffness_sweep(const StiffnessParameters& p,
                                                       CommandContext& context,
                                                       const std::string& label)
 {
-  if (!p.layer_extrapolation)
-    return solve_sweep(p, context, label);
-  announce_levels(p, context, label);
-  const stiffness::StiffnessSweepResult fine =
-      solve_fine_level(p, [&] { return solve_sweep(fine_layer_level(p), context, label); });
   // One body size for the L sweep: per position, each 2L scene may have coarsened its own.
-  const double body_size = fine.positions.front().body_size;
-  for (const stiffness::GearMeshStiffnessResult& r : fine.positions)
-    if (r.body_size != body_size)
-      throw InputError("Mesh/body size",
-                       "Mesh/layer extrapolation: the automatic body size of the 2L-layer "
-                       "solves coarsened to " +
-                           format_number(body_size * 1e3, 4) + " mm at one position and " +
-                           format_number(r.body_size * 1e3, 4) +
-                           " mm at another (to fit the memory limit): set one");
-  const stiffness::StiffnessSweepResult coarse =
-      solve_sweep(coarse_layer_level(p, body_size), context, label);
-  return stiffness::extrapolate_layers(coarse, fine, p.settings.scene.mesh.layers);
+  const auto body_size_of = [](const stiffness::StiffnessSweepResult& fine)
+  {
+    const double body_size = fine.positions.front().body_size;
+    for (const stiffness::GearMeshStiffnessResult& r : fine.positions)
+      if (r.body_size != body_size)
+        throw InputError("Mesh/body size",
+                         "Mesh/layer extrapolation: the automatic body size of the 2L-layer "
+                         "solves coarsened to " +
+                             format_number(body_size * 1e3, 4) + " mm at one position and " +
+                             format_number(r.body_size * 1e3, 4) +
+                             " mm at another (to fit the memory limit): set one");
+    return body_size;
+  };
+  return solve_layer_levels(
+      p, context, label,
+      [&](const StiffnessParameters& level) { return solve_sweep(level, context, label); },
+      body_size_of);
 }
 } // namespace gearstiff::app
