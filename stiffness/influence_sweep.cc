@@ -68,6 +68,10 @@ constexpr double band_cell_factor(int dim)
 // +1.05 % → +1.00, +1.10, −0.57, +0.27 %; body 73.5k → 111k DoFs, 7.0 → 18.1 s (medians of 3
 // under the build lock), 0.85 → 1.37 GB.
 constexpr double helical_flank_cell_factor = 0.5;
+// -, the largest kinematic gap of a tip edge beyond the path (in normal modules) that gets an
+// unknown: 0.02·m_n (40 µm for m_n 2 mm) is several times a loaded pair's approach; an edge
+// further off carries nothing and only lengthens the active set.
+constexpr double tip_edge_gap_modules = 0.02;
 // -, a helical tip corner's radius in normal modules, for the near field of a tip-edge unknown
 // (solve_position): the meshed tip corner is sharp, so its radius is a model choice; its effect is
 // weak (ln a): measured 2026-12-03 (ltca47j; small pair, β 10°, 10 layers, position 0.625, one
@@ -231,7 +235,7 @@ double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
 // profile and lead modifications' removal, by which the flank lies under the nominal one.
 void add_station_points(const PairFrame& frame, const Helix& /*helix*/, int j, double at,
                         bool wheel, unsigned int direction, double inset, double depth,
-                        const FaceStations& /*stations*/, std::size_t /*i*/,
+                        const FaceStations& /*stations*/, std::size_t /*i*/, bool /*edge*/,
                         const std::function<double(double, bool)>& removal,
                         const std::function<double(double, bool)>& /*lead*/,
                         std::vector<BodyPoint<2>>& loads, std::vector<BodyPoint<2>>& reads)
@@ -249,7 +253,7 @@ void add_station_points(const PairFrame& frame, const Helix& /*helix*/, int j, d
 // n ⊥ the helix through P, |n_z| = tan β_b before normalising.
 void add_station_points(const PairFrame& frame, const Helix& helix, int j, double at, bool wheel,
                         unsigned int direction, double inset, double depth,
-                        const FaceStations& stations, std::size_t i,
+                        const FaceStations& stations, std::size_t i, bool edge,
                         const std::function<double(double, bool)>& removal,
                         const std::function<double(double, bool)>& lead,
                         std::vector<BodyPoint<3>>& loads, std::vector<BodyPoint<3>>& reads)
@@ -257,9 +261,12 @@ void add_station_points(const PairFrame& frame, const Helix& helix, int j, doubl
   const double dz = stations.layer, z_i = stations.z[i];
   const double turn_rate = helix.turn_rate(frame, wheel);
   const Point<2> centre = wheel ? frame.wheel_centre : Point<2>();
+  // A tip edge (`edge`): the flank point at ℓ = `at` (A or E) in every section, the tip's edge
+  // along the face, not the inclined contact line.
+  const auto roll = [&](double z) { return edge ? at : at + (helix.shift(z) - helix.shift(z_i)); };
   const auto at_z = [&](double offset, double z)
   {
-    const double l = at + (helix.shift(z) - helix.shift(z_i));
+    const double l = roll(z);
     FlankPoint p = flank_point(frame, j, l, wheel);
     p.surface += removal(l, wheel) * p.inward;
     Point<2> q = p.surface + (lead(z, wheel) + offset / helix.cos_base) * p.inward;
@@ -295,7 +302,7 @@ void add_station_points(const PairFrame& frame, const Helix& helix, int j, doubl
       const double z = middle + gauss * 0.5 * dz / std::sqrt(3.);
       // A helical line leaves the flanks at the path's ends (A: the wheel's tip, E: the
       // pinion's): the unit force stays on the part of the hat that lies on the path.
-      const double l = at + (helix.shift(z) - helix.shift(z_i));
+      const double l = roll(z);
       if (l < frame.pair.contact_start - 1e-9 || l > frame.pair.contact_end + 1e-9)
         continue;
       load.points.push_back(at_z(inset, z));
@@ -303,14 +310,14 @@ void add_station_points(const PairFrame& frame, const Helix& helix, int j, doubl
       on_flank += load.weights.back();
     }
   }
-  if (helix.rate != 0. && on_flank == 0.)
+  if (helix.rate != 0. && !edge && on_flank == 0.)
   {
     // A path end on an end plane, the line leaving the face on the plane's only side: the
     // plane's own point carries the load.
     load.points = {at_z(inset, z_i)};
     load.weights = {1.};
   }
-  else if (helix.rate != 0.)
+  else if (helix.rate != 0. && !edge)
     for (double& weight : load.weights)
       weight /= on_flank;
   loads.push_back(load);
@@ -336,13 +343,16 @@ public:
                   std::vector<std::vector<FlankGrid>> grids, double step, double depth,
                   double inset, const FaceStations& stations,
                   const std::function<double(double, bool)>& removal,
-                  const std::function<double(double, bool)>& lead, bool tilted)
-      : grids(std::move(grids)), step(step), directions(tilted ? 2 : 1)
+                  const std::function<double(double, bool)>& lead, bool tilted,
+                  std::vector<std::pair<int, bool>> edges)
+      : grids(std::move(grids)), step(step), directions(tilted ? 2 : 1), edges(std::move(edges)),
+        path_end(frame.pair.contact_end)
   {
     for (const bool wheel : {false, true})
     {
       std::vector<BodyPoint<dim>> loads, reads;
       offset.clear();
+      edge_offset.clear();
       for (std::size_t s = 0; s < stations.size(); ++s)
       {
         offset.push_back(loads.size());
@@ -350,7 +360,16 @@ public:
           for (unsigned int g = 0; g < grid.count; ++g)
             for (unsigned int d = 0; d < directions; ++d)
               add_station_points(frame, helix, grid.pair, grid.first + g * step, wheel, d, inset,
-                                 depth, stations, s, removal, lead, loads, reads);
+                                 depth, stations, s, false, removal, lead, loads, reads);
+        // A helical pair's tip edges on this plane (docs/ltca.md §3 "Tip edges"): the wheel's at
+        // ℓ = A, the pinion's at E, of the flanks whose lines cross that end, loaded along the
+        // edge.
+        edge_offset.push_back(loads.size());
+        for (const auto& [j, at_end] : this->edges)
+          for (unsigned int d = 0; d < directions; ++d)
+            add_station_points(frame, helix, j,
+                               at_end ? frame.pair.contact_end : frame.pair.contact_start, wheel, d,
+                               inset, depth, stations, s, true, removal, lead, loads, reads);
       }
       (wheel ? wheel_c : pinion_c) = body_compliance(model, loads, reads);
     }
@@ -361,45 +380,64 @@ public:
   // same ℓ (2D, a spur pair's planes, a helical pair's own plane) along its diagonal samples (its
   // near field varies over the depth h, not over the grid step); otherwise bilinearly (smooth:
   // a helical pair's other planes lie Δz or more away).
-  double operator()(int j, double at_j, double tilt_j, std::size_t s, int k, double at_k,
-                    double tilt_k, std::size_t t) const
+  // `edge_j`, `edge_k`: the unknown is a tip edge (ℓ = A or E), its own item, not the grid's.
+  double operator()(int j, double at_j, double tilt_j, std::size_t s, bool edge_j, int k,
+                    double at_k, double tilt_k, std::size_t t, bool edge_k) const
   {
-    const auto [first_j, u_j] = locate_on_grid(grids[s], step, j, at_j);
-    const auto [first_k, u_k] = locate_on_grid(grids[t], step, k, at_k);
+    const Item a = locate(s, j, at_j, edge_j), b = locate(t, k, at_k, edge_k);
     const double along_j[2] = {1., tilt_j}, along_k[2] = {1., tilt_k};
     double c = 0.;
     for (const auto* body : {&pinion_c, &wheel_c})
       for (unsigned int p = 0; p < directions; ++p)
         for (unsigned int q = 0; q < directions; ++q)
         {
-          const auto m = [&](std::size_t a, std::size_t b)
-          { return (*body)[offset[s] + a * directions + p][offset[t] + b * directions + q]; };
+          const auto m = [&](std::size_t x, std::size_t y) { return (*body)[x + p][y + q]; };
           const double weight = along_j[p] * along_k[q];
-          if (j == k && at_j == at_k)
-            c += weight * ((1. - u_j) * m(first_j, first_k) + u_j * m(first_j + 1, first_k + 1));
+          if (j == k && at_j == at_k && !edge_j && !edge_k)
+            c += weight * ((1. - a.u) * m(a.first, b.first) + a.u * m(a.next, b.next));
           else
             c += weight *
-                 ((1. - u_j) * ((1. - u_k) * m(first_j, first_k) + u_k * m(first_j, first_k + 1)) +
-                  u_j * ((1. - u_k) * m(first_j + 1, first_k) + u_k * m(first_j + 1, first_k + 1)));
+                 ((1. - a.u) * ((1. - b.u) * m(a.first, b.first) + b.u * m(a.first, b.next)) +
+                  a.u * ((1. - b.u) * m(a.next, b.first) + b.u * m(a.next, b.next)));
         }
     return c;
   }
-  // Whether station s has a grid of pair j that reaches ℓ = `at`.
-  bool covers(std::size_t s, int j, double at) const
+  // Whether pair j's tip edge at E (`at_end`) or A has its own items.
+  bool has_edge(int j, bool at_end) const
   {
-    for (const FlankGrid& grid : grids[s])
-      if (grid.pair == j)
-        return at >= grid.first - 1e-9 && at <= grid.first + (grid.count - 1) * step + 1e-9;
-    return false;
+    return std::find(edges.begin(), edges.end(), std::pair(j, at_end)) != edges.end();
   }
   // The load points of one gear (grid points × stations).
   std::size_t n_points() const { return pinion_c.size() / directions; }
 
 private:
+  // An unknown's items: the first of the two grid points about its ℓ, the next one and the
+  // fraction u between them (a tip edge: its own item, u = 0).
+  struct Item
+  {
+    std::size_t first = 0, next = 0;
+    double u = 0.;
+  };
+  Item locate(std::size_t s, int j, double at, bool edge) const
+  {
+    if (edge)
+    {
+      const auto edge = std::find(edges.begin(), edges.end(), std::pair(j, at == path_end));
+      const std::size_t index =
+          edge_offset[s] + static_cast<std::size_t>(edge - edges.begin()) * directions;
+      return {index, index, 0.};
+    }
+    const auto [first, u] = locate_on_grid(grids[s], step, j, at);
+    return {offset[s] + first * directions, offset[s] + (first + 1) * directions, u};
+  }
+
   std::vector<std::vector<FlankGrid>> grids; // by station
   double step;
-  unsigned int directions;         // 1: along the normals only; 2: across them too
-  std::vector<std::size_t> offset; // the first item of each station
+  unsigned int directions;                 // 1: along the normals only; 2: across them too
+  std::vector<std::pair<int, bool>> edges; // (pair, at E) of the tip edges with items
+  double path_end = 0.;                    // m, E
+  std::vector<std::size_t> offset;         // the first item of each station
+  std::vector<std::size_t> edge_offset;    // the first tip-edge item of each station
   std::vector<std::vector<double>> pinion_c, wheel_c;
 };
 
@@ -751,16 +789,15 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       double corner_gap = 0.;
       if (std::find(by_station[s].begin(), by_station[s].end(), j) == by_station[s].end())
       {
-        const double reach = std::abs(helix.rate) * stations.layer;
         if (helix.rate == 0. || dim != 3)
           continue;
-        if (unknown.at > pair.contact_end && unknown.at < pair.contact_end + reach)
+        if (unknown.at > pair.contact_end && compliance.has_edge(j, true))
         {
           corner_gap = tip_corner_gap(model.frame, unknown.at - pair.contact_end, false);
           unknown.edge = true;
           unknown.at = pair.contact_end;
         }
-        else if (unknown.at < pair.contact_start && unknown.at > pair.contact_start - reach)
+        else if (unknown.at < pair.contact_start && compliance.has_edge(j, false))
         {
           corner_gap = tip_corner_gap(model.frame, pair.contact_start - unknown.at, true);
           unknown.edge = true;
@@ -768,7 +805,7 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
         }
         else
           continue;
-        if (!compliance.covers(s, j, unknown.at))
+        if (corner_gap > tip_edge_gap_modules * pair.spec.pinion.normal_module)
           continue;
       }
       // ρ1 = ℓ, ρ2 = |ℓ − T1T2|; a ring's flank is concave (docs/ltca.md §3). A helical flank's
@@ -813,8 +850,8 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   {
     problem.compliance.emplace_back();
     for (const Unknown& b : unknowns)
-      problem.compliance.back().push_back(
-          compliance(a.pair, a.at, a.line.tilt, a.station, b.pair, b.at, b.line.tilt, b.station));
+      problem.compliance.back().push_back(compliance(a.pair, a.at, a.line.tilt, a.station, a.edge,
+                                                     b.pair, b.at, b.line.tilt, b.station, b.edge));
   }
   return solve_torques(problem, model.frame, keys, torques, warm, newton_steps,
                        [&](const MeshContactSolution& solution, double torque) {
@@ -923,12 +960,35 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
           grids[s].push_back(wider);
     }
   info.flanks = 2 * static_cast<unsigned int>(flanks.size());
+  // A helical pair's tip edges: pair j's at E where its line lies on the path at one plane and
+  // beyond E at another of some position (the pinion's tip edge then touches in the second), at
+  // A alike (the wheel's).
+  std::vector<std::pair<int, bool>> edges;
+  if (helix.rate != 0. && dim == 3)
+    for (const int j : flanks)
+      for (const bool at_end : {false, true})
+        for (const double position : positions)
+        {
+          bool on = false, beyond = false;
+          for (std::size_t s = 0; s < stations.size(); ++s)
+          {
+            const double at =
+                position + helix.shift(stations.z[s]) + j * pair.transverse_base_pitch;
+            on |= at >= pair.contact_start && at <= pair.contact_end;
+            beyond |= at_end ? at > pair.contact_end : at < pair.contact_start;
+          }
+          if (on && beyond)
+          {
+            edges.emplace_back(j, at_end);
+            break;
+          }
+        }
   const FlankCompliance<dim> compliance(
       model, frame, helix, grids, info.grid_step, info.matching_depth,
       inset_cells(dim) * info.flank_cell_size, stations,
       [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
       [&separation](double z, bool wheel) { return separation.lead_removal(z, wheel); },
-      separation.modified());
+      separation.modified(), edges);
   info.coefficient_time = seconds_since(start);
   if (progress && dim == 3)
     progress(model_name + ": " + std::to_string(compliance.n_points()) +
