@@ -123,6 +123,7 @@ void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double po
   load.closed_roll_max = load.position + half_width;
   load.max_pressure_roll = load.position; // Hertz: the peak on the line (3D: the caller's station)
   load.max_pressure_wheel_roll = load.position; // on the line: the same point on both flanks
+  load.closed_nodes = force > 0. ? 1 : 0;       // contact points closed (3D: the caller's stations)
   r.loaded_pairs += load.load_share > 1e-6;
   r.max_contact_pressure = std::max(r.max_contact_pressure, load.max_pressure);
   r.pairs.push_back(load);
