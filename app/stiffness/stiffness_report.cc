@@ -377,6 +377,13 @@ double steel_blank_inertia(const kinematics::GearSpec& gear, const std::string& 
 }
 } // namespace
 
+void check_own_pair_dynamics_input(const StiffnessParameters& p,
+                                   const kinematics::GearPairGeometry& pair)
+{
+  steel_blank_inertia(p.settings.scene.pair.pinion, "Pinion", pair);
+  steel_blank_inertia(p.settings.scene.pair.wheel, "Wheel", pair);
+}
+
 std::string own_pair_dynamics_input(const StiffnessParameters& p,
                                     const kinematics::GearPairGeometry& pair,
                                     const stiffness::StiffnessSweepResult& sweep)

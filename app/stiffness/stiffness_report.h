@@ -64,6 +64,11 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
                                     const kinematics::GearPairGeometry& pair,
                                     const stiffness::StiffnessSweepResult& sweep);
 std::string dynamics_cai_input(const dynamics::CaiParameters& cai);
+// Before a sweep of an own pair: the steel-blank inertias own_pair_dynamics_input will need
+// (InputError naming Gear pair/Pinion|Wheel/bore diameter), so that bad input is refused before
+// any work, not after the sweep while its files are written.
+void check_own_pair_dynamics_input(const StiffnessParameters& p,
+                                   const kinematics::GearPairGeometry& pair);
 // Single-pair stiffness samples for the Cai fit: at each position each loaded pair j carries
 // k_j = share_j·k at roll position p_ref + j [base pitches] (all pairs share one deflection,
 // so the mesh stiffness splits as the load does).
