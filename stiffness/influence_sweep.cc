@@ -844,6 +844,19 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       // planet–ring pair) above the exact path's, with plane stress +0.6 … +1.8 % and +1.0 …
       // +1.7 %, k 0.2 … 0.3 % nearer (docs/ltca.md §3 "End faces").
       problem.end_face.push_back(dim == 3 && (s == 0 || s + 1 == layers));
+      // A tip edge's layer is a wedge's, softer than the flank's half-space (docs/ltca.md §3
+      // "Tip edges"): the pinion's corner at E, the wheel's at A, each at its tip's transverse
+      // pressure angle (roll length over base radius).
+      const bool pinion_edge = unknown.edge && unknown.at == pair.contact_end;
+      const bool wheel_edge = unknown.edge && unknown.at == pair.contact_start;
+      problem.pinion_wedge.push_back(pinion_edge
+                                         ? tip_edge_wedge_factor(std::atan(
+                                               pair.contact_end / model.frame.pinion_base_radius()))
+                                         : 1.);
+      problem.wheel_wedge.push_back(wheel_edge ? tip_edge_wedge_factor(std::atan(
+                                                     std::abs(model.frame.t2 - pair.contact_start) /
+                                                     model.frame.wheel_base_radius()))
+                                               : 1.);
       problem.relative_radius.push_back(radius / helix.cos_base);
       problem.lever_ratio.push_back(unknown.line.pinion_lever);
       problem.strip.push_back(unknown.line.strip);

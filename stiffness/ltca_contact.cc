@@ -22,8 +22,19 @@ double hertz_layer_compression(double peak_pressure, double half_width, const La
   // On a traction-free end face σ_y = 0: ε_z = (σ_z − ν·σ_x)/E, about 1/(1−ν²) = 1.10 times the
   // plane-strain compression (the in-plane axis stresses of a half-plane do not depend on σ_y).
   if (body.end_face)
-    return (sigma_z - nu * sigma_x) / body.young_modulus;
-  return ((1. - nu * nu) * sigma_z - nu * (1. + nu) * sigma_x) / body.young_modulus;
+    return body.wedge_factor * (sigma_z - nu * sigma_x) / body.young_modulus;
+  return body.wedge_factor * ((1. - nu * nu) * sigma_z - nu * (1. + nu) * sigma_x) /
+         body.young_modulus;
+}
+
+double tip_edge_wedge_factor(double tip_pressure_angle)
+{
+  const double alpha = 0.5 * (0.5 * M_PI + tip_pressure_angle); // half the corner's angle
+  const double beta = 0.5 * M_PI - alpha;                       // the load off the bisector
+  const double c = std::cos(beta), s = std::sin(beta);
+  return 0.5 * M_PI *
+         (c * c / (alpha + 0.5 * std::sin(2. * alpha)) +
+          s * s / (alpha - 0.5 * std::sin(2. * alpha)));
 }
 
 namespace
@@ -224,14 +235,15 @@ LineContact near_field(const MeshContactProblem& problem, int j, double force)
   const double width = problem.width.empty() ? problem.face_width : problem.width[j];
   if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
     return strip_line_contact(force, width, problem.strip[j], problem.pinion, problem.wheel);
+  LayerBody pinion = problem.pinion, wheel = problem.wheel;
   if (j < static_cast<int>(problem.end_face.size()) && problem.end_face[j])
-  {
-    LayerBody pinion = problem.pinion, wheel = problem.wheel;
     pinion.end_face = wheel.end_face = true;
-    return hertz_line_contact(force, width, problem.relative_radius[j], pinion, wheel);
+  if (j < static_cast<int>(problem.pinion_wedge.size()))
+  {
+    pinion.wedge_factor = problem.pinion_wedge[j];
+    wheel.wedge_factor = problem.wheel_wedge[j];
   }
-  return hertz_line_contact(force, width, problem.relative_radius[j], problem.pinion,
-                            problem.wheel);
+  return hertz_line_contact(force, width, problem.relative_radius[j], pinion, wheel);
 }
 
 double lever(const MeshContactProblem& problem, int j)

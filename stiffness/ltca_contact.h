@@ -23,7 +23,18 @@ struct LayerBody
   // so the stress along the contact line vanishes there (σ_y = 0) and the layer is in plane
   // stress, not plane strain (docs/ltca.md §3 "End faces").
   bool end_face = false;
+  // -, the layer under a tip edge (a helical pair's tip corner touching beyond the path,
+  // docs/ltca.md §3 "Tip edges"): its compression over a half-space's (tip_edge_wedge_factor).
+  double wedge_factor = 1.;
 };
+
+// The compression of a wedge of interior angle π/2 + α_tip (a tooth's tip corner: its flank meets
+// the tip land at the flank's pressure angle there) loaded at its apex normal to its flank, over
+// a half-space's under the same load, along the load's line: Flamant's wedge (Johnson 1985 §2.2;
+// Timoshenko & Goodier §36), σ_r = −(P/r)·[cos β cos θ/(α + ½ sin 2α) + sin β sin θ/(α − ½ sin
+// 2α)] with the half-angle α = (π/2 + α_tip)/2 and the load β = π/2 − α off the bisector; the
+// ratio of σ_r on the load's line (θ = β) to the half-plane's 2P/(πr). 1 at α_tip = π/2.
+double tip_edge_wedge_factor(double tip_pressure_angle);
 
 // The compression (m) of the layer 0 ≤ z ≤ h of a plane-strain half-space under a Hertzian
 // pressure of peak p0 (Pa) and half-width a (m), on the symmetry axis: the integral of ε_z of
@@ -88,6 +99,8 @@ struct MeshContactProblem
   // Per unknown: 1 when its node plane lies on an end face of the face width (3D), whose layer
   // is in plane stress (LayerBody::end_face). Empty: none.
   std::vector<char> end_face;
+  // Per unknown: each body's LayerBody::wedge_factor (a tip edge's, else 1). Empty: all 1.
+  std::vector<double> pinion_wedge, wheel_wedge;
   LayerBody pinion, wheel;
 };
 

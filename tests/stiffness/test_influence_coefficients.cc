@@ -106,6 +106,24 @@ TEST(InfluenceCoefficients, HertzLayerApproachesWeber)
   EXPECT_NEAR(hertz_layer_compression(p0, a, deep) / weber_deep - 1., 0., 1e-5);
 }
 
+// A tip edge's layer (docs/ltca.md §3 "Tip edges"): Flamant's wedge over the half-plane. The
+// half-plane is the wedge of angle π (α_tip = π/2): 1. The quarter-plane (α_tip = 0: half-angle
+// π/4, the load normal to one face, π/4 off the bisector): (π/4)·[1/(π/4 + ½) + 1/(π/4 − ½)] =
+// 3.363 (Johnson 1985 §2.2). A blunter corner is stiffer; the layer scales by the factor.
+TEST(InfluenceCoefficients, TipEdgeWedge)
+{
+  EXPECT_NEAR(tip_edge_wedge_factor(0.5 * M_PI), 1., 1e-14);
+  EXPECT_NEAR(tip_edge_wedge_factor(0.),
+              0.25 * M_PI * (1. / (0.25 * M_PI + 0.5) + 1. / (0.25 * M_PI - 0.5)), 1e-14);
+  EXPECT_GT(tip_edge_wedge_factor(20. * M_PI / 180.), tip_edge_wedge_factor(32. * M_PI / 180.));
+  EXPECT_GT(tip_edge_wedge_factor(32. * M_PI / 180.), 1.);
+  const LayerBody steel{210e9, 0.3, 0.3e-3};
+  LayerBody edge = steel;
+  edge.wedge_factor = 1.4;
+  EXPECT_NEAR(hertz_layer_compression(1e9, 1e-4, edge) / hertz_layer_compression(1e9, 1e-4, steel),
+              1.4, 1e-14);
+}
+
 // Two identical pairs share the load equally; a pair whose gap exceeds the others' approach
 // stays unloaded and the load follows from the loaded pair alone (exact by construction).
 TEST(InfluenceCoefficients, ContactProblemByHand)
