@@ -1104,13 +1104,12 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
     // hand for the measurement: tests/helical/influence_helical.py --exact). Lead modifications on
     // helical teeth are built (each plane's transverse gap) and not measured.
     // Since session 29 (docs/ltca.md §3 "Tip edges"): the tip edges beyond the path are their
-    // own load case. Against the exact path's layer limit (Richardson 10/20 layers, h_c 0.075 mm)
-    // the small pair is within 1 % in k at β 5°, 10°, 15° (worst +0.92 %), TE 0.091 µm, shares
-    // 0.003, but K_Hβ is up to 5.8 % off at tip-edge positions (the exact K_Hβ itself moves
-    // 5-6 % from 10 to 20 layers there); the built-in pair (β 15°, its limit from 13 and 20
-    // layers at h_c 0.094 mm) k +1.77 % at 13 layers, +1.05 … +1.68 % at 20: the model moves by
-    // up to +1.0 % from 13 to 20 layers at its tip-edge positions, so it is not yet converged
-    // along the face there.
+    // own load case, their layer a wedge's. Against the exact path's layer limit (Richardson
+    // 10/20 layers, h_c 0.075 mm) the small pair is within 1 % in k at β 5°, 10°, 15° (worst
+    // +0.82 %), TE 0.066 µm, shares 0.009, but K_Hβ is up to 6.8 % off at tip-edge positions (the
+    // exact K_Hβ itself moves 5-6 % from 10 to 20 layers there); the built-in pair (β 15°, its
+    // limit from 13 and 20 layers at h_c 0.094 mm) k +1.66 % at 0.125 on 13 layers, +0.71 …
+    // +1.64 % on 20: not yet within the 1 %.
     if (settings.scene.pair.pinion.helix_angle != 0.)
       throw InputError(kinematics::field::gear(false, "helix_angle"),
                        "the 3D influence-coefficient model is built for helical pairs but not "
