@@ -1114,7 +1114,7 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
       throw InputError(kinematics::field::gear(false, "helix_angle"),
                        "the 3D influence-coefficient model is built for helical pairs but not "
                        "yet accepted (k up to 1.8 % off the exact path's layer limit on the "
-                       "built-in pair, K_Hβ up to 6 % where a contact line ends inside the face, "
+                       "built-in pair, K_Hβ up to 7 % where a contact line ends inside the face, "
                        "docs/ltca.md §3 \"Tip edges\"); use Stiffness/contact model = finite "
                        "element");
     // Lead crowning: each node plane's gap is geometry's lead removal there, so the planes must
