@@ -422,9 +422,9 @@ private:
   {
     if (edge)
     {
-      const auto edge = std::find(edges.begin(), edges.end(), std::pair(j, at == path_end));
+      const auto found = std::find(edges.begin(), edges.end(), std::pair(j, at == path_end));
       const std::size_t index =
-          edge_offset[s] + static_cast<std::size_t>(edge - edges.begin()) * directions;
+          edge_offset[s] + static_cast<std::size_t>(found - edges.begin()) * directions;
       return {index, index, 0.};
     }
     const auto [first, u] = locate_on_grid(grids[s], step, j, at);
