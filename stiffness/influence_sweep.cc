@@ -85,6 +85,16 @@ constexpr double matching_depth_cells = 3.;
 constexpr unsigned int min_layers_with_lead = 16;
 // -, the most layers an uncrowned 3D face is verified on (check_influence_settings).
 constexpr unsigned int max_layers_uncrowned = 8;
+// -, the fewest node planes a pair's crowned contact must load when it ends inside the face (and
+// the pair carries ≥ min_resolved_share of the load): fewer planes sample the load along the face
+// too coarsely for the per-plane Hertz layers. Measured 2026-12-04 (invariants case 29 of seed
+// 20261201: z 25/85, m 2, b 14.4 mm, T1 16.0 N·m, C_β 13 µm on both gears, Q1, 2 positions,
+// μ 0, 2 ranks, one run each; docs/ltca.md §3 "Lead modifications"): the model at 16, 24, 32
+// layers loads 5, 7, 11 planes, k 137.78, 136.95, 136.72 and 135.15, 134.30, 134.28 N/µm, its
+// own error against 32 layers +0.78/+0.64 % at 5 planes, +0.17/+0.01 % at 7. The default pair's
+// C_β 20 µm at 16 layers loads 7 planes (+0.50 % against the exact path at 24 layers, accepted).
+constexpr unsigned int min_loaded_planes = 7;
+constexpr double min_resolved_share = 0.25;
 // The load points lie this many cells inside the surface: the meshed flank is a chord polygon of
 // the involute. 3D: its sagitta h_f²/(8ρ) reaches 1 µm for h_f = 0.2 mm at ρ = 5 mm; 4 µm under a
 // read 0.6 mm deep changes nothing the read sees.
@@ -895,6 +905,55 @@ void check_grid_step(double step, double depth, const PairSeparation& separation
                          " mm must be at most half of it; use more points");
 }
 
+// A crowned pair's contact ends inside the face and, under a light load, spans few node planes:
+// there the model samples the line load too coarsely (min_loaded_planes). Such a run is refused
+// with the layers that would resolve it, never returned (exit 2 naming Mesh/layers).
+void check_crowned_contact_planes(
+    const std::vector<std::vector<GearMeshStiffnessResult>>& by_torque,
+    const FaceStations& stations, unsigned int layers)
+{
+  unsigned int fewest = std::numeric_limits<unsigned int>::max();
+  double from = 0., to = 0.; // m, the loaded z of the fewest
+  for (const auto& results : by_torque)
+    for (const GearMeshStiffnessResult& r : results)
+      for (const ToothPairLoad& load : r.pairs)
+      {
+        if (load.load_share < min_resolved_share)
+          continue;
+        unsigned int loaded = 0;
+        bool at_end = false;
+        double lo = std::numeric_limits<double>::max(), hi = -lo;
+        for (const FaceLoadPoint& point : r.face_load)
+          if (point.pair == load.pair && point.line_load > 0.)
+          {
+            ++loaded;
+            at_end |= point.z <= 0.5 * stations.layer ||
+                      point.z >= stations.z.back() - 0.5 * stations.layer;
+            lo = std::min(lo, point.z);
+            hi = std::max(hi, point.z);
+          }
+        if (!at_end && loaded > 0 && loaded < fewest)
+        {
+          fewest = loaded;
+          from = lo;
+          to = hi;
+        }
+      }
+  if (fewest >= min_loaded_planes)
+    return;
+  const unsigned int needed = static_cast<unsigned int>(
+      std::ceil(static_cast<double>(layers) * min_loaded_planes / fewest));
+  throw InputError(
+      geometry::field::mesh("layers"),
+      "the crowned contact is carried by only " + std::to_string(fewest) + " node planes (z " +
+          format_number(from * 1e3, 3) + " … " + format_number(to * 1e3, 3) + " mm of the face " +
+          format_number(stations.z.back() * 1e3, 3) + " mm): influence coefficients need " +
+          std::to_string(min_loaded_planes) +
+          " (at 5 planes k is 0.8 % off its layer limit; docs/ltca.md §3); use at "
+          "least " +
+          std::to_string(needed) + " layers or Stiffness/contact model = finite element");
+}
+
 // Rank 0's whole run: the FE body's scene and factorization, the coefficients, every position.
 template <int dim>
 InfluenceRun
@@ -1024,6 +1083,9 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
                                                                torques, warm, info.newton_steps);
                                   });
   info.contact_time = seconds_since(start);
+  if (dim == 3 && (settings.scene.pinion_modifications.lead.crowning != 0. ||
+                   settings.scene.wheel_modifications.lead.crowning != 0.))
+    check_crowned_contact_planes(run.by_torque, stations, layers);
   return run;
 }
 } // namespace
@@ -1122,7 +1184,9 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
     // default pair, Q1, 4 positions, μ 0; docs/ltca.md §3 "Lead modifications"): C_β = 10 µm on
     // the pinion against the exact path at 16 layers, the fast model at 8 layers k +1.42 %, at 12
     // +0.74 %, at 16 +0.41 % (TE −0.03 µm, K_Hβ 0.76 %); C_β = 20 µm against the exact path at 24
-    // layers, at 16 +0.50 % (TE −0.04 µm, K_Hβ 0.39 %).
+    // layers, at 16 +0.50 % (TE −0.04 µm, K_Hβ 0.39 %). A light load's crowned contact may end
+    // well inside the face: its node planes are counted after the solve
+    // (check_crowned_contact_planes).
     // A lead slope f_Hβ loads one end of the face: there the fast model's K_Hβ is 11-13 % above
     // the exact path's at 16 layers (3.16 against 2.79; k within 0.31 %): the free end of the
     // face is not in the per-plane plane-strain near field. End relief: not measured.
