@@ -13,4 +13,10 @@ namespace gearstiff::app
 {
 void report_face_load(CommandContext& context,
                       const std::vector<stiffness::GearMeshStiffnessResult>& positions);
+// The exact path's contact that ends inside the face on few node planes (a light load on crowned
+// teeth): text `face resolution` with the fewest planes, where, and the layers that would give
+// enough. Nothing when every loaded contact reaches an end of the face or spans enough planes.
+void report_face_resolution(Report& report,
+                            const std::vector<stiffness::GearMeshStiffnessResult>& positions,
+                            unsigned int layers);
 } // namespace gearstiff::app
