@@ -74,7 +74,7 @@ EXACT = ["Stiffness/sweep mesh=per position"]
 # of pairs −1, 0, +1, K_Hβ, the peak pressure (MPa). `small`: 9.5 s, 0.62 GB, 52k-61k DoFs a
 # position; `built-in`: 92 s, 2.9 GB, 255k-268k DoFs a position. The fast model refuses helical
 # pairs until it meets issue 47's tolerances (docs/ltca.md §3 "Helical"): lift the refusal in
-# stiffness/influence_sweep.cc (check_influence_settings) by hand to run this script.
+# stiffness/influence_checks.cc (check_influence_settings) by hand to run this script.
 STORED = {
     "small": {"k": [144.1177, 144.844, 122.9586, 100.8041], "te": [7.6685, 7.6301, 8.9882, 10.9636],
               "share": [[0, 0.4439, 0.5561], [0, 0.5183, 0.4817], [0, 0.7303, 0.2697], [0, 1, 0]],

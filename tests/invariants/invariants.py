@@ -662,7 +662,7 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets):
             raise CaseFailure(f"influence 3D crowned: exit 2 without the layers' refusal: "
                               f"{stderr.strip()[-400:]}")
         planes, needed = int(refusal.group(1)), int(refusal.group(2))
-        if planes >= 7:  # stiffness/influence_sweep.cc, min_loaded_planes
+        if planes >= 7:  # stiffness/influence_checks.cc, min_loaded_planes
             raise CaseFailure(f"influence 3D crowned: refused on {planes} planes (7 resolve)")
         check_close("influence 3D crowned refusal: the layers named", needed,
                     math.ceil(layers * 7 / planes), 0.)

@@ -1,0 +1,105 @@
+// The influence-coefficient model's geometry (stiffness/influence_geometry.h).
+#include "stiffness/influence_geometry.h"
+
+#include "geometry/involute_tooth.h"
+#include "geometry/scene_gear_pair.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <limits>
+
+namespace gearstiff::stiffness::influence
+{
+FaceStations face_stations(int dim, unsigned int layers, double face_width)
+{
+  FaceStations stations;
+  if (dim == 2)
+  {
+    stations.z = {0.};
+    stations.width = {face_width};
+    return stations;
+  }
+  stations.layer = face_width / layers;
+  for (unsigned int i = 0; i <= layers; ++i)
+  {
+    stations.z.push_back(i * stations.layer);
+    stations.width.push_back(i == 0 || i == layers ? 0.5 * stations.layer : stations.layer);
+  }
+  return stations;
+}
+
+double on_path_width(const FaceStations& stations, const Helix& helix,
+                     const kinematics::GearPairGeometry& pair, std::size_t s, double at)
+{
+  if (helix.rate == 0. || stations.layer == 0.)
+    return stations.width[s];
+  const double z_s = stations.z[s];
+  double low = std::max(0., z_s - 0.5 * stations.layer);
+  double high = std::min(stations.z.back(), z_s + 0.5 * stations.layer);
+  const double z_a = z_s + (pair.contact_start - at) / helix.rate;
+  const double z_e = z_s + (pair.contact_end - at) / helix.rate;
+  low = std::max(low, std::min(z_a, z_e));
+  high = std::min(high, std::max(z_a, z_e));
+  return std::max(0., high - low);
+}
+
+double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
+{
+  const kinematics::GearPairGeometry& pair = frame.pair;
+  const Eigen::Vector2d o1(0., 0.), o2(frame.wheel_centre[0], frame.wheel_centre[1]);
+  const Eigen::Vector2d u(frame.u[0], frame.u[1]);
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+  { return a.x() * b.y() - a.y() * b.x(); };
+  const auto turn = [](const Eigen::Vector2d& p, const Eigen::Vector2d& c, double angle)
+  {
+    const Eigen::Vector2d d = p - c;
+    return Eigen::Vector2d(c.x() + std::cos(angle) * d.x() - std::sin(angle) * d.y(),
+                           c.y() + std::sin(angle) * d.x() + std::cos(angle) * d.y());
+  };
+  const double r_b1 = frame.pinion_base_radius(), r_b2 = frame.wheel_base_radius();
+  // A counter-clockwise turn φ moves the pinion's contact by +s₁·r_b1·φ along ℓ, the wheel's by
+  // −s₂·r_b2·φ (checked: the curves so generated cross the line of action at right angles).
+  const double s1 = cross(geometry::line_of_action_point(pair, 0.) - o1, u) > 0. ? 1. : -1.;
+  const double s2 = cross(geometry::line_of_action_point(pair, frame.t2) - o2, -u) > 0. ? 1. : -1.;
+  const auto angle_to =
+      [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& c)
+  { return std::atan2(cross(from - c, to - c), (from - c).dot(to - c)); };
+  if (!at_start)
+  {
+    const double at = pair.contact_end + beyond;
+    const Eigen::Vector2d corner =
+        turn(geometry::line_of_action_point(pair, pair.contact_end), o1, beyond * s1 / r_b1);
+    const double rho = std::sqrt(std::max(0., (corner - o2).squaredNorm() - r_b2 * r_b2));
+    const double l_r = frame.t2 - rho;
+    const double alpha = angle_to(corner, geometry::line_of_action_point(pair, l_r), o2);
+    return std::abs(l_r + alpha * s2 * r_b2 - at);
+  }
+  const double at = pair.contact_start - beyond;
+  const Eigen::Vector2d corner =
+      turn(geometry::line_of_action_point(pair, pair.contact_start), o2, beyond * s2 / r_b2);
+  const double l_r = std::sqrt(std::max(0., corner.squaredNorm() - r_b1 * r_b1));
+  const double alpha = angle_to(corner, geometry::line_of_action_point(pair, l_r), o1);
+  return std::abs(l_r - alpha * s1 * r_b1 - at);
+}
+
+PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const PairFrame& frame)
+    : pinion(settings.scene.pinion_modifications.all_teeth),
+      wheel(settings.scene.wheel_modifications.all_teeth),
+      pinion_lead(settings.scene.pinion_modifications.lead),
+      wheel_lead(settings.scene.wheel_modifications.lead), face_width(frame.pair.common_face_width),
+      t2(frame.t2)
+{
+  for (const bool is_wheel : {false, true})
+  {
+    const kinematics::GearSpec& gear =
+        is_wheel ? settings.scene.pair.wheel : settings.scene.pair.pinion;
+    const kinematics::GearGeometry& derived = is_wheel ? frame.pair.wheel : frame.pair.pinion;
+    geometry::InvoluteToothSpec spec = geometry::involute_tooth_spec(gear, derived.tip_diameter);
+    spec.required_form_diameter = derived.active_profile_start;
+    const geometry::ToothProfile tooth =
+        geometry::generate_involute_tooth(spec, settings.scene.resolution);
+    (is_wheel ? wheel_range : pinion_range) =
+        geometry::flank_roll_range(frame.pair, tooth, is_wheel);
+  }
+}
+} // namespace gearstiff::stiffness::influence
