@@ -83,6 +83,8 @@ PairResult<dim> ContactProblem<dim>::pair_result(const Pair& pair,
     const double normal_force = -(force * node.normal);
     const Tensor<1, dim> tangential_force = force + normal_force * node.normal;
     point.state = pair.memory[k].state;
+    point.area = node.area;
+    point.normal = node.normal;
     const Tensor<1, dim> relative = relative_displacement(node, displacement);
     point.initial_gap = node.initial_gap;
     point.gap = point.state == NodeState::open ? node.initial_gap - relative * node.normal : 0.;

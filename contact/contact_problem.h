@@ -85,6 +85,10 @@ struct SurfacePoint
   double gap = 0.;              // m, current normal gap (0 when closed)
   double initial_gap = 0.;      // m
   dealii::Tensor<1, dim> slip;  // m, accumulated tangential slip (slave relative to master)
+  // m² (m in 2D), the slave node's paired share of the surface (its mortar weight): pressure ×
+  // area is the node's normal force, the quantity loads are summed from (stiffness/face_load.h).
+  double area = 0.;
+  dealii::Tensor<1, dim> normal; // -, unit, the slave's outward normal at the node
   NodeState state = NodeState::open;
 };
 

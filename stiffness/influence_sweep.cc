@@ -514,15 +514,16 @@ position_result(const PositionModel& model, double position, const std::vector<i
         peak_at = &unknowns[item];
       peak = std::max(peak, solution.contact[item].peak_pressure);
       widest = std::max(widest, solution.contact[item].half_width);
-      // N/m: the transverse load per unit of face width, the exact path's ∫ p ds across the
-      // transverse profile at z (stiffness/face_load.h): the normal force's transverse part
+      // N/m: the transverse load per unit of face width, as the exact path's plane forces over
+      // the plane's width (stiffness/face_load.h): the normal force's transverse part
       // N·cos β_b over the station's width, so that ∫ w dz = F_bt on both paths. (Until session
       // 32 this was N over the width, 1/cos β_b = +3.2 % above the exact path's on the built-in
       // helical pair: measured ∫ w dz 2003 N against its 1937 N and F_bt 1942 N.)
       if (dim == 3)
         r.face_load.push_back(
             {j, model.stations.z[s],
-             solution.force[item] * model.helix.cos_base / model.stations.width[s]});
+             solution.force[item] * model.helix.cos_base / model.stations.width[s],
+             model.stations.width[s]});
     }
     add_pair_load(r, model.frame, position, j, force, total, peak, widest);
     if (dim == 3)

@@ -593,8 +593,10 @@ void GearMeshStiffness<dim>::evaluate_pairs(const contact::ContactResults<dim>& 
   {
     result.face_load.clear();
     for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
-      append_face_load(contact.pairs[k], candidate_pairs[k].pair, result.pinion_base_radius,
-                       result.face_load);
+      append_face_load(
+          contact.pairs[k], candidate_pairs[k].pair,
+          {pair.common_face_width, settings.scene.mesh.layers, settings.elasticity.degree},
+          result.face_load);
     result.face_load_factor = summarise_face_load(result.face_load).factor;
     mesh_forces(contact, candidate_pairs.size(), pair.working_pressure_angle,
                 0.5 * pair.common_face_width, result);
