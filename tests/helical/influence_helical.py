@@ -74,7 +74,7 @@ EXACT = ["Stiffness/sweep mesh=per position"]
 # widths (stiffness/face_load.h), not the pressure integrated again across the profile, which read
 # low on a plane where a contact line starts. Moved: small −1.83 % at 0.125; small-15-fine −1.51 %
 # at 0.125, +5.31 % at 0.875; built-in +3.66, −0.69, +8.56, −2.61 %; built-in-fine +1.47, −0.38,
-# +4.53, −0.70 %; small-fine not at all. LIMIT's 20-layer K_Hβ (richardson, 2 ranks): small-15-fine
+# +4.53, −0.70 %; built-in-fine-20 −1.74, −0.20, +5.54, −1.09 % (338 s); small-fine not at all. LIMIT's 20-layer K_Hβ (richardson, 2 ranks): small-15-fine
 # −1.60 % at 0.125, +3.33 % at 0.875; small-fine and small-5-fine not at all.
 # The exact path's values (regression: measured 2026-12-03 with the settings above, the exact
 # per-position sweep, `gearstiff` of main a4b173a, one run each): k (N/µm), TE (µm), the shares
@@ -120,7 +120,7 @@ STORED["built-in-fine-20"] = {
     "k": [389.3218, 394.3983, 368.3328, 370.9951], "te": [4.9896, 4.9253, 5.2739, 5.2360],
     "share": [[0, 0.3867, 0.6133], [0, 0.5486, 0.4514], [0.0452, 0.6768, 0.278],
               [0.2213, 0.6913, 0.0874]],
-    "K_Hb": [1.3164, 1.3393, 1.4881, 1.4667], "p_max": [645.6, 970.6, 1059.0, 1353.0]}
+    "K_Hb": [1.2935, 1.3366, 1.5706, 1.4507], "p_max": [645.6, 970.6, 1059.0, 1353.0]}
 
 # The exact path's layer limit (regression: measured 2026-12-03, session 29, `gearstiff` of main
 # 5e49a9e, the exact per-position sweep of the case with `Mesh/layer extrapolation = richardson`
