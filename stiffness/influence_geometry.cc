@@ -3,6 +3,7 @@
 
 #include "geometry/involute_tooth.h"
 #include "geometry/scene_gear_pair.h"
+#include "stiffness/face_load.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -20,10 +21,13 @@ FaceStations face_stations(int dim, unsigned int layers, double face_width)
     return stations;
   }
   stations.layer = face_width / layers;
+  // The exact path's Q1 node planes, with their widths (stiffness/face_load.h): the line loads
+  // of both paths are forces over the same widths.
+  const FacePlanes planes{face_width, layers, 1};
   for (unsigned int i = 0; i <= layers; ++i)
   {
     stations.z.push_back(i * stations.layer);
-    stations.width.push_back(i == 0 || i == layers ? 0.5 * stations.layer : stations.layer);
+    stations.width.push_back(planes.width(stations.z.back()));
   }
   return stations;
 }

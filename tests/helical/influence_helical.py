@@ -74,8 +74,9 @@ EXACT = ["Stiffness/sweep mesh=per position"]
 # widths (stiffness/face_load.h), not the pressure integrated again across the profile, which read
 # low on a plane where a contact line starts. Moved: small −1.83 % at 0.125; small-15-fine −1.51 %
 # at 0.125, +5.31 % at 0.875; built-in +3.66, −0.69, +8.56, −2.61 %; built-in-fine +1.47, −0.38,
-# +4.53, −0.70 %; built-in-fine-20 −1.74, −0.20, +5.54, −1.09 % (338 s); small-fine not at all. LIMIT's 20-layer K_Hβ (richardson, 2 ranks): small-15-fine
-# −1.60 % at 0.125, +3.33 % at 0.875; small-fine and small-5-fine not at all.
+# +4.53, −0.70 %; built-in-fine-20 −1.74, −0.20, +5.54, −1.09 % (338 s); small-fine not at all.
+# LIMIT's 20-layer K_Hβ (richardson, 2 ranks): small-15-fine −1.60 % at 0.125, +3.33 % at 0.875;
+# small-fine and small-5-fine not at all.
 # The exact path's values (regression: measured 2026-12-03 with the settings above, the exact
 # per-position sweep, `gearstiff` of main a4b173a, one run each): k (N/µm), TE (µm), the shares
 # of pairs −1, 0, +1, K_Hβ, the peak pressure (MPa). `small`: 9.5 s, 0.62 GB, 52k-61k DoFs a
