@@ -247,6 +247,39 @@ void parse_modification_stage(ParameterHandler& prm, const std::string& variants
                                           "Gear pair scene/pinion torque)");
 }
 
+// The work of an influence-coefficient sweep (s): its FE body once (scene, factorization,
+// coefficients), then a small contact problem a position and torque, on rank 0 alone (the other
+// ranks wait: stiffness::influence_sweep). The exact path's seconds a position do not apply: they
+// refused a 3D sweep of 200 positions as 1.3 h (its 23.3 s a position) that the fast model runs
+// in ~8 s (found 2026-12-04). Measured on one rank (docs/ltca.md "Cost", the sweep's own times):
+// 2D Q2 default pair 1.84 s once (59.4k DoFs); 3D Q1 8 layers 6.40 s once (75.7k DoFs); the
+// contact problems ≤ 0.25 ms a position and torque (the helical built-in pair at β 15°, 32
+// positions 8 ms, 8 torques × 32 positions 20 ms, 2026-12-04; spur 3D 0.8 ms for 32). Another
+// degree scales the body by (p / p_measured)^dim, more layers by layers / 8; each variant is a
+// sweep of its own.
+double check_influence_sweep_work(const StiffnessParameters& p)
+{
+  const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  const unsigned int dim = s.scene.mesh.dimension;
+  const double body = (dim == 3 ? 6.40 * s.scene.mesh.layers / 8. : 1.84) *
+                      std::pow(s.elasticity.degree / (dim == 3 ? 1. : 2.), double(dim));
+  const double solves = double(p.sweep.positions) * std::max<std::size_t>(1, s.torques.size());
+  constexpr double seconds_a_solve = 0.25e-3;
+  const double seconds = (body + solves * seconds_a_solve) * (1. + double(p.variants.size()));
+  if (seconds <= limits::max_run_seconds)
+    return seconds;
+  // Only the contact problems can push it there (~1.4·10⁷ positions × torques).
+  throw InputError(s.torques.size() > 1 ? "Stiffness/torques" : "Stiffness/sweep positions",
+                   std::to_string(p.sweep.positions) + " positions" +
+                       (s.torques.size() > 1 ? " × " + std::to_string(s.torques.size()) + " torques"
+                                             : std::string()) +
+                       " would take at least " + format_number(seconds / 3600., 3) +
+                       " h with influence coefficients (" +
+                       format_number(seconds_a_solve * 1e3, 2) + " ms a contact problem; limit " +
+                       format_number(limits::max_run_seconds / 3600., 2) +
+                       " h, docs/limits.md): fewer positions or torques");
+}
+
 // The work of a sweep (s, on the ranks of MPI_COMM_WORLD), estimated from what it will solve
 // before the positions are allocated, and refused above limits::max_run_seconds naming the
 // parameter that pushed it there (2·10⁹ positions were allocated; a 3D sweep of 5000
@@ -262,6 +295,8 @@ void parse_modification_stage(ParameterHandler& prm, const std::string& variants
 double check_sweep_work(const StiffnessParameters& p)
 {
   const stiffness::GearMeshStiffnessSettings& s = p.settings;
+  if (s.contact_model == stiffness::ContactModel::influence_coefficients)
+    return check_influence_sweep_work(p);
   const bool once = p.sweep.mesh == stiffness::SweepMesh::once;
   const unsigned int dim = s.scene.mesh.dimension;
   const double measured =

@@ -135,8 +135,14 @@ stiffness::StiffnessSweepResult solve_sweep(const StiffnessParameters& p, Comman
   context.pcout << label << ": " << p.sweep.positions << " positions over " << p.sweep.base_pitches
                 << " base pitch(es) on " << ranks << " rank(s), estimated at least "
                 << format_number(p.estimated_seconds, 2) << " s in all" << std::endl;
-  // From the rank that solved the position (each takes its own, fem::distribute_items).
-  const auto progress = context.progress_counter(label, double(p.sweep.positions) / ranks);
+  // From the rank that solved the position (each takes its own, fem::distribute_items). The
+  // influence-coefficient model reports its once-per-sweep steps instead (rank 0 alone): a
+  // position count and a time left would be wrong for them.
+  const auto counter = context.progress_counter(label, double(p.sweep.positions) / ranks);
+  const std::function<void(const std::string&)> steps = [&context, &label](const std::string& text)
+  { context.progress(label, text); };
+  const auto& progress =
+      settings.contact_model == stiffness::ContactModel::influence_coefficients ? steps : counter;
   return with_parameter_names(
       stiffness_parameter_names(),
       [&]
