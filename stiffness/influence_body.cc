@@ -12,6 +12,8 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
 #include <map>
 
 namespace gearstiff::stiffness::influence
@@ -262,29 +264,81 @@ PointFunctional point_functional(const BodyModel<dim>& model, const Point<dim>& 
 } // namespace
 
 template <int dim>
-BodyModel<dim> factor_body_model(const GearMeshStiffnessSettings& settings, const std::string& file)
+BodyModel<dim> read_body_model(const std::string& file)
 {
   BodyModel<dim> model;
+  model.scene = std::make_unique<Triangulation<dim>>();
+  fem::read_msh<dim>(file, 1., *model.scene, "scene file");
+  return model;
+}
+
+namespace
+{
+// The cells of `scene` of the material `body`, with their faces' boundary ids, as a
+// triangulation of their own: one gear of the scene. The cells keep their vertex order (they
+// are consistently oriented in the scene).
+template <int dim>
+void one_body(const Triangulation<dim>& scene, types::material_id body, Triangulation<dim>& result)
+{
+  std::vector<CellData<dim>> cells;
+  SubCellData faces;
+  for (const auto& cell : scene.active_cell_iterators())
+  {
+    if (cell->material_id() != body)
+      continue;
+    CellData<dim> data(cell->n_vertices());
+    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+      data.vertices[v] = cell->vertex_index(v);
+    data.material_id = body;
+    data.manifold_id = cell->manifold_id();
+    cells.push_back(data);
+    for (const auto& face : cell->face_iterators())
+      if (face->at_boundary() && face->boundary_id() != 0)
+      {
+        CellData<dim - 1> face_data(face->n_vertices());
+        for (unsigned int v = 0; v < face->n_vertices(); ++v)
+          face_data.vertices[v] = face->vertex_index(v);
+        face_data.boundary_id = face->boundary_id();
+        face_data.manifold_id = face->manifold_id();
+        if constexpr (dim == 2)
+          faces.boundary_lines.push_back(face_data);
+        else
+          faces.boundary_quads.push_back(face_data);
+      }
+  }
+  std::vector<Point<dim>> vertices = scene.get_vertices();
+  GridTools::delete_unused_vertices(vertices, cells, faces);
+  result.create_triangulation(vertices, cells, faces);
+}
+} // namespace
+
+template <int dim>
+void factor_body_model(const GearMeshStiffnessSettings& settings, BodyModel<dim>& model, bool wheel)
+{
+  model.factorization.reset(); // one factor in memory at a time
+  model.locator.reset();
+  model.system.reset();
   fem::LinearSolverParameters direct = settings.linear_solver;
   direct.method = fem::LinearSolverMethod::direct_mumps; // the coefficients need a factorization
   model.system =
       std::make_unique<fem::ElasticSystem<dim>>(MPI_COMM_SELF, settings.elasticity, direct);
-  fem::read_msh<dim>(file, 1., model.system->triangulation(), "scene file");
-  model.system->set_materials({{geometry::scene_ids::pinion_body, settings.material},
-                               {geometry::scene_ids::wheel_body, settings.material}},
-                              "material");
+  const auto body = static_cast<types::material_id>(wheel ? geometry::scene_ids::wheel_body
+                                                          : geometry::scene_ids::pinion_body);
+  one_body(*model.scene, body, model.system->triangulation());
+  model.system->set_materials({{body, settings.material}}, "material");
   model.system->setup_system();
   model.locator = std::make_unique<CellLocator<dim>>(model.system->get_dof_handler());
   AffineConstraints<double> constraints;
   fem::add_prescribed_displacement(
-      fem::boundary_nodes(model.system->get_dof_handler(),
-                          {static_cast<types::boundary_id>(geometry::scene_ids::pinion_bore),
-                           static_cast<types::boundary_id>(geometry::scene_ids::wheel_bore)}),
+      fem::boundary_nodes(
+          model.system->get_dof_handler(),
+          {static_cast<types::boundary_id>(wheel ? geometry::scene_ids::wheel_bore
+                                                 : geometry::scene_ids::pinion_bore)}),
       Tensor<1, dim>(), constraints);
   constraints.close();
   model.factorization = std::make_unique<fem::StiffnessFactorization<dim>>(
       *model.system, constraints, Vector<double>());
-  return model;
+  model.wheel = wheel;
 }
 
 template <int dim>
@@ -373,8 +427,10 @@ geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings
 
 template struct CellLocator<2>;
 template struct CellLocator<3>;
-template BodyModel<2> factor_body_model<2>(const GearMeshStiffnessSettings&, const std::string&);
-template BodyModel<3> factor_body_model<3>(const GearMeshStiffnessSettings&, const std::string&);
+template BodyModel<2> read_body_model<2>(const std::string&);
+template BodyModel<3> read_body_model<3>(const std::string&);
+template void factor_body_model<2>(const GearMeshStiffnessSettings&, BodyModel<2>&, bool);
+template void factor_body_model<3>(const GearMeshStiffnessSettings&, BodyModel<3>&, bool);
 template std::vector<std::vector<double>> body_compliance<2>(const BodyModel<2>&,
                                                              const std::vector<BodyPoint<2>>&,
                                                              const std::vector<BodyPoint<2>>&);

@@ -122,20 +122,28 @@ struct CellLocator
   explicit CellLocator(const dealii::DoFHandler<dim>& dof_handler);
 };
 
-// The FE body model: both gears of one scene, both bores clamped (the pinion's rigid turn is
-// the contact problem's approach e), K factored once.
+// The FE body model: the gears of one scene, each bore clamped (the pinion's rigid turn is the
+// contact problem's approach e). The gears are separate bodies, so each gear's coefficients need
+// only its own mesh and factor: the model holds the scene as read and, in turn, one gear's
+// system, factored (docs/ltca.md "Cost": on two ranks each takes one gear).
 template <int dim>
 struct BodyModel
 {
-  std::unique_ptr<fem::ElasticSystem<dim>> system;
+  std::unique_ptr<dealii::Triangulation<dim>> scene; // both gears, as read
+  std::unique_ptr<fem::ElasticSystem<dim>> system;   // the gear of `wheel` alone
   std::unique_ptr<fem::StiffnessFactorization<dim>> factorization;
   std::unique_ptr<CellLocator<dim>> locator; // the cell search of the flank grid points
+  bool wheel = false;                        // which gear `system` holds
 };
-// `settings.elasticity`, `.material` and `.linear_solver` (made direct: the coefficients need a
-// factorization) on the scene `file`.
+// Reads the scene `file` on this rank alone (no system yet).
 template <int dim>
-BodyModel<dim> factor_body_model(const GearMeshStiffnessSettings& settings,
-                                 const std::string& file);
+BodyModel<dim> read_body_model(const std::string& file);
+// Sets up and factors the pinion's (`wheel` false) or the wheel's body of `model`, replacing the
+// other's: `settings.elasticity`, `.material` and `.linear_solver` (made direct: the
+// coefficients need a factorization), on MPI_COMM_SELF.
+template <int dim>
+void factor_body_model(const GearMeshStiffnessSettings& settings, BodyModel<dim>& model,
+                       bool wheel);
 
 // A load: unit total force (N) along `direction`, shared by `points` with `weights` (Σ = 1).
 // A read: the displacement along `direction` at `points.front()` (weights ignored).

@@ -16,11 +16,13 @@
 #include "stiffness/ltca_contact.h"
 
 #include <algorithm>
+#include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 namespace gearstiff::stiffness
 {
@@ -29,7 +31,7 @@ using namespace influence;
 
 namespace
 {
-// Rank 0's whole run: scene, FE body, coefficients, positions (broadcast to every rank).
+// The run's results: every position (solved on rank 0) and the model's report, on every rank.
 struct InfluenceRun
 {
   std::vector<std::vector<GearMeshStiffnessResult>> by_torque; // [torque][position]
@@ -39,6 +41,32 @@ struct InfluenceRun
   {
     archive& by_torque;
     archive& info;
+  }
+};
+
+// The scene step of the run: rank 0 meshes, every rank reads rank 0's file (each rank's scratch
+// folder is its own).
+struct SceneStep
+{
+  double time = 0.;               // s, wall
+  double reference_position = 0.; // m, ℓ_s
+  std::string file;               // rank 0's
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& time& reference_position& file;
+  }
+};
+
+// One gear's coefficients, computed on the rank that took the gear.
+struct GearCoefficients
+{
+  unsigned int wheel = 0;
+  std::vector<std::vector<double>> coefficients; // m/N, [load][read]
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& wheel& coefficients;
   }
 };
 
@@ -208,7 +236,9 @@ public:
   // meshed flank lies under the nominal involute; `lead(z, wheel)` (m) the lead modification's.
   // `tilted`: the flanks are modified, so force lines turn (PairLine) and the coefficients
   // across the normal are computed too.
-  FlankCompliance(const BodyModel<dim>& model, const PairFrame& frame, const Helix& helix,
+  // The items' load and read points of both gears (loads(), reads()); their coefficients follow
+  // with set_coefficients, computed where the caller chooses (a gear a rank, docs/ltca.md "Cost").
+  FlankCompliance(const PairFrame& frame, const Helix& helix,
                   std::vector<std::vector<FlankGrid>> grids, double step, double depth,
                   double inset, const FaceStations& stations,
                   const std::function<double(double, bool)>& removal,
@@ -219,7 +249,7 @@ public:
   {
     for (const bool wheel : {false, true})
     {
-      std::vector<BodyPoint<dim>> loads, reads;
+      std::vector<BodyPoint<dim>>&loads = load_points[wheel], &reads = read_points[wheel];
       offset.clear();
       edge_offset.clear();
       for (std::size_t s = 0; s < stations.size(); ++s)
@@ -240,8 +270,16 @@ public:
                                at_end ? frame.pair.contact_end : frame.pair.contact_start, wheel, d,
                                inset, depth, stations, s, true, removal, lead, loads, reads);
       }
-      (wheel ? wheel_c : pinion_c) = body_compliance(model, loads, reads);
     }
+  }
+
+  // The items' unit loads and reads of the pinion (`wheel` false) or the wheel.
+  const std::vector<BodyPoint<dim>>& loads(bool wheel) const { return load_points[wheel]; }
+  const std::vector<BodyPoint<dim>>& reads(bool wheel) const { return read_points[wheel]; }
+  // m/N, [load][read] of one gear: body_compliance of its loads() and reads().
+  void set_coefficients(bool wheel, std::vector<std::vector<double>> coefficients)
+  {
+    (wheel ? wheel_c : pinion_c) = std::move(coefficients);
   }
 
   // C (m/N), both gears, station s of pair j at ℓ_j loaded, station t of pair k at ℓ_k read,
@@ -277,7 +315,7 @@ public:
     return std::find(edges.begin(), edges.end(), std::pair(j, at_end)) != edges.end();
   }
   // The load points of one gear (grid points × stations).
-  std::size_t n_points() const { return pinion_c.size() / directions; }
+  std::size_t n_points() const { return load_points[0].size() / directions; }
 
 private:
   // An unknown's items: the first of the two grid points about its ℓ, the next one and the
@@ -307,6 +345,7 @@ private:
   double path_end = 0.;                    // m, E
   std::vector<std::size_t> offset;         // the first item of each station
   std::vector<std::size_t> edge_offset;    // the first tip-edge item of each station
+  std::vector<BodyPoint<dim>> load_points[2], read_points[2]; // [wheel]
   std::vector<std::vector<double>> pinion_c, wheel_c;
 };
 
@@ -678,56 +717,13 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                        });
 }
 
-// Rank 0's whole run: the FE body's scene and factorization, the coefficients, every position.
+// The flank grids of the sweep and their items (no coefficients yet); sets info.flanks.
 template <int dim>
-InfluenceRun
-run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPairGeometry& pair,
-              const std::vector<double>& positions, const std::vector<double>& torques,
-              const std::string& file, const std::function<void(const std::string&)>& progress)
+FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
+                                 const std::vector<double>& positions, const FaceStations& stations,
+                                 const Helix& helix, const PairFrame& frame,
+                                 const PairSeparation& separation, InfluenceModelInfo& info)
 {
-  GearMeshStiffnessSettings settings = given;
-  settings.elasticity.thickness = pair.common_face_width; // as GearMeshStiffness: b (2D)
-  const unsigned int layers = dim == 3 ? settings.scene.mesh.layers : 1;
-  const FaceStations stations = face_stations(dim, layers, pair.common_face_width);
-  const std::string model_name =
-      dim == 3 ? "influence coefficients (3D)" : "influence coefficients";
-  InfluenceRun run;
-  InfluenceModelInfo& info = run.info;
-  info.grid_points = settings.influence_grid_points;
-  info.flank_cell_size = flank_cell_modules(dim) * pair.spec.pinion.normal_module *
-                         (pair.spec.pinion.helix_angle != 0. ? helical_flank_cell_factor : 1.);
-  info.matching_depth = matching_depth_cells * info.flank_cell_size;
-  info.grid_step = pair.path_of_contact / (info.grid_points - 1);
-  PairFrame frame(pair);
-  const Helix helix(pair);
-  // The designed separation in the transverse plane: a helical pair's normal amounts over
-  // cos β_b (geometry::transverse_section_spec, as the exact path's unloaded TE).
-  GearMeshStiffnessSettings section = settings;
-  section.scene = geometry::transverse_section_spec(settings.scene);
-  const PairSeparation separation(section, frame);
-  check_grid_step(info.grid_step, info.matching_depth, separation);
-
-  auto start = std::chrono::steady_clock::now();
-  const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
-      body_scene(settings, pair, positions, info.flank_cell_size,
-                 band_cell_factor(dim) * info.flank_cell_size, info.matching_depth, dim),
-      file);
-  info.scene_time = seconds_since(start);
-  frame.scene_position = scene.reference_position;
-
-  start = std::chrono::steady_clock::now();
-  const BodyModel<dim> model = factor_body_model<dim>(settings, file);
-  info.n_dofs = model.system->get_dof_handler().n_dofs();
-  info.factorization_time = seconds_since(start);
-  if (progress)
-    progress(model_name + ": FE body " + std::to_string(info.n_dofs) + " DoFs, h_f " +
-             format_number(info.flank_cell_size * 1e3, 3) + " mm, " +
-             (dim == 3 ? std::to_string(layers) + " layers, " : std::string()) + "read in " +
-             format_number(info.factorization_time - model.factorization->factorization_time(), 3) +
-             " s, assembled and factored in " +
-             format_number(model.factorization->factorization_time(), 3) + " s");
-
-  start = std::chrono::steady_clock::now();
   // Each station's grids cover the ℓ its plane sees in the sweep (a helical pair's: the
   // positions shifted by rate·(z − z₀)).
   std::vector<std::vector<FlankGrid>> grids;
@@ -783,34 +779,148 @@ run_influence(const GearMeshStiffnessSettings& given, const kinematics::GearPair
             break;
           }
         }
-  const FlankCompliance<dim> compliance(
-      model, frame, helix, grids, info.grid_step, info.matching_depth,
+  return FlankCompliance<dim>(
+      frame, helix, grids, info.grid_step, info.matching_depth,
       inset_cells(dim) * info.flank_cell_size, stations,
       [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
       [&separation](double z, bool wheel) { return separation.lead_removal(z, wheel); },
       separation.modified(), edges);
-  info.coefficient_time = seconds_since(start);
-  if (progress && dim == 3)
-    progress(model_name + ": " + std::to_string(compliance.n_points()) +
-             " load points a gear (grid points x node planes), " +
-             format_number(info.coefficient_time, 3) + " s");
+}
 
-  start = std::chrono::steady_clock::now();
-  const LayerBody body{settings.material.youngs_modulus, settings.material.poisson_ratio,
-                       info.matching_depth};
-  const PositionModel position_model{frame,    separation, body, body, pair.common_face_width,
-                                     stations, helix};
-  run.by_torque = solve_positions(positions, torques.size(),
-                                  [&](double position, std::map<int, double>& warm)
-                                  {
-                                    return solve_position<dim>(position_model, compliance, position,
-                                                               torques, warm, info.newton_steps);
-                                  });
-  info.contact_time = seconds_since(start);
-  if (dim == 3 && (settings.scene.pinion_modifications.lead.crowning != 0. ||
-                   settings.scene.wheel_modifications.lead.crowning != 0.))
-    check_crowned_contact_planes(run.by_torque, stations, layers);
-  return run;
+// The whole run, collective over `mpi_communicator` (docs/ltca.md "Cost"): rank 0 meshes the
+// FE body's scene; each gear's coefficients are one item of fem::distribute_items, computed on
+// the rank that takes it from that gear alone, cut out of the scene and factored (two ranks: a
+// gear each, in parallel; one rank: one after the other, one factor in memory at a time — the
+// same factors, so the coefficients do not depend on the ranks); rank 0 solves every position.
+// Every rank returns the run or throws the same failure.
+template <int dim>
+InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& given,
+                           const kinematics::GearPairGeometry& pair,
+                           const std::vector<double>& positions, const std::vector<double>& torques,
+                           const std::string& file,
+                           const std::function<void(const std::string&)>& progress)
+{
+  GearMeshStiffnessSettings settings = given;
+  settings.elasticity.thickness = pair.common_face_width; // as GearMeshStiffness: b (2D)
+  const unsigned int layers = dim == 3 ? settings.scene.mesh.layers : 1;
+  const FaceStations stations = face_stations(dim, layers, pair.common_face_width);
+  const std::string model_name =
+      dim == 3 ? "influence coefficients (3D)" : "influence coefficients";
+  InfluenceRun run;
+  InfluenceModelInfo& info = run.info;
+  info.grid_points = settings.influence_grid_points;
+  info.flank_cell_size = flank_cell_modules(dim) * pair.spec.pinion.normal_module *
+                         (pair.spec.pinion.helix_angle != 0. ? helical_flank_cell_factor : 1.);
+  info.matching_depth = matching_depth_cells * info.flank_cell_size;
+  info.grid_step = pair.path_of_contact / (info.grid_points - 1);
+  PairFrame frame(pair);
+  const Helix helix(pair);
+  // The designed separation in the transverse plane: a helical pair's normal amounts over
+  // cos β_b (geometry::transverse_section_spec, as the exact path's unloaded TE).
+  GearMeshStiffnessSettings section = settings;
+  section.scene = geometry::transverse_section_spec(settings.scene);
+  const PairSeparation separation(section, frame);
+  check_grid_step(info.grid_step, info.matching_depth, separation);
+
+  // The scene: rank 0 meshes it into `file`, every rank reads it.
+  const SceneStep meshed = fem::run_on_root(
+      mpi_communicator,
+      [&]()
+      {
+        const auto start = std::chrono::steady_clock::now();
+        const geometry::GearPairScene scene = geometry::write_gear_pair_scene(
+            body_scene(settings, pair, positions, info.flank_cell_size,
+                       band_cell_factor(dim) * info.flank_cell_size, info.matching_depth, dim),
+            file);
+        return SceneStep{seconds_since(start), scene.reference_position, file};
+      });
+  info.scene_time = meshed.time;
+  frame.scene_position = meshed.reference_position;
+
+  // The flanks' grids and items, on every rank (each loads its own gears'), a failure agreed on
+  // before the ranks part.
+  std::optional<FlankCompliance<dim>> compliance;
+  fem::first_failure(mpi_communicator,
+                     fem::catch_failure(
+                         [&]()
+                         {
+                           compliance.emplace(flank_items<dim>(pair, positions, stations, helix,
+                                                               frame, separation, info));
+                         }))
+      .rethrow();
+
+  // The coefficients, a gear an item: this rank reads the body once and factors the part of K
+  // of the gear it takes.
+  std::vector<GearCoefficients> mine;
+  std::optional<BodyModel<dim>> model;
+  unsigned int n_dofs = 0;
+  double read_time = 0., factor_time = 0., coefficient_time = 0.; // s, wall, this rank
+  fem::distribute_items(
+      mpi_communicator, 2,
+      [&](unsigned int wheel)
+      {
+        auto start = std::chrono::steady_clock::now();
+        if (!model)
+        {
+          model = read_body_model<dim>(meshed.file);
+          read_time = seconds_since(start);
+        }
+        start = std::chrono::steady_clock::now();
+        factor_body_model(settings, *model, wheel != 0);
+        const unsigned int gear_dofs = model->system->get_dof_handler().n_dofs();
+        n_dofs += gear_dofs;
+        const double factored = seconds_since(start);
+        factor_time += factored;
+        const std::string gear = wheel ? "the wheel's" : "the pinion's";
+        if (progress)
+          progress(model_name + ": FE body, " + gear + " " + std::to_string(gear_dofs) +
+                   " DoFs, h_f " + format_number(info.flank_cell_size * 1e3, 3) + " mm, " +
+                   (dim == 3 ? std::to_string(layers) + " layers, " : std::string()) +
+                   "scene read in " + format_number(read_time, 3) +
+                   " s, assembled and factored in " + format_number(factored, 3) + " s");
+        start = std::chrono::steady_clock::now();
+        mine.push_back(
+            {wheel, body_compliance(*model, compliance->loads(wheel), compliance->reads(wheel))});
+        const double computed = seconds_since(start);
+        coefficient_time += computed;
+        if (progress && dim == 3)
+          progress(model_name + ": " + std::to_string(compliance->n_points()) + " load points, " +
+                   gear + " coefficients in " + format_number(computed, 3) + " s");
+      });
+  model.reset();
+  info.n_dofs = Utilities::MPI::sum(n_dofs, mpi_communicator); // both gears'
+  // Reported as the slowest rank's (its walls are the sweep's).
+  info.factorization_time = Utilities::MPI::max(read_time + factor_time, mpi_communicator);
+  info.coefficient_time = Utilities::MPI::max(coefficient_time, mpi_communicator);
+  // Both gears' to rank 0, which solves the positions.
+  for (std::vector<GearCoefficients>& of_rank : Utilities::MPI::gather(mpi_communicator, mine, 0))
+    for (GearCoefficients& gear : of_rank)
+      compliance->set_coefficients(gear.wheel != 0, std::move(gear.coefficients));
+  mine.clear();
+
+  // Every position on rank 0 (milliseconds each, docs/ltca.md "Cost"), broadcast.
+  return fem::run_on_root(
+      mpi_communicator,
+      [&]()
+      {
+        const auto start = std::chrono::steady_clock::now();
+        const LayerBody body{settings.material.youngs_modulus, settings.material.poisson_ratio,
+                             info.matching_depth};
+        const PositionModel position_model{frame,    separation, body, body, pair.common_face_width,
+                                           stations, helix};
+        run.by_torque =
+            solve_positions(positions, torques.size(),
+                            [&](double position, std::map<int, double>& warm)
+                            {
+                              return solve_position<dim>(position_model, *compliance, position,
+                                                         torques, warm, info.newton_steps);
+                            });
+        info.contact_time = seconds_since(start);
+        if (dim == 3 && (settings.scene.pinion_modifications.lead.crowning != 0. ||
+                         settings.scene.wheel_modifications.lead.crowning != 0.))
+          check_crowned_contact_planes(run.by_torque, stations, layers);
+        return run;
+      });
 }
 } // namespace
 
@@ -830,18 +940,17 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
   const std::vector<double> torques =
       settings.torques.empty() ? std::vector<double>{settings.pinion_torque} : settings.torques;
   const std::string file = scene_file_stem + "_influence.msh";
-  const InfluenceRun run = fem::run_on_root(
-      mpi_communicator,
+  // run_influence throws the same failure on every rank; the scene file goes either way.
+  InfluenceRun run;
+  const fem::Failure failure = fem::catch_failure(
       [&]()
       {
-        InfluenceRun local;
-        const fem::Failure failure = fem::catch_failure(
-            [&]()
-            { local = run_influence<dim>(settings, pair, positions, torques, file, progress); });
-        std::filesystem::remove(file);
-        failure.rethrow("");
-        return local;
+        run = run_influence<dim>(mpi_communicator, settings, pair, positions, torques, file,
+                                 progress);
       });
+  if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    std::filesystem::remove(file);
+  failure.rethrow("");
   StiffnessSweepResult result;
   result.positions = run.by_torque.front();
   if (!settings.torques.empty())

@@ -248,21 +248,24 @@ void parse_modification_stage(ParameterHandler& prm, const std::string& variants
 }
 
 // The work of an influence-coefficient sweep (s): its FE body once (scene, factorization,
-// coefficients), then a small contact problem a position and torque, on rank 0 alone (the other
-// ranks wait: stiffness::influence_sweep). The exact path's seconds a position do not apply: they
-// refused a 3D sweep of 200 positions as 1.3 h (its 23.3 s a position) that the fast model runs
-// in ~8 s (found 2026-12-04). Measured on one rank (docs/ltca.md "Cost", the sweep's own times):
-// 2D Q2 default pair 1.84 s once (59.4k DoFs); 3D Q1 8 layers 6.40 s once (75.7k DoFs); the
-// contact problems ≤ 0.25 ms a position and torque (the helical built-in pair at β 15°, 32
-// positions 8 ms, 8 torques × 32 positions 20 ms, 2026-12-04; spur 3D 0.8 ms for 32). Another
-// degree scales the body by (p / p_measured)^dim, more layers by layers / 8; each variant is a
-// sweep of its own.
+// coefficients; on two or more ranks a gear a rank, so at most half of it — measured 46.4 → 27.4 s
+// on the helical built-in pair, 7.0 → 5.4 s on the spur 3D one, 2026-12-04), then a small contact
+// problem a position and torque on rank 0 (stiffness::influence_sweep). The exact path's seconds a
+// position do not apply: they refused a 3D sweep of 200 positions as 1.3 h (its 23.3 s a position)
+// that the fast model runs in ~8 s (found 2026-12-04). Measured on one rank (docs/ltca.md "Cost",
+// the sweep's own times): 2D Q2 default pair 1.84 s once (59.4k DoFs); 3D Q1 8 layers 6.40 s once
+// (75.7k DoFs); the contact problems ≤ 0.25 ms a position and torque (the helical built-in pair at
+// β 15°, 32 positions 8 ms, 8 torques × 32 positions 20 ms, 2026-12-04; spur 3D 0.8 ms for 32).
+// Another degree scales the body by (p / p_measured)^dim, more layers by layers / 8; each variant
+// is a sweep of its own.
 double check_influence_sweep_work(const StiffnessParameters& p)
 {
   const stiffness::GearMeshStiffnessSettings& s = p.settings;
   const unsigned int dim = s.scene.mesh.dimension;
+  const bool gear_a_rank = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
   const double body = (dim == 3 ? 6.40 * s.scene.mesh.layers / 8. : 1.84) *
-                      std::pow(s.elasticity.degree / (dim == 3 ? 1. : 2.), double(dim));
+                      std::pow(s.elasticity.degree / (dim == 3 ? 1. : 2.), double(dim)) /
+                      (gear_a_rank ? 2. : 1.);
   const double solves = double(p.sweep.positions) * std::max<std::size_t>(1, s.torques.size());
   constexpr double seconds_a_solve = 0.25e-3;
   const double seconds = (body + solves * seconds_a_solve) * (1. + double(p.variants.size()));

@@ -35,7 +35,8 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              exact path a mesh per position: k 1 %, TE 0.1 um, shares 0.01,
                              K_Hbeta 2 %
     influence = exact        the influence-coefficient model (docs/ltca.md) against the rolling
-                             sweep, frictionless cases: k 1 %, TE 0.1 um, shares 0.01
+                             sweep, frictionless cases: k 1 %, TE 0.1 um, shares 0.01; and on
+                             two ranks (a gear each) every printed value of the one-rank run
     helical unloaded TE      the helical variant's unloaded TE (gearstiff mesh, 4 meshes):
                              0 with a relief on one gear only; equal long reliefs give the
                              spur tent's smallest value over the face's window x +- eps_beta/2
@@ -330,6 +331,24 @@ def influence_equals_exact(case, runner, log, sweeps):
     fast, _, _ = runner.run("stiffness", sets)
     fast_equals_exact("influence", table(sweeps["once"], "stiffness_sweep"),
                       table(fast, "stiffness_sweep"), log, unloaded=True)
+    # Two ranks take a gear each, one rank both in turn, with the same factor of each gear
+    # (stiffness/influence_sweep.cc, run_influence): every printed value but the costs equal.
+    two, _, _ = runner.run("stiffness", sets, ranks=2)
+    check_same_printed("influence on 2 ranks", fast, two, ["stiffness_sweep"])
+    log("influence: 2 ranks = 1 rank, every printed value but the costs")
+
+
+def check_same_printed(label, a, b, tables):
+    """Every value and the rows of `tables` of report b as in report a, costs and ranks aside."""
+    differences = [k for k, v in a["values"].items()
+                   if not any(w in k for w in WALL_CLOCK) and
+                   b["values"].get(k, {}).get("value") != v.get("value")]
+    for name in tables:
+        for i, (x, y) in enumerate(zip(table(a, name), table(b, name))):
+            differences += [f"{name}[{i}].{k}" for k, v in x.items()
+                            if not any(w in k for w in WALL_CLOCK) and y.get(k) != v]
+    if differences or len(table(a, tables[0])) != len(table(b, tables[0])):
+        raise CaseFailure(f"{label} differs in {differences[:5]}")
 
 
 def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False):
