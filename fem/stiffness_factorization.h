@@ -61,6 +61,15 @@ public:
   std::vector<std::vector<double>>
   responses(const std::vector<SparseLoad>& loads,
             const std::vector<dealii::types::global_dof_index>& rows) const;
+  // The same values, solved for the load vectors themselves: MUMPS' sparse right-hand sides
+  // (ICNTL(20), PETSc's MatMatTransposeSolve) in blocks, whole solutions read at `rows`. For
+  // loads spread over several DoFs each this beats responses(), which asks K⁻¹ column by column
+  // for every DoF a load touches (the influence model's line loads, docs/ltca.md "Cost"); for
+  // unit loads on single DoFs (the contact DoFs) responses() is the cheaper one. One rank (MUMPS
+  // takes sparse right-hand sides centralized); on several it is responses().
+  std::vector<std::vector<double>>
+  load_responses(const std::vector<SparseLoad>& loads,
+                 const std::vector<dealii::types::global_dof_index>& rows) const;
 
   double factorization_time() const { return factor_seconds; } // s, wall: assembly + factor
   // Whether responses() use the dense Schur complement on the interface DoFs.

@@ -370,7 +370,7 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
         rows.push_back(dof);
   }
   const std::vector<std::vector<double>> responses =
-      model.factorization->responses(sparse_loads, rows);
+      model.factorization->load_responses(sparse_loads, rows);
   std::vector<std::vector<double>> compliance(loads.size(), std::vector<double>(reads.size(), 0.));
   for (std::size_t a = 0; a < loads.size(); ++a)
     for (std::size_t b = 0; b < reads.size(); ++b)
