@@ -7,6 +7,7 @@
 # (2026-12-04's measurement, bench/ltca_helical_speed_2026-12-04.txt, lifted it by hand).
 # usage: flock /tmp/gearstiff-build.lock bash bench/ltca_helical_speed.sh path/to/gearstiff [work]
 set -u
+here=$(cd "$(dirname "$0")" && pwd)
 gs=${1:?path to a gearstiff binary that accepts the helical fast model}
 work=${2:-$(mktemp -d)}
 mkdir -p "$work" && cd "$work" || exit 1
@@ -30,13 +31,4 @@ done
 echo "load average $(cut -d' ' -f1-3 /proc/loadavg); $(date -u)"
 # How the time splits (the model's report): FE body DoFs, scene, assembly and factorization,
 # coefficients, all contact problems, the sweep.
-for f in speed_sweep_*.json speed_map_*.json; do
-  python3 -c '
-import json, sys
-v = json.load(open(sys.argv[1]))["values"]
-g = lambda n: v[n]["value"]
-print("%s: %d DoFs, scene %.2f s, factorization %.2f s, coefficients %.2f s, contact %.4f s, sweep %.2f s"
-      % (sys.argv[1], g("influence_fe_dofs"), g("influence_scene_time"),
-         g("influence_factorization_time"), g("influence_coefficient_time"),
-         g("influence_contact_time"), g("sweep_wall_time")))' "$f"
-done
+python3 "$here/influence_split.py" speed_sweep_*.json speed_map_*.json

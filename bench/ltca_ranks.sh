@@ -8,6 +8,7 @@
 # the spur 3D pair (8 layers, 32 positions) on 1 and 2 ranks; the 2D pair (128 positions) on 1.
 # usage: flock /tmp/gearstiff-build.lock bash bench/ltca_ranks.sh OLD_BINARY NEW_BINARY [work]
 set -u
+here=$(cd "$(dirname "$0")" && pwd)
 old=${1:?binary before}
 new=${2:?binary after}
 work=${3:-$(mktemp -d)}
@@ -43,13 +44,4 @@ for r in 1 2 3; do
 done
 echo "load average $(cut -d' ' -f1-3 /proc/loadavg); $(date -u)"
 # How the time splits (the model's report; factorization and coefficients: the slowest rank's).
-for f in helical_sweep_np2_*_1.json spur3d_np2_*_1.json; do
-  python3 -c '
-import json, sys
-v = json.load(open(sys.argv[1]))["values"]
-g = lambda n: v[n]["value"]
-print("%s: %d DoFs, scene %.2f s, factorization %.2f s, coefficients %.2f s, contact %.4f s, sweep %.2f s"
-      % (sys.argv[1], g("influence_fe_dofs"), g("influence_scene_time"),
-         g("influence_factorization_time"), g("influence_coefficient_time"),
-         g("influence_contact_time"), g("sweep_wall_time")))' "$f"
-done
+python3 "$here/influence_split.py" helical_sweep_np2_*_1.json spur3d_np2_*_1.json
