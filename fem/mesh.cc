@@ -9,6 +9,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace gearstiff::fem
@@ -110,6 +111,40 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
   return read_physical_names(file_name, dim);
 }
 
+namespace
+{
+// Appends the coarse cells of `part` whose material `keep` accepts, with their boundary faces'
+// ids, their vertex indices shifted by `offset`.
+template <int dim>
+void append_cells(const Triangulation<dim>& part, unsigned int offset,
+                  const std::function<bool(types::material_id)>& keep,
+                  std::vector<CellData<dim>>& cells, SubCellData& faces)
+{
+  for (const auto& cell : part.active_cell_iterators())
+  {
+    if (!keep(cell->material_id()))
+      continue;
+    CellData<dim> data(cell->n_vertices());
+    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+      data.vertices[v] = cell->vertex_index(v) + offset;
+    data.material_id = cell->material_id();
+    cells.push_back(data);
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() != 0)
+      {
+        CellData<dim - 1> face(cell->face(f)->n_vertices());
+        for (unsigned int v = 0; v < face.vertices.size(); ++v)
+          face.vertices[v] = cell->face(f)->vertex_index(v) + offset;
+        face.boundary_id = cell->face(f)->boundary_id();
+        if constexpr (dim == 2)
+          faces.boundary_lines.push_back(face);
+        else
+          faces.boundary_quads.push_back(face);
+      }
+  }
+}
+} // namespace
+
 template <int dim>
 void join_bodies(const std::vector<const Triangulation<dim>*>& parts, Triangulation<dim>& result)
 {
@@ -120,33 +155,29 @@ void join_bodies(const std::vector<const Triangulation<dim>*>& parts, Triangulat
   {
     const unsigned int offset = vertices.size();
     vertices.insert(vertices.end(), part->get_vertices().begin(), part->get_vertices().end());
-    for (const auto& cell : part->active_cell_iterators())
-    {
-      CellData<dim> data(cell->n_vertices());
-      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-        data.vertices[v] = cell->vertex_index(v) + offset;
-      data.material_id = cell->material_id();
-      cells.push_back(data);
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() != 0)
-        {
-          CellData<dim - 1> face(cell->face(f)->n_vertices());
-          for (unsigned int v = 0; v < face.vertices.size(); ++v)
-            face.vertices[v] = cell->face(f)->vertex_index(v) + offset;
-          face.boundary_id = cell->face(f)->boundary_id();
-          if constexpr (dim == 2)
-            faces.boundary_lines.push_back(face);
-          else
-            faces.boundary_quads.push_back(face);
-        }
-    }
+    append_cells<dim>(
+        *part, offset, [](types::material_id) { return true; }, cells, faces);
   }
   // Vertices are never merged: coincident ones belong to different bodies.
+  result.create_triangulation(vertices, cells, faces);
+}
+
+template <int dim>
+void one_body(const Triangulation<dim>& scene, types::material_id body, Triangulation<dim>& result)
+{
+  std::vector<Point<dim>> vertices = scene.get_vertices();
+  std::vector<CellData<dim>> cells;
+  SubCellData faces;
+  append_cells<dim>(
+      scene, 0, [body](types::material_id id) { return id == body; }, cells, faces);
+  GridTools::delete_unused_vertices(vertices, cells, faces);
   result.create_triangulation(vertices, cells, faces);
 }
 
 template PhysicalNames read_msh(const std::string&, double, Triangulation<2>&, const std::string&);
 template PhysicalNames read_msh(const std::string&, double, Triangulation<3>&, const std::string&);
 template void join_bodies(const std::vector<const Triangulation<2>*>&, Triangulation<2>&);
+template void one_body(const Triangulation<2>&, types::material_id, Triangulation<2>&);
+template void one_body(const Triangulation<3>&, types::material_id, Triangulation<3>&);
 template void join_bodies(const std::vector<const Triangulation<3>*>&, Triangulation<3>&);
 } // namespace gearstiff::fem

@@ -29,4 +29,10 @@ PhysicalNames read_msh(const std::string& file_name, double scale, dealii::Trian
 template <int dim>
 void join_bodies(const std::vector<const dealii::Triangulation<dim>*>& parts,
                  dealii::Triangulation<dim>& result);
+
+// The coarse cells of material `body` of `scene` as a triangulation of their own, keeping
+// material and boundary ids (the vertices of other bodies dropped): one gear of a scene.
+template <int dim>
+void one_body(const dealii::Triangulation<dim>& scene, dealii::types::material_id body,
+              dealii::Triangulation<dim>& result);
 } // namespace gearstiff::fem

@@ -12,7 +12,6 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 #include <map>
 
@@ -272,46 +271,6 @@ BodyModel<dim> read_body_model(const std::string& file)
   return model;
 }
 
-namespace
-{
-// The cells of `scene` of the material `body`, with their faces' boundary ids, as a
-// triangulation of their own: one gear of the scene. The cells keep their vertex order (they
-// are consistently oriented in the scene).
-template <int dim>
-void one_body(const Triangulation<dim>& scene, types::material_id body, Triangulation<dim>& result)
-{
-  std::vector<CellData<dim>> cells;
-  SubCellData faces;
-  for (const auto& cell : scene.active_cell_iterators())
-  {
-    if (cell->material_id() != body)
-      continue;
-    CellData<dim> data(cell->n_vertices());
-    for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-      data.vertices[v] = cell->vertex_index(v);
-    data.material_id = body;
-    data.manifold_id = cell->manifold_id();
-    cells.push_back(data);
-    for (const auto& face : cell->face_iterators())
-      if (face->at_boundary() && face->boundary_id() != 0)
-      {
-        CellData<dim - 1> face_data(face->n_vertices());
-        for (unsigned int v = 0; v < face->n_vertices(); ++v)
-          face_data.vertices[v] = face->vertex_index(v);
-        face_data.boundary_id = face->boundary_id();
-        face_data.manifold_id = face->manifold_id();
-        if constexpr (dim == 2)
-          faces.boundary_lines.push_back(face_data);
-        else
-          faces.boundary_quads.push_back(face_data);
-      }
-  }
-  std::vector<Point<dim>> vertices = scene.get_vertices();
-  GridTools::delete_unused_vertices(vertices, cells, faces);
-  result.create_triangulation(vertices, cells, faces);
-}
-} // namespace
-
 template <int dim>
 void factor_body_model(const GearMeshStiffnessSettings& settings, BodyModel<dim>& model, bool wheel)
 {
@@ -324,7 +283,7 @@ void factor_body_model(const GearMeshStiffnessSettings& settings, BodyModel<dim>
       std::make_unique<fem::ElasticSystem<dim>>(MPI_COMM_SELF, settings.elasticity, direct);
   const auto body = static_cast<types::material_id>(wheel ? geometry::scene_ids::wheel_body
                                                           : geometry::scene_ids::pinion_body);
-  one_body(*model.scene, body, model.system->triangulation());
+  fem::one_body(*model.scene, body, model.system->triangulation());
   model.system->set_materials({{body, settings.material}}, "material");
   model.system->setup_system();
   model.locator = std::make_unique<CellLocator<dim>>(model.system->get_dof_handler());
