@@ -213,6 +213,25 @@ void add_tip_round_contacts(const GearPairSceneSpec& spec, const kinematics::Gea
 
 namespace
 {
+// Pinion tooth j and its mate as touching_separation sees them.
+PairFlanks pair_flanks(const kinematics::GearPairGeometry& pair, const LineOfAction& line,
+                       const PlacedGears& gears, int j)
+{
+  PairFlanks flanks;
+  const int mate = mate_tooth(gears.wheel, j);
+  flanks.pinion_removal = [&gears, j](double roll)
+  { return gears.pinion_teeth.loaded_flank_removal(j, roll); };
+  flanks.wheel_removal = [&gears, mate](double roll)
+  { return gears.wheel_teeth.loaded_flank_removal(mate, roll); };
+  flanks.pinion_range = gears.pinion_teeth.roll_range();
+  flanks.wheel_range = gears.wheel_teeth.roll_range();
+  flanks.pinion_base_radius = 0.5 * std::abs(pair.pinion.base_diameter);
+  flanks.wheel_base_radius = 0.5 * std::abs(pair.wheel.base_diameter);
+  flanks.t2 = line.t2;
+  flanks.internal = gears.wheel.internal;
+  return flanks;
+}
+
 // The designed separation of a helical pair j whose mid-face section meets the line of action at
 // `at` (m from T1): the smallest, along its contact line, of both flanks' profile removal at the
 // point each section meets plus the lead removal of that section. A section z meets the pair at
@@ -240,7 +259,10 @@ std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
   // b/2000·tan β_b along the profile (6 µm on the built-in pair).
   constexpr int samples = 2000;
   const bool three_d = spec.mesh.dimension == 3;
-  double smallest = std::numeric_limits<double>::max();
+  // Each section's flanks touch where their transverse gap is smallest (touching_separation),
+  // at most its removal at the line, which bounds the sections worth that search.
+  const PairFlanks flanks = pair_flanks(pair, line, gears, j);
+  std::vector<std::pair<double, double>> at_line; // (removal at the line + lead, roll)
   for (int i = 0; i <= samples; ++i)
   {
     const double z = z_from + (z_to - z_from) * i / samples;
@@ -248,10 +270,45 @@ std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
     const double lead = three_d ? lead_removed_depth(spec.pinion_modifications.lead, z, b, true) +
                                       lead_removed_depth(spec.wheel_modifications.lead, z, b, true)
                                 : 0.;
-    smallest = std::min(smallest, gears.pinion_teeth.loaded_flank_removal(j, roll) +
-                                      gears.wheel_teeth.loaded_flank_removal(
-                                          mate_tooth(gears.wheel, j), std::abs(roll - line.t2)) +
-                                      lead);
+    at_line.emplace_back(
+        flanks.pinion_removal(roll) + flanks.wheel_removal(std::abs(roll - line.t2)) + lead, roll);
+  }
+  // The search lowers a section by at most β²R/2, β the largest slope of the gap across the
+  // contact (both flanks' steepest removal per roll, times r_b/ρ) and R the largest relative
+  // radius of the sections: sections whose removal at the line exceeds the smallest found by
+  // more than that are not searched.
+  const auto steepest =
+      [](const std::function<double(double)>& removal, const FlankRollRange& range)
+  {
+    constexpr int steps = 1000;
+    const double from = std::min(range.form, range.tip), to = std::max(range.form, range.tip);
+    const double step = (to - from) / steps;
+    double largest = 0.;
+    for (int i = 0; i < steps; ++i)
+      largest = std::max(
+          largest, std::abs(removal(from + (i + 1) * step) - removal(from + i * step)) / step);
+    return largest;
+  };
+  const double slope_1 = steepest(flanks.pinion_removal, flanks.pinion_range);
+  const double slope_2 = steepest(flanks.wheel_removal, flanks.wheel_range);
+  double lowered = 0.; // m, the most a section's search can lower it
+  for (const auto& [removal, roll] : at_line)
+  {
+    const double rho_1 = roll, rho_2 = std::abs(roll - line.t2);
+    const double radius = 1. / (1. / rho_1 + (flanks.internal ? -1. : 1.) / rho_2);
+    const double slope =
+        slope_1 * flanks.pinion_base_radius / rho_1 + slope_2 * flanks.wheel_base_radius / rho_2;
+    lowered = std::max(lowered, 0.5 * slope * slope * std::abs(radius));
+  }
+  std::sort(at_line.begin(), at_line.end());
+  double smallest = std::numeric_limits<double>::max();
+  for (const auto& [removal, roll] : at_line)
+  {
+    if (removal - lowered >= smallest)
+      break;
+    const double profile =
+        flanks.pinion_removal(roll) + flanks.wheel_removal(std::abs(roll - line.t2));
+    smallest = std::min(smallest, removal - profile + touching_separation(flanks, roll));
   }
   return smallest;
 }
@@ -286,10 +343,7 @@ std::vector<double> pair_separations(const GearPairSceneSpec& spec,
       // touches nearest to the mid-face section.
       at += nearest_roll(pair, position, j);
     }
-    separations.push_back(
-        gears.pinion_teeth.loaded_flank_removal(j, at) +
-        gears.wheel_teeth.loaded_flank_removal(mate_tooth(gears.wheel, j), std::abs(at - line.t2)) +
-        lead);
+    separations.push_back(touching_separation(pair_flanks(pair, line, gears, j), at) + lead);
   }
   return separations;
 }

@@ -210,6 +210,50 @@ double removed_depth(const std::vector<ToothModification>& modifications,
   return depth;
 }
 
+FlankTouch touching_point(const PairFlanks& flanks, double at)
+{
+  const double rho_1 = at, rho_2 = std::abs(at - flanks.t2);
+  const auto gap_at = [&](double x, bool& on_flanks)
+  {
+    const double roll_1 = at + x * flanks.pinion_base_radius / rho_1;
+    const double roll_2 = std::abs(at + x * flanks.wheel_base_radius / rho_2 - flanks.t2);
+    const auto covers = [](const FlankRollRange& range, double roll)
+    { return roll >= std::min(range.form, range.tip) && roll <= std::max(range.form, range.tip); };
+    on_flanks = covers(flanks.pinion_range, roll_1) && covers(flanks.wheel_range, roll_2);
+    return flanks.pinion_removal(roll_1) + flanks.wheel_removal(roll_2);
+  };
+  bool on_flanks = true;
+  const double at_point = gap_at(0., on_flanks);
+  if (!(rho_1 > 0.) || !(rho_2 > 0.))
+    return {at_point, 0.};
+  const double relative_radius = 1. / (1. / rho_1 + (flanks.internal ? -1. : 1.) / rho_2);
+  // Removal only ever removes material (≥ 0), so g(x) − g(0) ≥ x²/(2R) − S(0): the smallest gap
+  // lies within |x| ≤ √(2R·S(0)). Sampled coarse, then four times 32× finer about the best
+  // sample (last step reach/2²⁶, ~5 pm): the gap is continuous (a relief's start is a kink, not
+  // a step), so the smallest sample is within slope × step of the minimum, ~1e-14 m.
+  if (!(at_point > 0.) || !(relative_radius > 0.))
+    return {at_point, 0.};
+  double reach = std::sqrt(2. * relative_radius * at_point);
+  double best = at_point, best_x = 0.;
+  constexpr int samples = 64;
+  for (int level = 0; level < 5; ++level)
+  {
+    const double centre = best_x, step = reach / samples;
+    for (int i = -samples; i <= samples; ++i)
+    {
+      const double x = centre + i * step;
+      const double gap = x * x / (2. * relative_radius) + gap_at(x, on_flanks);
+      if (on_flanks && gap < best)
+      {
+        best = gap;
+        best_x = x;
+      }
+    }
+    reach = 2. * step;
+  }
+  return {best, best_x};
+}
+
 void check_modifications(const std::vector<ToothModification>& modifications,
                          const ToothProfile& nominal, const FlankRollRange& range,
                          const std::string& parameter)

@@ -28,6 +28,7 @@
 
 #include "geometry/tooth_profile.h"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -121,6 +122,40 @@ struct GearModifications
 // flank: modifications with ModifiedFlanks::loaded skip the other one).
 double removed_depth(const std::vector<ToothModification>& modifications,
                      const FlankRollRange& range, double roll, bool loaded);
+
+// The two loaded flanks of a tooth pair as its touching point sees them (touching_separation):
+// each gear's removed depth by roll length (modifications and flank faults) and the rolls its
+// flank covers, the base radii and T2 on the line of action.
+struct PairFlanks
+{
+  std::function<double(double)> pinion_removal; // m, removed depth at the pinion's roll (m)
+  std::function<double(double)> wheel_removal;  // m, at the wheel's roll (m)
+  FlankRollRange pinion_range, wheel_range;
+  double pinion_base_radius = 0.; // m, r_b1
+  double wheel_base_radius = 0.;  // m, r_b2
+  double t2 = 0.;                 // m, T2 from T1 along the line of action (a ring's: negative)
+  bool internal = false;          // the wheel is a ring: its flank concave
+};
+
+// The designed separation of a pair whose unmodified flanks touch at ℓ = `at` on the line of
+// action (m from T1; the pinion's roll ℓ, the wheel's |ℓ − t2|): the smallest gap between the
+// modified flanks near that point, not their removal at it. A tangential offset x moves gear i's
+// point by x·r_bi/ρ_i of roll (the involute's arc length is ρ²/(2r_b)) and parts the unmodified
+// flanks by x²/(2R) (R the relative radius; a ring's flank is concave), so the gap is
+// g(x) = x²/(2R) + S₁(ℓ + x·r_b1/ρ₁) + S₂(ℓ + x·r_b2/ρ₂) in ℓ's terms, and rigid flanks first
+// touch where it is smallest: a relief's slope β moves that point by βR and lowers the gap by
+// β²R/2 (docs/ltca.md §5 "Where modified flanks touch"). Offsets where either flank ends are
+// not searched (a tip corner is not a flank point).
+struct FlankTouch
+{
+  double separation = 0.; // m, the smallest gap
+  double offset = 0.;     // m, x where it lies
+};
+FlankTouch touching_point(const PairFlanks& flanks, double at);
+inline double touching_separation(const PairFlanks& flanks, double at)
+{
+  return touching_point(flanks, at).separation;
+}
 
 // The nominal outline with the modifications applied to its flanks (side `loaded_side` is the
 // loaded flank). `parameter` is the gear whose fields an InputError names

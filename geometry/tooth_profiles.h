@@ -30,6 +30,8 @@ public:
   // δ (m) removed from the loaded flank of tooth `index` at roll length `roll`.
   double loaded_flank_removal(int index, double roll) const;
   const std::vector<ToothModification>& modifications_of(int index) const;
+  // The roll lengths of the loaded flank (FlankRollRange).
+  const FlankRollRange& roll_range() const { return range; }
 
 private:
   ToothProfile nominal_tooth;

@@ -105,5 +105,16 @@ PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const 
     (is_wheel ? wheel_range : pinion_range) =
         geometry::flank_roll_range(frame.pair, tooth, is_wheel);
   }
+  // By value: a copied PairSeparation keeps working.
+  flanks.pinion_removal = [list = pinion, range = pinion_range](double roll)
+  { return geometry::removed_depth(list, range, roll, true); };
+  flanks.wheel_removal = [list = wheel, range = wheel_range](double roll)
+  { return geometry::removed_depth(list, range, roll, true); };
+  flanks.pinion_range = pinion_range;
+  flanks.wheel_range = wheel_range;
+  flanks.pinion_base_radius = frame.pinion_base_radius();
+  flanks.wheel_base_radius = frame.wheel_base_radius();
+  flanks.t2 = t2;
+  flanks.internal = frame.pair.spec.wheel.internal;
 }
 } // namespace gearstiff::stiffness::influence

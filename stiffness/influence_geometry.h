@@ -82,6 +82,10 @@ class PairSeparation
 public:
   PairSeparation(const GearMeshStiffnessSettings& settings, const PairFrame& frame);
   double operator()(double at) const { return removal(at, false) + removal(at, true); }
+  // Where the modified flanks first touch near ℓ: the smallest gap over the tangential offset
+  // (geometry::touching_separation, as geometry::unloaded_transmission_errors takes it), at most
+  // operator()(at).
+  geometry::FlankTouch touching(double at) const { return geometry::touching_point(flanks, at); }
   // Any modification that removes material (amount 0 is none: the same coefficients, digit for
   // digit).
   bool modified() const
@@ -127,5 +131,6 @@ private:
   geometry::FlankRollRange pinion_range, wheel_range;
   double face_width; // m, b
   double t2;
+  geometry::PairFlanks flanks; // touching(): the removals above and the pair's radii
 };
 } // namespace gearstiff::stiffness::influence

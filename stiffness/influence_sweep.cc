@@ -16,6 +16,7 @@
 #include "stiffness/ltca_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 #include <chrono>
@@ -288,25 +289,31 @@ public:
   // near field varies over the depth h, not over the grid step); otherwise bilinearly (smooth:
   // a helical pair's other planes lie Δz or more away).
   // `edge_j`, `edge_k`: the unknown is a tip edge (ℓ = A or E), its own item, not the grid's.
-  double operator()(int j, double at_j, double tilt_j, std::size_t s, bool edge_j, int k,
-                    double at_k, double tilt_k, std::size_t t, bool edge_k) const
+  // `at_j`, `at_k`: ℓ of the pinion's and of the wheel's flank point (where modified flanks
+  // touch off the line of action each gear's point lies off ℓ: touching_flanks).
+  double operator()(int j, const std::array<double, 2>& at_j, double tilt_j, std::size_t s,
+                    bool edge_j, int k, const std::array<double, 2>& at_k, double tilt_k,
+                    std::size_t t, bool edge_k) const
   {
-    const Item a = locate(s, j, at_j, edge_j), b = locate(t, k, at_k, edge_k);
     const double along_j[2] = {1., tilt_j}, along_k[2] = {1., tilt_k};
     double c = 0.;
-    for (const auto* body : {&pinion_c, &wheel_c})
+    for (const bool wheel : {false, true})
+    {
+      const auto* body = wheel ? &wheel_c : &pinion_c;
+      const Item a = locate(s, j, at_j[wheel], edge_j), b = locate(t, k, at_k[wheel], edge_k);
       for (unsigned int p = 0; p < directions; ++p)
         for (unsigned int q = 0; q < directions; ++q)
         {
           const auto m = [&](std::size_t x, std::size_t y) { return (*body)[x + p][y + q]; };
           const double weight = along_j[p] * along_k[q];
-          if (j == k && at_j == at_k && !edge_j && !edge_k)
+          if (j == k && at_j[wheel] == at_k[wheel] && !edge_j && !edge_k)
             c += weight * ((1. - a.u) * m(a.first, b.first) + a.u * m(a.next, b.next));
           else
             c += weight *
                  ((1. - a.u) * ((1. - b.u) * m(a.first, b.first) + b.u * m(a.first, b.next)) +
                   a.u * ((1. - b.u) * m(a.next, b.first) + b.u * m(a.next, b.next)));
         }
+    }
     return c;
   }
   // Whether pair j's tip edge at E (`at_end`) or A has its own items.
@@ -377,7 +384,9 @@ struct PairLine
   double pinion_lever = 1.; // -, arm/r_b1
   double wheel_lever = 1.;  // -, arm/r_b2
   double tilt = 0.;         // rad, τ: direction u + τ·m
-  ContactStrip strip;       // empty gap: Hertz
+  ContactStrip strip;       // empty gap: Hertz (the gap from x = 0, the touching point's drop
+                            // in it)
+  double lowered = 0.;      // m, ≤ 0: the smallest gap near ℓ less the removal at ℓ
 };
 
 // The slope dS/dℓ of one gear's removal as the contact zone |x| < a sees it: the mean over the
@@ -441,17 +450,21 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
     return separation.removal(at + x * k_1, false) - separation.removal(at, false) +
            separation.removal(at + x * k_2, true) - separation.removal(at, true);
   };
-  // β: the modification's slope across the contact, the zone's mean as the force line's. Its line
-  // is left out of the strip's gap, as of the Hertz near field: with it the zone's centre moves by
-  // βR and the gap there drops by β²R/2 (0.1 µm for β = 5.6 mrad), which the exact path does not
-  // show (on the relieved slopes of the tip-relief test the model without it is within 0.34 %;
-  // with it, and the force line not turned, 1.2-2.3 % stiff: measured 2026-12-02).
-  const double tangent = k_1 * slope_1 + k_2 * slope_2;
-  // The strip spans the Hertz zone and the shift βR of the zone's centre by the slope at x = 0.
+  // The pair touches where the modified flanks' gap is smallest (geometry::touching_point: a
+  // slope β moves the point by βR and lowers the gap by β²R/2), not at x = 0. Measured
+  // 2026-12-05 on the tip-relief tests (μ 0): the exact path's meshed flanks first touch within
+  // 0.005 µm of that gap (0.1–0.16 µm below the removal at ℓ on the built-in pair's 10 µm
+  // reliefs, 0.5 µm on the planet–ring pair's 8 µm, R 24 mm); taking the removal at ℓ instead
+  // (before) put the planet–ring pair's double contacts 4.4–6.0 % soft. Until then the strip's
+  // gap left the slope's line out; with the drop in the gap it keeps it (docs/ltca.md §5).
+  const geometry::FlankTouch touch = separation.touching(at);
+  line.lowered = touch.separation - separation(at);
+  // The strip spans the Hertz zone about x = 0 and about the touching point, and the shift βR
+  // of the zone's centre by the slope at x = 0.
   const double step = 1e-6; // m: the reliefs' slopes are constant over mm
   const double shift =
       std::abs(modification_gap(step) - modification_gap(-step)) / (2. * step) * relative_radius;
-  const double span = 3. * whole.half_width + shift;
+  const double span = 3. * whole.half_width + std::max(shift, std::abs(touch.offset));
   // Not a parabola (plus a line, which only shifts the zone by βR ≈ 30 µm): a kink inside the
   // strip or a curvature of the modification 1e-3 of the flanks'.
   const double bend = 0.5 * std::abs(modification_gap(span) + modification_gap(-span));
@@ -463,9 +476,28 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   for (int i = 0; i < strip_cells; ++i)
   {
     const double x = -span + (i + 0.5) * cell;
-    line.strip.gap.push_back(x * x / (2. * relative_radius) + modification_gap(x) - tangent * x);
+    line.strip.gap.push_back(x * x / (2. * relative_radius) + modification_gap(x));
   }
   return line;
+}
+
+// The ℓ of the pinion's and of the wheel's flank point where a pair whose unmodified flanks
+// touch at ℓ = `at` touches on its modified flanks: the touching point's offset x moves gear i's
+// point by x·r_bi/ρ_i of roll (geometry::touching_point). There the load acts and the FE body's
+// coefficients are read. Measured 2026-12-05 (the planet–ring tip-relief test, μ 0): the exact
+// path's relieved pair touches 0.24 mm of the planet's roll below ℓ; read at ℓ its load share
+// was 0.012 low and k 0.66 % soft. Kept on the path A–E (the flank grids' extent).
+std::array<double, 2> touching_flanks(const PairFrame& frame, const PairSeparation& separation,
+                                      double at)
+{
+  if (!separation.modified())
+    return {{at, at}};
+  const double offset = separation.touching(at).offset;
+  const double rho_1 = at, rho_2 = std::abs(at - frame.t2);
+  const auto on_path = [&](double l)
+  { return std::clamp(l, frame.pair.contact_start, frame.pair.contact_end); };
+  return {{on_path(at + offset * frame.pinion_base_radius() / rho_1),
+           on_path(at + offset * frame.wheel_base_radius() / rho_2)}};
 }
 
 // One unknown of a position: the force of pair j at station s, where the pair's contact line
@@ -478,7 +510,10 @@ struct Unknown
   std::size_t station = 0;
   double at = 0.; // m, ℓ at the station's plane
   PairLine line;
-  bool edge = false; // a helical plane beyond the path: the tip corner at ℓ = A or E
+  bool edge = false;    // a helical plane beyond the path: the tip corner at ℓ = A or E
+  double touching = 0.; // m, where the unloaded flanks touch: the smallest separation is the
+                        // unloaded TE
+  std::array<double, 2> flank{}; // m, ℓ of the pinion's and the wheel's point (touching_flanks)
 };
 
 // The result of one position at one torque from the solved forces (one per unknown, pair by
@@ -487,16 +522,18 @@ struct Unknown
 // part, its axial force the sin β_b part). Root stresses are not evaluated by this model: NaN
 // (printed "nan", null in JSON), never a number that could be read as a stress.
 template <int dim>
-GearMeshStiffnessResult
-position_result(const PositionModel& model, double position, const std::vector<int>& pairs,
-                const std::vector<Unknown>& unknowns, const MeshContactProblem& problem,
-                const MeshContactSolution& solution, double torque)
+GearMeshStiffnessResult position_result(const PositionModel& model, double position,
+                                        const std::vector<int>& pairs,
+                                        const std::vector<Unknown>& unknowns,
+                                        const MeshContactSolution& solution, double torque)
 {
   const kinematics::GearPairGeometry& pair = model.frame.pair;
   const double r_b2 = model.frame.wheel_base_radius();
-  GearMeshStiffnessResult r =
-      result_at(model.frame, dim, position, pairs.size(), torque, solution,
-                *std::min_element(problem.separation.begin(), problem.separation.end()));
+  GearMeshStiffnessResult r = result_at(model.frame, dim, position, pairs.size(), torque, solution,
+                                        std::min_element(unknowns.begin(), unknowns.end(),
+                                                         [](const Unknown& a, const Unknown& b)
+                                                         { return a.touching < b.touching; })
+                                            ->touching);
   // Frictionless: every force on its pair's force line, at the lever arm r_b2·μ_j about the
   // wheel (geometry/scene_gear_pair.h: an external wheel's centre lies across the line of
   // action from the pinion's, a ring's on its side); a helical pair's lever ratios carry cos β_b.
@@ -569,7 +606,9 @@ position_result(const PositionModel& model, double position, const std::vector<i
       r.pairs.back().closed_nodes = closed;
     if (peak_at != nullptr)
     {
-      r.pairs.back().max_pressure_roll = r.pairs.back().max_pressure_wheel_roll = peak_at->at;
+      // Where the pair touches on each flank (off ℓ on modified flanks: touching_flanks).
+      r.pairs.back().max_pressure_roll = peak_at->flank[0];
+      r.pairs.back().max_pressure_wheel_roll = peak_at->flank[1];
       if (dim == 3)
         r.pairs.back().max_pressure_face =
             model.stations.z[peak_at->station] - 0.5 * model.face_width;
@@ -660,8 +699,14 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       unknown.line = pair_line(model, unknown.at, relative_radius, largest_force);
       unknown.line.pinion_lever *= helix.cos_base;
       unknown.line.wheel_lever *= helix.cos_base;
-      problem.separation.push_back(model.separation(unknown.at) + corner_gap +
-                                   (dim == 3 ? model.separation.lead(stations.z[s]) : 0.));
+      // A Hertz pair's gap is its touching separation; a strip carries the gap from x = 0
+      // itself, so it keeps the removal at ℓ.
+      const double lead = dim == 3 ? model.separation.lead(stations.z[s]) : 0.;
+      const double at_line = model.separation(unknown.at) + corner_gap + lead;
+      unknown.touching = at_line + unknown.line.lowered;
+      unknown.flank = unknown.edge ? std::array<double, 2>{{unknown.at, unknown.at}}
+                                   : touching_flanks(model.frame, model.separation, unknown.at);
+      problem.separation.push_back(unknown.line.strip.gap.empty() ? unknown.touching : at_line);
       // The near field's length: the contact line's part on the path within the station's strip
       // (a corner: the tip edge along the whole strip); a corner's radius against the mate's
       // flank radius there.
@@ -707,14 +752,14 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   {
     problem.compliance.emplace_back();
     for (const Unknown& b : unknowns)
-      problem.compliance.back().push_back(compliance(a.pair, a.at, a.line.tilt, a.station, a.edge,
-                                                     b.pair, b.at, b.line.tilt, b.station, b.edge));
+      problem.compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station,
+                                                     a.edge, b.pair, b.flank, b.line.tilt,
+                                                     b.station, b.edge));
   }
-  return solve_torques(problem, model.frame, keys, torques, warm, newton_steps,
-                       [&](const MeshContactSolution& solution, double torque) {
-                         return position_result<dim>(model, position, pairs, unknowns, problem,
-                                                     solution, torque);
-                       });
+  return solve_torques(
+      problem, model.frame, keys, torques, warm, newton_steps,
+      [&](const MeshContactSolution& solution, double torque)
+      { return position_result<dim>(model, position, pairs, unknowns, solution, torque); });
 }
 
 // The flank grids of the sweep and their items (no coefficients yet); sets info.flanks.
@@ -732,7 +777,15 @@ FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
   {
     std::vector<double> seen;
     for (const double position : positions)
-      seen.push_back(position + helix.shift(stations.z[s]));
+    {
+      const double at = position + helix.shift(stations.z[s]);
+      seen.push_back(at);
+      // Modified flanks touch off ℓ (touching_flanks): the grids reach those points too.
+      for (const int j : geometry::gear_pairs_in_contact(pair, at))
+        for (const double flank :
+             touching_flanks(frame, separation, at + j * pair.transverse_base_pitch))
+          seen.push_back(flank - j * pair.transverse_base_pitch);
+    }
     grids.push_back(flank_grids(pair, seen, info.grid_step));
     for (const FlankGrid& grid : grids.back())
       flanks.push_back(grid.pair);

@@ -160,13 +160,15 @@ TEST(ToothModification, UnmodelledToothLeavesMeshUnchanged)
   EXPECT_EQ(file_text(plain), file_text(other));
 }
 
-// Zero-load limit (issue 27): the unloaded TE is the smallest designed separation of the pairs
-// along the line of action. Equal linear long reliefs C on both gears: in the first double
-// zone [A, B] the entering pair is relieved by the wheel tip, C·(1 − s), the leaving one by the
-// pinion tip at ℓ + p_bt, C·s (D = A + p_bt), s = (ℓ − A)/(B − A): the tent min(C·s, C·(1 − s))
-// rising to C/2 in the middle; 0 in the single zone. The same separation measured on the mesh
-// deal.II reads (crossings of the line of action with each pair's flank faces) agrees within
-// the spline and chord error of the outline (< 0.2 µm, test_scene_gear_pair.cc).
+// Zero-load limit (issue 27): the unloaded TE is the smallest designed separation of the pairs.
+// Equal linear long reliefs C on both gears: in the first double zone [A, B] the entering pair is
+// relieved by the wheel tip, C·(1 − s), the leaving one by the pinion tip at ℓ + p_bt, C·s
+// (D = A + p_bt), s = (ℓ − A)/(B − A): the tent min(C·s, C·(1 − s)) rising to C/2 in the middle,
+// each pair lowered by β²R/2 where its relieved flanks touch (relieved_tent; 0.11–0.14 µm here,
+// geometry::touching_point); 0 in the single zone. Each pair's separation measured on the mesh
+// deal.II reads (the smallest gap between its flank faces along lines parallel to the line of
+// action) agrees within the spline and chord error of the outline (< 0.2 µm,
+// test_scene_gear_pair.cc).
 TEST(ToothModification, UnloadedTransmissionErrorTent)
 {
   GearPairSceneSpec spec;
@@ -182,7 +184,7 @@ TEST(ToothModification, UnloadedTransmissionErrorTent)
     spec.pinion_roll_angle = (a + s * (b - a)) / rb1;
     const std::string file = work_file("modification_tent.msh");
     const GearPairScene scene = write_gear_pair_scene(spec, file);
-    EXPECT_NEAR(scene.unloaded_transmission_error, std::min(c * s, c * (1. - s)), 1e-12) << s;
+    EXPECT_NEAR(scene.unloaded_transmission_error, relieved_tent(pair, s, c), 1e-12) << s;
     ASSERT_EQ(scene.contact_pairs.size(), 2u);
     dealii::Triangulation<2> triangulation;
     read_mesh(triangulation, file);
@@ -190,9 +192,9 @@ TEST(ToothModification, UnloadedTransmissionErrorTent)
     for (std::size_t k = 0; k < scene.contact_pairs.size(); ++k)
     {
       const int j = scene.contact_pairs[k];
-      const double gap =
-          flank_gap(triangulation, pinion_flank_id(j), wheel_flank_id(j), line[0], line[1]);
-      EXPECT_NEAR(std::abs(gap), scene.pair_separation[k], 0.2e-6) << "s = " << s << ", pair " << j;
+      const double gap = smallest_flank_gap(triangulation, pinion_flank_id(j), wheel_flank_id(j),
+                                            line[0], line[1], 0.5e-3);
+      EXPECT_NEAR(gap, scene.pair_separation[k], 0.2e-6) << "s = " << s << ", pair " << j;
     }
   }
   spec.pinion_roll_angle = 0.5 * (b + pair.single_contact_end()) / rb1;
@@ -292,4 +294,51 @@ TEST(ToothModification, TipRoundingMovesWithTheRelievedFlank)
     }
   }
   EXPECT_EQ(arc_points, 2 * (ProfileResolution().rounding_points - 1));
+}
+
+// Where modified flanks touch (touching_point) against closed forms. A removal linear in roll,
+// S = s₀ + b·(ρ₁ − ℓ) on the pinion, is a gap s₀ + βx + x²/(2R) across the contact (β = b·r_b1/ρ₁):
+// smallest βR before x = 0, at −β²R/2 below s₀. With the slope ending in a kink just behind ℓ
+// (S flat below ρ_k) the flanks touch at the kink while βR lies beyond it. A flank that ends
+// (its roll range) is not searched past its end. Unmodified (S ≡ 0): the point itself. 1e-13 m,
+// 1e-9 m: the search's sampling (its last step is reach/2²⁶).
+TEST(ToothModification, TouchingPointClosedForms)
+{
+  PairFlanks flanks;
+  flanks.pinion_base_radius = 30e-3;
+  flanks.wheel_base_radius = 60e-3;
+  flanks.t2 = 40e-3; // m, T1T2 of an external pair
+  flanks.pinion_range.form = flanks.wheel_range.form = 1e-3;
+  flanks.pinion_range.tip = flanks.wheel_range.tip = 39e-3;
+  flanks.wheel_removal = [](double) { return 0.; };
+  const double at = 15e-3, s0 = 5e-6, b = 4e-3; // m, m, -: 4 µm a mm of roll
+  const double rho_1 = at, rho_2 = flanks.t2 - at;
+  const double radius = rho_1 * rho_2 / (rho_1 + rho_2);
+  const double beta = b * flanks.pinion_base_radius / rho_1;
+
+  flanks.pinion_removal = [&](double roll) { return s0 + b * (roll - at); };
+  const FlankTouch sloped = touching_point(flanks, at);
+  EXPECT_NEAR(sloped.separation, s0 - 0.5 * beta * beta * radius, 1e-13);
+  EXPECT_NEAR(sloped.offset, -beta * radius, 1e-9);
+
+  // The kink 10 µm of roll behind ℓ: well inside βR (0.2 mm of roll here).
+  const double kink = at - 10e-6;
+  flanks.pinion_removal = [&](double roll)
+  { return s0 + b * std::max(roll - kink, 0.) - b * 10e-6; };
+  const FlankTouch kinked = touching_point(flanks, at);
+  const double x_kink = (kink - at) * rho_1 / flanks.pinion_base_radius;
+  EXPECT_NEAR(kinked.separation, s0 - b * 10e-6 + x_kink * x_kink / (2. * radius), 1e-13);
+  EXPECT_NEAR(kinked.offset, x_kink, 1e-9);
+
+  // The pinion's flank ending 0.1 mm of roll behind ℓ: the search stops there.
+  flanks.pinion_removal = [&](double roll) { return s0 + b * (roll - at); };
+  flanks.pinion_range.form = at - 0.1e-3;
+  const FlankTouch ended = touching_point(flanks, at);
+  const double x_end = -0.1e-3 * rho_1 / flanks.pinion_base_radius;
+  EXPECT_NEAR(ended.offset, x_end, 1e-9);
+  EXPECT_NEAR(ended.separation, s0 + beta * x_end + x_end * x_end / (2. * radius), 1e-13);
+
+  flanks.pinion_removal = [](double) { return 0.; };
+  EXPECT_EQ(touching_point(flanks, at).separation, 0.);
+  EXPECT_EQ(touching_point(flanks, at).offset, 0.);
 }

@@ -5,6 +5,7 @@
 #include "stiffness/influence_sweep.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 #include "tests/stiffness/load_share.h"
+#include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/work_file.h"
 
 #include <algorithm>
@@ -102,4 +103,15 @@ void expect_issue_accuracy(const std::array<double, 4>& worst)
 TEST(InfluenceCoefficients3D, DefaultSpurAgainstExact)
 {
   expect_issue_accuracy(compare_3d(q1_settings(4), 4, "influence_3d"));
+}
+
+// Profile modifications in 3D: the same reference with a 10 µm long tip relief on both gears
+// (each node plane's pair touching where its modified flanks' gap is smallest, docs/ltca.md §5).
+// Measured 2026-12-05: see the test's output; tolerances the issue's 1 %, 0.1 µm, 1 %, 2 %.
+TEST(InfluenceCoefficients3D, TipReliefAgainstExact)
+{
+  GearMeshStiffnessSettings settings = q1_settings(4);
+  settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(10e-6)};
+  settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(10e-6)};
+  expect_issue_accuracy(compare_3d(settings, 4, "influence_3d_relief"));
 }

@@ -104,11 +104,14 @@ TEST(MicroGeometry, TorqueListEqualsFreshSolves)
 }
 
 // Zero-load limit at s = 0.3 of the first double zone with equal linear long reliefs C on both
-// gears: the leaving pair is relieved by C·s = 3 µm, the entering one by C·(1 − s) = 7 µm
-// (test_tooth_modification.cc), so the unloaded TE is 3 µm. At 0.5 N·m the deflection of one
-// pair is 6.1 µm·0.5/49.4 ≈ 0.06 µm (the single-pair TE at 49.4 N·m, docs/references.md §1:
-// Δφ·r_b1), far below the 4 µm between the pairs: the TE is the geometric 3 µm plus that, and
-// the entering pair carries nothing.
+// gears: the leaving pair is relieved by C·s = 3 µm at ℓ, the entering one by C·(1 − s) = 7 µm
+// (test_tooth_modification.cc). The leaving pair's flanks touch where their gap is smallest, not
+// at ℓ (geometry::touching_point): the pinion's relief slope C/(E − D) per roll is β = C/(E − D)·
+// r_b1/ρ1 across the contact, so they touch βR off ℓ, β²R/2 below 3 µm (R = ρ1ρ2/(ρ1 + ρ2);
+// 0.10 µm here), and that is the unloaded TE. At 0.5 N·m the deflection of one pair is
+// 6.1 µm·0.5/49.4 ≈ 0.06 µm (the single-pair TE at 49.4 N·m, docs/references.md §1: Δφ·r_b1),
+// far below the 4 µm between the pairs: the TE is the geometric error plus that, and the
+// entering pair carries nothing.
 TEST(MicroGeometry, ZeroLoadLimitIsTheGeometricError)
 {
   const kinematics::GearPairGeometry g = pair();
@@ -118,9 +121,16 @@ TEST(MicroGeometry, ZeroLoadLimitIsTheGeometricError)
   settings.scene.pinion_modifications.all_teeth = {long_relief(10e-6)};
   settings.scene.wheel_modifications.all_teeth = {long_relief(10e-6)};
   const auto r = solve_torques(settings, {0.5, design_torque});
-  EXPECT_NEAR(r[0].unloaded_transmission_error, 3e-6, 1e-12);
-  EXPECT_NEAR(r[0].transmission_error, 3e-6, 0.15e-6);
-  EXPECT_GT(r[0].transmission_error, 3e-6);
+  const double at = g.contact_start + 0.3 * (g.single_contact_start() - g.contact_start) +
+                    g.transverse_base_pitch; // the leaving pair's ℓ
+  const double rho_1 = at, rho_2 = g.line_of_action_length - at;
+  const double beta =
+      10e-6 / (g.contact_end - g.single_contact_end()) * (0.5 * g.pinion.base_diameter) / rho_1;
+  const double geometric = 3e-6 - 0.5 * beta * beta * rho_1 * rho_2 / (rho_1 + rho_2);
+  // 1e-12 m: the search's sampling (geometry::touching_point) against the closed form.
+  EXPECT_NEAR(r[0].unloaded_transmission_error, geometric, 1e-12);
+  EXPECT_NEAR(r[0].transmission_error, geometric, 0.15e-6);
+  EXPECT_GT(r[0].transmission_error, geometric);
   for (const auto& load : r[0].pairs)
   {
     if (load.pair == 0) // the entering pair at s = 0.3 of [A, B]
