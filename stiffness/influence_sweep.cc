@@ -316,6 +316,14 @@ public:
     }
     return c;
   }
+  // m, the ℓ pair j's grid on station s covers (a point off it has no coefficients).
+  std::pair<double, double> grid_span(std::size_t s, int j) const
+  {
+    for (const FlankGrid& grid : grids[s])
+      if (grid.pair == j)
+        return {grid.first, grid.first + (grid.count - 1) * step};
+    return {0., 0.};
+  }
   // Whether pair j's tip edge at E (`at_end`) or A has its own items.
   bool has_edge(int j, bool at_end) const
   {
@@ -384,8 +392,7 @@ struct PairLine
   double pinion_lever = 1.; // -, arm/r_b1
   double wheel_lever = 1.;  // -, arm/r_b2
   double tilt = 0.;         // rad, τ: direction u + τ·m
-  ContactStrip strip;       // empty gap: Hertz (the gap from x = 0, the touching point's drop
-                            // in it)
+  ContactStrip strip;       // empty gap: Hertz; else centred on the touching point
   double lowered = 0.;      // m, ≤ 0: the smallest gap near ℓ less the removal at ℓ
 };
 
@@ -459,25 +466,29 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   // gap left the slope's line out; with the drop in the gap it keeps it (docs/ltca.md §5).
   const geometry::FlankTouch touch = separation.touching(at);
   line.lowered = touch.separation - separation(at);
-  // The strip spans the Hertz zone about x = 0 and about the touching point, and the shift βR
-  // of the zone's centre by the slope at x = 0.
+  // The strip is centred on the touching point c, where the FE coefficients are read
+  // (touching_flanks): its layer's depth points lie under c and its gap is g(c + x) − g(c).
+  // Centred on x = 0 instead (measured 2026-12-05, invariants case 1 of seed 20261201: z 39/76,
+  // m 1.25 mm, 9.9 µm long reliefs, h 0.15 mm, c −0.055 mm), the depth points lay off the zone's
+  // centre by c and k came out 1.1 % soft at a position whose relief's start lay 0.15 mm behind.
+  // It spans the Hertz zone, the shift βR by the slope at x = 0 and the way to c.
+  const double c = touch.offset;
   const double step = 1e-6; // m: the reliefs' slopes are constant over mm
   const double shift =
       std::abs(modification_gap(step) - modification_gap(-step)) / (2. * step) * relative_radius;
-  const double span = 3. * whole.half_width + std::max(shift, std::abs(touch.offset));
+  const double span = 3. * whole.half_width + std::max(shift, std::abs(c));
   // Not a parabola (plus a line, which only shifts the zone by βR ≈ 30 µm): a kink inside the
   // strip or a curvature of the modification 1e-3 of the flanks'.
-  const double bend = 0.5 * std::abs(modification_gap(span) + modification_gap(-span));
+  const double bend = 0.5 * std::abs(modification_gap(c + span) + modification_gap(c - span) -
+                                     2. * modification_gap(c));
   if (!(bend > 1e-3 * span * span / (2. * relative_radius)))
     return line;
   line.strip.half_span = span;
   line.strip.relative_radius = relative_radius;
+  const auto gap = [&](double x) { return x * x / (2. * relative_radius) + modification_gap(x); };
   const double cell = 2. * span / strip_cells;
   for (int i = 0; i < strip_cells; ++i)
-  {
-    const double x = -span + (i + 0.5) * cell;
-    line.strip.gap.push_back(x * x / (2. * relative_radius) + modification_gap(x));
-  }
+    line.strip.gap.push_back(gap(c - span + (i + 0.5) * cell) - gap(c));
   return line;
 }
 
@@ -486,7 +497,8 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
 // point by x·r_bi/ρ_i of roll (geometry::touching_point). There the load acts and the FE body's
 // coefficients are read. Measured 2026-12-05 (the planet–ring tip-relief test, μ 0): the exact
 // path's relieved pair touches 0.24 mm of the planet's roll below ℓ; read at ℓ its load share
-// was 0.012 low and k 0.66 % soft. Kept on the path A–E (the flank grids' extent).
+// was 0.012 low and k 0.66 % soft. Kept on the path A–E; solve_position keeps them on the pair's
+// flank grid.
 std::array<double, 2> touching_flanks(const PairFrame& frame, const PairSeparation& separation,
                                       double at)
 {
@@ -699,14 +711,21 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       unknown.line = pair_line(model, unknown.at, relative_radius, largest_force);
       unknown.line.pinion_lever *= helix.cos_base;
       unknown.line.wheel_lever *= helix.cos_base;
-      // A Hertz pair's gap is its touching separation; a strip carries the gap from x = 0
-      // itself, so it keeps the removal at ℓ.
+      // The gap where the pair touches (the near field, Hertz or strip, is centred there).
       const double lead = dim == 3 ? model.separation.lead(stations.z[s]) : 0.;
-      const double at_line = model.separation(unknown.at) + corner_gap + lead;
-      unknown.touching = at_line + unknown.line.lowered;
+      unknown.touching = model.separation(unknown.at) + unknown.line.lowered + corner_gap + lead;
       unknown.flank = unknown.edge ? std::array<double, 2>{{unknown.at, unknown.at}}
                                    : touching_flanks(model.frame, model.separation, unknown.at);
-      problem.separation.push_back(unknown.line.strip.gap.empty() ? unknown.touching : at_line);
+      // Within the pair's grid, which reaches a grid step beyond the ℓ the sweep sees (flank
+      // grids reaching further put read points through thin tooth tips: invariants case 15 of
+      // seed 20261201, a ring of m 1 mm with profile crowning and slope, exit 3 when they did).
+      if (!unknown.edge)
+      {
+        const auto [from, to] = compliance.grid_span(s, j);
+        for (double& flank : unknown.flank)
+          flank = std::clamp(flank, from, to);
+      }
+      problem.separation.push_back(unknown.touching);
       // The near field's length: the contact line's part on the path within the station's strip
       // (a corner: the tip edge along the whole strip); a corner's radius against the mate's
       // flank radius there.
@@ -780,11 +799,6 @@ FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
     {
       const double at = position + helix.shift(stations.z[s]);
       seen.push_back(at);
-      // Modified flanks touch off ℓ (touching_flanks): the grids reach those points too.
-      for (const int j : geometry::gear_pairs_in_contact(pair, at))
-        for (const double flank :
-             touching_flanks(frame, separation, at + j * pair.transverse_base_pitch))
-          seen.push_back(flank - j * pair.transverse_base_pitch);
     }
     grids.push_back(flank_grids(pair, seen, info.grid_step));
     for (const FlankGrid& grid : grids.back())

@@ -27,6 +27,48 @@ double hertz_layer_compression(double peak_pressure, double half_width, const La
          body.young_modulus;
 }
 
+namespace
+{
+// −[c·ln(1 + ξ²/h²) + (1+ν)·ξ²/(ξ²+h²)]/(πE) (c = 1−ν², plane stress 1) and its integral in ξ.
+double depth_shift_kernel(double xi, const LayerBody& body)
+{
+  const double h = body.matching_depth, nu = body.poisson_ratio;
+  const double c = body.end_face ? 1. : 1. - nu * nu;
+  const double q = xi * xi / (h * h);
+  return -(c * std::log1p(q) + (1. + nu) * q / (1. + q)) / (M_PI * body.young_modulus);
+}
+double depth_shift_integral(double xi, const LayerBody& body)
+{
+  const double h = body.matching_depth, nu = body.poisson_ratio;
+  const double c = body.end_face ? 1. : 1. - nu * nu;
+  const double atan = std::atan(xi / h);
+  return -(c * (xi * std::log1p(xi * xi / (h * h)) - 2. * xi + 2. * h * atan) +
+           (1. + nu) * (xi - h * atan)) /
+         (M_PI * body.young_modulus);
+}
+} // namespace
+
+double spread_load_depth_shift(double line_load, double half_width, const LayerBody& body)
+{
+  // The mean of the kernel over the elliptic pressure, ξ = a·cos θ: Gauss–Chebyshev of the
+  // second kind, (2/(n+1))·Σ sin²θ_i·f(a·cos θ_i), θ_i = iπ/(n+1); the kernel is smooth on
+  // |ξ| ≤ a, 32 points are exact to round-off for a/h ≤ 1.
+  constexpr int n = 32;
+  double mean = 0.;
+  for (int i = 1; i <= n; ++i)
+  {
+    const double theta = i * M_PI / (n + 1);
+    mean +=
+        std::sin(theta) * std::sin(theta) * depth_shift_kernel(half_width * std::cos(theta), body);
+  }
+  return line_load * 2. / (n + 1) * mean;
+}
+
+double spread_load_depth_cell(double from, double to, const LayerBody& body)
+{
+  return depth_shift_integral(to, body) - depth_shift_integral(from, body);
+}
+
 double tip_edge_wedge_factor(double tip_pressure_angle)
 {
   const double alpha = 0.5 * (0.5 * M_PI + tip_pressure_angle); // half the corner's angle
@@ -55,7 +97,10 @@ double layer_approach(double force, double face_width, double relative_radius,
                       const LayerBody& first, const LayerBody& second)
 {
   const auto [a, p0] = hertz_zone(force, face_width, relative_radius, first, second);
-  return hertz_layer_compression(p0, a, first) + hertz_layer_compression(p0, a, second);
+  const double line_load = force / face_width;
+  return hertz_layer_compression(p0, a, first) + hertz_layer_compression(p0, a, second) +
+         spread_load_depth_shift(line_load, a, first) +
+         spread_load_depth_shift(line_load, a, second);
 }
 } // namespace
 
@@ -200,6 +245,13 @@ LineContact solve_strip(const Eigen::MatrixXd& influence, double line_load,
                           "the contact zone of a modified flank reached the end of its strip");
     LineContact contact;
     contact.approach = approach;
+    // The depth point under the strip's centre moves less under the spread load than under its
+    // resultant there (spread_load_depth_shift), as the Hertz layer's.
+    for (const int i : active)
+      for (const LayerBody* body : {&first, &second})
+        contact.approach +=
+            full[i] * spread_load_depth_cell(-strip.half_span + i * cell,
+                                             -strip.half_span + (i + 1) * cell, *body);
     contact.peak_pressure = full.maxCoeff();
     contact.half_width = 0.5 * cell * (active.back() - active.front() + 1);
     return contact;

@@ -42,6 +42,18 @@ double tip_edge_wedge_factor(double tip_pressure_angle);
 // end face (body.end_face) the same axis stresses with σ_y = 0.
 double hertz_layer_compression(double peak_pressure, double half_width, const LayerBody& body);
 
+// The FE body's coefficients are a point load's, read at the matching depth h under it; the
+// contact's load is spread over the zone, and a depth point moves less under a load beside it:
+// per unit line load at ξ, by −[(1−ν²)·ln(1 + ξ²/h²) + (1+ν)·ξ²/(ξ²+h²)]/(πE) against the load
+// at ξ = 0 (Flamant's half-plane, Johnson 1985 §2.2; plane stress on an end face: 1 for 1−ν²).
+// `spread_load_depth_shift` (m, ≤ 0): that shift of the depth point under a Hertzian line load w
+// (N/m) of half-width a (m) against w at its axis, added to each body's approach (docs/ltca.md
+// §3 "Spread load at the matching depth"); O((a/h)²): 0.14 % of the built-in pair's single-pair
+// compliance, 1.5 % at a/h = 0.7.
+double spread_load_depth_shift(double line_load, double half_width, const LayerBody& body);
+// The same per unit pressure over the cell ξ ∈ [from, to] (m²/N·Pa⁻¹: m per Pa), for the strip.
+double spread_load_depth_cell(double from, double to, const LayerBody& body);
+
 // A Hertz line contact of force F (N) over face width b (m) between two bodies with relative
 // radius of curvature R (m, > 0), each compressed down to its matching depth.
 struct LineContact

@@ -234,17 +234,21 @@ def draw_case(rng, runner, rounding_rng=None):
     sets.update(load_sets(rng, report, sets))
     kind = rng.choice(MODIFICATIONS)
     module = float(sets["Gear pair/Pinion/module"])
-    # Not on the cases the fast model checks (frictionless, unmodified: INFLUENCE_KINDS), which
-    # refuses a rounded tip: those keep their identity.
+    # Not on the cases the fast model checked when rounding was added (frictionless, unmodified:
+    # UNROUNDED_KINDS), which refuses a rounded tip: those keep their identity, and the seed's
+    # cases stay as drawn since.
     rounding = {}
-    if float(sets["Contact/Friction coefficient"]) != 0. or kind not in INFLUENCE_KINDS:
+    if float(sets["Contact/Friction coefficient"]) != 0. or kind not in UNROUNDED_KINDS:
         rounding, rounded_report = tip_rounding_sets(rounding_rng, runner, sets)
     if rounding:
         sets.update(rounding)
         report = rounded_report
+    # The pair's line of action (mm) for the closed forms of where modified flanks touch.
+    geometry = line_geometry(report,
+                             str(sets.get("Gear pair/Wheel/internal", "false")) == "true")
     return {"pair": sets, "modification": kind,
             "modifications": modification_sets(rng, kind, module),
-            "contact_ratio": value(report, "transverse_contact_ratio"),
+            "contact_ratio": value(report, "transverse_contact_ratio"), "geometry": geometry,
             "draws": attempt + 1, "tip_rounding": bool(rounding)}
 
 
@@ -312,12 +316,15 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # The influence-coefficient contact model (docs/ltca.md) on the case's own pair: the same sweep
 # as the exact rolling one within the accuracy it is tested to on the built-in pairs
 # (tests/stiffness/test_influence_coefficients.cc: k 1 %, TE 0.1 um, load shares 0.01; the
-# unloaded TE is the same geometry, 1 nm). Frictionless cases only: the fast model applies no
-# friction. INFLUENCE_KINDS: the modification kinds it accepts (profile modifications are refused,
-# docs/ltca.md). Cost: one `stiffness` run of ~3 s per such case (2 of the 30 of seed 20261201:
-# cases 2 and 28; measured 2026-12-02: case 28 |dk| 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018;
-# case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %, |dTE| 0.0427 um, |dshare| 0.0066: near the 1 %).
-INFLUENCE_KINDS = ("none",)
+# unloaded TE is the same geometry, 1 nm). Frictionless cases without rounded tips only: the fast
+# model applies no friction and models sharp tip edges. INFLUENCE_KINDS: the modification kinds
+# it accepts, every one since 2026-12-05 (before: "none"). Cost: one `stiffness` run of ~3 s per
+# such case and one on 2 ranks (measured 2026-12-02: case 28 |dk| 0.521 %, |dTE| 0.0147 um,
+# |dshare| 0.0018; case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %, |dTE| 0.0427 um, |dshare|
+# 0.0066: near the 1 %).
+INFLUENCE_KINDS = tuple(MODIFICATIONS)
+# The kinds draw_case leaves unrounded (the fast model's kinds when rounding was added).
+UNROUNDED_KINDS = ("none",)
 
 
 def influence_equals_exact(case, runner, log, sweeps):
@@ -328,7 +335,17 @@ def influence_equals_exact(case, runner, log, sweeps):
         return
     sets = sweep_sets(case, SWEEP_POSITIONS, "once")
     sets["Stiffness/contact model"] = "influence coefficients"
-    fast, _, _ = runner.run("stiffness", sets)
+    fast, code, stderr = runner.run("stiffness", sets, allowed=(0, 3))
+    if code == 3:
+        # A failure the model detects and reports (exit 3, no number) is its limit, not a wrong
+        # number; the one known so far: read points through a thin tooth near the form circle
+        # (case 23 of seed 20261201, z 24 at x -0.24, m 3 mm, with or without its relief;
+        # found 2026-12-05 when modified cases joined). Any other failure fails the case.
+        if "lies outside its gear's mesh" not in stderr:
+            raise CaseFailure(f"influence coefficients failed: {stderr.strip()[-400:]}")
+        log(f"influence = exact: skipped, the model reports its limit (exit 3: "
+            f"{stderr.strip()[-160:]})")
+        return
     fast_equals_exact("influence", table(sweeps["once"], "stiffness_sweep"),
                       table(fast, "stiffness_sweep"), log, unloaded=True)
     # Two ranks take a gear each, one rank both in turn, with the same factor of each gear
@@ -382,12 +399,48 @@ def geometric_te(case, rows, log):
     elif kind == "long relief both":
         amount = case["modifications"]["Gear pair/Pinion/tip relief"]
         e = case["contact_ratio"] - 1.
+        geometry = case["geometry"]
+        lowered = 0.
         for i, r in enumerate(rows):
             x = r["mesh_position"] % 1.
-            tent = amount * min(x, e - x) / e if x <= e else 0.
+            tent = relieved_tent(geometry, geometry["A"] + x * geometry["base_pitch"], x, e,
+                                 amount) if x <= e else 0.
+            lowered = max(lowered, amount * min(x, e - x) / e - tent if x <= e else 0.)
             check_close(f"tent: position {i} (x = {x:.4f}) unloaded TE [um]",
                         r["unloaded_transmission_error"], tent, 1e-3)
-        log(f"tent: the unloaded TE of equal long reliefs ({amount} um) at every position")
+        log(f"tent: the unloaded TE of equal long reliefs ({amount} um) at every position, "
+            f"where the relieved flanks touch (at most {lowered:.3g} um below the relief at l)")
+
+
+def touching(removal, slope, to_kink, radius):
+    """Where rigid flanks with a linear relief touch (the closed form of
+    geometry::touching_point): the gap removal + slope*x + x^2/(2R) over the tangential offset x
+    (mm) down to the relief's start at x = -to_kink, flat 0 beyond it; slope dimensionless, removal
+    and result in um, R in mm. Smallest at x = -slope*R (slope^2*R/2 lower) or at the kink."""
+    if slope * radius <= to_kink:
+        return removal - 0.5 * slope * slope * radius * 1e3
+    return to_kink * to_kink / (2. * radius) * 1e3
+
+
+def relieved_tent(geometry, at, x, e, amount):
+    """The unloaded TE (um) at mesh position x (0 <= x <= e = eps_alpha - 1) of equal linear long
+    reliefs `amount` (um) from the start of single contact: the entering pair at l = `at` (mm from
+    T1) relieved by the wheel's tip, amount*(e - x)/e, the leaving one at l + p_bt by the pinion's,
+    amount*x/e, both sloped amount/(e*p_bt) a unit of l; each where its flanks touch (touching),
+    the slope across the contact r_b/rho a unit of l, the relative radius rho1*rho2/(rho2 +- rho1)
+    (a ring's flank concave)."""
+    p_b, r_b1, r_b2 = geometry["base_pitch"], geometry["r_b1"], geometry["r_b2"]
+    t1t2, ring = geometry["t1t2"], geometry["internal"]
+    per_l = amount * 1e-3 / (e * p_b)  # -, um/mm
+
+    def pair(l, removal, of_wheel, to_kink_l):
+        rho1, rho2 = l, (l + t1t2 if ring else t1t2 - l)
+        radius = 1. / (1. / rho1 + (-1. if ring else 1.) / rho2)
+        k = r_b2 / rho2 if of_wheel else r_b1 / rho1
+        return touching(removal, per_l * k, to_kink_l / k, radius)
+
+    return min(pair(at, amount * (e - x) / e, True, (e - x) * p_b),
+               pair(at + p_b, amount * x / e, False, x * p_b))
 
 
 def check_peak_located(label, roll, face, a, e, h_c, half_width):
@@ -878,18 +931,30 @@ def helicoid_flanks(case, runner, log, sets, chords):
     return True
 
 
-def helical_tent(x, half_window, amount, e):
+def helical_tent(x, half_window, amount, e, geometry):
     """The unloaded TE of equal long tip reliefs on a helical pair at mesh position x: each
     transverse section z is a spur section at x + tan(beta_b)*(z - b/2)/p_bt, so the smallest
-    separation along the contact lines is the spur tent's smallest value over the window
-    x +- eps_beta/2. The tent is 0 on its single-contact zone [e, 1] (mod 1) and concave on
-    [0, e], so over a window that misses the zero set its minimum is at a window end."""
+    separation along the contact lines is the spur tent's (relieved_tent: each pair where its
+    relieved flanks touch, in the transverse section) smallest value over the window
+    x +- eps_beta/2, sampled at 2001 sections as the geometry does. The tent is 0 on its
+    single-contact zone [e, 1] (mod 1)."""
     lo, hi = x - half_window, x + half_window
     for k in range(math.floor(lo) - 1, math.floor(hi) + 1):
         if k + e <= hi and k + 1. >= lo:
             return 0.
-    tent = lambda y: amount * min(y % 1., e - y % 1.) / e
-    return min(tent(lo), tent(hi))
+    return min(relieved_tent(geometry, geometry["A"] + (y % 1.) * geometry["base_pitch"],
+                             y % 1., e, amount)
+               for y in (lo + (hi - lo) * i / 2000. for i in range(2001)))
+
+
+def line_geometry(report, internal):
+    """The pair's line of action (mm) from a `gear-pair` report, for relieved_tent."""
+    return {"r_b1": value(report, "pinion_base_radius"),
+            "r_b2": value(report, "wheel_base_radius"),
+            "t1t2": value(report, "centre_distance") *
+            math.sin(math.radians(value(report, "working_pressure_angle"))),
+            "base_pitch": value(report, "transverse_base_pitch"),
+            "A": value(report, "contact_start"), "internal": internal}
 
 
 HELICAL_TE_POSITIONS = (0.25, 0.5, 0.75)  # mesh positions x, fractions of e from A
@@ -931,7 +996,8 @@ def helical_unloaded_te(case, runner, log, sets, pair):
     cos_alpha_t = pitch * math.cos(math.radians(beta)) / (math.pi * module)
     transverse = amount * math.sqrt(1. + (math.tan(math.radians(beta)) * cos_alpha_t) ** 2)
     both = {"Gear pair/Pinion/tip relief": amount, "Gear pair/Wheel/tip relief": amount}
-    checks = [(f * e, both, helical_tent(f * e, half, transverse, e))
+    geometry = line_geometry(pair, str(sets.get("Gear pair/Wheel/internal", "false")) == "true")
+    checks = [(f * e, both, helical_tent(f * e, half, transverse, e, geometry))
               for f in HELICAL_TE_POSITIONS]
     checks.append((0.5 * e, {f"Gear pair/{one_gear}/tip relief": amount}, 0.))
     worst = 0.

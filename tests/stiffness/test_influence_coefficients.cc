@@ -8,6 +8,7 @@
 // And the two analytic pieces on their own: the Hertz layer against Weber's formula, the
 // complementarity problem against cases solved by hand.
 #include "errors/errors.h"
+#include "kinematics/gear_pair.h"
 #include "stiffness/influence_sweep.h"
 #include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
@@ -21,6 +22,7 @@
 #include <gtest/gtest.h>
 #include <iomanip>
 #include <iostream>
+#include <vector>
 
 using namespace gearstiff;
 using namespace gearstiff::stiffness;
@@ -39,6 +41,14 @@ struct Tolerances
   // load (610–671 MPa at positions 4–8 of the default sweep) and lies 4–18 % above the Hertz
   // peak of the pair's force, which the fast model reports (measured 2026-12-01: worst −19.2 %).
   double peak_pressure = 0.25;
+  // m, ℓ where a linear relief starts on the pinion's flank (its roll) and on the wheel's (its
+  // roll on the path's scale): a kink of the gap. Where the exact path's peak lies within
+  // kink_band of one, the pressure has a logarithmic singularity at the kink and each model's
+  // peak is its resolution's (the strip's at the planet–ring pair's position 0: 531 MPa on 96
+  // cells, 612 MPa on 192, k unchanged; the exact nodal peak 814 MPa at h_c 0.03 mm; measured
+  // 2026-12-05): printed, not compared.
+  std::vector<double> pinion_kinks, wheel_kinks;
+  double kink_band = 0.1e-3;
 };
 
 // Exact (rolling sweep, frictionless) against influence coefficients, position by position.
@@ -75,16 +85,34 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
     EXPECT_NEAR(dk, 0., tolerance.stiffness) << name << " position " << i;
     EXPECT_NEAR(dte, 0., tolerance.transmission_error) << name << " position " << i;
     EXPECT_NEAR(dshare, 0., tolerance.load_share) << name << " position " << i;
-    EXPECT_NEAR(dp, 0., tolerance.peak_pressure) << name << " position " << i;
+    const auto near = [&](const std::vector<double>& kinks, double roll)
+    {
+      return std::any_of(kinks.begin(), kinks.end(),
+                         [&](double kink) { return std::abs(roll - kink) < tolerance.kink_band; });
+    };
+    const bool at_kink =
+        std::any_of(a.pairs.begin(), a.pairs.end(),
+                    [&](const ToothPairLoad& q)
+                    {
+                      return q.max_pressure == a.max_contact_pressure &&
+                             (near(tolerance.pinion_kinks, q.max_pressure_roll) ||
+                              near(tolerance.wheel_kinks, q.max_pressure_wheel_roll));
+                    });
+    if (at_kink)
+      std::cout << name << " position " << i << ": the exact peak at a relief's start\n";
+    else
+      EXPECT_NEAR(dp, 0., tolerance.peak_pressure) << name << " position " << i;
     worst_k = std::max(worst_k, std::abs(dk));
     worst_te = std::max(worst_te, std::abs(dte));
     worst_share = std::max(worst_share, dshare);
-    worst_p = std::max(worst_p, std::abs(dp));
+    if (!at_kink)
+      worst_p = std::max(worst_p, std::abs(dp));
   }
   std::cout << name << ": worst |dk| " << worst_k * 100 << " %, |dTE| " << worst_te * 1e6
-            << " um, |dshare| " << worst_share << ", |dp| " << worst_p * 100 << " %; exact "
-            << exact.wall_time << " s, influence " << fast.wall_time << " s (once "
-            << fast.once_time << " s, contact " << fast.per_position_time << " s)\n";
+            << " um, |dshare| " << worst_share << ", |dp| " << worst_p * 100
+            << " % (off the reliefs' starts); exact " << exact.wall_time << " s, influence "
+            << fast.wall_time << " s (once " << fast.once_time << " s, contact "
+            << fast.per_position_time << " s)\n";
 }
 } // namespace
 
@@ -172,10 +200,42 @@ TEST(InfluenceCoefficients, HalfPlaneKernelIntegratesHertz)
     }
     return u;
   };
-  EXPECT_NEAR(surface(0.) / hertz.approach - 1., 0., 1e-4);
+  // hertz.approach also holds the depth points' spread-load shift (SpreadLoadDepthShift below).
+  const double layer = hertz.approach - 2. * spread_load_depth_shift(force / width, a, steel);
+  EXPECT_NEAR(surface(0.) / layer - 1., 0., 1e-4);
   // Inside the zone the two surfaces' difference to x = 0 is the gap x²/(2R) they close.
   const double x = 0.5 * a;
   EXPECT_NEAR((surface(0.) - surface(x)) / (x * x / (2. * radius)) - 1., 0., 1e-3);
+}
+
+// The depth point's shift under a spread load against its resultant at the axis
+// (spread_load_depth_shift): the Hertz form's quadrature equals the strip's cell integrals over
+// the elliptic pressure (midpoint rule, 4000 cells: within 1e-4, the √ edges); for a ≪ h it is
+// −w·(a²/(4h²))·[(1−ν²) + (1+ν)]/(πE) (⟨ξ²⟩ = a²/4; at a/h = 0.01 the O((a/h)⁴) rest is 1e-4
+// relative, tolerance 1e-3). Measured 2026-12-05: 0.14 % of the built-in pair's single-pair
+// compliance at a/h = 0.27, 1.9 % of invariants case 15's (z 38/70 internal, m 1 mm) at a/h
+// ≈ 0.7, where the model was 1.43 % soft without it and is 0.49 % stiff with it.
+TEST(InfluenceCoefficients, SpreadLoadDepthShift)
+{
+  const LayerBody steel{210e9, 0.3, 0.3e-3};
+  const double w = 2000. / 0.024, a = 0.2e-3; // N/m, m: a/h = 0.67
+  const double p0 = 2. * w / (M_PI * a);
+  const int n = 4000;
+  double cells = 0.;
+  for (int k = 0; k < n; ++k)
+  {
+    const double from = -a + 2. * a * k / n, to = from + 2. * a / n, mid = 0.5 * (from + to);
+    cells += p0 * std::sqrt(1. - mid * mid / (a * a)) * spread_load_depth_cell(from, to, steel);
+  }
+  const double shift = spread_load_depth_shift(w, a, steel);
+  EXPECT_LT(shift, 0.);
+  EXPECT_NEAR(cells / shift - 1., 0., 1e-4);
+  const double small = 3e-6, h = steel.matching_depth, nu = steel.poisson_ratio;
+  EXPECT_NEAR(spread_load_depth_shift(w, small, steel) /
+                      (-w * small * small / (4. * h * h) * ((1. - nu * nu) + (1. + nu)) /
+                       (M_PI * steel.young_modulus)) -
+                  1.,
+              0., 1e-3);
 }
 
 // The strip with a parabolic gap is the Hertz contact: approach, half-width and peak pressure
@@ -216,18 +276,25 @@ TEST(InfluenceCoefficients, ExternalPairMatchesExact)
 // 0.107 µm (external, long relief 10 µm both gears) and 5.86 % / 0.247 µm (internal, 8 µm on the
 // planet) on 2026-12-01; with the turned force lines, the near-kink strip and the zone's mean
 // slope (docs/ltca.md §5) 1.30 % / 0.095 µm and 6.04 % / 0.254 µm on 2026-12-02 (refused until
-// then). Now (2026-12-05) each pair touches where its modified flanks' gap is smallest
-// (geometry::touching_point), its FE coefficients read at that point of each flank: external
-// worst |Δk| 0.287 %, |ΔTE| 0.021 µm, |Δshare| 0.0014; internal 0.264 %, 0.013 µm, 0.0075
-// (positions 0–2, the relieved pair touching 0.24 mm of the planet's roll below ℓ: 0.4–0.7 %
-// soft and shares 0.012 off while its coefficients were read at ℓ). Tolerances: the 1 %,
-// 0.1 µm, 1 % (≈ 3.5×, 5×, 1.3× the worst measured: the issue's own bounds).
+// then). Since 2026-12-05 each pair touches where its modified flanks' gap is smallest
+// (geometry::touching_point), its FE coefficients read and its near field centred at that
+// point of each flank, the depth points' spread-load shift in the near field
+// (SpreadLoadDepthShift): external worst |Δk| 0.428 %, |ΔTE| 0.031 µm, |Δshare| 0.0018;
+// internal 0.515 %, 0.024 µm, 0.0052 (without the spread-load shift 0.335 % and 0.365 %: it
+// stiffens the built-in pairs by ~0.14 %). Tolerances: the 1 %, 0.1 µm, 1 % (≈ 2×, 3×,
+// 2× the worst measured: the issue's own bounds); the peak pressure off the reliefs' starts as
+// the unmodified cases' (Tolerances).
 TEST(InfluenceCoefficients, ExternalTipReliefMatchesExact)
 {
   GearMeshStiffnessSettings settings;
   settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(10e-6)};
   settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(10e-6)};
-  compare_with_exact(settings, 32, "tip relief");
+  // The long reliefs start where single contact does: the pinion's at D, the wheel's at B.
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
+  Tolerances tolerance;
+  tolerance.pinion_kinks = {pair.single_contact_end()};
+  tolerance.wheel_kinks = {pair.single_contact_start()};
+  compare_with_exact(settings, 32, "tip relief", tolerance);
 }
 
 TEST(InfluenceCoefficients, InternalPairMatchesExact)
@@ -239,14 +306,17 @@ TEST(InfluenceCoefficients, InternalTipReliefMatchesExact)
 {
   GearMeshStiffnessSettings settings = planet_ring_settings(3., "influence_internal_relief");
   settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(8e-6)};
-  compare_with_exact(settings, 16, "internal relief");
+  const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(settings.scene.pair);
+  Tolerances tolerance;
+  tolerance.pinion_kinks = {pair.single_contact_end()};
+  compare_with_exact(settings, 16, "internal relief", tolerance);
 }
 
 // Every kind of profile modification on an own pair (z 23/61, m 4 mm, x 0.2/−0.1, b 30 mm,
 // T1 300 N·m): the pinion with profile crowning C_α 6 µm and a parabolic tip relief 12 µm, the
 // wheel with a linear root relief 8 µm and a profile slope f_Hα −5 µm (removed at its root), both
-// relief lengths auto. Measured 2026-12-05 (24 positions): see the test's output; tolerances the
-// issue's 1 %, 0.1 µm, 1 %.
+// relief lengths auto. Measured 2026-12-05 (24 positions): worst |Δk| 0.183 %, |ΔTE| 0.050 µm,
+// |Δshare| 0.0003; tolerances the 1 %, 0.1 µm, 1 %.
 TEST(InfluenceCoefficients, OwnPairEveryProfileModificationMatchesExact)
 {
   using geometry::ModificationKind;
