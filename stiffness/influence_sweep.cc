@@ -796,10 +796,7 @@ FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
   {
     std::vector<double> seen;
     for (const double position : positions)
-    {
-      const double at = position + helix.shift(stations.z[s]);
-      seen.push_back(at);
-    }
+      seen.push_back(position + helix.shift(stations.z[s]));
     grids.push_back(flank_grids(pair, seen, info.grid_step));
     for (const FlankGrid& grid : grids.back())
       flanks.push_back(grid.pair);

@@ -12,6 +12,7 @@
 #include "stiffness/influence_sweep.h"
 #include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
+#include "stiffness/transmission_error.h"
 #include "tests/stiffness/load_share.h"
 #include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/planet_ring.h"
@@ -310,6 +311,42 @@ TEST(InfluenceCoefficients, InternalTipReliefMatchesExact)
   Tolerances tolerance;
   tolerance.pinion_kinks = {pair.single_contact_end()};
   compare_with_exact(settings, 16, "internal relief", tolerance);
+}
+
+// Issue 47: a Harris map's minimum at the same torque step as the exact path's. The built-in
+// pair with 7 µm long reliefs on both gears (≈ its single-pair deflection at T_d = 49.4 N·m,
+// tests/stiffness/test_micro_geometry.cc), 16 positions, T1 = 0.25 … 2·T_d in 8 steps, μ 0:
+// the TE peak-to-peak of each torque within the issue's 0.1 µm (a difference of two TEs each
+// within it), the smallest at the same step. Measured 2026-12-05: p-p 2.948 … 0.602 µm (exact), the
+// fast model within 0.017 µm at every step, both smallest at 1.75·T_d (0.602 / 0.593 µm).
+TEST(InfluenceCoefficients, HarrisMapMinimumAsExact)
+{
+  GearMeshStiffnessSettings settings;
+  settings.contact.friction_coefficient = 0.;
+  settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(7e-6)};
+  settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(7e-6)};
+  for (const double f : {0.25, 0.5, 0.75, 1., 1.25, 1.5, 1.75, 2.})
+    settings.torques.push_back(f * 49.4);
+  StiffnessSweepSpec spec;
+  spec.positions = 16;
+  spec.mesh = SweepMesh::once;
+  const StiffnessSweepResult exact =
+      stiffness_sweep<2>(MPI_COMM_SELF, settings, spec, stiffness_work_stem("harris_exact"));
+  settings.contact_model = ContactModel::influence_coefficients;
+  const StiffnessSweepResult fast =
+      influence_sweep<2>(MPI_COMM_SELF, settings, spec, stiffness_work_stem("harris_fast"));
+  ASSERT_EQ(fast.by_torque.size(), exact.by_torque.size());
+  std::vector<double> a, b;
+  for (std::size_t t = 0; t < exact.by_torque.size(); ++t)
+  {
+    a.push_back(summarize_transmission_error(exact.by_torque[t]).peak_to_peak);
+    b.push_back(summarize_transmission_error(fast.by_torque[t]).peak_to_peak);
+    std::cout << "T1 = " << settings.torques[t] << " N·m: TE p-p " << a.back() * 1e6 << " / "
+              << b.back() * 1e6 << " um\n";
+    EXPECT_NEAR(b.back(), a.back(), 0.1e-6) << "torque step " << t;
+  }
+  EXPECT_EQ(std::min_element(b.begin(), b.end()) - b.begin(),
+            std::min_element(a.begin(), a.end()) - a.begin());
 }
 
 // Every kind of profile modification on an own pair (z 23/61, m 4 mm, x 0.2/−0.1, b 30 mm,
