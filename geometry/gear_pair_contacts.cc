@@ -19,6 +19,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 namespace gearstiff::geometry
 {
@@ -262,7 +263,8 @@ std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
   // Each section's flanks touch where their transverse gap is smallest (touching_separation),
   // at most its removal at the line, which bounds the sections worth that search.
   const PairFlanks flanks = pair_flanks(pair, line, gears, j);
-  std::vector<std::pair<double, double>> at_line; // (removal at the line + lead, roll)
+  // (removal at the line + lead, roll, lead) of each section
+  std::vector<std::tuple<double, double, double>> at_line;
   for (int i = 0; i <= samples; ++i)
   {
     const double z = z_from + (z_to - z_from) * i / samples;
@@ -270,8 +272,9 @@ std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
     const double lead = three_d ? lead_removed_depth(spec.pinion_modifications.lead, z, b, true) +
                                       lead_removed_depth(spec.wheel_modifications.lead, z, b, true)
                                 : 0.;
-    at_line.emplace_back(
-        flanks.pinion_removal(roll) + flanks.wheel_removal(std::abs(roll - line.t2)) + lead, roll);
+    at_line.emplace_back(flanks.pinion_removal(roll) +
+                             flanks.wheel_removal(std::abs(roll - line.t2)) + lead,
+                         roll, lead);
   }
   // The search lowers a section by at most β²R/2, β the largest slope of the gap across the
   // contact (both flanks' steepest removal per roll, times r_b/ρ) and R the largest relative
@@ -292,7 +295,7 @@ std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
   const double slope_1 = steepest(flanks.pinion_removal, flanks.pinion_range);
   const double slope_2 = steepest(flanks.wheel_removal, flanks.wheel_range);
   double lowered = 0.; // m, the most a section's search can lower it
-  for (const auto& [removal, roll] : at_line)
+  for (const auto& [removal, roll, lead] : at_line)
   {
     const double rho_1 = roll, rho_2 = std::abs(roll - line.t2);
     const double radius = 1. / (1. / rho_1 + (flanks.internal ? -1. : 1.) / rho_2);
@@ -302,13 +305,11 @@ std::optional<double> separation_along_line(const GearPairSceneSpec& spec,
   }
   std::sort(at_line.begin(), at_line.end());
   double smallest = std::numeric_limits<double>::max();
-  for (const auto& [removal, roll] : at_line)
+  for (const auto& [removal, roll, lead] : at_line)
   {
     if (removal - lowered >= smallest)
       break;
-    const double profile =
-        flanks.pinion_removal(roll) + flanks.wheel_removal(std::abs(roll - line.t2));
-    smallest = std::min(smallest, removal - profile + touching_separation(flanks, roll));
+    smallest = std::min(smallest, lead + touching_separation(flanks, roll));
   }
   return smallest;
 }
