@@ -256,9 +256,9 @@ PointFunctional point_functional(const BodyModel<dim>& model, const Point<dim>& 
   for (unsigned int d = 0; d < dim; ++d)
     where += (d ? ", " : "") + format_number(point[d] * 1e3, 6);
   throw SolverFailure("influence coefficients",
-                      "a flank grid point (" + where +
-                          ") mm lies outside its gear's mesh (the matching depth reaches "
-                          "through the tooth)");
+                      "a flank grid point (" + where + ") mm lies outside the " +
+                          (body == geometry::scene_ids::wheel_body ? "wheel" : "pinion") +
+                          "'s mesh (the matching depth reaches through the tooth)");
 }
 } // namespace
 

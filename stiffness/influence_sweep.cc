@@ -109,10 +109,29 @@ constexpr double tip_corner_modules = 0.1;
 constexpr double matching_depth_cells = 3.;
 // The load points lie this many cells inside the surface: the meshed flank is a chord polygon of
 // the involute. 3D: its sagitta h_f²/(8ρ) reaches 1 µm for h_f = 0.2 mm at ρ = 5 mm; 4 µm under a
-// read 0.6 mm deep changes nothing the read sees.
+// read 0.6 mm deep changes nothing the read sees. Where the flank bends more (ρ small, near the
+// base circle) the load and its read sink further together (flank_sink).
 constexpr double inset_cells(int dim)
 {
   return dim == 2 ? 1e-3 : 0.02;
+}
+
+// m, how far the load and the read of a convex flank's point at ℓ = `at` move inward together
+// beyond `inset`, so that the load lies inside the meshed chord polygon (linear cells): twice the
+// sagitta c²/(8ρ) of a band cell c at the flank's transverse curvature radius ρ (ρ1 = ℓ, ρ2 =
+// T1T2 − ℓ), less the inset. A ring's flank is concave: its chords lie outside the flank. Found
+// 2026-12-05 on invariants case 23 of seed 20261201 (z 24, x −0.24, m 3 mm: ρ 2.7 mm at the
+// grid's first point, sagitta 0.67 µm against the 2D inset 0.12 µm; exit 3 "a flank grid point
+// lies outside the pinion's mesh"). The read keeps its distance under the load (the depth the
+// near field is matched at).
+double flank_sink(const PairFrame& frame, double at, bool wheel, double band, double inset)
+{
+  if (wheel && frame.pair.spec.wheel.internal)
+    return 0.;
+  const double rho = wheel ? frame.t2 - at : at;
+  if (!(rho > 0.))
+    return 0.;
+  return std::max(0., band * band / (4. * rho) - inset);
 }
 
 Tensor<1, 2> turned(const Tensor<1, 2>& v, double angle)
@@ -132,14 +151,14 @@ Tensor<1, 2> turned(const Tensor<1, 2>& v, double angle)
 // at the matching depth on the plane. `removal(ℓ, wheel)`, `lead(z, wheel)` (m, transverse): the
 // profile and lead modifications' removal, by which the flank lies under the nominal one.
 void add_station_points(const PairFrame& frame, const Helix& /*helix*/, int j, double at,
-                        bool wheel, unsigned int direction, double inset, double depth,
+                        bool wheel, unsigned int direction, double inset, double depth, double band,
                         const FaceStations& /*stations*/, std::size_t /*i*/, bool /*edge*/,
                         const std::function<double(double, bool)>& removal,
                         const std::function<double(double, bool)>& /*lead*/,
                         std::vector<BodyPoint<2>>& loads, std::vector<BodyPoint<2>>& reads)
 {
   FlankPoint p = flank_point(frame, j, at, wheel);
-  p.surface += removal(at, wheel) * p.inward;
+  p.surface += (removal(at, wheel) + flank_sink(frame, at, wheel, band, inset)) * p.inward;
   const Tensor<1, 2> along = direction == 0 ? p.inward : p.across;
   loads.push_back({{p.surface + inset * p.inward}, {1.}, along, p.body});
   reads.push_back({{p.surface + depth * p.inward}, {1.}, along, p.body});
@@ -150,7 +169,7 @@ void add_station_points(const PairFrame& frame, const Helix& /*helix*/, int j, d
 // first order in the layer), and the direction is that normal: n_z = −φ'·((P − O) × n_t) keeps
 // n ⊥ the helix through P, |n_z| = tan β_b before normalising.
 void add_station_points(const PairFrame& frame, const Helix& helix, int j, double at, bool wheel,
-                        unsigned int direction, double inset, double depth,
+                        unsigned int direction, double inset, double depth, double band,
                         const FaceStations& stations, std::size_t i, bool edge,
                         const std::function<double(double, bool)>& removal,
                         const std::function<double(double, bool)>& lead,
@@ -162,11 +181,13 @@ void add_station_points(const PairFrame& frame, const Helix& helix, int j, doubl
   // A tip edge (`edge`): the flank point at ℓ = `at` (A or E) in every section, the tip's edge
   // along the face, not the inclined contact line.
   const auto roll = [&](double z) { return edge ? at : at + (helix.shift(z) - helix.shift(z_i)); };
+  const double sink = flank_sink(frame, at, wheel, band, inset);
   const auto at_z = [&](double offset, double z)
   {
     const double l = roll(z);
     FlankPoint p = flank_point(frame, j, l, wheel);
     p.surface += removal(l, wheel) * p.inward;
+    offset += sink;
     Point<2> q = p.surface + (lead(z, wheel) + offset / helix.cos_base) * p.inward;
     if (turn_rate != 0.)
       q = centre + turned(q - centre, turn_rate * (z - helix.middle));
@@ -241,7 +262,7 @@ public:
   // with set_coefficients, computed where the caller chooses (a gear a rank, docs/ltca.md "Cost").
   FlankCompliance(const PairFrame& frame, const Helix& helix,
                   std::vector<std::vector<FlankGrid>> grids, double step, double depth,
-                  double inset, const FaceStations& stations,
+                  double inset, double band, const FaceStations& stations,
                   const std::function<double(double, bool)>& removal,
                   const std::function<double(double, bool)>& lead, bool tilted,
                   std::vector<std::pair<int, bool>> edges)
@@ -260,7 +281,7 @@ public:
           for (unsigned int g = 0; g < grid.count; ++g)
             for (unsigned int d = 0; d < directions; ++d)
               add_station_points(frame, helix, grid.pair, grid.first + g * step, wheel, d, inset,
-                                 depth, stations, s, false, removal, lead, loads, reads);
+                                 depth, band, stations, s, false, removal, lead, loads, reads);
         // A helical pair's tip edges on this plane (docs/ltca.md §3 "Tip edges"): the wheel's at
         // ℓ = A, the pinion's at E, of the flanks whose lines cross that end, loaded along the
         // edge.
@@ -269,7 +290,7 @@ public:
           for (unsigned int d = 0; d < directions; ++d)
             add_station_points(frame, helix, j,
                                at_end ? frame.pair.contact_end : frame.pair.contact_start, wheel, d,
-                               inset, depth, stations, s, true, removal, lead, loads, reads);
+                               inset, depth, band, stations, s, true, removal, lead, loads, reads);
       }
     }
   }
@@ -845,8 +866,8 @@ FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
         }
   return FlankCompliance<dim>(
       frame, helix, grids, info.grid_step, info.matching_depth,
-      inset_cells(dim) * info.flank_cell_size, stations,
-      [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
+      inset_cells(dim) * info.flank_cell_size, band_cell_factor(dim) * info.flank_cell_size,
+      stations, [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
       [&separation](double z, bool wheel) { return separation.lead_removal(z, wheel); },
       separation.modified(), edges);
 }
