@@ -113,20 +113,14 @@ using namespace influence;
 
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
-  // The tip-corner unknowns beyond the path stand for a sharp tip edge; a rounded one
-  // (GearSpec::tip_rounding_radius) is not modelled here, so it is refused, never ignored.
-  // Measured 2026-12-05 with the refusal lifted by hand (built-in pair, r 0.5 mm on both tips,
-  // μ 0, 64 positions at 150 N·m ≈ 3·T_d; docs/ltca.md "Tip rounding"): k within +0.18 …
-  // +0.45 % of the exact path, but at the positions where the exact contact reaches the rounding
-  // (its tip_edge_contact, 0.0078 and 0.3203) the model's Hertz pressure on the involute is 47 and
-  // 30 % below the exact path's arc pressure: the arc is not in its gap.
-  for (const bool wheel : {false, true})
-    if ((wheel ? settings.scene.pair.wheel : settings.scene.pair.pinion).tip_rounding_radius > 0.)
-      throw InputError(kinematics::field::gear(wheel, "tip_rounding_radius"),
-                       "influence coefficients model a sharp tip edge only (with a rounded tip "
-                       "k is within 0.5 % of the exact path, but the pressure where the contact "
-                       "reaches the rounding is 30-47 % low, docs/ltca.md \"Tip rounding\"): use "
-                       "finite element for a rounded tip");
+  // A rounded tip of an external gear is carried as its arc's removal beyond the tip form circle
+  // in the pair's gap (PairSeparation, rounded_tip_removal; docs/ltca.md "Tip rounding"). A
+  // ring's rounded tip is not (its flank is concave, the arc's removal there not derived): refused,
+  // never ignored.
+  if (settings.scene.pair.wheel.internal && settings.scene.pair.wheel.tip_rounding_radius > 0.)
+    throw InputError(kinematics::field::gear(true, "tip_rounding_radius"),
+                     "influence coefficients carry a rounded tip on external gears only: use "
+                     "finite element for a ring's rounded tip");
   if (settings.scene.mesh.dimension == 3)
   {
     // The 3D model is accepted for what it is verified on (docs/ltca.md §3): spur pairs,

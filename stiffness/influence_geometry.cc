@@ -86,12 +86,38 @@ double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
   return std::abs(l_r - alpha * s1 * r_b1 - at);
 }
 
+double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll)
+{
+  if (!(radius > 0.) || !(roll > form_roll))
+    return 0.;
+  // The involute in its gear's frame, its normal's angle θ = ρ/r_b: P(θ) = r_b(−sin θ, cos θ) +
+  // ρ·n(θ), n = (cos θ, sin θ) outward; the arc's centre lies r under the form point.
+  const auto point = [base_radius](double rho)
+  {
+    const double theta = rho / base_radius;
+    return Eigen::Vector2d(-base_radius * std::sin(theta) + rho * std::cos(theta),
+                           base_radius * std::cos(theta) + rho * std::sin(theta));
+  };
+  const auto normal = [base_radius](double rho)
+  { return Eigen::Vector2d(std::cos(rho / base_radius), std::sin(rho / base_radius)); };
+  const Eigen::Vector2d centre = point(form_roll) - radius * normal(form_roll);
+  // |P − t·n − C| = r for the nearer t ≥ 0.
+  const Eigen::Vector2d d = point(roll) - centre;
+  const double along = d.dot(normal(roll));
+  const double discriminant = along * along - d.squaredNorm() + radius * radius;
+  return discriminant >= 0. ? along - std::sqrt(discriminant) : along;
+}
+
 PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const PairFrame& frame)
     : pinion(settings.scene.pinion_modifications.all_teeth),
       wheel(settings.scene.wheel_modifications.all_teeth),
       pinion_lead(settings.scene.pinion_modifications.lead),
       wheel_lead(settings.scene.wheel_modifications.lead), face_width(frame.pair.common_face_width),
-      t2(frame.t2)
+      t2(frame.t2), pinion_base(frame.pinion_base_radius()), wheel_base(frame.wheel_base_radius()),
+      pinion_rounding(settings.scene.pair.pinion.tip_rounding_radius),
+      // A ring's rounded tip is refused (check_influence_settings): its flank is concave.
+      wheel_rounding(
+          settings.scene.pair.wheel.internal ? 0. : settings.scene.pair.wheel.tip_rounding_radius)
 {
   for (const bool is_wheel : {false, true})
   {
@@ -106,10 +132,18 @@ PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const 
         geometry::flank_roll_range(frame.pair, tooth, is_wheel);
   }
   // By value: a copied PairSeparation keeps working.
-  flanks.pinion_removal = [list = pinion, range = pinion_range](double roll)
-  { return geometry::removed_depth(list, range, roll, true); };
-  flanks.wheel_removal = [list = wheel, range = wheel_range](double roll)
-  { return geometry::removed_depth(list, range, roll, true); };
+  flanks.pinion_removal =
+      [list = pinion, range = pinion_range, r_b = pinion_base, r = pinion_rounding](double roll)
+  {
+    return geometry::removed_depth(list, range, roll, true) +
+           rounded_tip_removal(r_b, range.tip, r, roll);
+  };
+  flanks.wheel_removal =
+      [list = wheel, range = wheel_range, r_b = wheel_base, r = wheel_rounding](double roll)
+  {
+    return geometry::removed_depth(list, range, roll, true) +
+           rounded_tip_removal(r_b, range.tip, r, roll);
+  };
   flanks.pinion_range = pinion_range;
   flanks.wheel_range = wheel_range;
   flanks.pinion_base_radius = frame.pinion_base_radius();

@@ -75,8 +75,19 @@ double on_path_width(const FaceStations& stations, const Helix& helix,
 // is |ℓ(corner's involute) − ℓ(the mate flank's)|. External pairs (a ring is refused).
 double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start);
 
+// m, the depth by which a rounded tip's arc lies under the involute's continuation beyond the tip
+// form circle, at the flank point of roll `roll` (ρ = √(r² − r_b²); 0 up to the form roll
+// `form_roll`), measured along that point's inward normal as the profile modifications are
+// (geometry/tooth_modification.h): the arc of radius `radius` is tangent to the involute at the
+// form roll. An external gear's convex flank. Where the normal misses the arc (far beyond the
+// tip) the depth to its nearest approach. Closed form near the form roll: with x the arc length
+// along the flank beyond it, x²/2·(1/r − 1/ρ_F).
+double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll);
+
 // The designed separation of a pair at ℓ: both loaded flanks' removal at their roll lengths
-// (the same on every tooth: faults are refused), as geometry::unloaded_transmission_errors.
+// (the same on every tooth: faults are refused), as geometry::unloaded_transmission_errors. A
+// rounded tip of an external gear adds its arc beyond the tip form circle (rounded_tip_removal:
+// the near field's gap then carries a contact onto the arc, docs/ltca.md "Tip rounding").
 class PairSeparation
 {
 public:
@@ -90,6 +101,8 @@ public:
   // digit).
   bool modified() const
   {
+    if (pinion_rounding > 0. || wheel_rounding > 0.)
+      return true;
     for (const auto* list : {&pinion, &wheel})
       for (const geometry::ToothModification& m : *list)
         if (m.amount != 0.)
@@ -99,8 +112,11 @@ public:
   // The depth removed from one gear's loaded flank where it touches at ℓ.
   double removal(double at, bool of_wheel) const
   {
-    return of_wheel ? geometry::removed_depth(wheel, wheel_range, std::abs(at - t2), true)
-                    : geometry::removed_depth(pinion, pinion_range, at, true);
+    return of_wheel ? geometry::removed_depth(wheel, wheel_range, std::abs(at - t2), true) +
+                          rounded_tip_removal(wheel_base, wheel_range.tip, wheel_rounding,
+                                              std::abs(at - t2))
+                    : geometry::removed_depth(pinion, pinion_range, at, true) +
+                          rounded_tip_removal(pinion_base, pinion_range.tip, pinion_rounding, at);
   }
   // The depth removed from one gear's loaded flank at z (m) of the face by its lead
   // modifications (3D; geometry/tooth_modification_lead.h), and from both.
@@ -131,6 +147,8 @@ private:
   geometry::FlankRollRange pinion_range, wheel_range;
   double face_width; // m, b
   double t2;
+  double pinion_base, wheel_base;                   // m, r_b
+  double pinion_rounding = 0., wheel_rounding = 0.; // m, tip rounding radius (0: sharp)
   geometry::PairFlanks flanks; // touching(): the removals above and the pair's radii
 };
 } // namespace gearstiff::stiffness::influence

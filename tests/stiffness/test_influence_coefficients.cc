@@ -9,6 +9,7 @@
 // complementarity problem against cases solved by hand.
 #include "errors/errors.h"
 #include "kinematics/gear_pair.h"
+#include "stiffness/influence_geometry.h"
 #include "stiffness/influence_sweep.h"
 #include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
@@ -50,7 +51,18 @@ struct Tolerances
   // 2026-12-05): printed, not compared.
   std::vector<double> pinion_kinks, wheel_kinks;
   double kink_band = 0.1e-3;
+  // Rounded tips: where the exact path's peak lies on a tip's arc (its tip_edge_contact: within
+  // h_c of A by the wheel's roll or of E by the pinion's), the arc is meshed as chords whose
+  // corners (3.4° apart at h_c 0.03 mm on r 0.5 mm) give a nodal peak that does not converge
+  // (measured 2026-12-05, built-in pair, r 0.5 mm, T_d, mesh position 0.0078: 1279, 1493, 998,
+  // 1834 MPa at h_c 0.03, 0.015, 0.0075, 0.00375 mm): printed, not compared.
+  bool rounded_tips = false;
 };
+
+kinematics::GearPairGeometry fast_pair(const GearMeshStiffnessSettings& settings)
+{
+  return kinematics::compute_gear_pair(settings.scene.pair);
+}
 
 // Exact (rolling sweep, frictionless) against influence coefficients, position by position.
 void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int positions,
@@ -99,14 +111,26 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
                              (near(tolerance.pinion_kinks, q.max_pressure_roll) ||
                               near(tolerance.wheel_kinks, q.max_pressure_wheel_roll));
                     });
+    const bool on_arc =
+        tolerance.rounded_tips &&
+        std::any_of(a.pairs.begin(), a.pairs.end(),
+                    [&](const ToothPairLoad& q)
+                    {
+                      return q.max_pressure == a.max_contact_pressure &&
+                             (q.max_pressure_wheel_roll <=
+                                  a.contact_size + fast_pair(base).contact_start ||
+                              q.max_pressure_roll >= fast_pair(base).contact_end - a.contact_size);
+                    });
     if (at_kink)
       std::cout << name << " position " << i << ": the exact peak at a relief's start\n";
+    else if (on_arc)
+      std::cout << name << " position " << i << ": the exact peak on a tip's arc\n";
     else
       EXPECT_NEAR(dp, 0., tolerance.peak_pressure) << name << " position " << i;
     worst_k = std::max(worst_k, std::abs(dk));
     worst_te = std::max(worst_te, std::abs(dte));
     worst_share = std::max(worst_share, dshare);
-    if (!at_kink)
+    if (!at_kink && !on_arc)
       worst_p = std::max(worst_p, std::abs(dp));
   }
   std::cout << name << ": worst |dk| " << worst_k * 100 << " %, |dTE| " << worst_te * 1e6
@@ -268,6 +292,35 @@ TEST(InfluenceCoefficients, StripWithParabolaIsHertz)
   EXPECT_NEAR(solved.compliance / hertz.compliance - 1., 0., 0.02);
 }
 
+// A rounded tip's arc under the involute's continuation (rounded_tip_removal): nothing up to the
+// tip form roll, then two curves tangent there, radii r and ρ_F: x²/2·(1/r − 1/ρ_F) at the arc
+// length x beyond it (x = (ρ² − ρ_F²)/(2r_b) along the involute), up to O((x/r)²) (measured
+// 2026-12-05: 3.0e-5 at x/r 0.01, 3.9e-4 at 0.04; tolerance 1e-3 at 0.04).
+TEST(InfluenceCoefficients, RoundedTipRemovalClosedForm)
+{
+  const double base_radius = 0.03, form_roll = 0.015, radius = 0.5e-3; // m
+  EXPECT_EQ(influence::rounded_tip_removal(base_radius, form_roll, radius, 0.9 * form_roll), 0.);
+  EXPECT_EQ(influence::rounded_tip_removal(base_radius, form_roll, radius, form_roll), 0.);
+  EXPECT_EQ(influence::rounded_tip_removal(base_radius, form_roll, 0., 1.1 * form_roll), 0.);
+  for (const double fraction : {0.01, 0.04})
+  {
+    const double x = fraction * radius;
+    const double roll = std::sqrt(form_roll * form_roll + 2. * base_radius * x);
+    const double closed = 0.5 * x * x * (1. / radius - 1. / form_roll);
+    EXPECT_NEAR(influence::rounded_tip_removal(base_radius, form_roll, radius, roll) / closed, 1.,
+                1e-3)
+        << "x/r " << fraction;
+  }
+  double previous = 0.;
+  for (int i = 1; i <= 20; ++i)
+  {
+    const double removal =
+        influence::rounded_tip_removal(base_radius, form_roll, radius, form_roll + i * 2e-5);
+    EXPECT_GT(removal, previous) << i;
+    previous = removal;
+  }
+}
+
 TEST(InfluenceCoefficients, ExternalPairMatchesExact)
 {
   compare_with_exact(GearMeshStiffnessSettings(), 32, "external");
@@ -296,6 +349,23 @@ TEST(InfluenceCoefficients, ExternalTipReliefMatchesExact)
   tolerance.pinion_kinks = {pair.single_contact_end()};
   tolerance.wheel_kinks = {pair.single_contact_start()};
   compare_with_exact(settings, 32, "tip relief", tolerance);
+}
+
+// Rounded tips (r 0.5 mm on both gears of the built-in pair, T_d): the path ends at the tip form
+// circles and the arcs beyond them enter the pairs' gap (rounded_tip_removal; docs/ltca.md "Tip
+// rounding"). Measured 2026-12-05 against the exact rolling sweep on 64 positions: worst |Δk|
+// 0.51 %, |ΔTE| 0.026 µm, |Δshare| 0.0030 (at 150 N·m ≈ 3·T_d: 0.79 %, 0.12 µm, 0.0050; the
+// arcs left out of the gap, 0.45 % but the pressure where a contact reaches an arc 30-47 % below
+// the exact path's). Tolerances: the issue's, as for the reliefs; the exact peak on an arc is
+// not compared (Tolerances::rounded_tips).
+TEST(InfluenceCoefficients, TipRoundingMatchesExact)
+{
+  GearMeshStiffnessSettings settings;
+  settings.scene.pair.pinion.tip_rounding_radius = 0.5e-3;
+  settings.scene.pair.wheel.tip_rounding_radius = 0.5e-3;
+  Tolerances tolerance;
+  tolerance.rounded_tips = true;
+  compare_with_exact(settings, 32, "tip rounding", tolerance);
 }
 
 TEST(InfluenceCoefficients, InternalPairMatchesExact)
