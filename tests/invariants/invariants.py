@@ -235,8 +235,8 @@ def draw_case(rng, runner, rounding_rng=None):
     kind = rng.choice(MODIFICATIONS)
     module = float(sets["Gear pair/Pinion/module"])
     # Not on the cases the fast model checked when rounding was added (frictionless, unmodified:
-    # UNROUNDED_KINDS), which refuses a rounded tip: those keep their identity, and the seed's
-    # cases stay as drawn since.
+    # UNROUNDED_KINDS), which refused a rounded tip until 2026-12-05: those keep their identity,
+    # and the seed's cases stay as drawn since.
     rounding = {}
     if float(sets["Contact/Friction coefficient"]) != 0. or kind not in UNROUNDED_KINDS:
         rounding, rounded_report = tip_rounding_sets(rounding_rng, runner, sets)
@@ -316,8 +316,10 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # The influence-coefficient contact model (docs/ltca.md) on the case's own pair: the same sweep
 # as the exact rolling one within the accuracy it is tested to on the built-in pairs
 # (tests/stiffness/test_influence_coefficients.cc: k 1 %, TE 0.1 um, load shares 0.01; the
-# unloaded TE is the same geometry, 1 nm). Frictionless cases without rounded tips only: the fast
-# model applies no friction and models sharp tip edges. INFLUENCE_KINDS: the modification kinds
+# unloaded TE is the same geometry, 1 nm). Frictionless cases only, and no ring with a rounded
+# tip: the fast model applies no friction and carries the rounded tips of external gears only
+# (since 2026-12-05; seed 20261201 cases 33, 61, 63, rounded and relieved or profile-mixed:
+# |dk| 0.339, 0.354, 0.307 %, |dTE| 0.012-0.027 um). INFLUENCE_KINDS: the modification kinds
 # it accepts, every one since 2026-12-05 (before: "none"). Cost: one `stiffness` run of ~3 s per
 # such case and one on 2 ranks (measured 2026-12-02: case 28 |dk| 0.521 %, |dTE| 0.0147 um,
 # |dshare| 0.0018; case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %, |dTE| 0.0427 um, |dshare|
