@@ -612,6 +612,7 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
     double force = 0., peak = 0., widest = 0.;
     unsigned int closed = 0;          // the pair's stations in contact
     const Unknown* peak_at = nullptr; // the unknown of the pair's peak pressure
+    double peak_offset = 0.;          // m, its peak's tangential offset (LineContact)
     for (std::size_t item = 0; item < unknowns.size(); ++item)
     {
       if (unknowns[item].pair != j)
@@ -620,7 +621,10 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
       force += solution.force[item];
       closed += solution.force[item] > 0.;
       if (peak_at == nullptr || solution.contact[item].peak_pressure > peak)
+      {
         peak_at = &unknowns[item];
+        peak_offset = solution.contact[item].peak_offset;
+      }
       peak = std::max(peak, solution.contact[item].peak_pressure);
       widest = std::max(widest, solution.contact[item].half_width);
       // N/m: the transverse load per unit of face width, as the exact path's plane forces over
@@ -639,9 +643,18 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
       r.pairs.back().closed_nodes = closed;
     if (peak_at != nullptr)
     {
-      // Where the pair touches on each flank (off ℓ on modified flanks: touching_flanks).
-      r.pairs.back().max_pressure_roll = peak_at->flank[0];
-      r.pairs.back().max_pressure_wheel_roll = peak_at->flank[1];
+      // Where the pressure peaks on each flank: the touching point (off ℓ on modified flanks:
+      // touching_flanks) moved by the strip's peak offset x, x·r_bi/ρ_i of roll (a contact
+      // reaching a relief's start or a rounded tip's arc peaks there; a tip edge at its edge).
+      // Measured 2026-12-05 (built-in pair, r 0.5 mm rounded tips, 150 N·m, mesh position
+      // 0.3203): the exact path's peak at roll 15.318 mm (E, the arc's start), the touching point
+      // 15.237 mm.
+      const double shift = peak_at->edge ? 0. : peak_offset;
+      r.pairs.back().max_pressure_roll =
+          peak_at->flank[0] + shift * model.frame.pinion_base_radius() / peak_at->at;
+      r.pairs.back().max_pressure_wheel_roll =
+          peak_at->flank[1] +
+          shift * model.frame.wheel_base_radius() / std::abs(peak_at->at - model.frame.t2);
       if (dim == 3)
         r.pairs.back().max_pressure_face =
             model.stations.z[peak_at->station] - 0.5 * model.face_width;

@@ -252,7 +252,9 @@ LineContact solve_strip(const Eigen::MatrixXd& influence, double line_load,
         contact.approach +=
             full[i] * spread_load_depth_cell(-strip.half_span + i * cell,
                                              -strip.half_span + (i + 1) * cell, *body);
-    contact.peak_pressure = full.maxCoeff();
+    Eigen::Index peak = 0;
+    contact.peak_pressure = full.maxCoeff(&peak);
+    contact.peak_offset = -strip.half_span + (static_cast<double>(peak) + 0.5) * cell;
     contact.half_width = 0.5 * cell * (active.back() - active.front() + 1);
     return contact;
   }

@@ -62,6 +62,10 @@ struct LineContact
   double peak_pressure = 0.; // Pa, p0 = 2w/(πa)
   double approach = 0.;      // m, δ₁(h₁) + δ₂(h₂)
   double compliance = 0.;    // m/N, dδ/dF
+  // m, where the pressure peaks, as a tangential offset from the contact's centre (a strip's:
+  // its touching point; Hertz: 0): a contact reaching a relief's start or a rounded tip's arc
+  // peaks there, not where it is centred.
+  double peak_offset = 0.;
 };
 LineContact hertz_line_contact(double force, double face_width, double relative_radius,
                                const LayerBody& first, const LayerBody& second);
