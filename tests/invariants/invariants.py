@@ -338,9 +338,12 @@ def ring_rounded(case):
 
 def influence_equals_exact(case, runner, log, sweeps):
     friction = float(case["pair"]["Contact/Friction coefficient"])
-    if friction != 0. or case["modification"] not in INFLUENCE_KINDS or ring_rounded(case):
-        log(f"influence = exact: skipped ({case['modification']}, friction {friction}, "
-            f"a ring's rounded tip {ring_rounded(case)}: the fast model refuses it)")
+    reasons = ([f"friction {friction}: the fast model applies none"] if friction != 0. else []) + \
+        ([f"{case['modification']}: not a kind it takes"]
+         if case["modification"] not in INFLUENCE_KINDS else []) + \
+        (["a ring's rounded tip: refused"] if ring_rounded(case) else [])
+    if reasons:
+        log(f"influence = exact: skipped ({'; '.join(reasons)})")
         return
     sets = sweep_sets(case, SWEEP_POSITIONS, "once")
     sets["Stiffness/contact model"] = "influence coefficients"
