@@ -402,6 +402,16 @@ TEST(InfluenceCoefficients, InternalPairMatchesExact)
   compare_with_exact(planet_ring_settings(3., "influence_internal"), 16, "internal");
 }
 
+// Found 2026-12-05, not fixed (docs/ltca.md "Found, not fixed: a contact next to a ring's tip
+// corner"): on 32 positions the first one (mesh position 0.0156, ℓ 0.115 mm past A, where the
+// Hertz zone reaches the ring's sharp tip corner) is +1.14 % stiff here (549.09 → 555.36 N/µm;
+// +1.28 % with the command line's settings of that section), outside the 1 %, its peak
+// pressure −25.1 %. Enable once the near field carries the corner's wedge there (~8 s).
+TEST(InfluenceCoefficients, DISABLED_InternalPairNextToRingTipCorner)
+{
+  compare_with_exact(planet_ring_settings(3., "influence_internal_32"), 32, "internal 32");
+}
+
 TEST(InfluenceCoefficients, InternalTipReliefMatchesExact)
 {
   GearMeshStiffnessSettings settings = planet_ring_settings(3., "influence_internal_relief");
