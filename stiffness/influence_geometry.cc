@@ -134,16 +134,9 @@ PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const 
   // By value: a copied PairSeparation keeps working.
   flanks.pinion_removal =
       [list = pinion, range = pinion_range, r_b = pinion_base, r = pinion_rounding](double roll)
-  {
-    return geometry::removed_depth(list, range, roll, true) +
-           rounded_tip_removal(r_b, range.tip, r, roll);
-  };
-  flanks.wheel_removal =
-      [list = wheel, range = wheel_range, r_b = wheel_base, r = wheel_rounding](double roll)
-  {
-    return geometry::removed_depth(list, range, roll, true) +
-           rounded_tip_removal(r_b, range.tip, r, roll);
-  };
+  { return flank_removal(list, range, r_b, r, roll); };
+  flanks.wheel_removal = [list = wheel, range = wheel_range, r_b = wheel_base, r = wheel_rounding](
+                             double roll) { return flank_removal(list, range, r_b, r, roll); };
   flanks.pinion_range = pinion_range;
   flanks.wheel_range = wheel_range;
   flanks.pinion_base_radius = frame.pinion_base_radius();

@@ -84,6 +84,16 @@ double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start);
 // along the flank beyond it, x²/2·(1/r − 1/ρ_F).
 double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll);
 
+// m, one loaded flank's removal at its roll: its profile modifications' and, with a rounded tip
+// (`rounding` > 0), the arc's beyond the tip form circle.
+inline double flank_removal(const std::vector<geometry::ToothModification>& list,
+                            const geometry::FlankRollRange& range, double base_radius,
+                            double rounding, double roll)
+{
+  return geometry::removed_depth(list, range, roll, true) +
+         rounded_tip_removal(base_radius, range.tip, rounding, roll);
+}
+
 // The designed separation of a pair at ℓ: both loaded flanks' removal at their roll lengths
 // (the same on every tooth: faults are refused), as geometry::unloaded_transmission_errors. A
 // rounded tip of an external gear adds its arc beyond the tip form circle (rounded_tip_removal:
@@ -112,11 +122,9 @@ public:
   // The depth removed from one gear's loaded flank where it touches at ℓ.
   double removal(double at, bool of_wheel) const
   {
-    return of_wheel ? geometry::removed_depth(wheel, wheel_range, std::abs(at - t2), true) +
-                          rounded_tip_removal(wheel_base, wheel_range.tip, wheel_rounding,
-                                              std::abs(at - t2))
-                    : geometry::removed_depth(pinion, pinion_range, at, true) +
-                          rounded_tip_removal(pinion_base, pinion_range.tip, pinion_rounding, at);
+    return of_wheel
+               ? flank_removal(wheel, wheel_range, wheel_base, wheel_rounding, std::abs(at - t2))
+               : flank_removal(pinion, pinion_range, pinion_base, pinion_rounding, at);
   }
   // The depth removed from one gear's loaded flank at z (m) of the face by its lead
   // modifications (3D; geometry/tooth_modification_lead.h), and from both.

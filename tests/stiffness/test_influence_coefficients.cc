@@ -63,11 +63,6 @@ struct Tolerances
   double arc_peak_roll = 0.05e-3;
 };
 
-kinematics::GearPairGeometry fast_pair(const GearMeshStiffnessSettings& settings)
-{
-  return kinematics::compute_gear_pair(settings.scene.pair);
-}
-
 // Exact (rolling sweep, frictionless) against influence coefficients, position by position.
 void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int positions,
                         const std::string& name, const Tolerances& tolerance = {})
@@ -85,6 +80,7 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
   ASSERT_EQ(fast.contact_model, ContactModel::influence_coefficients);
   ASSERT_EQ(fast.positions.size(), exact.positions.size());
   double worst_k = 0., worst_te = 0., worst_share = 0., worst_p = 0., worst_roll = 0.;
+  const kinematics::GearPairGeometry path = kinematics::compute_gear_pair(base.scene.pair); // A, E
   for (std::size_t i = 0; i < exact.positions.size(); ++i)
   {
     const GearMeshStiffnessResult &a = exact.positions[i], &b = fast.positions[i];
@@ -121,9 +117,8 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
                     [&](const ToothPairLoad& q)
                     {
                       return q.max_pressure == a.max_contact_pressure &&
-                             (q.max_pressure_wheel_roll <=
-                                  a.contact_size + fast_pair(base).contact_start ||
-                              q.max_pressure_roll >= fast_pair(base).contact_end - a.contact_size);
+                             (q.max_pressure_wheel_roll <= a.contact_size + path.contact_start ||
+                              q.max_pressure_roll >= path.contact_end - a.contact_size);
                     });
     const auto peak_of = [](const GearMeshStiffnessResult& r)
     {
