@@ -126,6 +126,28 @@ public:
                ? flank_removal(wheel, wheel_range, wheel_base, wheel_rounding, std::abs(at - t2))
                : flank_removal(pinion, pinion_range, pinion_base, pinion_rounding, at);
   }
+  // m, the arc length along one gear's loaded flank from its point at ℓ to its sharp tip corner
+  // (the involute's ρ²/(2r_b) between their rolls), positive where ℓ grows (the near field's x);
+  // NaN for a rounded tip, whose arc meets the tip land without a corner.
+  double tip_corner_offset(double at, bool of_wheel) const
+  {
+    if (of_wheel)
+    {
+      const double roll = std::abs(at - t2), tip = wheel_range.tip;
+      return wheel_rounding > 0.
+                 ? std::numeric_limits<double>::quiet_NaN()
+                 : (at < t2 ? -1. : 1.) * (tip * tip - roll * roll) / (2. * wheel_base);
+    }
+    const double tip = pinion_range.tip;
+    return pinion_rounding > 0. ? std::numeric_limits<double>::quiet_NaN()
+                                : (tip * tip - at * at) / (2. * pinion_base);
+  }
+  // rad, the transverse pressure angle of one gear's flank at its tip (form) circle.
+  double tip_pressure_angle(bool of_wheel) const
+  {
+    return of_wheel ? std::atan(wheel_range.tip / wheel_base)
+                    : std::atan(pinion_range.tip / pinion_base);
+  }
   // The depth removed from one gear's loaded flank at z (m) of the face by its lead
   // modifications (3D; geometry/tooth_modification_lead.h), and from both.
   double lead_removal(double z, bool of_wheel) const

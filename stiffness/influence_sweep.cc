@@ -750,6 +750,16 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       unknown.touching = model.separation(unknown.at) + unknown.line.lowered + corner_gap + lead;
       unknown.flank = unknown.edge ? std::array<double, 2>{{unknown.at, unknown.at}}
                                    : touching_flanks(model.frame, model.separation, unknown.at);
+      // Each gear's sharp tip corner from the contact's centre, where its layer is a wedge's
+      // (corner_layer_excess). Measured 2026-12-05 on the planet–ring pair (24/69, m 2.5 mm,
+      // T_d, 32 positions): at mesh position 0.0156 the ring's corner lies 0.036 mm of its flank
+      // from the centre, inside the Hertz zone (a ≈ 0.06 mm), and without it the model was
+      // 1.14 % stiff there. A tip edge's unknown has its own wedge (wedge_factor below).
+      constexpr double none = std::numeric_limits<double>::quiet_NaN();
+      problem.pinion_corner.push_back(
+          unknown.edge ? none : model.separation.tip_corner_offset(unknown.flank[0], false));
+      problem.wheel_corner.push_back(
+          unknown.edge ? none : model.separation.tip_corner_offset(unknown.flank[1], true));
       // Within the pair's grid, which reaches a grid step beyond the ℓ the sweep sees (flank
       // grids reaching further put read points through thin tooth tips: invariants case 15 of
       // seed 20261201, a ring of m 1 mm with profile crowning and slope, exit 3 when they did).
@@ -1002,10 +1012,13 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
       [&]()
       {
         const auto start = std::chrono::steady_clock::now();
-        const LayerBody body{settings.material.youngs_modulus, settings.material.poisson_ratio,
-                             info.matching_depth};
-        const PositionModel position_model{frame,    separation, body, body, pair.common_face_width,
-                                           stations, helix};
+        LayerBody pinion_body{settings.material.youngs_modulus, settings.material.poisson_ratio,
+                              info.matching_depth};
+        LayerBody wheel_body = pinion_body;
+        pinion_body.corner_pressure_angle = separation.tip_pressure_angle(false);
+        wheel_body.corner_pressure_angle = separation.tip_pressure_angle(true);
+        const PositionModel position_model{
+            frame, separation, pinion_body, wheel_body, pair.common_face_width, stations, helix};
         run.by_torque =
             solve_positions(positions, torques.size(),
                             [&](double position, std::map<int, double>& warm)

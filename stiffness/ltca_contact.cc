@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -81,6 +82,75 @@ double tip_edge_wedge_factor(double tip_pressure_angle)
 
 namespace
 {
+// Ĝ(s, α) of corner_layer_excess: the FE wedge's layer excess over (f − 1)·2(1−ν²)/(πE) at
+// s = distance/h (a load of width 0.1·distance at that distance from the apex, read under it),
+// tools/wedge_layer.py, 2026-12-05.
+constexpr std::array<double, 9> corner_s = {{0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8, 1.6}};
+constexpr std::array<double, 5> corner_alpha = {{10., 17.5, 25., 32., 40.}}; // degrees
+constexpr std::array<std::array<double, 9>, 5> corner_g = {{
+    {{3.5659, 2.8876, 2.2236, 1.3947, 0.8486, 0.4418, 0.2217, 0.1190, 0.0608}},
+    {{3.4910, 2.8154, 2.1569, 1.3437, 0.8204, 0.4432, 0.2406, 0.1359, 0.0714}},
+    {{3.4036, 2.7316, 2.0802, 1.2869, 0.7906, 0.4454, 0.2607, 0.1550, 0.0836}},
+    {{3.3073, 2.6399, 1.9972, 1.2274, 0.7606, 0.4482, 0.2818, 0.1759, 0.0975}},
+    {{3.1731, 2.5129, 1.8839, 1.1484, 0.7219, 0.4519, 0.3099, 0.2052, 0.1172}},
+}};
+
+// Ĝ at one tabulated angle: linear in ln s; below the table the wedge's log, ln(s₀/s) more (the
+// FE's step from 0.005 to 0.01 is 0.98·ln 2); above it the 1/s decay of the far field (its
+// last step 0.51–0.53 of the value per doubling).
+double corner_g_at(std::size_t angle, double s)
+{
+  const auto& g = corner_g[angle];
+  if (s <= corner_s.front())
+    return g.front() + std::log(corner_s.front() / s);
+  if (s >= corner_s.back())
+    return g.back() * corner_s.back() / s;
+  const std::size_t i =
+      std::upper_bound(corner_s.begin(), corner_s.end(), s) - corner_s.begin() - 1;
+  const double t = std::log(s / corner_s[i]) / std::log(corner_s[i + 1] / corner_s[i]);
+  return (1. - t) * g[i] + t * g[i + 1];
+}
+} // namespace
+
+double corner_layer_excess(double distance, const LayerBody& body)
+{
+  // Linear in α between the tabulated angles, held at the table's ends (a tip's pressure angle
+  // below 10° or above 40°: Ĝ moves by 4 % over 10 … 40° where (f − 1) does most).
+  const double degrees = std::clamp(body.corner_pressure_angle * 180. / M_PI, corner_alpha.front(),
+                                    corner_alpha.back());
+  const std::size_t j =
+      std::min<std::size_t>(std::upper_bound(corner_alpha.begin(), corner_alpha.end(), degrees) -
+                                corner_alpha.begin() - 1,
+                            corner_alpha.size() - 2);
+  const double t = (degrees - corner_alpha[j]) / (corner_alpha[j + 1] - corner_alpha[j]);
+  const double s = std::max(distance, 1e-9) / body.matching_depth;
+  const double g = (1. - t) * corner_g_at(j, s) + t * corner_g_at(j + 1, s);
+  const double nu = body.poisson_ratio;
+  const double c = body.end_face ? 1. : 1. - nu * nu;
+  return (tip_edge_wedge_factor(body.corner_pressure_angle) - 1.) * 2. * c * g /
+         (M_PI * body.young_modulus);
+}
+
+namespace
+{
+// The corner's excess under a Hertzian line load w of half-width a centred at the contact: the
+// mean of corner_layer_excess over the elliptic pressure (Gauss–Chebyshev, as
+// spread_load_depth_shift), each part at its own distance from the corner; 0 without a corner.
+double corner_shift(double line_load, double half_width, const LayerBody& body)
+{
+  if (std::isnan(body.corner_offset))
+    return 0.;
+  constexpr int n = 32;
+  double mean = 0.;
+  for (int i = 1; i <= n; ++i)
+  {
+    const double theta = i * M_PI / (n + 1);
+    mean += std::sin(theta) * std::sin(theta) *
+            corner_layer_excess(std::abs(half_width * std::cos(theta) - body.corner_offset), body);
+  }
+  return line_load * 2. / (n + 1) * mean;
+}
+
 // Half-width and peak pressure of the Hertz line contact (Johnson 1985 §4.3).
 std::pair<double, double> hertz_zone(double force, double face_width, double relative_radius,
                                      const LayerBody& first, const LayerBody& second)
@@ -100,7 +170,8 @@ double layer_approach(double force, double face_width, double relative_radius,
   const double line_load = force / face_width;
   return hertz_layer_compression(p0, a, first) + hertz_layer_compression(p0, a, second) +
          spread_load_depth_shift(line_load, a, first) +
-         spread_load_depth_shift(line_load, a, second);
+         spread_load_depth_shift(line_load, a, second) + corner_shift(line_load, a, first) +
+         corner_shift(line_load, a, second);
 }
 } // namespace
 
@@ -175,6 +246,15 @@ Eigen::MatrixXd strip_influence(int n, double half_span, const LayerBody& first,
     for (int k = 0; k < n; ++k)
       influence(i, k) =
           depth_part[k + 1] - depth_part[k] + surface_part[k + 1 - i + n] - surface_part[k - i + n];
+  // A body's sharp tip corner (LayerBody::corner_offset): each cell's load compresses its layer
+  // by the corner's excess at the cell's distance, read as a shift of the whole strip (the
+  // table's read lies under the load; its variation across the zone is not modelled).
+  for (const LayerBody* body : {&first, &second})
+    if (!std::isnan(body->corner_offset))
+      for (int k = 0; k < n; ++k)
+        influence.col(k).array() +=
+            cell * corner_layer_excess(
+                       std::abs(-half_span + (k + 0.5) * cell - body->corner_offset), *body);
   return influence;
 }
 
@@ -287,9 +367,14 @@ namespace
 LineContact near_field(const MeshContactProblem& problem, int j, double force)
 {
   const double width = problem.width.empty() ? problem.face_width : problem.width[j];
-  if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
-    return strip_line_contact(force, width, problem.strip[j], problem.pinion, problem.wheel);
   LayerBody pinion = problem.pinion, wheel = problem.wheel;
+  if (j < static_cast<int>(problem.pinion_corner.size()))
+  {
+    pinion.corner_offset = problem.pinion_corner[j];
+    wheel.corner_offset = problem.wheel_corner[j];
+  }
+  if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
+    return strip_line_contact(force, width, problem.strip[j], pinion, wheel);
   if (j < static_cast<int>(problem.end_face.size()) && problem.end_face[j])
     pinion.end_face = wheel.end_face = true;
   if (j < static_cast<int>(problem.pinion_wedge.size()))

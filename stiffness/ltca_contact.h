@@ -8,6 +8,7 @@
 // (stiffness/influence_sweep.h) supplies C.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 namespace gearstiff::stiffness
@@ -26,6 +27,11 @@ struct LayerBody
   // -, the layer under a tip edge (a helical pair's tip corner touching beyond the path,
   // docs/ltca.md §3 "Tip edges"): its compression over a half-space's (tip_edge_wedge_factor).
   double wedge_factor = 1.;
+  // The body's own sharp tip corner near a contact on its flank (docs/ltca.md "Next to a tip
+  // corner"): its tangential offset (m) from the contact's centre along the flank, positive
+  // where the strip's x is (NaN: none), and the flank's pressure angle at the tip (rad).
+  double corner_offset = std::numeric_limits<double>::quiet_NaN();
+  double corner_pressure_angle = 0.;
 };
 
 // The compression of a wedge of interior angle π/2 + α_tip (a tooth's tip corner: its flank meets
@@ -35,6 +41,16 @@ struct LayerBody
 // 2α)] with the half-angle α = (π/2 + α_tip)/2 and the load β = π/2 − α off the bisector; the
 // ratio of σ_r on the load's line (θ = β) to the half-plane's 2P/(πr). 1 at α_tip = π/2.
 double tip_edge_wedge_factor(double tip_pressure_angle);
+
+// m per N/m: how much more the layer 0 ≤ z ≤ h of a body compresses under a line load on its
+// flank at distance `distance` (m) from its sharp tip corner than a half-space's layer does. The
+// wedge spreads the load as a half-plane out to ~distance and as Flamant's wedge beyond (f times
+// the half-plane's stress, tip_edge_wedge_factor), so for distance ≪ h the excess is
+// 2(1−ν²)/(πE)·(f − 1)·[ln(h/distance) − 1.8]. Tabulated, as (f − 1)·Ĝ(distance/h, α_tip), from a
+// plane-strain FE of the wedge against the half-plane (tools/wedge_layer.py, converged to
+// 5e-4; ν 0.3: at ν 0.25 / 0.35 Ĝ moves by −4 / +5 % at s 0.05, ∓12 % at s 0.2); plane stress
+// on an end face (2/(πE) for 2(1−ν²)/(πE)).
+double corner_layer_excess(double distance, const LayerBody& body);
 
 // The compression (m) of the layer 0 ≤ z ≤ h of a plane-strain half-space under a Hertzian
 // pressure of peak p0 (Pa) and half-width a (m), on the symmetry axis: the integral of ε_z of
@@ -117,6 +133,8 @@ struct MeshContactProblem
   std::vector<char> end_face;
   // Per unknown: each body's LayerBody::wedge_factor (a tip edge's, else 1). Empty: all 1.
   std::vector<double> pinion_wedge, wheel_wedge;
+  // Per unknown: each body's LayerBody::corner_offset (NaN: no sharp tip corner). Empty: none.
+  std::vector<double> pinion_corner, wheel_corner;
   LayerBody pinion, wheel;
 };
 
