@@ -113,14 +113,6 @@ using namespace influence;
 
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
-  // A rounded tip of an external gear is carried as its arc's removal beyond the tip form circle
-  // in the pair's gap (PairSeparation, rounded_tip_removal; docs/ltca.md "Tip rounding"). A
-  // ring's rounded tip is not (its flank is concave, the arc's removal there not derived): refused,
-  // never ignored.
-  if (settings.scene.pair.wheel.internal && settings.scene.pair.wheel.tip_rounding_radius > 0.)
-    throw InputError(kinematics::field::gear(true, "tip_rounding_radius"),
-                     "influence coefficients carry a rounded tip on external gears only: use "
-                     "finite element for a ring's rounded tip");
   if (settings.scene.mesh.dimension == 3)
   {
     // The 3D model is accepted for what it is verified on (docs/ltca.md §3): spur pairs,

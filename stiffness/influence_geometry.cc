@@ -86,9 +86,10 @@ double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
   return std::abs(l_r - alpha * s1 * r_b1 - at);
 }
 
-double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll)
+double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll,
+                           bool internal)
 {
-  if (!(radius > 0.) || !(roll > form_roll))
+  if (!(radius > 0.) || !(internal ? roll < form_roll : roll > form_roll))
     return 0.;
   // The involute in its gear's frame, its normal's angle θ = ρ/r_b: P(θ) = r_b(−sin θ, cos θ) +
   // ρ·n(θ), n = (cos θ, sin θ) outward; the arc's centre lies r under the form point.
@@ -100,10 +101,13 @@ double rounded_tip_removal(double base_radius, double form_roll, double radius, 
   };
   const auto normal = [base_radius](double rho)
   { return Eigen::Vector2d(std::cos(rho / base_radius), std::sin(rho / base_radius)); };
-  const Eigen::Vector2d centre = point(form_roll) - radius * normal(form_roll);
-  // |P − t·n − C| = r for the nearer t ≥ 0.
+  // Into the material: −n on an external gear's tooth, +n on a ring's (its material lies on the
+  // other side of the same involute).
+  const double inward = internal ? 1. : -1.;
+  const Eigen::Vector2d centre = point(form_roll) + inward * radius * normal(form_roll);
+  // |P + t·inward·n − C| = r for the nearer t ≥ 0.
   const Eigen::Vector2d d = point(roll) - centre;
-  const double along = d.dot(normal(roll));
+  const double along = -inward * d.dot(normal(roll));
   const double discriminant = along * along - d.squaredNorm() + radius * radius;
   return discriminant >= 0. ? along - std::sqrt(discriminant) : along;
 }
@@ -115,9 +119,7 @@ PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const 
       wheel_lead(settings.scene.wheel_modifications.lead), face_width(frame.pair.common_face_width),
       t2(frame.t2), pinion_base(frame.pinion_base_radius()), wheel_base(frame.wheel_base_radius()),
       pinion_rounding(settings.scene.pair.pinion.tip_rounding_radius),
-      // A ring's rounded tip is refused (check_influence_settings): its flank is concave.
-      wheel_rounding(
-          settings.scene.pair.wheel.internal ? 0. : settings.scene.pair.wheel.tip_rounding_radius)
+      wheel_rounding(settings.scene.pair.wheel.tip_rounding_radius)
 {
   for (const bool is_wheel : {false, true})
   {
@@ -130,13 +132,17 @@ PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const 
         geometry::generate_involute_tooth(spec, settings.scene.resolution);
     (is_wheel ? wheel_range : pinion_range) =
         geometry::flank_roll_range(frame.pair, tooth, is_wheel);
+    const double r_a = 0.5 * derived.tip_diameter,
+                 r_b = is_wheel ? frame.wheel_base_radius() : frame.pinion_base_radius();
+    (is_wheel ? wheel_apex : pinion_apex) = std::sqrt(std::max(0., r_a * r_a - r_b * r_b));
   }
   // By value: a copied PairSeparation keeps working.
   flanks.pinion_removal =
       [list = pinion, range = pinion_range, r_b = pinion_base, r = pinion_rounding](double roll)
   { return flank_removal(list, range, r_b, r, roll); };
-  flanks.wheel_removal = [list = wheel, range = wheel_range, r_b = wheel_base, r = wheel_rounding](
-                             double roll) { return flank_removal(list, range, r_b, r, roll); };
+  flanks.wheel_removal = [list = wheel, range = wheel_range, r_b = wheel_base, r = wheel_rounding,
+                          internal = frame.pair.spec.wheel.internal](double roll)
+  { return flank_removal(list, range, r_b, r, roll, internal); };
   flanks.pinion_range = pinion_range;
   flanks.wheel_range = wheel_range;
   flanks.pinion_base_radius = frame.pinion_base_radius();

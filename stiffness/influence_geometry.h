@@ -79,25 +79,28 @@ double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start);
 // form circle, at the flank point of roll `roll` (ρ = √(r² − r_b²); 0 up to the form roll
 // `form_roll`), measured along that point's inward normal as the profile modifications are
 // (geometry/tooth_modification.h): the arc of radius `radius` is tangent to the involute at the
-// form roll. An external gear's convex flank. Where the normal misses the arc (far beyond the
-// tip) the depth to its nearest approach. Closed form near the form roll: with x the arc length
-// along the flank beyond it, x²/2·(1/r − 1/ρ_F).
-double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll);
+// form roll. An external gear's flank is convex, its tip at larger rolls; a ring's (`internal`)
+// is concave, its tip at smaller rolls, the arc's centre on the far side of the flank
+// (kinematics::tip_form_diameter, σ = −1). Where the normal misses the arc (far beyond the tip)
+// the depth to its nearest approach. Closed form near the form roll: with x the arc length along
+// the flank beyond it, x²/2·(1/r ∓ 1/ρ_F) (− external, + internal).
+double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll,
+                           bool internal = false);
 
 // m, one loaded flank's removal at its roll: its profile modifications' and, with a rounded tip
 // (`rounding` > 0), the arc's beyond the tip form circle.
 inline double flank_removal(const std::vector<geometry::ToothModification>& list,
                             const geometry::FlankRollRange& range, double base_radius,
-                            double rounding, double roll)
+                            double rounding, double roll, bool internal = false)
 {
   return geometry::removed_depth(list, range, roll, true) +
-         rounded_tip_removal(base_radius, range.tip, rounding, roll);
+         rounded_tip_removal(base_radius, range.tip, rounding, roll, internal);
 }
 
 // The designed separation of a pair at ℓ: both loaded flanks' removal at their roll lengths
 // (the same on every tooth: faults are refused), as geometry::unloaded_transmission_errors. A
-// rounded tip of an external gear adds its arc beyond the tip form circle (rounded_tip_removal:
-// the near field's gap then carries a contact onto the arc, docs/ltca.md "Tip rounding").
+// rounded tip adds its arc beyond the tip form circle (rounded_tip_removal: the near field's gap
+// then carries a contact onto the arc, docs/ltca.md "Tip rounding").
 class PairSeparation
 {
 public:
@@ -122,25 +125,29 @@ public:
   // The depth removed from one gear's loaded flank where it touches at ℓ.
   double removal(double at, bool of_wheel) const
   {
-    return of_wheel
-               ? flank_removal(wheel, wheel_range, wheel_base, wheel_rounding, std::abs(at - t2))
-               : flank_removal(pinion, pinion_range, pinion_base, pinion_rounding, at);
+    return of_wheel ? flank_removal(wheel, wheel_range, wheel_base, wheel_rounding,
+                                    std::abs(at - t2), flanks.internal)
+                    : flank_removal(pinion, pinion_range, pinion_base, pinion_rounding, at);
   }
-  // m, the arc length along one gear's loaded flank from its point at ℓ to its sharp tip corner
-  // (the involute's ρ²/(2r_b) between their rolls), positive where ℓ grows (the near field's x);
-  // NaN for a rounded tip, whose arc meets the tip land without a corner.
+  // m, the arc length along one gear's loaded flank from its point at ℓ to its tip corner (the
+  // involute's ρ²/(2r_b) between their rolls), positive where ℓ grows (the near field's x). A
+  // rounded tip's corner is the sharp one its arc replaces (the involute's continuation to the
+  // tip circle): the tooth is that wedge at distances beyond the radius; a point on the arc is
+  // taken at the tip form circle's distance.
   double tip_corner_offset(double at, bool of_wheel) const
   {
-    if (of_wheel)
-    {
-      const double roll = std::abs(at - t2), tip = wheel_range.tip;
-      return wheel_rounding > 0.
-                 ? std::numeric_limits<double>::quiet_NaN()
-                 : (at < t2 ? -1. : 1.) * (tip * tip - roll * roll) / (2. * wheel_base);
-    }
-    const double tip = pinion_range.tip;
-    return pinion_rounding > 0. ? std::numeric_limits<double>::quiet_NaN()
-                                : (tip * tip - at * at) / (2. * pinion_base);
+    const double roll = of_wheel ? std::abs(at - t2) : at;
+    const double apex = of_wheel ? wheel_apex : pinion_apex;
+    const double form = of_wheel ? wheel_range.tip : pinion_range.tip;
+    const double base = of_wheel ? wheel_base : pinion_base;
+    // Towards the tip: larger rolls on an external gear, smaller on a ring.
+    const double towards = of_wheel && flanks.internal ? -1. : 1.;
+    const double on_flank = towards * (roll - form) > 0. ? form : roll;
+    const double length = std::abs(apex * apex - on_flank * on_flank) / (2. * base);
+    // The direction of growing ℓ along this flank: the pinion's roll grows with ℓ, the wheel's
+    // falls where ℓ < T1T2.
+    const double sense = of_wheel ? (at < t2 ? -1. : 1.) : 1.;
+    return towards * sense * length;
   }
   // rad, the transverse pressure angle of one gear's flank at its tip (form) circle.
   double tip_pressure_angle(bool of_wheel) const
@@ -179,6 +186,7 @@ private:
   double t2;
   double pinion_base, wheel_base;                   // m, r_b
   double pinion_rounding = 0., wheel_rounding = 0.; // m, tip rounding radius (0: sharp)
+  double pinion_apex = 0., wheel_apex = 0.;         // m, ρ at the tip circle (the sharp corner)
   geometry::PairFlanks flanks; // touching(): the removals above and the pair's radii
 };
 } // namespace gearstiff::stiffness::influence

@@ -119,9 +119,9 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry(
       "contact model", "finite element", Selection("finite element|influence coefficients"),
       "finite element: mortar contact on a mesh that resolves the Hertz zone (the reference); "
-      "influence coefficients (mode sweep, frictionless, profile modifications, rounded tips of "
-      "external gears, no tooth "
-      "faults; 2D plane strain; 3D: spur pairs, lead crowning with at least 16 layers): a FE body "
+      "influence coefficients (mode sweep, frictionless, profile modifications, rounded tips, no "
+      "tooth faults; 2D plane strain; 3D: spur pairs, lead crowning with at least 16 layers): a FE "
+      "body "
       "of both gears that does not resolve the Hertz zone (flank cells h_f = "
       "0.04·m_n; 3D 0.08·m_n with the band of swept contacts meshed at 1.5·h_f = 0.12·m_n; the "
       "rims coarse beyond the modelled teeth) factored once, the influence coefficients of a grid "

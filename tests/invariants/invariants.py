@@ -316,32 +316,24 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # The influence-coefficient contact model (docs/ltca.md) on the case's own pair: the same sweep
 # as the exact rolling one within the accuracy it is tested to on the built-in pairs
 # (tests/stiffness/test_influence_coefficients.cc: k 1 %, TE 0.1 um, load shares 0.01; the
-# unloaded TE is the same geometry, 1 nm). Frictionless cases only, and no ring with a rounded
-# tip: the fast model applies no friction and carries the rounded tips of external gears only
-# (since 2026-12-05; seed 20261201 cases 33, 61, 63, rounded and relieved or profile-mixed:
-# |dk| 0.339, 0.354, 0.307 %, |dTE| 0.012-0.027 um). INFLUENCE_KINDS: the modification kinds
-# it accepts, every one since 2026-12-05 (before: "none"). Cost: one `stiffness` run of ~3 s per
-# such case and one on 2 ranks (measured 2026-12-02: case 28 |dk| 0.521 %, |dTE| 0.0147 um,
-# |dshare| 0.0018; case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %, |dTE| 0.0427 um, |dshare|
-# 0.0066: near the 1 %).
+# unloaded TE is the same geometry, 1 nm). Frictionless cases only: the fast model applies no
+# friction. It carries rounded tips (docs/ltca.md "Tip rounding"): external gears' since
+# 2026-12-05 (seed 20261201 cases 33, 61, 63, rounded and relieved or profile-mixed: |dk| 0.339,
+# 0.354, 0.307 %, |dTE| 0.012-0.027 um), rings' since the same day. INFLUENCE_KINDS: the
+# modification kinds it accepts, every one since 2026-12-05 (before: "none"). Cost: one
+# `stiffness` run of ~3 s per such case and one on 2 ranks (measured 2026-12-02: case 28 |dk|
+# 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018; case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %,
+# |dTE| 0.0427 um, |dshare| 0.0066: near the 1 %).
 INFLUENCE_KINDS = tuple(MODIFICATIONS)
 # The kinds draw_case leaves unrounded (the fast model's kinds when rounding was added).
 UNROUNDED_KINDS = ("none",)
-
-
-def ring_rounded(case):
-    """A ring's rounded tip, which the fast model refuses (exit 2); an external gear's rounded tip
-    it carries since 2026-12-05 (the arc in the pairs' gap, docs/ltca.md "Tip rounding")."""
-    return (str(case["pair"].get("Gear pair/Wheel/internal", "false")) == "true" and
-            float(case["pair"].get("Gear pair/Wheel/tip rounding radius", 0.)) > 0.)
 
 
 def influence_equals_exact(case, runner, log, sweeps):
     friction = float(case["pair"]["Contact/Friction coefficient"])
     reasons = ([f"friction {friction}: the fast model applies none"] if friction != 0. else []) + \
         ([f"{case['modification']}: not a kind it takes"]
-         if case["modification"] not in INFLUENCE_KINDS else []) + \
-        (["a ring's rounded tip: refused"] if ring_rounded(case) else [])
+         if case["modification"] not in INFLUENCE_KINDS else [])
     if reasons:
         log(f"influence = exact: skipped ({'; '.join(reasons)})")
         return
@@ -689,9 +681,6 @@ def three_d_between_plane_models(case, runner, log):
 # rim coarse beyond the modelled teeth (ltca47g, the same day): |dk| 0.567, 0.494, 0.425 %,
 # |dTE| 0.026, 0.036, 0.011 um, the model's run 5.5-8.7 s.
 def influence_3d_equals_exact(case, runner, log, sets, exact):
-    if ring_rounded(case):  # the fast model refuses a ring's rounded tip (exit 2)
-        log("influence 3D = exact: skipped (a ring's rounded tip)")
-        return
     fast, _, _ = runner.run("stiffness", dict(sets, **{"Stiffness/contact model":
                                                        "influence coefficients"}))
     fast_equals_exact("influence 3D", table(exact, "stiffness_sweep"),
@@ -719,9 +708,6 @@ resolved_planes = 10
 
 
 def influence_3d_crowned_equals_exact(case, runner, log, sets):
-    if ring_rounded(case):  # the fast model refuses a ring's rounded tip (exit 2)
-        log("influence 3D crowned = exact: skipped (a ring's rounded tip)")
-        return
     rng = random.Random(f"{case['seed']}:{case['index']}:crowning")
     amount = round(rng.uniform(5., 15.), 1)
     # The crowned gear in turn (the 3D cases are every tenth: CI's 9, 19, 29 take one each).
