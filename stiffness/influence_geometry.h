@@ -149,11 +149,11 @@ public:
     const double sense = of_wheel ? (at < t2 ? -1. : 1.) : 1.;
     return towards * sense * length;
   }
-  // rad, the transverse pressure angle of one gear's flank at its tip (form) circle.
+  // rad, the transverse pressure angle of one gear's involute at its tip circle: the angle of
+  // its tip corner (tip_corner_offset's, the sharp one a rounded tip replaces).
   double tip_pressure_angle(bool of_wheel) const
   {
-    return of_wheel ? std::atan(wheel_range.tip / wheel_base)
-                    : std::atan(pinion_range.tip / pinion_base);
+    return of_wheel ? std::atan(wheel_apex / wheel_base) : std::atan(pinion_apex / pinion_base);
   }
   // The depth removed from one gear's loaded flank at z (m) of the face by its lead
   // modifications (3D; geometry/tooth_modification_lead.h), and from both.
