@@ -14,6 +14,11 @@ namespace gearstiff::stiffness::influence
 // The grid step (m) must follow the gap's kinks and the near field's depth (m).
 void check_grid_step(double step, double depth, const PairSeparation& separation);
 
+// An uncrowned 3D face's node planes, Δz = stations.layer apart, must not be closer than the end
+// faces' layer is verified on, in matching depths `depth` (m) (exit 2 naming Mesh/layers).
+void check_end_plane_spacing(const GearMeshStiffnessSettings& settings,
+                             const FaceStations& stations, double depth);
+
 // A crowned contact ending inside the face must load enough node planes (influence_checks.cc) of
 // `layers` layers at every position and torque of `by_torque` (exit 2 naming Mesh/layers).
 void check_crowned_contact_planes(

@@ -507,12 +507,14 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                    : std::max(on_path_width(stations, helix, pair, s, unknown.at),
                                               1e-3 * stations.layer)) /
                               helix.cos_base);
-      // The planes on the end faces: their layer is in plane stress (LayerBody::end_face).
-      // Measured 2026-12-03 (ltca47k; Q1, 8 layers, 4 positions, μ 0) against the exact path:
-      // with plane strain there K_Hβ was +2.2 … +2.5 % (default pair) and +2.2 … +2.6 % (the
-      // planet–ring pair) above the exact path's, with plane stress +0.6 … +1.8 % and +1.0 …
-      // +1.7 %, k 0.2 … 0.3 % nearer (docs/ltca.md §3 "End faces").
-      problem.end_face.push_back(dim == 3 && (s == 0 || s + 1 == layers));
+      // Near the end faces the layer is a quarter-space's, softer than plane strain, by as much
+      // as the layers resolve (end_face_layer_excess; docs/ltca.md §3 "End faces"): each plane
+      // takes both ends' excess.
+      problem.end_excess.push_back(
+          dim == 3 ? end_face_layer_excess(stations.layer, model.pinion.matching_depth, s) +
+                         end_face_layer_excess(stations.layer, model.pinion.matching_depth,
+                                               layers - 1 - s)
+                   : 0.);
       // A tip edge's layer is a wedge's, softer than the flank's half-space (docs/ltca.md §3
       // "Tip edges"): the pinion's corner at E, the wheel's at A, each at its tip's transverse
       // pressure angle (roll length over base radius).
@@ -650,6 +652,8 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
   section.scene = geometry::transverse_section_spec(settings.scene);
   const PairSeparation separation(section, frame);
   check_grid_step(info.grid_step, info.matching_depth, separation);
+  if (dim == 3)
+    check_end_plane_spacing(settings, stations, info.matching_depth);
 
   // The scene: rank 0 meshes it into `file`, every rank reads it.
   const SceneStep meshed = fem::run_on_root(

@@ -20,28 +20,24 @@ double hertz_layer_compression(double peak_pressure, double half_width, const La
   const double a = half_width, h = body.matching_depth, nu = body.poisson_ratio;
   const double sigma_z = peak_pressure * a * std::asinh(h / a);
   const double sigma_x = peak_pressure / a * (h * std::sqrt(a * a + h * h) - h * h);
-  // On a traction-free end face σ_y = 0: ε_z = (σ_z − ν·σ_x)/E, about 1/(1−ν²) = 1.10 times the
-  // plane-strain compression (the in-plane axis stresses of a half-plane do not depend on σ_y).
-  if (body.end_face)
-    return body.wedge_factor * (sigma_z - nu * sigma_x) / body.young_modulus;
   return body.wedge_factor * ((1. - nu * nu) * sigma_z - nu * (1. + nu) * sigma_x) /
          body.young_modulus;
 }
 
 namespace
 {
-// −[c·ln(1 + ξ²/h²) + (1+ν)·ξ²/(ξ²+h²)]/(πE) (c = 1−ν², plane stress 1) and its integral in ξ.
+// −[(1−ν²)·ln(1 + ξ²/h²) + (1+ν)·ξ²/(ξ²+h²)]/(πE) and its integral in ξ.
 double depth_shift_kernel(double xi, const LayerBody& body)
 {
   const double h = body.matching_depth, nu = body.poisson_ratio;
-  const double c = body.end_face ? 1. : 1. - nu * nu;
+  const double c = 1. - nu * nu;
   const double q = xi * xi / (h * h);
   return -(c * std::log1p(q) + (1. + nu) * q / (1. + q)) / (M_PI * body.young_modulus);
 }
 double depth_shift_integral(double xi, const LayerBody& body)
 {
   const double h = body.matching_depth, nu = body.poisson_ratio;
-  const double c = body.end_face ? 1. : 1. - nu * nu;
+  const double c = 1. - nu * nu;
   const double atan = std::atan(xi / h);
   return -(c * (xi * std::log1p(xi * xi / (h * h)) - 2. * xi + 2. * h * atan) +
            (1. + nu) * (xi - h * atan)) /
@@ -136,8 +132,7 @@ CornerScale corner_scale(const LayerBody& body)
   scale.weight = (degrees - corner_alpha[scale.angle]) /
                  (corner_alpha[scale.angle + 1] - corner_alpha[scale.angle]);
   const double nu = body.poisson_ratio;
-  const double c = body.end_face ? 1. : 1. - nu * nu;
-  scale.factor = (tip_edge_wedge_factor(body.corner_pressure_angle) - 1.) * 2. * c /
+  scale.factor = (tip_edge_wedge_factor(body.corner_pressure_angle) - 1.) * 2. * (1. - nu * nu) /
                  (M_PI * body.young_modulus);
   return scale;
 }
@@ -153,6 +148,54 @@ double corner_excess(const CornerScale& scale, double distance, double matching_
 double corner_layer_excess(double distance, const LayerBody& body)
 {
   return corner_excess(corner_scale(body), distance, body.matching_depth);
+}
+
+namespace
+{
+// Ê(Δz/h, i) of end_face_layer_excess for the node planes i = 0, 1, 2 from a free end: the 3D
+// Q1 quarter-space's layer compression over the plane-strain one's, in units of 2(1−ν²)/(πE)
+// per N/m, a Hertzian line load of half-width 0.1·h along the whole face (tools/end_face_layer.py,
+// 2026-12-05). The x–y mesh refined twice moves the end plane's entry by +0.7 %, a/h 0.05 / 0.2
+// by +1.5 / −3.9 %, the far boundaries halved by −1 % (at Δz/h = 1).
+constexpr std::array<double, 11> end_ratio = {{0.5, 0.75, 1., 1.5, 2., 3., 4., 6., 8., 12., 16.}};
+constexpr std::array<std::array<double, 3>, 11> end_face_e = {{
+    {{0.4144, 0.1406, 0.1012}},
+    {{0.3415, 0.1019, 0.0734}},
+    {{0.2914, 0.0801, 0.0571}},
+    {{0.2260, 0.0562, 0.0389}},
+    {{0.1844, 0.0433, 0.0290}},
+    {{0.1344, 0.0298, 0.0188}},
+    {{0.1052, 0.0227, 0.0136}},
+    {{0.0727, 0.0154, 0.0086}},
+    {{0.0551, 0.0116, 0.0061}},
+    {{0.0365, 0.0077, 0.0036}},
+    {{0.0269, 0.0057, 0.0022}},
+}};
+// The quarter-space's layer excess far from the end: Ê·z/h settles at 0.120 from z = 3·h (the
+// FE at Δz/h 0.5: 0.1181, 0.1201, 0.1203, 0.1190 at z/h 2.5, 3.5, 4.5, 8).
+constexpr double end_tail = 0.120;
+constexpr double end_tail_reach = 8.; // z/h
+} // namespace
+
+double end_face_layer_excess(double spacing, double matching_depth, unsigned int plane)
+{
+  const double ratio = spacing / matching_depth;
+  if (plane >= end_face_e.front().size())
+  {
+    const double z = plane * ratio;
+    return z <= end_tail_reach ? end_tail / z : 0.;
+  }
+  // Finer layers than the table: its first row (the continuum's end plane grows as ln(h/a),
+  // beyond what a node plane of the exact path resolves); coarser: the 1/ratio decay of its
+  // last steps (Ê·ratio 0.441, 0.438, 0.430 at 8, 12, 16).
+  if (ratio <= end_ratio.front())
+    return end_face_e.front()[plane];
+  if (ratio >= end_ratio.back())
+    return end_face_e.back()[plane] * end_ratio.back() / ratio;
+  const std::size_t i =
+      std::upper_bound(end_ratio.begin(), end_ratio.end(), ratio) - end_ratio.begin() - 1;
+  const double t = std::log(ratio / end_ratio[i]) / std::log(end_ratio[i + 1] / end_ratio[i]);
+  return (1. - t) * end_face_e[i][plane] + t * end_face_e[i + 1][plane];
 }
 
 namespace
@@ -408,16 +451,26 @@ LineContact near_field(const MeshContactProblem& problem, int j, double force)
     pinion.corner_offset = problem.pinion_corner[j];
     wheel.corner_offset = problem.wheel_corner[j];
   }
-  if (j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty())
-    return strip_line_contact(force, width, problem.strip[j], pinion, wheel);
-  if (j < static_cast<int>(problem.end_face.size()) && problem.end_face[j])
-    pinion.end_face = wheel.end_face = true;
   if (j < static_cast<int>(problem.pinion_wedge.size()))
   {
     pinion.wedge_factor = problem.pinion_wedge[j];
     wheel.wedge_factor = problem.wheel_wedge[j];
   }
-  return hertz_line_contact(force, width, problem.relative_radius[j], pinion, wheel);
+  LineContact contact =
+      j < static_cast<int>(problem.strip.size()) && !problem.strip[j].gap.empty()
+          ? strip_line_contact(force, width, problem.strip[j], pinion, wheel)
+          : hertz_line_contact(force, width, problem.relative_radius[j], pinion, wheel);
+  // Near an end face the layer is softer by an amount linear in the line load
+  // (end_face_layer_excess): a shift of the whole zone, its pressure unchanged.
+  if (j < static_cast<int>(problem.end_excess.size()) && problem.end_excess[j] != 0. && force > 0.)
+  {
+    const auto unit = [](const LayerBody& body)
+    { return 2. * (1. - body.poisson_ratio * body.poisson_ratio) / (M_PI * body.young_modulus); };
+    const double excess = problem.end_excess[j] * (unit(pinion) + unit(wheel)) / width;
+    contact.approach += excess * force;
+    contact.compliance += excess;
+  }
+  return contact;
 }
 
 double lever(const MeshContactProblem& problem, int j)

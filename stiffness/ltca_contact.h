@@ -20,10 +20,6 @@ struct LayerBody
   double young_modulus = 210e9; // Pa
   double poisson_ratio = 0.3;   // -
   double matching_depth = 0.;   // m, h
-  // The layer under a 3D node plane on one of the gear's end faces: the face is traction-free,
-  // so the stress along the contact line vanishes there (σ_y = 0) and the layer is in plane
-  // stress, not plane strain (docs/ltca.md §3 "End faces").
-  bool end_face = false;
   // -, the layer under a tip edge (a helical pair's tip corner touching beyond the path,
   // docs/ltca.md §3 "Tip edges"): its compression over a half-space's (tip_edge_wedge_factor).
   double wedge_factor = 1.;
@@ -48,20 +44,28 @@ double tip_edge_wedge_factor(double tip_pressure_angle);
 // the half-plane's stress, tip_edge_wedge_factor), so for distance ≪ h the excess is
 // 2(1−ν²)/(πE)·(f − 1)·[ln(h/distance) − 1.8]. Tabulated, as (f − 1)·Ĝ(distance/h, α_tip), from a
 // plane-strain FE of the wedge against the half-plane (tools/wedge_layer.py, converged to
-// 5e-4; ν 0.3: at ν 0.25 / 0.35 Ĝ moves by −4 / +5 % at s 0.05, ∓12 % at s 0.2); plane stress
-// on an end face (2/(πE) for 2(1−ν²)/(πE)).
+// 5e-4; ν 0.3: at ν 0.25 / 0.35 Ĝ moves by −4 / +5 % at s 0.05, ∓12 % at s 0.2).
 double corner_layer_excess(double distance, const LayerBody& body);
+
+// -, Ê: how much more the layer 0 ≤ z ≤ h under a 3D node plane compresses, per unit line load,
+// than plane strain gives, in units of 2(1−ν²)/(πE), when the face ends at a traction-free end
+// plane `plane` node planes of spacing `spacing` (m) away: a line load that runs to a free face
+// is held by a quarter-space, not a half-space, and the exact path follows that softening only
+// as far as its layers of Δz resolve it (docs/ltca.md §3 "End faces"). Tabulated from a 3D Q1
+// FE discretised along the face as the exact path is (tools/end_face_layer.py) for Δz/h 0.5 …
+// 16 and planes 0, 1, 2; farther planes take the quarter-space's tail 0.120·h/z out to z = 8·h
+// (the FE's 1/z law from z = 3·h, where a tooth's own size, not a half-space's, takes over).
+double end_face_layer_excess(double spacing, double matching_depth, unsigned int plane);
 
 // The compression (m) of the layer 0 ≤ z ≤ h of a plane-strain half-space under a Hertzian
 // pressure of peak p0 (Pa) and half-width a (m), on the symmetry axis: the integral of ε_z of
-// the axis stresses (Johnson 1985 §2.6, docs/ltca.md §3); Weber's formula for h ≫ a. On an
-// end face (body.end_face) the same axis stresses with σ_y = 0.
+// the axis stresses (Johnson 1985 §2.6, docs/ltca.md §3); Weber's formula for h ≫ a.
 double hertz_layer_compression(double peak_pressure, double half_width, const LayerBody& body);
 
 // The FE body's coefficients are a point load's, read at the matching depth h under it; the
 // contact's load is spread over the zone, and a depth point moves less under a load beside it:
 // per unit line load at ξ, by −[(1−ν²)·ln(1 + ξ²/h²) + (1+ν)·ξ²/(ξ²+h²)]/(πE) against the load
-// at ξ = 0 (Flamant's half-plane, Johnson 1985 §2.2; plane stress on an end face: 1 for 1−ν²).
+// at ξ = 0 (Flamant's half-plane, Johnson 1985 §2.2).
 // `spread_load_depth_shift` (m, ≤ 0): that shift of the depth point under a Hertzian line load w
 // (N/m) of half-width a (m) against w at its axis, added to each body's approach (docs/ltca.md
 // §3 "Spread load at the matching depth"); O((a/h)²): 0.14 % of the built-in pair's single-pair
@@ -128,9 +132,9 @@ struct MeshContactProblem
   // m, the face width each unknown's near field spreads its force over (a 3D model's layer or
   // node plane: its line load is F_j/width_j). Empty: face_width for every unknown.
   std::vector<double> width;
-  // Per unknown: 1 when its node plane lies on an end face of the face width (3D), whose layer
-  // is in plane stress (LayerBody::end_face). Empty: none.
-  std::vector<char> end_face;
+  // Per unknown: its node plane's end_face_layer_excess from both ends of the face (3D), the
+  // same for both bodies in units of their own 2(1−ν²)/(πE). Empty: none.
+  std::vector<double> end_excess;
   // Per unknown: each body's LayerBody::wedge_factor (a tip edge's, else 1). Empty: all 1.
   std::vector<double> pinion_wedge, wheel_wedge;
   // Per unknown: each body's LayerBody::corner_offset (NaN: no sharp tip corner). Empty: none.

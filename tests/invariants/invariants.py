@@ -671,7 +671,7 @@ def three_d_between_plane_models(case, runner, log):
 # The 3D influence-coefficient model (docs/ltca.md, 3D) on the case's own pair, against the exact
 # 3D sweep of the same settings (Q1, 4 layers, frictionless, unmodified) at the accuracy it is
 # tested to on the built-in pair (tests/stiffness/test_influence_3d.cc: k 1 %, TE 0.1 um, load
-# shares 0.01). Internal pairs too since 2026-12-03 (ltca47k: end faces in plane stress, the
+# shares 0.01). Internal pairs too since 2026-12-03 (ltca47k: end faces in plane stress, since 2026-12-05 the quarter-space's layer; the
 # ring's rim cells at most a third of its thickness): cases 69 and 79 of seed 20261201 (21/-64 m 6,
 # 29/-72 m 1.25), run through the command line with this check's settings: |dk| 0.241, 0.311 %,
 # |dTE| 0.0154, 0.0135 um, |dshare| 5e-5, 0.0007 (single runs, exact 28-35 s, the model 4.5-5 s).

@@ -146,6 +146,26 @@ TEST(InfluenceCoefficients3DLead, LeadCrowningSixteenLayers)
                         exact_crowning_20um, "crowning 20 um");
 }
 
+// The exact path on the default pair, uncrowned, 16 layers (lead_settings: Q1, h_c 0.06 mm, body
+// 1 mm, μ 0), regression: measured 2026-12-05 (DISABLED_Ladder with LADDER_LAYERS=16
+// LADDER_CROWN=0 LADDER_BODY=1e-3, one run: 270k–290k DoFs a position, 110 s, 3.7 GB).
+constexpr std::array<StoredPosition, 4> exact_uncrowned_16_layers = {
+    {{388.8327, 5.150496, 1.023642, 0.4435801},
+     {389.5363, 5.141193, 1.023213, 0.515446},
+     {281.9932, 7.101878, 1.015988, 1.},
+     {287.6578, 6.962027, 1.014529, 1.}}};
+
+// An uncrowned face at 16 layers (accepted since 2026-12-05: the end planes' layer from the
+// quarter-space, end_face_layer_excess; docs/ltca.md §3 "End faces"): the fast model, same
+// settings (133k body DoFs, 21 s, 1.1 GB; one run 2026-12-05): k +0.16, +0.19, −0.06, −0.03 %,
+// TE ≤ 0.010 µm, K_Hβ +0.61, +0.72, +0.78, +0.81 % (with plane stress on the end planes: +2.4 …
+// +2.7 %, refused). Tolerances: the 1 %, 0.1 µm, 2 % (K_Hβ uses 0.8 % of its 2 %).
+TEST(InfluenceCoefficients3DLead, UncrownedSixteenLayers)
+{
+  expect_against_stored(fast_sweep(lead_settings(16, 0., 0., 6e-5, 1e-3), "uncrowned_16"),
+                        exact_uncrowned_16_layers, "uncrowned, 16 layers");
+}
+
 // The exact path on the planet–ring pair (internal_settings: Q1, h_c 0.06 mm, body 0.7 mm, 4
 // positions, μ 0); regression: measured 2026-12-03 (ltca47k, DISABLED_Ladder with
 // LADDER_INTERNAL=1 LADDER_CROWN=0, one unlocked run each). 4 layers: 96k–104k DoFs a position,
@@ -168,8 +188,11 @@ constexpr std::array<StoredPosition, 4> exact_internal_8_layers = {
 // of 3 under the build lock; 54k and 97k body DoFs, 0.47 and 0.82 GB). Measured 2026-12-03
 // (ltca47k, one unlocked run each): 4 layers k +0.18, −0.30, −0.24, −0.27 %, TE ≤ 0.014 µm, K_Hβ
 // −0.07 … +0.71 %, share 0.0012; 8 layers k +0.46, +0.04, +0.08, +0.03 %, TE ≤ 0.015 µm, K_Hβ
-// +1.05, +1.68, +1.70, +1.72 %, share 0.0014. Tolerances: the 1 %, 0.1 µm, 2 %, 0.01 (≈ 2×,
-// 6×, 1.2×, 7× the worst measured; K_Hβ has the least margin, docs/ltca.md §3 "End faces").
+// +1.05, +1.68, +1.70, +1.72 %, share 0.0014. With the end faces' layer from the quarter-space
+// (end_face_layer_excess, 2026-12-05, one run each): 4 layers k +0.15, −0.10, +0.06, +0.04 %, K_Hβ
+// +0.50 … +0.56 %; 8 layers k +0.17, −0.09, +0.08, +0.06 %, K_Hβ +0.63 … +1.05 %; TE ≤ 0.005 µm.
+// Tolerances: the 1 %, 0.1 µm, 2 %, 0.01 (≈ 2×, 6×, 1.2×, 7× the worst measured before;
+// K_Hβ has the least margin, docs/ltca.md §3 "End faces").
 TEST(InfluenceCoefficients3DLead, InternalSpur)
 {
   expect_against_stored(fast_sweep(internal_settings(4, 6e-5), "internal_4"),

@@ -194,8 +194,8 @@ TEST(InfluenceCoefficients, HertzLayerApproachesWeber)
 // is (f − 1)·2(1−ν²)/(πE)·Ĝ(d/h, α) with Ĝ tabulated by tools/wedge_layer.py (its values
 // checked there, ctest verification.wedge_layer). Here: a table node, the wedge's log below the
 // table (slope −1 in ln s: the FE's own step 0.005 → 0.01 is 0.98·ln 2), the far field's 1/s
-// above it, the plane-stress end face's 1/(1−ν²), a blunter corner (larger α) less soft at small
-// distances, and none without a corner.
+// above it, a blunter corner (larger α) less soft at small distances, and none without a
+// corner.
 TEST(InfluenceCoefficients, CornerLayerExcess)
 {
   LayerBody steel{210e9, 0.3, 0.3e-3};
@@ -208,9 +208,6 @@ TEST(InfluenceCoefficients, CornerLayerExcess)
           unit,
       std::log(2.), 1e-12);
   EXPECT_NEAR(corner_layer_excess(3.2 * 0.3e-3, steel) / unit, 0.5 * 0.0714, 1e-12);
-  LayerBody end = steel;
-  end.end_face = true;
-  EXPECT_NEAR(corner_layer_excess(1e-5, end) / corner_layer_excess(1e-5, steel), 1. / 0.91, 1e-12);
   LayerBody blunt = steel;
   blunt.corner_pressure_angle = 35. * M_PI / 180.;
   EXPECT_LT(corner_layer_excess(1e-5, blunt), corner_layer_excess(1e-5, steel));
@@ -227,6 +224,32 @@ TEST(InfluenceCoefficients, CornerLayerExcess)
   LayerBody near_corner = steel;
   near_corner.corner_offset = 0.05e-3;
   EXPECT_GT(hertz_line_contact(1000., 0.02, 0.01, near_corner, steel).approach, flank.approach);
+}
+
+// Near a face's free end (docs/ltca.md §3 "End faces"): the quarter-space's layer excess Ê(Δz/h,
+// i), tabulated by tools/end_face_layer.py (its values checked there, ctest
+// verification.end_face_layer). Here: a table node, log-linear between nodes, the end plane
+// softest and each plane less soft with coarser layers (the exact path resolves less of the
+// end), the 1/z tail 0.120·h/z from the third plane out to z = 8·h and none beyond, the table's
+// first row below Δz/h 0.5 and its 1/ratio decay above 16.
+TEST(InfluenceCoefficients, EndFaceLayerExcess)
+{
+  const double h = 0.6e-3;
+  EXPECT_NEAR(end_face_layer_excess(1. * h, h, 0), 0.2914, 1e-12);
+  EXPECT_NEAR(end_face_layer_excess(4. * h, h, 1), 0.0227, 1e-12);
+  EXPECT_NEAR(end_face_layer_excess(std::sqrt(1.5 * 2.) * h, h, 2), 0.5 * (0.0389 + 0.0290), 1e-12);
+  for (double ratio = 0.5; ratio < 20.; ratio *= 1.17)
+  {
+    EXPECT_GT(end_face_layer_excess(ratio * h, h, 0), end_face_layer_excess(ratio * h, h, 1));
+    EXPECT_GT(end_face_layer_excess(ratio * h, h, 1), end_face_layer_excess(ratio * h, h, 2));
+    EXPECT_GT(end_face_layer_excess(ratio * h, h, 0),
+              end_face_layer_excess(1.17 * ratio * h, h, 0));
+  }
+  EXPECT_NEAR(end_face_layer_excess(0.5 * h, h, 5), 0.120 / 2.5, 1e-12);
+  EXPECT_NEAR(end_face_layer_excess(2. * h, h, 4), 0.120 / 8., 1e-12);
+  EXPECT_EQ(end_face_layer_excess(2. * h, h, 5), 0.);
+  EXPECT_EQ(end_face_layer_excess(0.2 * h, h, 0), 0.4144);
+  EXPECT_NEAR(end_face_layer_excess(32. * h, h, 0), 0.5 * 0.0269, 1e-12);
 }
 
 // A tip edge's layer (docs/ltca.md §3 "Tip edges"): Flamant's wedge over the half-plane. The
