@@ -27,15 +27,14 @@ h a node, geometric from a/8), z uniform Δz to max(8·h, 4·Δz) beyond the end
 ν 0.3. numpy and scipy only.
 """
 import argparse
-import os
-import re
 import sys
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from cc_table import table_rows
+
 RATIO = [0.5, 0.75, 1., 1.5, 2., 3., 4., 6., 8., 12., 16.]  # Δz/h
 PLANES = 3  # node planes i = 0, 1, 2 from the end
 POISSON = 0.3
@@ -58,7 +57,7 @@ def section_nodes(a, h=1.0, far=30., growth=1.35, refine=1):
                         graded(a, a / (8 * refine), far, growth)])
     y = np.concatenate([graded(0., a / (8 * refine), h, growth)[:-1],
                         graded(h, (h - 0) / (8 * refine), far, growth)])
-    # the step below h is the first step above it at most: keep the grading smooth across h
+    # h a node: the reads are at depth h under the load
     return x, y
 
 
@@ -187,12 +186,7 @@ def entries(ratio, a=HALF_WIDTH, nu=POISSON, refine=1):
 
 def source_table():
     """The table as stiffness/ltca_contact.cc holds it: {Δz/h: [Ê over i]}."""
-    with open(os.path.join(ROOT, "stiffness", "ltca_contact.cc"), encoding="utf-8") as f:
-        text = f.read()
-    block = text[text.index("end_face_e = {{"):]
-    block = block[:block.index("}};")]
-    rows = [[float(v) for v in row.split(",")] for row in re.findall(r"\{\{([^{}]*)\}\}", block)]
-    return dict(zip(RATIO, rows))
+    return dict(zip(RATIO, table_rows("end_face_e")))
 
 
 def main():

@@ -22,15 +22,14 @@ load's edges, 1° in θ. Halving both (400 radii, 0.5°) moved the entry at α 1
 and higher at s 0.05, 12 % at s 0.2 (the table is for steel). numpy and scipy only.
 """
 import argparse
-import os
-import re
 import sys
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from cc_table import table_rows
+
 S = [0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8, 1.6]  # d/h
 ALPHA = [10., 17.5, 25., 32., 40.]  # degrees, the tip's pressure angle
 POISSON = 0.3
@@ -114,12 +113,7 @@ def entry(alpha_degrees, s):
 
 def source_table():
     """The table as stiffness/ltca_contact.cc holds it: {α: [Ĝ over S]}."""
-    with open(os.path.join(ROOT, "stiffness", "ltca_contact.cc"), encoding="utf-8") as f:
-        text = f.read()
-    block = text[text.index("corner_g = {{"):]
-    block = block[:block.index("}};")]
-    rows = [[float(v) for v in row.split(",")] for row in re.findall(r"\{\{([^{}]*)\}\}", block)]
-    return dict(zip(ALPHA, rows))
+    return dict(zip(ALPHA, table_rows("corner_g")))
 
 
 def main():
