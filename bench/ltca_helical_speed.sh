@@ -2,13 +2,13 @@
 # Speed of the helical influence-coefficient model (issue 47's targets: 3D helical, 32 positions,
 # 2 ranks ≤ 30 s; Harris map 8 torques × 32 positions ≤ 90 s): the built-in pair at β ±15°
 # (ε_β 0.79) at the default sizes (13 layers), Q1, μ 0; three rounds of both, process wall and
-# peak RSS of the larger rank (/usr/bin/time -v around mpirun). The model is refused on helical
-# pairs until its accuracy is met (docs/ltca.md §3): this needs a binary with that refusal lifted
-# (2026-12-04's measurement, bench/ltca_helical_speed_2026-12-04.txt, lifted it by hand).
+# peak RSS of the larger rank (/usr/bin/time -v around mpirun). The model takes helical pairs since
+# 2026-12-05 (docs/ltca.md §3 "Helical pairs accepted"); the measurements before that date
+# (bench/ltca_helical_speed_2026-12-04.txt) ran binaries with the refusal lifted by hand.
 # usage: flock /tmp/gearstiff-build.lock bash bench/ltca_helical_speed.sh path/to/gearstiff [work]
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
-gs=${1:?path to a gearstiff binary that accepts the helical fast model}
+gs=${1:?path to a gearstiff binary}
 work=${2:-$(mktemp -d)}
 mkdir -p "$work" && cd "$work" || exit 1
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

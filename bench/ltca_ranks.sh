@@ -3,8 +3,8 @@
 # a build before it, in one sitting: three rounds of each case with each binary, process wall and
 # peak RSS of the larger rank (/usr/bin/time -v around mpirun). Cases: the helical built-in pair
 # at β ±15° (13 layers, Q1, μ 0) 32 positions and the Harris map 8 torques × 32 positions on 2
-# ranks (issue 47's 30 s and 90 s; the model is refused on helical pairs until its accuracy is
-# met, so both binaries need that refusal lifted by hand, as bench/ltca_helical_speed.sh says);
+# ranks (issue 47's 30 s and 90 s; binaries before 2026-12-05 refuse helical pairs in this model
+# and need that refusal lifted by hand, as bench/ltca_helical_speed.sh says);
 # the spur 3D pair (8 layers, 32 positions) on 1 and 2 ranks; the 2D pair (128 positions) on 1.
 # usage: flock /tmp/gearstiff-build.lock bash bench/ltca_ranks.sh OLD_BINARY NEW_BINARY [work]
 set -u
