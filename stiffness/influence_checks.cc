@@ -41,7 +41,8 @@ constexpr unsigned int min_loaded_planes = 7;
 // 0.738·m_n) are within 0.25 % of the exact path's layer limit. Measured 2026-12-05 on invariants
 // case 24 of seed 20261201 (z 22/31, m_n 1.5 mm, β 8.2°, b 16.4 mm, its exact position, Q1, μ 0,
 // one run each): the model at 8, 16, 24, 32 layers (1.37, 0.68, 0.46, 0.34·m_n) k 253.18,
-// 256.71, 256.89, 256.50 N/µm — 1.4 % low at 8 layers, within 0.2 % of its finer levels from 16.
+// 256.71, 256.89, 256.50 N/µm — 1.4 % low at 8 layers, within 0.2 % of its finer levels from 16;
+// the exact path's limit there 256.3 … 257.5 N/µm (its 24 and 32 layers, 1/L² … 1/L).
 constexpr double max_helical_spacing_modules = 0.74;
 constexpr double min_resolved_share = 0.25;
 } // namespace

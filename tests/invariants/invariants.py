@@ -899,9 +899,25 @@ def layer_extrapolation(runner, log, sets, chords):
     scene's body size, which an automatic size keeps unless 2L layers pass the memory limit);
     the extrapolated k is Richardson's in the pinion rotation from the two levels it reports;
     the statics identities hold for the extrapolated forces as for each level. A correction over
-    5 % fails with exit 3 naming the layer extrapolation (never a number), which is logged."""
+    5 % fails with exit 3 naming the layer extrapolation (never a number), which is logged. Fewer
+    layers than the option takes are refused naming Mesh/layers and the count, which is taken.
+    Then the influence-coefficient model on the same position against that limit."""
     extrapolated = dict(sets, **{"Mesh/layer extrapolation": "richardson"})
-    report, code, stderr = runner.run("stiffness", extrapolated, allowed=(0, 3))
+    report, code, stderr = runner.run("stiffness", extrapolated, allowed=(0, 2, 3))
+    if code == 2:
+        # The option needs 16 layers per unit of eps_beta, the chords run takes the twist's 8
+        # (cases 84 and 94 of seed 20261201: 7 layers, 13 and 14 named): refused naming
+        # Mesh/layers and the count, which is taken; that run's L level is then its own.
+        refusal = re.search(r"error: Mesh/layers: (\d+) layers are too few for Mesh/layer "
+                            r"extrapolation: at least (\d+)", stderr)
+        if refusal is None or int(refusal.group(1)) != int(sets["Mesh/layers"]):
+            raise CaseFailure(f"layer extrapolation exited 2: {stderr.strip()[-600:]}")
+        log(f"layer extrapolation: {refusal.group(1)} layers refused, names Mesh/layers and at "
+            f"least {refusal.group(2)}, taken")
+        sets = dict(sets, **{"Mesh/layers": int(refusal.group(2))})
+        extrapolated = dict(sets, **{"Mesh/layer extrapolation": "richardson"})
+        chords = None
+        report, code, stderr = runner.run("stiffness", extrapolated, allowed=(0, 3))
     if code == 3:
         if "layer extrapolation" not in stderr:
             raise CaseFailure(f"layer extrapolation exited 3: {stderr.strip()[-600:]}")
@@ -909,8 +925,9 @@ def layer_extrapolation(runner, log, sets, chords):
         return
     k1, k2 = value(report, "stiffness_coarse_layers"), value(report, "stiffness_fine_layers")
     k = value(report, "mesh_stiffness")
-    check_close("layer extrapolation: its L level against the plain L run", k1,
-                value(chords, "mesh_stiffness"), 0., 1e-6)
+    if chords is not None:
+        check_close("layer extrapolation: its L level against the plain L run", k1,
+                    value(chords, "mesh_stiffness"), 0., 1e-6)
     check_close("layer extrapolation: Richardson in the rotation", 1. / k,
                 1. / k2 + (1. / k2 - 1. / k1) / 3., 0., 1e-9)
     check_close("extrapolated |F_a|/F_bt against tan beta_b", value(report, "axial_over_tangential"),
