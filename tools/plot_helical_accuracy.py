@@ -4,8 +4,9 @@
 usage: plot_helical_accuracy.py bench/helical_layers_accuracy.csv REFERENCE_N_PER_UM OUT.png
 
 The built-in pair at β ±15°, default sizes and single position, Q1, frictionless, 2 ranks: k on
-L layers (chords: the default flanks), the helicoid flanks, and the layer extrapolation, each
-point's |k/k_ref − 1| against its wall time. The reference is the layers' limit estimated from
+L layers (chords: the default flanks), the helicoid flanks, the layer extrapolation and the
+influence-coefficient model (one position as a one-position sweep, its whole model built for
+it), each point's |k/k_ref − 1| against its wall time. The reference is the layers' limit estimated from
 20 and 26 layers (Richardson in the rotation); the times come from the sittings the CSV names
 (the machine is shared: ±20 % at best, 3× between a loaded and a quiet day), so the chart
 compares orders of magnitude.

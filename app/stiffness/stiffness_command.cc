@@ -438,9 +438,9 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
       p.settings.contact_model == stiffness::ContactModel::influence_coefficients)
     report.add_text("layer error",
                     std::to_string(p.settings.scene.mesh.layers) +
-                        " layers: the influence-coefficient model's k lies within 0.25 % of the "
+                        " layers: the influence-coefficient model's k lies within 0.8 % of the "
                         "exact path's layer limit at the built-in pair's default 13 layers and "
-                        "rises by up to 1.0 % above it at 32 layers (docs/ltca.md §3 \"Helical "
+                        "up to 1.0 % above it at 26 and 32 layers (docs/ltca.md §3 \"Helical "
                         "pairs accepted\")");
   else if (p.settings.scene.pair.pinion.helix_angle != 0. && !p.layer_extrapolation)
     report.add_text("layer error",
