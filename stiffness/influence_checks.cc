@@ -178,6 +178,7 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
     // (docs/ltca.md §3 "Tip edges"), which a rounded tip moves to its form circle; not measured, so
     // refused.
     if (settings.scene.pair.pinion.helix_angle != 0.)
+    {
       for (const bool wheel : {false, true})
         if ((wheel ? settings.scene.pair.wheel : settings.scene.pair.pinion).tip_rounding_radius !=
             0.)
@@ -185,8 +186,6 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
                            "influence coefficients on a helical pair are verified with sharp tips "
                            "(their tip edges are the model's own load case, docs/ltca.md §3 \"Tip "
                            "edges\"): use Stiffness/contact model = finite element");
-    if (settings.scene.pair.pinion.helix_angle != 0.)
-    {
       const double face =
           std::min(settings.scene.pair.pinion.face_width, settings.scene.pair.wheel.face_width);
       const double module = settings.scene.pair.pinion.normal_module;

@@ -433,7 +433,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report_input_sizes(report, p);
   report_model(p, pair, iso, report);
   // A helical result on one layer count carries the layers' error; say so and how to remove it.
-  // The fast model's own layer dependence is small and of the other sign (docs/ltca.md §3).
+  // The fast model's own layer dependence is smaller, and it is stated instead (docs/ltca.md §3).
   if (p.settings.scene.pair.pinion.helix_angle != 0. &&
       p.settings.contact_model == stiffness::ContactModel::influence_coefficients)
     report.add_text("layer error",
