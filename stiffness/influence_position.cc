@@ -59,22 +59,22 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   const double k_1 = frame.pinion_base_radius() / rho_1, k_2 = frame.wheel_base_radius() / rho_2;
   const LineContact whole =
       hertz_line_contact(total_force, model.face_width, relative_radius, model.pinion, model.wheel);
-  // The slopes over the zone, not at x = 0: a central difference at the contact point takes one
-  // side of a kink within the zone (measured 2026-12-02, tip-relief test position 15: 1.46 % /
-  // 0.106 µm with one side, 1.30 % / 0.094 µm with the zone's mean).
-  const double slope_1 = zone_slope(separation, at, false, k_1, whole.half_width);
-  const double slope_2 = zone_slope(separation, at, true, k_2, whole.half_width);
-  line.pinion_lever = 1. - slope_1;
-  line.wheel_lever = 1. + slope_2;
-  // Signed distances σ_i = m·(O_i − T) of the centres from the line: Δ(σ_2 − σ_1) = −dψ·u·(O_2
-  // − O_1) for a line turned by dψ (m = (cos ψ, −sin ψ), u = (sin ψ, cos ψ)).
-  Tensor<1, 2> m;
-  m[0] = frame.u[1];
-  m[1] = -frame.u[0];
-  const Eigen::Vector2d t1 = geometry::line_of_action_point(frame.pair, 0.);
-  const Point<2> on_line(t1.x(), t1.y());
-  const double sigma_1 = m * (Point<2>() - on_line), sigma_2 = m * (frame.wheel_centre - on_line);
-  line.tilt = -(sigma_2 * slope_2 + sigma_1 * slope_1) / (frame.u * frame.wheel_centre);
+  // The force line: each flank's slope dS/dℓ as the loaded surface sees it turns it (the
+  // levers) and tilts it (τ).
+  const auto set_force_line = [&](double slope_1, double slope_2)
+  {
+    line.pinion_lever = 1. - slope_1;
+    line.wheel_lever = 1. + slope_2;
+    // Signed distances σ_i = m·(O_i − T) of the centres from the line: Δ(σ_2 − σ_1) = −dψ·u·(O_2
+    // − O_1) for a line turned by dψ (m = (cos ψ, −sin ψ), u = (sin ψ, cos ψ)).
+    Tensor<1, 2> m;
+    m[0] = frame.u[1];
+    m[1] = -frame.u[0];
+    const Eigen::Vector2d t1 = geometry::line_of_action_point(frame.pair, 0.);
+    const Point<2> on_line(t1.x(), t1.y());
+    const double sigma_1 = m * (Point<2>() - on_line), sigma_2 = m * (frame.wheel_centre - on_line);
+    line.tilt = -(sigma_2 * slope_2 + sigma_1 * slope_1) / (frame.u * frame.wheel_centre);
+  };
   const auto modification_gap = [&](double x)
   {
     return separation.removal(at + x * k_1, false) - separation.removal(at, false) +
@@ -105,13 +105,49 @@ PairLine pair_line(const PositionModel& model, double at, double relative_radius
   const double bend = 0.5 * std::abs(modification_gap(c + span) + modification_gap(c - span) -
                                      2. * modification_gap(c));
   if (!(bend > 1e-3 * span * span / (2. * relative_radius)))
+  {
+    // A parabola plus a line: the slope is the line's. Its mean over the Hertz zone, not a central
+    // difference at x = 0, which takes one side of a kink lying within the zone (measured
+    // 2026-12-02, tip-relief test position 15: 1.46 % / 0.106 µm with one side, 1.30 % / 0.094 µm
+    // with the zone's mean).
+    set_force_line(zone_slope(separation, at, false, k_1, whole.half_width),
+                   zone_slope(separation, at, true, k_2, whole.half_width));
     return line;
+  }
   line.strip.half_span = span;
   line.strip.relative_radius = relative_radius;
   const auto gap = [&](double x) { return x * x / (2. * relative_radius) + modification_gap(x); };
   const double cell = 2. * span / strip_cells;
   for (int i = 0; i < strip_cells; ++i)
     line.strip.gap.push_back(gap(c - span + (i + 0.5) * cell) - gap(c));
+  // The slopes weighted by the strip's own pressure (under the largest load, as the strip is
+  // sized), not by a Hertz ellipse over the unmodified zone: where a rounded tip's arc begins
+  // inside that zone the arc falls away by x²/(2r) and carries little, and the ellipse's mean
+  // took its steep slope at full weight. Measured 2026-12-05 (μ 0, 32 positions, 2D, against the
+  // exact rolling sweep at h_c 0.015 mm): the planet–ring pair with the planet's tip rounded
+  // (r 0.6 mm) was −2.51 % at the position whose contact reaches the arc, its torque ratio
+  // +0.8 % off the kinematic one where the exact path's moved +0.03 %; now −0.09 % (docs/ltca.md
+  // §5 "The slopes the strip's pressure sees").
+  const std::vector<double> pressure =
+      strip_cell_pressures(total_force, model.face_width, line.strip, model.pinion, model.wheel);
+  double sum_1 = 0., sum_2 = 0., weights = 0.;
+  constexpr double slope_step = 1e-8; // m of roll: as zone_slope
+  for (int i = 0; i < strip_cells; ++i)
+  {
+    if (!(pressure[i] > 0.))
+      continue;
+    const double x = c - span + (i + 0.5) * cell;
+    for (const bool wheel : {false, true})
+    {
+      const double l = at + x * (wheel ? k_2 : k_1);
+      (wheel ? sum_2 : sum_1) +=
+          pressure[i] *
+          (separation.removal(l + slope_step, wheel) - separation.removal(l - slope_step, wheel)) /
+          (2. * slope_step);
+    }
+    weights += pressure[i];
+  }
+  set_force_line(sum_1 / weights, sum_2 / weights);
   return line;
 }
 

@@ -362,7 +362,8 @@ std::pair<Eigen::VectorXd, double> strip_pressures(const Eigen::MatrixXd& influe
 // The strip's active set for line load w: starts from the Hertz zone around the smallest gap,
 // drops cells of negative pressure, adds cells whose surface would pass the approach.
 LineContact solve_strip(const Eigen::MatrixXd& influence, double line_load,
-                        const ContactStrip& strip, const LayerBody& first, const LayerBody& second)
+                        const ContactStrip& strip, const LayerBody& first, const LayerBody& second,
+                        std::vector<double>* cell_pressure = nullptr)
 {
   const int n = strip.gap.size();
   const double cell = 2. * strip.half_span / n;
@@ -414,6 +415,8 @@ LineContact solve_strip(const Eigen::MatrixXd& influence, double line_load,
     contact.peak_pressure = full.maxCoeff(&peak);
     contact.peak_offset = -strip.half_span + (static_cast<double>(peak) + 0.5) * cell;
     contact.half_width = 0.5 * cell * (active.back() - active.front() + 1);
+    if (cell_pressure != nullptr)
+      cell_pressure->assign(full.data(), full.data() + n);
     return contact;
   }
   throw SolverFailure("influence-coefficient contact",
@@ -437,6 +440,16 @@ LineContact strip_line_contact(double force, double face_width, const ContactStr
        solve_strip(influence, (force - step) / face_width, strip, first, second).approach) /
       (2. * step);
   return contact;
+}
+
+std::vector<double> strip_cell_pressures(double force, double face_width, const ContactStrip& strip,
+                                         const LayerBody& first, const LayerBody& second)
+{
+  std::vector<double> pressure(strip.gap.size(), 0.);
+  if (force > 0.)
+    solve_strip(strip_influence(strip.gap.size(), strip.half_span, first, second),
+                force / face_width, strip, first, second, &pressure);
+  return pressure;
 }
 
 namespace

@@ -111,6 +111,11 @@ struct ContactStrip
 LineContact strip_line_contact(double force, double face_width, const ContactStrip& strip,
                                const LayerBody& first, const LayerBody& second);
 
+// The pressure (Pa) on each of the strip's cells in strip_line_contact's solution (0 off the
+// zone): where the loaded surface's normals are weighted (pair_line's force line).
+std::vector<double> strip_cell_pressures(double force, double face_width, const ContactStrip& strip,
+                                         const LayerBody& first, const LayerBody& second);
+
 // The surface displacement (m, into the body) at tangential offset x (m) of uniform pressure
 // 1 Pa on [from, to] (m), relative to the body's point at its matching depth under x = 0: the
 // integral of the Flamant kernel (1/(πE))·[(1−ν²)·(ln(ξ²+h²) − 2·ln|x−ξ|) − (1+ν)·h²/(ξ²+h²)].

@@ -21,6 +21,7 @@ path's converged contact size (10 layers, h_c 0.075 mm). With modifications (202
 `small-15-modified` (β 15°, the tip reliefs and C_β 8 µm on the wheel), `small-internal` (a ring
 of 57 teeth, β 10° both) and `small-internal-modified` (a 6 µm pinion tip relief, C_β 6 µm on the
 ring); the crowned cases run the model on 16 layers (the fewest it takes with crowning).
+`small-15-rounded` (2026-12-05): β 15°, r 0.4 mm tip rounding on both gears.
 `built-in-fine`: the built-in pair at h_c 0.094 mm (0.0375·m_n), 13 layers; `built-in-fine-20` the
 same on 20 layers.
 
@@ -77,6 +78,10 @@ CASES["small-15-modified"] = BETA_15 + FINE + TIP_RELIEFS + ["Gear pair/Wheel/le
 CASES["small-internal"] = PAIR + FINE + RING
 CASES["small-internal-modified"] = PAIR + FINE + RING + [
     "Gear pair/Pinion/tip relief=6", "Gear pair/Wheel/lead crowning=6"]
+# Rounded tips on an external helical pair (2026-12-05): r 0.4 mm (0.2·m_n) on both tips at β 15°.
+# (An internal helical pair with a rounded tip is refused: cli.influence_3d_helical_tip_rounding.)
+ROUNDED = ["Gear pair/Pinion/tip rounding radius=0.4", "Gear pair/Wheel/tip rounding radius=0.4"]
+CASES["small-15-rounded"] = BETA_15 + FINE + ROUNDED
 # The model takes lead crowning from 16 layers on (stiffness/influence_checks.cc); the exact
 # reference is the layer limit, so the model's layers need not be the exact path's.
 MODEL_LAYERS = {case: ["Mesh/layers=16"] for case in
@@ -221,6 +226,15 @@ LIMIT["small-internal-modified"] = {
     "k": [138.9544, 124.4402, 114.9191, 104.8741], "te": [7.9535, 8.8812, 9.617, 10.5381],
     "share": [[0, 0.4666, 0.5334], [0, 0.6468, 0.3532], [0, 0.8193, 0.1807], [0, 1, 0]],
     "K_Hb": [1.9817, 1.9774, 1.929, 1.6481], "p_max": [1579.1, 1194.8, 1049.6, 951.6]}
+
+# The rounded case's layer limit (regression: measured 2026-12-05, session 41, `gearstiff` of main
+# 1e536e9 with the helical rounded-tip refusal lifted, the exact per-position sweep with
+# `Mesh/layer extrapolation = richardson` on 2 ranks, one run under the build lock, 118 s, 4.8 GB;
+# layer corrections +0.17, +0.25, +0.18, +0.01 %). K_Hβ and p_max of the 20-layer level.
+LIMIT["small-15-rounded"] = {
+    "k": [134.3801, 126.2589, 94.6171, 110.0894], "te": [8.0857, 8.6057, 11.4837, 9.8697],
+    "share": [[0, 0.4684, 0.5316], [0, 0.6049, 0.3951], [0, 1, 0], [0.2094, 0.7906, 0]],
+    "K_Hb": [1.0898, 1.3869, 1.0551, 1.8266], "p_max": [1320.8, 1810.7, 1100.6, 2418.4]}
 
 K_TOLERANCE = 1e-2  # relative: issue 47
 TE_TOLERANCE = 0.1  # µm: issue 47
