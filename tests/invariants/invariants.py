@@ -321,7 +321,8 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # unloaded TE is the same geometry, 1 nm). Frictionless cases only: the fast model applies no
 # friction. It carries rounded tips (docs/ltca.md "Tip rounding"): external gears' since
 # 2026-12-05 (seed 20261201 cases 33, 61, 63, rounded and relieved or profile-mixed: |dk| 0.339,
-# 0.354, 0.307 %, |dTE| 0.012-0.027 um), rings' since the same day. INFLUENCE_KINDS: the
+# 0.354, 0.307 %, |dTE| 0.012-0.027 um; with the force line's slopes weighted by the strip's
+# pressure, session 41: 0.269, 0.297, 0.240 %, |dTE| 0.009-0.023 um), rings' since the same day. INFLUENCE_KINDS: the
 # modification kinds it accepts, every one since 2026-12-05 (before: "none"). Cost: one
 # `stiffness` run of ~3 s per such case and one on 2 ranks (measured 2026-12-02: case 28 |dk|
 # 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018; case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %,
