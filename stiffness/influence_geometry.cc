@@ -47,7 +47,7 @@ double on_path_width(const FaceStations& stations, const Helix& helix,
   return std::max(0., high - low);
 }
 
-double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
+double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start, double rounding)
 {
   const kinematics::GearPairGeometry& pair = frame.pair;
   const Eigen::Vector2d o1(0., 0.), o2(frame.wheel_centre[0], frame.wheel_centre[1]);
@@ -68,22 +68,28 @@ double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start)
   const auto angle_to =
       [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to, const Eigen::Vector2d& c)
   { return std::atan2(cross(from - c, to - c), (from - c).dot(to - c)); };
+  // A rounded tip: its arc's centre, r inside the tooth along the form point's normal (the line
+  // of action there: towards T1 into the pinion, away from the pinion into a wheel's or a ring's
+  // tooth), stands in for the corner, and the arc lies r nearer than it (the mate's involutes are
+  // parallel curves, so the distance from a point to the flank is the same |Δℓ|).
   if (!at_start)
   {
     const double at = pair.contact_end + beyond;
-    const Eigen::Vector2d corner =
-        turn(geometry::line_of_action_point(pair, pair.contact_end), o1, beyond * s1 / r_b1);
+    const Eigen::Vector2d corner = turn(
+        geometry::line_of_action_point(pair, pair.contact_end - rounding), o1, beyond * s1 / r_b1);
     const double rho = std::sqrt(std::max(0., (corner - o2).squaredNorm() - r_b2 * r_b2));
-    const double l_r = frame.t2 - rho;
+    // The point of the line of action as far from O₂: on T₂'s side towards T₁ for an external
+    // wheel (t₂ > ℓ), beyond T₂ away from it for a ring (t₂ < 0 < ℓ, ρ₂ = ℓ − t₂).
+    const double l_r = pair.spec.wheel.internal ? frame.t2 + rho : frame.t2 - rho;
     const double alpha = angle_to(corner, geometry::line_of_action_point(pair, l_r), o2);
-    return std::abs(l_r + alpha * s2 * r_b2 - at);
+    return std::max(0., std::abs(l_r + alpha * s2 * r_b2 - at) - rounding);
   }
   const double at = pair.contact_start - beyond;
-  const Eigen::Vector2d corner =
-      turn(geometry::line_of_action_point(pair, pair.contact_start), o2, beyond * s2 / r_b2);
+  const Eigen::Vector2d corner = turn(
+      geometry::line_of_action_point(pair, pair.contact_start + rounding), o2, beyond * s2 / r_b2);
   const double l_r = std::sqrt(std::max(0., corner.squaredNorm() - r_b1 * r_b1));
   const double alpha = angle_to(corner, geometry::line_of_action_point(pair, l_r), o1);
-  return std::abs(l_r - alpha * s1 * r_b1 - at);
+  return std::max(0., std::abs(l_r - alpha * s1 * r_b1 - at) - rounding);
 }
 
 double rounded_tip_removal(double base_radius, double form_roll, double radius, double roll,

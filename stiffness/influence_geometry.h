@@ -72,8 +72,10 @@ double on_path_width(const FaceStations& stations, const Helix& helix,
 // corner is the path's end point turned with its gear by the roll beyond it; every point lies on
 // one involute of the mate's base circle, and two involutes of one base circle are the distance
 // between their contact points on the line of action apart along their common normal, so the gap
-// is |ℓ(corner's involute) − ℓ(the mate flank's)|. External pairs (a ring is refused).
-double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start);
+// is |ℓ(corner's involute) − ℓ(the mate flank's)|. External and internal pairs. A rounded tip
+// (`rounding`, m, the tip's rounding radius: the pinion's at E, the wheel's at A): the arc's gap,
+// its centre's less the radius.
+double tip_corner_gap(const PairFrame& frame, double beyond, bool at_start, double rounding = 0.);
 
 // m, the depth by which a rounded tip's arc lies under the involute's continuation beyond the tip
 // form circle, at the flank point of roll `roll` (ρ = √(r² − r_b²); 0 up to the form roll

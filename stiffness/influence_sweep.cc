@@ -443,13 +443,15 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
           continue;
         if (unknown.at > pair.contact_end && compliance.has_edge(j, true))
         {
-          corner_gap = tip_corner_gap(model.frame, unknown.at - pair.contact_end, false);
+          corner_gap = tip_corner_gap(model.frame, unknown.at - pair.contact_end, false,
+                                      pair.spec.pinion.tip_rounding_radius);
           unknown.edge = true;
           unknown.at = pair.contact_end;
         }
         else if (unknown.at < pair.contact_start && compliance.has_edge(j, false))
         {
-          corner_gap = tip_corner_gap(model.frame, pair.contact_start - unknown.at, true);
+          corner_gap = tip_corner_gap(model.frame, pair.contact_start - unknown.at, true,
+                                      pair.spec.wheel.tip_rounding_radius);
           unknown.edge = true;
           unknown.at = pair.contact_start;
         }
@@ -500,7 +502,14 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
         const double mate = unknown.at == pair.contact_end
                                 ? std::abs(unknown.at + corner_gap - model.frame.t2)
                                 : unknown.at;
-        radius = 1. / (1. / corner_radius + 1. / mate);
+        // A rounded tip's arc is the corner (its radius, not the model's choice for a sharp
+        // one); a ring's flank is concave.
+        const double rounding = unknown.at == pair.contact_end
+                                    ? pair.spec.pinion.tip_rounding_radius
+                                    : pair.spec.wheel.tip_rounding_radius;
+        const double corner = rounding > 0. ? rounding : corner_radius;
+        const bool concave_mate = unknown.at == pair.contact_end && pair.spec.wheel.internal;
+        radius = 1. / (1. / corner + (concave_mate ? -1. : 1.) / mate);
       }
       problem.width.push_back((unknown.edge
                                    ? stations.width[s]

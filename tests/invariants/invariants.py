@@ -958,22 +958,7 @@ def influence_helical_equals_limit(runner, log, sets, limit):
     width = min(float(sets[f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
     module = float(sets["Gear pair/Pinion/module"])
     needed = math.ceil(width / (0.74 * module) - 1e-9)
-    # A rounded tip on an internal helical pair is refused before any mesh, naming the rounded
-    # gear's radius (docs/ltca.md section 3 "Rounded tips on helical pairs": 3.9 % soft where the
-    # lines end on the pinion's arc); external helical pairs take rounded tips.
-    rounded = [g for g in ("Pinion", "Wheel")
-               if float(sets.get(f"Gear pair/{g}/tip rounding radius", 0)) != 0.]
-    internal = str(sets.get("Gear pair/Wheel/internal", "false")) == "true"
     fast, code, stderr = runner.run("stiffness", fast_sets, allowed=(0, 2))
-    if internal and rounded:
-        if code != 2 or f"error: Gear pair/{rounded[0]}/tip rounding radius: influence " \
-                        "coefficients on an internal helical pair" not in stderr:
-            raise CaseFailure(f"influence helical: a rounded tip on an internal pair not refused "
-                              f"naming Gear pair/{rounded[0]}/tip rounding radius: exit {code}, "
-                              f"{stderr.strip()[-300:]}")
-        log(f"influence helical: refused on the internal pair's rounded tip, names Gear "
-            f"pair/{rounded[0]}/tip rounding radius")
-        return
     if code == 2:
         refusal = re.search(r"error: Mesh/layers: influence coefficients on a helical pair .* "
                             r"use at least (\d+) layers", stderr)

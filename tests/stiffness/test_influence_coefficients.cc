@@ -9,6 +9,7 @@
 // complementarity problem against cases solved by hand.
 #include "errors/errors.h"
 #include "kinematics/gear_pair.h"
+#include "stiffness/influence_body.h"
 #include "stiffness/influence_geometry.h"
 #include "stiffness/influence_sweep.h"
 #include "stiffness/ltca_contact.h"
@@ -424,6 +425,35 @@ TEST(InfluenceCoefficients, RoundedTipRemovalClosedForm)
     EXPECT_NEAR(influence::rounded_tip_removal(base_radius, form_roll, radius, roll, true) / closed,
                 1., 1e-3)
         << "ring, x/r " << fraction;
+  }
+}
+
+// A helical tip edge's kinematic gap beyond the path's end (tip_corner_gap): zero at the end,
+// growing as the roll beyond it squared (two curves tangent there), a rounded tip's arc nearer
+// than the sharp corner; at E on a ring the same (the ring's side of the line of action: until
+// 2026-12-05 the point as far from O₂ was taken on the external wheel's side, and the pinion's tip
+// edge against a ring came out millimetres away, never loaded).
+TEST(InfluenceCoefficients, TipCornerGap)
+{
+  for (const bool ring : {false, true})
+  {
+    const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(
+        ring ? planet_ring_pair() : GearMeshStiffnessSettings().scene.pair);
+    const influence::PairFrame frame(pair);
+    for (const bool at_start : {false, true})
+    {
+      const std::string where = std::string(ring ? "ring" : "external") + (at_start ? " A" : " E");
+      EXPECT_NEAR(influence::tip_corner_gap(frame, 1e-9, at_start), 0., 1e-12) << where;
+      const double near = influence::tip_corner_gap(frame, 0.1e-3, at_start);
+      const double far = influence::tip_corner_gap(frame, 0.2e-3, at_start);
+      EXPECT_GT(near, 0.) << where;
+      EXPECT_LT(far, 20e-6) << where; // m: microns, not the far side of the line of action
+      EXPECT_NEAR(far / near, 4., 0.2) << where;
+      const double rounded = influence::tip_corner_gap(frame, 0.2e-3, at_start, 0.5e-3);
+      EXPECT_GE(rounded, 0.) << where;
+      EXPECT_LT(rounded, far) << where;
+      EXPECT_NEAR(influence::tip_corner_gap(frame, 1e-9, at_start, 0.5e-3), 0., 1e-12) << where;
+    }
   }
 }
 
