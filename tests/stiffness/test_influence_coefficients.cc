@@ -19,12 +19,16 @@
 #include "tests/stiffness/long_relief.h"
 #include "tests/stiffness/planet_ring.h"
 #include "tests/stiffness/work_file.h"
+#include "tests/test_paths.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <iomanip>
 #include <iostream>
+#include <string>
 #include <vector>
 
 using namespace gearstiff;
@@ -294,6 +298,138 @@ TEST(InfluenceCoefficients, ContactProblemByHand)
   EXPECT_NEAR(single.force[0], 2000., 1e-9);
   const LineContact alone = hertz_line_contact(2000., 0.024, 6e-3, problem.pinion, problem.wheel);
   EXPECT_NEAR(single.approach, 4e-9 * 2000. + alone.approach, 1e-15);
+}
+
+// A Hertz near field next to a tip corner is continuous in F where its zone passes the corner's
+// 6·a and 8·a (corner_shift's blend between its 32-point mean and its centre value): until session
+// 42 it switched at 8·a and δ(F) jumped by ~1 % of the corner's excess, and Newton's method cannot
+// converge across a jump (NewtonAcrossCornerSwitch). The steel pair's layer at h 0.3 mm,
+// R 6 mm, a corner 0.2 mm from the contact: across each switch δ moves by its slope's c·ΔF to
+// 1e-16 m (round-off of µm-sized approaches; the old switch jumped by 5·10⁻¹¹ m on the own pair).
+TEST(InfluenceCoefficients, CornerNearFieldContinuous)
+{
+  LayerBody steel{210e9, 0.3, 0.3e-3};
+  LayerBody corner = steel;
+  corner.corner_offset = 0.2e-3;
+  corner.corner_pressure_angle = 35. * M_PI / 180.;
+  const double face = 0.02, radius = 6e-3, distance = 0.2e-3;
+  const double e_star = 1. / (2. * (1. - 0.3 * 0.3) / 210e9);
+  for (const double ratio : {6., 7., 8.})
+  {
+    // F at which a = d/ratio: a = √(4·F/b·R/(πE*)).
+    const double a = distance / ratio;
+    const double force = a * a * M_PI * e_star * face / (4. * radius);
+    const double step = 1e-9 * force;
+    const LineContact below = hertz_line_contact(force - step, face, radius, corner, steel);
+    const LineContact above = hertz_line_contact(force + step, face, radius, corner, steel);
+    EXPECT_NEAR(above.approach - below.approach, 2. * step * below.compliance, 1e-16)
+        << "a = d/" << ratio;
+  }
+}
+
+// A position whose Newton failed (session 41, an own internal helical pair: z 23/71, m_n 2.5 mm,
+// β 12°, b 20 mm, 16 layers, Q1, both tips rounded 0.5 / 0.4 mm, 8 µm pinion tip relief, C_β
+// 5 µm on the ring, 80 N·m, the third of 8 positions; docs/ltca.md §3 "Rounded tips on helical
+// pairs"): its contact problem as the sweep built it (compliances, gaps, strips, corners; written
+// by a build of main that printed it). A tip-edge pair's Hertz near field sat where its zone
+// passed 8·a from the corner, δ(F) jumped there (CornerNearFieldContinuous) and the Newton ended
+// 100 steps short of its criterion. Solved, it must meet the problem's own conditions (exact
+// oracles, not stored results): the load balance, every loaded pair's compatibility, no unloaded
+// pair penetrating.
+TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
+{
+  std::ifstream in(test_support::source_dir() / "tests/stiffness/data/newton_corner_switch.txt");
+  ASSERT_TRUE(in.good());
+  MeshContactProblem problem;
+  std::vector<double> start;
+  const auto body = [](const std::vector<double>& v)
+  {
+    LayerBody b{v[0], v[1], v[2]};
+    b.wedge_factor = v[3];
+    b.corner_offset = v[4];
+    b.corner_pressure_angle = v[5];
+    return b;
+  };
+  std::string key;
+  std::size_t count = 0;
+  while (in >> key)
+  {
+    if (key.front() == '#')
+    {
+      std::getline(in, key);
+      continue;
+    }
+    in >> count;
+    std::vector<double> values(count);
+    for (double& v : values)
+    {
+      std::string word; // "nan" is not read by operator>>
+      in >> word;
+      v = std::strtod(word.c_str(), nullptr);
+    }
+    if (key == "total_force")
+      problem.total_force = values[0];
+    else if (key == "face_width")
+      problem.face_width = values[0];
+    else if (key == "separation")
+      problem.separation = values;
+    else if (key == "relative_radius")
+      problem.relative_radius = values;
+    else if (key == "lever_ratio")
+      problem.lever_ratio = values;
+    else if (key == "width")
+      problem.width = values;
+    else if (key == "end_excess")
+      problem.end_excess = values;
+    else if (key == "pinion_wedge")
+      problem.pinion_wedge = values;
+    else if (key == "wheel_wedge")
+      problem.wheel_wedge = values;
+    else if (key == "pinion_corner")
+      problem.pinion_corner = values;
+    else if (key == "wheel_corner")
+      problem.wheel_corner = values;
+    else if (key == "start")
+      start = values;
+    else if (key == "pinion")
+      problem.pinion = body(values);
+    else if (key == "wheel")
+      problem.wheel = body(values);
+    else if (key == "compliance")
+      problem.compliance.push_back(values);
+    else if (key == "strip")
+      problem.strip.push_back({values[0], values[1], {}});
+    else if (key == "gap")
+      problem.strip.back().gap = values;
+    else
+      FAIL() << "unknown key " << key;
+  }
+  const std::size_t n = problem.separation.size();
+  ASSERT_EQ(problem.compliance.size(), n);
+
+  const MeshContactSolution solution = solve_mesh_contact(problem, start);
+  std::cout << "Newton across the corner switch: " << n << " unknowns, " << solution.newton_steps
+            << " Newton steps, " << solution.active_set_passes << " active-set passes\n";
+  double balance = -problem.total_force, worst = 0.;
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    ASSERT_GE(solution.force[j], 0.);
+    balance += problem.lever_ratio[j] * solution.force[j];
+    // g_j = λ_j·(e − s_j) − Σ_k C_jk F_k − δ_j(F_j): 0 where loaded, ≤ 0 where not. 1e-15 m
+    // either way: the solver's own round-off bound on µm-sized gaps (solve_mesh_contact's entry
+    // test; measured 2.7e-21 m).
+    double gap = problem.lever_ratio[j] * (solution.approach - problem.separation[j]) -
+                 solution.contact[j].approach;
+    for (std::size_t k = 0; k < n; ++k)
+      gap -= problem.compliance[j][k] * solution.force[k];
+    if (solution.force[j] > 0.)
+      EXPECT_NEAR(gap, 0., 1e-15) << "pair " << j;
+    else
+      EXPECT_LE(gap, 1e-15) << "pair " << j;
+    worst = std::max(worst, solution.force[j] > 0. ? std::abs(gap) : gap);
+  }
+  EXPECT_NEAR(balance, 0., 1e-10 * problem.total_force); // the step criterion, 1e-12·W a pair
+  std::cout << "worst gap " << worst << " m, balance " << balance << " N\n";
 }
 
 // The half-plane kernel of the strip integrates a Hertz pressure to the closed-form layer
