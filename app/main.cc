@@ -9,6 +9,7 @@
 // left on device"). Errors go to stderr as one line.
 #include "app/core/command.h"
 #include "app/core/invoke.h"
+#include "app/core/scratch.h"
 #include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/file_names.h"
@@ -18,6 +19,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
@@ -193,6 +195,23 @@ int main(int argc, char** argv)
     const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
     if (rank == nullptr || std::string(rank) == "0")
       std::cerr << "gearstiff: error: " << one_line(problem) << std::endl;
+    return 2;
+  }
+  // MUMPS writes out-of-core factors (fem/stiffness_factorization.cc: from 500k DoFs, 1.9 GB a
+  // file) to $MUMPS_OOC_TMPDIR, else /tmp, and removes them only when it ends normally: a run
+  // stopped by a signal or killed left them in /tmp (11 GB of them after one day's killed runs,
+  // 2026-12-05). In the process's scratch folder they go with it (at exit, by the signal thread,
+  // after a SIGKILL by the next run). A folder the user chose is kept.
+  try
+  {
+    if (std::getenv("MUMPS_OOC_TMPDIR") == nullptr)
+      setenv("MUMPS_OOC_TMPDIR", gearstiff::app::scratch_directory().c_str(), 0);
+  }
+  catch (const gearstiff::InputError& e)
+  {
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (rank == nullptr || std::string(rank) == "0")
+      std::cerr << "gearstiff: error: " << one_line(e.what()) << std::endl;
     return 2;
   }
   gearstiff::fem::prepare_mpi_start();

@@ -18,6 +18,7 @@
 #include "app/core/command.h"
 #include "app/core/invoke.h"
 #include "app/core/report.h"
+#include "app/core/scratch.h"
 #include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/file_names.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <dlfcn.h>
@@ -59,6 +61,17 @@ void start_mpi()
   Dl_info info;
   if (dladdr(reinterpret_cast<void*>(&MPI_Init), &info) != 0 && info.dli_fname != nullptr)
     dlopen(info.dli_fname, RTLD_NOW | RTLD_GLOBAL | RTLD_NOLOAD);
+
+  // MUMPS' out-of-core factors into the process's scratch folder, removed with it (app/main.cc);
+  // a TMPDIR that cannot hold it is reported by the first command that needs a scratch file.
+  try
+  {
+    if (std::getenv("MUMPS_OOC_TMPDIR") == nullptr)
+      setenv("MUMPS_OOC_TMPDIR", app::scratch_directory().c_str(), 0);
+  }
+  catch (const InputError&)
+  {
+  }
 
   int initialised = 0;
   MPI_Initialized(&initialised);

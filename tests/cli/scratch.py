@@ -8,6 +8,12 @@ waits until its first scene mesh appears in the process's scratch folder, stops 
 and, in a second run, by SIGINT, and asserts that nothing is left in TMPDIR and the process ended
 by the signal. A third run, `gearstiff gear-pair`, ends normally with nothing left. Before, the
 meshes were left in /tmp as gearstiff-cycloid-PID-*.msh (1.9 MB each).
+
+MUMPS' out-of-core factors (from 500k DoFs; here forced by PETSC_OPTIONS on the small helical
+pair's fast model, two 3D gear bodies of ~50k DoFs): they must appear in the process's scratch
+folder, not in /tmp, so that SIGTERM removes them, and after a SIGKILL the next run does. Before
+session 42 MUMPS wrote them to /tmp (it does not read TMPDIR) and a stopped run left them there,
+1.9 GB a file at the sizes where they are used.
 """
 import os
 import shutil
@@ -44,11 +50,63 @@ def run_and_stop(binary, tmp, sig):
     return f"{signal.Signals(sig).name}: " + "; ".join(problems) if problems else ""
 
 
+# The small helical pair's fast-model sweep (tests/stiffness cli.influence_3d_helical): factors
+# two gear bodies in ~1 s each.
+OUT_OF_CORE_RUN = [
+    "stiffness", "--set", "Stiffness/contact model=influence coefficients",
+    "--set", "Stiffness/mode=sweep", "--set", "Stiffness/sweep positions=4",
+    "--set", "Finite elements/Element degree=1", "--set", "Mesh/dimension=3",
+    "--set", "Mesh/layers=6", "--set", "Mesh/contact size=0.15", "--set", "Mesh/fine radius=0.4",
+    "--set", "Mesh/body size=0.75", "--set", "Mesh/rim size=2.5",
+    "--set", "Gear pair/Pinion/teeth=19", "--set", "Gear pair/Wheel/teeth=29",
+    "--set", "Gear pair/Pinion/module=2", "--set", "Gear pair/Wheel/module=2",
+    "--set", "Gear pair/Pinion/profile shift=0", "--set", "Gear pair/Wheel/profile shift=0",
+    "--set", "Gear pair/Pinion/helix angle=10", "--set", "Gear pair/Wheel/helix angle=-10",
+    "--set", "Gear pair/Pinion/face width=8", "--set", "Gear pair/Wheel/face width=8",
+    "--set", "Stiffness/published reference=false"]
+
+
+def out_of_core_and_stop(binary, tmp, sig):
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    env = dict(os.environ, TMPDIR=tmp, PETSC_OPTIONS="-mat_mumps_icntl_22 1")
+    env.pop("MUMPS_OOC_TMPDIR", None)
+    proc = subprocess.Popen([binary] + OUT_OF_CORE_RUN, env=env, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    folder = os.path.join(tmp, f"gearstiff-scratch-{proc.pid}")
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None:
+        if os.path.isdir(folder) and any(n.startswith("mumps_") for n in os.listdir(folder)):
+            break
+        time.sleep(0.005)
+    else:
+        proc.kill()
+        proc.wait()
+        return (f"out of core, {signal.Signals(sig).name}: no MUMPS file appeared in {folder} "
+                f"(ended with {proc.returncode})")
+    proc.send_signal(sig)
+    code = proc.wait(timeout=30)
+    problems = []
+    if code != -sig:
+        problems.append(f"ended with {code}, not by the signal ({-sig})")
+    if sig == signal.SIGKILL:
+        # Nothing can remove files at a SIGKILL: the next run removes the stale scratch folder.
+        subprocess.run([binary, "gear-pair"], env=env, capture_output=True)
+    left = os.listdir(tmp)
+    if left:
+        problems.append(f"left {left} in TMPDIR")
+    return f"out of core, {signal.Signals(sig).name}: " + "; ".join(problems) if problems else ""
+
+
 def main():
     binary, work = sys.argv[1], sys.argv[2]
     failures = [p for p in (run_and_stop(binary, os.path.join(work, name), sig)
                             for name, sig in (("term", signal.SIGTERM), ("int", signal.SIGINT)))
                 if p]
+    failures += [p for p in (out_of_core_and_stop(binary, os.path.join(work, name), sig)
+                             for name, sig in (("ooc-term", signal.SIGTERM),
+                                               ("ooc-kill", signal.SIGKILL)))
+                 if p]
     tmp = os.path.join(work, "normal")
     shutil.rmtree(tmp, ignore_errors=True)
     os.makedirs(tmp)
