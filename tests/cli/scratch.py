@@ -50,20 +50,17 @@ def run_and_stop(binary, tmp, sig):
     return f"{signal.Signals(sig).name}: " + "; ".join(problems) if problems else ""
 
 
-# The small helical pair's fast-model sweep (tests/stiffness cli.influence_3d_helical): factors
-# two gear bodies in ~1 s each.
-OUT_OF_CORE_RUN = [
-    "stiffness", "--set", "Stiffness/contact model=influence coefficients",
-    "--set", "Stiffness/mode=sweep", "--set", "Stiffness/sweep positions=4",
-    "--set", "Finite elements/Element degree=1", "--set", "Mesh/dimension=3",
-    "--set", "Mesh/layers=6", "--set", "Mesh/contact size=0.15", "--set", "Mesh/fine radius=0.4",
-    "--set", "Mesh/body size=0.75", "--set", "Mesh/rim size=2.5",
-    "--set", "Gear pair/Pinion/teeth=19", "--set", "Gear pair/Wheel/teeth=29",
-    "--set", "Gear pair/Pinion/module=2", "--set", "Gear pair/Wheel/module=2",
-    "--set", "Gear pair/Pinion/profile shift=0", "--set", "Gear pair/Wheel/profile shift=0",
-    "--set", "Gear pair/Pinion/helix angle=10", "--set", "Gear pair/Wheel/helix angle=-10",
-    "--set", "Gear pair/Pinion/face width=8", "--set", "Gear pair/Wheel/face width=8",
-    "--set", "Stiffness/published reference=false"]
+# The small helical pair's fast-model sweep (tests/helical/small_pair.py, with the settings of
+# cli.influence_3d_helical: 6 layers, Q1, 4 positions): two gear bodies factored in ~1 s each.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "helical"))
+from small_pair import MESH, PAIR  # noqa: E402
+
+OUT_OF_CORE_RUN = ["stiffness"] + [
+    word for entry in PAIR + MESH + ["Mesh/layers=6", "Finite elements/Element degree=1",
+                                      "Stiffness/contact model=influence coefficients",
+                                      "Stiffness/mode=sweep", "Stiffness/sweep positions=4",
+                                      "Stiffness/published reference=false"]
+    for word in ("--set", entry)]
 
 
 def out_of_core_and_stop(binary, tmp, sig):
