@@ -23,31 +23,45 @@ import sys
 import time
 
 
-def run_and_stop(binary, tmp, sig):
+def stop_when(binary, args, tmp, sig, appeared, what, extra_env=None):
+    """Runs `binary args` with TMPDIR=tmp, stops it by `sig` once a file of its scratch folder
+    satisfies `appeared` (within 60 s), and returns the problems ("" for none): not ended by the
+    signal, anything left in TMPDIR. After a SIGKILL, which nothing can clean up after, another
+    run in the same TMPDIR must remove the stale scratch folder."""
     shutil.rmtree(tmp, ignore_errors=True)
     os.makedirs(tmp)
-    env = dict(os.environ, TMPDIR=tmp)
-    proc = subprocess.Popen([binary, "cycloid-loads", "--set", "Cycloid loads/profiles=nominal",
-                             "--set", "Cycloid loads/torsional curve=false"],
-                            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    env = dict(os.environ, TMPDIR=tmp, **(extra_env or {}))
+    env.pop("MUMPS_OOC_TMPDIR", None)
+    proc = subprocess.Popen([binary] + args, env=env, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
     folder = os.path.join(tmp, f"gearstiff-scratch-{proc.pid}")
+    name = signal.Signals(sig).name
     deadline = time.monotonic() + 60
     while time.monotonic() < deadline and proc.poll() is None:
-        if os.path.isdir(folder) and any(n.endswith(".msh") for n in os.listdir(folder)):
+        if os.path.isdir(folder) and any(appeared(n) for n in os.listdir(folder)):
             break
-        time.sleep(0.05)
+        time.sleep(0.005)
     else:
         proc.kill()
-        return f"{signal.Signals(sig).name}: no scene mesh appeared in {folder}"
+        proc.wait()
+        return f"{name}: no {what} appeared in {folder} (ended with {proc.returncode})"
     proc.send_signal(sig)
     code = proc.wait(timeout=30)
     problems = []
     if code != -sig:
         problems.append(f"ended with {code}, not by the signal ({-sig})")
+    if sig == signal.SIGKILL:
+        subprocess.run([binary, "gear-pair"], env=env, capture_output=True)
     left = os.listdir(tmp)
     if left:
         problems.append(f"left {left} in TMPDIR")
-    return f"{signal.Signals(sig).name}: " + "; ".join(problems) if problems else ""
+    return f"{name}: " + "; ".join(problems) if problems else ""
+
+
+def run_and_stop(binary, tmp, sig):
+    return stop_when(binary, ["cycloid-loads", "--set", "Cycloid loads/profiles=nominal",
+                              "--set", "Cycloid loads/torsional curve=false"],
+                     tmp, sig, lambda n: n.endswith(".msh"), "scene mesh")
 
 
 # The small helical pair's fast-model sweep (tests/helical/small_pair.py, with the settings of
@@ -64,35 +78,9 @@ OUT_OF_CORE_RUN = ["stiffness"] + [
 
 
 def out_of_core_and_stop(binary, tmp, sig):
-    shutil.rmtree(tmp, ignore_errors=True)
-    os.makedirs(tmp)
-    env = dict(os.environ, TMPDIR=tmp, PETSC_OPTIONS="-mat_mumps_icntl_22 1")
-    env.pop("MUMPS_OOC_TMPDIR", None)
-    proc = subprocess.Popen([binary] + OUT_OF_CORE_RUN, env=env, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL)
-    folder = os.path.join(tmp, f"gearstiff-scratch-{proc.pid}")
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline and proc.poll() is None:
-        if os.path.isdir(folder) and any(n.startswith("mumps_") for n in os.listdir(folder)):
-            break
-        time.sleep(0.005)
-    else:
-        proc.kill()
-        proc.wait()
-        return (f"out of core, {signal.Signals(sig).name}: no MUMPS file appeared in {folder} "
-                f"(ended with {proc.returncode})")
-    proc.send_signal(sig)
-    code = proc.wait(timeout=30)
-    problems = []
-    if code != -sig:
-        problems.append(f"ended with {code}, not by the signal ({-sig})")
-    if sig == signal.SIGKILL:
-        # Nothing can remove files at a SIGKILL: the next run removes the stale scratch folder.
-        subprocess.run([binary, "gear-pair"], env=env, capture_output=True)
-    left = os.listdir(tmp)
-    if left:
-        problems.append(f"left {left} in TMPDIR")
-    return f"out of core, {signal.Signals(sig).name}: " + "; ".join(problems) if problems else ""
+    problem = stop_when(binary, OUT_OF_CORE_RUN, tmp, sig, lambda n: n.startswith("mumps_"),
+                        "MUMPS file", {"PETSC_OPTIONS": "-mat_mumps_icntl_22 1"})
+    return "out of core, " + problem if problem else ""
 
 
 def main():
