@@ -28,6 +28,7 @@
 #include <gtest/gtest.h>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -367,34 +368,19 @@ TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
       in >> word;
       v = std::strtod(word.c_str(), nullptr);
     }
-    if (key == "total_force")
-      problem.total_force = values[0];
-    else if (key == "face_width")
-      problem.face_width = values[0];
-    else if (key == "separation")
-      problem.separation = values;
-    else if (key == "relative_radius")
-      problem.relative_radius = values;
-    else if (key == "lever_ratio")
-      problem.lever_ratio = values;
-    else if (key == "width")
-      problem.width = values;
-    else if (key == "end_excess")
-      problem.end_excess = values;
-    else if (key == "pinion_wedge")
-      problem.pinion_wedge = values;
-    else if (key == "wheel_wedge")
-      problem.wheel_wedge = values;
-    else if (key == "pinion_corner")
-      problem.pinion_corner = values;
-    else if (key == "wheel_corner")
-      problem.wheel_corner = values;
-    else if (key == "start")
-      start = values;
-    else if (key == "pinion")
-      problem.pinion = body(values);
-    else if (key == "wheel")
-      problem.wheel = body(values);
+    // The per-unknown vectors by name; the rest below.
+    const std::map<std::string, std::vector<double>*> vectors = {
+        {"separation", &problem.separation}, {"relative_radius", &problem.relative_radius},
+        {"lever_ratio", &problem.lever_ratio}, {"width", &problem.width},
+        {"end_excess", &problem.end_excess},   {"pinion_wedge", &problem.pinion_wedge},
+        {"wheel_wedge", &problem.wheel_wedge}, {"pinion_corner", &problem.pinion_corner},
+        {"wheel_corner", &problem.wheel_corner}, {"start", &start}};
+    if (const auto vector = vectors.find(key); vector != vectors.end())
+      *vector->second = values;
+    else if (key == "total_force" || key == "face_width")
+      (key == "total_force" ? problem.total_force : problem.face_width) = values[0];
+    else if (key == "pinion" || key == "wheel")
+      (key == "pinion" ? problem.pinion : problem.wheel) = body(values);
     else if (key == "compliance")
       problem.compliance.push_back(values);
     else if (key == "strip")
