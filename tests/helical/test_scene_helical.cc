@@ -5,6 +5,7 @@
 #include "errors/errors.h"
 #include "geometry/scene_gear_pair.h"
 #include "kinematics/gear_pair.h"
+#include "tests/test_paths.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <map>
 #include <string>
+#include <unistd.h>
 
 namespace
 {
@@ -35,9 +37,14 @@ GearPairSceneSpec helical_spec(double beta_degrees, unsigned int dimension = 3)
   return spec;
 }
 
+// <build>/tests/helical/work/scene_<name>-<pid>.msh: in the build, not /tmp, and one a process —
+// fixed names in /tmp were shared by every build's tests on the machine (a clone's and a reused
+// build's ran into each other) and outlived the test (3.9 MB found there).
 std::string scene_file(const std::string& name)
 {
-  return (std::filesystem::temp_directory_path() / ("gearstiff_helical_" + name + ".msh")).string();
+  return (test_support::build_work_folder("tests/helical/work") /
+          ("scene_" + name + "-" + std::to_string(getpid()) + ".msh"))
+      .string();
 }
 
 std::string refusal(const GearPairSceneSpec& spec)
@@ -89,6 +96,7 @@ TEST(HelicalScene, ContactLinesAreInclinedAtTheBaseHelixAngle)
   EXPECT_TRUE(std::filesystem::exists(scene_file("lines")));
   EXPECT_GT(scene.info.mesh.min_scaled_jacobian, 0.);
   EXPECT_LE(scene.info.mesh.largest_edge_ratio_at_focus, 1.05);
+  std::filesystem::remove(scene_file("lines"));
 }
 
 // A spur pair's lines are parallel to the axis over the whole face, one per pair in contact.
@@ -105,6 +113,7 @@ TEST(HelicalScene, SpurContactLinesAreAxial)
     EXPECT_EQ(line.start.z(), 0.);
     EXPECT_EQ(line.end.z(), pair.common_face_width);
   }
+  std::filesystem::remove(scene_file("spur"));
 }
 
 // Refused before gmsh runs, each naming its library field (app maps them to the parameter the
