@@ -16,10 +16,10 @@
 #include "errors/io.h"
 #include "fem/mpi_start.h"
 
+#include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>

@@ -370,10 +370,10 @@ TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
     }
     // The per-unknown vectors by name; the rest below.
     const std::map<std::string, std::vector<double>*> vectors = {
-        {"separation", &problem.separation}, {"relative_radius", &problem.relative_radius},
-        {"lever_ratio", &problem.lever_ratio}, {"width", &problem.width},
-        {"end_excess", &problem.end_excess},   {"pinion_wedge", &problem.pinion_wedge},
-        {"wheel_wedge", &problem.wheel_wedge}, {"pinion_corner", &problem.pinion_corner},
+        {"separation", &problem.separation},     {"relative_radius", &problem.relative_radius},
+        {"lever_ratio", &problem.lever_ratio},   {"width", &problem.width},
+        {"end_excess", &problem.end_excess},     {"pinion_wedge", &problem.pinion_wedge},
+        {"wheel_wedge", &problem.wheel_wedge},   {"pinion_corner", &problem.pinion_corner},
         {"wheel_corner", &problem.wheel_corner}, {"start", &start}};
     if (const auto vector = vectors.find(key); vector != vectors.end())
       *vector->second = values;
