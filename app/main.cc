@@ -118,11 +118,20 @@ CommandLine parse_command_line(int argc, char** argv)
 // TMPDIR holds Open MPI's session files and gearstiff's scratch: one that is no writable folder
 // failed inside MPI_Init with Open MPI's own text (exit 1). Checked before MPI starts; the
 // problem as an error line, or empty.
+//
+// MUMPS writes out-of-core factors (fem/stiffness_factorization.cc: from 500k DoFs, 1.9 GB a
+// file) to $MUMPS_OOC_TMPDIR, else /tmp, and removes them only when it ends normally: a run
+// stopped by a signal or killed left them in /tmp (11 GB of them after one day's killed runs,
+// 2026-12-05). In the process's scratch folder they go with it (at exit, by the signal thread,
+// after a SIGKILL by the next run); so it is made here, before MPI. A folder the user chose is
+// kept.
 std::string temporary_folder_problem()
 {
   try
   {
     check_temporary_folder();
+    if (std::getenv("MUMPS_OOC_TMPDIR") == nullptr)
+      setenv("MUMPS_OOC_TMPDIR", gearstiff::app::scratch_directory().c_str(), 0);
   }
   catch (const InputError& e)
   {
@@ -195,23 +204,6 @@ int main(int argc, char** argv)
     const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
     if (rank == nullptr || std::string(rank) == "0")
       std::cerr << "gearstiff: error: " << one_line(problem) << std::endl;
-    return 2;
-  }
-  // MUMPS writes out-of-core factors (fem/stiffness_factorization.cc: from 500k DoFs, 1.9 GB a
-  // file) to $MUMPS_OOC_TMPDIR, else /tmp, and removes them only when it ends normally: a run
-  // stopped by a signal or killed left them in /tmp (11 GB of them after one day's killed runs,
-  // 2026-12-05). In the process's scratch folder they go with it (at exit, by the signal thread,
-  // after a SIGKILL by the next run). A folder the user chose is kept.
-  try
-  {
-    if (std::getenv("MUMPS_OOC_TMPDIR") == nullptr)
-      setenv("MUMPS_OOC_TMPDIR", gearstiff::app::scratch_directory().c_str(), 0);
-  }
-  catch (const gearstiff::InputError& e)
-  {
-    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
-    if (rank == nullptr || std::string(rank) == "0")
-      std::cerr << "gearstiff: error: " << one_line(e.what()) << std::endl;
     return 2;
   }
   gearstiff::fem::prepare_mpi_start();

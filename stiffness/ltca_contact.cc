@@ -216,9 +216,8 @@ double corner_shift(double line_load, double half_width, const LayerBody& body)
   // NewtonAcrossCornerSwitch).
   const CornerScale scale = corner_scale(body);
   const double distance = std::abs(body.corner_offset);
-  const double centre = corner_excess(scale, distance, body.matching_depth);
   if (distance >= 8. * half_width)
-    return line_load * centre;
+    return line_load * corner_excess(scale, distance, body.matching_depth);
   constexpr int n = 32;
   double mean = 0.;
   for (int i = 1; i <= n; ++i)
@@ -229,8 +228,11 @@ double corner_shift(double line_load, double half_width, const LayerBody& body)
                           body.matching_depth);
   }
   mean *= 2. / (n + 1);
-  const double t = std::max(0., (distance / half_width - 6.) / 2.);
+  if (distance <= 6. * half_width)
+    return line_load * mean;
+  const double t = (distance / half_width - 6.) / 2.;
   const double blend = t * t * (3. - 2. * t);
+  const double centre = corner_excess(scale, distance, body.matching_depth);
   return line_load * ((1. - blend) * mean + blend * centre);
 }
 
