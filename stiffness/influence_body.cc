@@ -87,15 +87,18 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 }
 
 std::vector<GearMeshStiffnessResult> solve_torques(
-    MeshContactProblem& problem, const PairFrame& frame, const std::vector<int>& keys,
-    const std::vector<double>& torques, std::map<int, double>& warm, unsigned int& newton_steps,
+    const std::function<MeshContactProblem&(double)>& problem_under, const PairFrame& frame,
+    const std::vector<int>& keys, const std::vector<double>& torques, std::map<int, double>& warm,
+    unsigned int& newton_steps,
     const std::function<GearMeshStiffnessResult(const MeshContactSolution&, double)>& report)
 {
   std::vector<GearMeshStiffnessResult> results;
   for (const double torque : torques)
   {
     const auto start = std::chrono::steady_clock::now();
-    problem.total_force = torque / frame.pinion_base_radius();
+    const double force = torque / frame.pinion_base_radius();
+    MeshContactProblem& problem = problem_under(force);
+    problem.total_force = force;
     std::vector<double> guess;
     for (const int key : keys)
       guess.push_back(warm.count(key) ? warm.at(key) : 0.);

@@ -65,14 +65,16 @@ std::vector<std::vector<GearMeshStiffnessResult>> solve_positions(
 // Wall seconds since `start`.
 double seconds_since(std::chrono::steady_clock::time_point start);
 
-// One position of a sweep at every torque of `torques` (N·m): Σ F = T1/r_b1 of `frame`, each
-// solve started from the forces `warm` holds for the unknowns `keys` (0 for one it has not
-// seen); the first torque's forces go back into `warm` for the next position (a neighbour's
+// One position of a sweep at every torque of `torques` (N·m): `problem_under(F)` the position's
+// contact problem under Σ F = T1/r_b1 of `frame` (its force lines depend on the load on modified
+// flanks), each solve started from the forces `warm` holds for the unknowns `keys` (0 for one it
+// has not seen); the first torque's forces go back into `warm` for the next position (a neighbour's
 // active set). `report(solution, torque)` builds each torque's result, whose solve and total
 // time are set here; `newton_steps` counts the solves' Newton steps.
 std::vector<GearMeshStiffnessResult> solve_torques(
-    MeshContactProblem& problem, const PairFrame& frame, const std::vector<int>& keys,
-    const std::vector<double>& torques, std::map<int, double>& warm, unsigned int& newton_steps,
+    const std::function<MeshContactProblem&(double)>& problem_under, const PairFrame& frame,
+    const std::vector<int>& keys, const std::vector<double>& torques, std::map<int, double>& warm,
+    unsigned int& newton_steps,
     const std::function<GearMeshStiffnessResult(const MeshContactSolution&, double)>& report);
 
 // Pair j of a solved position into `r`: its point on the line of action ℓ_j = position + j·p_bt

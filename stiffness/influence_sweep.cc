@@ -424,7 +424,19 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   problem.wheel = model.wheel;
   std::vector<Unknown> unknowns;
   std::vector<int> keys;
-  const double largest_force = torques.back() / model.frame.pinion_base_radius();
+  // The force lines depend on the load where the flanks are modified (pair_line: the slopes the
+  // contact zone sees, the strip sized by it): built under the first torque here, rebuilt under
+  // each further one (lines_under) so that a torque list gives at each torque what that torque
+  // gives alone. Built once under the list's largest torque until session 43, they made invariants
+  // case 1 of seed 20261201 (9.9 µm reliefs on both) 3.7e-5 stiffer at T within T/2, T, 2T.
+  double lines_force = torques.front() / model.frame.pinion_base_radius();
+  std::vector<double> line_radius; // m, each unknown's relative radius for pair_line
+  const auto set_force_line = [&](Unknown& unknown, double relative_radius, double force)
+  {
+    unknown.line = pair_line(model, unknown.at, relative_radius, force);
+    unknown.line.pinion_lever *= helix.cos_base;
+    unknown.line.wheel_lever *= helix.cos_base;
+  };
   const double corner_radius = tip_corner_modules * pair.spec.pinion.normal_module; // m
   for (const int j : pairs)
     for (std::size_t s = 0; s < layers; ++s)
@@ -465,9 +477,8 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       const double rho1 = unknown.at, rho2 = std::abs(unknown.at - model.frame.t2);
       const double relative_radius =
           1. / (1. / rho1 + (pair.spec.wheel.internal ? -1. : 1.) / rho2);
-      unknown.line = pair_line(model, unknown.at, relative_radius, largest_force);
-      unknown.line.pinion_lever *= helix.cos_base;
-      unknown.line.wheel_lever *= helix.cos_base;
+      set_force_line(unknown, relative_radius, lines_force);
+      line_radius.push_back(relative_radius);
       // The gap where the pair touches (the near field, Hertz or strip, is centred there).
       const double lead = dim == 3 ? model.separation.lead(stations.z[s]) : 0.;
       unknown.touching = model.separation(unknown.at) + unknown.line.lowered + corner_gap + lead;
@@ -543,16 +554,36 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       keys.push_back(j * static_cast<int>(layers) + static_cast<int>(s));
       unknowns.push_back(unknown);
     }
-  for (const Unknown& a : unknowns)
+  // The coefficients read along each force line's tilt.
+  const auto couple = [&]
   {
-    problem.compliance.emplace_back();
-    for (const Unknown& b : unknowns)
-      problem.compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station,
-                                                     a.edge, b.pair, b.flank, b.line.tilt,
-                                                     b.station, b.edge));
-  }
+    problem.compliance.clear();
+    for (const Unknown& a : unknowns)
+    {
+      problem.compliance.emplace_back();
+      for (const Unknown& b : unknowns)
+        problem.compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station,
+                                                       a.edge, b.pair, b.flank, b.line.tilt,
+                                                       b.station, b.edge));
+    }
+  };
+  couple();
+  const auto lines_under = [&](double force) -> MeshContactProblem&
+  {
+    if (force == lines_force || !model.separation.modified())
+      return problem;
+    lines_force = force;
+    for (std::size_t k = 0; k < unknowns.size(); ++k)
+    {
+      set_force_line(unknowns[k], line_radius[k], force);
+      problem.lever_ratio[k] = unknowns[k].line.pinion_lever;
+      problem.strip[k] = unknowns[k].line.strip;
+    }
+    couple();
+    return problem;
+  };
   return solve_torques(
-      problem, model.frame, keys, torques, warm, newton_steps,
+      lines_under, model.frame, keys, torques, warm, newton_steps,
       [&](const MeshContactSolution& solution, double torque)
       { return position_result<dim>(model, position, pairs, unknowns, solution, torque); });
 }

@@ -353,6 +353,42 @@ def influence_equals_exact(case, runner, log, sweeps):
     two, _, _ = runner.run("stiffness", sets, ranks=2)
     check_same_printed("influence on 2 ranks", fast, two, ["stiffness_sweep"])
     log("influence: 2 ranks = 1 rank, every printed value but the costs")
+    influence_torque_list(sets, fast, runner, log)
+
+
+# A torque list gives at each of its torques what that torque gives alone: the list solves a
+# position at every torque in turn, each warm-started from the torque before, a single torque
+# from the position before, and both converge to the one solution of the same problem (Newton
+# to 1e-12 of the load a pair). Until session 43 the fast model built each position's force
+# lines (levers, tilt, strips) under the list's largest torque: case 1 of seed 20261201 (9.9 um
+# reliefs on both) gave k 202.775610 N/um at T within T/2, T, 2T against 202.768179 alone; now
+# equal to the 12 printed digits. Tolerance 1e-10 relative (of the value, or absolute below 1):
+# the report's 12 significant digits quantize by up to 5e-12, Newton stops at 1e-12 of the load.
+TORQUE_LIST_RTOL = 1e-10
+
+
+def influence_torque_list(sets, single, runner, log):
+    torque_key = "Gear pair scene/pinion torque"
+    torque = float(sets[torque_key])
+    listed_sets = dict(sets)
+    listed_sets["Stiffness/torques"] = ",".join(
+        repr(t) for t in (0.5 * torque, torque, 2. * torque))
+    listed, _, _ = runner.run("stiffness", listed_sets)
+    at_torque = [row for row in table(listed, "te_sweep")
+                 if abs(row["torque"] - torque) <= 1e-9 * torque]
+    alone = table(single, "stiffness_sweep")
+    if len(at_torque) != len(alone):
+        raise CaseFailure(f"torque list: {len(at_torque)} rows at {torque} N*m, "
+                          f"{len(alone)} alone")
+    worst = 0.
+    for i, (a, b) in enumerate(zip(alone, at_torque)):
+        for key in ("stiffness", "transmission_error", "share_pair_m1", "share_pair_0",
+                    "share_pair_p1"):
+            x, y = a.get(key, 0.), b.get(key, 0.)
+            check_close(f"torque list: position {i + 1} {key}", y, x,
+                        TORQUE_LIST_RTOL * max(abs(x), 1.), 0.)
+            worst = max(worst, abs(y - x) / max(abs(x), 1.))
+    log(f"influence: torque list = each torque alone (largest difference {worst:.2g})")
 
 
 def check_same_printed(label, a, b, tables):

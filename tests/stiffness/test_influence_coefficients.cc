@@ -328,19 +328,16 @@ TEST(InfluenceCoefficients, CornerNearFieldContinuous)
   }
 }
 
-// A position whose Newton failed (session 41, an own internal helical pair: z 23/71, m_n 2.5 mm,
-// β 12°, b 20 mm, 16 layers, Q1, both tips rounded 0.5 / 0.4 mm, 8 µm pinion tip relief, C_β
-// 5 µm on the ring, 80 N·m, the third of 8 positions; docs/ltca.md §3 "Rounded tips on helical
-// pairs"): its contact problem as the sweep built it (compliances, gaps, strips, corners; written
-// by a build of main that printed it). A tip-edge pair's Hertz near field sat where its zone
-// passed 8·a from the corner, δ(F) jumped there (CornerNearFieldContinuous) and the Newton ended
-// 100 steps short of its criterion. Solved, it must meet the problem's own conditions (exact
-// oracles, not stored results): the load balance, every loaded pair's compatibility, no unloaded
-// pair penetrating.
-TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
+// A contact problem as a sweep built it (compliances, gaps, strips, corners; written by a build
+// of main that printed it, tests/stiffness/data/<name>.txt, its origin in its header), solved
+// from its stored start. It must meet the problem's own conditions (exact oracles, not stored
+// results): the load balance, every loaded pair's compatibility, no unloaded pair penetrating.
+namespace
 {
-  std::ifstream in(test_support::source_dir() / "tests/stiffness/data/newton_corner_switch.txt");
-  ASSERT_TRUE(in.good());
+void expect_stored_problem_solved(const std::string& name)
+{
+  std::ifstream in(test_support::source_dir() / "tests/stiffness/data" / (name + ".txt"));
+  ASSERT_TRUE(in.good()) << name;
   MeshContactProblem problem;
   std::vector<double> start;
   const auto body = [](const std::vector<double>& v)
@@ -394,18 +391,22 @@ TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
   ASSERT_EQ(problem.compliance.size(), n);
 
   const MeshContactSolution solution = solve_mesh_contact(problem, start);
-  std::cout << "Newton across the corner switch: " << n << " unknowns, " << solution.newton_steps
-            << " Newton steps, " << solution.active_set_passes << " active-set passes\n";
+  std::cout << name << ": " << n << " unknowns, " << solution.newton_steps << " Newton steps, "
+            << solution.active_set_passes << " active-set passes\n";
   double balance = -problem.total_force, worst = 0.;
   for (std::size_t j = 0; j < n; ++j)
   {
     ASSERT_GE(solution.force[j], 0.);
     balance += problem.lever_ratio[j] * solution.force[j];
-    // g_j = λ_j·(e − s_j) − Σ_k C_jk F_k − δ_j(F_j): 0 where loaded, ≤ 0 where not. 1e-15 m
-    // either way: the solver's own round-off bound on µm-sized gaps (solve_mesh_contact's entry
-    // test; measured 2.7e-21 m).
+    // g_j = λ_j·(e − s_j) − Σ_k C_jk F_k − δ_j(F_j): 0 where loaded, ≤ 0 where not, δ_j(0+)
+    // the near field's start for an unloaded pair (a strip's smallest cell gap, Hertz 0). 1e-15
+    // m either way: the solver's own round-off bound on µm-sized gaps (solve_mesh_contact's
+    // entry test; measured 2.7e-21 m on newton_corner_switch).
+    const bool strip = j < problem.strip.size() && !problem.strip[j].gap.empty();
+    const double opening =
+        strip ? *std::min_element(problem.strip[j].gap.begin(), problem.strip[j].gap.end()) : 0.;
     double gap = problem.lever_ratio[j] * (solution.approach - problem.separation[j]) -
-                 solution.contact[j].approach;
+                 (solution.force[j] > 0. ? solution.contact[j].approach : opening);
     for (std::size_t k = 0; k < n; ++k)
       gap -= problem.compliance[j][k] * solution.force[k];
     if (solution.force[j] > 0.)
@@ -416,6 +417,27 @@ TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
   }
   EXPECT_NEAR(balance, 0., 1e-10 * problem.total_force); // the step criterion, 1e-12·W a pair
   std::cout << "worst gap " << worst << " m, balance " << balance << " N\n";
+}
+} // namespace
+
+// A position whose Newton failed (session 41, an own internal helical pair: z 23/71, m_n 2.5 mm,
+// β 12°, b 20 mm, 16 layers, Q1, both tips rounded 0.5 / 0.4 mm, 8 µm pinion tip relief, C_β
+// 5 µm on the ring, 80 N·m, the third of 8 positions; docs/ltca.md §3 "Rounded tips on helical
+// pairs"). A tip-edge pair's Hertz near field sat where its zone passed 8·a from the corner, δ(F)
+// jumped there (CornerNearFieldContinuous) and the Newton ended 100 steps short of its criterion.
+TEST(InfluenceCoefficients, NewtonAcrossCornerSwitch)
+{
+  expect_stored_problem_solved("newton_corner_switch");
+}
+
+// A position whose active set cycled (session 43, the built-in pair at β ±15° with 6 µm tip
+// reliefs, a Harris map's 61.75 N·m; docs/ltca.md "Torque lists"): an unloaded strip pair's
+// linear gap (2.36e-10 m) lay between 0 and its strip's smallest cell gap (6.26e-10 m), where
+// its near field starts (ltca_contact.cc unloaded_approach). Taken as penetrating it entered,
+// carried nothing and left, pass after pass (exit 3).
+TEST(InfluenceCoefficients, StripEntryAboveItsSmallestCellGap)
+{
+  expect_stored_problem_solved("strip_entry_window");
 }
 
 // The half-plane kernel of the strip integrates a Hertz pressure to the closed-form layer
@@ -694,7 +716,9 @@ TEST(InfluenceCoefficients, InternalTipReliefMatchesExact)
 // tests/stiffness/test_micro_geometry.cc), 16 positions, T1 = 0.25 … 2·T_d in 8 steps, μ 0:
 // the TE peak-to-peak of each torque within the issue's 0.1 µm (a difference of two TEs each
 // within it), the smallest at the same step. Measured 2026-12-05: p-p 2.948 … 0.602 µm (exact), the
-// fast model within 0.017 µm at every step, both smallest at 1.75·T_d (0.602 / 0.593 µm).
+// fast model within 0.017 µm at every step, both smallest at 1.75·T_d (0.602 / 0.593 µm); with
+// each torque's own force lines (session 43, TorqueListEqualsEachTorqueAlone) within 0.016 µm,
+// 0.602 / 0.597 µm.
 TEST(InfluenceCoefficients, HarrisMapMinimumAsExact)
 {
   GearMeshStiffnessSettings settings;
@@ -723,6 +747,55 @@ TEST(InfluenceCoefficients, HarrisMapMinimumAsExact)
   }
   EXPECT_EQ(std::min_element(b.begin(), b.end()) - b.begin(),
             std::min_element(a.begin(), a.end()) - a.begin());
+}
+
+// A torque list gives at each of its torques what that torque gives alone: the list solves a
+// position at every torque in turn, each warm-started from the torque before, a single torque
+// from the position before, and both must reach the one solution of the same problem. On
+// modified flanks the force lines (levers, τ, the strip) depend on the load; until session 43
+// they were built under the list's largest torque for every torque of the list, and the
+// invariants generator's own gear (case 1 of seed 20261201, 9.9 µm reliefs on both) came out
+// 3.7e-5 stiffer at T within T/2, T, 2T than at T alone. Here the built-in pair with long
+// reliefs (kinks: strips) and a rounded pinion tip (an arc), 16 positions. Measured (session
+// 43): worst relative difference 6.7e-16 (before: 8.8e-4 at 2·T_d, 8.6e-5 at T_d). Tolerance
+// 1e-12: Newton's own stop (steps below 1e-12 of the load), round-off being all that remains.
+TEST(InfluenceCoefficients, TorqueListEqualsEachTorqueAlone)
+{
+  GearMeshStiffnessSettings settings;
+  settings.contact.friction_coefficient = 0.;
+  settings.contact_model = ContactModel::influence_coefficients;
+  settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(10e-6)};
+  settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(10e-6)};
+  settings.scene.pair.pinion.tip_rounding_radius = 0.5e-3;
+  const std::vector<double> torques = {24.7, 49.4, 98.8}; // N·m: T_d/2, T_d, 2·T_d
+  settings.torques = torques;
+  StiffnessSweepSpec spec;
+  spec.positions = 16;
+  spec.mesh = SweepMesh::once;
+  const StiffnessSweepResult listed =
+      influence_sweep<2>(MPI_COMM_SELF, settings, spec, stiffness_work_stem("torque_list"));
+  ASSERT_EQ(listed.by_torque.size(), torques.size());
+  double worst = 0.;
+  for (std::size_t t = 0; t < torques.size(); ++t)
+  {
+    settings.torques.clear();
+    settings.pinion_torque = torques[t];
+    const StiffnessSweepResult alone = influence_sweep<2>(
+        MPI_COMM_SELF, settings, spec, stiffness_work_stem("torque_alone_" + std::to_string(t)));
+    ASSERT_EQ(alone.positions.size(), listed.by_torque[t].size());
+    for (std::size_t i = 0; i < alone.positions.size(); ++i)
+    {
+      const GearMeshStiffnessResult &a = alone.positions[i], &b = listed.by_torque[t][i];
+      const double dk = std::abs(b.mesh_stiffness / a.mesh_stiffness - 1.);
+      const double dte = std::abs(b.transmission_error / a.transmission_error - 1.);
+      const double dshare = largest_share_difference(a, b);
+      EXPECT_LE(dk, 1e-12) << "torque " << torques[t] << " position " << i;
+      EXPECT_LE(dte, 1e-12) << "torque " << torques[t] << " position " << i;
+      EXPECT_LE(dshare, 1e-12) << "torque " << torques[t] << " position " << i;
+      worst = std::max({worst, dk, dte, dshare});
+    }
+  }
+  std::cout << "torque list against each torque alone: worst relative difference " << worst << "\n";
 }
 
 // Every kind of profile modification on an own pair (z 23/61, m 4 mm, x 0.2/−0.1, b 30 mm,
