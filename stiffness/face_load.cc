@@ -78,9 +78,17 @@ FaceLoadSummary summarise_face_load(const std::vector<FaceLoadPoint>& face_load)
   if (summary.z.size() < 2)
     return summary;
   summary.mean = summary.force / (summary.z.back() - summary.z.front());
-  const auto peak = std::max_element(summary.line_load.begin(), summary.line_load.end());
-  summary.peak = *peak;
-  summary.peak_z = summary.z[peak - summary.line_load.begin()];
+  summary.peak = *std::max_element(summary.line_load.begin(), summary.line_load.end());
+  // Where it acts: the plane nearest z = 0 of those within peak_tie of the peak. The strict
+  // maximum let round-off choose between a uniform face's two ends: helical.beta_zero failed on a
+  // fresh clone (session 43) when the β = 1e-7° run's line loads at z = 0 and z = b, 76.41044543
+  // and 76.41044557 N/mm, put its peak at z = b against the spur run's z = 0.
+  for (std::size_t i = 0; i < summary.z.size(); ++i)
+    if (summary.line_load[i] >= (1. - peak_tie) * summary.peak)
+    {
+      summary.peak_z = summary.z[i];
+      break;
+    }
   summary.factor = summary.mean > 0. ? summary.peak / summary.mean : 0.;
   return summary;
 }
