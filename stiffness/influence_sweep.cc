@@ -434,6 +434,18 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   const auto set_force_line = [&](Unknown& unknown, double relative_radius, double force)
   {
     unknown.line = pair_line(model, unknown.at, relative_radius, force);
+    // A sharp tip edge's near field is its corner's (Hertz at the corner radius, the wedge's
+    // layer), never a strip: a strip at A or E samples the modified flank on both sides of the
+    // path's end, as if the tooth went on past its tip. Measured 2026-12-06 (the small helical
+    // pair, β 10°, 6 µm long tip reliefs, 20 layers, position 0.625, against the exact path on
+    // the same planes; docs/ltca.md §3 "On the same node planes"): the wheel's relieved tip edge
+    // carried 38.5 and 17.6 N/mm with the strip against the exact 27.0 and 15.1 (K_Hβ +5.0 %),
+    // 22.0 and 12.6 with its corner (K_Hβ −0.3 %). A rounded tip's arc is material beyond the
+    // path's end: its strip (flank and arc, rounded_tip_removal) stays.
+    const double rounding = unknown.at == pair.contact_end ? pair.spec.pinion.tip_rounding_radius
+                                                           : pair.spec.wheel.tip_rounding_radius;
+    if (unknown.edge && rounding == 0.)
+      unknown.line.strip = {};
     unknown.line.pinion_lever *= helix.cos_base;
     unknown.line.wheel_lever *= helix.cos_base;
   };
