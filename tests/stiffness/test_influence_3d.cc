@@ -2,6 +2,7 @@
 // Mesh/dimension = 3, docs/ltca.md §3) against the exact 3D FE contact path on the default spur
 // pair: issue 47's k within 1 % at every checked position, TE within 0.1 µm, load sharing within
 // 1 %. The reference settings and the measured deviations are in the test's comment.
+#include "kinematics/automatic_sizes.h"
 #include "stiffness/influence_sweep.h"
 #include "stiffness/mesh_stiffness_sweep.h"
 #include "tests/stiffness/load_share.h"
@@ -117,4 +118,56 @@ TEST(InfluenceCoefficients3D, TipReliefAgainstExact)
   settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(10e-6)};
   settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(10e-6)};
   expect_issue_accuracy(compare_3d(settings, 4, "influence_3d_relief"));
+}
+
+// A helical pair's sharp tip edge on a modified flank (docs/ltca.md §3 "On the same node planes"):
+// the small helical pair of tests/helical (z 19/29, m_n 2 mm, β ±10°, b 8 mm, 20 N·m) with 6 µm
+// long tip reliefs on both gears, the fast model on 20 layers (Q1, μ 0, body 0.75 mm, rim 2.5 mm),
+// 4 positions. At 0.625 pair +1's line leaves the path at A near z = 1.8 mm, so the planes beyond
+// carry the wheel's relieved tip edge. The reference: the exact path's K_Hβ on the same 20 node
+// planes (regression: measured 2026-12-06, the exact per-position sweep of
+// `influence_helical.py small-tip-relief` with Mesh/layers=20 on 2 ranks, gearstiff of main
+// f0e1afa, one run, 185 s): 1.0681, 1.0606, 1.1492, 1.0282. The fast model gave 1.0537, 1.0602,
+// 1.2062, 1.0180 with a strip under the edge (+5.0 % at 0.625: the edge's plane 38.5 N/mm against
+// the exact 27.0), 1.0537, 1.0602, 1.1459, 1.0180 with its corner's near field (−1.35, −0.04,
+// −0.29, −0.99 %). Tolerance the issue's 2 % (≈ 1.5× the worst measured, 0.4× the defect).
+TEST(InfluenceCoefficients3D, HelicalRelievedTipEdgeFaceLoad)
+{
+  GearMeshStiffnessSettings settings = q1_settings(20);
+  kinematics::GearPairSpec& pair = settings.scene.pair;
+  pair = kinematics::split_path_pair();
+  for (kinematics::GearSpec* gear : {&pair.pinion, &pair.wheel})
+  {
+    gear->normal_module = 2e-3;
+    gear->profile_shift = 0.;
+    gear->face_width = 8e-3;
+  }
+  pair.pinion.teeth = 19;
+  pair.wheel.teeth = 29;
+  pair.pinion.helix_angle = 10. * M_PI / 180.;
+  pair.wheel.helix_angle = -10. * M_PI / 180.;
+  std::vector<kinematics::DerivedSize> derived;
+  kinematics::resolve_automatic_sizes(pair, {true, true, true, true}, 0., derived);
+  settings.scene.mesh.body_size = 0.75e-3; // m
+  settings.scene.mesh.rim_size = 2.5e-3;   // m
+  settings.pinion_torque = 20.;            // N·m
+  settings.contact.friction_coefficient = 0.;
+  settings.contact_model = ContactModel::influence_coefficients;
+  settings.scene.pinion_modifications.all_teeth = {test_support::long_relief(6e-6)};
+  settings.scene.wheel_modifications.all_teeth = {test_support::long_relief(6e-6)};
+  StiffnessSweepSpec spec;
+  spec.positions = 4;
+  const StiffnessSweepResult fast = influence_sweep<3>(
+      MPI_COMM_SELF, settings, spec, stiffness_work_stem("influence_3d_helical_edge"));
+  const std::array<double, 4> exact = {{1.0681, 1.0606, 1.1492, 1.0282}};
+  ASSERT_EQ(fast.positions.size(), exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i)
+  {
+    const GearMeshStiffnessResult& r = fast.positions[i];
+    std::cout << std::setprecision(6) << "position " << i << ": roll "
+              << r.pinion_roll_angle * 180. / M_PI << " deg, k " << r.mesh_stiffness / 1e6
+              << " N/um, K_Hbeta " << r.face_load_factor << " (exact " << exact[i] << ", "
+              << (r.face_load_factor / exact[i] - 1.) * 100. << " %)\n";
+    EXPECT_NEAR(r.face_load_factor / exact[i], 1., 0.02) << "position " << i;
+  }
 }
