@@ -431,6 +431,12 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   // case 1 of seed 20261201 (9.9 µm reliefs on both) 3.7e-5 stiffer at T within T/2, T, 2T.
   double lines_force = torques.front() / model.frame.pinion_base_radius();
   std::vector<double> line_radius; // m, each unknown's relative radius for pair_line
+  // m, the rounding radius of a tip edge unknown's own tip (the pinion's at E, the wheel's at A).
+  const auto edge_rounding = [&](const Unknown& unknown)
+  {
+    return unknown.at == pair.contact_end ? pair.spec.pinion.tip_rounding_radius
+                                          : pair.spec.wheel.tip_rounding_radius;
+  };
   const auto set_force_line = [&](Unknown& unknown, double relative_radius, double force)
   {
     unknown.line = pair_line(model, unknown.at, relative_radius, force);
@@ -442,9 +448,7 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
     // carried 38.5 and 17.6 N/mm with the strip against the exact 27.0 and 15.1 (K_Hβ +5.0 %),
     // 22.0 and 12.6 with its corner (K_Hβ −0.3 %). A rounded tip's arc is material beyond the
     // path's end: its strip (flank and arc, rounded_tip_removal) stays.
-    const double rounding = unknown.at == pair.contact_end ? pair.spec.pinion.tip_rounding_radius
-                                                           : pair.spec.wheel.tip_rounding_radius;
-    if (unknown.edge && rounding == 0.)
+    if (unknown.edge && edge_rounding(unknown) == 0.)
       unknown.line.strip = {};
     unknown.line.pinion_lever *= helix.cos_base;
     unknown.line.wheel_lever *= helix.cos_base;
@@ -527,9 +531,7 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                 : unknown.at;
         // A rounded tip's arc is the corner (its radius, not the model's choice for a sharp
         // one); a ring's flank is concave.
-        const double rounding = unknown.at == pair.contact_end
-                                    ? pair.spec.pinion.tip_rounding_radius
-                                    : pair.spec.wheel.tip_rounding_radius;
+        const double rounding = edge_rounding(unknown);
         const double corner = rounding > 0. ? rounding : corner_radius;
         const bool concave_mate = unknown.at == pair.contact_end && pair.spec.wheel.internal;
         radius = 1. / (1. / corner + (concave_mate ? -1. : 1.) / mate);
