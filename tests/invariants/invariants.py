@@ -789,44 +789,49 @@ def influence_3d_equals_exact(case, runner, log, sets, exact):
 resolved_planes = 10
 
 
+def influence_3d_crowned_model(runner, sets, layers, torque):
+    """The fast model on `layers` (2 ranks): its report and None, or the refusal's loaded planes
+    and the layers it names (exit 2 naming Mesh/layers; any other exit 2 fails the case)."""
+    fast, code, stderr = runner.run(
+        "stiffness", dict(sets, **{"Stiffness/contact model": "influence coefficients",
+                                   "Mesh/layers": layers}), ranks=2, allowed=(0, 2))
+    if code == 0:
+        return fast, None
+    refusal = re.search(r"Mesh/layers: the crowned contact is carried by only (\d+) node "
+                        r"planes.*use at least (\d+) layers", stderr)
+    if refusal is None:
+        raise CaseFailure(f"influence 3D crowned at {torque} N·m: exit 2 without the layers' "
+                          f"refusal: {stderr.strip()[-400:]}")
+    return fast, (int(refusal.group(1)), int(refusal.group(2)))
+
+
 def influence_3d_crowned_equals_exact(case, runner, log, sets):
     rng = random.Random(f"{case['seed']}:{case['index']}:crowning")
     amount = round(rng.uniform(5., 15.), 1)
     # The crowned gear in turn (the 3D cases are every tenth: CI's 9, 19, 29 take one each).
     gears = [("Pinion",), ("Wheel",), ("Pinion", "Wheel")][case["index"] // 10 % 3]
     sets = dict(sets, **{f"Gear pair/{gear}/lead crowning": amount for gear in gears})
-    model = {"Stiffness/contact model": "influence coefficients"}
+    torque_key = "Gear pair scene/pinion torque"
     layers = 16
     start = time.monotonic()
-    fast, code, stderr = runner.run("stiffness", dict(sets, **model, **{"Mesh/layers": layers}),
-                                    ranks=2, allowed=(0, 2))
-    if code == 2:
-        refusal = re.search(r"Mesh/layers: the crowned contact is carried by only (\d+) node "
-                            r"planes.*use at least (\d+) layers", stderr)
-        if refusal is None:
-            raise CaseFailure(f"influence 3D crowned: exit 2 without the layers' refusal: "
-                              f"{stderr.strip()[-400:]}")
-        planes, needed = int(refusal.group(1)), int(refusal.group(2))
+    fast, refused = influence_3d_crowned_model(runner, sets, layers, sets[torque_key])
+    if refused:
+        planes, needed = refused
         if planes >= 7:  # stiffness/influence_checks.cc, min_loaded_planes
             raise CaseFailure(f"influence 3D crowned: refused on {planes} planes (7 resolve)")
         check_close("influence 3D crowned refusal: the layers named", needed,
                     math.ceil(layers * 7 / planes), 0.)
-        torque_key = "Gear pair scene/pinion torque"
         torque = round(float(sets[torque_key]) * (resolved_planes / planes) ** 2, 3)
         log(f"influence 3D crowned: refused at {layers} layers ({planes} node planes, "
             f"names Mesh/layers and {needed} layers); checked at {torque} N·m")
         sets = dict(sets, **{torque_key: torque})
-        fast, code, stderr = runner.run("stiffness", dict(sets, **model, **{"Mesh/layers": layers}),
-                                        ranks=2, allowed=(0, 2))
-        if code == 2:
-            refusal = re.search(r"Mesh/layers: the crowned contact is carried by only (\d+) node "
-                                r"planes", stderr)
-            if refusal is None:
-                raise CaseFailure(f"influence 3D crowned at {torque} N·m: exit 2 without the "
-                                  f"layers' refusal: {stderr.strip()[-400:]}")
-            layers = math.ceil(layers * resolved_planes / int(refusal.group(1)))
-            fast, _, _ = runner.run("stiffness", dict(sets, **model, **{"Mesh/layers": layers}),
-                                    ranks=2)
+        fast, refused = influence_3d_crowned_model(runner, sets, layers, torque)
+        if refused:
+            layers = math.ceil(layers * resolved_planes / refused[0])
+            fast, refused = influence_3d_crowned_model(runner, sets, layers, torque)
+            if refused:
+                raise CaseFailure(f"influence 3D crowned at {torque} N·m: refused on {layers} "
+                                  f"layers, which load {resolved_planes} planes")
     middle = time.monotonic()
     # The exact path a mesh per position: at 16 layers its `once` sweep of two positions took
     # 199 s against 76 s (case 9, 2 ranks, one run each; the once path's unit responses grow
@@ -834,7 +839,7 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets):
     exact, _, _ = runner.run("stiffness", dict(sets, **{"Stiffness/sweep mesh": "per position",
                                                         "Mesh/layers": layers}), ranks=2)
     label = (f"influence 3D crowned ({amount} um on {' and '.join(gears).lower()}, {layers} "
-             f"layers, {sets['Gear pair scene/pinion torque']} N·m; model {middle - start:.0f} s, "
+             f"layers, {sets[torque_key]} N·m; model {middle - start:.0f} s, "
              f"exact {time.monotonic() - middle:.0f} s on 2 ranks)")
     fast_equals_exact(label, table(exact, "stiffness_sweep"), table(fast, "stiffness_sweep"), log)
     face_load_factors_equal(label, exact, fast, log)
