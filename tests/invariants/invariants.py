@@ -830,8 +830,8 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets):
             layers = math.ceil(layers * resolved_planes / refused[0])
             fast, refused = influence_3d_crowned_model(runner, sets, layers, torque)
             if refused:
-                raise CaseFailure(f"influence 3D crowned at {torque} N·m: refused on {layers} "
-                                  f"layers, which load {resolved_planes} planes")
+                raise CaseFailure(f"influence 3D crowned at {torque} N·m: still refused on "
+                                  f"{layers} layers (chosen to load {resolved_planes} planes)")
     middle = time.monotonic()
     # The exact path a mesh per position: at 16 layers its `once` sweep of two positions took
     # 199 s against 76 s (case 9, 2 ranks, one run each; the once path's unit responses grow
