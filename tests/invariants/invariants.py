@@ -716,7 +716,8 @@ def three_d_between_plane_models(case, runner, log):
         zip(k["plane stress"], k["3D"], k["plane strain"])))
     influence_3d_equals_exact(case, runner, log, dict(sets, **{"Mesh/dimension": 3,
                                                                "Mesh/layers": 4}), three_d)
-    influence_3d_crowned_equals_exact(case, runner, log, dict(sets, **{"Mesh/dimension": 3}))
+    influence_3d_crowned_equals_exact(case, runner, log, dict(sets, **{"Mesh/dimension": 3}),
+                                      table(three_d, "stiffness_sweep"))
 
 
 # The 3D influence-coefficient model (docs/ltca.md, 3D) on the case's own pair, against the exact
@@ -805,12 +806,25 @@ def influence_3d_crowned_model(runner, sets, layers, torque):
     return fast, (int(refusal.group(1)), int(refusal.group(2)))
 
 
-def influence_3d_crowned_equals_exact(case, runner, log, sets):
+def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
     rng = random.Random(f"{case['seed']}:{case['index']}:crowning")
     amount = round(rng.uniform(5., 15.), 1)
     # The crowned gear in turn (the 3D cases are every tenth: CI's 9, 19, 29 take one each).
     gears = [("Pinion",), ("Wheel",), ("Pinion", "Wheel")][case["index"] // 10 % 3]
     sets = dict(sets, **{f"Gear pair/{gear}/lead crowning": amount for gear in gears})
+    # One position, the uncrowned check's double-contact one or its single-contact one in turn
+    # (CI's 9 and 29 double, 19 single), as a one-position sweep centred on its roll angle, the
+    # exact path on one rank. Two positions on 2 ranks (a position a rank) took the same wall
+    # time and twice the processors: the exact path's 490k DoFs a position were 224-326 s of
+    # cases 9 and 29 (2026-12-06), the costliest part of the suite after case 14's helicoids.
+    # Measured alone, one run each (2026-12-06): case 9 at 14.6474 deg (double) |dk| 0.611 %,
+    # K_Hbeta 1.0 %, exact 156 s; case 19 at 26.8693 deg (single) 0.49 %, 0.43 %, 69 s; case 29
+    # at 10.5328 deg (double, 64.068 N·m) 0.433 %, 0.858 %, 264 s (the case 368 s, 1 core busy).
+    theta = uncrowned_rows[case["index"] // 10 % 2]["roll_angle"]
+    pitches = 0.01  # a one-position sweep's interval, centred on theta
+    step = pitches * 360. / float(sets["Gear pair/Pinion/teeth"])
+    sets = dict(sets, **{"Stiffness/sweep positions": 1, "Stiffness/sweep base pitches": pitches,
+                         "Stiffness/sweep start": theta - 0.5 * step})
     torque_key = "Gear pair scene/pinion torque"
     layers = 16
     start = time.monotonic()
@@ -837,10 +851,12 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets):
     # 199 s against 76 s (case 9, 2 ranks, one run each; the once path's unit responses grow
     # with the contact nodes, four times the 4-layer check's).
     exact, _, _ = runner.run("stiffness", dict(sets, **{"Stiffness/sweep mesh": "per position",
-                                                        "Mesh/layers": layers}), ranks=2)
+                                                        "Mesh/layers": layers}))
+    check_close("influence 3D crowned: the position's roll angle [deg]",
+                table(exact, "stiffness_sweep")[0]["roll_angle"], theta, 1e-9)
     label = (f"influence 3D crowned ({amount} um on {' and '.join(gears).lower()}, {layers} "
-             f"layers, {sets[torque_key]} N·m; model {middle - start:.0f} s, "
-             f"exact {time.monotonic() - middle:.0f} s on 2 ranks)")
+             f"layers, {sets[torque_key]} N·m, roll {theta:.4f} deg; model "
+             f"{middle - start:.0f} s, exact {time.monotonic() - middle:.0f} s on 1 rank)")
     fast_equals_exact(label, table(exact, "stiffness_sweep"), table(fast, "stiffness_sweep"), log)
     face_load_factors_equal(label, exact, fast, log)
 
