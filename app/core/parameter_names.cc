@@ -6,7 +6,11 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <cctype>
+#include <climits>
+#include <deal.II/base/patterns.h>
 #include <fstream>
+#include <memory>
+#include <regex>
 #include <sstream>
 
 namespace gearstiff::app
@@ -292,6 +296,37 @@ std::vector<std::string> nearest_names(const std::string& name,
   return names;
 }
 
+// A number or a flag its pattern refuses, in words: deal.II's own text named the limits as C++
+// spells them ("does not match the given pattern <[Double 0...MAX_DOUBLE (inclusive)]>" for a
+// negative face width). "" when `value` matches or the pattern is none of these.
+std::string number_mismatch(const std::string& pattern, const std::string& value)
+{
+  // Only these: pattern_factory throws for a description it does not know.
+  if (pattern != "[Bool]" && pattern.rfind("[Integer", 0) != 0 && pattern.rfind("[Double", 0) != 0)
+    return "";
+  const std::unique_ptr<dealii::Patterns::PatternBase> parsed =
+      dealii::Patterns::pattern_factory(pattern);
+  if (!parsed || parsed->match(value))
+    return "";
+  if (pattern == "[Bool]")
+    return "neither true nor false";
+  if (pattern == "[Integer]")
+    return "not a whole number";
+  static const std::regex range(R"(\[(Integer range|Double) (\S+)\.\.\.(\S+) \(inclusive\)\])");
+  std::smatch parts;
+  if (!std::regex_match(pattern, parts, range))
+    return "";
+  const std::string kind = parts[1] == "Integer range" ? "not a whole number" : "not a number";
+  const std::string low = parts[2], high = parts[3];
+  const bool below = low != "-MAX_DOUBLE" && low != std::to_string(INT_MIN);
+  const bool above = high != "MAX_DOUBLE" && high != std::to_string(INT_MAX);
+  if (below && above)
+    return kind + " from " + low + " to " + high;
+  if (below)
+    return kind + " of at least " + low;
+  return above ? kind + " of at most " + high : kind;
+}
+
 std::string selection_mismatch(const dealii::ParameterHandler& prm,
                                const std::vector<std::string>& sections, const std::string& key,
                                const std::string& value)
@@ -313,6 +348,8 @@ std::string selection_mismatch(const dealii::ParameterHandler& prm,
   if (entry == node->not_found())
     return "";
   const std::string pattern = entry->second.get<std::string>("pattern_description", "");
+  if (const std::string number = number_mismatch(pattern, value); !number.empty())
+    return number;
   const std::string head = "[Selection ";
   if (pattern.rfind(head, 0) != 0 || pattern.size() < head.size() + 2)
     return "";

@@ -48,14 +48,17 @@ void merge_declared(DeclaredSection& into, const DeclaredSection& from);
 
 // For an entry whose pattern is a Selection ("[Selection single|double|sweep ]") and a value it
 // does not allow: "not one of 'single', 'double', 'sweep'; did you mean 'sweep'?" (the nearest
-// allowed value, when one is near). "" for another pattern: its own message stands.
+// allowed value, when one is near). For a number or a flag its pattern refuses, the pattern in
+// words: "not a number of at least 0", "not a whole number from 1 to 2", "neither true nor
+// false". "" for another pattern, or a number or flag that matches: its own message stands.
 std::string selection_mismatch(const dealii::ParameterHandler& prm,
                                const std::vector<std::string>& sections, const std::string& key,
                                const std::string& value);
 
 // After deal.II refused parameter file `file`: InputError naming the parameter (and the file
 // and line) for the first selection value (`set mode = swep`) its pattern does not allow, with
-// the allowed values and the nearest one; nothing when every selection value is allowed.
+// the allowed values and the nearest one, or the first number or flag its pattern refuses;
+// nothing when every such value is allowed.
 void check_selection_values(const dealii::ParameterHandler& prm, const std::string& file);
 
 // The same for every `set` of a .prm file or every key of a .json file; the InputError names
