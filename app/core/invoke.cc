@@ -183,10 +183,10 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& typed_path
   {
     for (; entered > 0; --entered)
       prm.leave_subsection();
-    const std::string selection = selection_mismatch(prm, parts, key, value);
-    throw InputError(path,
-                     "cannot set to '" + shortened(value) + "': " +
-                         (selection.empty() ? shortened_in(deal_ii_message(e), value) : selection));
+    const std::string refused = pattern_mismatch(prm, parts, key, value);
+    throw InputError(
+        path, "cannot set to '" + shortened(value) +
+                  "': " + (refused.empty() ? shortened_in(deal_ii_message(e), value) : refused));
   }
   for (; entered > 0; --entered)
     prm.leave_subsection();

@@ -327,9 +327,9 @@ std::string number_mismatch(const std::string& pattern, const std::string& value
   return above ? kind + " of at most " + high : kind;
 }
 
-std::string selection_mismatch(const dealii::ParameterHandler& prm,
-                               const std::vector<std::string>& sections, const std::string& key,
-                               const std::string& value)
+std::string pattern_mismatch(const dealii::ParameterHandler& prm,
+                             const std::vector<std::string>& sections, const std::string& key,
+                             const std::string& value)
 {
   // The full JSON listing carries each entry's pattern description (names demangled).
   std::stringstream listing;
@@ -415,7 +415,7 @@ namespace
 void check_selection(const dealii::ParameterHandler& prm, const std::vector<std::string>& sections,
                      const std::string& key, const std::string& value, const std::string& where)
 {
-  const std::string reason = selection_mismatch(prm, sections, key, value);
+  const std::string reason = pattern_mismatch(prm, sections, key, value);
   if (!reason.empty() && reason.find("'" + value + "'") == std::string::npos)
     throw InputError(joined_path(sections, sections.size()) + (sections.empty() ? "" : "/") + key,
                      "'" + value + "' (" + where + ") is " + reason);

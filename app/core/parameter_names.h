@@ -46,14 +46,15 @@ struct OtherCommandNames
 // `into` gains every entry and subsection of `from`.
 void merge_declared(DeclaredSection& into, const DeclaredSection& from);
 
-// For an entry whose pattern is a Selection ("[Selection single|double|sweep ]") and a value it
-// does not allow: "not one of 'single', 'double', 'sweep'; did you mean 'sweep'?" (the nearest
-// allowed value, when one is near). For a number or a flag its pattern refuses, the pattern in
-// words: "not a number of at least 0", "not a whole number from 1 to 2", "neither true nor
-// false". "" for another pattern, or a number or flag that matches: its own message stands.
-std::string selection_mismatch(const dealii::ParameterHandler& prm,
-                               const std::vector<std::string>& sections, const std::string& key,
-                               const std::string& value);
+// Why an entry's pattern refuses `value`, in words. A Selection ("[Selection single|double|sweep
+// ]") and a value it does not allow: "not one of 'single', 'double', 'sweep'; did you mean
+// 'sweep'?" (the nearest allowed value, when one is near). For a number or a flag its pattern
+// refuses, the pattern in words: "not a number of at least 0", "not a whole number from 1 to 2",
+// "neither true nor false". "" for another pattern, or a number or flag that matches: its own
+// message stands.
+std::string pattern_mismatch(const dealii::ParameterHandler& prm,
+                             const std::vector<std::string>& sections, const std::string& key,
+                             const std::string& value);
 
 // After deal.II refused parameter file `file`: InputError naming the parameter (and the file
 // and line) for the first selection value (`set mode = swep`) its pattern does not allow, with

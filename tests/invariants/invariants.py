@@ -790,6 +790,15 @@ def influence_3d_equals_exact(case, runner, log, sets, exact):
 resolved_planes = 10
 
 
+def one_position_sweep(sets, theta):
+    """`sets` as a sweep of one position at pinion roll angle theta [deg]: an interval of a
+    hundredth of a base pitch centred on it."""
+    pitches = 0.01
+    step = pitches * 360. / float(sets["Gear pair/Pinion/teeth"])
+    return dict(sets, **{"Stiffness/sweep positions": 1, "Stiffness/sweep base pitches": pitches,
+                         "Stiffness/sweep start": theta - 0.5 * step})
+
+
 def influence_3d_crowned_model(runner, sets, layers, torque):
     """The fast model on `layers` (2 ranks): its report and None, or the refusal's loaded planes
     and the layers it names (exit 2 naming Mesh/layers; any other exit 2 fails the case)."""
@@ -821,10 +830,7 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
     # K_Hbeta 1.0 %, exact 156 s; case 19 at 26.8693 deg (single) 0.49 %, 0.43 %, 69 s; case 29
     # at 10.5328 deg (double, 64.068 N·m) 0.433 %, 0.858 %, 264 s (the case 368 s, 1 core busy).
     theta = uncrowned_rows[case["index"] // 10 % 2]["roll_angle"]
-    pitches = 0.01  # a one-position sweep's interval, centred on theta
-    step = pitches * 360. / float(sets["Gear pair/Pinion/teeth"])
-    sets = dict(sets, **{"Stiffness/sweep positions": 1, "Stiffness/sweep base pitches": pitches,
-                         "Stiffness/sweep start": theta - 0.5 * step})
+    sets = one_position_sweep(sets, theta)
     torque_key = "Gear pair scene/pinion torque"
     layers = 16
     start = time.monotonic()
@@ -1035,12 +1041,9 @@ def influence_helical_equals_limit(runner, log, sets, limit):
     centred on its roll angle), against the exact path's layer limit from layer_extrapolation:
     k and TE, and K_Hbeta left out of its report with the reason."""
     theta = value(limit, "pinion_roll_angle")
-    pitches = 0.01  # a one-position sweep's interval, centred on theta
-    step = pitches * 360. / float(sets["Gear pair/Pinion/teeth"])
-    fast_sets = dict(sets, **{
-        "Stiffness/contact model": "influence coefficients", "Stiffness/mode": "sweep",
-        "Stiffness/sweep positions": 1, "Stiffness/sweep base pitches": pitches,
-        "Stiffness/sweep start": theta - 0.5 * step})
+    fast_sets = dict(one_position_sweep(sets, theta),
+                     **{"Stiffness/contact model": "influence coefficients",
+                        "Stiffness/mode": "sweep"})
     # Node planes at most 0.74 m_n apart (stiffness/influence_checks.cc,
     # max_helical_spacing_modules): more are refused before any mesh, naming Mesh/layers and the
     # count, checked here and taken.
