@@ -46,6 +46,27 @@ constexpr double min_resolved_share = 0.25;
 // finer levels from 16; the exact path's limit there 256.3 … 257.5 N/µm (from its 24 and 32
 // layers, as 1/L² … 1/L).
 constexpr double max_helical_spacing_modules = 0.74;
+
+// -, the fewest layers that put a helical face's node planes within max_helical_spacing_modules
+// (1 on a spur pair).
+unsigned int helical_least_layers(const GearMeshStiffnessSettings& settings)
+{
+  if (settings.scene.pair.pinion.helix_angle == 0.)
+    return 1;
+  const double face =
+      std::min(settings.scene.pair.pinion.face_width, settings.scene.pair.wheel.face_width);
+  return static_cast<unsigned int>(std::max(
+      1.,
+      std::ceil(face / (max_helical_spacing_modules * settings.scene.pair.pinion.normal_module) -
+                1e-9)));
+}
+
+// Either gear's lead crowned.
+bool lead_crowned(const GearMeshStiffnessSettings& settings)
+{
+  return settings.scene.pinion_modifications.lead.crowning != 0. ||
+         settings.scene.wheel_modifications.lead.crowning != 0.;
+}
 } // namespace
 
 // The grid step must follow the gap's kinks and the near field's depth (docs/ltca.md, limits).
@@ -152,6 +173,14 @@ void check_crowned_contact_planes(
 
 using namespace influence;
 
+unsigned int influence_least_layers(const GearMeshStiffnessSettings& settings)
+{
+  if (settings.scene.mesh.dimension != 3)
+    return 1;
+  return std::max(helical_least_layers(settings),
+                  lead_crowned(settings) ? min_layers_with_lead : 1u);
+}
+
 void check_influence_settings(const GearMeshStiffnessSettings& settings)
 {
   if (settings.scene.mesh.dimension == 3)
@@ -185,7 +214,7 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
           std::min(settings.scene.pair.pinion.face_width, settings.scene.pair.wheel.face_width);
       const double module = settings.scene.pair.pinion.normal_module;
       const unsigned int layers = settings.scene.mesh.layers;
-      if (face > max_helical_spacing_modules * module * layers * (1. + 1e-12))
+      if (layers < helical_least_layers(settings))
         throw InputError(
             geometry::field::mesh("layers"),
             "influence coefficients on a helical pair are verified with node planes at most " +
@@ -193,9 +222,7 @@ void check_influence_settings(const GearMeshStiffnessSettings& settings)
                 format_number(max_helical_spacing_modules * module * 1e3, 4) +
                 " mm; docs/ltca.md §3 \"Helical pairs accepted\"), " +
                 format_number(face / layers * 1e3, 4) + " mm at " + std::to_string(layers) +
-                " layers: use at least " +
-                std::to_string(static_cast<unsigned int>(
-                    std::ceil(face / (max_helical_spacing_modules * module) - 1e-9))) +
+                " layers: use at least " + std::to_string(helical_least_layers(settings)) +
                 " layers");
     }
     // Lead crowning: each node plane's gap is geometry's lead removal there, so the planes must

@@ -31,4 +31,9 @@ influence_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessSettings& sett
 
 // The checks influence_sweep makes before anything is meshed (InputError naming the field).
 void check_influence_settings(const GearMeshStiffnessSettings& settings);
+
+// -, the fewest layers check_influence_settings accepts for this scene's face (a helical face's
+// node planes at most 0.74·m_n apart; 16 with lead crowning on either gear), 1 where it asks for
+// none. `Mesh/layers = auto` takes at least this many with this model.
+unsigned int influence_least_layers(const GearMeshStiffnessSettings& settings);
 } // namespace gearstiff::stiffness

@@ -89,7 +89,9 @@ void declare_scene_mesh_parameters(ParameterHandler& prm,
                           std::to_string(defaults.layers) +
                           ", for a helical pair 16 per unit of overlap ratio ε_β (at least " +
                           std::to_string(defaults.layers) +
-                          ") with twice the automatic body size (docs/helical.md)");
+                          ") with twice the automatic body size (docs/helical.md); the stiffness "
+                          "command's influence coefficients take at least the count they are "
+                          "verified on (docs/ltca.md §3)");
   else
     prm.declare_entry("layers", std::to_string(defaults.layers), Integer(1, 1000),
                       "hexahedron layers across the face width [-] (3D)");

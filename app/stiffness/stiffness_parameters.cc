@@ -394,9 +394,25 @@ void check_influence_parameters(StiffnessParameters& p)
                      "influence coefficients solve no FE field per position: nothing to write");
   stiffness::check_influence_settings(p.settings);
   for (const StiffnessVariant& variant : p.variants)
+  {
     if (!variant.pinion.by_tooth.empty() || !variant.wheel.by_tooth.empty())
       throw InputError("Stiffness/contact model", "influence coefficients cannot carry a tooth "
                                                   "fault of Stiffness/variants");
+    // Each variant's own checks too, before the base set is swept: a lead crowning only a variant
+    // carries, on 8 layers, was refused after the base sweep had run (found 2026-12-06).
+    stiffness::GearMeshStiffnessSettings with = p.settings;
+    with.scene.pinion_modifications = variant.pinion;
+    with.scene.wheel_modifications = variant.wheel;
+    try
+    {
+      stiffness::check_influence_settings(with);
+    }
+    catch (const InputError& error)
+    {
+      throw InputError(error.parameter(),
+                       error.reason() + " (Stiffness/variants: '" + variant.label + "')");
+    }
+  }
   if (p.settings.contact.friction_coefficient > 0.)
     p.input_notes.push_back(
         "Contact/Friction coefficient = " +
@@ -530,6 +546,39 @@ variant_modifications(const StiffnessParameters& p)
     sets.emplace_back(variant.pinion, variant.wheel);
   return sets;
 }
+
+// `Mesh/layers = auto` with influence coefficients in 3D: at least the count that model accepts
+// for the face (a helical face's node planes at most 0.74·m_n apart, 16 layers with lead
+// crowning, on the base set or any variant; stiffness::influence_least_layers), so that a user
+// who leaves the layers to the program is not refused for them. The automatic count is the exact
+// path's (16 per unit of ε_β), which on a narrow or small-module helical face lies below the
+// model's spacing (z 27/41, m_n 2 mm, β 12°, b 16 mm: 9 layers, 1.78 mm apart, where 11 are
+// needed) and gives a spur pair 8 where lead crowning needs 16.
+void raise_automatic_layers(ParameterHandler& prm, StiffnessParameters& p)
+{
+  stiffness::GearMeshStiffnessSettings& s = p.settings;
+  prm.enter_subsection("Mesh");
+  const bool automatic = prm.get("layers") == "auto";
+  prm.leave_subsection();
+  if (!automatic || s.contact_model != stiffness::ContactModel::influence_coefficients ||
+      s.scene.mesh.dimension != 3)
+    return;
+  unsigned int least = stiffness::influence_least_layers(s);
+  for (const StiffnessVariant& variant : p.variants)
+  {
+    stiffness::GearMeshStiffnessSettings with = s;
+    with.scene.pinion_modifications = variant.pinion;
+    with.scene.wheel_modifications = variant.wheel;
+    least = std::max(least, stiffness::influence_least_layers(with));
+  }
+  if (least <= s.scene.mesh.layers)
+    return;
+  p.input_notes.push_back("Mesh/layers = auto takes " + std::to_string(least) + " layers (" +
+                          std::to_string(s.scene.mesh.layers) +
+                          " for the exact path): the fewest influence coefficients are verified "
+                          "on for this face (docs/ltca.md §3)");
+  s.scene.mesh.layers = least;
+}
 } // namespace
 
 StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
@@ -575,6 +624,8 @@ StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
                                           stiffness::once_sweep_valid(s, variant_modifications(p)))
                      ? stiffness::SweepMesh::once
                      : stiffness::SweepMesh::per_position;
+
+  raise_automatic_layers(prm, p);
 
   // A count below one becomes 0, which the sweep's own check (stiffness::sweep_positions)
   // refuses in mode sweep; the other modes do not use it.
