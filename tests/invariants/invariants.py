@@ -1061,7 +1061,24 @@ def influence_helical_equals_limit(runner, log, sets, limit):
                               f"{stderr.strip()[-300:]}")
         log(f"influence helical: {sets['Mesh/layers']} layers refused, names Mesh/layers and "
             f"at least {needed}")
-        fast, _, _ = runner.run("stiffness", dict(fast_sets, **{"Mesh/layers": needed}))
+        # `Mesh/layers = auto` takes the count the model is verified on where the exact path's
+        # automatic one (16 per unit of eps_beta, at least 8) is fewer, and says so in the input
+        # notes (stiffness::influence_least_layers; since 2026-12-06 it refused them as above).
+        pair, _, _ = runner.run("gear-pair", {key: v for key, v in sets.items()
+                                              if key.startswith("Gear pair/")})
+        automatic = max(8, math.ceil(16 * value(pair, "overlap_ratio") - 1e-9))
+        fast, _, _ = runner.run("stiffness", dict(fast_sets, **{"Mesh/layers": "auto"}))
+        taken = re.match(r"(\d+) layers", fast["text"].get("layer error", ""))
+        note = fast["text"].get("input notes", "")
+        if (taken is None or int(taken.group(1)) != max(automatic, needed)
+                or (f"Mesh/layers = auto takes {needed} layers ({automatic} for the exact path)"
+                    in note) != (automatic < needed)):
+            raise CaseFailure(f"influence helical at Mesh/layers = auto: expected "
+                              f"{max(automatic, needed)} layers (the exact path's {automatic}, "
+                              f"the model's {needed}) and the note where it raised them, got "
+                              f"'{fast['text'].get('layer error', '')[:40]}', notes '{note}'")
+        log(f"influence helical: Mesh/layers = auto takes {int(taken.group(1))} layers (the "
+            f"exact path's {automatic})")
     row = table(fast, "stiffness_sweep")[0]
     check_close("influence helical: the position's roll angle [deg]", row["roll_angle"], theta,
                 1e-9)
