@@ -101,7 +101,8 @@ std::string deal_ii_message(const dealii::ExceptionBase& e)
   return text;
 }
 
-std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, const std::string& file)
+std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, const std::string& file,
+                                             const std::string& command)
 {
   const std::string name = shortened(file);
   std::error_code error;
@@ -117,11 +118,13 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
   // the section and the nearest declared names, not deal.II's message.
   check_json_parameter_file(file);
   OtherCommandNames others;
+  std::vector<std::pair<std::string, DeclaredSection>> by_command;
   for (const auto& [other_name, other] : command_registry())
   {
     dealii::ParameterHandler other_prm;
     other.declare_parameters(other_prm);
-    merge_declared(others.declared, declared_parameters(other_prm));
+    by_command.emplace_back(other_name, declared_parameters(other_prm));
+    merge_declared(others.declared, by_command.back().second);
   }
   // Renamed parameters read under their new names (one note each, rank 0).
   std::ifstream in(file);
@@ -133,6 +136,51 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
     for (const std::string& old_path : renamed)
       std::cerr << renamed_note(name, old_path) << "\n";
   check_parameter_file(declared_parameters(prm), file, &others, renamed.empty() ? nullptr : &text);
+  // A file that gives this command nothing is another command's input (a sweep's
+  // stiffness_table.prm, a `dynamics` input, given to `cai`): run on under a note, it gave the
+  // built-in pair's result (found 2026-12-06).
+  if (!command.empty() && others.own == 0 && !others.ignored.empty())
+  {
+    std::string listed, readers;
+    std::size_t reader_count = 0;
+    for (std::size_t i = 0; i < others.ignored.size() && i < 3; ++i)
+      listed += (i == 0 ? "" : ", ") + others.ignored[i];
+    for (const auto& [other_name, other_declared] : by_command)
+    {
+      bool reads_all = other_name != command;
+      for (std::size_t i = 0; reads_all && i < others.ignored.size(); ++i)
+      {
+        const std::string& path = others.ignored[i];
+        std::vector<std::string> sections;
+        std::size_t start = 0;
+        for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos;
+             start = slash + 1)
+          sections.push_back(path.substr(start, slash - start));
+        try
+        {
+          check_parameter_name(other_declared, sections, path.substr(start), path);
+        }
+        catch (const InputError&)
+        {
+          reads_all = false;
+        }
+      }
+      if (reads_all)
+      {
+        readers += (readers.empty() ? "" : ", ") + ("`gearstiff " + other_name + "`");
+        ++reader_count;
+      }
+    }
+    const std::size_t count = others.ignored.size();
+    throw InputError(name,
+                     "holds no parameter `" + command + "` takes: " +
+                         (count == 1 ? "its one is another command's ("
+                                     : "its " + std::to_string(count) + " are other commands' (") +
+                         listed + (count > 3 ? ", ..." : "") + ")" +
+                         (readers.empty()
+                              ? ""
+                              : "; " + readers + (reader_count == 1 ? " reads" : " read") + " it"));
+  }
   try
   {
     // Names only other commands declare were listed above; deal.II skips them.
@@ -198,7 +246,8 @@ void load_parameters(const Command& command, const Invocation& invocation,
   command.declare_parameters(prm);
   if (!invocation.parameter_file.empty())
   {
-    const std::vector<std::string> ignored = read_parameter_file(prm, invocation.parameter_file);
+    const std::vector<std::string> ignored =
+        read_parameter_file(prm, invocation.parameter_file, command.name);
     // One note for a pair file shared with other commands (rank 0; stderr, never the JSON).
     if (!ignored.empty() && dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {

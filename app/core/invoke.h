@@ -24,9 +24,10 @@ const Command& find_command(const std::string& name);
 // Reads a .prm or .json parameter file into `prm` (declared already); InputError naming the
 // file for a missing file, a folder or a parse error, or a name no command declares. Returns the
 // names only other commands declare ("section/key"), which are skipped: one pair file serves
-// every command that reads a pair.
-std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm,
-                                             const std::string& file);
+// every command that reads a pair. With `command` (its name), a file whose every name is only
+// other commands' is refused naming the file and the commands that read it.
+std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, const std::string& file,
+                                             const std::string& command = {});
 
 // Sets parameter `path` ("section/sub/key") to `value`; InputError(path) for an unknown
 // parameter or a value its pattern rejects (the message repeats deal.II's reason).

@@ -219,8 +219,12 @@ void check_prm_file(const DeclaredSection& declared, const std::string& file,
                                      ? missing_reason(others->declared, sections, key)
                                      : missing_reason(declared, sections, key);
       if (!reason.empty() || foreign != std::string::npos)
+      {
         if (!elsewhere(others, sections, key))
           throw InputError(where, any_command_reason(others, sections, key, reason));
+      }
+      else if (others != nullptr)
+        ++others->own;
     }
   }
   // deal.II's own message for an unclosed subsection names no line.
@@ -248,6 +252,8 @@ void check_json_tree(const DeclaredSection& declared, const boost::property_tree
         throw InputError(file + ": " + joined_path(sections, sections.size()) +
                              (sections.empty() ? "" : "/") + name,
                          any_command_reason(others, sections, name, reason));
+      if (reason.empty() && !foreign && others != nullptr)
+        ++others->own;
       continue;
     }
     sections.push_back(name);

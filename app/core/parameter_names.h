@@ -42,6 +42,7 @@ struct OtherCommandNames
 {
   DeclaredSection declared;         // the union of the other commands' parameters
   std::vector<std::string> ignored; // met in the file, in the file's order
+  std::size_t own = 0;              // entries met in the file that this command declares
 };
 // `into` gains every entry and subsection of `from`.
 void merge_declared(DeclaredSection& into, const DeclaredSection& from);

@@ -466,7 +466,8 @@ def test_input_notes_are_warnings(tmp_path, capfd):
     # ignores the scene's torque; the module raises the same note as a UserWarning and prints
     # nothing (README: nothing is printed unless verbose=True).
     pair = tmp_path / "pair.prm"
-    pair.write_text("subsection Gear pair scene\n  set pinion torque = 300\nend\n")
+    pair.write_text("subsection Gear pair\n  subsection Pinion\n    set teeth = 23\n  end\nend\n"
+                    "subsection Gear pair scene\n  set pinion torque = 300\nend\n")
     with pytest.warns(UserWarning, match="other commands use ignored by `gear-pair`"):
         gearstiff.gear_pair(str(pair))
     out, err = capfd.readouterr()
