@@ -69,6 +69,17 @@ void check_json_parameter_file(const std::string& file)
   {
     return; // deal.II's reader reports what it finds
   }
+  // A run's result summary (summary.json, or what --json printed) read as parameters: told as
+  // such, not as its first array ("tables/stiffness_sweep/columns: a JSON array is not a
+  // parameter value", found 2026-12-06 giving a sweep's summary.json to `dynamics`).
+  if (const auto command = tree.get_optional<std::string>("command");
+      command && (tree.count("values") > 0 || tree.count("tables") > 0))
+    throw InputError(shortened(file),
+                     "is the result summary of `gearstiff " + shortened(*command) +
+                         "`, not a parameter file: that run's parameters are the "
+                         "parameters.prm of its -o folder (a sweep's k(x) reaches `gearstiff "
+                         "dynamics` as that folder's stiffness_table.prm, or through Train mesh "
+                         "n/stiffness file)");
   check_node(tree, "");
 }
 } // namespace gearstiff::app
