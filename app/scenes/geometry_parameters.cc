@@ -111,7 +111,13 @@ void declare_scene_mesh_parameters(ParameterHandler& prm,
   for (const MeshSizeEntry& entry : mesh_size_entries())
   {
     const std::string value = format_number(defaults.*entry.member / mm, 10);
-    if (sizes_follow_module)
+    // A default of 0 is a rule (the Hertz zone, 4 × body size), not a length to scale: `auto`
+    // takes that rule at any module (the mesh command reported "Mesh/contact size = 0 mm (the
+    // built-in pair's 0 mm × m_n / 2.5 mm)" among its derived sizes until 2026-12-06).
+    if (sizes_follow_module && defaults.*entry.member == 0.)
+      prm.declare_entry(entry.name, "auto", Anything(),
+                        std::string(entry.documentation) + "; auto = 0 (that rule, at any module)");
+    else if (sizes_follow_module)
       prm.declare_entry(entry.name, "auto", Anything(),
                         std::string(entry.documentation) + "; auto = " + value +
                             " mm for the built-in pair's module 2.5 mm, scaled by m_n / 2.5 mm");
@@ -153,7 +159,7 @@ parse_scene_mesh_parameters(ParameterHandler& prm, const geometry::SceneMeshSett
       continue;
     size = defaults.*entry.member * module_scale;
     mesh.body_size_fits_cell_limit |= entry.member == &geometry::SceneMeshSettings::body_size;
-    if (derived && module_scale != 1.)
+    if (derived && module_scale != 1. && size != 0.)
       derived->push_back({name, size,
                           "the built-in pair's " + format_number(defaults.*entry.member / mm, 6) +
                               " mm × m_n / 2.5 mm"});
