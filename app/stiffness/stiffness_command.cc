@@ -85,8 +85,7 @@ void report_micro_geometry(const StiffnessParameters& p,
   {
     StiffnessParameters variant = p;
     variant.variants.clear();
-    variant.settings.scene.pinion_modifications = p.variants[v].pinion;
-    variant.settings.scene.wheel_modifications = p.variants[v].wheel;
+    variant.settings = with_variant(p.settings, p.variants[v]);
     if (variant.settings.torques.empty())
       variant.settings.torques = {p.settings.pinion_torque};
     const std::string name = "variant_" + std::to_string(v + 1);

@@ -400,12 +400,9 @@ void check_influence_parameters(StiffnessParameters& p)
                                                   "fault of Stiffness/variants");
     // Each variant's own checks too, before the base set is swept: a lead crowning only a variant
     // carries, on 8 layers, was refused after the base sweep had run (found 2026-12-06).
-    stiffness::GearMeshStiffnessSettings with = p.settings;
-    with.scene.pinion_modifications = variant.pinion;
-    with.scene.wheel_modifications = variant.wheel;
     try
     {
-      stiffness::check_influence_settings(with);
+      stiffness::check_influence_settings(with_variant(p.settings, variant));
     }
     catch (const InputError& error)
     {
@@ -565,12 +562,7 @@ void raise_automatic_layers(ParameterHandler& prm, StiffnessParameters& p)
     return;
   unsigned int least = stiffness::influence_least_layers(s);
   for (const StiffnessVariant& variant : p.variants)
-  {
-    stiffness::GearMeshStiffnessSettings with = s;
-    with.scene.pinion_modifications = variant.pinion;
-    with.scene.wheel_modifications = variant.wheel;
-    least = std::max(least, stiffness::influence_least_layers(with));
-  }
+    least = std::max(least, stiffness::influence_least_layers(with_variant(s, variant)));
   if (least <= s.scene.mesh.layers)
     return;
   p.input_notes.push_back("Mesh/layers = auto takes " + std::to_string(least) + " layers (" +
@@ -580,6 +572,15 @@ void raise_automatic_layers(ParameterHandler& prm, StiffnessParameters& p)
   s.scene.mesh.layers = least;
 }
 } // namespace
+
+stiffness::GearMeshStiffnessSettings with_variant(const stiffness::GearMeshStiffnessSettings& base,
+                                                  const StiffnessVariant& variant)
+{
+  stiffness::GearMeshStiffnessSettings with = base;
+  with.scene.pinion_modifications = variant.pinion;
+  with.scene.wheel_modifications = variant.wheel;
+  return with;
+}
 
 StiffnessParameters parse_stiffness_parameters(ParameterHandler& prm)
 {

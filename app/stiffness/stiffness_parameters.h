@@ -38,6 +38,11 @@ struct StiffnessVariant
   geometry::GearModifications pinion, wheel;
 };
 
+// The settings a variant of Stiffness/variants is swept with: the base set's, with the
+// variant's modifications.
+stiffness::GearMeshStiffnessSettings with_variant(const stiffness::GearMeshStiffnessSettings& base,
+                                                  const StiffnessVariant& variant);
+
 struct StiffnessParameters
 {
   stiffness::GearMeshStiffnessSettings settings; // SI, scene_file left empty
