@@ -62,7 +62,9 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              its summary.json as the nonlinear model's TE file: the mean DTE
                              is the model's quasi-static mean of e + W/k (1e-4);
                              the table's Gear 1 torque is the summary's pinion_torque, the load
-                             of its k(x) that `dynamics` checks a train against (1e-9)
+                             of its k(x) that `dynamics` checks a train against (1e-9); the
+                             table given to `cai` and the summary given to `dynamics` as
+                             parameters are refused naming the file (exit 2)
 
 A pair `gearstiff gear-pair` accepts must also be one the FE scene accepts (the first defect
 this generator found: an automatic ring tip the tooth generator refused as topped).
@@ -643,6 +645,27 @@ def own_train(case, runner, log, sweeps):
         f"Hz, mean k {sum(k) / len(k):.5g} N/um, quasi-static K_v "
         f"{value(dynamics, 'mesh1_kv_max'):.5f})")
     own_train_nonlinear(runner, log, sweep, out, table_file, speed)
+    own_outputs_as_inputs(runner, log, out, table_file)
+
+
+def own_outputs_as_inputs(runner, log, out, table_file):
+    """The sweep's outputs given where they do not belong (since 2026-12-06 bad input, exit 2
+    naming the file): its stiffness_table.prm to `cai` holds nothing `cai` takes and names
+    `gearstiff dynamics`, which reads it (it ran the built-in pair under a note); its summary.json
+    as `dynamics`' parameter file is a result summary, not parameters (it was refused by its
+    first array)."""
+    for command, given, expected in (
+            ("cai", table_file, r"stiffness_table\.prm: holds no parameter `cai` takes: "
+                                r".*`gearstiff dynamics` reads it"),
+            ("dynamics", os.path.join(out, "summary.json"),
+             r"summary\.json: is the result summary of `gearstiff stiffness`, "
+             r"not a parameter file")):
+        process = runner.timed([runner.gearstiff, command, given, "--quiet"])
+        if process.returncode != 2 or not re.search(expected, process.stderr):
+            raise CaseFailure(f"{command} {os.path.basename(given)}: expected exit 2 matching "
+                              f"'{expected}', got {process.returncode}: "
+                              f"{process.stderr.strip()[-300:]}")
+    log("own outputs as inputs: the table refused by cai, the summary by dynamics (exit 2)")
 
 
 def own_train_nonlinear(runner, log, sweep, out, table_file, speed):
