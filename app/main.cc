@@ -14,6 +14,7 @@
 #include "errors/errors.h"
 #include "errors/file_names.h"
 #include "errors/io.h"
+#include "fem/blas_start.h"
 #include "fem/mpi_start.h"
 
 #include <cstdlib>
@@ -196,6 +197,8 @@ int run(int argc, char** argv, MPI_Comm comm)
 
 int main(int argc, char** argv)
 {
+  // Before anything computes: OpenBLAS's kernels for this processor (fem/blas_start.h).
+  gearstiff::fem::select_blas_kernels();
   // First, before MPI or any library starts a thread: every thread inherits the blocked signals.
   gearstiff::app::install_signal_cleanup();
   if (const std::string problem = temporary_folder_problem(); !problem.empty())

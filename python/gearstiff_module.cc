@@ -22,6 +22,7 @@
 #include "app/core/units.h"
 #include "errors/errors.h"
 #include "errors/file_names.h"
+#include "fem/blas_start.h"
 #include "fem/mpi_start.h"
 
 #include <algorithm>
@@ -607,6 +608,9 @@ std::string command_list()
 
 PYBIND11_MODULE(gearstiff, m)
 {
+  // OpenBLAS's kernels for this processor, as the command line takes them (fem/blas_start.h):
+  // the module's results equal the command's digit for digit.
+  gearstiff::fem::select_blas_kernels();
   // Every table and array the module returns is NumPy's: without it the import fails here, with
   // the package to install, not at the first call.
   try

@@ -1,5 +1,6 @@
 // GoogleTest main for tests that use deal.II/PETSc: MPI (and PETSc) initialised once for all
 // tests; only rank 0 prints, so `mpiexec -np 2` output stays readable.
+#include "fem/blas_start.h"
 #include "fem/mpi_start.h"
 
 #include <cstdlib>
@@ -8,6 +9,7 @@
 
 int main(int argc, char** argv)
 {
+  gearstiff::fem::select_blas_kernels();
   gearstiff::fem::prepare_mpi_start();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
