@@ -97,11 +97,9 @@ void check_grid_step(double step, double depth, const PairSeparation& separation
 void check_end_plane_spacing(const GearMeshStiffnessSettings& settings,
                              const FaceStations& stations, double depth)
 {
-  bool crowned = false; // crowning unloads the ends (accepted from 16 layers, above)
-  for (const auto* gear :
-       {&settings.scene.pinion_modifications, &settings.scene.wheel_modifications})
-    crowned |= gear->lead.crowning != 0.;
-  if (crowned || stations.size() < 2 || stations.layer >= min_uncrowned_spacing * depth)
+  // Crowning unloads the ends (accepted from 16 layers, above).
+  if (lead_crowned(settings) || stations.size() < 2 ||
+      stations.layer >= min_uncrowned_spacing * depth)
     return;
   const double face = stations.z.back() - stations.z.front();
   const auto most = static_cast<unsigned int>(std::floor(face / (min_uncrowned_spacing * depth)));

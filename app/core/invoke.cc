@@ -55,6 +55,16 @@ void write_results(CommandContext& context, const dealii::ParameterHandler& prm,
   context.write_output("summary.json", "all results as JSON",
                        [&](std::ostream& out) { context.report.print_json(out, command_name); });
 }
+
+// "section/sub/key" as its sections and its key.
+std::pair<std::vector<std::string>, std::string> split_parameter_path(const std::string& path)
+{
+  std::vector<std::string> sections;
+  std::size_t start = 0;
+  for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1)
+    sections.push_back(path.substr(start, slash - start));
+  return {sections, path.substr(start)};
+}
 } // namespace
 
 const Command& find_command(const std::string& name)
@@ -150,15 +160,10 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
       bool reads_all = other_name != command;
       for (std::size_t i = 0; reads_all && i < others.ignored.size(); ++i)
       {
-        const std::string& path = others.ignored[i];
-        std::vector<std::string> sections;
-        std::size_t start = 0;
-        for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos;
-             start = slash + 1)
-          sections.push_back(path.substr(start, slash - start));
+        const auto [sections, key] = split_parameter_path(others.ignored[i]);
         try
         {
-          check_parameter_name(other_declared, sections, path.substr(start), path);
+          check_parameter_name(other_declared, sections, key, others.ignored[i]);
         }
         catch (const InputError&)
         {
@@ -209,11 +214,7 @@ void apply_override(dealii::ParameterHandler& prm, const std::string& typed_path
   const std::string path = current_parameter_path(typed_path);
   if (path != typed_path && dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::cerr << renamed_note("--set", typed_path) << "\n";
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1)
-    parts.push_back(path.substr(start, slash - start));
-  const std::string key = path.substr(start);
+  const auto [parts, key] = split_parameter_path(path);
   check_parameter_name(declared_parameters(prm), parts, key, path);
   unsigned int entered = 0;
   try
