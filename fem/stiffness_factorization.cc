@@ -575,10 +575,16 @@ StiffnessFactorization<dim>::responses(const std::vector<SparseLoad>& loads,
 template <int dim>
 std::vector<std::vector<double>>
 StiffnessFactorization<dim>::load_responses(const std::vector<SparseLoad>& loads,
-                                            const std::vector<types::global_dof_index>& rows) const
+                                            const std::vector<types::global_dof_index>& rows,
+                                            const std::function<void(std::size_t)>& solved) const
 {
   if (Utilities::MPI::n_mpi_processes(impl->mpi_communicator) > 1)
-    return responses(loads, rows);
+  {
+    auto result = responses(loads, rows);
+    if (solved)
+      solved(loads.size());
+    return result;
+  }
   // Right-hand sides a block: the dense solutions of a block stay under 2²⁴ values (128 MB).
   // Measured 2026-12-05 (helical built-in pair, 13 layers, 1099 loads a gear of 88k/106k DoFs,
   // one rank): blocks of 128, 256, 512 took 6.5/6.8, 6.7/6.8, 7.0/7.9 s (pinion/wheel), against
@@ -619,13 +625,15 @@ StiffnessFactorization<dim>::load_responses(const std::vector<SparseLoad>& loads
     impl->call_mumps(
         [&]() { return MatMatTransposeSolve(impl->factor, loads_transposed.mat, solutions.mat); },
         "MatMatTransposeSolve");
-    const PetscScalar* solved = nullptr;
-    check(MatDenseGetArrayRead(solutions.mat, &solved), "MatDenseGetArrayRead");
+    const PetscScalar* solution = nullptr;
+    check(MatDenseGetArrayRead(solutions.mat, &solution), "MatDenseGetArrayRead");
     for (std::size_t j = 0; j < count; ++j)
       for (unsigned int r = 0; r < rows.size(); ++r)
         for (const auto& [dof, weight] : row_terms[r])
-          result[first + j][r] += weight * solved[j * n + dof];
-    check(MatDenseRestoreArrayRead(solutions.mat, &solved), "MatDenseRestoreArrayRead");
+          result[first + j][r] += weight * solution[j * n + dof];
+    check(MatDenseRestoreArrayRead(solutions.mat, &solution), "MatDenseRestoreArrayRead");
+    if (solved)
+      solved(first + count);
   }
   solves += loads.size();
   return result;

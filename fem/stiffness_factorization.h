@@ -21,6 +21,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -67,9 +68,12 @@ public:
   // for every DoF a load touches (the influence model's line loads, docs/ltca.md "Cost"); for
   // unit loads on single DoFs (the contact DoFs) responses() is the cheaper one. One rank (MUMPS
   // takes sparse right-hand sides centralized); on several it is responses().
+  // `solved` (may be empty) is called after each block with the loads solved so far: the
+  // influence model's coefficients are a sweep's longest step (tens of seconds in 3D).
   std::vector<std::vector<double>>
   load_responses(const std::vector<SparseLoad>& loads,
-                 const std::vector<dealii::types::global_dof_index>& rows) const;
+                 const std::vector<dealii::types::global_dof_index>& rows,
+                 const std::function<void(std::size_t)>& solved = {}) const;
 
   double factorization_time() const { return factor_seconds; } // s, wall: assembly + factor
   // Whether responses() use the dense Schur complement on the interface DoFs.

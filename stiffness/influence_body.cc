@@ -306,7 +306,8 @@ void factor_body_model(const GearMeshStiffnessSettings& settings, BodyModel<dim>
 template <int dim>
 std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
                                                  const std::vector<BodyPoint<dim>>& loads,
-                                                 const std::vector<BodyPoint<dim>>& reads)
+                                                 const std::vector<BodyPoint<dim>>& reads,
+                                                 const std::function<void(std::size_t)>& solved)
 {
   std::vector<fem::SparseLoad> sparse_loads;
   for (const BodyPoint<dim>& load : loads)
@@ -332,7 +333,7 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
         rows.push_back(dof);
   }
   const std::vector<std::vector<double>> responses =
-      model.factorization->load_responses(sparse_loads, rows);
+      model.factorization->load_responses(sparse_loads, rows, solved);
   std::vector<std::vector<double>> compliance(loads.size(), std::vector<double>(reads.size(), 0.));
   for (std::size_t a = 0; a < loads.size(); ++a)
     for (std::size_t b = 0; b < reads.size(); ++b)
@@ -393,10 +394,10 @@ template BodyModel<2> read_body_model<2>(const std::string&);
 template BodyModel<3> read_body_model<3>(const std::string&);
 template void factor_body_model<2>(const GearMeshStiffnessSettings&, BodyModel<2>&, bool);
 template void factor_body_model<3>(const GearMeshStiffnessSettings&, BodyModel<3>&, bool);
-template std::vector<std::vector<double>> body_compliance<2>(const BodyModel<2>&,
-                                                             const std::vector<BodyPoint<2>>&,
-                                                             const std::vector<BodyPoint<2>>&);
-template std::vector<std::vector<double>> body_compliance<3>(const BodyModel<3>&,
-                                                             const std::vector<BodyPoint<3>>&,
-                                                             const std::vector<BodyPoint<3>>&);
+template std::vector<std::vector<double>>
+body_compliance<2>(const BodyModel<2>&, const std::vector<BodyPoint<2>>&,
+                   const std::vector<BodyPoint<2>>&, const std::function<void(std::size_t)>&);
+template std::vector<std::vector<double>>
+body_compliance<3>(const BodyModel<3>&, const std::vector<BodyPoint<3>>&,
+                   const std::vector<BodyPoint<3>>&, const std::function<void(std::size_t)>&);
 } // namespace gearstiff::stiffness::influence

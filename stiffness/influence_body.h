@@ -159,11 +159,13 @@ struct BodyPoint
 };
 
 // m/N: result[a][b] = the displacement read b under the load a (P b of the factorization).
+// `solved` (may be empty) hears the loads solved so far, block by block.
 // SolverFailure when a point lies outside its body's mesh.
 template <int dim>
-std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
-                                                 const std::vector<BodyPoint<dim>>& loads,
-                                                 const std::vector<BodyPoint<dim>>& reads);
+std::vector<std::vector<double>>
+body_compliance(const BodyModel<dim>& model, const std::vector<BodyPoint<dim>>& loads,
+                const std::vector<BodyPoint<dim>>& reads,
+                const std::function<void(std::size_t)>& solved = {});
 
 // The scene of the FE body (`dimension` 2 or 3): the sweep's first position, every flank that
 // meshes in the sweep refined along its contacts at `band_cell` (m) out to the matching `depth`

@@ -766,8 +766,24 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                    "scene read in " + format_number(read_time, 3) +
                    " s, assembled and factored in " + format_number(factored, 3) + " s");
         start = std::chrono::steady_clock::now();
-        mine.push_back(
-            {wheel, body_compliance(*model, compliance->loads(wheel), compliance->reads(wheel))});
+        // The longest silent step of a 3D sweep (tens of seconds a gear): how far it is, every
+        // 10 s, with the time left at the rate so far.
+        const std::size_t n_loads = compliance->loads(wheel).size();
+        double reported = 0.; // s since start at the last line
+        const auto solved = [&](std::size_t done)
+        {
+          const double elapsed = seconds_since(start);
+          if (!progress || done >= n_loads || elapsed < reported + 10.)
+            return;
+          reported = elapsed;
+          progress(model_name + ": " + gear + " coefficients, " +
+                   std::to_string(static_cast<int>(100. * double(done) / double(n_loads))) +
+                   " % of " + std::to_string(compliance->n_points()) + " load points in " +
+                   format_number(elapsed, 3) + " s, ~" +
+                   format_number(elapsed * double(n_loads - done) / double(done), 2) + " s left");
+        };
+        mine.push_back({wheel, body_compliance(*model, compliance->loads(wheel),
+                                               compliance->reads(wheel), solved)});
         const double computed = seconds_since(start);
         coefficient_time += computed;
         if (progress && dim == 3)
