@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <tuple>
 
@@ -889,9 +890,17 @@ ToothProfile generate_gear_tooth(const InvoluteToothSpec& spec, const ProfileRes
   {
     if (e.parameter().rfind(field::tooth_prefix, 0) != 0)
       throw;
-    // the spec's `module` is the gear's `normal_module`
+    // The spec's members as the gear's parameters: its `module` is the gear's `normal_module`,
+    // and the cutter is the gear's basic rack turned over (involute_tooth_spec).
+    static const std::map<std::string, std::string> gear_member{
+        {"cutter_addendum", "dedendum_coefficient"},
+        {"cutter_dedendum", "addendum_coefficient"},
+        {"cutter_tip_radius", "root_radius_coefficient"},
+        {"gear_addendum", "addendum_coefficient"}};
+    const std::string member = e.parameter().substr(field::tooth_prefix.size());
+    const auto found = gear_member.find(member);
     throw InputError(
-        kinematics::gear_parameter_name(wheel, e.parameter().substr(field::tooth_prefix.size())),
+        kinematics::gear_parameter_name(wheel, found == gear_member.end() ? member : found->second),
         e.reason());
   }
 }

@@ -44,6 +44,27 @@ void check_gear(const GearSpec& gear, bool wheel)
         gear.root_radius_coefficient * (1. - std::sin(gear.pressure_angle))))
     throw InputError(name("root_radius_coefficient"),
                      "the rack tip round does not fit into the rack dedendum");
+  // The generating rack's tooth is π·m/2 wide on its datum line and narrows by tan α on each
+  // side over its addendum (the gear's dedendum): its two tip rounds must not overlap. In the
+  // transverse section the geometry module cuts (m_t, α_t, the depths and ρ in metres as in the
+  // normal section), so the check is that of geometry::rack_motion, here at parse time in the
+  // user's coefficients (α_n 25° with the ISO 53 rack's h_fP* 1.25 and ρ_fP* 0.38 fails it).
+  const double c = std::cos(gear.helix_angle);
+  const double alpha_t = std::atan(std::tan(gear.pressure_angle) / c);
+  const double largest = (pi / (4. * c) - gear.dedendum_coefficient * std::tan(alpha_t)) *
+                         std::cos(alpha_t) / (1. - std::sin(alpha_t));
+  if (gear.root_radius_coefficient > largest)
+    throw InputError(
+        name("root_radius_coefficient"),
+        format_number(gear.root_radius_coefficient, 4) +
+            " is too large for this basic rack: its two tip rounds would overlap (at most " +
+            (largest > 0. ? format_number(largest, 4) : std::string("0")) +
+            " with pressure angle " + format_number(gear.pressure_angle * 180. / pi, 4) +
+            "° and dedendum coefficient " + format_number(gear.dedendum_coefficient, 4) +
+            (gear.helix_angle != 0.
+                 ? ", helix angle " + format_number(gear.helix_angle * 180. / pi, 4) + "°"
+                 : std::string()) +
+            ")");
 }
 
 // The rack flank generates the involute down to the height where its tip round

@@ -135,7 +135,7 @@ PairSeparation::PairSeparation(const GearMeshStiffnessSettings& settings, const 
     geometry::InvoluteToothSpec spec = geometry::involute_tooth_spec(gear, derived.tip_diameter);
     spec.required_form_diameter = derived.active_profile_start;
     const geometry::ToothProfile tooth =
-        geometry::generate_involute_tooth(spec, settings.scene.resolution);
+        geometry::generate_gear_tooth(spec, settings.scene.resolution, is_wheel);
     (is_wheel ? wheel_range : pinion_range) =
         geometry::flank_roll_range(frame.pair, tooth, is_wheel);
     const double r_a = 0.5 * derived.tip_diameter,
