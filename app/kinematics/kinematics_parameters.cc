@@ -50,7 +50,9 @@ void declare_gear(dealii::ParameterHandler& prm, const kinematics::GearSpec& gea
   prm.declare_entry("dedendum coefficient", format_number(gear.dedendum_coefficient, 12),
                     Double(0.), "basic rack dedendum h_fP/m_n [-] (ISO 53 A: 1.25)");
   prm.declare_entry("root radius coefficient", format_number(gear.root_radius_coefficient, 12),
-                    Double(0.), "basic rack root radius ρ_fP/m_n [-] (ISO 53 A: 0.38)");
+                    Double(0.),
+                    "basic rack root radius ρ_fP/m_n [-] (ISO 53 A: 0.38; at most what keeps the "
+                    "rack tooth's two tip rounds apart, 0.318 at a 25° pressure angle)");
   prm.declare_entry("bore diameter", "auto", Anything(),
                     "bore diameter of the gear body [mm] (FE models), for an internal wheel its "
                     "outer diameter; 0 = not given; auto = 20/40 mm for the teeth of the built-in "
