@@ -83,14 +83,30 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
       if (!std::isfinite(serial.get_vertices()[v][c]))
         throw InputError(parameter, "'" + file_name + "': a node (vertex " + std::to_string(v) +
                                         ") has a coordinate that is not a finite number");
+  // FE_Q needs quadrilaterals/hexahedra: gmsh meshes triangles and tetrahedra unless told to
+  // recombine, and deal.II reads them; the system's set-up refused them later naming "mesh".
+  unsigned int simplices = 0;
+  types::material_id first_tag = 0;
+  for (const auto& cell : serial.active_cell_iterators())
+    if (!cell->reference_cell().is_hyper_cube() && simplices++ == 0)
+      first_tag = cell->material_id();
+  if (simplices > 0)
+    throw InputError(parameter,
+                     "'" + file_name + "' has " + std::to_string(simplices) + " of " +
+                         std::to_string(serial.n_active_cells()) + " cells that are not " +
+                         (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                         " (the first in physical tag " + std::to_string(first_tag) +
+                         "): the elements need " +
+                         (dim == 2 ? "quadrilaterals (gmsh: Recombine Surface, or -2 with "
+                                     "Mesh.RecombineAll = 1)"
+                                   : "hexahedra (gmsh: extruded or transfinite recombined "
+                                     "volumes)"));
   // deal.II accepts a cell of zero area (collapsed or bow-tie corners); its assembly then fails
   // the factorization as a "solver failure" for what is a fault of the file.
   const std::vector<unsigned int> order = cyclic_corner_order(dim);
   std::vector<Eigen::Vector3d> corners(order.size());
   for (const auto& cell : serial.active_cell_iterators())
   {
-    if (!cell->reference_cell().is_hyper_cube())
-      continue; // the quadrilateral/hexahedral check only
     corners.clear();
     for (const unsigned int v : order)
     {
