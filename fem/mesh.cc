@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <regex>
 #include <sstream>
 
 namespace gearstiff::fem
@@ -74,6 +76,29 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
     for (auto& c : text)
       if (c == '\n')
         c = ' ';
+    // deal.II names an element it does not read by gmsh's type number: say what it is. The
+    // common case is a second-order mesh (gmsh -order 2), whose degree gearstiff sets itself.
+    const std::smatch found = [&]
+    {
+      std::smatch match;
+      std::regex_search(text, match, std::regex("Element Identifier <([0-9]+)> is not supported"));
+      return match;
+    }();
+    if (!found.empty())
+    {
+      const int type = std::stoi(found[1].str());
+      const std::map<int, std::string> second_order{
+          {8, "3-node line"},          {9, "6-node triangle"},     {10, "9-node quadrilateral"},
+          {11, "10-node tetrahedron"}, {12, "27-node hexahedron"}, {16, "8-node quadrilateral"},
+          {17, "20-node hexahedron"}};
+      if (const auto element = second_order.find(type); element != second_order.end())
+        throw InputError(parameter, "'" + file_name + "' has second-order elements (gmsh type " +
+                                        std::to_string(type) + ", " + element->second +
+                                        "): the mesh is read with first-order " +
+                                        (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                                        " only (mesh it with order 1; the finite elements' "
+                                        "degree is Finite elements/Element degree)");
+    }
     throw InputError(parameter, "cannot read '" + file_name + "' as a " + std::to_string(dim) +
                                     "D quadrilateral/hexahedral gmsh mesh: " + text);
   }
