@@ -61,6 +61,13 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
     throw InputError(parameter, std::filesystem::is_directory(file_name)
                                     ? "'" + file_name + "' is a folder, not a mesh file"
                                     : "mesh file '" + file_name + "' does not exist");
+  // A gmsh geometry script is the usual slip for its mesh.
+  if (std::filesystem::path(file_name).extension() == ".geo")
+    throw InputError(parameter, "'" + file_name +
+                                    "' is a gmsh geometry script, not a mesh: mesh it "
+                                    "first (gmsh -" +
+                                    std::to_string(dim) + " " + file_name +
+                                    ", quadrilaterals recombined) and give the .msh");
   Triangulation<dim> serial;
   try
   {
@@ -91,6 +98,13 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
           {8, "3-node line"},          {9, "6-node triangle"},     {10, "9-node quadrilateral"},
           {11, "10-node tetrahedron"}, {12, "27-node hexahedron"}, {16, "8-node quadrilateral"},
           {17, "20-node hexahedron"}};
+      // A volume element in a 2D read: the file is a 3D mesh (gmsh 4 tetrahedron, 5 hexahedron,
+      // 6 prism, 7 pyramid).
+      if (dim == 2 && type >= 4 && type <= 7)
+        throw InputError(parameter, "'" + file_name + "' holds a 3D mesh (gmsh element type " +
+                                        std::to_string(type) +
+                                        "), read as 2D: set the mesh dimension to 3 (contact: "
+                                        "Mesh/Dimension)");
       if (const auto element = second_order.find(type); element != second_order.end())
         throw InputError(parameter, "'" + file_name + "' has second-order elements (gmsh type " +
                                         std::to_string(type) + ", " + element->second +
@@ -99,6 +113,13 @@ PhysicalNames read_msh(const std::string& file_name, double scale, Triangulation
                                         " only (mesh it with order 1; the finite elements' "
                                         "degree is Finite elements/Element degree)");
     }
+    // A 2D mesh read as 3D: deal.II finds faces but no cells.
+    if (dim == 3 && text.find("did not find any cells") != std::string::npos &&
+        std::regex_search(text, std::regex("did find [0-9]+ lines and [1-9][0-9]* facets")))
+      throw InputError(parameter, "'" + file_name +
+                                      "' holds no volume cells, only lines and "
+                                      "faces: a 2D mesh read as 3D? (contact: "
+                                      "Mesh/Dimension = 2)");
     throw InputError(parameter, "cannot read '" + file_name + "' as a " + std::to_string(dim) +
                                     "D quadrilateral/hexahedral gmsh mesh: " + text);
   }

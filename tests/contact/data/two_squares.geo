@@ -1,0 +1,10 @@
+Point(1)={0,0,0,0.5}; Point(2)={2,0,0,0.5}; Point(3)={2,1,0,0.5}; Point(4)={0,1,0,0.5};
+Point(5)={0,1,0,0.5}; Point(6)={2,1,0,0.5}; Point(7)={2,2,0,0.5}; Point(8)={0,2,0,0.5};
+Line(1)={1,2}; Line(2)={2,3}; Line(3)={3,4}; Line(4)={4,1};
+Line(5)={5,6}; Line(6)={6,7}; Line(7)={7,8}; Line(8)={8,5};
+Curve Loop(1)={1,2,3,4}; Plane Surface(1)={1};
+Curve Loop(2)={5,6,7,8}; Plane Surface(2)={2};
+Recombine Surface{1,2};
+Physical Surface("lower")={1}; Physical Surface("upper")={2};
+Physical Curve("lower contact")={3}; Physical Curve("upper contact")={5};
+Physical Curve("lower bottom")={1}; Physical Curve("upper top")={7};
