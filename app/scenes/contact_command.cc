@@ -10,6 +10,7 @@
 #include "contact/contact_problem.h"
 #include "contact/cylinder_pair.h"
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "errors/limits.h"
 #include "fem/abaqus_reader.h"
 #include "fem/mesh.h"
@@ -21,6 +22,9 @@
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -111,11 +115,25 @@ void check_mesh_extent(const Triangulation<dim>& tria, const double unit)
 {
   const double extent = GridTools::diameter(tria);
   if (!(extent >= smallest_plausible_extent && extent <= largest_plausible_extent))
+  {
+    // The unit that gives machine-part sizes, if one does (a `gearstiff mesh` scene is in
+    // metres: Length unit = 1).
+    std::string suggestion;
+    for (const auto& [candidate, name] : std::vector<std::pair<double, std::string>>{
+             {1e-3, "mm"}, {1., "m"}, {0.0254, "inches"}, {1e-6, "µm"}})
+      if (candidate != unit && suggestion.empty())
+      {
+        const double span = extent / unit * candidate;
+        if (span >= smallest_usual_extent && span <= largest_usual_extent)
+          suggestion = "; with Length unit = " + format_number(candidate, 4) + " (" + name +
+                       ") it spans " + millimetres(span);
+      }
     throw InputError("Mesh/Length unit",
-                     "the mesh spans " + millimetres(extent) + " with " +
-                         Utilities::to_string(unit) +
+                     "the mesh spans " + millimetres(extent) + " with " + format_number(unit, 4) +
                          " m per mesh unit, implausible for machine parts: check the length unit "
-                         "of the mesh (mm expected, Length unit = 1e-3)");
+                         "of the mesh (mm expected, Length unit = 1e-3" +
+                         suggestion + ")");
+  }
 }
 
 // Runs the contact problem of a user mesh. Bad geometry (bodies that overlap, or lie beyond the
@@ -135,7 +153,7 @@ const contact::ContactResults<dim>& run_with_unit_hint(contact::ContactProblem<d
     if (extent >= smallest_usual_extent && extent <= largest_usual_extent)
       throw;
     throw InputError(e.parameter(), e.reason() + "; the mesh spans " + millimetres(extent) +
-                                        " at Mesh/Length unit = " + Utilities::to_string(unit) +
+                                        " at Mesh/Length unit = " + format_number(unit, 4) +
                                         " m: check the length unit of the mesh (mm expected)");
   }
 }

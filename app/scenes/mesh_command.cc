@@ -242,7 +242,9 @@ void run(ParameterHandler& prm, CommandContext& context)
   std::string path;
   std::filesystem::path scratch;
   if (context.writes_files() && deck.keep_msh)
-    path = context.output_file(file_name, "scene mesh (ASCII .msh 4.1, ids in summary.json)");
+    path =
+        context.output_file(file_name, "scene mesh (ASCII .msh 4.1, coordinates in metres, ids in "
+                                       "summary.json)");
   else
   {
     scratch = std::filesystem::path(scratch_directory()) / "mesh.msh";
@@ -283,6 +285,7 @@ const CommandRegistration registration(
      "2 (wheel, rollers, cylinder 2); boundary ids 1/2 bores (roller pins), 3/4 candidate\n"
      "contact surfaces (gear pair: one id per loaded flank, 200 + j on pinion tooth j and\n"
      "400 + j on the wheel tooth meshing it), 5/6 sector cuts (flat faces), 7 side faces (3D),\n"
-     "8 output-pin holes, 0 free. Leftover triangles or inverted cells are an error.",
+     "8 output-pin holes, 0 free. Leftover triangles or inverted cells are an error.\n"
+     "Coordinates in metres: `gearstiff contact` reads the file with Mesh/Length unit = 1.",
      declare_parameters, run});
 } // namespace
