@@ -21,6 +21,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -435,6 +436,14 @@ void report_contact(Report& report, const contact::ContactResults<dim>& result,
     report.add_value("tangential_force", pair.tangential_force, "N",
                      "resultant tangential contact force");
     report.add_value("max_pressure", pair.max_pressure * 1e-6, "MPa", "peak contact pressure");
+    // What a rotation or displacement spends before the bodies touch (the chords of a meshed
+    // curve lie inside it: a gear scene's flanks start nanometres apart).
+    double smallest_gap = std::numeric_limits<double>::max();
+    for (const auto& point : pair.points)
+      smallest_gap = std::min(smallest_gap, point.initial_gap);
+    if (!pair.points.empty())
+      report.add_value("initial_gap", smallest_gap * 1e6, "µm",
+                       "smallest initial normal gap of the slave nodes (negative: overlap)");
     report.add_value("contact_length", pair.contact_length * 1e3, "mm",
                      "extent of the closed nodes along the surface");
     report.add_value("closed_nodes", pair.n_closed, "-", "active-set size (closed nodes)");

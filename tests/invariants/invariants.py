@@ -25,6 +25,10 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              start of a position depends on the rank's previous one)
     Python = command line    gearstiff.stiffness(...) returns the command line's numbers (the
                              12 printed digits)
+    mesh + contact           `gearstiff mesh` writes the stiffness scene and `gearstiff contact`
+                             solves it as a user's mesh (the stiffness command's tooth pairs, a
+                             torque hub): its hub rotation less the turn that closes the smallest
+                             initial gap is the stiffness command's, 1e-6 relative
     3D between plane models  straight teeth in 3D: k between plane stress and plane strain, at
                              both positions of a 2-position once sweep
     influence 3D = exact     the 3D influence-coefficient model against that 3D sweep (external
@@ -87,6 +91,7 @@ import os
 import random
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -599,13 +604,72 @@ def ranks_agree(case, runner, log, sweeps):
     log("2 ranks = 1 rank: k and TE to 1e-6")
 
 
+def mesh_contact_equals_stiffness(runner, log, sets, single):
+    """`gearstiff mesh` writes the stiffness command's scene (`Scene/gear pair defaults =
+    stiffness`, coordinates in metres) and `gearstiff contact` solves it as a user's own mesh:
+    bodies `pinion body, wheel body`, every pinion flank against every wheel flank, the wheel bore
+    fixed, a torque hub on the pinion bore about the origin (the pinion's axis in a scene), the
+    face width as the thickness. Its hub rotation less the turn that closes the smallest initial
+    gap (the meshed chords start nanometres apart; the stiffness command takes that turn out,
+    stiffness/mesh_stiffness.cc) is the stiffness command's pinion rotation: the same discrete
+    problem solved by two commands, 1e-6 relative (3e-9 measured on the built-in pair at its
+    pitch point, Q2, mu 0 and 0.01, session 48)."""
+    out = tempfile.mkdtemp(prefix="mesh", dir=runner.work)
+    mesh_sets = {k: v for k, v in sets.items() if k.startswith(("Gear pair/", "Gear pair scene/"))}
+    # The mesh command's default position with the stiffness defaults is the stiffness command's
+    # `single` one (the pitch point in single contact, else the single zone's middle); a typed
+    # roll angle of the same position (12 digits) meshed the contact zone otherwise (case 6:
+    # 0.06 % apart).
+    mesh_sets["Scene/gear pair defaults"] = "stiffness"
+    runner.run("mesh", mesh_sets, out=os.path.join(out, "scene"))
+    path = os.path.join(out, "scene", "scene.msh")
+    with open(path) as f:
+        names = f.read().split("$PhysicalNames")[1].split("$EndPhysicalNames")[0]
+    # The stiffness command's tooth pairs: those on the path of contact at the position (its
+    # load_share_pair_<j> keys, m for minus). A pair just beyond the path is a free surface there
+    # by design (docs/calculix.md): seed 20261201 case 2 (36/90, m 5 mm, 443.6 N·m, unmodified)
+    # has the leaving pair's pinion tip corner 0.66 mm beyond E with a 1.31 um gap against a
+    # 6.58 um TE, which `contact` with every flank closes (hub rotation 77.80 -> 60.61 urad).
+    pairs = [key[len("load_share_pair_"):].replace("m", "-") for key in single["values"]
+             if key.startswith("load_share_pair_")]
+    groups = re.findall(r'"((?:pinion|wheel) flank -?\d+)"', names)
+    flanks = {gear: ", ".join(f"{gear} flank {j}" for j in pairs) for gear in ("pinion", "wheel")}
+    for gear in ("pinion", "wheel"):
+        for j in pairs:
+            if f"{gear} flank {j}" not in groups:
+                raise CaseFailure(f"mesh + contact: the scene has no group '{gear} flank {j}'")
+    torque = float(sets["Gear pair scene/pinion torque"])
+    contact_sets = {
+        "Mesh/File": path, "Mesh/Length unit": 1, "Bodies/Names": "pinion body, wheel body",
+        "Contact/Slave surfaces": flanks["pinion"], "Contact/Master surfaces": flanks["wheel"],
+        "Contact/Friction coefficient": sets["Contact/Friction coefficient"],
+        "Supports/Fixed": "wheel bore", "Supports/Displacements": "",
+        "Supports/Hub torques": f"pinion bore: {torque}, 0, 0",
+        "Finite elements/Thickness": min(float(sets[f"Gear pair/{g}/face width"])
+                                          for g in ("Pinion", "Wheel")),
+        "Finite elements/Element degree": sets.get("Finite elements/Element degree", 2)}
+    contact, _, _ = runner.run("contact", contact_sets)
+    shutil.rmtree(out, ignore_errors=True)
+    gap = value(contact, "initial_gap")  # um
+    turn = 1e3 * gap / value(single, "pinion_base_radius")  # um / mm = 1e-3 rad: urad
+    rotation = value(contact, "support_pinion bore_rotation") - turn
+    check_close("mesh + contact: pinion rotation less the touching turn [urad]", rotation,
+                value(single, "pinion_rotation"), 0., 1e-6)
+    log(f"mesh + contact = stiffness: pinion rotation {rotation:.6f} urad (hub "
+        f"{rotation + turn:.6f} less {turn:.6f} for the initial gap {gap:.3g} um), "
+        f"pairs {', '.join(pairs)}")
+
+
 def python_equals_cli(case, runner, log, sweeps):
-    if not runner.python_path:
-        log("Python = command line: skipped (no --python-path)")
-        return
+    """The Python module's stiffness equals the command line's; and the same single position
+    through `gearstiff mesh` and `gearstiff contact` (mesh_contact_equals_stiffness)."""
     sets = dict(case["pair"], **SAME_MESH_IDENTITY)
     sets.update(case["modifications"])
     cli, _, _ = runner.run("stiffness", sets)
+    mesh_contact_equals_stiffness(runner, log, sets, cli)
+    if not runner.python_path:
+        log("Python = command line: skipped (no --python-path)")
+        return
     # The module takes the .prm's sections as a nested dict.
     params = {}
     for key, v in sets.items():
