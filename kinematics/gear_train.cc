@@ -397,6 +397,11 @@ TrainSolution solve_train_kinematics(const GearTrainSpec& spec)
                          std::to_string(solution.degrees_of_freedom) + " degree(s) of freedom");
   }
   solution.speeds.assign(speeds.data(), speeds.data() + n);
+  // A member that stands (a fixed ring, what is joined to it) came out as the LU's round-off
+  // ("speed of member r: -1.44751e-13 rpm" for an own planetary stage): it stands.
+  for (double& speed : solution.speeds)
+    if (std::abs(speed) < 1e-12 * scale)
+      speed = 0.;
   if (!spec.output.empty())
   {
     const double output_speed = solution.speed(spec.output);
