@@ -20,6 +20,7 @@
 #include "dynamics/cai_stiffness.h"
 #include "dynamics/mesh_stiffness.h"
 #include "errors/errors.h"
+#include "kinematics/automatic_sizes.h"
 
 #include <cmath>
 
@@ -145,19 +146,27 @@ void add_cai_tables(Report& report, const std::vector<dynamics::StiffnessSample>
   }
 }
 
-// cai_calibrated.prm for `gearstiff dynamics` and the calibration chart.
-void write_files(CommandContext& context, const dynamics::CaiFit& fit, std::size_t samples)
+// cai_calibrated.prm for `gearstiff dynamics` and the calibration chart. The built-in pair's
+// curve goes on both meshes of the published split-path gearbox; an own pair's drives a train of
+// that pair alone, as its stiffness table does (issue 41), never the built-in gearbox.
+void write_files(const StiffnessParameters& p, const kinematics::GearPairGeometry& pair,
+                 CommandContext& context, const dynamics::CaiFit& fit, std::size_t samples)
 {
   if (!(context.writes_files() && context.is_root()))
     return;
+  const bool builtin = kinematics::is_split_path_pair(p.settings.scene.pair);
   context.write_output(
-      "cai_calibrated.prm", "calibrated Cai parameters for `gearstiff dynamics` (both meshes)",
+      "cai_calibrated.prm",
+      builtin ? "calibrated Cai parameters for `gearstiff dynamics` (the split path's Mesh 1 and "
+                "Mesh 2)"
+              : "`gearstiff dynamics` input: this pair with its calibrated Cai curve",
       [&](std::ostream& out)
       {
         out << "# Cai curve calibrated to FE single-pair stiffness (gearstiff cai, " << samples
             << " samples, rms residual " << format_number(fit.rms_residual / 1e3, 6)
             << " N/mm).\n# Use: gearstiff dynamics cai_calibrated.prm\n"
-            << dynamics_cai_input(fit.parameters);
+            << (builtin ? dynamics_cai_input(fit.parameters)
+                        : own_pair_cai_input(p, pair, fit.parameters));
       });
   const TemporaryCsv sample_csv(context.report, "cai_samples");
   const TemporaryCsv curve_csv(context.report, "cai_curves");
@@ -173,6 +182,19 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   check_sweep_for_fit(p, fit_shape);
   const kinematics::GearPairGeometry pair = kinematics::compute_gear_pair(p.settings.scene.pair);
   const double contact_ratio = pair.transverse_contact_ratio;
+  // The curve is one spur pair's over ε_α (docs/references.md §1): a helical pair's contact line
+  // sweeps the face over ε_α + ε_β, its pairs' stiffnesses have another shape, and the samples
+  // beyond ε_α would be dropped. Refused before the (3D) sweep, with the way that does work.
+  if (p.settings.scene.pair.pinion.helix_angle != 0.)
+    throw InputError("Gear pair/Pinion/helix angle",
+                     "the Cai curve is a spur pair's stiffness over ε_α; a helical pair's pairs "
+                     "engage over ε_α + ε_β = " +
+                         format_number(pair.total_contact_ratio, 4) +
+                         ": drive `gearstiff dynamics` with the stiffness_table.prm of `gearstiff "
+                         "stiffness --set Stiffness/mode=sweep` instead");
+  // An own pair's file carries its blanks' inertias: refused before the sweep, not after it.
+  if (!kinematics::is_split_path_pair(p.settings.scene.pair))
+    check_own_pair_dynamics_input(p, pair);
   Report& report = context.report;
   report_input_sizes(report, p);
 
@@ -186,7 +208,7 @@ void run(dealii::ParameterHandler& prm, CommandContext& context)
   report_fit(report, p, pair, fit, fit_shape, samples.size(), sweep.positions.size());
   report_means(report, sweep, fit.parameters, paper, contact_ratio);
   add_cai_tables(report, samples, fit.parameters, paper, contact_ratio);
-  write_files(context, fit, samples.size());
+  write_files(p, pair, context, fit, samples.size());
 }
 
 const CommandRegistration registration(Command{

@@ -5,6 +5,7 @@
 #include "app/kinematics/kinematics_parameters.h"
 #include "app/scenes/fe_contact_parameters.h"
 #include "app/scenes/geometry_parameters.h"
+#include "dynamics/mesh_stiffness.h"
 #include "dynamics/train_model.h"
 #include "errors/errors.h"
 #include "errors/format.h"
@@ -384,21 +385,20 @@ void check_own_pair_dynamics_input(const StiffnessParameters& p,
   steel_blank_inertia(p.settings.scene.pair.wheel, "Wheel", pair);
 }
 
-std::string own_pair_dynamics_input(const StiffnessParameters& p,
-                                    const kinematics::GearPairGeometry& pair,
-                                    const stiffness::StiffnessSweepResult& sweep)
+namespace
+{
+// A whole `gearstiff dynamics` file for the own pair: two gears, one mesh, its stiffness given by
+// `stiffness_lines` (a k(x) table or a Cai curve) whose mean is `mean_stiffness` [N/m], at the
+// pinion torque `torque` [N·m]; `source` says where the stiffness came from (the header's lines).
+std::string own_pair_train_input(const StiffnessParameters& p,
+                                 const kinematics::GearPairGeometry& pair, double torque,
+                                 double mean_stiffness, const std::string& source,
+                                 const std::string& stiffness_lines)
 {
   const kinematics::GearPairSpec& spec = p.settings.scene.pair;
-  // The train runs at the torque its k(x) was solved at (a tip relief's k(x) depends on the
-  // load: the dynamics must see the k of the torque it applies).
-  const double torque = solved_torque(p, sweep);
   const double j1 = steel_blank_inertia(spec.pinion, "Pinion", pair);
   const double j2 = steel_blank_inertia(spec.wheel, "Wheel", pair);
   const double r_b1 = 0.5 * pair.pinion.base_diameter, r_b2 = 0.5 * pair.wheel.base_diameter;
-  double sum = 0.;
-  for (const auto& r : sweep.positions)
-    sum += r.mesh_stiffness;
-  const double mean_stiffness = sum / sweep.positions.size(); // N/m
   // The mesh's equivalent mass along the line of action and its resonance speed n_E1 (ISO
   // 6336-1 §6.3: the mesh frequency z1·n1/60 at the torsional mode's frequency √(k/m_e)/2π).
   const double equivalent_mass = j1 * j2 / (j1 * r_b2 * r_b2 + j2 * r_b1 * r_b1);
@@ -421,17 +421,7 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
       << format_number(spec.wheel.profile_shift, 4) << ", eps_alpha "
       << format_number(pair.transverse_contact_ratio, 6) << ", T1 " << format_number(torque, 6)
       << " N·m: two gears, one mesh.\n"
-      << (spec.pinion.helix_angle != 0.
-              ? "# Helical, beta " + format_number(std::abs(spec.pinion.helix_angle) / degree, 6) +
-                    " deg (beta_b " + format_number(pair.base_helix_angle / degree, 6) +
-                    " deg): k(x) acts along the transverse line of action (normal to the flank: "
-                    "k/cos^2 beta_b); the axial force and the tilting moment are not in the "
-                    "torsional model (dynamics/README.md, Helical meshes).\n"
-              : "")
-      << (sweep.torques.size() > 1
-              ? "# k(x) and T1 are the first torque's of Stiffness/torques (te_sweep.csv holds "
-                "every torque's k per position).\n"
-              : "")
+      << source
       << "# Inertias: steel blanks (7850 kg/m³) between bore and reference circle; damping: "
          "zeta = 0.05 of the mean k; friction: the FE's mu, arms r_b·tan(alpha_wt).\n"
       << "# Input speed: " << speed_ratio
@@ -454,10 +444,54 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
       << "\n  set damping = " << format_number(damping, 8) << "\n  set friction coefficient = "
       << format_number(p.settings.contact.friction_coefficient, 8)
       << "\n  set driver friction arm = " << format_number(arm_1 / mm, 8)
-      << "\n  set driven friction arm = " << format_number(arm_2 / mm, 8)
-      << "\n  set stiffness source = table\n  set stiffness table = "
-      << dynamics_stiffness_table(sweep) << "\nend\n";
+      << "\n  set driven friction arm = " << format_number(arm_2 / mm, 8) << "\n"
+      << stiffness_lines << "end\n";
   return out.str();
+}
+} // namespace
+
+std::string own_pair_dynamics_input(const StiffnessParameters& p,
+                                    const kinematics::GearPairGeometry& pair,
+                                    const stiffness::StiffnessSweepResult& sweep)
+{
+  const kinematics::GearPairSpec& spec = p.settings.scene.pair;
+  // The train runs at the torque its k(x) was solved at (a tip relief's k(x) depends on the
+  // load: the dynamics must see the k of the torque it applies).
+  const double torque = solved_torque(p, sweep);
+  double sum = 0.;
+  for (const auto& r : sweep.positions)
+    sum += r.mesh_stiffness;
+  const double mean_stiffness = sum / sweep.positions.size(); // N/m
+  const std::string source =
+      (spec.pinion.helix_angle != 0.
+           ? "# Helical, beta " + format_number(std::abs(spec.pinion.helix_angle) / degree, 6) +
+                 " deg (beta_b " + format_number(pair.base_helix_angle / degree, 6) +
+                 " deg): k(x) acts along the transverse line of action (normal to the flank: "
+                 "k/cos^2 beta_b); the axial force and the tilting moment are not in the "
+                 "torsional model (dynamics/README.md, Helical meshes).\n"
+           : "") +
+      std::string(sweep.torques.size() > 1
+                      ? "# k(x) and T1 are the first torque's of Stiffness/torques (te_sweep.csv "
+                        "holds every torque's k per position).\n"
+                      : "");
+  return own_pair_train_input(p, pair, torque, mean_stiffness, source,
+                              "  set stiffness source = table\n  set stiffness table = " +
+                                  dynamics_stiffness_table(sweep) + "\n");
+}
+
+std::string own_pair_cai_input(const StiffnessParameters& p,
+                               const kinematics::GearPairGeometry& pair,
+                               const dynamics::CaiParameters& cai)
+{
+  const double mean_stiffness =
+      dynamics::MeshStiffness::cai(cai, "cai").mean_stiffness(pair.transverse_contact_ratio);
+  return own_pair_train_input(
+      p, pair, p.settings.pinion_torque, mean_stiffness,
+      "# Mesh stiffness: the Cai curve calibrated to this pair's FE pair stiffnesses (gearstiff "
+      "cai).\n",
+      "  set stiffness source = cai\n  set stiffness = " + format_number(cai.scale / 1e3, 10) +
+          "\n  set cai shape = " + format_number(cai.shape[0], 10) + ", " +
+          format_number(cai.shape[1], 10) + ", " + format_number(cai.shape[2], 10) + "\n");
 }
 
 std::string dynamics_cai_input(const dynamics::CaiParameters& cai)

@@ -64,6 +64,11 @@ std::string own_pair_dynamics_input(const StiffnessParameters& p,
                                     const kinematics::GearPairGeometry& pair,
                                     const stiffness::StiffnessSweepResult& sweep);
 std::string dynamics_cai_input(const dynamics::CaiParameters& cai);
+// The same file as own_pair_dynamics_input with the calibrated Cai curve on its mesh (`gearstiff
+// cai` of an own pair), at Gear pair scene/pinion torque.
+std::string own_pair_cai_input(const StiffnessParameters& p,
+                               const kinematics::GearPairGeometry& pair,
+                               const dynamics::CaiParameters& cai);
 // Before a sweep of an own pair: the steel-blank inertias own_pair_dynamics_input will need
 // (InputError naming Gear pair/Pinion|Wheel/bore diameter), so that bad input is refused before
 // any work, not after the sweep while its files are written.
