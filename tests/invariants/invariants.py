@@ -740,6 +740,45 @@ def own_train(case, runner, log, sweeps):
         f"{value(dynamics, 'mesh1_kv_max'):.5f})")
     own_train_nonlinear(runner, log, sweep, out, table_file, speed)
     own_outputs_as_inputs(runner, log, out, table_file)
+    own_cai_train(case, runner, log, sweep)
+
+
+def own_cai_train(case, runner, log, sweep):
+    """`gearstiff cai` on the case's pair fits its curve to the same FE sweep as `stiffness`'s
+    once sweep (the same settings and positions: its FE mean k is that sweep's mean to the
+    printed digits, 1e-9), and its cai_calibrated.prm runs this pair alone in `gearstiff
+    dynamics` (until session 49 it put the curve on the built-in split-path gearbox): the mesh
+    frequency z1*n1/60 and the calibrated curve's mean stiffness over this pair's eps_alpha
+    (cai_mean_mesh_stiffness; the scale carried with 10 digits: 1e-6)."""
+    out = os.path.join(runner.work, f"cai-{case['pair']['Gear pair/Pinion/teeth']}")
+    sets = sweep_sets(case, SWEEP_POSITIONS, "once")
+    del sets["Stiffness/mode"]
+    cai, _, _ = runner.run("cai", sets, out=out)
+    k = [r["stiffness"] for r in table(sweep, "stiffness_sweep")]
+    check_close("cai's FE mean k = the stiffness sweep's [N/um]",
+                value(cai, "fe_mean_mesh_stiffness"), sum(k) / len(k), 0., 1e-9)
+    prm = os.path.join(out, "cai_calibrated.prm")
+    with open(prm) as f:
+        text = f.read()
+    z1 = int(case["pair"]["Gear pair/Pinion/teeth"])
+    if f"z {z1}/" not in text or "subsection Mesh 2" in text:
+        raise CaseFailure(f"cai_calibrated.prm is not this pair's one-mesh train:\n{text[:600]}")
+    speed = 1000.
+    process = runner.timed([runner.gearstiff, "dynamics", prm, "--json", "--quiet",
+                            "--set", f"Train/input speed={speed:g}",
+                            "--set", "Speed sweep/points=0"])
+    if process.returncode != 0:
+        raise CaseFailure(f"dynamics on cai_calibrated.prm exited {process.returncode}: "
+                          f"{process.stderr.strip()[-600:]}")
+    dynamics = json.loads(process.stdout)
+    check_close("cai train mesh frequency [Hz]", value(dynamics, "mesh_frequency"),
+                z1 * speed / 60., 0., 1e-9)
+    check_close("cai train mean k = the curve's [N/um]", value(dynamics, "mesh1_mean_stiffness"),
+                value(cai, "cai_mean_mesh_stiffness"), 0., 1e-6)
+    log(f"own cai: the FE mean {value(cai, 'fe_mean_mesh_stiffness'):.6g} N/um = the sweep's; "
+        f"the calibrated curve (scale {value(cai, 'cai_scale'):.5g} N/um, relative rms "
+        f"{value(cai, 'fit_relative_rms'):.3g}) drives this pair, mean k "
+        f"{value(dynamics, 'mesh1_mean_stiffness'):.6g} N/um")
 
 
 def own_outputs_as_inputs(runner, log, out, table_file):
