@@ -189,11 +189,11 @@ std::vector<std::string> read_parameter_file(dealii::ParameterHandler& prm, cons
   try
   {
     // Names only other commands declare were listed above; deal.II skips them.
-    std::istringstream renamed_text(text);
-    if (renamed.empty())
-      prm.parse_input(file, "", !others.ignored.empty(), true);
-    else if (json)
+    std::istringstream renamed_text(json ? json_names_for_deal_ii(text) : text);
+    if (json)
       prm.parse_input_from_json(renamed_text, !others.ignored.empty());
+    else if (renamed.empty())
+      prm.parse_input(file, "", !others.ignored.empty(), true);
     else
       prm.parse_input(renamed_text, file, "", !others.ignored.empty());
   }

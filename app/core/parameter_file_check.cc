@@ -6,6 +6,7 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <cctype>
+#include <sstream>
 
 namespace gearstiff::app
 {
@@ -81,5 +82,40 @@ void check_json_parameter_file(const std::string& file)
                          "dynamics` as that folder's stiffness_table.prm, or through Train mesh "
                          "n/stiffness file)");
   check_node(tree, "");
+}
+namespace
+{
+std::string mangled_underscores(const std::string& name)
+{
+  std::string out;
+  for (const char c : name)
+    out += c == '_' ? std::string("_5f") : std::string(1, c);
+  return out;
+}
+
+ptree with_mangled_names(const ptree& tree)
+{
+  ptree out(tree.data());
+  for (const auto& [name, child] : tree)
+    out.push_back({mangled_underscores(name), with_mangled_names(child)});
+  return out;
+}
+} // namespace
+
+std::string json_names_for_deal_ii(const std::string& text)
+{
+  ptree tree;
+  try
+  {
+    std::istringstream in(text);
+    boost::property_tree::read_json(in, tree);
+  }
+  catch (const boost::property_tree::json_parser_error&)
+  {
+    return text;
+  }
+  std::ostringstream out;
+  boost::property_tree::write_json(out, with_mangled_names(tree));
+  return out.str();
 }
 } // namespace gearstiff::app

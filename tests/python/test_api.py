@@ -134,8 +134,8 @@ def test_dict_equals_set_and_prm_file(tmp_path):
     for path in (str(prm), prm):
         assert_same_as_cli(gearstiff.gear_pair(path), cli_json("gear-pair", str(prm)),
                            MEASURED_TIMES["gear-pair"])
-    # (The parameters.json the command line writes is not read back by deal.II 9.4 when a
-    # name holds '_' (ISO 6336/C_M): the dict in result["parameters"] is the way back.)
+    # (The parameters.json the command line writes reads back too since session 49: deal.II 9.4
+    # read a name holding '_', ISO 6336/C_M, as mangled; tests/cli/parameters_round_trip.py.)
     # The keys as `--set` spells them (a new user's first try, session 19), flat or mixed.
     flat = {"Gear pair/Pinion/face width": 30, "Gear pair/Pinion/profile shift": 0.25,
             "Gear pair": {"Wheel/profile shift": -0.25}}
