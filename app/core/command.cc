@@ -5,6 +5,8 @@
 #include "errors/file_names.h"
 
 #include <algorithm>
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 #include <array>
 #include <cerrno>
 #include <chrono>
@@ -214,6 +216,79 @@ StagedOutput::StagedOutput(const std::string& directory_, MPI_Comm communicator)
     set_staging_to_remove(staging);
 }
 
+namespace
+{
+// The command and the files that a run's summary.json names (empty if the folder has none, or
+// one gearstiff did not write).
+struct RunFiles
+{
+  std::string command;
+  std::vector<std::string> files;
+};
+
+RunFiles run_files(const fs::path& summary)
+{
+  RunFiles run;
+  std::error_code error;
+  if (!fs::is_regular_file(summary, error))
+    return run;
+  try
+  {
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(summary.string(), tree);
+    run.command = tree.get<std::string>("command", "");
+    if (const auto files = tree.get_child_optional("files"))
+      for (const auto& entry : *files)
+        run.files.push_back(entry.second.data());
+  }
+  catch (const std::exception&)
+  {
+    return {};
+  }
+  return run;
+}
+
+// Into an existing folder that holds an earlier run's results: that run's files which this one
+// does not write are removed when it was the same command (they would sit beside these as if
+// this run had written them: a sweep's stiffness_table.prm and te_map.csv beside a later
+// single position's summary, found 2026-12-07); another command's results are kept, and a note
+// says whose they are. Files the summary does not name (the user's own) are never touched.
+void settle_earlier_results(const fs::path& folder, const fs::path& staging)
+{
+  const RunFiles earlier = run_files(folder / "summary.json");
+  if (earlier.command.empty())
+    return;
+  const RunFiles now = run_files(staging / "summary.json");
+  const std::string where = "-o " + folder.string();
+  if (earlier.command != now.command)
+  {
+    std::cerr << "gearstiff: note: " << where << " held the results of `gearstiff "
+              << earlier.command << "`; files of the same names are replaced, its others kept\n";
+    return;
+  }
+  std::vector<std::string> removed;
+  for (const std::string& file : earlier.files)
+  {
+    std::error_code error;
+    const fs::path name(file);
+    if (file.empty() || name.has_parent_path() || fs::exists(staging / name, error) ||
+        !fs::is_regular_file(folder / name, error))
+      continue;
+    if (fs::remove(folder / name, error))
+      removed.push_back(file);
+  }
+  if (removed.empty())
+    return;
+  std::string listed;
+  for (std::size_t i = 0; i < removed.size() && i < 4; ++i)
+    listed += (i == 0 ? "" : ", ") + removed[i];
+  std::cerr << "gearstiff: note: " << where << ": removed " << removed.size()
+            << " file(s) of the earlier `gearstiff " << earlier.command
+            << "` run there that this run does not write (" << listed
+            << (removed.size() > 4 ? ", ..." : "") << ")\n";
+}
+} // namespace
+
 StagedOutput::~StagedOutput()
 {
   if (committed)
@@ -247,7 +322,9 @@ void StagedOutput::commit()
   }
   else
   {
-    // An existing folder: its files of the same names are replaced, others kept.
+    // An existing folder: its files of the same names are replaced; an earlier run's other
+    // results go when they were the same command's, others are kept.
+    settle_earlier_results(directory, staging);
     for (const auto& entry : fs::directory_iterator(staging))
     {
       const fs::path target = fs::path(directory) / entry.path().filename();

@@ -10,7 +10,11 @@ Checks, each on a fresh folder:
   3. a failure after parsing (bad value found by the command) leaves no -o folder;
   4. a success creates the folder with its files, also under MPI with 2 ranks (rank 0 writes);
   5. a folder given as the parameter file is named as a folder, a 200 kB value is not echoed
-     whole. Stdlib only.
+     whole;
+  6. a run into a folder that holds the same command's earlier results removes the files of
+     that run it does not write itself (a sweep's table beside a later run's summary, found
+     2026-12-07), with a note naming them, and keeps the user's own files and another command's
+     results (a note says whose). Stdlib only.
 """
 import os
 import shlex
@@ -115,6 +119,32 @@ def success_case(binary, work, launcher, name):
           f"{name}: a second run into the existing folder succeeds")
 
 
+def earlier_results_case(binary, work):
+    folder = fresh(work, "earlier")
+    out = os.path.join(folder, "out")
+    dynamics = [binary, "dynamics", "-o", out, "--quiet", "--set", "Speed sweep/points="]
+    proc = subprocess.run(dynamics[:-1] + [dynamics[-1] + "3"], capture_output=True, text=True,
+                          timeout=120)
+    check(proc.returncode == 0 and os.path.isfile(os.path.join(out, "dynamics_speed_sweep.csv")),
+          "earlier: a speed sweep writes dynamics_speed_sweep.csv")
+    with open(os.path.join(out, "my_notes.txt"), "w") as f:
+        f.write("the user's own file\n")
+    proc = subprocess.run(dynamics[:-1] + [dynamics[-1] + "0"], capture_output=True, text=True,
+                          timeout=120)
+    files = sorted(os.listdir(out))
+    check(proc.returncode == 0 and "dynamics_speed_sweep.csv" not in files and
+          "dynamics_resonance.png" not in files and "my_notes.txt" in files and
+          "removed 2 file(s) of the earlier `gearstiff dynamics` run" in proc.stderr,
+          f"earlier: the same command's stale results removed, the user's file kept ({files}; "
+          f"{proc.stderr.strip()[-300:]})")
+    proc = subprocess.run([binary, "gear-pair", "-o", out, "--quiet"], capture_output=True,
+                          text=True, timeout=60)
+    files = sorted(os.listdir(out))
+    check(proc.returncode == 0 and "dynamics_time_series.csv" in files and
+          "held the results of `gearstiff dynamics`" in proc.stderr,
+          f"earlier: another command's results kept with a note ({proc.stderr.strip()[-300:]})")
+
+
 def message_cases(binary, work):
     folder = fresh(work, "messages")
     proc = subprocess.run([binary, "kinematics", folder], capture_output=True, text=True,
@@ -150,6 +180,7 @@ def main():
     if launcher:
         success_case(binary, work, launcher, "success_mpi")
     message_cases(binary, work)
+    earlier_results_case(binary, work)
     print(f"{len(FAILURES)} failure(s)")
     return 1 if FAILURES else 0
 
