@@ -185,15 +185,19 @@ FaultSweepResult fault_sweep(MPI_Comm mpi_communicator, const GearMeshStiffnessS
   // The energy method beside the FE: where its section rule has no material left (a crack
   // past the centre line under a thin tip), it fails and the FE rows stand alone.
   std::vector<EnergyPosition> energy_healthy(positions.size()), energy_faulty(positions.size());
-  try
-  {
-    energy_healthy = energy_mesh_stiffness(scenes.healthy.scene, positions);
-    energy_faulty = energy_mesh_stiffness(scenes.faulty.scene, positions);
-  }
-  catch (const SolverFailure& failure)
-  {
-    result.energy_failure = failure.what();
-  }
+  // The method's ring is not modelled: a faulty planet in its ring has the FE alone.
+  if (settings.scene.pair.wheel.internal)
+    result.energy_failure = "the energy method models external pairs only";
+  else
+    try
+    {
+      energy_healthy = energy_mesh_stiffness(scenes.healthy.scene, positions);
+      energy_faulty = energy_mesh_stiffness(scenes.faulty.scene, positions);
+    }
+    catch (const SolverFailure& failure)
+    {
+      result.energy_failure = failure.what();
+    }
   std::vector<bool> lost(positions.size());
   std::vector<int> carrying_count(positions.size());
   for (unsigned int i = 0; i < positions.size(); ++i)
