@@ -44,15 +44,21 @@ SceneContact loaded_contact(const CycloidSceneSpec& spec, double first_curvature
 }
 
 // The output pins in their holes (see the header): bodies, and one contact each where the pin
-// meets its hole (on the side away from the disc centre's offset).
+// meets its hole (on the side away from the disc centre's offset, or where the pins' turn
+// output_pin_turn has moved it).
 void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_centre,
                      PlanarModel& model, std::vector<SceneContact>& contacts)
 {
-  const Eigen::Vector2d towards = -disc_centre.normalized(); // from each hole to its pin centre
-  const double play = spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity;
+  const Eigen::Vector2d away = -disc_centre.normalized(); // from a hole to its unturned pin
   for (unsigned int j = 0; j < spec.output_pins; ++j)
   {
+    const Eigen::Vector2d hole = output_hole_centre(spec, j, disc_centre);
     const Eigen::Vector2d centre = output_pin_centre(spec, j);
+    // Unturned, the offset is −C: taken as such, not from the difference of the centres, whose
+    // round-off moved a regression value by 7e-6 (a mesh that differs in its last digits).
+    const Eigen::Vector2d offset =
+        spec.output_pin_turn == 0. ? spec.ring.eccentricity * away : Eigen::Vector2d(centre - hole);
+    const Eigen::Vector2d towards = offset.norm() > 1e-9 ? offset.normalized() : away;
     PlanarBody pin;
     pin.name = "output pins";
     pin.material_id = cycloid_ids::output_pin_body;
@@ -66,7 +72,9 @@ void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_c
                                           spec.output_pin_radius, spec.pin_force);
     contact.point = centre + spec.output_pin_radius * towards;
     contact.normal = -towards; // out of the disc (the hole wall) into the hole
-    contact.gap = play;
+    contact.gap = spec.output_pin_turn == 0.
+                      ? spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity
+                      : spec.output_pin_hole_radius - spec.output_pin_radius - offset.norm();
     contact.first_feature = static_cast<int>(j);
     contact.second_feature = static_cast<int>(j);
     contacts.push_back(contact);
@@ -252,7 +260,7 @@ PlanarBody disc_body(const CycloidSceneSpec& spec, const ToothProfile& lobe,
   body.outer.pieces.push_back(outline);
   body.holes.push_back(circle_loop(place.centre, spec.bore_radius, scene_ids::first_bore));
   for (unsigned int j = 0; j < spec.output_pins; ++j)
-    body.holes.push_back(circle_loop(place.centre + output_pin_centre(spec, j),
+    body.holes.push_back(circle_loop(output_hole_centre(spec, j, place.centre),
                                      spec.output_pin_hole_radius, scene_ids::output_pin_holes));
   return body;
 }
@@ -338,7 +346,16 @@ std::vector<SceneQuantity> cycloid_quantities(const CycloidSceneSpec& spec, unsi
 Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin)
 {
   return spec.output_pin_circle_radius *
-         unit(spec.disc_rotation + spec.output_pin_phase + 2. * M_PI * pin / spec.output_pins);
+         unit(spec.disc_rotation + spec.output_pin_phase + spec.output_pin_turn +
+              2. * M_PI * pin / spec.output_pins);
+}
+
+Eigen::Vector2d output_hole_centre(const CycloidSceneSpec& spec, unsigned int pin,
+                                   const Eigen::Vector2d& disc_centre)
+{
+  return disc_centre +
+         spec.output_pin_circle_radius *
+             unit(spec.disc_rotation + spec.output_pin_phase + 2. * M_PI * pin / spec.output_pins);
 }
 
 SceneInfo write_cycloid_scene(const CycloidSceneSpec& spec, const std::string& file)

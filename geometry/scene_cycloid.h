@@ -49,6 +49,9 @@ struct CycloidSceneSpec
   double roller_pin_radius = 4e-3;         // m, pin inside each roller
   // rad, polar angle of hole 0 in the disc frame (the holes turn with the disc by ψ).
   double output_pin_phase = 0.;
+  // rad, the pins alone turned about the ring centre against their holes (the holes stay with
+  // the disc): the turn that closes their play before the load comes on (stiffness/cycloid_loads).
+  double output_pin_turn = 0.;
   bool output_pin_bodies = false;       // mesh the output pins in their holes
   double output_pin_radius = 9e-3;      // m, hole radius − e: no play (not published)
   double output_pin_bore_radius = 4e-3; // m, bore of each pin, held by the output member
@@ -64,8 +67,12 @@ struct CycloidSceneSpec
 };
 
 // The centre of output pin j (m, ring frame): the hole's vector from the disc centre, turned by
-// the disc rotation, from the ring centre.
+// the disc rotation, from the ring centre, and turned by output_pin_turn about it.
 Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin);
+// The centre of hole j in the disc (m, ring frame) for the disc centre `disc_centre`: where pin j
+// sits without output_pin_turn, offset by the disc centre.
+Eigen::Vector2d output_hole_centre(const CycloidSceneSpec& spec, unsigned int pin,
+                                   const Eigen::Vector2d& disc_centre);
 
 // Checks the spec (InputError naming "Cycloid scene/..." or "Cycloid disc/..." before gmsh
 // runs), meshes, writes `file`.

@@ -82,6 +82,13 @@ double line_contact_approach(double force, double length, double r1, double r2, 
 double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign,
                         double overlap = 0.);
 
+// The smallest turn of the output pins alone about the ring centre (rad, ≥ 0; in the sense of
+// the torque's sign), their holes held, that closes the first pin's play hole − pin − e, plus
+// `overlap` (m) of closure at that pin: 0 without play. SolverFailure if no pin closes within a
+// pin pitch.
+double pin_closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_sign,
+                            double overlap = 0.);
+
 // The analytic distribution for the scene's geometry (ring, disc profile, crank position, output
 // pins) under the output torque `output_torque` (N·m, counter-clockwise on the output member;
 // either sign). `roller_young_modulus` (Pa; ≤ 0: the scene's) lets the rollers be softer than

@@ -327,12 +327,12 @@ CycloidLoads<dim>::CycloidLoads(const CycloidLoadSettings& given) : settings(giv
   // output member rigidly through the clearance first is the same rigid motion the drive makes
   // when the load comes on.
   closed_scene = settings.scene;
+  const double sign = settings.output_torque > 0. ? 1. : -1.;
   if (settings.scene.disc.rollers != 0)
   {
     // The closest roller is closed by a fifth of the overlap tolerance beyond touching: the
     // meshed outlines differ from the exact ones by fractions of a micrometre, and a roller left
     // at a tiny positive gap would not be in the solver's initial active set.
-    const double sign = settings.output_torque > 0. ? 1. : -1.;
     scene_rotation =
         sign * closing_rotation(settings.scene, sign, 0.2 * settings.contact.overlap_tolerance);
     closed_scene.disc.rotation += scene_rotation;
@@ -341,6 +341,15 @@ CycloidLoads<dim>::CycloidLoads(const CycloidLoadSettings& given) : settings(giv
     // the solve undoes: the overlap is a gap of −1 µm that the contact pushes open).
     result.closing_rotation = sign * closing_rotation(settings.scene, sign);
   }
+  // Output pins with play (hole − pin − e > 0, which the scene parameters allow) touch no hole at
+  // the nominal placement either, and the output member was free ("the body with material id 3
+  // is free to move", exit 3, on any play until 2026-12-07): the pins alone are turned through
+  // their play as well (from the rollers' closed placement), against holes that stay with the
+  // disc, and that turn is backlash too.
+  pin_turn =
+      sign * pin_closing_rotation(closed_scene, sign, 0.2 * settings.contact.overlap_tolerance);
+  closed_scene.output_pin_turn = pin_turn;
+  result.closing_rotation += sign * pin_closing_rotation(closed_scene, sign);
 }
 
 template <int dim>
@@ -501,7 +510,7 @@ void CycloidLoads<dim>::evaluate()
   result.disc_force_balance = (support_force + on_disc).norm() / result.bearing_force;
   result.disc_moment_balance = std::abs(disc_moment) / std::abs(torque);
   result.output_moment_balance = std::abs(output_moment + torque) / std::abs(torque);
-  result.output_rotation = scene_rotation + output.rotation;
+  result.output_rotation = scene_rotation + pin_turn + output.rotation;
   result.disc_rotation_load = scene_rotation + bearing.rotation;
   result.disc_von_mises =
       max_von_mises(problem->system(), problem->solution(), geometry::scene_ids::first_body);
@@ -537,7 +546,7 @@ std::vector<LoopPoint> CycloidLoads<dim>::trace_loop(const std::vector<LoopTarge
   };
   double theta = start_rotation, torque = output_torque();
   std::vector<LoopPoint> points{
-      {torque, scene_rotation + theta, targets.empty() ? 0 : targets[0].branch}};
+      {torque, scene_rotation + pin_turn + theta, targets.empty() ? 0 : targets[0].branch}};
   int previous_direction = 0;
   for (const LoopTarget& target : targets)
   {
@@ -558,7 +567,7 @@ std::vector<LoopPoint> CycloidLoads<dim>::trace_loop(const std::vector<LoopTarge
       if ((now - torque) * direction > 0.)
         stiffness = (now - torque) / step;
       torque = now;
-      points.push_back({torque, scene_rotation + theta, target.branch});
+      points.push_back({torque, scene_rotation + pin_turn + theta, target.branch});
     }
   }
   return points;

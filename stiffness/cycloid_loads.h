@@ -258,6 +258,7 @@ private:
   // rotation.
   geometry::CycloidSceneSpec closed_scene;
   double scene_rotation = 0.; // rad, the turn of closed_scene against settings.scene
+  double pin_turn = 0.;       // rad, the output pins' further turn through their play
   std::unique_ptr<contact::ContactProblem<dim>> problem;
   std::vector<unsigned int> roller_pairs, pin_pairs; // contact pair index of each roller / pin
   CycloidLoadResult result;

@@ -8,6 +8,7 @@
 #include "stiffness/cycloid_loads.h"
 #include "tests/stiffness/work_file.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
@@ -98,6 +99,50 @@ TEST(CycloidAnalytic, FeMatchesInTheRigidDiscLimit)
 // r on the tangential residual), and no roller overlaps. Between the two senses the disc turns
 // through the whole backlash; the flank the correction keeps (δ turns the profile onto it)
 // touches almost at once, the other one only after about 2δ.
+// Output pins with play (hole − pin − e = 0.5 mm on the built-in drive, pin radius 8.5 mm): the
+// pins alone turned by pin_closing_rotation touch their holes exactly (the centres' distance is
+// hole − pin), and a hair less leaves every pin open; the path's part across the disc centre's
+// offset closes the play sooner than the lever's linear estimate play/w_max (31.64 and 31.60
+// against 31.68 arcmin on this drive). Without play (0 up to round-off of hole − pin − e), 0.
+TEST(CycloidAnalytic, PinClosingRotationTouchesExactly)
+{
+  geometry::CycloidSceneSpec scene = nominal_scene();
+  EXPECT_EQ(pin_closing_rotation(scene, 1.), 0.);
+  scene.output_pin_radius = 8.5e-3;
+  const double reach = scene.output_pin_hole_radius - scene.output_pin_radius;
+  // The disc centre C as the scene places it at ψ (geometry/scene_cycloid.cc DiscPlacement).
+  const double psi = scene.disc_rotation;
+  const Eigen::Vector2d centre = -scene.ring.eccentricity *
+                                 Eigen::Vector2d(std::cos(-double(scene.ring.rollers - 1) * psi),
+                                                 std::sin(-double(scene.ring.rollers - 1) * psi));
+  const auto farthest = [&](double turn)
+  {
+    double largest = 0.;
+    for (unsigned int j = 0; j < scene.output_pins; ++j)
+    {
+      const Eigen::Vector2d c = geometry::output_pin_centre(scene, j);
+      largest = std::max(largest, (Eigen::Rotation2Dd(turn) * c - c - centre).norm());
+    }
+    return largest;
+  };
+  double largest_lever = 0.;
+  for (unsigned int j = 0; j < scene.output_pins; ++j)
+  {
+    const Eigen::Vector2d c = geometry::output_pin_centre(scene, j), u = -centre.normalized();
+    largest_lever = std::max(largest_lever, c.x() * u.y() - c.y() * u.x());
+  }
+  for (const double sign : {1., -1.})
+  {
+    const double theta = pin_closing_rotation(scene, sign);
+    EXPECT_NEAR(farthest(sign * theta), reach, 1e-12) << "sense " << sign;
+    EXPECT_LT(farthest(sign * theta * (1. - 1e-6)), reach) << "sense " << sign;
+    EXPECT_LT(theta, 0.5e-3 / largest_lever) << "sense " << sign;
+    std::cout << "pin closing rotation, sense " << sign << ": " << theta * 180. / M_PI * 60.
+              << " arcmin (play / largest lever " << 0.5e-3 / largest_lever * 180. / M_PI * 60.
+              << ")" << std::endl;
+  }
+}
+
 TEST(CycloidAnalytic, ClosingRotationTouchesExactly)
 {
   geometry::CycloidSceneSpec scene = nominal_scene();
