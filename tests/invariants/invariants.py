@@ -758,7 +758,7 @@ def own_cai_train(case, runner, log, sweep):
     check_close("cai's FE mean k = the stiffness sweep's [N/um]",
                 value(cai, "fe_mean_mesh_stiffness"), sum(k) / len(k), 0., 1e-9)
     # The report says when the curve misses the FE mean by more than 5 % (scale-only fits of
-    # relieved pairs: +10 ... +16 %), and only then.
+    # relieved pairs: +5 ... +16 % on cases 3, 7, 11, 15), and only then.
     deviation = value(cai, "cai_mean_mesh_stiffness") / value(cai, "fe_mean_mesh_stiffness") - 1.
     if (abs(deviation) > 0.05) != ("fit check" in cai.get("text", {})):
         raise CaseFailure(f"cai: the curve's mean is {deviation:+.2%} off the FE's, its fit check "
