@@ -1,6 +1,7 @@
 #include "geometry/abaqus_deck.h"
 
 #include "errors/errors.h"
+#include "errors/format.h"
 #include "errors/io.h"
 #include "geometry/fields.h"
 
@@ -539,6 +540,20 @@ AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPair
   return deck;
 }
 
+void check_cycloid_deck_play(const CycloidSceneSpec& spec)
+{
+  // Step 1 turns the output member by a tenth of its elastic rotation, which closes no play:
+  // ccx would find the member free. cycloid-loads turns the pins through their play first
+  // (stiffness/cycloid_loads.cc); the deck does not.
+  const double play = spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity;
+  if (play > 1e-9)
+    throw InputError(field::cycloid_scene("output_pin_radius"),
+                     "the CalculiX deck closes no output-pin play (hole − pin − e = " +
+                         format_number(play * 1e3, 4) +
+                         " mm): ccx would find the output member free; the deck needs pin + e = "
+                         "hole (`gearstiff cycloid-loads` solves a drive with play)");
+}
+
 AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& info,
                                  const double output_torque, const double penalty_factor)
 {
@@ -551,6 +566,7 @@ AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& 
   if (!(std::abs(output_torque) > 0.) || !std::isfinite(output_torque))
     throw InputError(field::deck("output_torque"),
                      "must not be zero: without a torque nothing is loaded (N·m)");
+  check_cycloid_deck_play(spec);
   // Frictionless, plane stress: the load case of stiffness/cycloid_loads.h.
   AbaqusDeckSpec deck =
       common_deck_spec(info, spec.young_modulus, spec.poisson_ratio, 0., penalty_factor);
@@ -570,7 +586,7 @@ AbaqusDeckSpec cycloid_deck_spec(const CycloidSceneSpec& spec, const SceneInfo& 
   for (unsigned int j = 0; j < spec.output_pins; ++j)
   {
     pins.push_back(output_pin_centre(spec, j));
-    holes.push_back(info.first_centre + pins.back());
+    holes.push_back(output_hole_centre(spec, j, info.first_centre));
   }
   const auto add_pair =
       [&deck](const std::string& slave, int slave_id,

@@ -132,6 +132,11 @@ struct AbaqusDeckSpec
 AbaqusDeckSpec gear_pair_deck_spec(const GearPairSceneSpec& spec, const GearPairScene& scene,
                                    double friction, double penalty_factor);
 
+// A cycloid scene's deck closes no output-pin play: InputError naming the pin radius when the
+// scene has play (hole − pin − e above a nanometre). Checked before meshing and by
+// cycloid_deck_spec.
+void check_cycloid_deck_play(const CycloidSceneSpec& spec);
+
 // The deck for the cycloid scene (geometry/scene_cycloid.h, with its output pins meshed), the
 // load case of stiffness/cycloid_loads.h: the disc bore a rigid body whose centre is held and
 // which turns freely (the eccentric bearing), the roller pins fixed, every output-pin bore on one

@@ -8,6 +8,7 @@
 #include "app/scenes/geometry_parameters.h"
 #include "app/scenes/scene.h"
 #include "errors/errors.h"
+#include "geometry/abaqus_deck.h"
 #include "stiffness/cycloid_analytic.h"
 
 #include <cmath>
@@ -49,7 +50,11 @@ public:
   }
 
   // The cycloid deck ties the output pins to the output member: mesh them in their holes.
-  void prepare_for_deck() override { spec.output_pin_bodies = true; }
+  void prepare_for_deck() override
+  {
+    spec.output_pin_bodies = true;
+    geometry::check_cycloid_deck_play(spec); // before meshing, not after
+  }
 };
 
 // The roller and pin forces the contact cells are sized for: given, or the case's own load as
