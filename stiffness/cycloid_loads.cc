@@ -75,6 +75,15 @@ std::vector<Eigen::Vector2d> roller_centres(const geometry::CycloidDiscSpec& rin
   return centres;
 }
 
+// Play between the flanks: a corrected disc profile, or output pins with play in their holes
+// (hole − pin − e above a nanometre, as pin_closing_rotation counts it). The loop is then traced
+// flank by flank: crossing the play no torque-controlled step can do.
+bool has_play(const geometry::CycloidSceneSpec& scene)
+{
+  return scene.disc.rollers != 0 ||
+         scene.output_pin_hole_radius - scene.output_pin_radius - scene.ring.eccentricity > 1e-9;
+}
+
 std::vector<Eigen::Vector2d> pin_centres(const geometry::CycloidSceneSpec& scene)
 {
   std::vector<Eigen::Vector2d> centres;
@@ -530,10 +539,10 @@ std::vector<LoopPoint> CycloidLoads<dim>::trace_loop(const std::vector<LoopTarge
   double stiffness = // N·m/rad
       m / std::abs(analytic_cycloid_loads(nominal, m, settings.roller_material.youngs_modulus)
                        .output_rotation);
-  // A profile with play starts closed by the pre-closure (a small torque); the nominal one
-  // touches every roller at no load, so it starts a tenth of M_c into its sense.
+  // A drive with play starts closed by the pre-closure (a small torque); without play it
+  // touches every roller and pin at no load, so it starts a tenth of M_c into its sense.
   rotation_control = true;
-  start_rotation = settings.scene.disc.rollers == 0 ? sign * 0.1 * m / stiffness : 0.;
+  start_rotation = has_play(settings.scene) ? 0. : sign * 0.1 * m / stiffness;
   make_scene();
   setup_problem();
   solve();
@@ -633,7 +642,7 @@ CycloidHysteresis cycloid_hysteresis(const CycloidLoadSettings& base)
     for (unsigned int k = 1; k < path.size(); ++k)
       targets.push_back({path[k] * m, branch});
   };
-  if (base.scene.disc.rollers == 0)
+  if (!has_play(base.scene))
   {
     std::vector<LoopTarget> targets;
     for (const double l : levels)
