@@ -72,9 +72,10 @@ void add_output_pins(const CycloidSceneSpec& spec, const Eigen::Vector2d& disc_c
                                           spec.output_pin_radius, spec.pin_force);
     contact.point = centre + spec.output_pin_radius * towards;
     contact.normal = -towards; // out of the disc (the hole wall) into the hole
-    contact.gap = spec.output_pin_turn == 0.
-                      ? spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity
-                      : spec.output_pin_hole_radius - spec.output_pin_radius - offset.norm();
+    contact.gap =
+        spec.output_pin_turn == 0.
+            ? spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity
+            : spec.output_pin_hole_radius - spec.output_pin_radius - offset.norm();
     contact.first_feature = static_cast<int>(j);
     contact.second_feature = static_cast<int>(j);
     contacts.push_back(contact);

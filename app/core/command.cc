@@ -5,9 +5,9 @@
 #include "errors/file_names.h"
 
 #include <algorithm>
+#include <array>
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
-#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>

@@ -129,15 +129,17 @@ void report_means(Report& report, const stiffness::StiffnessSweepResult& sweep,
   // turned negative at the ends of case 7's pair (exit 3). Beyond 5 % the report says so.
   const double deviation = calibrated_mean / mean - 1.;
   if (std::abs(deviation) > 0.05)
-    report.add_text("fit check",
-                    std::string("the calibrated curve's mean mesh stiffness is ") +
-                        (deviation > 0. ? "+" : "") + format_number(100. * deviation, 3) +
-                        " % off the FE's: the Cai shape does not describe this pair's k(θ)" +
-                        (fit_shape ? "" : "; Cai calibration/fit shape = true fits its shape too "
-                                          "(a quadratic, which a relieved pair's k(θ) need not "
-                                          "allow: exit 3 then)") +
-                        ", or drive `gearstiff dynamics` with the FE table, the stiffness_table.prm "
-                        "of `gearstiff stiffness`");
+    report.add_text(
+        "fit check",
+        std::string("the calibrated curve's mean mesh stiffness is ") +
+            (deviation > 0. ? "+" : "") + format_number(100. * deviation, 3) +
+            " % off the FE's: the Cai shape does not describe this pair's k(θ)" +
+            (fit_shape ? ""
+                       : "; Cai calibration/fit shape = true fits its shape too "
+                         "(a quadratic, which a relieved pair's k(θ) need not "
+                         "allow: exit 3 then)") +
+            ", or drive `gearstiff dynamics` with the FE table, the stiffness_table.prm "
+            "of `gearstiff stiffness`");
 }
 
 void add_cai_tables(Report& report, const std::vector<dynamics::StiffnessSample>& samples,

@@ -112,8 +112,8 @@ TEST(CycloidAnalytic, PinClosingRotationTouchesExactly)
   const double reach = scene.output_pin_hole_radius - scene.output_pin_radius;
   // The disc centre C as the scene places it at ψ (geometry/scene_cycloid.cc DiscPlacement).
   const double psi = scene.disc_rotation;
-  const Eigen::Vector2d centre = -scene.ring.eccentricity *
-                                 Eigen::Vector2d(std::cos(-double(scene.ring.rollers - 1) * psi),
+  const Eigen::Vector2d centre =
+      -scene.ring.eccentricity * Eigen::Vector2d(std::cos(-double(scene.ring.rollers - 1) * psi),
                                                  std::sin(-double(scene.ring.rollers - 1) * psi));
   const auto farthest = [&](double turn)
   {
