@@ -145,6 +145,10 @@ double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_s
 
 namespace
 {
+// m: a play below a nanometre is the round-off of hole − pin − e (1.6e-17 m on the built-in
+// drive's 12 − 9 − 3 mm), not play; scanning for it would take ~1e16 steps.
+constexpr double play_round_off = 1e-9;
+
 // The turn (rad, ≥ 0) of the output pins alone about the ring centre, in the sense `sign`, at
 // which the first of `pins` reaches `reach` from its hole's centre. Pin j turned by θ sits at
 // rot(θ)·c_j; its hole's centre is c_j + C (C the disc centre): the centres' distance is
@@ -168,8 +172,9 @@ double first_pin_closure(const geometry::CycloidSceneSpec& scene, double sign, d
     return largest;
   };
   const double play = reach - scene.ring.eccentricity;
-  const double step = 0.02 * play / scene.output_pin_circle_radius;
   const double limit = 2. * M_PI / scene.output_pins;
+  // At most a million steps whatever the play (the bisection refines the bracket).
+  const double step = std::max(0.02 * play / scene.output_pin_circle_radius, 1e-6 * limit);
   double below = 0.;
   for (double above = step; above <= limit; below = above, above += step)
     if (farthest(above) >= reach)
@@ -191,7 +196,7 @@ double pin_closing_rotation(const geometry::CycloidSceneSpec& scene, double torq
   // Without play every pin touches its hole at the nominal placement already.
   const double play =
       scene.output_pin_hole_radius - scene.output_pin_radius - scene.ring.eccentricity;
-  if (!(play > 1e-9) || scene.output_pins == 0) // below a nanometre: round-off of hole − pin − e
+  if (!(play > play_round_off) || scene.output_pins == 0)
     return 0.;
   const double reach = scene.output_pin_hole_radius - scene.output_pin_radius + overlap;
   std::vector<unsigned int> pins(scene.output_pins);
@@ -247,9 +252,10 @@ CycloidAnalyticResult analytic_cycloid_loads(const geometry::CycloidSceneSpec& s
     // rotation fell from 41.21 to 40.80 arcmin, below the FE's 41.00 again (a rigid model's lower
     // bound).
     const double closes =
-        play > 0. ? first_pin_closure(scene, s.lever > 0. ? 1. : -1.,
-                                      scene.output_pin_hole_radius - scene.output_pin_radius, {j})
-                  : 0.;
+        play > play_round_off
+            ? first_pin_closure(scene, s.lever > 0. ? 1. : -1.,
+                                scene.output_pin_hole_radius - scene.output_pin_radius, {j})
+            : 0.;
     s.gap = closes >= 0. ? std::abs(s.lever) * closes : play;
     s.approach = [=, rp = scene.output_pin_radius, rh = scene.output_pin_hole_radius](double p)
     { return line_contact_approach(p, width, -rh, rp, e_disc, nu, e_disc, nu); };
