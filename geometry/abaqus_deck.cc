@@ -546,7 +546,7 @@ void check_cycloid_deck_play(const CycloidSceneSpec& spec)
   // ccx would find the member free. cycloid-loads turns the pins through their play first
   // (stiffness/cycloid_loads.cc); the deck does not.
   const double play = spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity;
-  if (play > 1e-9)
+  if (has_output_pin_play(spec))
     throw InputError(field::cycloid_scene("output_pin_radius"),
                      "the CalculiX deck closes no output-pin play (hole − pin − e = " +
                          format_number(play * 1e3, 4) +

@@ -351,6 +351,11 @@ Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin
               2. * M_PI * pin / spec.output_pins);
 }
 
+bool has_output_pin_play(const CycloidSceneSpec& spec)
+{
+  return spec.output_pin_hole_radius - spec.output_pin_radius - spec.ring.eccentricity > 1e-9;
+}
+
 Eigen::Vector2d output_hole_centre(const CycloidSceneSpec& spec, unsigned int pin,
                                    const Eigen::Vector2d& disc_centre)
 {

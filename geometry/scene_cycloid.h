@@ -71,6 +71,10 @@ struct CycloidSceneSpec
 Eigen::Vector2d output_pin_centre(const CycloidSceneSpec& spec, unsigned int pin);
 // The centre of hole j in the disc (m, ring frame) for the disc centre `disc_centre`: where pin j
 // sits without output_pin_turn, offset by the disc centre.
+// Whether the output pins have play in their holes: hole − pin − e above a nanometre (below it is
+// the round-off of the subtraction, 1.6e-17 m for 12 − 9 − 3 mm; taken as play it sent a scan for
+// the pins' closure into ~1e16 steps). The one test every play decision uses.
+bool has_output_pin_play(const CycloidSceneSpec& spec);
 Eigen::Vector2d output_hole_centre(const CycloidSceneSpec& spec, unsigned int pin,
                                    const Eigen::Vector2d& disc_centre);
 

@@ -145,10 +145,6 @@ double closing_rotation(const geometry::CycloidSceneSpec& scene, double torque_s
 
 namespace
 {
-// m: a play below a nanometre is the round-off of hole − pin − e (1.6e-17 m on the built-in
-// drive's 12 − 9 − 3 mm), not play; scanning for it would take ~1e16 steps.
-constexpr double play_round_off = 1e-9;
-
 // The turn (rad, ≥ 0) of the output pins alone about the ring centre, in the sense `sign`, at
 // which the first of `pins` reaches `reach` from its hole's centre. Pin j turned by θ sits at
 // rot(θ)·c_j; its hole's centre is c_j + C (C the disc centre): the centres' distance is
@@ -194,9 +190,7 @@ double pin_closing_rotation(const geometry::CycloidSceneSpec& scene, double torq
                             double overlap)
 {
   // Without play every pin touches its hole at the nominal placement already.
-  const double play =
-      scene.output_pin_hole_radius - scene.output_pin_radius - scene.ring.eccentricity;
-  if (!(play > play_round_off) || scene.output_pins == 0)
+  if (!geometry::has_output_pin_play(scene) || scene.output_pins == 0)
     return 0.;
   const double reach = scene.output_pin_hole_radius - scene.output_pin_radius + overlap;
   std::vector<unsigned int> pins(scene.output_pins);
@@ -252,7 +246,7 @@ CycloidAnalyticResult analytic_cycloid_loads(const geometry::CycloidSceneSpec& s
     // rotation fell from 41.21 to 40.80 arcmin, below the FE's 41.00 again (a rigid model's lower
     // bound).
     const double closes =
-        play > play_round_off
+        geometry::has_output_pin_play(scene)
             ? first_pin_closure(scene, s.lever > 0. ? 1. : -1.,
                                 scene.output_pin_hole_radius - scene.output_pin_radius, {j})
             : 0.;

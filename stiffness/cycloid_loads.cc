@@ -80,8 +80,7 @@ std::vector<Eigen::Vector2d> roller_centres(const geometry::CycloidDiscSpec& rin
 // flank by flank: crossing the play no torque-controlled step can do.
 bool has_play(const geometry::CycloidSceneSpec& scene)
 {
-  return scene.disc.rollers != 0 ||
-         scene.output_pin_hole_radius - scene.output_pin_radius - scene.ring.eccentricity > 1e-9;
+  return scene.disc.rollers != 0 || geometry::has_output_pin_play(scene);
 }
 
 std::vector<Eigen::Vector2d> pin_centres(const geometry::CycloidSceneSpec& scene)
