@@ -2,11 +2,13 @@
 //
 //   gearstiff <command> [file.prm|file.json] [--set section/key=value ...] [--json] [-o DIR]
 //   gearstiff --help            lists the commands
+//   gearstiff --version         the version, source revision and libraries
 //   gearstiff <command> --help  describes one; --print-parameters lists its parameters
 //
 // Exit codes: 0 success, 2 bad input (names the parameter), 3 a numerical method failed
 // (names the method and why), 1 anything else (an I/O error names the file and why: "no space
 // left on device"). Errors go to stderr as one line.
+#include "app/core/build_info.h"
 #include "app/core/command.h"
 #include "app/core/invoke.h"
 #include "app/core/scratch.h"
@@ -39,6 +41,7 @@ struct CommandLine
   bool quiet = false;
   bool help = false;
   bool print_parameters = false;
+  bool version = false;
   std::string output_directory;
 };
 
@@ -46,7 +49,8 @@ void print_usage(std::ostream& out)
 {
   out << "gearstiff — FE mesh stiffness, frictional contact and dynamics of gear drives\n\n"
          "usage: gearstiff <command> [file.prm|file.json] [--set section/key=value ...]\n"
-         "                 [--json] [--quiet] [-o DIR] [--help] [--print-parameters]\n\n"
+         "                 [--json] [--quiet] [-o DIR] [--help] [--print-parameters]\n"
+         "       gearstiff --version\n\n"
          "commands:\n";
   for (const auto& [name, command] : command_registry())
   {
@@ -62,7 +66,8 @@ void print_usage(std::ostream& out)
          "  -o DIR              write result files (CSV, JSON, VTU, PNG) and the parameters\n"
          "                      used into DIR; nothing is written if the command fails\n"
          "  --print-parameters  list the command's parameters, defaults, units and ranges\n"
-         "  --help              this text, or a command's description\n\n"
+         "  --help              this text, or a command's description\n"
+         "  --version           the version, source revision and libraries of this build\n\n"
          "Units: parameter files use the unit stated in each parameter's documentation\n"
          "(mm, degrees, rpm, N·m where gear engineers use them); everything inside is SI.\n";
 }
@@ -85,6 +90,8 @@ CommandLine parse_command_line(int argc, char** argv)
     };
     if (a == "--help" || a == "-h")
       line.help = true;
+    else if (a == "--version")
+      line.version = true;
     else if (a == "--print-parameters")
       line.print_parameters = true;
     else if (a == "--json")
@@ -141,10 +148,33 @@ std::string temporary_folder_problem()
   return "";
 }
 
+// `gearstiff --version`: what a bug report needs — the version, the source revision, the
+// libraries compiled against and the MPI library this process runs with.
+void print_version(std::ostream& out)
+{
+  out << "gearstiff " << version() << " (revision " << source_revision() << ")\nbuilt against";
+  const auto libraries = library_versions();
+  for (std::size_t i = 0; i < libraries.size(); ++i)
+    out << (i ? ", " : " ") << libraries[i].first << ' ' << libraries[i].second;
+  char mpi[MPI_MAX_LIBRARY_VERSION_STRING];
+  int length = 0;
+  MPI_Get_library_version(mpi, &length);
+  std::string mpi_library(mpi, static_cast<std::size_t>(length));
+  mpi_library = mpi_library.substr(0, mpi_library.find_first_of(",\n"));
+  out << "\nMPI: " << mpi_library << '\n';
+}
+
 int run(int argc, char** argv, MPI_Comm comm)
 {
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   const CommandLine line = parse_command_line(argc, argv);
+
+  if (line.version)
+  {
+    if (root)
+      print_version(std::cout);
+    return 0;
+  }
 
   if (line.command.empty())
   {

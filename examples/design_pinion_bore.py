@@ -16,7 +16,7 @@ it (the last `set` wins).
 
 Each evaluation is one in-process FE contact solve (2D, Q2 elements by default; --coarse: Q1 on a
 coarse mesh, for a quick look). Under `mpirun -np N` every rank runs the same script; only rank 0
-prints and draws. (examples/optimise_tip_relief.py is the tip-relief study that needs issue 27.)
+prints and draws. (examples/optimise_tip_relief.py is a tip-relief study of the same kind.)
 """
 import argparse
 import os

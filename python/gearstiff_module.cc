@@ -15,6 +15,7 @@
 // MPI: the module initialises MPI (and PETSc) on import unless it is running already, and
 // finalises what it started at interpreter exit. Under `mpirun -np N python3 script.py` every
 // rank calls the same functions and a sweep is distributed over the ranks as by the command line.
+#include "app/core/build_info.h"
 #include "app/core/command.h"
 #include "app/core/invoke.h"
 #include "app/core/report.h"
@@ -375,6 +376,19 @@ void load_input_with_warnings(const Command& command, const Invocation& invocati
       throw py::error_already_set(); // warnings turned into errors
 }
 
+// Which code produced a result, as summary.json's "gearstiff" block (app/core/build_info.h).
+py::dict build_info()
+{
+  py::dict libraries;
+  for (const auto& [name, version_text] : library_versions())
+    libraries[py::str(name)] = version_text;
+  py::dict info;
+  info["version"] = version();
+  info["revision"] = source_revision();
+  info["libraries"] = libraries;
+  return info;
+}
+
 py::dict run_command(const std::string& name, const py::object& params,
                      const py::object& output_directory, bool verbose)
 {
@@ -424,6 +438,7 @@ py::dict run_command(const std::string& name, const py::object& params,
 
   py::dict result;
   result["command"] = command.name;
+  result["gearstiff"] = build_info();
   py::dict text;
   for (const auto& [key, value] : report.texts())
     text[py::str(key)] = value;
@@ -624,6 +639,7 @@ PYBIND11_MODULE(gearstiff, m)
                            std::string(e.what()));
   }
   m.attr("__version__") = GEARSTIFF_VERSION;
+  m.attr("__revision__") = source_revision();
   m.doc() = "gearstiff " GEARSTIFF_VERSION ": FE mesh stiffness, frictional contact and "
             "torsional dynamics of gear drives, in-process.\n\nOne function per command of the "
             "`gearstiff` command line (" +
@@ -637,7 +653,8 @@ PYBIND11_MODULE(gearstiff, m)
             "The dict returned: 'values' {key: {'value', 'unit', 'description'[, 'published', "
             "'relative_deviation', 'source']}}, 'tables' {name: {'columns', 'units', 'data': "
             "{column: numpy array; of str for a categorical column}, 'categories' {column: "
-            "[the names it allows]}}}, 'text', 'files', 'parameters' (the parameters used, as a "
+            "[the names it allows]}}}, 'text', 'files', 'gearstiff' {'version', 'revision', "
+            "'libraries'} (the code that produced it), 'parameters' (the parameters used, as a "
             "dict a later call accepts; numbers as int/float, switches as bool), 'timings' {'run', "
             "'total'} [s].\n"
             "Errors: gearstiff.InputError (bad input, names the parameter) and "

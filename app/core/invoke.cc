@@ -1,5 +1,6 @@
 #include "app/core/invoke.h"
 
+#include "app/core/build_info.h"
 #include "app/core/field_names.h"
 #include "app/core/parameter_file_check.h"
 #include "app/core/parameter_names.h"
@@ -43,9 +44,16 @@ std::string shortened_in(std::string message, const std::string& value)
 void write_results(CommandContext& context, const dealii::ParameterHandler& prm,
                    const std::string& command_name)
 {
+  // A comment first (a .prm allows it; JSON has none: summary.json carries the same): which
+  // gearstiff wrote these parameters.
   context.write_output("parameters.prm", "parameters actually used",
                        [&](std::ostream& out)
-                       { prm.print_parameters(out, dealii::ParameterHandler::ShortPRM); });
+                       {
+                         out << "# The parameters `gearstiff " << command_name
+                             << "` used; gearstiff " << version() << " (revision "
+                             << source_revision() << ").\n";
+                         prm.print_parameters(out, dealii::ParameterHandler::ShortPRM);
+                       });
   context.write_output("parameters.json", "the same, as JSON",
                        [&](std::ostream& out)
                        { prm.print_parameters(out, dealii::ParameterHandler::ShortJSON); });

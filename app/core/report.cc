@@ -1,5 +1,6 @@
 #include "app/core/report.h"
 
+#include "app/core/build_info.h"
 #include "app/core/scratch.h"
 #include "app/core/units.h"
 #include "errors/io.h"
@@ -279,7 +280,16 @@ std::string json_number(double value)
 
 void Report::print_json(std::ostream& out, const std::string& command) const
 {
-  out << "{\n  \"command\": " << json_escape(command) << ",\n  \"text\": {";
+  // Which code produced these results (app/core/build_info.h): the regression comparison and
+  // the earlier-results check read the keys beside it, never this block.
+  out << "{\n  \"command\": " << json_escape(command)
+      << ",\n  \"gearstiff\": {\"version\": " << json_escape(version())
+      << ", \"revision\": " << json_escape(source_revision()) << ", \"libraries\": {";
+  const auto libraries = library_versions();
+  for (std::size_t i = 0; i < libraries.size(); ++i)
+    out << (i ? ", " : "") << json_escape(libraries[i].first) << ": "
+        << json_escape(libraries[i].second);
+  out << "}},\n  \"text\": {";
   for (std::size_t i = 0; i < text_list.size(); ++i)
     out << (i ? ",\n    " : "\n    ") << json_escape(text_list[i].first) << ": "
         << json_escape(text_list[i].second);

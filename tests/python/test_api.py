@@ -278,6 +278,32 @@ def test_output_directory(tmp_path):
     assert [p for p in os.listdir(tmp_path) if p.startswith(".gearstiff-staging")] == []
 
 
+def test_results_name_the_code_that_produced_them(tmp_path):
+    """A result file says which gearstiff wrote it: summary.json, --json, the Python result and
+    parameters.prm carry the version and source revision `gearstiff --version` prints."""
+    result = gearstiff.gear_pair(output_directory=tmp_path / "out")
+    info = result["gearstiff"]
+    assert info["version"] == gearstiff.__version__
+    assert info["revision"] == gearstiff.__revision__ and info["revision"]
+    assert info["libraries"]["deal.II"].startswith("9.")
+    assert set(info["libraries"]) == {"deal.II", "PETSc", "gmsh", "Eigen"}
+    with open(tmp_path / "out" / "summary.json") as f:
+        assert json.load(f)["gearstiff"] == info
+    assert cli_json("gear-pair")["gearstiff"] == info
+    with open(tmp_path / "out" / "parameters.prm") as f:
+        first = f.readline()
+    assert first.startswith("# The parameters `gearstiff gear-pair` used; gearstiff "
+                            f"{info['version']} (revision {info['revision']})"), first
+    done = subprocess.run([EXECUTABLE, "--version"], capture_output=True, text=True, timeout=60,
+                          env=ENVIRONMENT)
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0] == f"gearstiff {info['version']} (revision {info['revision']})"
+    assert lines[1] == "built against " + ", ".join(
+        f"{name} {version}" for name, version in info["libraries"].items())
+    assert lines[2].startswith("MPI: ") and len(lines) == 3
+
+
 # ------------------------------------------------------------------ errors
 
 # (command, dict, the same as --set): each must raise InputError with the CLI's message.

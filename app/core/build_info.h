@@ -1,0 +1,18 @@
+// What built this gearstiff: its version, the source revision and the libraries it was compiled
+// against — printed by `gearstiff --version` and written into every summary.json (and the
+// Python result's "gearstiff"), so a result file says which code produced it.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gearstiff::app
+{
+// The project's version (CMake's PROJECT_VERSION), e.g. "0.1.0".
+std::string version();
+// `git describe --always --dirty` of the source tree at build time ("unknown" outside git).
+std::string source_revision();
+// The libraries compiled against, name and version: deal.II, PETSc, gmsh, Eigen.
+std::vector<std::pair<std::string, std::string>> library_versions();
+} // namespace gearstiff::app
