@@ -446,6 +446,7 @@ MeshStatistics mesh_planar_model(const PlanarModel& model, const SizeGrading& gr
   check_mesh_input(model, grading, options);
 
   MeshStatistics statistics;
+  statistics.layers = options.dimension == 3 ? options.layers : 0;
   GmshSession session;
 
   auto start = Clock::now();

@@ -184,6 +184,7 @@ struct MeshStatistics
   double time_checking = 0.;         // s, element types and quality
   double time_writing = 0.;          // s, writing the .msh file
   unsigned long removed_cells = 0;   // -, hexahedra of fills left out (PlanarFill::removed)
+  unsigned int layers = 0;           // -, hexahedron layers across the face (3D; 0 in 2D)
 };
 
 // Scaled Jacobian of a cell given its corner coordinates in gmsh/deal.II-lexicographic order

@@ -120,6 +120,10 @@ void report_scene(const geometry::SceneInfo& info, const Scene& scene, Report& r
   report.add_value("rim_size", info.rim_size / mm, "mm", "largest cell size (rims)");
   report.add_value("cells", info.mesh.n_cells, "-",
                    info.dimension == 2 ? "quadrilaterals" : "hexahedra");
+  // The count a 3D scene was extruded with (Mesh/layers, or what `auto` chose: a helical pair's
+  // follows ε_β), which the cell count multiplies.
+  if (info.dimension == 3)
+    report.add_value("layers", info.mesh.layers, "-", "hexahedron layers across the face width");
   if (info.mesh.removed_cells > 0)
     report.add_value(
         "cells_removed", info.mesh.removed_cells, "-",
