@@ -4,6 +4,9 @@
     python3 tools/end_face_layer.py            print the table (a few minutes on one core)
     python3 tools/end_face_layer.py --check    recompute two entries and compare them with the
                                                table in stiffness/ltca_contact.cc; exit 1 when off
+    python3 tools/end_face_layer.py --kernel [--ratio R ...]
+                                               the layer's coupling between interior node
+                                               planes under a one-plane load (interior_kernel)
 
 The fast contact model (docs/ltca.md §3) joins an FE body, read at a depth h under a load on a
 flank, to an analytic layer 0 ≤ y ≤ h that assumes plane strain: a line load infinitely long
@@ -176,6 +179,34 @@ def quarter_space(x, y, z, a, nu, h):
                      for i in range(PLANES)])
 
 
+def interior_kernel(ratio, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
+    """The layer's coupling between node planes away from the ends (docs/ltca.md §3 "End
+    faces", session 50): a line load w on one node plane alone, as the exact path's dual mortar
+    applies it (the plane's nodal force w·Δz, nothing on its neighbours), on uniform layers of Δz
+    (z held at both far ends, the plane in the middle); the compression (surface minus depth h)
+    at that plane and the next `reach` over the plane-strain compression of w. Their sum over
+    all planes is 1 (a uniform load is plane strain); the fast model takes 1, 0, 0, ..."""
+    x, y = section_nodes(a)
+    reference = plane_strain(x, y, a, nu, h)
+    dz = ratio * h
+    uniform = np.arange(0., max(8 * h, (reach + 3) * dz) + 0.5 * dz, dz)
+    far = graded(uniform[-1], dz, uniform[-1] + 30 * h, 1.35)
+    z = np.unique(np.round(np.concatenate([-far[::-1], -uniform[::-1], uniform, far]), 12))
+    plane = int(np.argmin(abs(z)))
+    nx, ny, nz = len(x), len(y), len(z)
+    index = np.arange(nx * ny * nz).reshape(nz, ny, nx).T
+    load = np.zeros(3 * nx * ny * nz)
+    load[3 * index[:, 0, plane] + 1] = line_load(x, a) * dz
+    held = np.concatenate([(3 * index[0, :, :]).ravel(),  # x = 0: symmetry
+                           (3 * index[:, :, 0] + 2).ravel(), (3 * index[:, :, -1] + 2).ravel(),
+                           *[(3 * index[-1, :, :] + c).ravel() for c in range(3)],
+                           *[(3 * index[:, -1, :] + c).ravel() for c in range(3)]])
+    u, index = solve([x, y, z], np.unique(held), load, nu)
+    j = int(np.argmin(abs(y - h)))
+    return np.array([(u[3 * index[0, 0, plane + m] + 1] - u[3 * index[0, j, plane + m] + 1])
+                     / reference for m in range(reach + 1)])
+
+
 def entries(ratio, a=HALF_WIDTH, nu=POISSON, refine=1):
     """Ê(Δz/h, i) for i = 0 … PLANES − 1."""
     x, y = section_nodes(a, refine=refine)
@@ -196,7 +227,16 @@ def main():
                         help="the entries at Δz/h 1 and 4 for a/h 0.05, 0.1, 0.2, ν 0.25, 0.35 "
                         "and the x–y mesh refined")
     parser.add_argument("--ratio", type=float, nargs="*", help="only these Δz/h")
+    parser.add_argument("--kernel", action="store_true",
+                        help="the layer's coupling between interior node planes instead "
+                        "(interior_kernel; about a minute a Δz/h)")
     args = parser.parse_args()
+    if args.kernel:
+        for ratio in args.ratio or [1., 2., 4., 8.]:
+            c = interior_kernel(ratio)
+            print(f"dz/h {ratio}: planes 0..{len(c) - 1}: " + ", ".join(f"{v:+.4f}" for v in c)
+                  + f"; sum over all {c[0] + 2 * c[1:].sum():.4f}", flush=True)
+        return
     if args.check:
         table = source_table()
         worst = 0.
