@@ -5,8 +5,9 @@
     python3 tools/end_face_layer.py --check    recompute two entries and compare them with the
                                                table in stiffness/ltca_contact.cc; exit 1 when off
     python3 tools/end_face_layer.py --kernel [--ratio R ...]
-                                               the layer's coupling between interior node
-                                               planes under a one-plane load (interior_kernel)
+                                               the layer's coupling between node planes under
+                                               a one-plane load, interior and from the free end
+                                               (interior_kernel, end_kernel)
 
 The fast contact model (docs/ltca.md §3) joins an FE body, read at a depth h under a load on a
 flank, to an analytic layer 0 ≤ y ≤ h that assumes plane strain: a line load infinitely long
@@ -207,6 +208,28 @@ def interior_kernel(ratio, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
                      / reference for m in range(reach + 1)])
 
 
+def end_kernel(ratio, loaded, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
+    """As interior_kernel, with the line load w on node plane `loaded` counted from the free end
+    plane z = 0 (its force w·t, t the plane's tributary width; quarter_space's mesh and
+    supports): the compression at planes 0 … reach over the plane-strain compression of w."""
+    x, y = section_nodes(a)
+    reference = plane_strain(x, y, a, nu, h)
+    z = face_nodes(ratio, h)
+    nx, ny, nz = len(x), len(y), len(z)
+    index = np.arange(nx * ny * nz).reshape(nz, ny, nx).T
+    load = np.zeros(3 * nx * ny * nz)
+    # The plane's force w·t: its tributary width t is Δz/2 on the end plane, Δz beyond.
+    load[3 * index[:, 0, loaded] + 1] = line_load(x, a) * ratio * h * (0.5 if loaded == 0 else 1.)
+    held = np.concatenate([(3 * index[0, :, :]).ravel(),  # x = 0: symmetry
+                           (3 * index[:, :, -1] + 2).ravel(),  # z far: the face continues
+                           *[(3 * index[-1, :, :] + c).ravel() for c in range(3)],
+                           *[(3 * index[:, -1, :] + c).ravel() for c in range(3)]])
+    u, index = solve([x, y, z], np.unique(held), load, nu)
+    j = int(np.argmin(abs(y - h)))
+    return np.array([(u[3 * index[0, 0, i] + 1] - u[3 * index[0, j, i] + 1]) / reference
+                     for i in range(reach + 1)])
+
+
 def entries(ratio, a=HALF_WIDTH, nu=POISSON, refine=1):
     """Ê(Δz/h, i) for i = 0 … PLANES − 1."""
     x, y = section_nodes(a, refine=refine)
@@ -236,6 +259,10 @@ def main():
             c = interior_kernel(ratio)
             print(f"dz/h {ratio}: planes 0..{len(c) - 1}: " + ", ".join(f"{v:+.4f}" for v in c)
                   + f"; sum over all {c[0] + 2 * c[1:].sum():.4f}", flush=True)
+            for loaded in range(3):
+                e = end_kernel(ratio, loaded)
+                print(f"  loaded on end plane {loaded}: planes 0..{len(e) - 1}: "
+                      + ", ".join(f"{v:+.4f}" for v in e), flush=True)
         return
     if args.check:
         table = source_table()
