@@ -61,6 +61,8 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
     errors name parameters   a wheel of two teeth (gear-pair) and a 1 mm centre distance (mesh)
                              fail with one line naming the parameter typed, not the library's
                              field (issue 45)
+    names its build          both sweeps' reports carry the version, revision and libraries
+                             `gearstiff --version` prints (summary.json's "gearstiff" block)
     own train                the sweep's stiffness_table.prm runs `gearstiff dynamics` on this
                              pair: its mesh frequency z1*n1/60, its mean stiffness the sweep's,
                              and K_v = 1 at a quasi-static speed without friction (0.5 %);
@@ -571,6 +573,24 @@ def peak_on_path(label, report, log):
 # fraction of the Q2 solve (issue 43). The sweeps of once = per position keep the default Q2:
 # their tolerances are the two meshes' discretisation differences.
 SAME_MESH_IDENTITY = {"Finite elements/Element degree": 1}
+
+
+def names_its_build(runner, log, sweeps):
+    """Every result names the build that produced it (summary.json's "gearstiff" block): both
+    sweeps of the case name the version and revision `gearstiff --version` prints, and the
+    libraries its second line lists."""
+    if not hasattr(runner, "build"):
+        lines = runner.timed([runner.gearstiff, "--version"]).stdout.splitlines()
+        runner.build = lines[:2]
+    for label in ("once", "per position"):
+        block = sweeps[label].get("gearstiff", {})
+        first = f"gearstiff {block.get('version')} (revision {block.get('revision')})"
+        libraries = "built against " + ", ".join(
+            f"{name} {version}" for name, version in block.get("libraries", {}).items())
+        if [first, libraries] != runner.build:
+            raise CaseFailure(f"the {label} sweep names {first!r}, {libraries!r}; "
+                              f"gearstiff --version prints {runner.build!r}")
+    log(f"names its build: {runner.build[0]}")
 
 
 def zero_equals_none(case, runner, log, sweeps):
@@ -1424,6 +1444,7 @@ def check_case(seed, index, runner):
         once_out = os.path.join(runner.work, f"case{index}") if identity is own_train else None
         errors_name_parameters(case, runner, log)
         sweeps = once_equals_per_position(case, runner, log, once_out)
+        names_its_build(runner, log, sweeps)
         influence_equals_exact(case, runner, log, sweeps)
         geometric_te(case, table(sweeps["per position"], "stiffness_sweep"), log)
         peak_on_path("peak pressure (per position)", sweeps["per position"], log)
