@@ -152,10 +152,7 @@ std::string temporary_folder_problem()
 // libraries compiled against and the MPI library this process runs with.
 void print_version(std::ostream& out)
 {
-  out << "gearstiff " << version() << " (revision " << source_revision() << ")\nbuilt against";
-  const auto libraries = library_versions();
-  for (std::size_t i = 0; i < libraries.size(); ++i)
-    out << (i ? ", " : " ") << libraries[i].first << ' ' << libraries[i].second;
+  out << version_line() << "\nbuilt against " << library_line();
   char mpi[MPI_MAX_LIBRARY_VERSION_STRING];
   int length = 0;
   MPI_Get_library_version(mpi, &length);

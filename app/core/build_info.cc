@@ -30,4 +30,17 @@ std::vector<std::pair<std::string, std::string>> library_versions()
           {"gmsh", GMSH_API_VERSION},
           {"Eigen", dotted(EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)}};
 }
+
+std::string version_line()
+{
+  return "gearstiff " + version() + " (revision " + source_revision() + ")";
+}
+
+std::string library_line()
+{
+  std::string line;
+  for (const auto& [name, library_version] : library_versions())
+    line += (line.empty() ? "" : ", ") + name + " " + library_version;
+  return line;
+}
 } // namespace gearstiff::app

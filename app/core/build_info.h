@@ -15,4 +15,8 @@ std::string version();
 std::string source_revision();
 // The libraries compiled against, name and version: deal.II, PETSc, gmsh, Eigen.
 std::vector<std::pair<std::string, std::string>> library_versions();
+// "gearstiff 0.1.0 (revision abc)": the line `--version` starts with and parameters.prm names.
+std::string version_line();
+// "deal.II 9.4.1, PETSc 3.18.5, gmsh 4.8.0, Eigen 3.4.0".
+std::string library_line();
 } // namespace gearstiff::app

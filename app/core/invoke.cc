@@ -49,9 +49,8 @@ void write_results(CommandContext& context, const dealii::ParameterHandler& prm,
   context.write_output("parameters.prm", "parameters actually used",
                        [&](std::ostream& out)
                        {
-                         out << "# The parameters `gearstiff " << command_name
-                             << "` used; gearstiff " << version() << " (revision "
-                             << source_revision() << ").\n";
+                         out << "# The parameters `gearstiff " << command_name << "` used; "
+                             << version_line() << ".\n";
                          prm.print_parameters(out, dealii::ParameterHandler::ShortPRM);
                        });
   context.write_output("parameters.json", "the same, as JSON",
