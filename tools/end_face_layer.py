@@ -8,6 +8,10 @@
                                                the layer's coupling between node planes under
                                                a one-plane load, interior and from the free end
                                                (interior_kernel, end_kernel)
+    python3 tools/end_face_layer.py --rows [--ratio R ...]
+                                               the kernel's whole rows: per Δz/h the interior
+                                               row and the rows of the planes loaded 0 … 4
+                                               from the free end (docs/ltca.md §3 "End faces")
 
 The fast contact model (docs/ltca.md §3) joins an FE body, read at a depth h under a load on a
 flank, to an analytic layer 0 ≤ y ≤ h that assumes plane strain: a line load infinitely long
@@ -43,6 +47,9 @@ RATIO = [0.5, 0.75, 1., 1.5, 2., 3., 4., 6., 8., 12., 16.]  # Δz/h
 PLANES = 3  # node planes i = 0, 1, 2 from the end
 POISSON = 0.3
 HALF_WIDTH = 0.1  # a/h
+KERNEL_RATIO = [0.5, 1., 2., 4., 8., 16.]  # Δz/h of the kernel's rows
+KERNEL_REACH = 7  # planes read beyond the loaded one
+KERNEL_END = 5  # planes loaded from the free end
 
 
 def graded(start, first, end, growth):
@@ -155,9 +162,9 @@ def plane_strain(x, y, a, nu, h):
     return u[2 * index[0, 0] + 1] - u[2 * index[0, j] + 1]
 
 
-def face_nodes(ratio, h=1.0):
+def face_nodes(ratio, h=1.0, planes=4):
     dz = ratio * h
-    near = max(8 * h, 4 * dz)
+    near = max(8 * h, planes * dz)
     z = np.arange(0., near + 0.5 * dz, dz)
     return np.concatenate([z[:-1], graded(z[-1], dz, z[-1] + 30 * h, 1.35)])
 
@@ -214,7 +221,7 @@ def end_kernel(ratio, loaded, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
     supports): the compression at planes 0 … reach over the plane-strain compression of w."""
     x, y = section_nodes(a)
     reference = plane_strain(x, y, a, nu, h)
-    z = face_nodes(ratio, h)
+    z = face_nodes(ratio, h, planes=max(4, reach + 3))
     nx, ny, nz = len(x), len(y), len(z)
     index = np.arange(nx * ny * nz).reshape(nz, ny, nx).T
     load = np.zeros(3 * nx * ny * nz)
@@ -253,7 +260,21 @@ def main():
     parser.add_argument("--kernel", action="store_true",
                         help="the layer's coupling between interior node planes instead "
                         "(interior_kernel; about a minute a Δz/h)")
+    parser.add_argument("--rows", action="store_true",
+                        help="the kernel as stiffness/ltca_contact.cc holds it: per Δz/h the "
+                        "interior row and the rows of the planes loaded 0 … 4 from the free end "
+                        "(about half an hour on one core)")
     args = parser.parse_args()
+    if args.rows:
+        for ratio in args.ratio or KERNEL_RATIO:
+            rows = [interior_kernel(ratio, reach=KERNEL_REACH)]
+            rows += [end_kernel(ratio, loaded, reach=loaded + KERNEL_REACH)
+                     for loaded in range(KERNEL_END)]
+            print(f"    {{{{  // dz/h {ratio}: interior, then loaded on plane 0 … {KERNEL_END - 1}")
+            for row in rows:
+                print("      {{" + ", ".join(f"{v:.4f}" for v in row) + "}},")
+            print("    }},", flush=True)
+        return
     if args.kernel:
         for ratio in args.ratio or [1., 2., 4., 8.]:
             c = interior_kernel(ratio)
