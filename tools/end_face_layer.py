@@ -261,16 +261,17 @@ def main():
                         help="the layer's coupling between interior node planes instead "
                         "(interior_kernel; about a minute a Δz/h)")
     parser.add_argument("--rows", action="store_true",
-                        help="the kernel as stiffness/ltca_contact.cc holds it: per Δz/h the "
-                        "interior row and the rows of the planes loaded 0 … 4 from the free end "
-                        "(about half an hour on one core)")
+                        help="the kernel's whole rows: per Δz/h the interior row and the rows "
+                        "of the planes loaded 0 … 4 from the free end (a few minutes a row on one "
+                        "core; docs/ltca.md §3 \"End faces\")")
     args = parser.parse_args()
     if args.rows:
         for ratio in args.ratio or KERNEL_RATIO:
             rows = [interior_kernel(ratio, reach=KERNEL_REACH)]
             rows += [end_kernel(ratio, loaded, reach=loaded + KERNEL_REACH)
                      for loaded in range(KERNEL_END)]
-            print(f"    {{{{  // dz/h {ratio}: interior, then loaded on plane 0 … {KERNEL_END - 1}")
+            print(f"    {{{{  // dz/h {ratio}: interior, then loaded on plane 0 … {KERNEL_END - 1}",
+                  flush=True)
             for row in rows:
                 print("      {{" + ", ".join(f"{v:.4f}" for v in row) + "}},")
             print("    }},", flush=True)

@@ -201,15 +201,10 @@ TEST(InfluenceCoefficients3DLead, InternalSpur)
                         exact_internal_8_layers, "internal, 8 layers");
 }
 
-// The ladder behind the 16 layers, by hand: LADDER_FAST=1 runs the fast model (else the exact
-// path), LADDER_LAYERS (8), LADDER_HC (m, 6e-5), LADDER_BODY (m, 0: the default 0.7 mm),
-// LADDER_CROWN (m, 10e-6), LADDER_SLOPE (m, 0) on the pinion, LADDER_INTERNAL; prints k, TE, K_Hβ,
-// p_max of the four positions (LADDER_LINES=1: and their line loads along the face). Run from the
-// build folder with GEARSTIFF_BINARY_DIR set. The exact path on the planet–ring pair with lead
-// crowning C_β = 10 µm on the planet (the pinion), Q1, 16 layers, h_c 0.06 mm, body 1 mm, 4
-// positions, μ 0; regression: measured 2026-12-03 (session 29, DISABLED_Ladder with
-// LADDER_INTERNAL=1 LADDER_LAYERS=16 LADDER_CROWN=10e-6 LADDER_BODY=1e-3, one run: 244k-261k DoFs a
-// position, 46 s, 2.6 GB peak).
+// The exact path on the planet–ring pair with lead crowning C_β = 10 µm on the planet (the
+// pinion), Q1, 16 layers, h_c 0.06 mm, body 1 mm, 4 positions, μ 0; regression: measured
+// 2026-12-03 (session 29, DISABLED_Ladder with LADDER_INTERNAL=1 LADDER_LAYERS=16
+// LADDER_CROWN=10e-6 LADDER_BODY=1e-3, one run: 244k-261k DoFs a position, 46 s, 2.6 GB peak).
 constexpr std::array<StoredPosition, 4> exact_internal_crowning_10um = {
     {{323.4927, 5.416957, 2.514014, 0.5259984},
      {236.6130, 7.405960, 2.043124},
@@ -232,6 +227,11 @@ TEST(InfluenceCoefficients3DLead, InternalLeadCrowning)
                         "internal, C_beta 10 um, 16 layers");
 }
 
+// The ladder behind the 16 layers, by hand: LADDER_FAST=1 runs the fast model (else the exact
+// path), LADDER_LAYERS (8), LADDER_HC (m, 6e-5), LADDER_BODY (m, 0: the default 0.7 mm),
+// LADDER_CROWN (m, 10e-6), LADDER_SLOPE (m, 0) on the pinion, LADDER_INTERNAL; prints k, TE, K_Hβ,
+// p_max of the four positions (LADDER_LINES=1: and their line loads along the face). Run from the
+// build folder with GEARSTIFF_BINARY_DIR set.
 TEST(InfluenceCoefficients3DLead, DISABLED_Ladder)
 {
   const auto env = [](const char* name, double fallback)
