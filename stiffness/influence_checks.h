@@ -7,6 +7,7 @@
 #include "stiffness/influence_geometry.h"
 #include "stiffness/mesh_stiffness.h"
 
+#include <string>
 #include <vector>
 
 namespace gearstiff::stiffness::influence
@@ -19,9 +20,10 @@ void check_grid_step(double step, double depth, const PairSeparation& separation
 void check_end_plane_spacing(const GearMeshStiffnessSettings& settings,
                              const FaceStations& stations, double depth);
 
-// A crowned contact ending inside the face must load enough node planes (influence_checks.cc) of
-// `layers` layers at every position and torque of `by_torque` (exit 2 naming Mesh/layers).
+// A crowned or sloped lead's contact ending inside the face must load enough node planes
+// (influence_checks.cc) of `layers` layers at every position and torque of `by_torque` (exit 2
+// naming Mesh/layers); `contact` names it in the message ("crowned contact", …).
 void check_crowned_contact_planes(
     const std::vector<std::vector<GearMeshStiffnessResult>>& by_torque,
-    const FaceStations& stations, unsigned int layers);
+    const FaceStations& stations, unsigned int layers, const std::string& contact);
 } // namespace gearstiff::stiffness::influence

@@ -211,6 +211,16 @@ void add_station_points(const PairFrame& frame, const Helix& helix, int j, doubl
       along = Tensor<1, 3>({across[0], across[1], 0.});
   }
   BodyPoint<3> load{{}, {}, along, p.body};
+  if (helix.rate == 0.)
+  {
+    // A spur plane's unit force on its own node plane alone, not over the hat between its
+    // neighbours: the exact path's contact force sits on each plane's nodes, and how its layer
+    // answers between the planes is the layer kernel's, added in the small contact problem
+    // (layer_kernel_departure; docs/ltca.md §3 "End faces").
+    loads.push_back({{at_z(inset, z_i)}, {1.}, along, p.body});
+    reads.push_back({{at_z(depth, z_i)}, {1.}, along, p.body});
+    return;
+  }
   double on_flank = 0.;
   for (const double side : {-1., 1.})
   {
@@ -580,6 +590,28 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                                        a.edge, b.pair, b.flank, b.line.tilt,
                                                        b.station, b.edge));
     }
+    if (dim != 3 || helix.rate != 0.)
+      return;
+    // Spur planes' layer coupling along the face (own-plane loads, add_station_points): the
+    // kernel's departure from plane strain between the planes of one contact line, in units of
+    // the line load's plane-strain layer at the nominal load (per N/m), over the loaded plane's
+    // width. Not on helical pairs: their neighbouring planes touch tan β_b·Δz apart along the
+    // profile, several contact widths, where a straight line's kernel does not hold (built-in
+    // helical pair, 13 layers: K_Hβ −11 % with it; docs/ltca.md §3 "End faces").
+    const double w = lines_force / pair.common_face_width; // N/m
+    for (std::size_t y = 0; y < unknowns.size(); ++y)
+    {
+      const double unit = hertz_line_contact(lines_force, pair.common_face_width,
+                                             problem.relative_radius[y], model.pinion, model.wheel)
+                              .approach /
+                          w; // m per N/m
+      for (std::size_t x = 0; x < unknowns.size(); ++x)
+        if (unknowns[x].pair == unknowns[y].pair)
+          problem.compliance[x][y] +=
+              layer_kernel_departure(stations.layer, model.pinion.matching_depth, layers,
+                                     unknowns[x].station, unknowns[y].station) *
+              unit / problem.width[y];
+    }
   };
   couple();
   const auto lines_under = [&](double force) -> MeshContactProblem&
@@ -822,9 +854,13 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                                                          torques, warm, info.newton_steps);
                             });
         info.contact_time = seconds_since(start);
-        if (dim == 3 && (settings.scene.pinion_modifications.lead.crowning != 0. ||
-                         settings.scene.wheel_modifications.lead.crowning != 0.))
-          check_crowned_contact_planes(run.by_torque, stations, layers);
+        const geometry::LeadModification &pinion_lead = settings.scene.pinion_modifications.lead,
+                                         &wheel_lead = settings.scene.wheel_modifications.lead;
+        if (dim == 3 && (pinion_lead.crowning != 0. || wheel_lead.crowning != 0.))
+          check_crowned_contact_planes(run.by_torque, stations, layers, "crowned contact");
+        else if (dim == 3 && (pinion_lead.slope != 0. || wheel_lead.slope != 0.))
+          check_crowned_contact_planes(run.by_torque, stations, layers,
+                                       "contact under the lead slope");
         return run;
       });
 }

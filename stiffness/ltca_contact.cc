@@ -200,6 +200,115 @@ double end_face_layer_excess(double spacing, double matching_depth, unsigned int
 
 namespace
 {
+// K(Δz/h) of layer_kernel_departure: per Δz/h of kernel_ratio, the interior row (the
+// compression at the loaded plane and the next kernel_reach over plane strain) and the rows of
+// the planes loaded 0 … 4 from a free end (the compression at planes 0 … loaded + kernel_reach),
+// a Hertzian line load of half-width 0.1·h on one node plane alone, its nodal force w·Δz
+// (tools/end_face_layer.py --rows, 2026-12-07). Consistent with end_face_e measured
+// independently under a uniform load: summed over the loaded planes of a long face at Δz/h 2,
+// 2.77·Σ(K − I) at the planes 0, 1, 2 from the end is 0.1909, 0.0449, 0.0300 against Ê 0.1844,
+// 0.0433, 0.0290 (test_influence_coefficients, LayerKernel). Ê stays on the diagonal beside
+// the kernel all the same: the end plane needs it twice, measured, not derived (docs/ltca.md §3
+// "End faces").
+constexpr std::array<double, 6> kernel_ratio = {{0.5, 1., 2., 4., 8., 16.}};
+constexpr unsigned int kernel_reach = 7;
+using KernelRows = std::array<std::array<double, layer_kernel_end_planes + kernel_reach>,
+                              1 + layer_kernel_end_planes>;
+constexpr std::array<KernelRows, 6> kernel_rows = {{
+    // clang-format off
+    // Δz/h 0.5 PLACEHOLDER: interior; loaded on plane 0, 1, 2, 3, 4 from the end
+    {{
+      {{1.5052, -0.2955, 0.0536, -0.0128, 0.0022, -0.0008, 0.0000, -0.0001}},
+      {{1.6736, -0.3211, 0.0706, -0.0090, 0.0059, 0.0015, 0.0017, 0.0012}},
+      {{-0.6579, 1.6184, -0.3104, 0.0632, -0.0101, 0.0053, 0.0014, 0.0018, 0.0014}},
+      {{0.1186, -0.3126, 1.5139, -0.2944, 0.0560, -0.0111, 0.0037, 0.0004, 0.0011, 0.0008}},
+      {{-0.0292, 0.0585, -0.2955, 1.5068, -0.2944, 0.0547, -0.0118, 0.0031, -0.0000, 0.0007, 0.0005}},
+      {{0.0044, -0.0138, 0.0543, -0.2949, 1.5059, -0.2948, 0.0542, -0.0122, 0.0028, -0.0003, 0.0005, 0.0003}},
+    }},
+    // Δz/h 1: interior; loaded on plane 0, 1, 2, 3, 4 from the end
+    {{
+      {{1.5052, -0.2955, 0.0536, -0.0128, 0.0022, -0.0008, 0.0000, -0.0001}},
+      {{1.6736, -0.3211, 0.0706, -0.0090, 0.0059, 0.0015, 0.0017, 0.0012}},
+      {{-0.6579, 1.6184, -0.3104, 0.0632, -0.0101, 0.0053, 0.0014, 0.0018, 0.0014}},
+      {{0.1186, -0.3126, 1.5139, -0.2944, 0.0560, -0.0111, 0.0037, 0.0004, 0.0011, 0.0008}},
+      {{-0.0292, 0.0585, -0.2955, 1.5068, -0.2944, 0.0547, -0.0118, 0.0031, -0.0000, 0.0007, 0.0005}},
+      {{0.0044, -0.0138, 0.0543, -0.2949, 1.5059, -0.2948, 0.0542, -0.0122, 0.0028, -0.0003, 0.0005, 0.0003}},
+    }},
+    // Δz/h 2: interior; loaded on plane 0, 1, 2, 3, 4 from the end
+    {{
+      {{1.6497, -0.3979, 0.0890, -0.0204, 0.0046, -0.0010, 0.0003, 0.0000}},
+      {{1.7644, -0.4085, 0.1021, -0.0191, 0.0069, 0.0001, 0.0012, 0.0006}},
+      {{-0.8484, 1.7735, -0.4234, 0.0989, -0.0200, 0.0066, 0.0000, 0.0013, 0.0008}},
+      {{0.1882, -0.4259, 1.6584, -0.3985, 0.0905, -0.0196, 0.0054, -0.0004, 0.0009, 0.0005}},
+      {{-0.0440, 0.0954, -0.3993, 1.6507, -0.3974, 0.0896, -0.0199, 0.0051, -0.0007, 0.0006, 0.0003}},
+      {{0.0093, -0.0222, 0.0895, -0.3977, 1.6500, -0.3976, 0.0893, -0.0201, 0.0049, -0.0008, 0.0005, 0.0002}},
+    }},
+    // Δz/h 4: interior; loaded on plane 0, 1, 2, 3, 4 from the end
+    {{
+      {{1.7114, -0.4467, 0.1128, -0.0279, 0.0071, -0.0016, 0.0005, -0.0000}},
+      {{1.7811, -0.4472, 0.1190, -0.0273, 0.0083, -0.0011, 0.0009, 0.0002}},
+      {{-0.9288, 1.8384, -0.4770, 0.1226, -0.0289, 0.0083, -0.0012, 0.0010, 0.0003}},
+      {{0.2326, -0.4796, 1.7205, -0.4484, 0.1139, -0.0276, 0.0074, -0.0013, 0.0007, 0.0001}},
+      {{-0.0582, 0.1208, -0.4488, 1.7122, -0.4466, 0.1130, -0.0277, 0.0072, -0.0015, 0.0006, 0.0001}},
+      {{0.0141, -0.0301, 0.1133, -0.4468, 1.7115, -0.4466, 0.1129, -0.0278, 0.0071, -0.0015, 0.0006, 0.0000}},
+    }},
+    // Δz/h 8: interior; loaded on plane 0, 1, 2, 3, 4 from the end
+    {{
+      {{1.7304, -0.4629, 0.1229, -0.0319, 0.0085, -0.0021, 0.0006, -0.0002}},
+      {{1.7692, -0.4602, 0.1248, -0.0314, 0.0089, -0.0019, 0.0007, -0.0001}},
+      {{-0.9475, 1.8569, -0.4951, 0.1323, -0.0338, 0.0093, -0.0021, 0.0007, -0.0001}},
+      {{0.2499, -0.4971, 1.7395, -0.4651, 0.1237, -0.0320, 0.0086, -0.0021, 0.0006, -0.0001}},
+      {{-0.0654, 0.1317, -0.4654, 1.7310, -0.4631, 0.1230, -0.0319, 0.0085, -0.0021, 0.0006, -0.0001}},
+      {{0.0170, -0.0343, 0.1235, -0.4631, 1.7304, -0.4629, 0.1229, -0.0319, 0.0085, -0.0021, 0.0006, -0.0002}},
+    }},
+    // Δz/h 16: interior; loaded on plane 0, 1, 2, 3, 4 from the end
+    {{
+      {{1.7337, -0.4659, 0.1255, -0.0335, 0.0089, -0.0024, 0.0006, -0.0002}},
+      {{1.7537, -0.4633, 0.1257, -0.0332, 0.0090, -0.0023, 0.0006, -0.0002}},
+      {{-0.9443, 1.8591, -0.4988, 0.1345, -0.0358, 0.0095, -0.0026, 0.0007, -0.0002}},
+      {{0.2536, -0.5000, 1.7427, -0.4683, 0.1262, -0.0336, 0.0089, -0.0024, 0.0006, -0.0002}},
+      {{-0.0676, 0.1346, -0.4683, 1.7344, -0.4661, 0.1256, -0.0335, 0.0089, -0.0024, 0.0006, -0.0002}},
+      {{0.0180, -0.0359, 0.1262, -0.4661, 1.7338, -0.4659, 0.1255, -0.0335, 0.0089, -0.0024, 0.0006, -0.0002}},
+    }},
+    // clang-format on
+}};
+
+// K(read, loaded) − δ at the table's row r: the interior row, and each end's own rows where the
+// loaded plane lies within layer_kernel_end_planes of it, as their departure from the interior
+// row (a narrow face's middle planes feel both ends).
+double kernel_entry(std::size_t r, unsigned int planes, unsigned int read, unsigned int loaded)
+{
+  const KernelRows& rows = kernel_rows[r];
+  const unsigned int distance = read > loaded ? read - loaded : loaded - read;
+  const auto interior = [&](unsigned int d) { return d <= kernel_reach ? rows[0][d] : 0.; };
+  double k = interior(distance);
+  for (const bool far_end : {false, true})
+  {
+    const unsigned int from_end = far_end ? planes - 1 - loaded : loaded;
+    const unsigned int read_from_end = far_end ? planes - 1 - read : read;
+    if (from_end < layer_kernel_end_planes && read_from_end <= from_end + kernel_reach)
+      k += rows[1 + from_end][read_from_end] - interior(distance);
+  }
+  return k - (read == loaded ? 1. : 0.);
+}
+} // namespace
+
+double layer_kernel_departure(double spacing, double matching_depth, unsigned int planes,
+                              unsigned int read, unsigned int loaded)
+{
+  const double ratio =
+      std::clamp(spacing / matching_depth, kernel_ratio.front(), kernel_ratio.back());
+  const std::size_t i = std::min<std::size_t>(
+      std::upper_bound(kernel_ratio.begin(), kernel_ratio.end(), ratio) - kernel_ratio.begin() - 1,
+      kernel_ratio.size() - 2);
+  const double t =
+      std::log(ratio / kernel_ratio[i]) / std::log(kernel_ratio[i + 1] / kernel_ratio[i]);
+  return (1. - t) * kernel_entry(i, planes, read, loaded) +
+         t * kernel_entry(i + 1, planes, read, loaded);
+}
+
+namespace
+{
 // The corner's excess under a Hertzian line load w of half-width a centred at the contact: the
 // mean of corner_layer_excess over the elliptic pressure (Gauss–Chebyshev, as
 // spread_load_depth_shift), each part at its own distance from the corner; 0 without a corner.

@@ -57,6 +57,22 @@ double corner_layer_excess(double distance, const LayerBody& body);
 // (the FE's 1/z law from z = 3·h, where a tooth's own size, not a half-space's, takes over).
 double end_face_layer_excess(double spacing, double matching_depth, unsigned int plane);
 
+// -, D(read, loaded) = K − I between the node planes of one spur contact line: the layer
+// 0 ≤ z ≤ h under a line load w on node plane `loaded` alone (of `planes` node planes of
+// spacing `spacing` (m) along a face with free ends) compresses at node plane `read` by
+// K(read, loaded) times the plane-strain compression of w. The exact path's dual mortar puts
+// each plane's contact force on that plane's nodes and its hexahedra interpolate linearly
+// between the planes, so its layer is not plane strain plane by plane: K(i, i) 1.5 … 1.8, the
+// neighbours −0.3 … −0.5, each interior row summing to 1 (a uniform load is plane strain).
+// Tabulated from a 3D Q1 FE discretised along the face as the exact path is
+// (tools/end_face_layer.py --rows) for Δz/h 0.5 … 16 (clamped outside), the interior row and
+// the rows of planes 0 … layer_kernel_end_planes − 1 from either end; a Hertzian load of
+// half-width 0.1·h (a/h 0.05 / 0.2 move the interior diagonal by +0.9 / −1.3 %), ν 0.3
+// (docs/ltca.md §3 "End faces").
+constexpr unsigned int layer_kernel_end_planes = 5;
+double layer_kernel_departure(double spacing, double matching_depth, unsigned int planes,
+                              unsigned int read, unsigned int loaded);
+
 // The compression (m) of the layer 0 ≤ z ≤ h of a plane-strain half-space under a Hertzian
 // pressure of peak p0 (Pa) and half-width a (m), on the symmetry axis: the integral of ε_z of
 // the axis stresses (Johnson 1985 §2.6, docs/ltca.md §3); Weber's formula for h ≫ a.

@@ -2,8 +2,10 @@
 """The table Ê(Δz/h, i) of stiffness::end_face_layer_excess (stiffness/ltca_contact.cc), computed.
 
     python3 tools/end_face_layer.py            print the table (a few minutes on one core)
-    python3 tools/end_face_layer.py --check    recompute two entries and compare them with the
-                                               table in stiffness/ltca_contact.cc; exit 1 when off
+    python3 tools/end_face_layer.py --check    recompute two rows of the table and two of the
+                                               kernel's (Δz/h 4: interior, end plane loaded)
+                                               and compare them with stiffness/ltca_contact.cc;
+                                               exit 1 when off
     python3 tools/end_face_layer.py --kernel [--ratio R ...]
                                                the layer's coupling between node planes under
                                                a one-plane load, interior and from the free end
@@ -250,6 +252,15 @@ def source_table():
     return dict(zip(RATIO, table_rows("end_face_e")))
 
 
+def source_kernel():
+    """The kernel as stiffness/ltca_contact.cc holds it: {Δz/h: [interior row, rows of the
+    planes loaded 0 … KERNEL_END − 1]}."""
+    rows = table_rows("kernel_rows")
+    per = 1 + KERNEL_END
+    assert len(rows) == per * len(KERNEL_RATIO), "kernel_rows and KERNEL_RATIO disagree"
+    return {r: rows[per * k:per * (k + 1)] for k, r in enumerate(KERNEL_RATIO)}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--check", action="store_true")
@@ -293,6 +304,12 @@ def main():
             value = entries(ratio)
             stored = table[ratio]
             print(f"dz/h {ratio}: computed {np.round(value, 4)}, table {stored}")
+            worst = max(worst, np.max(abs(value - np.array(stored))))
+        kernel = source_kernel()[4.]
+        for name, value, stored in [
+                ("kernel, interior", interior_kernel(4., reach=KERNEL_REACH), kernel[0]),
+                ("kernel, end plane loaded", end_kernel(4., 0, reach=KERNEL_REACH), kernel[1])]:
+            print(f"dz/h 4 {name}: computed {np.round(value, 4)}, table {stored}", flush=True)
             worst = max(worst, np.max(abs(value - np.array(stored))))
         sys.exit(0 if worst < 5e-4 else 1)
     if args.spread:

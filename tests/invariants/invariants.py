@@ -984,26 +984,55 @@ def one_position_sweep(sets, theta):
 
 def influence_3d_crowned_model(runner, sets, layers, torque):
     """The fast model on `layers` (2 ranks): its report and None, or the refusal's loaded planes
-    and the layers it names (exit 2 naming Mesh/layers; any other exit 2 fails the case)."""
+    and the layers it names (exit 2 naming Mesh/layers; any other exit 2 fails the case). A
+    crowned contact or a lead slope's, whichever the case drew."""
     fast, code, stderr = runner.run(
         "stiffness", dict(sets, **{"Stiffness/contact model": "influence coefficients",
                                    "Mesh/layers": layers}), ranks=2, allowed=(0, 2))
     if code == 0:
         return fast, None
-    refusal = re.search(r"Mesh/layers: the crowned contact is carried by only (\d+) node "
-                        r"planes.*use at least (\d+) layers", stderr)
+    refusal = re.search(r"Mesh/layers: the (?:crowned contact|contact under the lead slope) is "
+                        r"carried by only (\d+) node planes.*use at least (\d+) layers", stderr)
     if refusal is None:
         raise CaseFailure(f"influence 3D crowned at {torque} N·m: exit 2 without the layers' "
                           f"refusal: {stderr.strip()[-400:]}")
     return fast, (int(refusal.group(1)), int(refusal.group(2)))
 
 
+# A lead slope (carried on spur pairs since 2026-12-07: own-plane loads and the layer kernel,
+# docs/ltca.md section 3 "End faces") takes every other 3D case's turn instead of crowning (CI's
+# 19: on the wheel), f_Hbeta the same 5-15 um, its sign drawn after it from the same stream (the
+# other draws stay as they were), to the same accuracy (the built-in and planet-ring pairs at
+# 10 um: K_Hbeta within 0.38 %, k within 0.41 %; tests/stiffness/test_influence_3d_lead.cc). It
+# loads an end plane, so the uncrowned face's spacing holds (16 layers at least 1.35 h apart): a
+# face too narrow for both is refused naming the contact model, checked, and the case is then
+# crowned instead.
 def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
     rng = random.Random(f"{case['seed']}:{case['index']}:crowning")
     amount = round(rng.uniform(5., 15.), 1)
+    slope = amount * rng.choice((-1., 1.))
     # The crowned gear in turn (the 3D cases are every tenth: CI's 9, 19, 29 take one each).
     gears = [("Pinion",), ("Wheel",), ("Pinion", "Wheel")][case["index"] // 10 % 3]
-    sets = dict(sets, **{f"Gear pair/{gear}/lead crowning": amount for gear in gears})
+    lead = "lead slope" if case["index"] // 10 % 2 == 1 else "lead crowning"
+    if lead == "lead slope":
+        width = min(float(case["pair"][f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
+        depth = 3 * 0.08 * float(case["pair"]["Gear pair/Pinion/module"])
+        if width / (1.35 * depth) < 16 - 1e-6:
+            sloped = dict(sets, **{f"Gear pair/{gear}/lead slope": slope for gear in gears})
+            _, code, stderr = runner.run("stiffness", dict(sloped, **{
+                "Stiffness/contact model": "influence coefficients", "Mesh/layers": 16}),
+                allowed=(2,))
+            if code != 2 or not re.search(r"error: Stiffness/contact model: influence "
+                                          r"coefficients with a lead slope need 16 layers",
+                                          stderr):
+                raise CaseFailure(f"influence 3D slope on a {width} mm face: expected exit 2 "
+                                  f"naming the contact model, got exit {code}: "
+                                  f"{stderr.strip()[-300:]}")
+            log(f"influence 3D slope: refused on the {width} mm face (16 layers 1.35 h apart "
+                "need more), names the contact model; crowned instead")
+            lead = "lead crowning"
+    value = slope if lead == "lead slope" else amount
+    sets = dict(sets, **{f"Gear pair/{gear}/{lead}": value for gear in gears})
     # One position, the uncrowned check's double-contact one or its single-contact one in turn
     # (CI's 9 and 29 double, 19 single), as a one-position sweep centred on its roll angle, the
     # exact path on one rank. Two positions on 2 ranks (a position a rank) took the same wall
@@ -1045,7 +1074,7 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
                                                         "Mesh/layers": layers}))
     check_close("influence 3D crowned: the position's roll angle [deg]",
                 table(exact, "stiffness_sweep")[0]["roll_angle"], theta, 1e-9)
-    label = (f"influence 3D crowned ({amount} um on {' and '.join(gears).lower()}, {layers} "
+    label = (f"influence 3D {lead} ({value} um on {' and '.join(gears).lower()}, {layers} "
              f"layers, {sets[torque_key]} N·m, roll {theta:.4f} deg; model "
              f"{middle - start:.0f} s, exact {time.monotonic() - middle:.0f} s on 1 rank)")
     fast_equals_exact(label, table(exact, "stiffness_sweep"), table(fast, "stiffness_sweep"), log)

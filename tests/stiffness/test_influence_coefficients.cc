@@ -258,6 +258,47 @@ TEST(InfluenceCoefficients, EndFaceLayerExcess)
   EXPECT_NEAR(end_face_layer_excess(32. * h, h, 0), 0.5 * 0.0269, 1e-12);
 }
 
+// The layer kernel between a spur face's node planes (docs/ltca.md §3 "End faces"): its table's
+// entries as K − I (interior at Δz/h 2: diagonal 1.6497, neighbour −0.3979; the end plane's own
+// 1.7644 and a load on plane 1 read at the end −0.8484), the far end the mirror of the near
+// one, nothing beyond the reach of 7 planes, log interpolation between tabled Δz/h and clamping
+// outside. And its consistency with end_face_layer_excess, measured independently under a
+// uniform load along the face: a uniform load is the sum over the loaded planes, so 2.7744 (the
+// plane-strain layer of the kernel's load in Ê's units, the same FE) times Σ_loaded D(i, loaded)
+// is plane i's excess — 0.1909, 0.0449, 0.0300 against Ê 0.1844, 0.0433, 0.0290 at Δz/h 2
+// (+3.5, +3.8, +3.3 %: planes loaded beyond the fifth from the end are read there with the
+// interior row, which the tool's full rows do not; 0.2 % of the layer; 5 % asserted), and an
+// interior plane's row sums to plane strain (|Σ D| < 0.002: the interior row's sum 0.9989).
+TEST(InfluenceCoefficients, LayerKernel)
+{
+  const double h = 0.6e-3;
+  const unsigned int planes = 40;
+  EXPECT_NEAR(layer_kernel_departure(2. * h, h, planes, 20, 20), 0.6497, 1e-12);
+  EXPECT_NEAR(layer_kernel_departure(2. * h, h, planes, 21, 20), -0.3979, 1e-12);
+  EXPECT_NEAR(layer_kernel_departure(2. * h, h, planes, 19, 20), -0.3979, 1e-12);
+  EXPECT_NEAR(layer_kernel_departure(2. * h, h, planes, 0, 0), 0.7644, 1e-12);
+  EXPECT_NEAR(layer_kernel_departure(2. * h, h, planes, 0, 1), -0.8484, 1e-12);
+  EXPECT_NEAR(layer_kernel_departure(2. * h, h, planes, 39, 38), -0.8484, 1e-12);
+  EXPECT_EQ(layer_kernel_departure(2. * h, h, planes, 20, 28), 0.);
+  const double between = layer_kernel_departure(std::sqrt(8.) * h, h, planes, 20, 20);
+  EXPECT_NEAR(between, 0.5 * (0.6497 + 0.7114), 1e-12);
+  EXPECT_EQ(layer_kernel_departure(32. * h, h, planes, 3, 2),
+            layer_kernel_departure(16. * h, h, planes, 3, 2));
+  EXPECT_EQ(layer_kernel_departure(0.2 * h, h, planes, 3, 2),
+            layer_kernel_departure(0.5 * h, h, planes, 3, 2));
+  for (unsigned int i = 0; i < 3; ++i)
+  {
+    double sum = 0.;
+    for (unsigned int loaded = 0; loaded < planes; ++loaded)
+      sum += layer_kernel_departure(2. * h, h, planes, i, loaded);
+    EXPECT_NEAR(2.7744 * sum / end_face_layer_excess(2. * h, h, i), 1., 0.05) << "plane " << i;
+  }
+  double interior = 0.;
+  for (unsigned int loaded = 0; loaded < planes; ++loaded)
+    interior += layer_kernel_departure(2. * h, h, planes, 20, loaded);
+  EXPECT_LT(std::abs(interior), 2e-3);
+}
+
 // A tip edge's layer (docs/ltca.md §3 "Tip edges"): Flamant's wedge over the half-plane. The
 // half-plane is the wedge of angle π (α_tip = π/2): 1. The quarter-plane (α_tip = 0: half-angle
 // π/4, the load normal to one face, π/4 off the bisector): (π/4)·[1/(π/4 + ½) + 1/(π/4 − ½)] =
