@@ -2,9 +2,9 @@
 """The table Ê(Δz/h, i) of stiffness::end_face_layer_excess (stiffness/ltca_contact.cc), computed.
 
     python3 tools/end_face_layer.py            print the table (a few minutes on one core)
-    python3 tools/end_face_layer.py --check    recompute two rows of the table and two of the
-                                               kernel's (Δz/h 4: interior, end plane loaded)
-                                               and compare them with stiffness/ltca_contact.cc;
+    python3 tools/end_face_layer.py --check    recompute two rows of the table and the kernel's
+                                               row of a load on the end plane (Δz/h 4) and
+                                               compare them with stiffness/ltca_contact.cc;
                                                exit 1 when off
     python3 tools/end_face_layer.py --kernel [--ratio R ...]
                                                the layer's coupling between node planes under
@@ -305,12 +305,12 @@ def main():
             stored = table[ratio]
             print(f"dz/h {ratio}: computed {np.round(value, 4)}, table {stored}")
             worst = max(worst, np.max(abs(value - np.array(stored))))
-        kernel = source_kernel()[4.]
-        for name, value, stored in [
-                ("kernel, interior", interior_kernel(4., reach=KERNEL_REACH), kernel[0]),
-                ("kernel, end plane loaded", end_kernel(4., 0, reach=KERNEL_REACH), kernel[1])]:
-            print(f"dz/h 4 {name}: computed {np.round(value, 4)}, table {stored}", flush=True)
-            worst = max(worst, np.max(abs(value - np.array(stored))))
+        # The kernel's row of a load on the end plane (about 30 s; the interior row's two-sided
+        # face takes 140 s).
+        value = end_kernel(4., 0, reach=KERNEL_REACH)
+        stored = source_kernel()[4.][1]
+        print(f"dz/h 4 kernel, end plane loaded: computed {np.round(value, 4)}, table {stored}")
+        worst = max(worst, np.max(abs(value - np.array(stored))))
         sys.exit(0 if worst < 5e-4 else 1)
     if args.spread:
         for ratio in [1., 4.]:

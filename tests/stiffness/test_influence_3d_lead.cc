@@ -270,7 +270,8 @@ TEST(InfluenceCoefficients3DLead, LeadSlope)
 
 // The ladder behind the 16 layers, by hand: LADDER_FAST=1 runs the fast model (else the exact
 // path), LADDER_LAYERS (8), LADDER_HC (m, 6e-5), LADDER_BODY (m, 0: the default 0.7 mm),
-// LADDER_CROWN (m, 10e-6), LADDER_SLOPE (m, 0) on the pinion, LADDER_INTERNAL; prints k, TE, K_Hβ,
+// LADDER_CROWN (m, 10e-6), LADDER_SLOPE (m, 0), LADDER_END and LADDER_END_LENGTH (m, 0: end
+// relief C_I and L_I) on the pinion, LADDER_INTERNAL; prints k, TE, K_Hβ,
 // p_max of the four positions (LADDER_LINES=1: and their line loads along the face). Run from the
 // build folder with GEARSTIFF_BINARY_DIR set.
 TEST(InfluenceCoefficients3DLead, DISABLED_Ladder)
@@ -283,6 +284,8 @@ TEST(InfluenceCoefficients3DLead, DISABLED_Ladder)
   GearMeshStiffnessSettings settings =
       lead_settings(static_cast<unsigned int>(env("LADDER_LAYERS", 8)), env("LADDER_CROWN", 10e-6),
                     env("LADDER_SLOPE", 0.), env("LADDER_HC", 6e-5), env("LADDER_BODY", 0.));
+  settings.scene.pinion_modifications.lead.end_relief = env("LADDER_END", 0.);
+  settings.scene.pinion_modifications.lead.end_relief_length = env("LADDER_END_LENGTH", 0.);
   // LADDER_INTERNAL=1: the planet-ring pair of the 2D tests (rim 3·m_n) instead of the default
   // pair.
   if (env("LADDER_INTERNAL", 0.) > 0.)
