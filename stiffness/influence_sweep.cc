@@ -579,6 +579,8 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       unknowns.push_back(unknown);
     }
   // The coefficients read along each force line's tilt.
+  // N/m, each unknown's line load the layer kernel is scaled by (empty: the nominal T1/(r_b1·b)).
+  std::vector<double> kernel_load;
   const auto couple = [&]
   {
     problem.compliance.clear();
@@ -594,17 +596,18 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       return;
     // Spur planes' layer coupling along the face (own-plane loads, add_station_points): the
     // kernel's departure from plane strain between the planes of one contact line, in units of
-    // the line load's plane-strain layer at the nominal load (per N/m), over the loaded plane's
+    // the loaded plane's own plane-strain layer per N/m at its line load (kernel_load), over its
     // width. Not on helical pairs: their neighbouring planes touch tan β_b·Δz apart along the
     // profile, several contact widths, where a straight line's kernel does not hold (built-in
     // helical pair, 13 layers: K_Hβ −11 % with it; docs/ltca.md §3 "End faces").
     const double w = lines_force / pair.common_face_width; // N/m
     for (std::size_t y = 0; y < unknowns.size(); ++y)
     {
-      const double unit = hertz_line_contact(lines_force, pair.common_face_width,
+      const double wy = kernel_load.empty() || !(kernel_load[y] > 0.) ? w : kernel_load[y];
+      const double unit = hertz_line_contact(wy * pair.common_face_width, pair.common_face_width,
                                              problem.relative_radius[y], model.pinion, model.wheel)
                               .approach /
-                          w; // m per N/m
+                          wy; // m per N/m
       for (std::size_t x = 0; x < unknowns.size(); ++x)
         if (unknowns[x].pair == unknowns[y].pair)
           problem.compliance[x][y] +=
@@ -628,8 +631,33 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
     couple();
     return problem;
   };
+  // The kernel's unit is the loaded plane's plane-strain layer per N/m, which grows as ln(h/a) as
+  // its load falls (a ∝ √w): at the nominal load for every plane a partly relieved plane at an end
+  // relief's start was 4.6 % overloaded and its neighbour, the face's peak, 2.7 % underloaded, and
+  // a double contact's planes (half the nominal load each) took a unit 10 % too small. So the
+  // problem is solved with the nominal unit, recoupled at the line loads found, twice (a third
+  // pass moved K_Hβ by < 0.03 %; docs/ltca.md §3 "End faces"), before the solve that is kept.
+  const auto under = [&](double force) -> MeshContactProblem&
+  {
+    MeshContactProblem& p = lines_under(force);
+    if (dim != 3 || helix.rate != 0.)
+      return p;
+    kernel_load.clear();
+    couple();
+    p.total_force = force;
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      const MeshContactSolution found =
+          solve_mesh_contact(p, std::vector<double>(unknowns.size(), 0.));
+      kernel_load.assign(unknowns.size(), 0.);
+      for (std::size_t k = 0; k < unknowns.size(); ++k)
+        kernel_load[k] = found.force[k] / p.width[k];
+      couple();
+    }
+    return p;
+  };
   return solve_torques(
-      lines_under, model.frame, keys, torques, warm, newton_steps,
+      under, model.frame, keys, torques, warm, newton_steps,
       [&](const MeshContactSolution& solution, double torque)
       { return position_result<dim>(model, position, pairs, unknowns, solution, torque); });
 }

@@ -999,19 +999,23 @@ def influence_3d_crowned_model(runner, sets, layers, torque):
     return fast, (int(refusal.group(1)), int(refusal.group(2)))
 
 
-# A lead slope (carried on spur pairs since 2026-12-07: own-plane loads and the layer kernel,
-# docs/ltca.md section 3 "End faces") takes every other 3D case's turn instead of crowning (CI's
-# 19: on the wheel), f_Hbeta the same 5-15 um, its sign drawn after it from the same stream (the
-# other draws stay as they were), to the same accuracy (the built-in and planet-ring pairs at
-# 10 um: K_Hbeta within 0.38 %, k within 0.41 %; tests/stiffness/test_influence_3d_lead.cc). It
-# loads an end plane, so the uncrowned face's spacing holds (16 layers at least 1.35 h apart): a
-# face too narrow for both is refused naming the contact model, checked, and the case is then
-# crowned instead. Measured with the kernel (2026-12-07, seed 20261201, one run each, cases run
-# one at a time): case 9 crowned 13.2 um on the pinion |dk| 0.286 %, |dK_Hbeta| 0.19 % (0.611 %,
-# 1.0 % with the hat); 19 slope 12.8 um on the wheel 0.125 %, 0.50 %; 29 crowned 13.0 um on both
-# at 64.068 N·m 0.109 %, 0.45 % (0.433 %, 0.858 %); 39 slope 5.6 um on the pinion 0.045 %,
-# 0.25 %; 59 slope 10.2 um on both 0.054 %, 0.74 %. The uncrowned 4-layer check on the same
-# cases: |dK_Hbeta| 0.41, 0.41, 0.59, 0.44, 0.53 %.
+# A lead slope and an end relief (carried on spur pairs since 2026-12-07: own-plane loads and the
+# layer kernel, docs/ltca.md section 3 "End faces") take turns with crowning: a slope every other
+# 3D case (CI's 19: on the wheel), an end relief every other of the rest (CI's 29: on both), the
+# amount the same 5-15 um, the slope's sign and then L_I (a tenth to a quarter of the face)
+# drawn after it from the same stream (the other draws stay as they were), to the same accuracy
+# (the built-in and planet-ring pairs at 10 um: K_Hbeta within 1.12 % (slope) and 1.44 % (end
+# relief), k within 0.40 %; tests/stiffness/test_influence_3d_lead.cc). They load the face
+# without crowning's unloaded ends, so the uncrowned face's spacing holds (16 layers at least
+# 1.35 h apart): a face too narrow for both is refused naming the contact model, checked, and
+# the case is then crowned instead. Measured with the kernel at each plane's own line load
+# (2026-12-07, seed 20261201, one run each, cases run one at a time; |dk|, |dK_Hbeta|): case 9
+# crowned 13.2 um on the pinion 0.217 %, 0.08 % (0.611 %, 1.0 % with the hat); 19 slope 12.8 um
+# on the wheel 0.139 %, 1.11 %; 29 end relief 13.0 um on both 0.129 %, 1.03 % (crowned before:
+# 0.433 %, 0.858 % at 64.068 N·m); 39 slope 5.6 um on the pinion 0.044 %, 0.72 %; 59 slope
+# 10.2 um on both 0.28 % K_Hbeta; 69 (internal, 21/-64 m 6) end relief 13.2 um on the pinion
+# 0.068 %, 1.41 %. The uncrowned 4-layer check on cases 9, 19, 29, 39, 69: |dK_Hbeta| 0.45, 0.43,
+# 0.57, 0.43, 0.64 %.
 def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
     rng = random.Random(f"{case['seed']}:{case['index']}:crowning")
     amount = round(rng.uniform(5., 15.), 1)
@@ -1019,7 +1023,9 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
     # The crowned gear in turn (the 3D cases are every tenth: CI's 9, 19, 29 take one each).
     gears = [("Pinion",), ("Wheel",), ("Pinion", "Wheel")][case["index"] // 10 % 3]
     lead = "lead slope" if case["index"] // 10 % 2 == 1 else "lead crowning"
-    if lead == "lead slope":
+    if lead == "lead crowning" and case["index"] // 20 % 2 == 1:
+        lead = "end relief"
+    if lead != "lead crowning":
         width = min(float(case["pair"][f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
         depth = 3 * 0.08 * float(case["pair"]["Gear pair/Pinion/module"])
         if width / (1.35 * depth) < 16 - 1e-6:
@@ -1028,16 +1034,21 @@ def influence_3d_crowned_equals_exact(case, runner, log, sets, uncrowned_rows):
                 "Stiffness/contact model": "influence coefficients", "Mesh/layers": 16}),
                 allowed=(2,))
             if code != 2 or not re.search(r"error: Stiffness/contact model: influence "
-                                          r"coefficients with a lead slope need 16 layers",
-                                          stderr):
+                                          r"coefficients with a lead slope or end relief need "
+                                          r"16 layers", stderr):
                 raise CaseFailure(f"influence 3D slope on a {width} mm face: expected exit 2 "
                                   f"naming the contact model, got exit {code}: "
                                   f"{stderr.strip()[-300:]}")
-            log(f"influence 3D slope: refused on the {width} mm face (16 layers 1.35 h apart "
+            log(f"influence 3D {lead}: refused on the {width} mm face (16 layers 1.35 h apart "
                 "need more), names the contact model; crowned instead")
             lead = "lead crowning"
     value = slope if lead == "lead slope" else amount
     sets = dict(sets, **{f"Gear pair/{gear}/{lead}": value for gear in gears})
+    if lead == "end relief":
+        # L_I a tenth to a quarter of the face from each end, drawn after the slope's sign.
+        width = min(float(case["pair"][f"Gear pair/{g}/face width"]) for g in ("Pinion", "Wheel"))
+        length = round(width * rng.uniform(0.1, 0.25), 2)
+        sets = dict(sets, **{f"Gear pair/{gear}/end relief length": length for gear in gears})
     # One position, the uncrowned check's double-contact one or its single-contact one in turn
     # (CI's 9 and 29 double, 19 single), as a one-position sweep centred on its roll angle, the
     # exact path on one rank. Two positions on 2 ranks (a position a rank) took the same wall
