@@ -581,17 +581,12 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   // The coefficients read along each force line's tilt.
   // N/m, each unknown's line load the layer kernel is scaled by (empty: the nominal T1/(r_b1·b)).
   std::vector<double> kernel_load;
-  const auto couple = [&]
+  // m/N, the FE bodies' coefficients alone: the kernel is added to a copy each time the line
+  // loads change, without interpolating the coefficients again.
+  std::vector<std::vector<double>> body_compliance;
+  const auto add_kernel = [&]
   {
-    problem.compliance.clear();
-    for (const Unknown& a : unknowns)
-    {
-      problem.compliance.emplace_back();
-      for (const Unknown& b : unknowns)
-        problem.compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station,
-                                                       a.edge, b.pair, b.flank, b.line.tilt,
-                                                       b.station, b.edge));
-    }
+    problem.compliance = body_compliance;
     if (dim != 3 || helix.rate != 0.)
       return;
     // Spur planes' layer coupling along the face (own-plane loads, add_station_points): the
@@ -616,6 +611,19 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
               unit / problem.width[y];
     }
   };
+  const auto couple = [&]
+  {
+    body_compliance.clear();
+    for (const Unknown& a : unknowns)
+    {
+      body_compliance.emplace_back();
+      for (const Unknown& b : unknowns)
+        body_compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station, a.edge,
+                                                    b.pair, b.flank, b.line.tilt, b.station,
+                                                    b.edge));
+    }
+    add_kernel();
+  };
   couple();
   const auto lines_under = [&](double force) -> MeshContactProblem&
   {
@@ -639,11 +647,11 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   // pass moved K_Hβ by < 0.03 %; docs/ltca.md §3 "End faces"), before the solve that is kept.
   const auto under = [&](double force) -> MeshContactProblem&
   {
+    kernel_load.clear();
     MeshContactProblem& p = lines_under(force);
     if (dim != 3 || helix.rate != 0.)
       return p;
-    kernel_load.clear();
-    couple();
+    add_kernel(); // lines_under keeps the last torque's coupling when the lines do not change
     p.total_force = force;
     for (int pass = 0; pass < 2; ++pass)
     {
@@ -652,7 +660,7 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       kernel_load.assign(unknowns.size(), 0.);
       for (std::size_t k = 0; k < unknowns.size(); ++k)
         kernel_load[k] = found.force[k] / p.width[k];
-      couple();
+      add_kernel();
     }
     return p;
   };
