@@ -304,10 +304,11 @@ void factor_body_model(const GearMeshStiffnessSettings& settings, BodyModel<dim>
 }
 
 template <int dim>
-std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
-                                                 const std::vector<BodyPoint<dim>>& loads,
-                                                 const std::vector<BodyPoint<dim>>& reads,
-                                                 const std::function<void(std::size_t)>& solved)
+std::vector<std::vector<double>>
+body_compliance(const BodyModel<dim>& model, const std::vector<BodyPoint<dim>>& loads,
+                const std::vector<BodyPoint<dim>>& reads,
+                const std::function<void(std::size_t)>& solved, const FilletStressPoints* fillet,
+                std::vector<std::vector<double>>* fillet_values)
 {
   std::vector<fem::SparseLoad> sparse_loads;
   for (const BodyPoint<dim>& load : loads)
@@ -332,8 +333,26 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
       if (row_of.emplace(dof, rows.size()).second)
         rows.push_back(dof);
   }
+  // The fillet's rows after the reads' (the dense solutions of a block hold every DoF: the
+  // extra rows cost their copies only).
+  std::vector<std::size_t> fillet_rows;
+  if (fillet)
+    for (const types::global_dof_index dof : fillet->dofs)
+    {
+      const auto [it, added] = row_of.emplace(dof, static_cast<unsigned int>(rows.size()));
+      if (added)
+        rows.push_back(dof);
+      fillet_rows.push_back(it->second);
+    }
   const std::vector<std::vector<double>> responses =
       model.factorization->load_responses(sparse_loads, rows, solved);
+  if (fillet && fillet_values)
+  {
+    fillet_values->assign(loads.size(), std::vector<double>(fillet_rows.size(), 0.));
+    for (std::size_t a = 0; a < loads.size(); ++a)
+      for (std::size_t r = 0; r < fillet_rows.size(); ++r)
+        (*fillet_values)[a][r] = responses[a][fillet_rows[r]];
+  }
   std::vector<std::vector<double>> compliance(loads.size(), std::vector<double>(reads.size(), 0.));
   for (std::size_t a = 0; a < loads.size(); ++a)
     for (std::size_t b = 0; b < reads.size(); ++b)
@@ -343,6 +362,14 @@ std::vector<std::vector<double>> body_compliance(const BodyModel<dim>& model,
         compliance[a][b] += read.weights[i] * responses[a][row_of.at(read.dofs[i])];
     }
   return compliance;
+}
+
+template <int dim>
+FilletStressPoints body_fillet_points(const BodyModel<dim>& model,
+                                      const kinematics::GearPairGeometry& pair)
+{
+  const DoFHandler<dim>& dofs = model.system->get_dof_handler();
+  return fillet_stress_points(model.system->get_mapping(), dofs, fillet_faces(dofs, pair));
 }
 
 geometry::GearPairSceneSpec body_scene(const GearMeshStiffnessSettings& settings,
@@ -396,8 +423,14 @@ template void factor_body_model<2>(const GearMeshStiffnessSettings&, BodyModel<2
 template void factor_body_model<3>(const GearMeshStiffnessSettings&, BodyModel<3>&, bool);
 template std::vector<std::vector<double>>
 body_compliance<2>(const BodyModel<2>&, const std::vector<BodyPoint<2>>&,
-                   const std::vector<BodyPoint<2>>&, const std::function<void(std::size_t)>&);
+                   const std::vector<BodyPoint<2>>&, const std::function<void(std::size_t)>&,
+                   const FilletStressPoints*, std::vector<std::vector<double>>*);
 template std::vector<std::vector<double>>
 body_compliance<3>(const BodyModel<3>&, const std::vector<BodyPoint<3>>&,
-                   const std::vector<BodyPoint<3>>&, const std::function<void(std::size_t)>&);
+                   const std::vector<BodyPoint<3>>&, const std::function<void(std::size_t)>&,
+                   const FilletStressPoints*, std::vector<std::vector<double>>*);
+template FilletStressPoints body_fillet_points<2>(const BodyModel<2>&,
+                                                  const kinematics::GearPairGeometry&);
+template FilletStressPoints body_fillet_points<3>(const BodyModel<3>&,
+                                                  const kinematics::GearPairGeometry&);
 } // namespace gearstiff::stiffness::influence

@@ -12,6 +12,7 @@
 #include "kinematics/gear_pair.h"
 #include "stiffness/ltca_contact.h"
 #include "stiffness/mesh_stiffness_sweep.h"
+#include "stiffness/root_stress.h"
 
 #include <chrono>
 #include <deal.II/base/bounding_box.h>
@@ -84,10 +85,11 @@ void add_pair_load(GearMeshStiffnessResult& r, const PairFrame& frame, double po
                    double force, double total, double peak_pressure, double half_width);
 
 // What the 2D and 3D sweeps report alike for the position ℓ = `position` (m) under T1 = `torque`
-// (N·m) with `kinematic_pairs` pairs: the position and load, the base radii, no root stress
-// (NaN: the coarse body does not resolve the fillet), TE = the rigid approach of `solution` (m),
-// the unloaded TE `unloaded` (m), k = T1/(r_b1²·Δφ) with Δφ = (approach − unloaded)/r_b1, and the
-// solve's active-set passes; SolverFailure when the pinion did not turn forward.
+// (N·m) with `kinematic_pairs` pairs: the position and load, the base radii, the root stresses
+// NaN (the caller sums them from the fillet responses, FlankCompliance::root_stress), TE = the
+// rigid approach of `solution` (m), the unloaded TE `unloaded` (m), k = T1/(r_b1²·Δφ) with Δφ =
+// (approach − unloaded)/r_b1, and the solve's active-set passes; SolverFailure when the pinion did
+// not turn forward.
 GearMeshStiffnessResult result_at(const PairFrame& frame, unsigned int dimension, double position,
                                   std::size_t kinematic_pairs, double torque,
                                   const MeshContactSolution& solution, double unloaded);
@@ -159,13 +161,22 @@ struct BodyPoint
 };
 
 // m/N: result[a][b] = the displacement read b under the load a (P b of the factorization).
-// `solved` (may be empty) hears the loads solved so far, block by block.
+// `solved` (may be empty) hears the loads solved so far, block by block. With `fillet`, also
+// the displacements of its rows under each load into `fillet_values` [load][row] (m/N; the same
+// solves: the root stress at any set of forces is their sum, docs/ltca.md "Root stress").
 // SolverFailure when a point lies outside its body's mesh.
 template <int dim>
 std::vector<std::vector<double>>
 body_compliance(const BodyModel<dim>& model, const std::vector<BodyPoint<dim>>& loads,
                 const std::vector<BodyPoint<dim>>& reads,
-                const std::function<void(std::size_t)>& solved = {});
+                const std::function<void(std::size_t)>& solved = {},
+                const FilletStressPoints* fillet = nullptr,
+                std::vector<std::vector<double>>* fillet_values = nullptr);
+
+// The fillets of the gear `model` holds (its system: root_stress.h).
+template <int dim>
+FilletStressPoints body_fillet_points(const BodyModel<dim>& model,
+                                      const kinematics::GearPairGeometry& pair);
 
 // The scene of the FE body (`dimension` 2 or 3): the sweep's first position, every flank that
 // meshes in the sweep refined along its contacts at `band_cell` (m) out to the matching `depth`

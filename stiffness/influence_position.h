@@ -76,8 +76,8 @@ struct Unknown
 // The result of one position at one torque from the solved forces (one per unknown, pair by
 // pair, stations ascending), as GearMeshStiffness reports it. Each force is the normal force of
 // its station (N; a helical pair's transverse force along the line of action is its cos β_b
-// part, its axial force the sin β_b part). Root stresses are not evaluated by this model: NaN
-// (printed "nan", null in JSON), never a number that could be read as a stress.
+// part, its axial force the sin β_b part). The root stresses are NaN here (printed "nan", null in
+// JSON): the caller sums them from the FE body's fillets (2D) or leaves them so (3D).
 template <int dim>
 GearMeshStiffnessResult position_result(const PositionModel& model, double position,
                                         const std::vector<int>& pairs,

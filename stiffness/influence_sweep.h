@@ -4,7 +4,8 @@
 // every flank that meshes in the sweep, read at a matching depth under the flank; the analytic
 // plane-strain Hertz layer above that depth (stiffness/ltca_contact.h); at each position and
 // torque a complementarity problem of a few unknowns. Same results as the exact sweep
-// (stiffness/mesh_stiffness_sweep.h), root stresses aside (0: not evaluated).
+// (stiffness/mesh_stiffness_sweep.h); the root stresses from the FE body's fillets under the
+// solved loads in 2D, NaN in 3D (docs/ltca.md "Root stress").
 //
 //   settings.contact_model = ContactModel::influence_coefficients;
 //   StiffnessSweepResult r = influence_sweep<2>(MPI_COMM_WORLD, settings, spec, "/tmp/scene");

@@ -9,6 +9,7 @@
 #include "geometry/fields.h"
 #include "geometry/tooth_fault.h"
 #include "stiffness/contact_solve.h"
+#include "stiffness/root_stress.h"
 
 #include <algorithm>
 #include <boost/serialization/vector.hpp>
@@ -607,37 +608,9 @@ template <int dim>
 const std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>&
 GearMeshStiffness<dim>::fillet_faces()
 {
-  // The free surface between the root circle and the form circle (the fillets). Faces lying on
-  // the root circle itself (the rim between removed teeth of a full-rim scene) are not fillets.
-  if (!fillets.empty())
-    return fillets;
-  const double pinion_root = 0.5 * pair.pinion.root_diameter;
-  const double wheel_root = 0.5 * pair.wheel.root_diameter;
-  const double pinion_form = 0.5 * pair.pinion.form_diameter;
-  const double wheel_form = 0.5 * pair.wheel.form_diameter;
-  for (const auto& cell : problem->system().get_dof_handler().active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-    {
-      if (!cell->face(f)->at_boundary() ||
-          cell->face(f)->boundary_id() != geometry::scene_ids::free_surface)
-        continue;
-      const bool pinion = cell->material_id() == geometry::scene_ids::pinion_body;
-      const double x0 = pinion ? 0. : wheel_axis_x(pair);
-      const double root = pinion ? pinion_root : wheel_root;
-      const double form = pinion ? pinion_form : wheel_form;
-      // Between the root and the form circle (a ring's root circle is the larger one).
-      const double low = std::min(root * (1. - 1e-6), form);
-      const double high = std::max(root * (1. + 1e-6), form);
-      bool inside = true, on_root_circle = true;
-      for (const unsigned int v : cell->face(f)->vertex_indices())
-      {
-        const double r = polar_radius(cell->face(f)->vertex(v), x0);
-        inside = inside && r <= high && r >= low;
-        on_root_circle = on_root_circle && std::abs(r - root) < 1e-9;
-      }
-      if (inside && !on_root_circle)
-        fillets.emplace_back(cell, f);
-    }
+  // The fillets, as the influence-coefficient model reads them (stiffness/root_stress.h).
+  if (fillets.empty())
+    fillets = stiffness::fillet_faces(problem->system().get_dof_handler(), pair);
   return fillets;
 }
 

@@ -120,15 +120,15 @@ void declare_stiffness_parameters(ParameterHandler& prm)
       "contact model", "finite element", Selection("finite element|influence coefficients"),
       "finite element: mortar contact on a mesh that resolves the Hertz zone (the reference); "
       "influence coefficients (mode sweep, frictionless, profile modifications, rounded tips, no "
-      "tooth faults; 2D plane strain; 3D: spur pairs, lead crowning with at least 16 layers): a FE "
-      "body "
+      "tooth faults; 2D plane strain; 3D: spur and helical pairs, lead crowning with at least 16 "
+      "layers, lead slope and end relief on spur pairs with at least 16): a FE body "
       "of both gears that does not resolve the Hertz zone (flank cells h_f = "
       "0.04·m_n; 3D 0.08·m_n with the band of swept contacts meshed at 1.5·h_f = 0.12·m_n; the "
       "rims coarse beyond the modelled teeth) factored once, the influence coefficients of a grid "
       "on every meshing flank (3D: on every node plane) read 3·h_f under the surface (0.12·m_n; "
       "3D 0.24·m_n), the analytic plane-strain Hertz layer above that depth, one small contact "
-      "problem per position (docs/ltca.md); root stresses are not evaluated (nan in the tables, "
-      "null in JSON)");
+      "problem per position (docs/ltca.md); the root stresses from the FE body's fillets under "
+      "the solved loads in 2D, not evaluated in 3D (nan in the tables, null in JSON)");
   prm.declare_entry("influence grid points", "64", Integer(8, 10000),
                     "contact model influence coefficients: grid points per flank over the path "
                     "of contact [-]; the step must not exceed the matching depth 3·h_f (0.12·m_n; "

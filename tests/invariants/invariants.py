@@ -368,6 +368,14 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # 0.521 %, |dTE| 0.0147 um, |dshare| 0.0018; case 2, a 36/90 pair of m 5 mm, |dk| 0.897 %,
 # |dTE| 0.0427 um, |dshare| 0.0066: near the 1 %).
 INFLUENCE_KINDS = tuple(MODIFICATIONS)
+# The fast model's 2D root stresses (the FE body's fillets under the solved loads, docs/ltca.md
+# "Root stress") against the exact path's, both gears at every position. Measured 2026-12-07 on
+# seed 20261201's cases 1, 2, 3, 7: worst 3.18, 3.74, 3.70, 2.15 %; on the built-in cases of
+# test_influence_coefficients up to 5.75 % (tip rounding). Not 3x that: the difference is the two
+# meshes' own fillet discretisation (the default pair at body size 0.7 -> 0.25 mm: the exact path
+# moves by up to 3.9 %, the model by 3.3 %, and there they agree within 1.6 %), systematic, not
+# noise; 7 % catches a wrong load or read while leaving the meshes' difference.
+INFLUENCE_ROOT_STRESS_RTOL = 0.07
 # The kinds draw_case leaves unrounded (the fast model's kinds when rounding was added).
 UNROUNDED_KINDS = ("none",)
 
@@ -387,7 +395,8 @@ def influence_equals_exact(case, runner, log, sweeps):
     # circle sank under the meshed chords (2026-12-05, stiffness/influence_sweep.cc flank_sink).
     fast, _, _ = runner.run("stiffness", sets)
     fast_equals_exact("influence", table(sweeps["once"], "stiffness_sweep"),
-                      table(fast, "stiffness_sweep"), log, unloaded=True)
+                      table(fast, "stiffness_sweep"), log, unloaded=True,
+                      root_stress=INFLUENCE_ROOT_STRESS_RTOL)
     # Two ranks take a gear each, one rank both in turn, with the same factor of each gear
     # (stiffness/influence_sweep.cc, run_influence): every printed value but the costs equal.
     two, _, _ = runner.run("stiffness", sets, ranks=2)
@@ -444,11 +453,18 @@ def check_same_printed(label, a, b, tables):
         raise CaseFailure(f"{label} differs in {differences[:5]}")
 
 
-def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False):
+def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None):
     """The influence-coefficient model's sweep rows against the exact path's: k 1 %, TE 0.1 um,
-    load shares 0.01 (and the unloaded TE, the same geometry, 1 nm)."""
+    load shares 0.01 (and the unloaded TE, the same geometry, 1 nm; with `root_stress`, both
+    gears' root stresses within that relative tolerance)."""
     worst = [0., 0., 0.]
+    worst_root = 0.
     for i, (a, b) in enumerate(zip(exact_rows, fast_rows)):
+        if root_stress is not None:
+            for gear in ("pinion_root_stress", "wheel_root_stress"):
+                check_close(f"{label}: position {i} {gear} [MPa]", b[gear], a[gear], 0.,
+                            root_stress)
+                worst_root = max(worst_root, abs(b[gear] / a[gear] - 1.))
         if unloaded:
             check_close(f"{label}: position {i} unloaded TE [um]",
                         b["unloaded_transmission_error"], a["unloaded_transmission_error"], 1e-3)
@@ -461,7 +477,8 @@ def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False):
                  max(worst[1], abs(b["transmission_error"] - a["transmission_error"])),
                  max(worst[2], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
     log(f"{label} = exact: |dk| {worst[0] * 100:.3g} %, |dTE| {worst[1]:.3g} um, "
-        f"|dshare| {worst[2]:.2g}")
+        f"|dshare| {worst[2]:.2g}" +
+        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else ""))
 
 
 def face_load_factors_equal(label, exact, fast, log):
