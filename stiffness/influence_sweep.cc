@@ -901,9 +901,10 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                    format_number(elapsed, 3) + " s, ~" +
                    format_number(elapsed * double(n_loads - done) / double(done), 2) + " s left");
         };
-        // The fillets' displacements under each load, for the root stress: in 2D (within 1.9 %
-        // of the exact path on the default pair, docs/ltca.md "Root stress"); not in 3D, where
-        // the model and the exact path's Q1 fillets differ by up to 13 % (not yet explained).
+        // The fillets' displacements under each load, for the root stress: in 2D (within 5.8 %
+        // of the exact path on the same default sizes, the two meshes' fillet error; docs/ltca.md
+        // "Root stress"); not in 3D, where the model and the exact path's Q1 fillets differ by
+        // up to 13 % (not yet explained).
         GearCoefficients responses{
             wheel, {}, dim == 2 ? body_fillet_points(*model, pair) : FilletStressPoints{}, {}};
         responses.coefficients =
