@@ -374,7 +374,11 @@ INFLUENCE_KINDS = tuple(MODIFICATIONS)
 # test_influence_coefficients up to 5.75 % (tip rounding). Not 3x that: the difference is the two
 # meshes' own fillet discretisation (the default pair at body size 0.7 -> 0.25 mm: the exact path
 # moves by up to 3.9 %, the model by 3.3 %, and there they agree within 1.6 %), systematic, not
-# noise; 7 % catches a wrong load or read while leaving the meshes' difference.
+# noise; 7 % catches a wrong load or read while leaving the meshes' difference. Compared only where
+# the exact path's `once` and `per position` sweeps agree on it within half that: case 15 (a ring
+# z 70, m 1 mm, mesh position 0.1) has the ring's at 123.8 (once) and 85.2 MPa (per position),
+# the model 135.4, all three steady under body sizes 0.14 and 0.1 mm — a scene effect of the exact
+# path's own (not yet found), not a reference.
 INFLUENCE_ROOT_STRESS_RTOL = 0.07
 # The kinds draw_case leaves unrounded (the fast model's kinds when rounding was added).
 UNROUNDED_KINDS = ("none",)
@@ -396,7 +400,8 @@ def influence_equals_exact(case, runner, log, sweeps):
     fast, _, _ = runner.run("stiffness", sets)
     fast_equals_exact("influence", table(sweeps["once"], "stiffness_sweep"),
                       table(fast, "stiffness_sweep"), log, unloaded=True,
-                      root_stress=INFLUENCE_ROOT_STRESS_RTOL)
+                      root_stress=INFLUENCE_ROOT_STRESS_RTOL,
+                      root_reference=table(sweeps["per position"], "stiffness_sweep"))
     # Two ranks take a gear each, one rank both in turn, with the same factor of each gear
     # (stiffness/influence_sweep.cc, run_influence): every printed value but the costs equal.
     two, _, _ = runner.run("stiffness", sets, ranks=2)
@@ -453,15 +458,24 @@ def check_same_printed(label, a, b, tables):
         raise CaseFailure(f"{label} differs in {differences[:5]}")
 
 
-def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None):
+def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None,
+                      root_reference=None):
     """The influence-coefficient model's sweep rows against the exact path's: k 1 %, TE 0.1 um,
     load shares 0.01 (and the unloaded TE, the same geometry, 1 nm; with `root_stress`, both
-    gears' root stresses within that relative tolerance)."""
+    gears' root stresses within that relative tolerance where the exact path's two sweep meshes,
+    `exact_rows` and `root_reference`, agree on it within half that tolerance: elsewhere the
+    reference is not a root stress to judge by, and the position is logged, not compared)."""
     worst = [0., 0., 0.]
     worst_root = 0.
+    unsettled = []
     for i, (a, b) in enumerate(zip(exact_rows, fast_rows)):
         if root_stress is not None:
             for gear in ("pinion_root_stress", "wheel_root_stress"):
+                if root_reference is not None and \
+                        abs(a[gear] / root_reference[i][gear] - 1.) > 0.5 * root_stress:
+                    unsettled.append(f"{i} {gear.split('_')[0]} once {a[gear]:.4g} / per "
+                                     f"position {root_reference[i][gear]:.4g} MPa")
+                    continue
                 check_close(f"{label}: position {i} {gear} [MPa]", b[gear], a[gear], 0.,
                             root_stress)
                 worst_root = max(worst_root, abs(b[gear] / a[gear] - 1.))
@@ -478,7 +492,9 @@ def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_st
                  max(worst[2], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
     log(f"{label} = exact: |dk| {worst[0] * 100:.3g} %, |dTE| {worst[1]:.3g} um, "
         f"|dshare| {worst[2]:.2g}" +
-        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else ""))
+        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else "") +
+        (f" (not compared where the exact meshes disagree: {'; '.join(unsettled)})"
+         if unsettled else ""))
 
 
 def face_load_factors_equal(label, exact, fast, log):
