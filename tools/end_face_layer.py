@@ -192,17 +192,14 @@ def quarter_space(x, y, z, a, nu, h):
                      for i in range(PLANES)])
 
 
-def interior_kernel(ratio, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
-    """The layer's coupling between node planes away from the ends (docs/ltca.md §3 "End
-    faces", session 50): a line load w on one node plane alone, as the exact path's dual mortar
-    applies it (the plane's nodal force w·Δz, nothing on its neighbours), on uniform layers of Δz
-    (z held at both far ends, the plane in the middle); the compression (surface minus depth h)
-    at that plane and the next `reach` over the plane-strain compression of w. Their sum over
-    all planes is 1 (a uniform load is plane strain); the fast model takes 1, 0, 0, ..."""
+def one_plane_load(ratio, near, a=HALF_WIDTH, nu=POISSON, h=1.0):
+    """The interior model of interior_kernel and inclined_kernel, solved: a line load of 1 N/m on
+    the node plane z = 0 alone (its nodal force w·Δz), uniform layers of Δz = ratio·h out to
+    `near` each side, then graded 30·h further, z held at both far ends. Returns the section's
+    nodes x, y, the displacements u, the node index [i, j, k] and the loaded plane's k."""
     x, y = section_nodes(a)
-    reference = plane_strain(x, y, a, nu, h)
     dz = ratio * h
-    uniform = np.arange(0., max(8 * h, (reach + 3) * dz) + 0.5 * dz, dz)
+    uniform = np.arange(0., near + 0.5 * dz, dz)
     far = graded(uniform[-1], dz, uniform[-1] + 30 * h, 1.35)
     z = np.unique(np.round(np.concatenate([-far[::-1], -uniform[::-1], uniform, far]), 12))
     plane = int(np.argmin(abs(z)))
@@ -215,6 +212,19 @@ def interior_kernel(ratio, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
                            *[(3 * index[-1, :, :] + c).ravel() for c in range(3)],
                            *[(3 * index[:, -1, :] + c).ravel() for c in range(3)]])
     u, index = solve([x, y, z], np.unique(held), load, nu)
+    return x, y, u, index, plane
+
+
+def interior_kernel(ratio, a=HALF_WIDTH, nu=POISSON, h=1.0, reach=5):
+    """The layer's coupling between node planes away from the ends (docs/ltca.md §3 "End
+    faces", session 50): a line load w on one node plane alone, as the exact path's dual mortar
+    applies it (the plane's nodal force w·Δz, nothing on its neighbours), on uniform layers of Δz
+    (z held at both far ends, the plane in the middle); the compression (surface minus depth h)
+    at that plane and the next `reach` over the plane-strain compression of w. Their sum over
+    all planes is 1 (a uniform load is plane strain); the fast model takes 1, 0, 0, ..."""
+    dz = ratio * h
+    x, y, u, index, plane = one_plane_load(ratio, max(8 * h, (reach + 3) * dz), a, nu, h)
+    reference = plane_strain(x, y, a, nu, h)
     j = int(np.argmin(abs(y - h)))
     return np.array([(u[3 * index[0, 0, plane + m] + 1] - u[3 * index[0, j, plane + m] + 1])
                      / reference for m in range(reach + 1)])
@@ -251,22 +261,8 @@ def inclined_kernel(ratio, shifts, a=HALF_WIDTH, nu=POISSON, depths=(1.0, 3.0), 
     excess is what lumping a uniform inclined line on node planes adds to the continuous line
     (plane strain in its own frame). Δz/h 2 with reach 12: 111k DoFs, 7.3 GB, 7.5 min of one
     core."""
-    x, y = section_nodes(a)
-    dz = ratio
-    reach = reach or int(np.ceil(24. / dz))
-    uniform = np.arange(0., (reach + 3) * dz + 0.5 * dz, dz)
-    far = graded(uniform[-1], dz, uniform[-1] + 30., 1.35)
-    z = np.unique(np.round(np.concatenate([-far[::-1], -uniform[::-1], uniform, far]), 12))
-    plane = int(np.argmin(abs(z)))
-    nx, ny, nz = len(x), len(y), len(z)
-    index = np.arange(nx * ny * nz).reshape(nz, ny, nx).T
-    load = np.zeros(3 * nx * ny * nz)
-    load[3 * index[:, 0, plane] + 1] = line_load(x, a) * dz
-    held = np.concatenate([(3 * index[0, :, :]).ravel(),  # x = 0: symmetry
-                           (3 * index[:, :, 0] + 2).ravel(), (3 * index[:, :, -1] + 2).ravel(),
-                           *[(3 * index[-1, :, :] + c).ravel() for c in range(3)],
-                           *[(3 * index[:, -1, :] + c).ravel() for c in range(3)]])
-    u, index = solve([x, y, z], np.unique(held), load, nu)
+    reach = reach or int(np.ceil(24. / ratio))
+    x, y, u, index, plane = one_plane_load(ratio, (reach + 3) * ratio, a, nu)
     unit = 2 * (1 - nu ** 2) / np.pi
     for depth in depths:
         j = int(np.argmin(abs(y - depth)))
