@@ -644,33 +644,23 @@ template <int dim>
 void GearMeshStiffness<dim>::evaluate_root_stress()
 {
   // Root stress: the largest first principal stress on the fillets (fillet_faces), where tooth
-  // root cracks start (ISO 6336-3 takes the tensile fillet stress).
+  // root cracks start (ISO 6336-3 takes the tensile fillet stress); the influence-coefficient
+  // model reads its FE body's fillets alike (stiffness/root_stress.h).
   const fem::ElasticSystem<dim>& system = problem->system();
-  const auto& fe = system.get_fe();
-  const QGauss<dim - 1> quadrature(fe.degree + 1);
-  FEFaceValues<dim> fe_face(system.get_mapping(), fe, quadrature,
-                            update_gradients | update_quadrature_points);
   const Vector<double>& u = problem->solution();
-  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-  result.pinion_root_stress = result.wheel_root_stress = 0.; // a further torque: anew
-  for (const auto& [cell, f] : fillet_faces())
+  for (const bool pinion : {true, false})
   {
-    const bool pinion = cell->material_id() == geometry::scene_ids::pinion_body;
-    fe_face.reinit(cell, f);
-    cell->get_dof_indices(dofs);
-    for (const unsigned int q : fe_face.quadrature_point_indices())
-    {
-      Tensor<2, dim> gradient;
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-      {
-        const unsigned int c = fe.system_to_component_index(i).first;
-        gradient[c] += u[dofs[i]] * fe_face.shape_grad_component(i, q, c);
-      }
-      const double largest =
-          eigenvalues(fem::stress(settings.material, settings.elasticity.model, gradient))[0];
-      double& target = pinion ? result.pinion_root_stress : result.wheel_root_stress;
-      target = std::max(target, largest);
-    }
+    std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>> faces;
+    for (const auto& face : fillet_faces())
+      if ((face.first->material_id() == geometry::scene_ids::pinion_body) == pinion)
+        faces.push_back(face);
+    const FilletStressPoints points =
+        fillet_stress_points(system.get_mapping(), system.get_dof_handler(), faces);
+    std::vector<double> values;
+    for (const types::global_dof_index dof : points.dofs)
+      values.push_back(u[dof]);
+    (pinion ? result.pinion_root_stress : result.wheel_root_stress) =
+        largest_fillet_stress(points, values, settings.material, settings.elasticity.model);
   }
 }
 
