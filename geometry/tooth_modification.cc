@@ -385,6 +385,89 @@ rounding_translations(const std::vector<ProfilePoint>& points,
   }
   return moves;
 }
+
+// How a fillet carries its flank's removal (step 3 of modified_tooth). The profile modifications
+// remove material from the involute only, and most of them remove some at the form circle: root
+// relief its whole amount, profile crowning the parabola's value beyond the active profile, a
+// negative slope its amount and more. Left there, the flank's first point sits δ_f inside the
+// fillet's last one: a step the outline's spline turns into a notch, and the root stress read on
+// the fillet became that notch's, growing as the mesh refined there (case 15 of the invariants'
+// seed 20261201, a ring with 2.7 µm profile crowning and a −2.8 µm slope: 124 MPa on the rolling
+// mesh, 85 on a mesh per position). The fillet takes the removal instead, as the lead
+// modifications' blend does (geometry/tooth_modification_lead.h): δ_f·(3u² − 2u³) over the
+// fillet's arc length u ∈ [0, 1] from its root end (0, where the neighbouring outline goes on
+// unmoved) to the form point (1) — continuous, flat at both ends, never deeper than δ_f. The
+// outline keeps a kink at the form point of the flank's own slope dδ/ds there (the removal per
+// arc length of the modified involute, what the flank turns by anyway); meeting that slope too
+// was tried and dropped: near the base circle ds = (ρ/r_b)·dρ makes it steep (a 15 µm root
+// relief over 0.5 mm of roll on the built-in pinion: −0.6), and a cubic that follows it bulges
+// the fillet by several δ_f. A ground flank that runs out into its fillet without a grinding
+// notch; what a real fillet is after grinding depends on the tool (protuberance), which the
+// profile's data do not say.
+struct FilletBlend
+{
+  bool active = false;
+  double depth_at_form = 0.;                              // m, δ_f
+  double root_arc = 0.;                                   // m, arc length of the fillet's root end
+  double length = 0.;                                     // m, the fillet's arc length
+  Eigen::Vector2d towards_form = Eigen::Vector2d::Zero(); // chord from the root end to the form
+};
+
+std::vector<FilletBlend> fillet_blends(const std::vector<ProfilePoint>& points,
+                                       const std::vector<ToothModification>& modifications,
+                                       const FlankRollRange& range, int loaded_side,
+                                       double base_radius)
+{
+  std::vector<FilletBlend> blends(2);
+  for (std::size_t f = 0; f < points.size(); ++f)
+  {
+    if (!is_involute(points[f].segment) || points[f].side == 0)
+      continue;
+    const int side = points[f].side;
+    const auto fillet_of_side = [&](std::size_t i)
+    { return points[i].segment == ProfileSegment::fillet && points[i].side == side; };
+    // The form point: an involute point next to a fillet point of its side; the fillet runs
+    // away from it to its root end.
+    int step = 0;
+    if (f > 0 && fillet_of_side(f - 1))
+      step = -1;
+    else if (f + 1 < points.size() && fillet_of_side(f + 1))
+      step = 1;
+    if (step == 0)
+      continue;
+    std::size_t r = f;
+    while (true)
+    {
+      const std::ptrdiff_t next = static_cast<std::ptrdiff_t>(r) + step;
+      if (next < 0 || next >= static_cast<std::ptrdiff_t>(points.size()) ||
+          !fillet_of_side(static_cast<std::size_t>(next)))
+        break;
+      r = static_cast<std::size_t>(next);
+    }
+    FilletBlend& blend = blends[side < 0 ? 0 : 1];
+    blend.depth_at_form = removed_depth(
+        modifications, range, roll_of(points[f].position, base_radius), side == loaded_side);
+    blend.root_arc = points[r].arc_length;
+    blend.length = std::abs(points[f].arc_length - points[r].arc_length);
+    blend.towards_form = points[f].position - points[r].position;
+    blend.active = blend.length > 0. && blend.depth_at_form > 0.;
+  }
+  return blends;
+}
+
+// Moves a fillet point by its blend (step 3 of modified_tooth); its normal turns by dδ/ds.
+void blend_fillet_point(ProfilePoint& p, const FilletBlend& blend)
+{
+  const double u = std::min(1., std::abs(p.arc_length - blend.root_arc) / blend.length);
+  const double d = blend.depth_at_form;
+  const double depth = d * u * u * (3. - 2. * u);
+  const double slope = d * 6. * u * (1. - u) / blend.length;
+  Eigen::Vector2d tangent(-p.normal.y(), p.normal.x());
+  if (tangent.dot(blend.towards_form) < 0.)
+    tangent = -tangent;
+  p.position -= depth * p.normal;
+  p.normal = (p.normal + slope * tangent).normalized();
+}
 } // namespace
 
 ToothProfile modified_tooth(const ToothProfile& nominal,
@@ -410,10 +493,21 @@ ToothProfile modified_tooth(const ToothProfile& nominal,
       [&](const ProfilePoint& p, bool loaded)
       { return removed_depth(modifications, range, roll_of(p.position, rb), loaded); },
       loaded_side);
+  // 3. The fillets take their flank's removal at the form circle (FilletBlend), from the nominal
+  //    points, before step 2 moves the form points.
+  const std::vector<FilletBlend> blends =
+      fillet_blends(points, modifications, range, loaded_side, rb);
   ToothProfile tooth = nominal;
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     ProfilePoint& p = points[i];
+    if (p.segment == ProfileSegment::fillet && p.side != 0)
+    {
+      const FilletBlend& blend = blends[p.side < 0 ? 0 : 1];
+      if (blend.active)
+        blend_fillet_point(p, blend);
+      continue;
+    }
     if (is_rounding(points, i))
     {
       const RoundingMove& move = rounding_moves[point_side(p) < 0 ? 0 : 1];

@@ -24,7 +24,10 @@ const std::vector<TextEntry> entries = {
      "L_a along the path of contact from the tip [mm]; auto = from the start of single-tooth "
      "contact (long relief)"},
     {"tip relief shape", "linear", "linear | parabolic | arc"},
-    {"root relief", "0", "C_f, removed normal to the flank at the root form circle [µm]"},
+    {"root relief", "0",
+     "C_f, removed normal to the flank at the root form circle [µm]; the fillet takes what the "
+     "flank loses at the form circle (any modification's), blended to 0 at the root, so the "
+     "outline has no step there"},
     {"root relief length", "auto",
      "L_f along the path of contact from the root form circle [mm]; auto = to the start of "
      "single-tooth contact"},

@@ -12,7 +12,8 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
     once = per position      a rolling sweep (one mesh, turned) against a mesh per position:
                              unloaded TE identical (it is geometry: 1 nm), loaded TE within
                              0.05 um, load shares within 0.005 (issue 41's accuracy), k within
-                             0.5 % (the default meshes' own scatter on generated gears: 0.4 %)
+                             0.5 % (the default meshes' own scatter on generated gears: 0.4 %),
+                             root stresses within 20 % (their fillets' scatter: 6.8 %)
     zero = none              a modification of amount 0 gives every printed digit of none
     one-gear relief          a tip relief on one gear only: unloaded TE 0 at every position (the
                              unmodified pair carries wherever the relieved one separates)
@@ -324,6 +325,17 @@ SWEEP_POSITIONS = 5  # over one base pitch: both contact zones, and the suite's 
 # per-position sweep ~2.2 s a position), which these sizes hardly move.
 
 
+# The root stresses of the two sweeps' meshes (the largest first principal stress on the fillets,
+# stiffness/root_stress.h): each reads the fillets at the body size, so they differ by the two
+# meshes' discretisation (docs/accuracy.md: 3.4 % on the built-in pair at the default size, 0.9 %
+# at 0.25 mm). Measured 2026-12-07 on the 36 2D cases 0-39 of seed 20261201: worst 6.79 % (case
+# 20, a relieved pinion at mu 0.08), 6.46, 6.16, 5.93 % next; 3x that is 20 %. It catches what a
+# mesh-made stress does: until the fillet took its flank's removal at the form circle
+# (geometry/tooth_modification.cc, FilletBlend), case 15's crowned and sloped ring had a step
+# there, 123.8 MPa on the rolling mesh against 85.2 per position (45 %; 86.2 and 87.2 since).
+ROOT_STRESS_MESHES = 0.20
+
+
 def once_equals_per_position(case, runner, log, once_out=None):
     """Returns both sweeps' reports: the later identities reuse them (issue 43: each FE sweep of
     a case runs once)."""
@@ -331,7 +343,7 @@ def once_equals_per_position(case, runner, log, once_out=None):
     reference, _, _ = runner.run("stiffness",
                                  sweep_sets(case, SWEEP_POSITIONS, "per position"))
     rows_once, rows_ref = table(once, "stiffness_sweep"), table(reference, "stiffness_sweep")
-    worst = [0., 0., 0., 0.]
+    worst = [0., 0., 0., 0., 0.]
     for i, (a, b) in enumerate(zip(rows_ref, rows_once)):
         check_close(f"position {i} unloaded TE [um]", b["unloaded_transmission_error"],
                     a["unloaded_transmission_error"], 1e-3)
@@ -345,13 +357,18 @@ def once_equals_per_position(case, runner, log, once_out=None):
         check_close(f"position {i} k [N/um]", b["stiffness"], a["stiffness"], 0., 5e-3)
         for sa, sb in zip(shares(a), shares(b)):
             check_close(f"position {i} load share", sb, sa, 5e-3)
+        for gear in ("pinion_root_stress", "wheel_root_stress"):
+            check_close(f"position {i} {gear} [MPa]", b[gear], a[gear], 0., ROOT_STRESS_MESHES)
         worst = [max(worst[0], abs(b["unloaded_transmission_error"] -
                                    a["unloaded_transmission_error"])),
                  max(worst[1], abs(b["transmission_error"] - a["transmission_error"])),
                  max(worst[2], abs(b["stiffness"] / a["stiffness"] - 1.)),
-                 max(worst[3], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
+                 max(worst[3], max(abs(x - y) for x, y in zip(shares(a), shares(b)))),
+                 max([worst[4]] + [abs(b[g] / a[g] - 1.)
+                                   for g in ("pinion_root_stress", "wheel_root_stress")])]
     log(f"once = per position: |dTE0| {worst[0]:.2g} um, |dTE| {worst[1]:.3g} um, "
-        f"|dk| {worst[2] * 100:.3g} %, |dshare| {worst[3]:.2g}")
+        f"|dk| {worst[2] * 100:.3g} %, |dshare| {worst[3]:.2g}, "
+        f"|d root stress| {worst[4] * 100:.3g} %")
     return {"once": once, "per position": reference, "once_out": once_out}
 
 
@@ -369,16 +386,17 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # |dTE| 0.0427 um, |dshare| 0.0066: near the 1 %).
 INFLUENCE_KINDS = tuple(MODIFICATIONS)
 # The fast model's 2D root stresses (the FE body's fillets under the solved loads, docs/ltca.md
-# "Root stress") against the exact path's, both gears at every position. Measured 2026-12-07 on
-# seed 20261201's cases 1, 2, 3, 7: worst 3.18, 3.74, 3.70, 2.15 %; on the built-in cases of
-# test_influence_coefficients up to 5.75 % (tip rounding). Not 3x that: the difference is the two
-# meshes' own fillet discretisation (the default pair at body size 0.7 -> 0.25 mm: the exact path
-# moves by up to 3.9 %, the model by 3.3 %, and there they agree within 1.6 %), systematic, not
-# noise; 7 % catches a wrong load or read while leaving the meshes' difference. Compared only where
-# the exact path's `once` and `per position` sweeps agree on it within half that: case 15 (a ring
-# z 70, m 1 mm, mesh position 0.1) has the ring's at 123.8 (once) and 85.2 MPa (per position),
-# the model 135.4, all three steady under body sizes 0.14 and 0.1 mm — a scene effect of the exact
-# path's own (not yet found), not a reference.
+# "Root stress") against the exact rolling sweep's, both gears at every position. Measured
+# 2026-12-07 on the 18 frictionless 2D cases among 0-39 of seed 20261201 (after the fillets took
+# their flank's removal at the form circle): worst 4.03 % (case 33), 3.74, 3.70, 3.18 % next; on
+# the built-in cases of test_influence_coefficients up to 5.75 % (tip rounding). Not 3x that:
+# the difference is the two meshes' own fillet discretisation (the default pair at body size
+# 0.7 -> 0.25 mm: the exact path moves by up to 3.9 %, the model by 3.3 %, and there they agree
+# within 1.6 %), systematic, not noise; 7 % catches a wrong load or read while leaving the
+# meshes' difference. Until the fillet blend, case 15's ring (crowned and sloped, a step at its
+# form circle) read 123.8 (once), 85.2 (per position) and 135.4 MPa (the model) at its first
+# position, and the comparison was left out where the exact meshes disagreed; now 86.2, 87.2
+# and 85.4 MPa, every position compared.
 INFLUENCE_ROOT_STRESS_RTOL = 0.07
 # The kinds draw_case leaves unrounded (the fast model's kinds when rounding was added).
 UNROUNDED_KINDS = ("none",)
@@ -400,8 +418,7 @@ def influence_equals_exact(case, runner, log, sweeps):
     fast, _, _ = runner.run("stiffness", sets)
     fast_equals_exact("influence", table(sweeps["once"], "stiffness_sweep"),
                       table(fast, "stiffness_sweep"), log, unloaded=True,
-                      root_stress=INFLUENCE_ROOT_STRESS_RTOL,
-                      root_reference=table(sweeps["per position"], "stiffness_sweep"))
+                      root_stress=INFLUENCE_ROOT_STRESS_RTOL)
     # Two ranks take a gear each, one rank both in turn, with the same factor of each gear
     # (stiffness/influence_sweep.cc, run_influence): every printed value but the costs equal.
     two, _, _ = runner.run("stiffness", sets, ranks=2)
@@ -458,24 +475,15 @@ def check_same_printed(label, a, b, tables):
         raise CaseFailure(f"{label} differs in {differences[:5]}")
 
 
-def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None,
-                      root_reference=None):
+def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None):
     """The influence-coefficient model's sweep rows against the exact path's: k 1 %, TE 0.1 um,
     load shares 0.01 (and the unloaded TE, the same geometry, 1 nm; with `root_stress`, both
-    gears' root stresses within that relative tolerance where the exact path's two sweep meshes,
-    `exact_rows` and `root_reference`, agree on it within half that tolerance: elsewhere the
-    reference is not a root stress to judge by, and the position is logged, not compared)."""
+    gears' root stresses within that relative tolerance)."""
     worst = [0., 0., 0.]
     worst_root = 0.
-    unsettled = []
     for i, (a, b) in enumerate(zip(exact_rows, fast_rows)):
         if root_stress is not None:
             for gear in ("pinion_root_stress", "wheel_root_stress"):
-                if root_reference is not None and \
-                        abs(a[gear] / root_reference[i][gear] - 1.) > 0.5 * root_stress:
-                    unsettled.append(f"{i} {gear.split('_')[0]} once {a[gear]:.4g} / per "
-                                     f"position {root_reference[i][gear]:.4g} MPa")
-                    continue
                 check_close(f"{label}: position {i} {gear} [MPa]", b[gear], a[gear], 0.,
                             root_stress)
                 worst_root = max(worst_root, abs(b[gear] / a[gear] - 1.))
@@ -492,9 +500,7 @@ def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_st
                  max(worst[2], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
     log(f"{label} = exact: |dk| {worst[0] * 100:.3g} %, |dTE| {worst[1]:.3g} um, "
         f"|dshare| {worst[2]:.2g}" +
-        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else "") +
-        (f" (not compared where the exact meshes disagree: {'; '.join(unsettled)})"
-         if unsettled else ""))
+        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else ""))
 
 
 def face_load_factors_equal(label, exact, fast, log):
