@@ -270,8 +270,8 @@ class FlankCompliance
 public:
   // `removal(ℓ, wheel)` (m): the profile modification's depth at the flank point, by which the
   // meshed flank lies under the nominal involute; `lead(z, wheel)` (m) the lead modification's.
-  // `tilted`: the flanks are modified, so force lines turn (PairLine) and the coefficients
-  // across the normal are computed too.
+  // `tilted`: the flanks are modified, so force lines turn (PairLine), or friction loads them
+  // across the normal (pair_friction): the coefficients across the normal are computed too.
   // The items' load and read points of both gears (loads(), reads()); their coefficients follow
   // with set_coefficients, computed where the caller chooses (a gear a rank, docs/ltca.md "Cost").
   FlankCompliance(const PairFrame& frame, const Helix& helix,
@@ -345,7 +345,7 @@ public:
         continue;
       const auto& unknown = unknowns[k];
       const Item a = locate(unknown.station, unknown.pair, unknown.flank[wheel], unknown.edge);
-      const double along[2] = {1., unknown.line.tilt};
+      const double along[2] = {1., unknown.line.tilt + unknown.friction.weight};
       for (unsigned int p = 0; p < directions; ++p)
       {
         const double first = forces[k] * along[p] * (1. - a.u), next = forces[k] * along[p] * a.u;
@@ -357,18 +357,20 @@ public:
   }
 
   // C (m/N), both gears, station s of pair j at ℓ_j loaded, station t of pair k at ℓ_k read,
-  // their force lines turned by τ_j, τ_k (rad; 0 without modifications). The same flank at the
+  // their force lines turned by τ_j, τ_k (rad; 0 without modifications), the load's friction
+  // force f_j times its normal force across it (pair_friction; the read is the gap's, along the
+  // force line alone, so C is not symmetric with friction). The same flank at the
   // same ℓ (2D, a spur pair's planes, a helical pair's own plane) along its diagonal samples (its
   // near field varies over the depth h, not over the grid step); otherwise bilinearly (smooth:
   // a helical pair's other planes lie Δz or more away).
   // `edge_j`, `edge_k`: the unknown is a tip edge (ℓ = A or E), its own item, not the grid's.
   // `at_j`, `at_k`: ℓ of the pinion's and of the wheel's flank point (where modified flanks
   // touch off the line of action each gear's point lies off ℓ: touching_flanks).
-  double operator()(int j, const std::array<double, 2>& at_j, double tilt_j, std::size_t s,
-                    bool edge_j, int k, const std::array<double, 2>& at_k, double tilt_k,
-                    std::size_t t, bool edge_k) const
+  double operator()(int j, const std::array<double, 2>& at_j, double tilt_j, double friction_j,
+                    std::size_t s, bool edge_j, int k, const std::array<double, 2>& at_k,
+                    double tilt_k, std::size_t t, bool edge_k) const
   {
-    const double along_j[2] = {1., tilt_j}, along_k[2] = {1., tilt_k};
+    const double along_j[2] = {1., tilt_j + friction_j}, along_k[2] = {1., tilt_k};
     double c = 0.;
     for (const bool wheel : {false, true})
     {
@@ -619,6 +621,11 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                                : 1.);
       problem.relative_radius.push_back(radius / helix.cos_base);
       problem.lever_ratio.push_back(unknown.line.pinion_lever);
+      // Friction: full slip against the sliding (pair_friction), the exact path's (docs/ltca.md
+      // §4 "Friction"); a tip edge's sliding is its corner's on the mate flank, taken at ℓ.
+      unknown.friction = pair_friction(model.frame, unknown.at, model.friction_coefficient);
+      problem.torque_ratio.push_back(unknown.line.pinion_lever +
+                                     unknown.friction.weight * unknown.friction.pinion_arm);
       problem.strip.push_back(unknown.line.strip);
       keys.push_back(j * static_cast<int>(layers) + static_cast<int>(s));
       unknowns.push_back(unknown);
@@ -659,13 +666,14 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   const auto couple = [&]
   {
     body_compliance.clear();
+    // Row a the gap read at unknown a, column b the load of unknown b (its friction with it).
     for (const Unknown& a : unknowns)
     {
       body_compliance.emplace_back();
       for (const Unknown& b : unknowns)
-        body_compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station, a.edge,
-                                                    b.pair, b.flank, b.line.tilt, b.station,
-                                                    b.edge));
+        body_compliance.back().push_back(compliance(b.pair, b.flank, b.line.tilt, b.friction.weight,
+                                                    b.station, b.edge, a.pair, a.flank, a.line.tilt,
+                                                    a.station, a.edge));
     }
     add_kernel();
   };
@@ -679,6 +687,8 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
     {
       set_force_line(unknowns[k], line_radius[k], force);
       problem.lever_ratio[k] = unknowns[k].line.pinion_lever;
+      problem.torque_ratio[k] = unknowns[k].line.pinion_lever +
+                                unknowns[k].friction.weight * unknowns[k].friction.pinion_arm;
       problem.strip[k] = unknowns[k].line.strip;
     }
     couple();
@@ -723,10 +733,10 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
 
 // The flank grids of the sweep and their items (no coefficients yet); sets info.flanks.
 template <int dim>
-FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
-                                 const std::vector<double>& positions, const FaceStations& stations,
-                                 const Helix& helix, const PairFrame& frame,
-                                 const PairSeparation& separation, InfluenceModelInfo& info)
+FlankCompliance<dim>
+flank_items(const kinematics::GearPairGeometry& pair, const std::vector<double>& positions,
+            const FaceStations& stations, const Helix& helix, const PairFrame& frame,
+            const PairSeparation& separation, double friction_coefficient, InfluenceModelInfo& info)
 {
   // Each station's grids cover the ℓ its plane sees in the sweep (a helical pair's: the
   // positions shifted by rate·(z − z₀)).
@@ -788,7 +798,7 @@ FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
       inset_cells(dim) * info.flank_cell_size, band_cell_factor(dim) * info.flank_cell_size,
       stations, [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
       [&separation](double z, bool wheel) { return separation.lead_removal(z, wheel); },
-      separation.modified(), edges);
+      separation.modified() || friction_coefficient > 0., edges);
 }
 
 // The whole run, collective over `mpi_communicator` (docs/ltca.md "Cost"): rank 0 meshes the
@@ -850,8 +860,9 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                      fem::catch_failure(
                          [&]()
                          {
-                           compliance.emplace(flank_items<dim>(pair, positions, stations, helix,
-                                                               frame, separation, info));
+                           compliance.emplace(
+                               flank_items<dim>(pair, positions, stations, helix, frame, separation,
+                                                settings.contact.friction_coefficient, info));
                          }))
       .rethrow();
 
@@ -943,8 +954,14 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
         LayerBody wheel_body = pinion_body;
         pinion_body.corner_pressure_angle = separation.tip_pressure_angle(false);
         wheel_body.corner_pressure_angle = separation.tip_pressure_angle(true);
-        const PositionModel position_model{
-            frame, separation, pinion_body, wheel_body, pair.common_face_width, stations, helix};
+        const PositionModel position_model{frame,
+                                           separation,
+                                           pinion_body,
+                                           wheel_body,
+                                           pair.common_face_width,
+                                           stations,
+                                           helix,
+                                           settings.contact.friction_coefficient};
         run.by_torque =
             solve_positions(positions, torques.size(),
                             [&](double position, std::map<int, double>& warm)

@@ -611,9 +611,15 @@ double lever(const MeshContactProblem& problem, int j)
   return problem.lever_ratio.empty() ? 1. : problem.lever_ratio[j];
 }
 
+double torque_share(const MeshContactProblem& problem, int j)
+{
+  return problem.torque_ratio.empty() ? lever(problem, j) : problem.torque_ratio[j];
+}
+
 // Newton on the active pairs for F (≥ 0) and e: Σ_k C_jk F_k + δ(F_j) − λ_j·(e − s_j) = 0 on
-// the active set, Σ λ_j·F_j = W. Steps are damped to keep every force positive (δ is defined for F
-// > 0); a force driven below 1e-12·W leaves the active set (returned false with it cleared).
+// the active set, Σ m_j·F_j = W (m_j: torque_share). Steps are damped to keep every force positive
+// (δ is defined for F > 0); a force driven below 1e-12·W leaves the active set (returned false with
+// it cleared).
 bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>& active,
                       std::vector<double>& force, double& approach, unsigned int& steps)
 {
@@ -635,8 +641,8 @@ bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>&
       }
       jacobian(a, a) += near.compliance;
       jacobian(a, n) = -lever(problem, j);
-      jacobian(n, a) = lever(problem, j);
-      sum += lever(problem, j) * force[j];
+      jacobian(n, a) = torque_share(problem, j);
+      sum += torque_share(problem, j) * force[j];
     }
     residual[n] = sum - problem.total_force;
     const Eigen::VectorXd delta = jacobian.partialPivLu().solve(-residual);

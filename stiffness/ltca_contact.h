@@ -2,8 +2,10 @@
 // (docs/ltca.md §3–4): the analytic near field of a plane-strain Hertz line contact down to a
 // matching depth, and the complementarity problem of the pairs in contact
 //
-//     g_j = λ_j·(e − s_j) − Σ_k C_jk·F_k − δ(F_j) ≤ 0,  F_j ≥ 0,  F_j·g_j = 0,  Σ λ_j·F_j = W
+//     g_j = λ_j·(e − s_j) − Σ_k C_jk·F_k − δ(F_j) ≤ 0,  F_j ≥ 0,  F_j·g_j = 0,  Σ m_j·F_j = W
 //
+// (λ_j the lever of the pinion's roll along pair j's force line, m_j its share of the torque:
+// MeshContactProblem::lever_ratio, torque_ratio; C is not symmetric with friction loads)
 // (Conry & Seireg 1971, docs/references.md §19). Plain arithmetic, no deal.II: the FE side
 // (stiffness/influence_sweep.h) supplies C.
 #pragma once
@@ -147,6 +149,10 @@ struct MeshContactProblem
   // -, arm_j/r_b1 of the pinion's lever arm about pair j's force line: 1 for unmodified
   // involutes; a relief's slope turns the flank normal (docs/ltca.md). Empty: all 1.
   std::vector<double> lever_ratio;
+  // -, pair j's share of the pinion torque per unit force over r_b1: Σ torque_ratio_j·F_j = W.
+  // The lever ratio and a friction force's moment (its arm ρ₁/r_b1 times μ, signed by the
+  // sliding; stiffness/influence_body.h, pair_friction). Empty: the lever ratios.
+  std::vector<double> torque_ratio;
   // Pair j's near field: empty gap → Hertz (relative_radius[j]); else the strip solution.
   std::vector<ContactStrip> strip;
   double face_width = 0.; // m, b
