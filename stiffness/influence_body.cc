@@ -184,7 +184,7 @@ FlankPoint flank_point(const PairFrame& frame, int j, double position, bool whee
   return point;
 }
 
-PairFriction pair_friction(const PairFrame& frame, double at, double friction_coefficient)
+PairFriction pair_friction(const PairFrame& frame, double at)
 {
   PairFriction friction;
   const Eigen::Vector2d at_point = geometry::line_of_action_point(frame.pair, at);
@@ -192,21 +192,13 @@ PairFriction pair_friction(const PairFrame& frame, double at, double friction_co
   const Tensor<1, 2> q = p - frame.wheel_centre;
   const auto cross = [](const Tensor<1, 2>& a, const Tensor<1, 2>& b)
   { return a[0] * b[1] - a[1] * b[0]; };
-  const auto turned_quarter = [](const Tensor<1, 2>& r) { return Tensor<1, 2>({-r[1], r[0]}); };
-  // The flanks' directions as flank_point gives them in the contact's own frame.
+  // The flanks' directions as flank_point gives them, in the contact's own frame.
   const Tensor<1, 2> pinion_inward = -frame.u, wheel_inward = frame.u;
   const Tensor<1, 2> pinion_across({pinion_inward[1], -pinion_inward[0]});
   const Tensor<1, 2> wheel_across({wheel_inward[1], -wheel_inward[0]});
-  // The pinion turns so that its flank advances along u; the wheel so that its flank's normal
-  // velocity equals the pinion's (conjugate action: a ring turns the pinion's way).
-  const Tensor<1, 2> pinion_turn = turned_quarter(p), wheel_turn = turned_quarter(q);
-  const double pinion_rate = pinion_turn * frame.u > 0. ? 1. : -1.;
-  const double wheel_rate = pinion_rate * (pinion_turn * frame.u) / (wheel_turn * frame.u);
-  const Tensor<1, 2> sliding = pinion_rate * pinion_turn - wheel_rate * wheel_turn;
-  const double along = sliding * pinion_across;
-  // 1e-12 of the surface speed: the pitch point's rolling, not a direction.
-  if (std::abs(along) > 1e-12 * (pinion_turn.norm() + std::abs(wheel_rate) * wheel_turn.norm()))
-    friction.weight = along > 0. ? -friction_coefficient : friction_coefficient;
+  // A turn of the pinion about its centre moves p along ẑ × p.
+  const Tensor<1, 2> pinion_turn({-p[1], p[0]});
+  friction.slip_per_approach = (pinion_turn * pinion_across) / (pinion_turn * frame.u);
   friction.pinion_arm = cross(p, pinion_across) / cross(p, pinion_inward);
   friction.wheel_arm = cross(q, wheel_across) / cross(q, wheel_inward);
   return friction;

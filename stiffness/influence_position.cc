@@ -193,9 +193,9 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
   {
     const Unknown& unknown = unknowns[item];
     const double force = solution.force[item];
+    const double friction = solution.friction.empty() ? 0. : solution.friction[item];
     wheel_moment +=
-        force * (unknown.line.wheel_lever + unknown.friction.weight * unknown.friction.wheel_arm) *
-        r_b2;
+        (force * unknown.line.wheel_lever + friction * unknown.friction.wheel_arm) * r_b2;
     total += force;
     if (dim != 3)
       continue;
@@ -203,7 +203,6 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
     const double n_z = turn_rate * (p.x() * model.frame.u[1] - p.y() * model.frame.u[0]) /
                        std::sqrt(1. + model.helix.rate * model.helix.rate);
     // The friction force on the pinion: along its flank's `across`, (−u_y, u_x) (pair_friction).
-    const double friction = force * unknown.friction.weight;
     const double f_x =
         -force * model.helix.cos_base * model.frame.u[0] - friction * model.frame.u[1];
     const double f_y =

@@ -332,8 +332,10 @@ public:
   // wheel under the forces (N, one per unknown) of a solved position: the FE body's
   // displacements there are the forces' sum of the unit loads' (each unknown's items and weights
   // as its coefficients take them, operator()). NaN where the fillets were not read (3D).
+  // `friction` (N, one per unknown; empty: none): the friction forces across the normals.
   template <class Unknowns>
-  double root_stress(bool wheel, const Unknowns& unknowns, const std::vector<double>& forces) const
+  double root_stress(bool wheel, const Unknowns& unknowns, const std::vector<double>& forces,
+                     const std::vector<double>& friction) const
   {
     if (fillet[wheel].point_start.size() < 2) // no fillet read (3D): NaN, never a number
       return std::numeric_limits<double>::quiet_NaN();
@@ -345,10 +347,11 @@ public:
         continue;
       const auto& unknown = unknowns[k];
       const Item a = locate(unknown.station, unknown.pair, unknown.flank[wheel], unknown.edge);
-      const double along[2] = {1., unknown.line.tilt + unknown.friction.weight};
+      const double along[2] = {forces[k], forces[k] * unknown.line.tilt +
+                                              (friction.empty() ? 0. : friction[k])};
       for (unsigned int p = 0; p < directions; ++p)
       {
-        const double first = forces[k] * along[p] * (1. - a.u), next = forces[k] * along[p] * a.u;
+        const double first = along[p] * (1. - a.u), next = along[p] * a.u;
         for (std::size_t r = 0; r < displacement.size(); ++r)
           displacement[r] += first * values[a.first + p][r] + next * values[a.next + p][r];
       }
@@ -366,11 +369,20 @@ public:
   // `edge_j`, `edge_k`: the unknown is a tip edge (ℓ = A or E), its own item, not the grid's.
   // `at_j`, `at_k`: ℓ of the pinion's and of the wheel's flank point (where modified flanks
   // touch off the line of action each gear's point lies off ℓ: touching_flanks).
-  double operator()(int j, const std::array<double, 2>& at_j, double tilt_j, double friction_j,
-                    std::size_t s, bool edge_j, int k, const std::array<double, 2>& at_k,
-                    double tilt_k, std::size_t t, bool edge_k) const
+  double operator()(int j, const std::array<double, 2>& at_j, double tilt_j, std::size_t s,
+                    bool edge_j, int k, const std::array<double, 2>& at_k, double tilt_k,
+                    std::size_t t, bool edge_k) const
   {
-    const double along_j[2] = {1., tilt_j + friction_j}, along_k[2] = {1., tilt_k};
+    const std::array<double, 2> along_j{{1., tilt_j}}, along_k{{1., tilt_k}};
+    return coupling(j, at_j, along_j, s, edge_j, k, at_k, along_k, t, edge_k);
+  }
+  // The same for a load of components `along_j` (along the normal, across it: a friction force
+  // loads across it) and a read of components `along_k` (the slip reads across it; docs/ltca.md
+  // §4 "Friction").
+  double coupling(int j, const std::array<double, 2>& at_j, const std::array<double, 2>& along_j,
+                  std::size_t s, bool edge_j, int k, const std::array<double, 2>& at_k,
+                  const std::array<double, 2>& along_k, std::size_t t, bool edge_k) const
+  {
     double c = 0.;
     for (const bool wheel : {false, true})
     {
@@ -476,6 +488,7 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   MeshContactProblem problem;
+  problem.friction_coefficient = model.friction_coefficient;
   problem.face_width = model.face_width;
   problem.pinion = model.pinion;
   problem.wheel = model.wheel;
@@ -621,11 +634,11 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                                : 1.);
       problem.relative_radius.push_back(radius / helix.cos_base);
       problem.lever_ratio.push_back(unknown.line.pinion_lever);
-      // Friction: full slip against the sliding (pair_friction), the exact path's (docs/ltca.md
-      // §4 "Friction"); a tip edge's sliding is its corner's on the mate flank, taken at ℓ.
-      unknown.friction = pair_friction(model.frame, unknown.at, model.friction_coefficient);
-      problem.torque_ratio.push_back(unknown.line.pinion_lever +
-                                     unknown.friction.weight * unknown.friction.pinion_arm);
+      // Friction (docs/ltca.md §4 "Friction"): the pinion's rigid roll slips its flank by ρ₁/r_b1
+      // of it, a friction force turns it about its centre at the arm ρ₁ (a tip edge's at ℓ).
+      unknown.friction = pair_friction(model.frame, unknown.at);
+      problem.slip_per_approach.push_back(unknown.friction.slip_per_approach);
+      problem.friction_arm.push_back(unknown.friction.pinion_arm);
       problem.strip.push_back(unknown.line.strip);
       keys.push_back(j * static_cast<int>(layers) + static_cast<int>(s));
       unknowns.push_back(unknown);
@@ -666,14 +679,42 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   const auto couple = [&]
   {
     body_compliance.clear();
-    // Row a the gap read at unknown a, column b the load of unknown b (its friction with it).
     for (const Unknown& a : unknowns)
     {
       body_compliance.emplace_back();
       for (const Unknown& b : unknowns)
-        body_compliance.back().push_back(compliance(b.pair, b.flank, b.line.tilt, b.friction.weight,
-                                                    b.station, b.edge, a.pair, a.flank, a.line.tilt,
-                                                    a.station, a.edge));
+        body_compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station, a.edge,
+                                                    b.pair, b.flank, b.line.tilt, b.station,
+                                                    b.edge));
+    }
+    if (model.friction_coefficient > 0.)
+    {
+      // Row a read at unknown a, column b loaded at unknown b (docs/ltca.md §4 "Friction"): the
+      // gap under a friction force, the slip under a normal force and under a friction force.
+      const std::array<double, 2> across{{0., 1.}};
+      problem.gap_under_friction.clear();
+      problem.slip_under_force.clear();
+      problem.slip_under_friction.clear();
+      for (const Unknown& a : unknowns)
+      {
+        problem.gap_under_friction.emplace_back();
+        problem.slip_under_force.emplace_back();
+        problem.slip_under_friction.emplace_back();
+        const std::array<double, 2> normal_a{{1., a.line.tilt}};
+        for (const Unknown& b : unknowns)
+        {
+          const std::array<double, 2> normal_b{{1., b.line.tilt}};
+          problem.gap_under_friction.back().push_back(
+              compliance.coupling(b.pair, b.flank, across, b.station, b.edge, a.pair, a.flank,
+                                  normal_a, a.station, a.edge));
+          problem.slip_under_force.back().push_back(
+              compliance.coupling(b.pair, b.flank, normal_b, b.station, b.edge, a.pair, a.flank,
+                                  across, a.station, a.edge));
+          problem.slip_under_friction.back().push_back(
+              compliance.coupling(b.pair, b.flank, across, b.station, b.edge, a.pair, a.flank,
+                                  across, a.station, a.edge));
+        }
+      }
     }
     add_kernel();
   };
@@ -687,8 +728,6 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
     {
       set_force_line(unknowns[k], line_radius[k], force);
       problem.lever_ratio[k] = unknowns[k].line.pinion_lever;
-      problem.torque_ratio[k] = unknowns[k].line.pinion_lever +
-                                unknowns[k].friction.weight * unknowns[k].friction.pinion_arm;
       problem.strip[k] = unknowns[k].line.strip;
     }
     couple();
@@ -725,8 +764,10 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       {
         GearMeshStiffnessResult r =
             position_result<dim>(model, position, pairs, unknowns, solution, torque);
-        r.pinion_root_stress = compliance.root_stress(false, unknowns, solution.force);
-        r.wheel_root_stress = compliance.root_stress(true, unknowns, solution.force);
+        r.pinion_root_stress =
+            compliance.root_stress(false, unknowns, solution.force, solution.friction);
+        r.wheel_root_stress =
+            compliance.root_stress(true, unknowns, solution.force, solution.friction);
         return r;
       });
 }

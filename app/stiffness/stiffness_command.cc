@@ -134,19 +134,12 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
   std::string torques;
   for (const double t : p.settings.torques)
     torques += (torques.empty() ? "" : ", ") + format_number(t, 4);
-  // The fast model's contact is frictionless whatever μ says (the input notes say so too).
-  const bool frictionless =
-      p.settings.contact_model == stiffness::ContactModel::influence_coefficients;
   report.add_text(
       "load case",
       "T1 = " + (torques.empty() ? format_number(p.settings.pinion_torque, 4) : torques) +
           " N·m on the pinion (rigid hub, torque-controlled, free only to rotate), "
-          "wheel bore fixed, " +
-          (frictionless
-               ? "frictionless (Contact/Friction coefficient " +
-                     format_number(p.settings.contact.friction_coefficient, 4) +
-                     " not applied by the influence-coefficient model)"
-               : "friction μ = " + format_number(p.settings.contact.friction_coefficient, 4)) +
+          "wheel bore fixed, friction μ = " +
+          format_number(p.settings.contact.friction_coefficient, 4) +
           "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");
   const bool planar = p.settings.scene.mesh.dimension == 2;
   report.add_text("model",
@@ -359,9 +352,10 @@ void report_contact_model(const stiffness::StiffnessSweepResult& sweep, Report& 
   // sweep stays as it was; the fast model says what it is and what it cost.
   if (sweep.contact_model != stiffness::ContactModel::influence_coefficients)
     return;
-  report.add_text("contact_model", "influence coefficients (docs/ltca.md): coarse FE body below a "
-                                   "matching depth, analytic plane-strain Hertz layer above it, "
-                                   "frictionless");
+  report.add_text("contact_model",
+                  "influence coefficients (docs/ltca.md): coarse FE body below a "
+                  "matching depth, analytic plane-strain Hertz layer above it, "
+                  "Coulomb friction: stick or slip of each pair (docs/ltca.md §4)");
   const stiffness::InfluenceModelInfo& info = sweep.influence;
   report.add_value("influence_grid_points", info.grid_points, "-",
                    "grid points per flank over the path of contact");
