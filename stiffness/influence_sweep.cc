@@ -772,6 +772,15 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       });
 }
 
+// -, the μ the model applies (docs/ltca.md §4 "Friction"): the settings' in 2D, none in 3D, where
+// the exact path's frictional contact gives no reference to verify it against (the built-in pair,
+// Q1, 4 layers, 4 positions: exit 3 at μ 0.03 and 0.1, its Tresca fixed point not converging;
+// the report and the input notes say so).
+double applied_friction(const GearMeshStiffnessSettings& settings, int dim)
+{
+  return dim == 2 ? settings.contact.friction_coefficient : 0.;
+}
+
 // The flank grids of the sweep and their items (no coefficients yet); sets info.flanks.
 template <int dim>
 FlankCompliance<dim>
@@ -903,7 +912,7 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                          {
                            compliance.emplace(
                                flank_items<dim>(pair, positions, stations, helix, frame, separation,
-                                                settings.contact.friction_coefficient, info));
+                                                applied_friction(settings, dim), info));
                          }))
       .rethrow();
 
@@ -1002,7 +1011,7 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                                            pair.common_face_width,
                                            stations,
                                            helix,
-                                           settings.contact.friction_coefficient};
+                                           applied_friction(settings, dim)};
         run.by_torque =
             solve_positions(positions, torques.size(),
                             [&](double position, std::map<int, double>& warm)
