@@ -184,6 +184,26 @@ FlankPoint flank_point(const PairFrame& frame, int j, double position, bool whee
   return point;
 }
 
+PairFriction pair_friction(const PairFrame& frame, double at)
+{
+  PairFriction friction;
+  const Eigen::Vector2d at_point = geometry::line_of_action_point(frame.pair, at);
+  const Tensor<1, 2> p({at_point.x(), at_point.y()});
+  const Tensor<1, 2> q = p - frame.wheel_centre;
+  const auto cross = [](const Tensor<1, 2>& a, const Tensor<1, 2>& b)
+  { return a[0] * b[1] - a[1] * b[0]; };
+  // The flanks' directions as flank_point gives them, in the contact's own frame.
+  const Tensor<1, 2> pinion_inward = -frame.u, wheel_inward = frame.u;
+  const Tensor<1, 2> pinion_across({pinion_inward[1], -pinion_inward[0]});
+  const Tensor<1, 2> wheel_across({wheel_inward[1], -wheel_inward[0]});
+  // A turn of the pinion about its centre moves p along ẑ × p.
+  const Tensor<1, 2> pinion_turn({-p[1], p[0]});
+  friction.slip_per_approach = (pinion_turn * pinion_across) / (pinion_turn * frame.u);
+  friction.pinion_arm = cross(p, pinion_across) / cross(p, pinion_inward);
+  friction.wheel_arm = cross(q, wheel_across) / cross(q, wheel_inward);
+  return friction;
+}
+
 std::vector<FlankGrid> flank_grids(const kinematics::GearPairGeometry& pair,
                                    const std::vector<double>& positions, double step)
 {

@@ -55,6 +55,19 @@ struct FlankPoint
 };
 FlankPoint flank_point(const PairFrame& frame, int j, double position, bool wheel);
 
+// The geometry a friction force at ℓ = `at` needs (docs/ltca.md §4 "Friction"): it acts on the
+// pinion's flank along its `across` (FlankPoint) and on the wheel's the opposite way.
+struct PairFriction
+{
+  // -, how far the pinion's rigid roll e (along u, r_b1·Δφ) moves its flank point along its
+  // `across`, over e: ρ₁/r_b1 signed (the pinion's slip over the held wheel).
+  double slip_per_approach = 0.;
+  // -, a friction force's moment about each gear's centre over a normal force's of the same size
+  // (ρ_i/r_bi, signed as the moments).
+  double pinion_arm = 0., wheel_arm = 0.;
+};
+PairFriction pair_friction(const PairFrame& frame, double at);
+
 // Every position of a sweep in order, `solve` giving one position at every one of `n_torques`
 // torques, each position warm-started from the forces the one before left in `warm`; returned
 // as [torque][position].

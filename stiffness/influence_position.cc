@@ -177,9 +177,10 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
                                                          [](const Unknown& a, const Unknown& b)
                                                          { return a.touching < b.touching; })
                                             ->touching);
-  // Frictionless: every force on its pair's force line, at the lever arm r_b2·μ_j about the
-  // wheel (geometry/scene_gear_pair.h: an external wheel's centre lies across the line of
-  // action from the pinion's, a ring's on its side); a helical pair's lever ratios carry cos β_b.
+  // Every force on its pair's force line, at the lever arm r_b2·μ_j about the wheel
+  // (geometry/scene_gear_pair.h: an external wheel's centre lies across the line of action from
+  // the pinion's, a ring's on its side; a helical pair's lever ratios carry cos β_b), and its
+  // friction force across it at the arm ρ₂ (pair_friction).
   double wheel_moment = 0., total = 0.;
   // 3D: the mesh forces on the pinion as the exact path sums them (stiffness/mesh_stiffness.cc,
   // mesh_forces): the normal force N along the pinion's flank normal (−u·cos β_b in the
@@ -192,15 +193,20 @@ GearMeshStiffnessResult position_result(const PositionModel& model, double posit
   {
     const Unknown& unknown = unknowns[item];
     const double force = solution.force[item];
-    wheel_moment += force * unknown.line.wheel_lever * r_b2;
+    const double friction = solution.friction.empty() ? 0. : solution.friction[item];
+    wheel_moment +=
+        (force * unknown.line.wheel_lever + friction * unknown.friction.wheel_arm) * r_b2;
     total += force;
     if (dim != 3)
       continue;
     const Eigen::Vector2d p = geometry::line_of_action_point(pair, unknown.at);
     const double n_z = turn_rate * (p.x() * model.frame.u[1] - p.y() * model.frame.u[0]) /
                        std::sqrt(1. + model.helix.rate * model.helix.rate);
-    const double f_x = -force * model.helix.cos_base * model.frame.u[0];
-    const double f_y = -force * model.helix.cos_base * model.frame.u[1];
+    // The friction force on the pinion: along its flank's `across`, (−u_y, u_x) (pair_friction).
+    const double f_x =
+        -force * model.helix.cos_base * model.frame.u[0] - friction * model.frame.u[1];
+    const double f_y =
+        -force * model.helix.cos_base * model.frame.u[1] + friction * model.frame.u[0];
     const double f_z = force * n_z;
     const double z = model.stations.z[unknown.station] - 0.5 * model.face_width;
     axial += f_z;

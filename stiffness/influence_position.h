@@ -24,6 +24,7 @@ struct PositionModel
   double face_width = 0.; // m, b
   FaceStations stations;
   Helix helix;
+  double friction_coefficient = 0.; // -, Coulomb μ of the flanks (pair_friction)
 };
 
 // The force line of pair j touching at ℓ on modified flanks (docs/ltca.md, "Profile
@@ -71,6 +72,7 @@ struct Unknown
   double touching = 0.; // m, where the unloaded flanks touch: the smallest separation is the
                         // unloaded TE
   std::array<double, 2> flank{}; // m, ℓ of the pinion's and the wheel's point (touching_flanks)
+  PairFriction friction;         // the friction force at ℓ (pair_friction; 0: frictionless)
 };
 
 // The result of one position at one torque from the solved forces (one per unknown, pair by

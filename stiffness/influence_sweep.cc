@@ -270,8 +270,8 @@ class FlankCompliance
 public:
   // `removal(ℓ, wheel)` (m): the profile modification's depth at the flank point, by which the
   // meshed flank lies under the nominal involute; `lead(z, wheel)` (m) the lead modification's.
-  // `tilted`: the flanks are modified, so force lines turn (PairLine) and the coefficients
-  // across the normal are computed too.
+  // `tilted`: the flanks are modified, so force lines turn (PairLine), or friction loads them
+  // across the normal (pair_friction): the coefficients across the normal are computed too.
   // The items' load and read points of both gears (loads(), reads()); their coefficients follow
   // with set_coefficients, computed where the caller chooses (a gear a rank, docs/ltca.md "Cost").
   FlankCompliance(const PairFrame& frame, const Helix& helix,
@@ -332,8 +332,10 @@ public:
   // wheel under the forces (N, one per unknown) of a solved position: the FE body's
   // displacements there are the forces' sum of the unit loads' (each unknown's items and weights
   // as its coefficients take them, operator()). NaN where the fillets were not read (3D).
+  // `friction` (N, one per unknown; empty: none): the friction forces across the normals.
   template <class Unknowns>
-  double root_stress(bool wheel, const Unknowns& unknowns, const std::vector<double>& forces) const
+  double root_stress(bool wheel, const Unknowns& unknowns, const std::vector<double>& forces,
+                     const std::vector<double>& friction) const
   {
     if (fillet[wheel].point_start.size() < 2) // no fillet read (3D): NaN, never a number
       return std::numeric_limits<double>::quiet_NaN();
@@ -345,10 +347,11 @@ public:
         continue;
       const auto& unknown = unknowns[k];
       const Item a = locate(unknown.station, unknown.pair, unknown.flank[wheel], unknown.edge);
-      const double along[2] = {1., unknown.line.tilt};
+      const double along[2] = {forces[k], forces[k] * unknown.line.tilt +
+                                              (friction.empty() ? 0. : friction[k])};
       for (unsigned int p = 0; p < directions; ++p)
       {
-        const double first = forces[k] * along[p] * (1. - a.u), next = forces[k] * along[p] * a.u;
+        const double first = along[p] * (1. - a.u), next = along[p] * a.u;
         for (std::size_t r = 0; r < displacement.size(); ++r)
           displacement[r] += first * values[a.first + p][r] + next * values[a.next + p][r];
       }
@@ -357,7 +360,9 @@ public:
   }
 
   // C (m/N), both gears, station s of pair j at ℓ_j loaded, station t of pair k at ℓ_k read,
-  // their force lines turned by τ_j, τ_k (rad; 0 without modifications). The same flank at the
+  // their force lines turned by τ_j, τ_k (rad; 0 without modifications), the load's friction
+  // force f_j times its normal force across it (pair_friction; the read is the gap's, along the
+  // force line alone, so C is not symmetric with friction). The same flank at the
   // same ℓ (2D, a spur pair's planes, a helical pair's own plane) along its diagonal samples (its
   // near field varies over the depth h, not over the grid step); otherwise bilinearly (smooth:
   // a helical pair's other planes lie Δz or more away).
@@ -368,7 +373,16 @@ public:
                     bool edge_j, int k, const std::array<double, 2>& at_k, double tilt_k,
                     std::size_t t, bool edge_k) const
   {
-    const double along_j[2] = {1., tilt_j}, along_k[2] = {1., tilt_k};
+    const std::array<double, 2> along_j{{1., tilt_j}}, along_k{{1., tilt_k}};
+    return coupling(j, at_j, along_j, s, edge_j, k, at_k, along_k, t, edge_k);
+  }
+  // The same for a load of components `along_j` (along the normal, across it: a friction force
+  // loads across it) and a read of components `along_k` (the slip reads across it; docs/ltca.md
+  // §4 "Friction").
+  double coupling(int j, const std::array<double, 2>& at_j, const std::array<double, 2>& along_j,
+                  std::size_t s, bool edge_j, int k, const std::array<double, 2>& at_k,
+                  const std::array<double, 2>& along_k, std::size_t t, bool edge_k) const
+  {
     double c = 0.;
     for (const bool wheel : {false, true})
     {
@@ -474,6 +488,7 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   MeshContactProblem problem;
+  problem.friction_coefficient = model.friction_coefficient;
   problem.face_width = model.face_width;
   problem.pinion = model.pinion;
   problem.wheel = model.wheel;
@@ -619,6 +634,11 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
                                                : 1.);
       problem.relative_radius.push_back(radius / helix.cos_base);
       problem.lever_ratio.push_back(unknown.line.pinion_lever);
+      // Friction (docs/ltca.md §4 "Friction"): the pinion's rigid roll slips its flank by ρ₁/r_b1
+      // of it, a friction force turns it about its centre at the arm ρ₁ (a tip edge's at ℓ).
+      unknown.friction = pair_friction(model.frame, unknown.at);
+      problem.slip_per_approach.push_back(unknown.friction.slip_per_approach);
+      problem.friction_arm.push_back(unknown.friction.pinion_arm);
       problem.strip.push_back(unknown.line.strip);
       keys.push_back(j * static_cast<int>(layers) + static_cast<int>(s));
       unknowns.push_back(unknown);
@@ -666,6 +686,35 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
         body_compliance.back().push_back(compliance(a.pair, a.flank, a.line.tilt, a.station, a.edge,
                                                     b.pair, b.flank, b.line.tilt, b.station,
                                                     b.edge));
+    }
+    if (model.friction_coefficient > 0.)
+    {
+      // Row a read at unknown a, column b loaded at unknown b (docs/ltca.md §4 "Friction"): the
+      // gap under a friction force, the slip under a normal force and under a friction force.
+      const std::array<double, 2> across{{0., 1.}};
+      problem.gap_under_friction.clear();
+      problem.slip_under_force.clear();
+      problem.slip_under_friction.clear();
+      for (const Unknown& a : unknowns)
+      {
+        problem.gap_under_friction.emplace_back();
+        problem.slip_under_force.emplace_back();
+        problem.slip_under_friction.emplace_back();
+        const std::array<double, 2> normal_a{{1., a.line.tilt}};
+        for (const Unknown& b : unknowns)
+        {
+          const std::array<double, 2> normal_b{{1., b.line.tilt}};
+          problem.gap_under_friction.back().push_back(
+              compliance.coupling(b.pair, b.flank, across, b.station, b.edge, a.pair, a.flank,
+                                  normal_a, a.station, a.edge));
+          problem.slip_under_force.back().push_back(
+              compliance.coupling(b.pair, b.flank, normal_b, b.station, b.edge, a.pair, a.flank,
+                                  across, a.station, a.edge));
+          problem.slip_under_friction.back().push_back(
+              compliance.coupling(b.pair, b.flank, across, b.station, b.edge, a.pair, a.flank,
+                                  across, a.station, a.edge));
+        }
+      }
     }
     add_kernel();
   };
@@ -715,18 +764,29 @@ solve_position(const PositionModel& model, const FlankCompliance<dim>& complianc
       {
         GearMeshStiffnessResult r =
             position_result<dim>(model, position, pairs, unknowns, solution, torque);
-        r.pinion_root_stress = compliance.root_stress(false, unknowns, solution.force);
-        r.wheel_root_stress = compliance.root_stress(true, unknowns, solution.force);
+        r.pinion_root_stress =
+            compliance.root_stress(false, unknowns, solution.force, solution.friction);
+        r.wheel_root_stress =
+            compliance.root_stress(true, unknowns, solution.force, solution.friction);
         return r;
       });
 }
 
+// -, the μ the model applies (docs/ltca.md §4 "Friction"): the settings' in 2D, none in 3D, where
+// the exact path's frictional contact gives no reference to verify it against (the built-in pair,
+// Q1, 4 layers, 4 positions: exit 3 at μ 0.03 and 0.1, its Tresca fixed point not converging;
+// the report and the input notes say so).
+double applied_friction(const GearMeshStiffnessSettings& settings, int dim)
+{
+  return dim == 2 ? settings.contact.friction_coefficient : 0.;
+}
+
 // The flank grids of the sweep and their items (no coefficients yet); sets info.flanks.
 template <int dim>
-FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
-                                 const std::vector<double>& positions, const FaceStations& stations,
-                                 const Helix& helix, const PairFrame& frame,
-                                 const PairSeparation& separation, InfluenceModelInfo& info)
+FlankCompliance<dim>
+flank_items(const kinematics::GearPairGeometry& pair, const std::vector<double>& positions,
+            const FaceStations& stations, const Helix& helix, const PairFrame& frame,
+            const PairSeparation& separation, double friction_coefficient, InfluenceModelInfo& info)
 {
   // Each station's grids cover the ℓ its plane sees in the sweep (a helical pair's: the
   // positions shifted by rate·(z − z₀)).
@@ -788,7 +848,7 @@ FlankCompliance<dim> flank_items(const kinematics::GearPairGeometry& pair,
       inset_cells(dim) * info.flank_cell_size, band_cell_factor(dim) * info.flank_cell_size,
       stations, [&separation](double at, bool wheel) { return separation.removal(at, wheel); },
       [&separation](double z, bool wheel) { return separation.lead_removal(z, wheel); },
-      separation.modified(), edges);
+      separation.modified() || friction_coefficient > 0., edges);
 }
 
 // The whole run, collective over `mpi_communicator` (docs/ltca.md "Cost"): rank 0 meshes the
@@ -850,8 +910,9 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
                      fem::catch_failure(
                          [&]()
                          {
-                           compliance.emplace(flank_items<dim>(pair, positions, stations, helix,
-                                                               frame, separation, info));
+                           compliance.emplace(
+                               flank_items<dim>(pair, positions, stations, helix, frame, separation,
+                                                applied_friction(settings, dim), info));
                          }))
       .rethrow();
 
@@ -943,8 +1004,14 @@ InfluenceRun run_influence(MPI_Comm mpi_communicator, const GearMeshStiffnessSet
         LayerBody wheel_body = pinion_body;
         pinion_body.corner_pressure_angle = separation.tip_pressure_angle(false);
         wheel_body.corner_pressure_angle = separation.tip_pressure_angle(true);
-        const PositionModel position_model{
-            frame, separation, pinion_body, wheel_body, pair.common_face_width, stations, helix};
+        const PositionModel position_model{frame,
+                                           separation,
+                                           pinion_body,
+                                           wheel_body,
+                                           pair.common_face_width,
+                                           stations,
+                                           helix,
+                                           applied_friction(settings, dim)};
         run.by_torque =
             solve_positions(positions, torques.size(),
                             [&](double position, std::map<int, double>& warm)

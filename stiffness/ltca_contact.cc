@@ -612,12 +612,18 @@ double lever(const MeshContactProblem& problem, int j)
 }
 
 // Newton on the active pairs for F (≥ 0) and e: Σ_k C_jk F_k + δ(F_j) − λ_j·(e − s_j) = 0 on
-// the active set, Σ λ_j·F_j = W. Steps are damped to keep every force positive (δ is defined for F
-// > 0); a force driven below 1e-12·W leaves the active set (returned false with it cleared).
+// the active set, Σ λ_j·F_j = W, the friction forces `friction` (N, may be empty) held: their
+// gaps Σ_k G_jk f_k and their torque Σ_k a_k f_k (MeshContactProblem). Steps are damped to keep
+// every force positive (δ is defined for F > 0); a force driven below 1e-12·W leaves the active set
+// (returned false with it cleared).
 bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>& active,
-                      std::vector<double>& force, double& approach, unsigned int& steps)
+                      const std::vector<double>& friction, std::vector<double>& force,
+                      double& approach, unsigned int& steps)
 {
   const int n = active.size();
+  double friction_torque = 0.; // N: Σ a_k f_k, the torque the friction forces carry over r_b1
+  for (std::size_t k = 0; k < friction.size(); ++k)
+    friction_torque += problem.friction_arm[k] * friction[k];
   for (unsigned int iteration = 0; iteration < 100; ++iteration, ++steps)
   {
     Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(n + 1, n + 1);
@@ -628,6 +634,8 @@ bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>&
       const int j = active[a];
       const LineContact near = near_field(problem, j, force[j]);
       residual[a] = near.approach - lever(problem, j) * (approach - problem.separation[j]);
+      for (std::size_t k = 0; k < friction.size(); ++k)
+        residual[a] += problem.gap_under_friction[j][k] * friction[k];
       for (int b = 0; b < n; ++b)
       {
         residual[a] += problem.compliance[j][active[b]] * force[active[b]];
@@ -638,7 +646,7 @@ bool newton_on_active(const MeshContactProblem& problem, const std::vector<int>&
       jacobian(n, a) = lever(problem, j);
       sum += lever(problem, j) * force[j];
     }
-    residual[n] = sum - problem.total_force;
+    residual[n] = sum + friction_torque - problem.total_force;
     const Eigen::VectorXd delta = jacobian.partialPivLu().solve(-residual);
     double damping = 1.;
     for (int a = 0; a < n; ++a)
@@ -679,17 +687,20 @@ double unloaded_approach(const MeshContactProblem& problem, int j)
 // The gap g_j = λ_j·(e − s_j) − Σ_k C_jk F_k − δ_j(0+) of an unloaded pair (> 0: it would
 // penetrate: the smallest force it could carry would already close it).
 double penetration(const MeshContactProblem& problem, const std::vector<double>& force,
-                   double approach, int j)
+                   const std::vector<double>& friction, double approach, int j)
 {
   double g = lever(problem, j) * (approach - problem.separation[j]) - unloaded_approach(problem, j);
   for (std::size_t k = 0; k < force.size(); ++k)
     g -= problem.compliance[j][k] * force[k];
+  for (std::size_t k = 0; k < friction.size(); ++k)
+    g -= problem.gap_under_friction[j][k] * friction[k];
   return g;
 }
-} // namespace
 
-MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
-                                       const std::vector<double>& start)
+// The normal problem with the friction forces `friction` (N, may be empty) held.
+MeshContactSolution solve_normal(const MeshContactProblem& problem,
+                                 const std::vector<double>& start,
+                                 const std::vector<double>& friction)
 {
   const int n = problem.separation.size();
   if (n == 0)
@@ -722,14 +733,14 @@ MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
         active.push_back(j);
     if (active.empty())
       throw SolverFailure("influence-coefficient contact", "every pair left the active set");
-    if (!newton_on_active(problem, active, force, approach, solution.newton_steps))
+    if (!newton_on_active(problem, active, friction, force, approach, solution.newton_steps))
       continue; // a pair unloaded itself: solve again without it
     // An unloaded pair that would penetrate enters with a small force (1e-3 of the load).
     int entering = -1;
     double deepest = 1e-15; // m: round-off of µm-sized gaps
     for (int j = 0; j < n; ++j)
     {
-      const double depth = force[j] == 0. ? penetration(problem, force, approach, j) : 0.;
+      const double depth = force[j] == 0. ? penetration(problem, force, friction, approach, j) : 0.;
       if (depth > deepest)
       {
         deepest = depth;
@@ -748,5 +759,120 @@ MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
   throw SolverFailure("influence-coefficient contact",
                       "the active set of the tooth pairs did not settle in " +
                           std::to_string(4 * n + 8) + " passes");
+}
+
+// The friction forces of the normal solution `normal` (its F and e held): stick (t_j = 0) where
+// |f_j| ≤ μ·F_j holds, else slip at the bound against the slip; an active set over stick and
+// slip, started from `previous` (the last pass's: at the bound slips, else sticks).
+std::vector<double> tangential(const MeshContactProblem& problem, const MeshContactSolution& normal,
+                               const std::vector<double>& previous)
+{
+  const int n = normal.force.size();
+  const double mu = problem.friction_coefficient;
+  std::vector<double> base(n, 0.); // m, t_j of the normal loads and the rigid roll
+  for (int j = 0; j < n; ++j)
+  {
+    base[j] = problem.slip_per_approach[j] * normal.approach;
+    for (int k = 0; k < n; ++k)
+      base[j] += problem.slip_under_force[j][k] * normal.force[k];
+  }
+  const auto slip_matrix = [&](int j, int k)
+  { return problem.slip_under_friction[j][k] + (j == k ? normal.contact[j].compliance : 0.); };
+  // State: 0 stick, ±1 slipping with f = ±μF; unloaded pairs carry none.
+  std::vector<int> state(n, 0);
+  std::vector<double> friction(n, 0.);
+  for (int j = 0; j < n; ++j)
+    if (normal.force[j] > 0. && !previous.empty())
+      state[j] = std::abs(previous[j]) >= mu * normal.force[j] * (1. - 1e-12)
+                     ? (previous[j] > 0. ? 1 : -1)
+                     : 0;
+  for (int pass = 0; pass < 4 * n + 8; ++pass)
+  {
+    std::vector<int> stick;
+    for (int j = 0; j < n; ++j)
+    {
+      friction[j] = normal.force[j] > 0. ? state[j] * mu * normal.force[j] : 0.;
+      if (normal.force[j] > 0. && state[j] == 0)
+        stick.push_back(j);
+    }
+    if (!stick.empty())
+    {
+      const int m = stick.size();
+      Eigen::MatrixXd a(m, m);
+      Eigen::VectorXd b(m);
+      for (int x = 0; x < m; ++x)
+      {
+        b[x] = -base[stick[x]];
+        for (int k = 0; k < n; ++k)
+          if (state[k] != 0)
+            b[x] -= slip_matrix(stick[x], k) * friction[k];
+        for (int y = 0; y < m; ++y)
+          a(x, y) = slip_matrix(stick[x], stick[y]);
+      }
+      const Eigen::VectorXd f = a.partialPivLu().solve(b);
+      for (int x = 0; x < m; ++x)
+        friction[stick[x]] = f[x];
+    }
+    bool changed = false;
+    for (int j = 0; j < n; ++j)
+    {
+      if (!(normal.force[j] > 0.))
+        continue;
+      const double bound = mu * normal.force[j];
+      if (state[j] == 0 && std::abs(friction[j]) > bound)
+      {
+        state[j] = friction[j] > 0. ? 1 : -1; // it would need more than μF: it slips
+        changed = true;
+      }
+      else if (state[j] != 0)
+      {
+        double slip = base[j];
+        for (int k = 0; k < n; ++k)
+          slip += slip_matrix(j, k) * friction[k];
+        if (slip * state[j] > 0.) // it slides along its own friction force: it sticks
+        {
+          state[j] = 0;
+          changed = true;
+        }
+      }
+    }
+    if (!changed)
+      return friction;
+  }
+  throw SolverFailure("influence-coefficient contact",
+                      "the flanks' stick and slip did not settle in " + std::to_string(4 * n + 8) +
+                          " passes");
+}
+} // namespace
+
+MeshContactSolution solve_mesh_contact(const MeshContactProblem& problem,
+                                       const std::vector<double>& start)
+{
+  if (!(problem.friction_coefficient > 0.))
+    return solve_normal(problem, start, {});
+  // The normal and the tangential problem in turn (successive Tresca problems, as the exact
+  // path's contact: contact/contact_problem.h), from the frictionless solution; the friction
+  // forces change by a factor of order μ a pass.
+  MeshContactSolution solution = solve_normal(problem, start, {});
+  std::vector<double> friction;
+  for (unsigned int pass = 1; pass <= 100; ++pass)
+  {
+    const std::vector<double> next = tangential(problem, solution, friction);
+    double change = 0.;
+    for (std::size_t j = 0; j < next.size(); ++j)
+      change = std::max(change, std::abs(next[j] - (friction.empty() ? 0. : friction[j])));
+    friction = next;
+    solution = solve_normal(problem, solution.force, friction);
+    solution.friction_passes = pass;
+    // 1e-12 of the load: round-off, as the normal Newton's.
+    if (change <= 1e-12 * problem.total_force)
+    {
+      solution.friction = friction; // those the forces were solved with
+      return solution;
+    }
+  }
+  throw SolverFailure("influence-coefficient contact",
+                      "the friction forces did not settle in 100 passes of the normal and the "
+                      "tangential problem");
 }
 } // namespace gearstiff::stiffness

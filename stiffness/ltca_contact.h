@@ -4,6 +4,7 @@
 //
 //     g_j = λ_j·(e − s_j) − Σ_k C_jk·F_k − δ(F_j) ≤ 0,  F_j ≥ 0,  F_j·g_j = 0,  Σ λ_j·F_j = W
 //
+// (with friction, MeshContactProblem's friction forces add to the gaps and to the torque)
 // (Conry & Seireg 1971, docs/references.md §19). Plain arithmetic, no deal.II: the FE side
 // (stiffness/influence_sweep.h) supplies C.
 #pragma once
@@ -147,6 +148,23 @@ struct MeshContactProblem
   // -, arm_j/r_b1 of the pinion's lever arm about pair j's force line: 1 for unmodified
   // involutes; a relief's slope turns the flank normal (docs/ltca.md). Empty: all 1.
   std::vector<double> lever_ratio;
+  // Coulomb friction between the flanks (docs/ltca.md §4 "Friction"; μ 0 or empty: none). Each
+  // unknown's friction force f_j acts on the pinion's flank along its tangent `across`
+  // (stiffness/influence_body.h, FlankPoint) and on the wheel's the opposite way, |f_j| ≤ μ·F_j;
+  // it sticks (the pinion's flank does not slip over the wheel's) or slips against the slip.
+  // The slip of the pinion's flank over the wheel's at j, from the unloaded state:
+  //   t_j = ρ_j·e + Σ_k T_jk·F_k + Σ_k U_jk·f_k + u_j(F_j)·f_j,
+  // ρ_j the rigid roll's (slip_per_approach), T, U the FE bodies' (slip_under_force,
+  // slip_under_friction), u_j the near field's (its normal compliance dδ/dF: a tangential line
+  // load's layer has the normal one's (1 − ν²)·ln term, Johnson 1985 §2.2). The friction forces
+  // open the gaps by Σ_k G_jk·f_k (gap_under_friction) and carry the pinion torque
+  // Σ_j (λ_j·F_j + a_j·f_j)·r_b1 = T1 (friction_arm a_j).
+  double friction_coefficient = 0.;                     // -, μ
+  std::vector<double> slip_per_approach;                // -, ρ_j
+  std::vector<std::vector<double>> slip_under_force;    // m/N, T_jk
+  std::vector<std::vector<double>> slip_under_friction; // m/N, U_jk
+  std::vector<std::vector<double>> gap_under_friction;  // m/N, G_jk
+  std::vector<double> friction_arm;                     // -, a_j
   // Pair j's near field: empty gap → Hertz (relative_radius[j]); else the strip solution.
   std::vector<ContactStrip> strip;
   double face_width = 0.; // m, b
@@ -166,6 +184,8 @@ struct MeshContactProblem
 struct MeshContactSolution
 {
   std::vector<double> force;          // N, F_j
+  std::vector<double> friction;       // N, f_j (MeshContactProblem; empty: frictionless)
+  unsigned int friction_passes = 0;   // -, the normal and the tangential problem in turn
   std::vector<LineContact> contact;   // each loaded pair's near field (zero when unloaded)
   double approach = 0.;               // m, e: the pinion's roll r_b1·Δφ (rigid approach)
   unsigned int active_set_passes = 0; // -

@@ -134,9 +134,10 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
   std::string torques;
   for (const double t : p.settings.torques)
     torques += (torques.empty() ? "" : ", ") + format_number(t, 4);
-  // The fast model's contact is frictionless whatever μ says (the input notes say so too).
+  // The fast model applies friction in 2D only (the input notes say so too).
   const bool frictionless =
-      p.settings.contact_model == stiffness::ContactModel::influence_coefficients;
+      p.settings.contact_model == stiffness::ContactModel::influence_coefficients &&
+      p.settings.scene.mesh.dimension == 3;
   report.add_text(
       "load case",
       "T1 = " + (torques.empty() ? format_number(p.settings.pinion_torque, 4) : torques) +
@@ -145,7 +146,7 @@ void report_model(const StiffnessParameters& p, const kinematics::GearPairGeomet
           (frictionless
                ? "frictionless (Contact/Friction coefficient " +
                      format_number(p.settings.contact.friction_coefficient, 4) +
-                     " not applied by the influence-coefficient model)"
+                     " not applied by the influence-coefficient model in 3D)"
                : "friction μ = " + format_number(p.settings.contact.friction_coefficient, 4)) +
           "; k = T1/(r_b1²·Δφ) (docs/references.md §1)");
   const bool planar = p.settings.scene.mesh.dimension == 2;
@@ -333,7 +334,7 @@ void report_sweep_summary(const StiffnessParameters& p, const kinematics::IsoSti
   // action (an own internal helical pair with tip relief and crowning: 6.2e-4).
   report.add_value("torque_ratio_deviation", worst_oracle, "-",
                    p.settings.contact_model == stiffness::ContactModel::influence_coefficients
-                       ? "largest | |T_wheel/T1| / (r_b2/r_b1) − 1 | (frictionless: 0 on "
+                       ? "largest | |T_wheel/T1| / (r_b2/r_b1) − 1 | (without friction: 0 on "
                          "unmodified flanks; a modification turns the flank normals)"
                        : "largest | |T_wheel/T1| / (r_b2/r_b1) − 1 | (0 without friction)");
   report.add_value("sweep_ranks", sweep.n_ranks, "-", "MPI ranks sharing the positions");
@@ -359,9 +360,11 @@ void report_contact_model(const stiffness::StiffnessSweepResult& sweep, Report& 
   // sweep stays as it was; the fast model says what it is and what it cost.
   if (sweep.contact_model != stiffness::ContactModel::influence_coefficients)
     return;
-  report.add_text("contact_model", "influence coefficients (docs/ltca.md): coarse FE body below a "
-                                   "matching depth, analytic plane-strain Hertz layer above it, "
-                                   "frictionless");
+  report.add_text("contact_model",
+                  "influence coefficients (docs/ltca.md): coarse FE body below a "
+                  "matching depth, analytic plane-strain Hertz layer above it, "
+                  "Coulomb friction in 2D: stick or slip of each pair (docs/ltca.md §4), "
+                  "frictionless in 3D");
   const stiffness::InfluenceModelInfo& info = sweep.influence;
   report.add_value("influence_grid_points", info.grid_points, "-",
                    "grid points per flank over the path of contact");

@@ -119,7 +119,9 @@ void declare_stiffness_parameters(ParameterHandler& prm)
   prm.declare_entry(
       "contact model", "finite element", Selection("finite element|influence coefficients"),
       "finite element: mortar contact on a mesh that resolves the Hertz zone (the reference); "
-      "influence coefficients (mode sweep, frictionless, profile modifications, rounded tips, no "
+      "influence coefficients (mode sweep, Coulomb friction in 2D, profile modifications, rounded "
+      "tips, "
+      "no "
       "tooth faults; 2D plane strain; 3D: spur and helical pairs, lead crowning with at least 16 "
       "layers, lead slope and end relief on spur pairs with at least 16): a FE body "
       "of both gears that does not resolve the Hertz zone (flank cells h_f = "
@@ -410,12 +412,12 @@ void check_influence_parameters(StiffnessParameters& p)
                        error.reason() + " (Stiffness/variants: '" + variant.label + "')");
     }
   }
-  if (p.settings.contact.friction_coefficient > 0.)
+  if (p.settings.contact.friction_coefficient > 0. && p.settings.scene.mesh.dimension == 3)
     p.input_notes.push_back(
         "Contact/Friction coefficient = " +
         format_number(p.settings.contact.friction_coefficient, 4) +
-        " is not applied by Stiffness/contact model = influence coefficients: its contact "
-        "problem is frictionless (docs/ltca.md)");
+        " is not applied by Stiffness/contact model = influence coefficients in 3D: its 3D "
+        "contact problem is frictionless (friction is verified in 2D only, docs/ltca.md §4)");
 }
 
 // The checks the analysis makes before it meshes, run at parse time: the library's own (one

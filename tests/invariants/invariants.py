@@ -44,7 +44,7 @@ the method (two paths to one answer) or of the geometry, so a case can never be 
                              the exact path a mesh per position: k 1 %, TE 0.1 um, shares 0.01,
                              K_Hbeta 2 %
     influence = exact        the influence-coefficient model (docs/ltca.md) against the rolling
-                             sweep, frictionless cases: k 1 %, TE 0.1 um, shares 0.01; and on
+                             sweep: k 1 %, TE 0.1 um, shares 0.01, with friction the torque ratio 2 %; and on
                              two ranks (a gear each) every printed value of the one-rank run
     helical unloaded TE      the helical variant's unloaded TE (gearstiff mesh, 4 meshes):
                              0 with a relief on one gear only; equal long reliefs give the
@@ -375,8 +375,11 @@ def once_equals_per_position(case, runner, log, once_out=None):
 # The influence-coefficient contact model (docs/ltca.md) on the case's own pair: the same sweep
 # as the exact rolling one within the accuracy it is tested to on the built-in pairs
 # (tests/stiffness/test_influence_coefficients.cc: k 1 %, TE 0.1 um, load shares 0.01; the
-# unloaded TE is the same geometry, 1 nm). Frictionless cases only: the fast model applies no
-# friction. It carries rounded tips (docs/ltca.md "Tip rounding"): external gears' since
+# unloaded TE is the same geometry, 1 nm). With friction since session 54 (the pairs stick or slip
+# as the exact path's contact lets them, docs/ltca.md §4 "Friction"): the 19 2D cases with
+# friction among 0-39 of seed 20261201 (mu 0.004-0.096): |dk| 0.52 %, |dTE| 0.024 um, |dshare|
+# 0.0063 at most, and the torque ratio 0.70 % (case 20, mu 0.08; checked at 2 %, 3x). It carries
+# rounded tips (docs/ltca.md "Tip rounding"): external gears' since
 # 2026-12-05 (seed 20261201 cases 33, 61, 63, rounded and relieved or profile-mixed: |dk| 0.339,
 # 0.354, 0.307 %, |dTE| 0.012-0.027 um; with the force line's slopes weighted by the strip's
 # pressure, session 41: 0.269, 0.297, 0.240 %, |dTE| 0.009-0.023 um), rings' since the same day. INFLUENCE_KINDS: the
@@ -398,15 +401,20 @@ INFLUENCE_KINDS = tuple(MODIFICATIONS)
 # position, and the comparison was left out where the exact meshes disagreed; now 86.2, 87.2
 # and 85.4 MPa, every position compared.
 INFLUENCE_ROOT_STRESS_RTOL = 0.07
+# With friction the model's stick force near the pitch point is larger than the exact path's
+# (docs/ltca.md §4 "Friction"): the 19 friction cases above, worst 9.41 % (case 20, mu 0.08, the
+# pinion at its third position), 6.77, 5.46, 5.25 % next; 12 %: the frictionless 7 % plus that
+# stated model difference, not 3x.
+INFLUENCE_ROOT_STRESS_FRICTION_RTOL = 0.12
+INFLUENCE_TORQUE_RATIO_RTOL = 0.02
 # The kinds draw_case leaves unrounded (the fast model's kinds when rounding was added).
 UNROUNDED_KINDS = ("none",)
 
 
 def influence_equals_exact(case, runner, log, sweeps):
     friction = float(case["pair"]["Contact/Friction coefficient"])
-    reasons = ([f"friction {friction}: the fast model applies none"] if friction != 0. else []) + \
-        ([f"{case['modification']}: not a kind it takes"]
-         if case["modification"] not in INFLUENCE_KINDS else [])
+    reasons = ([f"{case['modification']}: not a kind it takes"]
+               if case["modification"] not in INFLUENCE_KINDS else [])
     if reasons:
         log(f"influence = exact: skipped ({'; '.join(reasons)})")
         return
@@ -418,7 +426,9 @@ def influence_equals_exact(case, runner, log, sweeps):
     fast, _, _ = runner.run("stiffness", sets)
     fast_equals_exact("influence", table(sweeps["once"], "stiffness_sweep"),
                       table(fast, "stiffness_sweep"), log, unloaded=True,
-                      root_stress=INFLUENCE_ROOT_STRESS_RTOL)
+                      root_stress=INFLUENCE_ROOT_STRESS_RTOL if friction == 0.
+                      else INFLUENCE_ROOT_STRESS_FRICTION_RTOL,
+                      torque_ratio=INFLUENCE_TORQUE_RATIO_RTOL if friction != 0. else None)
     # Two ranks take a gear each, one rank both in turn, with the same factor of each gear
     # (stiffness/influence_sweep.cc, run_influence): every printed value but the costs equal.
     two, _, _ = runner.run("stiffness", sets, ranks=2)
@@ -475,13 +485,18 @@ def check_same_printed(label, a, b, tables):
         raise CaseFailure(f"{label} differs in {differences[:5]}")
 
 
-def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None):
+def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_stress=None,
+                      torque_ratio=None):
     """The influence-coefficient model's sweep rows against the exact path's: k 1 %, TE 0.1 um,
     load shares 0.01 (and the unloaded TE, the same geometry, 1 nm; with `root_stress`, both
-    gears' root stresses within that relative tolerance)."""
+    gears' root stresses within that relative tolerance; with `torque_ratio`, |T_wheel/T1|)."""
     worst = [0., 0., 0.]
-    worst_root = 0.
+    worst_root = worst_ratio = 0.
     for i, (a, b) in enumerate(zip(exact_rows, fast_rows)):
+        if torque_ratio is not None:
+            check_close(f"{label}: position {i} torque ratio", b["torque_ratio"],
+                        a["torque_ratio"], 0., torque_ratio)
+            worst_ratio = max(worst_ratio, abs(b["torque_ratio"] / a["torque_ratio"] - 1.))
         if root_stress is not None:
             for gear in ("pinion_root_stress", "wheel_root_stress"):
                 check_close(f"{label}: position {i} {gear} [MPa]", b[gear], a[gear], 0.,
@@ -500,7 +515,8 @@ def fast_equals_exact(label, exact_rows, fast_rows, log, unloaded=False, root_st
                  max(worst[2], max(abs(x - y) for x, y in zip(shares(a), shares(b))))]
     log(f"{label} = exact: |dk| {worst[0] * 100:.3g} %, |dTE| {worst[1]:.3g} um, "
         f"|dshare| {worst[2]:.2g}" +
-        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else ""))
+        (f", |droot stress| {worst_root * 100:.3g} %" if root_stress is not None else "") +
+        (f", |dtorque ratio| {worst_ratio * 100:.3g} %" if torque_ratio is not None else ""))
 
 
 def face_load_factors_equal(label, exact, fast, log):

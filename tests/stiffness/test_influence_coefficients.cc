@@ -82,15 +82,17 @@ struct Tolerances
   double root_stress = 0.07;
 };
 
-// Exact (rolling sweep, frictionless) against influence coefficients, position by position.
+// Exact (rolling sweep, frictionless unless `friction` says μ) against influence coefficients,
+// position by position; with friction the torque ratios too (within `torque_ratio`).
 void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int positions,
-                        const std::string& name, const Tolerances& tolerance = {})
+                        const std::string& name, const Tolerances& tolerance = {},
+                        double friction = 0., double torque_ratio = 0.)
 {
   StiffnessSweepSpec spec;
   spec.positions = positions;
   spec.mesh = SweepMesh::once;
   GearMeshStiffnessSettings settings = base;
-  settings.contact.friction_coefficient = 0.;
+  settings.contact.friction_coefficient = friction;
   const StiffnessSweepResult exact =
       stiffness_sweep<2>(MPI_COMM_SELF, settings, spec, stiffness_work_stem(name + "_exact"));
   settings.contact_model = ContactModel::influence_coefficients;
@@ -99,7 +101,7 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
   ASSERT_EQ(fast.contact_model, ContactModel::influence_coefficients);
   ASSERT_EQ(fast.positions.size(), exact.positions.size());
   double worst_k = 0., worst_te = 0., worst_share = 0., worst_p = 0., worst_roll = 0.,
-         worst_root = 0.;
+         worst_root = 0., worst_ratio = 0.;
   const kinematics::GearPairGeometry path = kinematics::compute_gear_pair(base.scene.pair); // A, E
   for (std::size_t i = 0; i < exact.positions.size(); ++i)
   {
@@ -118,6 +120,14 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
     EXPECT_NEAR(dk, 0., tolerance.stiffness) << name << " position " << i;
     EXPECT_NEAR(dte, 0., tolerance.transmission_error) << name << " position " << i;
     EXPECT_NEAR(dshare, 0., tolerance.load_share) << name << " position " << i;
+    if (friction > 0.)
+    {
+      const double dratio = b.torque_ratio / a.torque_ratio - 1.;
+      std::cout << name << " " << i << ": torque ratio " << a.torque_ratio << " / "
+                << b.torque_ratio << " (" << dratio * 100 << " %)\n";
+      EXPECT_NEAR(dratio, 0., torque_ratio) << name << " position " << i;
+      worst_ratio = std::max(worst_ratio, std::abs(dratio));
+    }
     for (const auto& [gear, exact_root, fast_root] :
          {std::tuple("pinion", a.pinion_root_stress, b.pinion_root_stress),
           std::tuple("wheel", a.wheel_root_stress, b.wheel_root_stress)})
@@ -193,8 +203,8 @@ void compare_with_exact(const GearMeshStiffnessSettings& base, unsigned int posi
       worst_p = std::max(worst_p, std::abs(dp));
   }
   std::cout << name << ": worst |dk| " << worst_k * 100 << " %, |dTE| " << worst_te * 1e6
-            << " um, |dshare| " << worst_share << ", |droot stress| " << worst_root * 100
-            << " %, |dp| " << worst_p * 100
+            << " um, |dshare| " << worst_share << ", |dtorque ratio| " << worst_ratio * 100
+            << " %, |droot stress| " << worst_root * 100 << " %, |dp| " << worst_p * 100
             << " % (off the reliefs' starts), the peak's roll (same pair) " << worst_roll
             << " h_c; exact " << exact.wall_time << " s, influence " << fast.wall_time
             << " s (once " << fast.once_time << " s, contact " << fast.per_position_time << " s)\n";
@@ -668,6 +678,22 @@ TEST(InfluenceCoefficients, TipCornerGap)
 TEST(InfluenceCoefficients, ExternalPairMatchesExact)
 {
   compare_with_exact(GearMeshStiffnessSettings(), 32, "external");
+}
+
+// Coulomb friction (docs/ltca.md §4 "Friction"): the pairs stick or slip as the exact path's
+// contact lets them. μ 0.1, the built-in pair, 16 positions. Measured 2026-12-07: |Δk| 0.36 %,
+// |ΔTE| 0.025 µm, |Δshare| 0.0055, the torque ratio 0.23 % (tolerance 0.7 %: 3×), the peak
+// pressure −19.6 % (the exact nodal peak's, as frictionless: Tolerances), the root stresses up to
+// 6.1 % away from the pitch point and 7.4 / 7.5 % (the wheel) at the two positions next to it,
+// where both models let the pair stick and the model's stick force is larger than the exact
+// path's (docs/ltca.md §4 "Friction": not yet found why). 10 % there, not 3×: that difference is
+// the model's, deterministic, and stated; without friction in the model (before this test) the
+// root stresses were 9.8 % and the torque ratio 2.1 % off.
+TEST(InfluenceCoefficients, FrictionMatchesExact)
+{
+  Tolerances tolerance;
+  tolerance.root_stress = 0.10;
+  compare_with_exact(GearMeshStiffnessSettings(), 16, "friction", tolerance, 0.1, 0.007);
 }
 
 // Profile modifications (issue 47), measured against the exact rolling sweep. History: 1.49 % /
