@@ -9,6 +9,7 @@
 #include "geometry/tooth_modification_lead.h"
 #include "kinematics/gear_pair.h"
 #include "tests/geometry/scene_test_support.h"
+#include "tests/kinematics/planet_ring_pair.h"
 
 #include <algorithm>
 #include <cmath>
@@ -170,18 +171,12 @@ TEST(LeadModification, MicrometresOnTheMeshDealIIReads)
   check_crowning_and_slope(coarse_3d(), false, "lead_crowning_3d.msh");
 }
 
-// The planet–ring pair of tests/stiffness/planet_ring.h (z = 24 in 69, m = 2.5 mm, ring addendum
-// 0.5·m, a rim of 3 modules) in the coarse 3D scene.
+// The planet–ring pair of tests/kinematics/planet_ring_pair.h (z = 24 in 69, m = 2.5 mm, ring
+// addendum 0.5·m, a rim of 3 modules) in the coarse 3D scene.
 GearPairSceneSpec planet_ring_3d()
 {
   GearPairSceneSpec spec = coarse_3d();
-  spec.pair.pinion.teeth = 24;
-  spec.pair.wheel.teeth = 69;
-  spec.pair.wheel.internal = true;
-  spec.pair.pinion.profile_shift = spec.pair.wheel.profile_shift = 0.;
-  spec.pair.pinion.tip_diameter = 0.;
-  spec.pair.wheel.tip_diameter = (69. * 2.5 - 2.5) * 1e-3;
-  spec.pair.wheel.bore_diameter = 0.;
+  test_support::make_planet_ring(spec.pair);
   spec.wheel_rim_thickness = 3. * 2.5e-3;
   return spec;
 }
